@@ -1,0 +1,153 @@
+!> LAPACK through explicit interfaces, and thin wrappers that take sizes from the arrays and
+!> turn `info /= 0` into an [[error_type]] naming the routine.
+!>
+!> Band storage follows LAPACK: for the symmetric positive definite band solver (`dpbsv`, upper
+!> triangle) `ab(kd + 1 + i − j, j) = a(i, j)` for max(1, j − kd) ≤ i ≤ j; for the general band
+!> solver (`dgbsv`) `ab(kl + ku + 1 + i − j, j) = a(i, j)` with kl extra rows on top for the
+!> fill-in of the factorisation.
+module shcontact_math_lapack
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, stat_numerical, stat_usage
+   implicit none
+   private
+
+   public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense
+
+   ! Explicit interfaces to the reference LAPACK routines used by the wrappers.
+   interface
+      pure subroutine dpbsv(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+         import :: wp
+         character(len=1), intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldb
+         real(wp), intent(inout) :: ab(ldab, *), b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpbsv
+      pure subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: wp
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(wp), intent(inout) :: ab(ldab, *), b(ldb, *)
+         integer, intent(out) :: ipiv(*)
+         integer, intent(out) :: info
+      end subroutine dgbsv
+      pure subroutine dgtsv(n, nrhs, dl, d, du, b, ldb, info)
+         import :: wp
+         integer, intent(in) :: n, nrhs, ldb
+         real(wp), intent(inout) :: dl(*), d(*), du(*), b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dgtsv
+      pure subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
+         import :: wp
+         integer, intent(in) :: n, nrhs, lda, ldb
+         real(wp), intent(inout) :: a(lda, *), b(ldb, *)
+         integer, intent(out) :: ipiv(*)
+         integer, intent(out) :: info
+      end subroutine dgesv
+   end interface
+
+contains
+
+   !> Solve A x = b for a symmetric positive definite band matrix in upper band storage
+   !> `ab(kd + 1, n)` (LAPACK `dpbsv`). `ab` is overwritten by the Cholesky factor, `b` by x.
+   pure subroutine solve_spd_banded(ab, b, error)
+      !> Band matrix, upper storage, kd = size(ab, 1) − 1 super-diagonals.
+      real(wp), intent(inout) :: ab(:, :)
+      !> Right-hand sides on entry (n × nrhs), solutions on return.
+      real(wp), intent(inout) :: b(:, :)
+      !> Set when the matrix is not positive definite or the shapes disagree.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, kd, info
+
+      n = size(ab, 2); kd = size(ab, 1) - 1
+      if (size(b, 1) /= n) then
+         call fatal_error(error, 'dpbsv: right-hand side has the wrong number of rows', stat_usage)
+         return
+      end if
+      call dpbsv('U', n, kd, size(b, 2), ab, size(ab, 1), b, size(b, 1), info)
+      call check_info('dpbsv', info, 'the leading minor of order ', ' is not positive definite', &
+                      error)
+   end subroutine solve_spd_banded
+
+   !> Solve A x = b for a general band matrix with kl sub- and ku super-diagonals, stored in
+   !> `ab(2 kl + ku + 1, n)` as LAPACK `dgbsv` expects (rows 1..kl are workspace).
+   pure subroutine solve_general_banded(ab, kl, ku, b, error)
+      !> Band matrix in LAPACK general band storage; overwritten by the LU factors.
+      real(wp), intent(inout) :: ab(:, :)
+      !> Numbers of sub- and super-diagonals.
+      integer, intent(in) :: kl, ku
+      !> Right-hand sides on entry, solutions on return.
+      real(wp), intent(inout) :: b(:, :)
+      !> Set when the matrix is singular or the shapes disagree.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, info
+      integer :: ipiv(size(ab, 2))
+
+      n = size(ab, 2)
+      if (size(ab, 1) /= 2*kl + ku + 1 .or. size(b, 1) /= n) then
+         call fatal_error(error, 'dgbsv: band storage or right-hand side has the wrong shape', &
+                          stat_usage)
+         return
+      end if
+      call dgbsv(n, kl, ku, size(b, 2), ab, size(ab, 1), ipiv, b, size(b, 1), info)
+      call check_info('dgbsv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
+   end subroutine solve_general_banded
+
+   !> Solve a tridiagonal system with sub-diagonal `dl`, diagonal `d`, super-diagonal `du`
+   !> (LAPACK `dgtsv`). All three are overwritten.
+   pure subroutine solve_tridiagonal(dl, d, du, b, error)
+      !> Sub-diagonal (n − 1), diagonal (n), super-diagonal (n − 1).
+      real(wp), intent(inout) :: dl(:), d(:), du(:)
+      !> Right-hand sides on entry, solutions on return.
+      real(wp), intent(inout) :: b(:, :)
+      !> Set when the matrix is singular or the shapes disagree.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, info
+
+      n = size(d)
+      if (size(dl) /= n - 1 .or. size(du) /= n - 1 .or. size(b, 1) /= n) then
+         call fatal_error(error, 'dgtsv: diagonals or right-hand side have inconsistent sizes', &
+                          stat_usage)
+         return
+      end if
+      call dgtsv(n, size(b, 2), dl, d, du, b, size(b, 1), info)
+      call check_info('dgtsv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
+   end subroutine solve_tridiagonal
+
+   !> Solve a dense system A x = b (LAPACK `dgesv`); `a` is overwritten by its LU factors.
+   pure subroutine solve_dense(a, b, error)
+      !> Square matrix.
+      real(wp), intent(inout) :: a(:, :)
+      !> Right-hand sides on entry, solutions on return.
+      real(wp), intent(inout) :: b(:, :)
+      !> Set when the matrix is singular or the shapes disagree.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, info
+      integer :: ipiv(size(a, 1))
+
+      n = size(a, 1)
+      if (size(a, 2) /= n .or. size(b, 1) /= n) then
+         call fatal_error(error, 'dgesv: matrix not square or right-hand side of wrong size', &
+                          stat_usage)
+         return
+      end if
+      call dgesv(n, size(b, 2), a, n, ipiv, b, size(b, 1), info)
+      call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
+   end subroutine solve_dense
+
+   !> Turn a LAPACK info code into an error naming the routine.
+   pure subroutine check_info(routine, info, before, after, error)
+      character(len=*), intent(in) :: routine, before, after
+      integer, intent(in) :: info
+      type(error_type), allocatable, intent(out) :: error
+      character(len=24) :: num
+
+      if (info == 0) return
+      write (num, '(i0)') abs(info)
+      if (info < 0) then
+         call fatal_error(error, routine//': argument '//trim(num)//' had an illegal value', &
+                          stat_usage)
+      else
+         call fatal_error(error, routine//': '//before//trim(num)//after, stat_numerical)
+      end if
+   end subroutine check_info
+
+end module shcontact_math_lapack

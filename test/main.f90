@@ -1,0 +1,129 @@
+!> The one tester: runs every suite, one suite, or one test of a suite.
+!>
+!>     tester                 every suite
+!>     tester SUITE           one suite
+!>     tester SUITE TEST      one test
+!>
+!> Ends with the line `N passed, N failed` (`, N skipped` when some were skipped) and a non-zero
+!> exit status on any failure.
+program tester
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use testdrive, only: testsuite_type, unittest_type, error_type, new_testsuite, select_suite, &
+      select_test
+   use test_elliptic, only: collect_elliptic
+   use test_roots, only: collect_roots
+   use test_lapack, only: collect_lapack
+   use test_testdrive, only: collect_testdrive
+   use test_layout, only: collect_layout
+   implicit none
+
+   integer, parameter :: skipped_stat = 77
+   type(testsuite_type), allocatable :: suites(:)
+   character(len=:), allocatable :: suite_name, test_name
+   integer :: is, n_pass, n_fail, n_skip
+
+   suites = [ &
+      new_testsuite('testdrive', collect_testdrive), &
+      new_testsuite('layout', collect_layout), &
+      new_testsuite('elliptic', collect_elliptic), &
+      new_testsuite('roots', collect_roots), &
+      new_testsuite('lapack', collect_lapack) &
+      ]
+
+   call read_selection(suite_name, test_name)
+   n_pass = 0; n_fail = 0; n_skip = 0
+   if (len(suite_name) == 0) then
+      do is = 1, size(suites)
+         call run_suite(suites(is), '')
+      end do
+   else
+      is = select_suite(suites, suite_name)
+      if (is == 0) then
+         write (error_unit, '(a)') 'tester: no suite called "'//suite_name//'"; suites are:'
+         do is = 1, size(suites)
+            write (error_unit, '(a)') '  '//suites(is)%name
+         end do
+         error stop 2
+      end if
+      call run_suite(suites(is), test_name)
+   end if
+
+   if (n_skip > 0) then
+      write (output_unit, '(i0,a,i0,a,i0,a)') n_pass, ' passed, ', n_fail, ' failed, ', n_skip, &
+         ' skipped'
+   else
+      write (output_unit, '(i0,a,i0,a)') n_pass, ' passed, ', n_fail, ' failed'
+   end if
+   if (n_fail > 0) error stop 1
+
+contains
+
+   subroutine read_selection(suite_name, test_name)
+      character(len=:), allocatable, intent(out) :: suite_name, test_name
+      character(len=256) :: buf
+      suite_name = ''
+      test_name = ''
+      if (command_argument_count() >= 1) then
+         call get_command_argument(1, buf)
+         suite_name = trim(buf)
+      end if
+      if (command_argument_count() >= 2) then
+         call get_command_argument(2, buf)
+         test_name = trim(buf)
+      end if
+   end subroutine read_selection
+
+   subroutine run_suite(suite, only)
+      type(testsuite_type), intent(in) :: suite
+      character(len=*), intent(in) :: only
+      type(unittest_type), allocatable :: tests(:)
+      integer :: it
+
+      call suite%collect(tests)
+      if (len(only) > 0) then
+         it = select_test(tests, only)
+         if (it == 0) then
+            write (error_unit, '(a)') 'tester: suite "'//suite%name//'" has no test "'//only// &
+               '"; tests are:'
+            do it = 1, size(tests)
+               write (error_unit, '(a)') '  '//tests(it)%name
+            end do
+            error stop 2
+         end if
+         call run_one(suite%name, tests(it))
+      else
+         do it = 1, size(tests)
+            call run_one(suite%name, tests(it))
+         end do
+      end if
+   end subroutine run_suite
+
+   subroutine run_one(suite_name, test)
+      character(len=*), intent(in) :: suite_name
+      type(unittest_type), intent(in) :: test
+      type(error_type), allocatable :: error
+      logical :: failed
+
+      call test%test(error)
+      if (allocated(error)) then
+         if (error%stat == skipped_stat) then
+            n_skip = n_skip + 1
+            write (output_unit, '(a)') '  '//suite_name//' / '//test%name//' ... [SKIPPED]'
+            if (allocated(error%message)) write (output_unit, '(a)') '      '//error%message
+            return
+         end if
+      end if
+      failed = allocated(error) .neqv. test%should_fail
+      if (failed) then
+         n_fail = n_fail + 1
+         write (output_unit, '(a)') '  '//suite_name//' / '//test%name//' ... [FAILED]'
+         if (allocated(error)) then
+            if (allocated(error%message)) write (output_unit, '(a)') '      '//error%message
+         end if
+      else
+         n_pass = n_pass + 1
+         write (output_unit, '(a)') '  '//suite_name//' / '//test%name//' ... [PASSED]'
+      end if
+   end subroutine run_one
+
+end program tester

@@ -1,0 +1,142 @@
+!> Tests of the bracketed root finder.
+module test_roots
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type_lib => error_type, stat_numerical
+   use shcontact_math_roots, only: scalar_function_type, find_root, expand_bracket
+   implicit none
+   private
+   public :: collect_roots
+
+   !> x² − c.
+   type, extends(scalar_function_type) :: square_minus
+      real(wp) :: c = 2.0_wp
+      integer :: calls = 0
+   contains
+      procedure :: eval => square_minus_eval
+   end type square_minus
+
+   !> A function with a kink at its root: slope 1 left of x0, slope 5 right of it.
+   type, extends(scalar_function_type) :: kinked
+      real(wp) :: x0 = 0.3_wp
+   contains
+      procedure :: eval => kinked_eval
+   end type kinked
+
+   !> |x − 1| − 0.5: a kink away from the roots 0.5 and 1.5.
+   type, extends(scalar_function_type) :: vee
+   contains
+      procedure :: eval => vee_eval
+   end type vee
+
+contains
+
+   subroutine collect_roots(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('smooth_sqrt2', test_smooth), &
+         new_unittest('kink_at_root', test_kink_at_root), &
+         new_unittest('kink_in_bracket', test_vee), &
+         new_unittest('no_sign_change_is_error', test_no_bracket), &
+         new_unittest('expand_bracket', test_expand) &
+         ]
+   end subroutine collect_roots
+
+   function square_minus_eval(self, x) result(fx)
+      class(square_minus), intent(inout) :: self
+      real(wp), intent(in) :: x
+      real(wp) :: fx
+      self%calls = self%calls + 1
+      fx = x*x - self%c
+   end function square_minus_eval
+
+   function kinked_eval(self, x) result(fx)
+      class(kinked), intent(inout) :: self
+      real(wp), intent(in) :: x
+      real(wp) :: fx
+      if (x < self%x0) then
+         fx = x - self%x0
+      else
+         fx = 5*(x - self%x0)
+      end if
+   end function kinked_eval
+
+   function vee_eval(self, x) result(fx)
+      class(vee), intent(inout) :: self
+      real(wp), intent(in) :: x
+      real(wp) :: fx
+      fx = abs(x - 1.0_wp) - 0.5_wp
+   end function vee_eval
+
+   subroutine test_smooth(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type_lib), allocatable :: err
+      type(square_minus) :: f
+      real(wp) :: x
+      call find_root(f, 0.0_wp, 2.0_wp, x, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, x, sqrt(2.0_wp), thr=1.0e-14_wp)
+      if (allocated(error)) return
+      call check(error, f%calls < 15, message='Brent should converge in a few evaluations')
+   end subroutine test_smooth
+
+   subroutine test_kink_at_root(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type_lib), allocatable :: err
+      type(kinked) :: f
+      real(wp) :: x
+      call find_root(f, -2.0_wp, 1.0_wp, x, err, xtol=1.0e-13_wp)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, x, 0.3_wp, thr=1.0e-12_wp)
+   end subroutine test_kink_at_root
+
+   subroutine test_vee(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type_lib), allocatable :: err
+      type(vee) :: f
+      real(wp) :: x
+      call find_root(f, 1.0_wp, 3.0_wp, x, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, x, 1.5_wp, thr=1.0e-13_wp)
+   end subroutine test_vee
+
+   subroutine test_no_bracket(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type_lib), allocatable :: err
+      type(square_minus) :: f
+      real(wp) :: x
+      call find_root(f, 2.0_wp, 3.0_wp, x, err)
+      call check(error, allocated(err), message='a bracket without sign change must be an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_numerical)
+      if (allocated(error)) return
+      call check(error, index(err%message, 'no sign change') > 0, message=err%message)
+   end subroutine test_no_bracket
+
+   subroutine test_expand(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type_lib), allocatable :: err
+      type(square_minus) :: f
+      real(wp) :: hi, flo, fhi, x
+      f%c = 1.0e6_wp
+      hi = 1.0_wp
+      call expand_bracket(f, 0.0_wp, hi, flo, fhi, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, hi >= 1.0e3_wp .and. hi < 2.0e3_wp, message='bracket doubled to 1024')
+      if (allocated(error)) return
+      call find_root(f, 0.0_wp, hi, x, err, f_lower=flo, f_upper=fhi)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, x, 1.0e3_wp, thr=1.0e-12_wp, rel=.true.)
+   end subroutine test_expand
+
+end module test_roots
