@@ -1,0 +1,55 @@
+!> Elastic and friction data of the wheel–rail pair (identical elastic bodies).
+module shcontact_core_material
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error
+   implicit none
+   private
+
+   public :: material_type, check_material
+
+   !> Steel on steel: both bodies share G and ν (quasi-identity, physics.md §0), Coulomb friction.
+   type :: material_type
+      !> Shear modulus G (N/mm² = MPa).
+      real(wp) :: shear_modulus = 82670.0_wp
+      !> Poisson's ratio ν (dimensionless), 0 ≤ ν < 0.5.
+      real(wp) :: poisson = 0.27_wp
+      !> Coefficient of friction μ (dimensionless), > 0.
+      real(wp) :: friction = 0.3_wp
+   contains
+      !> Combined modulus E* = G/(1 − ν) of two identical bodies (physics.md §1.2), MPa.
+      procedure :: e_star
+   end type material_type
+
+contains
+
+   !> E* = G/(1 − ν) = E/(2(1 − ν²)) (physics.md §1.2), MPa.
+   elemental function e_star(self) result(es)
+      class(material_type), intent(in) :: self
+      real(wp) :: es
+      es = self%shear_modulus/(1.0_wp - self%poisson)
+   end function e_star
+
+   !> Reject non-physical material data with a message naming the value and the allowed range.
+   pure subroutine check_material(material, error)
+      !> The data to check.
+      type(material_type), intent(in) :: material
+      !> Set when a value is out of range.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=32) :: buf
+
+      if (.not. (material%shear_modulus > 0.0_wp)) then
+         write (buf, '(es12.4)') material%shear_modulus
+         call fatal_error(error, 'shear modulus G = '//trim(adjustl(buf))// &
+            ' MPa: expected a positive value (steel: about 82000 MPa)')
+      else if (.not. (material%poisson >= 0.0_wp .and. material%poisson < 0.5_wp)) then
+         write (buf, '(es12.4)') material%poisson
+         call fatal_error(error, 'Poisson ratio nu = '//trim(adjustl(buf))// &
+            ': expected 0 <= nu < 0.5 (steel: 0.27-0.3)')
+      else if (.not. (material%friction > 0.0_wp .and. material%friction <= 10.0_wp)) then
+         write (buf, '(es12.4)') material%friction
+         call fatal_error(error, 'friction coefficient mu = '//trim(adjustl(buf))// &
+            ': expected 0 < mu <= 10')
+      end if
+   end subroutine check_material
+
+end module shcontact_core_material

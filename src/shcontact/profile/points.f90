@@ -1,0 +1,65 @@
+!> A wheel or rail profile as a list of points (the project's canonical form, physics.md §5.1).
+module shcontact_profile_points
+   use shcontact_core_kinds, only: wp
+   implicit none
+   private
+
+   public :: profile_type, profile_kind_rail, profile_kind_wheel
+
+   !> The profile is a rail profile.
+   integer, parameter :: profile_kind_rail = 0
+   !> The profile is a wheel profile.
+   integer, parameter :: profile_kind_wheel = 1
+
+   !> A right-side profile: y lateral towards the field side, z positive **downward**, mm.
+   !>
+   !> Points are ordered along the profile with the material on the right when walking them
+   !> (CONTACT's convention): rail points run from the track-centre side to the field side
+   !> (y ascending overall), wheel points from the field side to the flange back (y descending
+   !> overall). The profile may be multi-valued in y (vertical flange back), hence `s`.
+   !> Rail origin: highest point of the rail as placed in its file; wheel origin: on the tape
+   !> circle (S1002: flange back at y = −70 mm).
+   type :: profile_type
+      !> Where it came from: a file name or `builtin:NAME`.
+      character(len=:), allocatable :: source
+      !> [[profile_kind_rail]] or [[profile_kind_wheel]].
+      integer :: kind = profile_kind_rail
+      !> Lateral coordinate, mm.
+      real(wp), allocatable :: y(:)
+      !> Vertical coordinate, positive downward, mm.
+      real(wp), allocatable :: z(:)
+      !> Summed chord length from the first point, mm (s(1) = 0).
+      real(wp), allocatable :: s(:)
+      !> True at points kept as genuine corners (kinks) by the clean-up, where smoothing splits.
+      logical, allocatable :: kink(:)
+   contains
+      !> Number of points.
+      procedure :: size => profile_size
+      !> Recompute `s` from y and z.
+      procedure :: update_arc_length
+   end type profile_type
+
+contains
+
+   !> Number of points.
+   pure integer function profile_size(self)
+      class(profile_type), intent(in) :: self
+      profile_size = 0
+      if (allocated(self%y)) profile_size = size(self%y)
+   end function profile_size
+
+   !> s₁ = 0, s_{i+1} = s_i + √(Δy² + Δz²) (physics.md §5.1).
+   pure subroutine update_arc_length(self)
+      class(profile_type), intent(inout) :: self
+      integer :: i, n
+      n = self%size()
+      if (allocated(self%s)) deallocate (self%s)
+      allocate (self%s(n))
+      if (n == 0) return
+      self%s(1) = 0.0_wp
+      do i = 2, n
+         self%s(i) = self%s(i - 1) + hypot(self%y(i) - self%y(i - 1), self%z(i) - self%z(i - 1))
+      end do
+   end subroutine update_arc_length
+
+end module shcontact_profile_points

@@ -1,0 +1,46 @@
+!> The tangential solution of one contact patch: element fields and totals (physics.md decision 12).
+module shcontact_tangential_patch
+   use shcontact_core_kinds, only: wp, i1
+   implicit none
+   private
+
+   public :: tangential_patch_type
+   public :: state_exterior, state_adhesion, state_slip
+
+   !> Element state codes, as CONTACT: exterior.
+   integer(i1), parameter :: state_exterior = 0_i1
+   !> Adhesion (stick).
+   integer(i1), parameter :: state_adhesion = 1_i1
+   !> Slip.
+   integer(i1), parameter :: state_slip = 2_i1
+
+   !> Fields on the strip-adapted grid: element (j, i) is element j (from the leading edge) of
+   !> strip i. Forces act on the wheel (physics.md decision 2).
+   type :: tangential_patch_type
+      !> Elements per strip and strips.
+      integer :: nx = 0, ny = 0
+      !> Total tangential forces (N) and spin moment about the reference point (N·mm).
+      real(wp) :: fx = 0.0_wp, fy = 0.0_wp, mz = 0.0_wp
+      !> Normal force of the patch (N).
+      real(wp) :: fn = 0.0_wp
+      !> Normalised forces f = F/(μ F_n).
+      real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
+      !> Coulomb check max |p|/(μ p_n,e) over contact elements.
+      real(wp) :: coulomb_ratio = 0.0_wp
+      !> Adhesion area / contact area.
+      real(wp) :: adhesion_fraction = 0.0_wp
+      !> Element centres (mm): x(j, i) and the strip centres y(i).
+      real(wp), allocatable :: x(:, :)
+      real(wp), allocatable :: y(:)
+      !> Element lengths Δx_i (mm) and the strip width (mm).
+      real(wp), allocatable :: dx(:)
+      real(wp) :: dy = 0.0_wp
+      !> Normal pressure p_n,e (semi-ellipsoidal, MPa) and tractions on the wheel (MPa).
+      real(wp), allocatable :: pn(:, :), px(:, :), py(:, :)
+      !> Slip magnitude |s| (dimensionless, slip velocity / rolling speed) in slip elements.
+      real(wp), allocatable :: slip(:, :)
+      !> State: [[state_exterior]], [[state_adhesion]] or [[state_slip]].
+      integer(i1), allocatable :: state(:, :)
+   end type tangential_patch_type
+
+end module shcontact_tangential_patch
