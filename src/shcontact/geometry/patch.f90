@@ -15,7 +15,9 @@ module shcontact_geometry_patch
       real(wp) :: curv_a = 0.0_wp
       !> Lateral relative curvature B(y) = g''(y)/2, clamped to ≥ B_min (1/mm).
       real(wp) :: curv_b = 0.0_wp
-      !> Local contact angle γ(y) (rad), sign convention sin γ = −dr_w/dy (physics.md §6.1).
+      !> Local contact angle γ(y) (rad), CONTACT's sign: γ = atan(dz_rail/dy) in the track frame
+      !> (z down, y to the field side), so the right wheel's tread contact has γ < 0 and
+      !> dr_w/dy ≈ tan γ. (physics.md §6.1's γ has the opposite sign: sin γ_§6.1 = −dr_w/dy.)
       real(wp) :: gamma = 0.0_wp
       !> Local wheel rolling radius r_w(y) (mm).
       real(wp) :: r_wheel = 0.0_wp
@@ -34,8 +36,8 @@ module shcontact_geometry_patch
       real(wp) :: y_rail = 0.0_wp
       !> Reference point on the wheel profile, profile coordinates (mm).
       real(wp) :: y_wheel = 0.0_wp
-      !> Contact angle at the reference point γ₀ (rad; physics.md §6.1 sign convention; the
-      !> right wheel's tread contact has γ₀ < 0 in CONTACT's convention).
+      !> Contact angle at the reference point γ₀ (rad), CONTACT's sign (see geometry_sample_type):
+      !> Manchester right wheel at y_ws = 0 gives γ₀ = −0.0290.
       real(wp) :: gamma0 = 0.0_wp
       !> Wheel rolling radius at the reference point r₀ (mm).
       real(wp) :: r0 = 0.0_wp
