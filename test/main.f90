@@ -15,6 +15,9 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_kalker, only: collect_kalker
+   use test_fastsim, only: collect_fastsim
+   use test_fastsim_sh, only: collect_fastsim_sh
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -27,7 +30,10 @@ program tester
       new_testsuite('layout', collect_layout), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
-      new_testsuite('lapack', collect_lapack) &
+      new_testsuite('lapack', collect_lapack), &
+      new_testsuite('kalker', collect_kalker), &
+      new_testsuite('fastsim', collect_fastsim), &
+      new_testsuite('fastsim_sh', collect_fastsim_sh) &
       ]
 
    call read_selection(suite_name, test_name)
