@@ -77,8 +77,6 @@ module shcontact_tangential_kalker
 
    !> CONTACT switches to the asymptotes below this g (`linrol`).
    real(wp), parameter :: contact_g_switch = 0.101_wp
-   !> Exponents of g in the scaled quantities g·c₁₁, g·c₂₂, g^{3/2}·c₂₃ (physics.md §2.3).
-   real(wp), parameter :: scaled_power(3) = [1.0_wp, 1.0_wp, 1.5_wp]
 
 contains
 
@@ -167,7 +165,7 @@ contains
       real(wp), intent(in) :: g, poisson
       logical, intent(in) :: long, scaled
       real(wp), intent(out) :: c(3)
-      real(wp) :: t, c_nu(3, 3), lo(3, 3), hi(3, 3), p(3)
+      real(wp) :: t, c_nu(3, 3), lo(3, 3), hi(3, 3), w_lo(3), w_hi(3), g_lo, g_hi
       integer :: row, k
 
       row = min(max(int(10.0_wp*g), 1), 9)
@@ -179,17 +177,27 @@ contains
          lo = kalker_table_short(:, :, row)
          hi = kalker_table_short(:, :, row + 1)
       end if
+      ! Linear weights in g, of g·c₁₁, g·c₂₂, g^{3/2}·c₂₃ when scaled (physics.md §2.3).
+      w_lo = 1.0_wp - t
+      w_hi = t
       if (scaled) then
-         p = scaled_power
-      else
-         p = 0.0_wp
+         g_lo = kalker_table_g(row)
+         g_hi = kalker_table_g(row + 1)
+         w_lo = w_lo*scaling(g_lo)/scaling(g)
+         w_hi = w_hi*scaling(g_hi)/scaling(g)
       end if
       do k = 1, 3
-         c_nu(:, k) = ((1.0_wp - t)*lo(:, k)*kalker_table_g(row)**p(k) &
-            + t*hi(:, k)*kalker_table_g(row + 1)**p(k))/g**p(k)
+         c_nu(:, k) = w_lo(k)*lo(:, k) + w_hi(k)*hi(:, k)
       end do
       c = poisson_interpolation(c_nu, poisson)
    end subroutine table_interpolation
+
+   !> The scale factors g, g, g^{3/2} of c₁₁, c₂₂, c₂₃ on the a > b branch (physics.md §2.3).
+   pure function scaling(g) result(f)
+      real(wp), intent(in) :: g
+      real(wp) :: f(3)
+      f = [g, g, g*sqrt(g)]
+   end function scaling
 
    !> Quadratic Lagrange interpolation in ν of 1/c through ν = 0, 0.25, 0.5 (physics.md §2.3).
    pure function poisson_interpolation(c_nu, poisson) result(c)
