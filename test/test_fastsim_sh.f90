@@ -747,7 +747,7 @@ contains
          transfer(c_loc(ws%y), y_addr) == y_addr, message='workspace shrunk')
    end subroutine test_no_reallocation
 
-   !> Inconsistent strip tables are rejected with the strip named.
+   !> Inconsistent strip tables are rejected with the strip named; an unprepared workspace too.
    subroutine test_invalid_patch(error)
       type(error_type), allocatable, intent(out) :: error
       type(normal_patch_type) :: patch
@@ -768,6 +768,12 @@ contains
       call solve_fastsim_sh(ws, patch, material(), creepage_type(), options, res, lerr)
       call check(error, allocated(lerr), message='unloaded patch accepted')
       if (allocated(error)) return
+      block
+         type(march_workspace_type) :: fresh
+         call solve_prepared(fresh, creepage_type(), res, lerr)
+         call check(error, allocated(lerr), message='unprepared workspace accepted')
+         if (allocated(error)) return
+      end block
       patch = hertz_patch(ref_a, ref_b, ref_load, 10, 0.0_wp)
       deallocate (patch%gamma)
       call solve_fastsim_sh(ws, patch, material(), creepage_type(), options, res, lerr)

@@ -13,7 +13,7 @@
 !> the weighted bounds, whose weighting is applied to the output only, §6.4).
 module shcontact_tangential_march
    use shcontact_core_kinds, only: wp, i1
-   use shcontact_core_error, only: error_type
+   use shcontact_core_error, only: error_type, fatal_error, stat_usage
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
       state_slip
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
@@ -171,13 +171,18 @@ contains
       type(creepage_type), intent(in) :: creepage
       !> The solution; its arrays are (re)allocated only when their shape changes.
       type(tangential_patch_type), intent(inout) :: result
-      !> Set for non-finite creepages, or a singular scaled spin model.
+      !> Set for an unprepared workspace, non-finite creepages, or a singular scaled spin model.
       type(error_type), allocatable, intent(out) :: error
       real(wp), dimension(lanes) :: cx, cy, cphi, peak, mu_pe, weight, sx, sy, sxy, cmax
       real(wp) :: lambda, nux, phix, nuy, phis, strip_area, fx, fy, mz, area, area_adh, &
          coulomb2, mu
       integer :: n_adh(lanes), s0, s, l, nx, n_used
 
+      if (ws%n_active < 1) then
+         call fatal_error(error, 'solve_prepared: the workspace holds no loaded strip; call '// &
+            'prepare_fastsim or prepare_fastsim_sh first', stat_usage)
+         return
+      end if
       call check_creepage(creepage, error)
       if (allocated(error)) return
       lambda = 0.0_wp
