@@ -16,6 +16,7 @@ program tester
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
    use test_spline, only: collect_spline
+   use test_geometry, only: collect_geometry
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -29,7 +30,8 @@ program tester
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
       new_testsuite('lapack', collect_lapack), &
-      new_testsuite('spline', collect_spline) &
+      new_testsuite('spline', collect_spline), &
+      new_testsuite('geometry', collect_geometry) &
       ]
 
    call read_selection(suite_name, test_name)

@@ -578,7 +578,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: rmap, wmap, frame
       type(frame_point_type) :: r0, w0
-      real(wp), allocatable :: left(:, :), right(:, :)
+      real(wp), allocatable :: left(:, :), right(:, :), rows(:, :)
       real(wp) :: h, gap0
       integer :: n_left, n_right, n_max, dir_r, dir_w, n, i, i0
 
@@ -603,17 +603,22 @@ contains
 
       n = n_left + n_right + 1
       i0 = n_left + 1
+      allocate (rows(row_count, n))
+      rows(:, i0) = strip_row(prepared, r0, w0, pair%theta, gap0)
+      rows(:, i0 + 1:n) = right(:, 1:n_right)
+      rows(:, i0 - 1:1:-1) = left(:, 1:n_left)
       patch%h = h
-      allocate (patch%y(n), patch%gap(n), patch%curv_a(n), patch%curv_b(n), patch%gamma(n), &
-         patch%r_wheel(n))
-      call store(i0, strip_row(prepared, r0, w0, pair%theta, gap0))
-      do i = 1, n_right
-         call store(i0 + i, right(:, i))
-      end do
-      do i = 1, n_left
-         call store(i0 - i, left(:, i))
-      end do
       patch%y = [((i - i0)*h, i=1, n)]
+      patch%gap = max(rows(1, :), 0.0_wp)
+      patch%gap(i0) = 0.0_wp
+      patch%curv_b = max(0.5_wp*rows(2, :), prepared%options%b_min)
+      patch%gamma = rows(3, :)
+      patch%r_wheel = rows(4, :)
+      if (prepared%options%a_reference_normal) then
+         patch%curv_a = cos(pair%theta)/(2.0_wp*patch%r_wheel)
+      else
+         patch%curv_a = cos(patch%gamma)/(2.0_wp*patch%r_wheel)
+      end if
       patch%y_track = side*pair%y
       patch%z_track = pair%z
       patch%y_rail = r0%u
@@ -621,25 +626,11 @@ contains
       patch%gamma0 = pair%theta
       patch%r0 = patch%r_wheel(i0)
       patch%gap0 = gap0
-      patch%gap(i0) = 0.0_wp
-      if (prepared%options%a_reference_normal) &
-         patch%curv_a = cos(pair%theta)/(2.0_wp*patch%r_wheel)
       if (any(patch%r_wheel <= 0.0_wp)) then
          call fatal_error(error, 'contact search: a wheel rolling radius <= 0 in the patch at '// &
             'y = '//str(patch%y_track)//' mm; check the nominal radius and the wheel profile', &
             stat_invalid_input)
       end if
-   contains
-      !> Copy one row (gap, g'', γ, r_w) into the patch tables.
-      pure subroutine store(i, row)
-         integer, intent(in) :: i
-         real(wp), intent(in) :: row(:)
-         patch%gap(i) = max(row(1), 0.0_wp)
-         patch%curv_b(i) = max(0.5_wp*row(2), prepared%options%b_min)
-         patch%gamma(i) = row(3)
-         patch%r_wheel(i) = row(4)
-         patch%curv_a(i) = cos(row(3))/(2.0_wp*row(4))
-      end subroutine store
    end subroutine build_table
 
    !> One row of the tables from the rail and wheel points of a strip.
