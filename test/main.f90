@@ -15,6 +15,9 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_profile_reader, only: collect_profile_reader
+   use test_profile_cleanup, only: collect_profile_cleanup
+   use test_profile_builtin, only: collect_profile_builtin
    use test_spline, only: collect_spline
    use test_geometry, only: collect_geometry
    implicit none
@@ -30,6 +33,9 @@ program tester
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
       new_testsuite('lapack', collect_lapack), &
+      new_testsuite('profile_reader', collect_profile_reader), &
+      new_testsuite('profile_cleanup', collect_profile_cleanup), &
+      new_testsuite('profile_builtin', collect_profile_builtin), &
       new_testsuite('spline', collect_spline), &
       new_testsuite('geometry', collect_geometry) &
       ]
