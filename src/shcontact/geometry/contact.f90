@@ -168,7 +168,7 @@ contains
       real(wp) :: s0
       logical :: found
       type(spline_point_type) :: p
-      integer :: i
+      real(wp), allocatable :: u(:), v(:)
 
       call check_track(track, error)
       if (allocated(error)) return
@@ -196,12 +196,9 @@ contains
       prepared%z_tape = p%z
       call sample_spline(prepared%wheel, options%sample_step, prepared%wheel_s, &
          prepared%wheel_y, prepared%wheel_z)
-      call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, &
-         prepared%rail_y, prepared%rail_z)
-      do i = 1, size(prepared%rail_s)
-         call prepared%rail_map%point(prepared%rail_y(i), prepared%rail_z(i), &
-            prepared%rail_y(i), prepared%rail_z(i))
-      end do
+      call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
+      allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
+      call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)
    end subroutine prepare_profiles
 
    !> Find the contact patches for one wheel position, from raw profiles (smoothing included).
@@ -360,7 +357,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: wy(:), wz(:), rz(:), rs(:), wzl(:), ws(:), gap(:)
       logical, allocatable :: rc(:), wc(:)
-      integer :: minima(max_candidates), count, m, j, i
+      integer, allocatable :: minima(:)
+      integer :: count, m, j, i
       real(wp) :: h, y0, y1, slope
       logical :: interior
 
@@ -379,7 +377,7 @@ contains
          return
       end if
       m = int((y1 - y0)/h) + 1
-      allocate (rz(m), rs(m), wzl(m), ws(m), gap(m), rc(m), wc(m))
+      allocate (rz(m), rs(m), wzl(m), ws(m), gap(m), rc(m), wc(m), minima(m))
       call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
          .false., rz, rs, rc)
       call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
@@ -396,6 +394,7 @@ contains
       end if
       shift = gap(minima(1))
       do i = 1, count
+         if (n_pairs == size(pairs)) exit
          j = minima(i)
          ! Keep what may lie within max_gap along its own normal (gap·cos γ, with a margin).
          slope = (rz(j + 1) - rz(j - 1))/(2.0_wp*h)

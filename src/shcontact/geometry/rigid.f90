@@ -98,8 +98,11 @@ contains
    !> The inverse map.
    elemental type(rigid_map_type) function inverse(self) result(map)
       class(rigid_map_type), intent(in) :: self
+      real(wp) :: dy, dz
       map = rigid_map_type(-self%angle, self%c, -self%s, 0.0_wp, 0.0_wp)
-      call map%vector(-self%dy, -self%dz, map%dy, map%dz)
+      call map%vector(-self%dy, -self%dz, dy, dz)
+      map%dy = dy
+      map%dz = dz
    end function inverse
 
 end module shcontact_geometry_rigid

@@ -67,7 +67,8 @@ contains
       logical, intent(in) :: valid(:)
       !> Negligible height of a separating maximum (mm).
       real(wp), intent(in) :: merge_gap
-      !> Indices of the minima kept, deepest first (the first `count` entries are set).
+      !> Indices of the minima kept, deepest first (the first `count` entries are set; the size
+      !> of the gap array is always enough).
       integer, intent(out) :: minima(:)
       !> Number of minima kept.
       integer, intent(out) :: count
