@@ -522,7 +522,8 @@ contains
       do it = 1, 200
          trial = lo
          trial%s_r = min(s_max, max(s_min, lo%s_r + dir*step))
-         if (trial%s_r == lo%s_r) then
+         if (abs(trial%s_r - lo%s_r) < s_tol) then
+            ! The end of the rail profile: no minimum on this side.
             ok = .false.
             return
          end if

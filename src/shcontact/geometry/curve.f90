@@ -99,7 +99,7 @@ contains
          k = k + 1
          if (k > n - 1) return
       end do
-      s = spline%solve_in_interval(k, ay, az, target)
+      s = spline%solve_in_interval(k, ay, az, target, guess=s)
       found = .true.
    contains
       !> dir·(η(s) − eta), increasing in s where the profile is followed the right way.

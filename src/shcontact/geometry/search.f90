@@ -38,7 +38,8 @@ contains
       env = 0.0_wp
       env_s = 0.0_wp
       do i = 1, size(y) - 1
-         if (y(i + 1) == y(i)) cycle
+         ! A vertical segment crosses no grid line that its neighbours do not.
+         if (abs(y(i + 1) - y(i)) <= tiny(1.0_wp)) cycle
          lo = min(y(i), y(i + 1)); hi = max(y(i), y(i + 1))
          j1 = max(1, ceiling((lo - y0)/h) + 1)
          j2 = min(m, floor((hi - y0)/h) + 1)

@@ -260,14 +260,18 @@ contains
       qlo = 1.0_wp/h(1:m)
       qhi = 1.0_wp/h(2:m + 1)
       qmid = -qlo - qhi
+      ! Upper band storage: diagonal in row 3, first and second super-diagonals in rows 2, 1.
       ab = 0.0_wp
       do j = 1, m
          ab(3, j) = (h(j) + h(j + 1))/3.0_wp + lambda*(qlo(j)**2/w(j) + qmid(j)**2/w(j + 1) &
             + qhi(j)**2/w(j + 2))
-         if (j > 1) ab(2, j) = h(j)/6.0_wp + lambda*(qmid(j - 1)*qlo(j)/w(j) &
-            + qhi(j - 1)*qmid(j)/w(j + 1))
-         if (j > 2) ab(1, j) = lambda*qhi(j - 2)*qlo(j)/w(j)
          rhs(j, :) = qlo(j)*val(j, :) + qmid(j)*val(j + 1, :) + qhi(j)*val(j + 2, :)
+      end do
+      do j = 2, m
+         ab(2, j) = h(j)/6.0_wp + lambda*(qmid(j - 1)*qlo(j)/w(j) + qhi(j - 1)*qmid(j)/w(j + 1))
+      end do
+      do j = 3, m
+         ab(1, j) = lambda*qhi(j - 2)*qlo(j)/w(j)
       end do
       call solve_spd_banded(ab, rhs, error)
       if (allocated(error)) return
@@ -437,9 +441,10 @@ contains
    end function projection
 
    !> The arc length in [a, b] ⊂ interval k where ay·y(s) + az·z(s) = target, given that the
-   !> projection changes sign there (default [a, b] = the whole interval). Newton steps kept
-   !> inside a shrinking bracket, bisection when a step would leave it.
-   pure real(wp) function solve_in_interval(self, k, ay, az, target, a, b) result(s)
+   !> projection changes sign there (default [a, b] = the whole interval). Newton steps from
+   !> `guess` (default: the middle) kept inside a shrinking bracket, bisection when a step would
+   !> leave it.
+   pure real(wp) function solve_in_interval(self, k, ay, az, target, a, b, guess) result(s)
       class(profile_spline_type), intent(in) :: self
       !> Interval.
       integer, intent(in) :: k
@@ -449,6 +454,8 @@ contains
       real(wp), intent(in) :: target
       !> Sub-range of the interval (mm).
       real(wp), intent(in), optional :: a, b
+      !> Starting point (mm), e.g. the previous solution when following a curve.
+      real(wp), intent(in), optional :: guess
       real(wp) :: c(4), lo, hi, f, df, d2f, flo, step
       integer :: it
 
@@ -459,6 +466,9 @@ contains
       if (present(b)) hi = b
       call cubic(c, lo - self%s(k), flo, df, d2f)
       s = 0.5_wp*(lo + hi)
+      if (present(guess)) then
+         if (guess > lo .and. guess < hi) s = guess
+      end if
       do it = 1, 100
          call cubic(c, s - self%s(k), f, df, d2f)
          if ((f < 0.0_wp) .eqv. (flo < 0.0_wp)) then
