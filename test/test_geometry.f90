@@ -28,9 +28,10 @@ module test_geometry
    character(len=*), parameter :: scan_file_variable = 'SHCONTACT_GEOMETRY_SCAN'
 
    ! Tolerances: the analytic profiles are sampled every 0.1–0.2 mm and interpolated by cubic
-   ! splines, which reproduce circles to O(h⁴/R³) in position and O((h/R)²) in curvature; angles
-   ! to 1e-8 (where the rail is placed by its sampled arc, positions to 1e-6 mm and gaps to
-   ! 1e-7 mm), gaps to 1e-8 mm, curvatures to 1e-4 relative.
+   ! splines, which reproduce circles to O(h⁴/R³) in position and O((h/R)²) in curvature. Angles
+   ! and gaps are checked to 1e-8 (rad, mm), curvatures to 1e-4 relative; where the rail is placed
+   ! by the gauge point of a sampled arc (circle on circle), positions to 1e-6 mm and gaps to
+   ! 1e-7 mm.
 
 contains
 

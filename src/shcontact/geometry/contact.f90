@@ -282,16 +282,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: wheel_map
       type(normal_pair_type) :: pairs(max_candidates)
-      integer :: n_pairs, i
+      integer :: n_pairs
 
       call place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
       if (allocated(error)) return
       rail_y = position%side*prepared%rail_y
       rail_z = prepared%rail_z
       allocate (wheel_y(size(prepared%wheel_y)), wheel_z(size(prepared%wheel_z)))
-      do i = 1, size(wheel_y)
-         call wheel_map%point(prepared%wheel_y(i), prepared%wheel_z(i), wheel_y(i), wheel_z(i))
-      end do
+      call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wheel_y, wheel_z)
       wheel_y = position%side*wheel_y
    end subroutine positioned_profiles
 
