@@ -15,6 +15,7 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_hertz, only: collect_hertz
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -27,7 +28,8 @@ program tester
       new_testsuite('layout', collect_layout), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
-      new_testsuite('lapack', collect_lapack) &
+      new_testsuite('lapack', collect_lapack), &
+      new_testsuite('hertz', collect_hertz) &
       ]
 
    call read_selection(suite_name, test_name)
