@@ -54,7 +54,7 @@ module shcontact_normal_loading
    type, extends(scalar_function_type) :: patch_residual
       type(normal_contact_type), pointer :: contact => null()
       type(normal_patch_type), pointer :: patch => null()
-      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp, last_x = -1.0_wp
+      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp
       type(error_type), allocatable :: error
    contains
       procedure :: eval => patch_residual_eval
@@ -65,7 +65,7 @@ module shcontact_normal_loading
    type, extends(scalar_function_type) :: vertical_residual
       type(normal_contact_type), pointer :: contacts(:) => null()
       type(normal_patch_type), pointer :: patches(:) => null()
-      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp, last_x = -1.0_wp, force = 0.0_wp
+      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp, force = 0.0_wp
       type(error_type), allocatable :: error
    contains
       procedure :: eval => vertical_residual_eval
@@ -155,10 +155,9 @@ contains
       call solve_increasing(f, guess%approach, x_max, root, error)
       if (allocated(f%error)) call move_alloc(f%error, error)
       if (allocated(error)) return
-      if (root /= f%last_x) then
-         call fill_patch(contact, f%origin + root, patch, error)
-         if (allocated(error)) return
-      end if
+      ! Brent may stop without evaluating at its final estimate: fill the patch there.
+      call fill_patch(contact, f%origin + root, patch, error)
+      if (allocated(error)) return
       if (abs(patch%load - load) > load_rtol*load) then
          write (buf, '(es12.4,a,es12.4)') patch%load, ' N instead of ', load
          call fatal_error(error, 'normal force matching did not converge: '//trim(buf)//' N', &
@@ -235,12 +234,10 @@ contains
       call solve_increasing(f, guess%approach/cos_g, x_max, root, error)
       if (allocated(f%error)) call move_alloc(f%error, error)
       if (allocated(error)) return
-      if (root /= f%last_x) then
-         residual = f%eval(root)
-         if (allocated(f%error)) then
-            call move_alloc(f%error, error)
-            return
-         end if
+      residual = f%eval(root)
+      if (allocated(f%error)) then
+         call move_alloc(f%error, error)
+         return
       end if
       dz = f%origin + root
       if (abs(f%force - f_z) > load_rtol*f_z) then
@@ -339,7 +336,6 @@ contains
       real(wp) :: fx
       type(error_type), allocatable :: error
 
-      self%last_x = x
       call fill_patch(self%contact, self%origin + x, self%patch, error)
       if (allocated(error)) then
          ! Report after the search; answer as if overloaded so that the search stays finite.
@@ -358,7 +354,6 @@ contains
       real(wp) :: dz, cos_g
       integer :: k
 
-      self%last_x = x
       dz = self%origin + x
       self%force = 0.0_wp
       do k = 1, size(self%contacts)

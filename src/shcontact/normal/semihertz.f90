@@ -97,11 +97,12 @@ contains
          return
       end if
 
-      ! The shape depends only on A/B: solve it per distinct ratio (constant runs are common).
+      ! The shape depends only on A/B: solve it per distinct ratio (runs of equal ratios, to the
+      ! last bit, are common on circular arcs).
       last_ratio = -1.0_wp
       do i = 1, n
          ratio = geometry%curv_a(i)/geometry%curv_b(i)
-         if (ratio /= last_ratio) then
+         if (abs(ratio - last_ratio) > spacing(ratio)) then
             call hertz_shape(ratio, shape, error)
             if (allocated(error)) return
             last_ratio = ratio
