@@ -141,14 +141,17 @@ contains
       end select
       if (allocated(error)) return
 
-      call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
-      if (allocated(error)) return
-      if (points%n < min_profile_points) then
-         call fatal_error(error, filename//', line '//str_int(size(lines))//': the file ends '// &
+      if (points%n == 0) then
+         call fatal_error(error, filename//': no profile points in the file', stat_invalid_input)
+         return
+      else if (points%n < min_profile_points) then
+         call fatal_error(error, at(filename, points%line(points%n))//'the point list ends '// &
             'after '//str_int(points%n)//' profile point(s); a profile needs at least '// &
             str_int(min_profile_points), stat_invalid_input)
          return
       end if
+      call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
+      if (allocated(error)) return
       call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, error)
       if (allocated(error)) return
 
