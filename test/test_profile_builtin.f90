@@ -216,12 +216,14 @@ contains
 
    !> Built-in S1002 against MBench_S1002_v3.prw (same origin by definition: the tape circle):
    !> vertical deviation on the tread and flange, S from −62.76 (end of section G, past the
-   !> flange tip) to 60, below 0.01 mm. Measured: 1.9e-6 mm (see doc/profiles.md).
+   !> flange tip) to 60, below 0.01 mm; and the section formulas at the sample's S below
+   !> 1e-5 mm. Measured figures in doc/profiles.md.
    subroutine test_s1002_vs_mbench(error)
       type(error_type), allocatable, intent(out) :: error
       type(profile_type) :: built, sample
       type(lib_error), allocatable :: err
-      real(wp) :: worst
+      real(wp) :: worst, f, df
+      integer :: i, k
       if (.not. have_shared(error)) return
       call builtin_profile('S1002', built, err)
       if (lib_failed(error, err)) return
@@ -231,6 +233,16 @@ contains
       call report('S1002 vs MBench_S1002_v3.prw, max |dz| (mm) on -62.76 <= y <= 60', worst)
       call check(error, worst, 0.0_wp, 'S1002: largest vertical deviation (mm)', &
          thr=mbench_tolerance)
+      if (allocated(error)) return
+      ! The section formulas themselves, at the sample's own S (all of it, flange back included).
+      worst = 0.0_wp
+      do i = 1, sample%size()
+         k = count(s1002_bounds(2:s1002_section_count) > sample%y(i)) + 1
+         call s1002_section(k, sample%y(i), f, df)
+         worst = max(worst, abs(f - sample%z(i)))
+      end do
+      call report('S1002 section formulas vs MBench_S1002_v3.prw, max |dz| (mm)', worst)
+      call check(error, worst, 0.0_wp, 'S1002 formulas: largest deviation (mm)', thr=1.0e-5_wp)
    end subroutine test_s1002_vs_mbench
 
    !> Built-in UIC60-canted against MBench_UIC60_v3.prr after aligning origins (the sample's

@@ -408,7 +408,8 @@ contains
          'nokind.txt:', 'rail or a wheel', '# kind = rail'])
    end subroutine test_bad_structure
 
-   !> A missing file is an I/O error; an unknown format keyword a usage error.
+   !> A missing file or a directory is an I/O error; an unknown format keyword, a bad scale or
+   !> kind a usage error.
    subroutine test_missing(error)
       type(error_type), allocatable, intent(out) :: error
       type(profile_type) :: p
@@ -416,6 +417,10 @@ contains
       call read_profile(tmp//'does_not_exist.prr', p, err)
       call expect_error(error, err, stat_io, [character(len=50) :: &
          'does_not_exist.prr:', 'cannot open the profile file'])
+      if (allocated(error)) return
+      call read_profile('build', p, err, kind=profile_kind_rail)
+      call expect_error(error, err, stat_io, [character(len=50) :: &
+         'build: cannot read the profile file'])
       if (allocated(error)) return
       call read_profile(tmp//'variants.txt', p, err, format='csv')
       call expect_error(error, err, stat_usage, [character(len=50) :: 'variants.txt:', &

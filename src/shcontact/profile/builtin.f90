@@ -17,6 +17,7 @@
 !> S1002 flange tip and the crown tops, in the canonical form of [[profile_type]].
 module shcontact_profile_builtin
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: lower => to_lower
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    implicit none
@@ -391,15 +392,5 @@ contains
       call profile%update_arc_length()
    end subroutine cant_to_highest_point
 
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i, code
-      low = text
-      do i = 1, len(text)
-         code = iachar(text(i:i))
-         if (code >= iachar('A') .and. code <= iachar('Z')) low(i:i) = achar(code + 32)
-      end do
-   end function lower
 
 end module shcontact_profile_builtin

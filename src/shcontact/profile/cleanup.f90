@@ -24,6 +24,7 @@
 module shcontact_profile_cleanup
    use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_constants, only: pi, two_pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_profile_points, only: profile_type, profile_kind_wheel
@@ -385,32 +386,6 @@ contains
       end if
    end function source_name
 
-   pure function str_int(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') i
-      text = trim(buffer)
-   end function str_int
 
-   !> A real in short form: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6, else 6 digits.
-   pure function str_real(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      integer :: last
-      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         write (buffer, '(f20.6)') x
-         text = trim(adjustl(buffer))
-         last = verify(text, '0', back=.true.)
-         if (text(last:last) == '.') last = last - 1
-         text = text(:last)
-      else if (x == 0.0_wp) then
-         text = '0'
-      else
-         write (buffer, '(es13.5e3)') x
-         text = trim(adjustl(buffer))
-      end if
-   end function str_real
 
 end module shcontact_profile_cleanup

@@ -25,6 +25,7 @@
 !> numbers. Every rejection names the file, the line and the reason.
 module shcontact_profile_reader
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: lower => to_lower, str_int, str_real
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, stat_usage
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_cleanup, only: is_finite_value, min_profile_points
@@ -141,14 +142,17 @@ contains
       end select
       if (allocated(error)) return
 
-      call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
-      if (allocated(error)) return
-      if (points%n < min_profile_points) then
-         call fatal_error(error, filename//', line '//str_int(size(lines))//': the file ends '// &
+      if (points%n == 0) then
+         call fatal_error(error, filename//': no profile points in the file', stat_invalid_input)
+         return
+      else if (points%n < min_profile_points) then
+         call fatal_error(error, at(filename, points%line(points%n))//'the point list ends '// &
             'after '//str_int(points%n)//' profile point(s); a profile needs at least '// &
             str_int(min_profile_points), stat_invalid_input)
          return
       end if
+      call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
+      if (allocated(error)) return
       call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, error)
       if (allocated(error)) return
 
@@ -1131,43 +1135,7 @@ contains
       end if
    end function kind_name
 
-   pure function lower(text) result(low)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: low
-      integer :: i, code
-      low = text
-      do i = 1, len(text)
-         code = iachar(text(i:i))
-         if (code >= iachar('A') .and. code <= iachar('Z')) low(i:i) = achar(code + 32)
-      end do
-   end function lower
 
-   pure function str_int(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') i
-      text = trim(buffer)
-   end function str_int
 
-   !> A real in short form: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6, else 6 digits.
-   pure function str_real(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      integer :: last
-      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         write (buffer, '(f20.6)') x
-         text = trim(adjustl(buffer))
-         last = verify(text, '0', back=.true.)
-         if (text(last:last) == '.') last = last - 1
-         text = text(:last)
-      else if (x == 0.0_wp) then
-         text = '0'
-      else
-         write (buffer, '(es13.5e3)') x
-         text = trim(adjustl(buffer))
-      end if
-   end function str_real
 
 end module shcontact_profile_reader
