@@ -15,6 +15,14 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_hertz, only: collect_hertz
+   use test_semihertz, only: collect_semihertz
+   use test_normal_loading, only: collect_normal_loading
+   use test_profile_reader, only: collect_profile_reader
+   use test_profile_cleanup, only: collect_profile_cleanup
+   use test_profile_builtin, only: collect_profile_builtin
+   use test_spline, only: collect_spline
+   use test_geometry, only: collect_geometry
    use test_kalker, only: collect_kalker
    use test_fastsim, only: collect_fastsim
    use test_fastsim_sh, only: collect_fastsim_sh
@@ -31,6 +39,14 @@ program tester
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
       new_testsuite('lapack', collect_lapack), &
+      new_testsuite('hertz', collect_hertz), &
+      new_testsuite('semihertz', collect_semihertz), &
+      new_testsuite('normal_loading', collect_normal_loading), &
+      new_testsuite('profile_reader', collect_profile_reader), &
+      new_testsuite('profile_cleanup', collect_profile_cleanup), &
+      new_testsuite('profile_builtin', collect_profile_builtin), &
+      new_testsuite('spline', collect_spline), &
+      new_testsuite('geometry', collect_geometry), &
       new_testsuite('kalker', collect_kalker), &
       new_testsuite('fastsim', collect_fastsim), &
       new_testsuite('fastsim_sh', collect_fastsim_sh) &
