@@ -59,7 +59,7 @@ contains
       call check_normal_patch(patch, error)
       if (allocated(error)) return
 
-      call reserve_workspace(ws, patch%n_strips, options%n_elements)
+      call reserve_workspace(ws, patch%n_strips, options%n_elements, options%fields)
       g = material%shear_modulus
       mu = material%friction
       r0 = patch%r0

@@ -11,6 +11,13 @@
 !> x'_j = 1 − (2j − 1)/n_x, p ← p − h_j (R_x, R_y + R_φ x_mid,j), then the radial projection onto
 !> the bound g_j = μ p̂_i s_j with s_j = √(1 − x'_j²) (ellipsoidal) or 1 − x'_j² (parabolic and
 !> the weighted bounds, whose weighting is applied to the output only, §6.4).
+!>
+!> **Speed** (doc/performance.md). The march along a strip is a chain of dependent steps, each
+!> waiting for a division and a square root; the strips are independent. So the loops run over
+!> the elements outside and over the strips inside: every inner loop is one SIMD loop across the
+!> strips of a block (up to [[max_block]] of them, enough independent chains to keep the
+!> divider busy, few enough for the block's buffers to stay in L1), and each element step runs
+!> in stages (march, output weighting, sums, fields), each a simple loop the compiler vectorises.
 module shcontact_tangential_march
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_usage
@@ -25,8 +32,8 @@ module shcontact_tangential_march
 
    public :: march_workspace_type, reserve_workspace, set_element_grid, solve_prepared
 
-   !> Strips marched together (independent dependency chains; a multiple of the SIMD width).
-   integer, parameter :: lanes = 8
+   !> Most strips marched together by one SIMD loop.
+   integer, parameter :: max_block = 64
 
    !> Creepage-independent data of one patch. Per-strip arrays are indexed by the loaded strip
    !> s = 1..n_active (strip(s) is its index in the patch); they are allocated with a capacity
@@ -47,6 +54,12 @@ module shcontact_tangential_march
       real(wp) :: gamma0 = 0.0_wp, phi_geo0 = 0.0_wp
       !> (32/(9π)) Σ k_i N_i / F_n (physics.md §6.4).
       real(wp) :: parabolic_load_ratio = 0.0_wp
+      !> n_x and ellipsoidal shape (or not) of the element grid held in xn … inv_ell; 0 when
+      !> none: [[set_element_grid]] recomputes the grid only when they change.
+      integer :: grid_nx = 0
+      logical :: grid_ellipsoidal = .false.
+      !> Capacity (strips of a block × elements) of the field buffers tx … slip.
+      integer :: field_capacity = 0
       !> Centres of all strips as reported (mm).
       real(wp), allocatable :: y_strip(:)
       !> Index in the patch of loaded strip s.
@@ -71,26 +84,31 @@ module shcontact_tangential_march
       real(wp), allocatable :: cos_ratio(:), phi_geo(:), dphi_geo(:), rho(:)
       !> Strips without load (reported as exterior).
       integer, allocatable :: inactive(:)
+      !> Per loaded strip, for the creepages being solved: increments of p_x, p_y per unit
+      !> normalised step, −a_s (R_x, R_y), and of p_y per unit step·x', −a_s² R_φ (§6.5 step 2);
+      !> μ times the peak of p_n,e.
+      real(wp), allocatable :: cx(:), cy(:), cphi(:), mu_pe(:)
       !> Per element: x'_j, step h_j/a, step times midpoint h_j x_mid,j/a², bound shape s_j,
       !> √(1 − x'²), 1 − x'², 1/√(1 − x'²).
       real(wp), allocatable :: xn(:), hn(:), hm(:), shape(:), ell(:), par(:), inv_ell(:)
-      !> 1/√(1 − x'²) and 1 − x'² repeated for every lane, index (lane, element): lets the
-      !> weighting loops run over contiguous lanes.
-      real(wp), allocatable :: inv_ell_lanes(:), par_lanes(:)
-      !> Work buffers of one group of [[lanes]] strips, index (lane, element): march tractions,
-      !> projection factor (1 in adhesion, < 1 in slip), output tractions.
-      real(wp), allocatable :: tx(:), ty(:), sc(:), ox(:), oy(:)
+      !> Field buffers of one block, index (strip of the block, element), allocated only when
+      !> the fields are wanted: output tractions, projection factor (1 in adhesion, < 1 in slip),
+      !> slip magnitude.
+      real(wp), allocatable :: tx(:), ty(:), sc(:), slip(:)
    end type march_workspace_type
 
 contains
 
    !> Make room for n_strips strips and nx elements (allocates only when the capacity grows) and
-   !> record the sizes.
-   pure subroutine reserve_workspace(ws, n_strips, nx)
+   !> record the sizes. The field buffers are reserved only when `fields`.
+   pure subroutine reserve_workspace(ws, n_strips, nx, fields)
       !> The workspace.
       type(march_workspace_type), intent(inout) :: ws
       !> Strips of the patch and elements per strip.
       integer, intent(in) :: n_strips, nx
+      !> Whether the per-element fields will be wanted.
+      logical, intent(in) :: fields
+      integer :: n_field
 
       ws%n_strips = n_strips
       ws%nx = nx
@@ -112,6 +130,16 @@ contains
       call reserve(ws%phi_geo, n_strips)
       call reserve(ws%dphi_geo, n_strips)
       call reserve(ws%rho, n_strips)
+      call reserve(ws%cx, n_strips)
+      call reserve(ws%cy, n_strips)
+      call reserve(ws%cphi, n_strips)
+      call reserve(ws%mu_pe, n_strips)
+      ! A grid array that grows loses its contents: the grid must then be recomputed.
+      if (allocated(ws%xn)) then
+         if (size(ws%xn) < nx) ws%grid_nx = 0
+      else
+         ws%grid_nx = 0
+      end if
       call reserve(ws%xn, nx)
       call reserve(ws%hn, nx)
       call reserve(ws%hm, nx)
@@ -119,23 +147,27 @@ contains
       call reserve(ws%ell, nx)
       call reserve(ws%par, nx)
       call reserve(ws%inv_ell, nx)
-      call reserve(ws%inv_ell_lanes, lanes*nx)
-      call reserve(ws%par_lanes, lanes*nx)
-      call reserve(ws%tx, lanes*nx)
-      call reserve(ws%ty, lanes*nx)
-      call reserve(ws%sc, lanes*nx)
-      call reserve(ws%ox, lanes*nx)
-      call reserve(ws%oy, lanes*nx)
+      if (fields) then
+         n_field = min(n_strips, max_block)*nx
+         call reserve(ws%tx, n_field)
+         call reserve(ws%ty, n_field)
+         call reserve(ws%sc, n_field)
+         call reserve(ws%slip, n_field)
+         ws%field_capacity = size(ws%tx)
+      end if
    end subroutine reserve_workspace
 
    !> Element centres, steps and bound shapes of the strip-adapted grid (physics.md §3.2, §6.5
-   !> step 3), for ws%nx elements and ws%bound.
+   !> step 3), for ws%nx elements and ws%bound; kept when n_x and the bound shape are unchanged.
    pure subroutine set_element_grid(ws)
       !> The workspace (nx and bound set).
       type(march_workspace_type), intent(inout) :: ws
       real(wp) :: x_prev, step
+      logical :: ellipsoidal
       integer :: j
 
+      ellipsoidal = ws%bound == bound_ellipsoidal
+      if (ws%grid_nx == ws%nx .and. (ws%grid_ellipsoidal .eqv. ellipsoidal)) return
       step = 2.0_wp/real(ws%nx, wp)
       x_prev = 1.0_wp
       do j = 1, ws%nx
@@ -149,21 +181,17 @@ contains
          ws%inv_ell(j) = 1.0_wp/ws%ell(j)
          x_prev = ws%xn(j)
       end do
-      do j = 1, ws%nx
-         ws%inv_ell_lanes((j - 1)*lanes + 1:j*lanes) = ws%inv_ell(j)
-         ws%par_lanes((j - 1)*lanes + 1:j*lanes) = ws%par(j)
-      end do
-      if (ws%bound == bound_ellipsoidal) then
+      if (ellipsoidal) then
          ws%shape(1:ws%nx) = ws%ell(1:ws%nx)
       else
          ws%shape(1:ws%nx) = ws%par(1:ws%nx)
       end if
+      ws%grid_nx = ws%nx
+      ws%grid_ellipsoidal = ellipsoidal
    end subroutine set_element_grid
 
    !> Solve one set of creepages on a prepared workspace (physics.md §6.5): local creepages per
    !> strip, the march, the output weighting, totals, and the per-element fields when ws%fields.
-   !> Strips are marched [[lanes]] at a time, branch-free, so that their dependency chains overlap
-   !> and vectorise; a last incomplete group repeats its last strip in the unused lanes.
    pure subroutine solve_prepared(ws, creepage, result, error)
       !> The prepared workspace (its buffers are overwritten).
       type(march_workspace_type), intent(inout) :: ws
@@ -173,14 +201,19 @@ contains
       type(tangential_patch_type), intent(inout) :: result
       !> Set for an unprepared workspace, non-finite creepages, or a singular scaled spin model.
       type(error_type), allocatable, intent(out) :: error
-      real(wp), dimension(lanes) :: cx, cy, cphi, peak, mu_pe, weight, sx, sy, sxy, cmax
-      real(wp) :: lambda, nux, phix, nuy, phis, strip_area, fx, fy, mz, area, area_adh, &
-         coulomb2, mu
-      integer :: n_adh(lanes), s0, s, l, nx, n_used
+      real(wp), dimension(max_block) :: sx, sy, sxy, cmax, n_adh
+      real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu
+      integer :: b0, s, l, m, nx, n_blocks, block
 
       if (ws%n_active < 1) then
          call fatal_error(error, 'solve_prepared: the workspace holds no loaded strip; call '// &
             'prepare_fastsim or prepare_fastsim_sh first', stat_usage)
+         return
+      end if
+      if (ws%fields .and. ws%field_capacity < min(ws%n_active, max_block)*ws%nx) then
+         call fatal_error(error, 'solve_prepared: fields wanted but the workspace was prepared '// &
+            'without them; set options%fields before prepare_fastsim or prepare_fastsim_sh', &
+            stat_usage)
          return
       end if
       call check_creepage(creepage, error)
@@ -193,6 +226,7 @@ contains
       nx = ws%nx
       mu = ws%friction
       call size_result(result, nx, ws%n_strips, ws%fields)
+      call strip_increments(ws, creepage, lambda)
 
       fx = 0.0_wp
       fy = 0.0_wp
@@ -200,36 +234,22 @@ contains
       area = 0.0_wp
       area_adh = 0.0_wp
       coulomb2 = 0.0_wp
-      do s0 = 1, ws%n_active, lanes
-         n_used = min(lanes, ws%n_active - s0 + 1)
-         do l = 1, lanes
-            s = s0 + min(l, n_used) - 1
-            call local_creepages(ws%spin_model, creepage%nu_x, creepage%nu_y, creepage%phi, &
-               lambda, ws%cos_ratio(s), ws%phi_geo(s), ws%dphi_geo(s), ws%rho(s), ws%phi_geo0, &
-               nux, phix, nuy, phis)
-            ! Increments per unit normalised step: −a_s (R_x, R_y) and −a_s² R_φ (§6.5 step 2).
-            cx(l) = -(ws%akx(s)*nux - ws%akxs_y(s)*phix)
-            cy(l) = -ws%aky(s)*nuy
-            cphi(l) = -ws%a2kphi(s)*phis
-            peak(l) = ws%bound_peak(s)
-            mu_pe(l) = mu*ws%pe_peak(s)
-            weight(l) = ws%weight(s)
-         end do
-         call march_lanes(nx, ws%hn, ws%hm, ws%shape, cx, cy, cphi, peak, ws%tx, ws%ty, ws%sc)
-         call weight_lanes(ws%bound, nx, mu_pe, weight, ws%par_lanes, ws%inv_ell_lanes, ws%tx, &
-            ws%ty, ws%sc, ws%ox, ws%oy)
-         call sum_lanes(nx, ws%xn, ws%inv_ell, ws%ox, ws%oy, ws%sc, sx, sy, sxy, cmax, n_adh)
-
-         do l = 1, n_used
-            s = s0 + l - 1
+      ! Blocks of equal size, at most max_block strips each.
+      n_blocks = (ws%n_active + max_block - 1)/max_block
+      block = (ws%n_active + n_blocks - 1)/n_blocks
+      do b0 = 1, ws%n_active, block
+         m = min(block, ws%n_active - b0 + 1)
+         call march_block(ws, b0, m, sx, sy, sxy, cmax, n_adh)
+         do l = 1, m
+            s = b0 + l - 1
             strip_area = 2.0_wp*ws%a(s)/real(nx, wp)*ws%dy
             fx = fx + strip_area*sx(l)
             fy = fy + strip_area*sy(l)
             mz = mz + strip_area*(ws%a(s)*sxy(l) - (ws%y_offset + ws%y(s))*sx(l))
             area = area + 2.0_wp*ws%a(s)
-            area_adh = area_adh + 2.0_wp*ws%a(s)*real(n_adh(l), wp)/real(nx, wp)
-            coulomb2 = max(coulomb2, cmax(l)/mu_pe(l)**2)
-            if (ws%fields) call store_strip(ws, s, l, result)
+            area_adh = area_adh + 2.0_wp*ws%a(s)*n_adh(l)/real(nx, wp)
+            coulomb2 = max(coulomb2, cmax(l)/ws%mu_pe(s)**2)
+            if (ws%fields) call store_strip(ws, s, l, m, result)
          end do
       end do
       if (ws%fields) call store_inactive(ws, result)
@@ -248,146 +268,196 @@ contains
       result%dy = ws%dy
    end subroutine solve_prepared
 
-   !> March [[lanes]] strips from the leading edge (physics.md §3.2 steps 2–3). The projection
-   !> onto the bound g_j is written branch-free as the factor f = √(g²/max(|p|², g²)): exactly 1
-   !> in adhesion, g/|p_pred| < 1 in slip (radial projection, direction kept, seed eqs 14–15),
-   !> and never a division by zero (g > 0 at element centres). t = the projected tractions.
-   pure subroutine march_lanes(nx, hn, hm, shape, cx, cy, cphi, peak, tx, ty, sc)
-      integer, intent(in) :: nx
-      real(wp), intent(in) :: hn(nx), hm(nx), shape(nx)
-      real(wp), dimension(lanes), intent(in) :: cx, cy, cphi, peak
-      real(wp), dimension(lanes, nx), intent(out) :: tx, ty, sc
-      real(wp), dimension(lanes) :: px, py
-      real(wp) :: hj, mj, sj, g2, f
-      integer :: j, l
+   !> The increments of every loaded strip for these creepages, from its local creepages
+   !> (shcontact_tangential_spin), and μ p_n,e.
+   pure subroutine strip_increments(ws, creepage, lambda)
+      type(march_workspace_type), intent(inout) :: ws
+      type(creepage_type), intent(in) :: creepage
+      real(wp), intent(in) :: lambda
+      real(wp) :: nux, phix, nuy, phis
+      integer :: s
 
-      px = 0.0_wp
-      py = 0.0_wp
-      do j = 1, nx
-         hj = hn(j)
-         mj = hm(j)
-         sj = shape(j)
-         ! The lanes are independent: an explicit SIMD loop (with array syntax the vectoriser
-         ! packed the lanes only partly, 1.7 times slower).
-         !$omp simd private(g2, f)
-         do l = 1, lanes
-            px(l) = px(l) + cx(l)*hj
-            py(l) = py(l) + cy(l)*hj + cphi(l)*mj
-            g2 = (peak(l)*sj)**2
-            f = sqrt(g2/max(px(l)*px(l) + py(l)*py(l), g2))
-            px(l) = px(l)*f
-            py(l) = py(l)*f
-            tx(l, j) = px(l)
-            ty(l, j) = py(l)
-            sc(l, j) = f
-         end do
+      do s = 1, ws%n_active
+         call local_creepages(ws%spin_model, creepage%nu_x, creepage%nu_y, creepage%phi, &
+            lambda, ws%cos_ratio(s), ws%phi_geo(s), ws%dphi_geo(s), ws%rho(s), ws%phi_geo0, &
+            nux, phix, nuy, phis)
+         ! Increments per unit normalised step: −a_s (R_x, R_y) and −a_s² R_φ (§6.5 step 2).
+         ws%cx(s) = -(ws%akx(s)*nux - ws%akxs_y(s)*phix)
+         ws%cy(s) = -ws%aky(s)*nuy
+         ws%cphi(s) = -ws%a2kphi(s)*phis
+         ws%mu_pe(s) = ws%friction*ws%pe_peak(s)
       end do
-   end subroutine march_lanes
+   end subroutine strip_increments
+
+   !> March the m strips b0 … b0 + m − 1 from the leading edge and sum their output tractions
+   !> (physics.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.
+   pure subroutine march_block(ws, b0, m, sx, sy, sxy, cmax, n_adh)
+      type(march_workspace_type), intent(inout) :: ws
+      integer, intent(in) :: b0, m
+      !> Per strip: Σ o_x, Σ o_y, Σ x' o_y, max |o|²/(1 − x'²) and the number of adhesion
+      !> elements (a real: an integer count in a SIMD loop over reals stops the vectoriser; it is
+      !> exact up to 2⁵³).
+      real(wp), dimension(max_block), intent(out) :: sx, sy, sxy, cmax, n_adh
+      real(wp), dimension(max_block) :: px, py, f, qx, qy
+      integer :: j, e, b1
+
+      b1 = b0 + m - 1
+      px(1:m) = 0.0_wp
+      py(1:m) = 0.0_wp
+      sx(1:m) = 0.0_wp
+      sy(1:m) = 0.0_wp
+      sxy(1:m) = 0.0_wp
+      cmax(1:m) = 0.0_wp
+      n_adh(1:m) = 0.0_wp
+      do j = 1, ws%nx
+         call march_step(m, ws%hn(j), ws%hm(j), ws%shape(j), ws%cx(b0:b1), ws%cy(b0:b1), &
+            ws%cphi(b0:b1), ws%bound_peak(b0:b1), px, py, f)
+         call output_step(ws%bound, m, ws%inv_ell(j), ws%par(j), ws%weight(b0:b1), &
+            ws%mu_pe(b0:b1), px, py, f, qx, qy)
+         call accumulate_step(m, ws%xn(j), ws%inv_ell(j), qx, qy, f, sx, sy, sxy, cmax, n_adh)
+         if (ws%fields) then
+            e = (j - 1)*m
+            call keep_step(m, ws%hn(j), ws%a(b0:b1), ws%flex_x(b0:b1), ws%flex_y(b0:b1), px, &
+               py, f, qx, qy, ws%tx(e + 1:e + m), ws%ty(e + 1:e + m), ws%sc(e + 1:e + m), &
+               ws%slip(e + 1:e + m))
+         end if
+      end do
+   end subroutine march_block
+
+   !> One element of every strip of a block: p ← p + h (c_x, c_y) + h x_mid c_φ, then the
+   !> radial projection onto the bound g = peak·shape, as the branch-free factor
+   !> f = √(g²/max(|p|², g²)): exactly 1 in adhesion, g/|p_pred| < 1 in slip (direction kept,
+   !> seed eqs 14–15), never a division by zero (g > 0 at element centres).
+   pure subroutine march_step(m, h, hm, shape, cx, cy, cphi, peak, px, py, f)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: h, hm, shape
+      real(wp), dimension(m), intent(in) :: cx, cy, cphi, peak
+      real(wp), dimension(m), intent(inout) :: px, py
+      real(wp), dimension(m), intent(out) :: f
+      integer :: l
+
+      !$omp simd
+      do l = 1, m
+         px(l) = px(l) + cx(l)*h
+         py(l) = py(l) + cy(l)*h + cphi(l)*hm
+         f(l) = projection(px(l), py(l), (peak(l)*shape)**2)
+         px(l) = px(l)*f(l)
+         py(l) = py(l)*f(l)
+      end do
+   end subroutine march_step
 
    !> Output tractions o from the march tractions t (physics.md §6.4): unchanged for the
    !> ellipsoidal and parabolic bounds; W1 multiplies all by p_n,e/p_n,p = weight/√(1 − x'²); W2
-   !> does so in slip elements (sc < 1) and clips adhesion elements to μp_n,e; W3 clips all to
+   !> does so in slip elements (f < 1) and clips adhesion elements to μp_n,e; W3 clips all to
    !> μp_n,e.
-   pure subroutine weight_lanes(bound, nx, mu_pe, weight, par, inv_ell, tx, ty, sc, ox, oy)
-      integer, intent(in) :: bound, nx
-      !> μ times the peak of p_n,e, and p_n,e/p_n,p at the strip centre, per lane.
-      real(wp), dimension(lanes), intent(in) :: mu_pe, weight
-      !> 1 − x'² and 1/√(1 − x'²) per (lane, element).
-      real(wp), dimension(lanes, nx), intent(in) :: par, inv_ell
-      real(wp), dimension(lanes, nx), intent(in) :: tx, ty, sc
-      real(wp), dimension(lanes, nx), intent(out) :: ox, oy
+   pure subroutine output_step(bound, m, inv_ell, par, weight, mu_pe, px, py, f, qx, qy)
+      integer, intent(in) :: bound, m
+      !> 1/√(1 − x'²) and 1 − x'² of the element.
+      real(wp), intent(in) :: inv_ell, par
+      !> Per strip: p_n,e/p_n,p at the strip centre, μ times the peak of p_n,e.
+      real(wp), dimension(m), intent(in) :: weight, mu_pe
+      real(wp), dimension(m), intent(in) :: px, py, f
+      real(wp), dimension(m), intent(out) :: qx, qy
       real(wp) :: w
-      integer :: j, l
+      integer :: l
 
       select case (bound)
       case (bound_weighted)
-         do j = 1, nx
-            !$omp simd private(w)
-            do l = 1, lanes
-               w = weight(l)*inv_ell(l, j)
-               ox(l, j) = tx(l, j)*w
-               oy(l, j) = ty(l, j)*w
-            end do
+         !$omp simd private(w)
+         do l = 1, m
+            w = weight(l)*inv_ell
+            qx(l) = px(l)*w
+            qy(l) = py(l)*w
          end do
       case (bound_weighted_slip)
-         do j = 1, nx
-            !$omp simd private(w)
-            do l = 1, lanes
-               if (sc(l, j) < 1.0_wp) then
-                  w = weight(l)*inv_ell(l, j)
-               else
-                  w = clip_factor(tx(l, j), ty(l, j), mu_pe(l)**2*par(l, j))
-               end if
-               ox(l, j) = tx(l, j)*w
-               oy(l, j) = ty(l, j)*w
-            end do
+         !$omp simd private(w)
+         do l = 1, m
+            w = merge(weight(l)*inv_ell, projection(px(l), py(l), mu_pe(l)**2*par), &
+               f(l) < 1.0_wp)
+            qx(l) = px(l)*w
+            qy(l) = py(l)*w
          end do
       case (bound_clipped)
-         do j = 1, nx
-            !$omp simd private(w)
-            do l = 1, lanes
-               w = clip_factor(tx(l, j), ty(l, j), mu_pe(l)**2*par(l, j))
-               ox(l, j) = tx(l, j)*w
-               oy(l, j) = ty(l, j)*w
-            end do
+         !$omp simd private(w)
+         do l = 1, m
+            w = projection(px(l), py(l), mu_pe(l)**2*par)
+            qx(l) = px(l)*w
+            qy(l) = py(l)*w
          end do
       case default
-         ox = tx
-         oy = ty
+         qx = px
+         qy = py
       end select
-   end subroutine weight_lanes
+   end subroutine output_step
 
-   !> min(1, √(limit²/|p|²)) = √(limit²/max(|p|², limit²)), without dividing by zero (limit > 0).
-   elemental real(wp) function clip_factor(px, py, limit2)
-      real(wp), intent(in) :: px, py, limit2
-      clip_factor = sqrt(limit2/max(px*px + py*py, limit2))
-   end function clip_factor
+   !> Add the output tractions of one element to the sums of every strip of a block.
+   pure subroutine accumulate_step(m, xn, inv_ell, qx, qy, f, sx, sy, sxy, cmax, n_adh)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: xn, inv_ell
+      real(wp), dimension(m), intent(in) :: qx, qy, f
+      real(wp), dimension(m), intent(inout) :: sx, sy, sxy, cmax, n_adh
+      integer :: l
 
-   !> Per lane: Σ o_x, Σ o_y, Σ x' o_y, max |o|²/(1 − x'²) and the number of adhesion elements.
-   pure subroutine sum_lanes(nx, xn, inv_ell, ox, oy, sc, sx, sy, sxy, cmax, n_adh)
-      integer, intent(in) :: nx
-      real(wp), intent(in) :: xn(nx), inv_ell(nx)
-      real(wp), dimension(lanes, nx), intent(in) :: ox, oy, sc
-      real(wp), dimension(lanes), intent(out) :: sx, sy, sxy, cmax
-      integer, intent(out) :: n_adh(lanes)
-      integer :: j
-
-      sx = 0.0_wp
-      sy = 0.0_wp
-      sxy = 0.0_wp
-      cmax = 0.0_wp
-      n_adh = 0
-      do j = 1, nx
-         sx = sx + ox(:, j)
-         sy = sy + oy(:, j)
-         sxy = sxy + xn(j)*oy(:, j)
-         cmax = max(cmax, (ox(:, j)**2 + oy(:, j)**2)*inv_ell(j)**2)
-         n_adh = n_adh + merge(1, 0, sc(:, j) >= 1.0_wp)
+      !$omp simd
+      do l = 1, m
+         sx(l) = sx(l) + qx(l)
+         sy(l) = sy(l) + qy(l)
+         sxy(l) = sxy(l) + xn*qy(l)
+         cmax(l) = max(cmax(l), (qx(l)*qx(l) + qy(l)*qy(l))*(inv_ell*inv_ell))
+         n_adh(l) = n_adh(l) + merge(1.0_wp, 0.0_wp, f(l) >= 1.0_wp)
       end do
-   end subroutine sum_lanes
+   end subroutine accumulate_step
 
-   !> Copy the fields of loaded strip s (lane l of the buffers) into column strip(s).
-   pure subroutine store_strip(ws, s, l, result)
+   !> Keep one element of every strip of a block for the fields: output tractions, projection
+   !> factor and the slip magnitude |s| = |L (p_pred − p)|/h (physics.md §3.4), with
+   !> p_pred − p = (1/f − 1) p; it is exactly 0 in adhesion (f = 1).
+   pure subroutine keep_step(m, hn, a, flex_x, flex_y, px, py, f, qx, qy, tx, ty, sc, slip)
+      integer, intent(in) :: m
+      real(wp), intent(in) :: hn
+      real(wp), dimension(m), intent(in) :: a, flex_x, flex_y, px, py, f, qx, qy
+      real(wp), dimension(m), intent(out) :: tx, ty, sc, slip
+      integer :: l
+
+      !$omp simd
+      do l = 1, m
+         tx(l) = qx(l)
+         ty(l) = qy(l)
+         sc(l) = f(l)
+         slip(l) = (1.0_wp/f(l) - 1.0_wp)*sqrt((flex_x(l)*px(l))**2 + (flex_y(l)*py(l))**2)/ &
+            (a(l)*hn)
+      end do
+   end subroutine keep_step
+
+   !> min(1, √(limit²/|p|²)) = √(limit²/max(|p|², limit²)), without dividing by zero (limit > 0):
+   !> the march's projection factor and the clip factor of W2/W3.
+   elemental real(wp) function projection(px, py, limit2)
+      real(wp), intent(in) :: px, py, limit2
+      projection = sqrt(limit2/max(px*px + py*py, limit2))
+   end function projection
+
+   !> Copy the fields of loaded strip s (strip l of a block of m) into column strip(s).
+   pure subroutine store_strip(ws, s, l, m, result)
       type(march_workspace_type), intent(in) :: ws
-      integer, intent(in) :: s, l
+      integer, intent(in) :: s, l, m
       type(tangential_patch_type), intent(inout) :: result
-      call store_lane(ws%nx, ws%a(s), ws%flex_x(s), ws%flex_y(s), ws%pe_peak(s), ws%xn, &
-         ws%hn, ws%ell, ws%tx, ws%ty, ws%sc, ws%ox, ws%oy, l, result%x(:, ws%strip(s)), &
-         result%pn(:, ws%strip(s)), result%px(:, ws%strip(s)), result%py(:, ws%strip(s)), &
-         result%slip(:, ws%strip(s)), result%state(:, ws%strip(s)))
-      result%y(ws%strip(s)) = ws%y_strip(ws%strip(s))
-      result%dx(ws%strip(s)) = 2.0_wp*ws%a(s)/real(ws%nx, wp)
+      integer :: i
+
+      i = ws%strip(s)
+      call store_column(ws%nx, m, l, ws%a(s), ws%pe_peak(s), ws%xn, ws%ell, ws%tx, ws%ty, &
+         ws%sc, ws%slip, result%x(:, i), result%pn(:, i), result%px(:, i), result%py(:, i), &
+         result%slip(:, i), result%state(:, i))
+      result%y(i) = ws%y_strip(i)
+      result%dx(i) = 2.0_wp*ws%a(s)/real(ws%nx, wp)
    end subroutine store_strip
 
-   !> The per-element fields of one lane: positions, p_n,e, output tractions, state and the slip
-   !> magnitude |s| = |L (p_pred − p)|/h (physics.md §3.4), p_pred − p = (1/f − 1) p with the
-   !> march tractions p and projection factor f.
-   pure subroutine store_lane(nx, a, flex_x, flex_y, pe_peak, xn, hn, ell, tx, ty, sc, ox, oy, &
-      l, x, pn, px, py, slip, state)
-      integer, intent(in) :: nx, l
-      real(wp), intent(in) :: a, flex_x, flex_y, pe_peak
-      real(wp), intent(in) :: xn(nx), hn(nx), ell(nx)
-      real(wp), dimension(lanes, nx), intent(in) :: tx, ty, sc, ox, oy
+   !> The per-element fields of one strip from the block buffers: positions, p_n,e, output
+   !> tractions, slip magnitude and state.
+   pure subroutine store_column(nx, m, l, a, pe_peak, xn, ell, tx, ty, sc, slip_buffer, x, pn, &
+      px, py, slip, state)
+      integer, intent(in) :: nx, m, l
+      real(wp), intent(in) :: a, pe_peak
+      real(wp), intent(in) :: xn(nx), ell(nx)
+      real(wp), dimension(m, nx), intent(in) :: tx, ty, sc, slip_buffer
       real(wp), intent(out) :: x(nx), pn(nx), px(nx), py(nx), slip(nx)
       integer(i1), intent(out) :: state(nx)
       integer :: j
@@ -395,18 +465,12 @@ contains
       do j = 1, nx
          x(j) = a*xn(j)
          pn(j) = pe_peak*ell(j)
-         px(j) = ox(l, j)
-         py(j) = oy(l, j)
-         if (sc(l, j) < 1.0_wp) then
-            state(j) = state_slip
-            slip(j) = (1.0_wp/sc(l, j) - 1.0_wp)* &
-               sqrt((flex_x*tx(l, j))**2 + (flex_y*ty(l, j))**2)/(a*hn(j))
-         else
-            state(j) = state_adhesion
-            slip(j) = 0.0_wp
-         end if
+         px(j) = tx(l, j)
+         py(j) = ty(l, j)
+         slip(j) = slip_buffer(l, j)
+         state(j) = merge(state_slip, state_adhesion, sc(l, j) < 1.0_wp)
       end do
-   end subroutine store_lane
+   end subroutine store_column
 
    !> Unloaded strips: exterior, zero fields.
    pure subroutine store_inactive(ws, result)

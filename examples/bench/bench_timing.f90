@@ -1,0 +1,109 @@
+!> Timing of the benchmark: a kernel is any operation with a `run` procedure; [[time_kernel]]
+!> calls it in batches long enough for the clock (about `min_batch_time` each), repeats the batch
+!> `n_runs` times and reports the median, minimum and maximum time per call.
+module bench_timing
+   use, intrinsic :: iso_fortran_env, only: int64
+   use shcontact, only: wp
+   implicit none
+   private
+
+   public :: kernel_type, timing_type, time_kernel, wall_time, median_of
+
+   !> An operation to time. `run(k)` performs call number k of a batch (k = 1, 2, ...): a kernel
+   !> may vary its input with k. `failed` is set by the kernel when the library reported an error.
+   type, abstract :: kernel_type
+      logical :: failed = .false.
+      character(len=:), allocatable :: message
+   contains
+      procedure(run_interface), deferred :: run
+   end type kernel_type
+
+   abstract interface
+      subroutine run_interface(self, k)
+         import :: kernel_type
+         class(kernel_type), intent(inout) :: self
+         integer, intent(in) :: k
+      end subroutine run_interface
+   end interface
+
+   !> Time per call (s): median, minimum and maximum over the runs; calls per run and runs.
+   type :: timing_type
+      real(wp) :: median = 0.0_wp, min = 0.0_wp, max = 0.0_wp
+      integer :: batch = 0, runs = 0
+   end type timing_type
+
+contains
+
+   !> Wall-clock time in seconds (monotonic, nanosecond counter).
+   function wall_time() result(t)
+      real(wp) :: t
+      integer(int64) :: count, rate
+      call system_clock(count, rate)
+      t = real(count, wp)/real(rate, wp)
+   end function wall_time
+
+   !> Time a kernel: one warm-up call, a batch size such that one batch lasts about
+   !> `min_batch_time` seconds (at least one call), then `n_runs` timed batches.
+   function time_kernel(kernel, n_runs, min_batch_time) result(timing)
+      !> The operation.
+      class(kernel_type), intent(inout) :: kernel
+      !> Number of timed batches.
+      integer, intent(in) :: n_runs
+      !> Target duration of one batch (s).
+      real(wp), intent(in) :: min_batch_time
+      type(timing_type) :: timing
+      real(wp) :: samples(n_runs), t0, t_one
+      integer :: batch, r, k
+
+      t0 = wall_time()
+      call kernel%run(1)
+      t_one = max(wall_time() - t0, 1.0e-8_wp)
+      ! Calibrate on a short batch (the first call may include page faults and cache misses).
+      batch = max(1, min(1000000, int(0.1_wp*min_batch_time/t_one)))
+      t0 = wall_time()
+      do k = 1, batch
+         call kernel%run(k)
+      end do
+      t_one = max((wall_time() - t0)/batch, 1.0e-9_wp)
+      batch = max(1, min(10000000, nint(min_batch_time/t_one)))
+      do r = 1, n_runs
+         t0 = wall_time()
+         do k = 1, batch
+            call kernel%run(k)
+         end do
+         samples(r) = (wall_time() - t0)/batch
+      end do
+      timing%median = median_of(samples)
+      timing%min = minval(samples)
+      timing%max = maxval(samples)
+      timing%batch = batch
+      timing%runs = n_runs
+   end function time_kernel
+
+   !> Median of a sample (the mean of the two middle values for an even count).
+   function median_of(samples) result(median)
+      real(wp), intent(in) :: samples(:)
+      real(wp) :: median
+      real(wp) :: sorted(size(samples)), key
+      integer :: i, j, n
+
+      n = size(samples)
+      sorted = samples
+      do i = 2, n
+         key = sorted(i)
+         j = i - 1
+         do while (j >= 1)
+            if (sorted(j) <= key) exit
+            sorted(j + 1) = sorted(j)
+            j = j - 1
+         end do
+         sorted(j + 1) = key
+      end do
+      if (mod(n, 2) == 1) then
+         median = sorted((n + 1)/2)
+      else
+         median = 0.5_wp*(sorted(n/2) + sorted(n/2 + 1))
+      end if
+   end function median_of
+
+end module bench_timing
