@@ -83,7 +83,7 @@ contains
       call check_ellipse(semi_a, semi_b, load, n_strips, error)
       if (allocated(error)) return
 
-      call reserve_workspace(ws, n_strips, options%n_elements, options%fields)
+      call reserve_workspace(ws, n_strips, options%n_elements)
       ws%bound = options%bound
       ws%spin_model = spin_uniform
       ws%fields = options%fields

@@ -26,7 +26,7 @@ module shcontact_tangential_fastsim_sh
       bound_ellipsoidal, spin_flexibility_spin
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
-   use shcontact_tangential_spin, only: geometric_spin
+   use shcontact_tangential_spin, only: geometric_spin, strip_spin_terms
    use shcontact_tangential_march, only: march_workspace_type, reserve_workspace, &
       set_element_grid, solve_prepared
    implicit none
@@ -49,7 +49,8 @@ contains
       type(tangential_options_type), intent(in) :: options
       !> Set for invalid input; stat_no_contact when no strip is loaded.
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0
+      real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0, &
+         cos0
       integer :: i, s, n_inactive
 
       call check_material(material, error)
@@ -59,11 +60,12 @@ contains
       call check_normal_patch(patch, error)
       if (allocated(error)) return
 
-      call reserve_workspace(ws, patch%n_strips, options%n_elements, options%fields)
+      call reserve_workspace(ws, patch%n_strips, options%n_elements)
       g = material%shear_modulus
       mu = material%friction
       r0 = patch%r0
       sin0 = sin(patch%gamma0)
+      cos0 = cos(patch%gamma0)
       ws%bound = options%bound
       ws%spin_model = options%spin_model
       ws%fields = options%fields
@@ -121,9 +123,8 @@ contains
          ws%weight(s) = 0.75_wp/k
 
          ! Geometric spin terms (shcontact_tangential_spin; CONTACT's sign of γ).
-         ws%cos_ratio(s) = cos(patch%gamma0)/cos(patch%gamma(i))
-         ws%phi_geo(s) = geometric_spin(patch%gamma(i), r0)
-         ws%dphi_geo(s) = (sin(patch%gamma(i)) - sin0)/r0
+         call strip_spin_terms(patch%gamma(i), sin0, cos0, r0, ws%phi_geo(s), ws%dphi_geo(s), &
+            ws%cos_ratio(s))
          ws%rho(s) = patch%delta_r(i)/r0 - ws%phi_geo0*y
 
          ws%load = ws%load + strip_load

@@ -24,7 +24,7 @@ module shcontact_tangential_march
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
       state_slip
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
-   use shcontact_tangential_options, only: bound_ellipsoidal, bound_weighted, &
+   use shcontact_tangential_options, only: bound_ellipsoidal, bound_parabolic, bound_weighted, &
       bound_weighted_slip, bound_clipped, spin_additive, spin_scaled
    use shcontact_tangential_spin, only: local_creepages, scaled_spin_factor
    implicit none
@@ -58,8 +58,6 @@ module shcontact_tangential_march
       !> none: [[set_element_grid]] recomputes the grid only when they change.
       integer :: grid_nx = 0
       logical :: grid_ellipsoidal = .false.
-      !> Capacity (strips of a block × elements) of the field buffers tx … slip.
-      integer :: field_capacity = 0
       !> Centres of all strips as reported (mm).
       real(wp), allocatable :: y_strip(:)
       !> Index in the patch of loaded strip s.
@@ -86,29 +84,22 @@ module shcontact_tangential_march
       integer, allocatable :: inactive(:)
       !> Per loaded strip, for the creepages being solved: increments of p_x, p_y per unit
       !> normalised step, −a_s (R_x, R_y), and of p_y per unit step·x', −a_s² R_φ (§6.5 step 2);
-      !> μ times the peak of p_n,e.
-      real(wp), allocatable :: cx(:), cy(:), cphi(:), mu_pe(:)
+      !> μ times the peak of p_n,e; the march tractions t_x, t_y at the current element.
+      real(wp), allocatable :: cx(:), cy(:), cphi(:), mu_pe(:), tx(:), ty(:)
       !> Per element: x'_j, step h_j/a, step times midpoint h_j x_mid,j/a², bound shape s_j,
       !> √(1 − x'²), 1 − x'², 1/√(1 − x'²).
       real(wp), allocatable :: xn(:), hn(:), hm(:), shape(:), ell(:), par(:), inv_ell(:)
-      !> Field buffers of one block, index (strip of the block, element), allocated only when
-      !> the fields are wanted: output tractions, projection factor (1 in adhesion, < 1 in slip),
-      !> slip magnitude.
-      real(wp), allocatable :: tx(:), ty(:), sc(:), slip(:)
    end type march_workspace_type
 
 contains
 
    !> Make room for n_strips strips and nx elements (allocates only when the capacity grows) and
-   !> record the sizes. The field buffers are reserved only when `fields`.
-   pure subroutine reserve_workspace(ws, n_strips, nx, fields)
+   !> record the sizes.
+   pure subroutine reserve_workspace(ws, n_strips, nx)
       !> The workspace.
       type(march_workspace_type), intent(inout) :: ws
       !> Strips of the patch and elements per strip.
       integer, intent(in) :: n_strips, nx
-      !> Whether the per-element fields will be wanted.
-      logical, intent(in) :: fields
-      integer :: n_field
 
       ws%n_strips = n_strips
       ws%nx = nx
@@ -134,6 +125,8 @@ contains
       call reserve(ws%cy, n_strips)
       call reserve(ws%cphi, n_strips)
       call reserve(ws%mu_pe, n_strips)
+      call reserve(ws%tx, n_strips)
+      call reserve(ws%ty, n_strips)
       ! A grid array that grows loses its contents: the grid must then be recomputed.
       if (allocated(ws%xn)) then
          if (size(ws%xn) < nx) ws%grid_nx = 0
@@ -147,14 +140,6 @@ contains
       call reserve(ws%ell, nx)
       call reserve(ws%par, nx)
       call reserve(ws%inv_ell, nx)
-      if (fields) then
-         n_field = min(n_strips, max_block)*nx
-         call reserve(ws%tx, n_field)
-         call reserve(ws%ty, n_field)
-         call reserve(ws%sc, n_field)
-         call reserve(ws%slip, n_field)
-         ws%field_capacity = size(ws%tx)
-      end if
    end subroutine reserve_workspace
 
    !> Element centres, steps and bound shapes of the strip-adapted grid (physics.md §3.2, §6.5
@@ -210,12 +195,6 @@ contains
             'prepare_fastsim or prepare_fastsim_sh first', stat_usage)
          return
       end if
-      if (ws%fields .and. ws%field_capacity < min(ws%n_active, max_block)*ws%nx) then
-         call fatal_error(error, 'solve_prepared: fields wanted but the workspace was prepared '// &
-            'without them; set options%fields before prepare_fastsim or prepare_fastsim_sh', &
-            stat_usage)
-         return
-      end if
       call check_creepage(creepage, error)
       if (allocated(error)) return
       lambda = 0.0_wp
@@ -239,7 +218,7 @@ contains
       block = (ws%n_active + n_blocks - 1)/n_blocks
       do b0 = 1, ws%n_active, block
          m = min(block, ws%n_active - b0 + 1)
-         call march_block(ws, b0, m, sx, sy, sxy, cmax, n_adh)
+         call march_block(ws, b0, m, result, sx, sy, sxy, cmax, n_adh)
          do l = 1, m
             s = b0 + l - 1
             strip_area = 2.0_wp*ws%a(s)/real(nx, wp)*ws%dy
@@ -249,7 +228,7 @@ contains
             area = area + 2.0_wp*ws%a(s)
             area_adh = area_adh + 2.0_wp*ws%a(s)*n_adh(l)/real(nx, wp)
             coulomb2 = max(coulomb2, cmax(l)/ws%mu_pe(s)**2)
-            if (ws%fields) call store_strip(ws, s, l, m, result)
+            if (ws%fields) call store_strip(ws, s, result)
          end do
       end do
       if (ws%fields) call store_inactive(ws, result)
@@ -291,38 +270,65 @@ contains
 
    !> March the m strips b0 … b0 + m − 1 from the leading edge and sum their output tractions
    !> (physics.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.
-   pure subroutine march_block(ws, b0, m, sx, sy, sxy, cmax, n_adh)
+   pure subroutine march_block(ws, b0, m, result, sx, sy, sxy, cmax, n_adh)
       type(march_workspace_type), intent(inout) :: ws
       integer, intent(in) :: b0, m
+      !> The solution, whose element fields are filled when ws%fields.
+      type(tangential_patch_type), intent(inout) :: result
       !> Per strip: Σ o_x, Σ o_y, Σ x' o_y, max |o|²/(1 − x'²) and the number of adhesion
       !> elements (a real: an integer count in a SIMD loop over reals stops the vectoriser; it is
       !> exact up to 2⁵³).
       real(wp), dimension(max_block), intent(out) :: sx, sy, sxy, cmax, n_adh
-      real(wp), dimension(max_block) :: px, py, f, qx, qy
-      integer :: j, e, b1
+      integer :: b1
 
       b1 = b0 + m - 1
-      px(1:m) = 0.0_wp
-      py(1:m) = 0.0_wp
+      call march_strips(ws%bound, ws%fields, m, ws%nx, ws%hn, ws%hm, ws%shape, ws%xn, &
+         ws%inv_ell, ws%par, ws%cx(b0:b1), ws%cy(b0:b1), ws%cphi(b0:b1), ws%bound_peak(b0:b1), &
+         ws%weight(b0:b1), ws%mu_pe(b0:b1), ws%a(b0:b1), ws%flex_x(b0:b1), ws%flex_y(b0:b1), &
+         ws%strip(b0:b1), ws%tx(b0:b1), ws%ty(b0:b1), result, sx, sy, sxy, cmax, n_adh)
+   end subroutine march_block
+
+   !> The element loop of [[march_block]] on the block's own arrays (distinct dummies: the
+   !> compiler knows they do not overlap).
+   pure subroutine march_strips(bound, fields, m, nx, hn, hm, shape, xn, inv_ell, par, cx, cy, &
+      cphi, peak, weight, mu_pe, a, flex_x, flex_y, strip, tx, ty, result, sx, sy, sxy, cmax, &
+      n_adh)
+      integer, intent(in) :: bound, m, nx
+      logical, intent(in) :: fields
+      real(wp), dimension(nx), intent(in) :: hn, hm, shape, xn, inv_ell, par
+      real(wp), dimension(m), intent(in) :: cx, cy, cphi, peak, weight, mu_pe, a, flex_x, flex_y
+      integer, intent(in) :: strip(m)
+      !> The march tractions of the block's strips.
+      real(wp), dimension(m), intent(out) :: tx, ty
+      type(tangential_patch_type), intent(inout) :: result
+      real(wp), dimension(max_block), intent(out) :: sx, sy, sxy, cmax, n_adh
+      real(wp), dimension(max_block) :: f, qx, qy
+      logical :: weighted
+      integer :: j
+
+      tx = 0.0_wp
+      ty = 0.0_wp
       sx(1:m) = 0.0_wp
       sy(1:m) = 0.0_wp
       sxy(1:m) = 0.0_wp
       cmax(1:m) = 0.0_wp
       n_adh(1:m) = 0.0_wp
-      do j = 1, ws%nx
-         call march_step(m, ws%hn(j), ws%hm(j), ws%shape(j), ws%cx(b0:b1), ws%cy(b0:b1), &
-            ws%cphi(b0:b1), ws%bound_peak(b0:b1), px, py, f)
-         call output_step(ws%bound, m, ws%inv_ell(j), ws%par(j), ws%weight(b0:b1), &
-            ws%mu_pe(b0:b1), px, py, f, qx, qy)
-         call accumulate_step(m, ws%xn(j), ws%inv_ell(j), qx, qy, f, sx, sy, sxy, cmax, n_adh)
-         if (ws%fields) then
-            e = (j - 1)*m
-            call keep_step(m, ws%hn(j), ws%a(b0:b1), ws%flex_x(b0:b1), ws%flex_y(b0:b1), px, &
-               py, f, qx, qy, ws%tx(e + 1:e + m), ws%ty(e + 1:e + m), ws%sc(e + 1:e + m), &
-               ws%slip(e + 1:e + m))
+      ! The ellipsoidal and parabolic bounds report the march tractions themselves.
+      weighted = bound /= bound_ellipsoidal .and. bound /= bound_parabolic
+      do j = 1, nx
+         call march_step(m, hn(j), hm(j), shape(j), cx, cy, cphi, peak, tx, ty, f)
+         if (weighted) then
+            call output_step(bound, m, inv_ell(j), par(j), weight, mu_pe, tx, ty, f, qx, qy)
+            call accumulate_step(m, xn(j), inv_ell(j), qx, qy, f, sx, sy, sxy, cmax, n_adh)
+            if (fields) call keep_step(m, j, hn(j), a, flex_x, flex_y, strip, tx, ty, f, qx, &
+               qy, result)
+         else
+            call accumulate_step(m, xn(j), inv_ell(j), tx, ty, f, sx, sy, sxy, cmax, n_adh)
+            if (fields) call keep_step(m, j, hn(j), a, flex_x, flex_y, strip, tx, ty, f, tx, &
+               ty, result)
          end if
       end do
-   end subroutine march_block
+   end subroutine march_strips
 
    !> One element of every strip of a block: p ← p + h (c_x, c_y) + h x_mid c_φ, then the
    !> radial projection onto the bound g = peak·shape, as the branch-free factor
@@ -346,8 +352,8 @@ contains
       end do
    end subroutine march_step
 
-   !> Output tractions o from the march tractions t (physics.md §6.4): unchanged for the
-   !> ellipsoidal and parabolic bounds; W1 multiplies all by p_n,e/p_n,p = weight/√(1 − x'²); W2
+   !> Output tractions o from the march tractions t for the weighted bounds (physics.md §6.4;
+   !> the ellipsoidal and parabolic bounds report t itself): W1 multiplies all by p_n,e/p_n,p = weight/√(1 − x'²); W2
    !> does so in slip elements (f < 1) and clips adhesion elements to μp_n,e; W3 clips all to
    !> μp_n,e.
    pure subroutine output_step(bound, m, inv_ell, par, weight, mu_pe, px, py, f, qx, qy)
@@ -384,9 +390,6 @@ contains
             qx(l) = px(l)*w
             qy(l) = py(l)*w
          end do
-      case default
-         qx = px
-         qy = py
       end select
    end subroutine output_step
 
@@ -408,23 +411,33 @@ contains
       end do
    end subroutine accumulate_step
 
-   !> Keep one element of every strip of a block for the fields: output tractions, projection
-   !> factor and the slip magnitude |s| = |L (p_pred − p)|/h (physics.md §3.4), with
-   !> p_pred − p = (1/f − 1) p; it is exactly 0 in adhesion (f = 1).
-   pure subroutine keep_step(m, hn, a, flex_x, flex_y, px, py, f, qx, qy, tx, ty, sc, slip)
-      integer, intent(in) :: m
+   !> Store one element of every strip of a block in the fields: output tractions, state and the
+   !> slip magnitude |s| = |L (p_pred − p)|/h (physics.md §3.4), with p_pred − p = (1/f − 1) p
+   !> = ((1 − f)/f) p, exactly 0 in adhesion (f = 1).
+   pure subroutine keep_step(m, j, hn, a, flex_x, flex_y, strip, px, py, f, qx, qy, result)
+      integer, intent(in) :: m, j
       real(wp), intent(in) :: hn
       real(wp), dimension(m), intent(in) :: a, flex_x, flex_y, px, py, f, qx, qy
-      real(wp), dimension(m), intent(out) :: tx, ty, sc, slip
-      integer :: l
+      integer, intent(in) :: strip(m)
+      type(tangential_patch_type), intent(inout) :: result
+      real(wp) :: slip(max_block)
+      integer :: l, i
 
       !$omp simd
       do l = 1, m
-         tx(l) = qx(l)
-         ty(l) = qy(l)
-         sc(l) = f(l)
-         slip(l) = (1.0_wp/f(l) - 1.0_wp)*sqrt((flex_x(l)*px(l))**2 + (flex_y(l)*py(l))**2)/ &
-            (a(l)*hn)
+         slip(l) = (1.0_wp - f(l))*sqrt((flex_x(l)*px(l))**2 + (flex_y(l)*py(l))**2)/ &
+            (f(l)*a(l)*hn)
+      end do
+      do l = 1, m
+         i = strip(l)
+         result%px(j, i) = qx(l)
+         result%py(j, i) = qy(l)
+         result%slip(j, i) = slip(l)
+         if (f(l) < 1.0_wp) then
+            result%state(j, i) = state_slip
+         else
+            result%state(j, i) = state_adhesion
+         end if
       end do
    end subroutine keep_step
 
@@ -435,42 +448,20 @@ contains
       projection = sqrt(limit2/max(px*px + py*py, limit2))
    end function projection
 
-   !> Copy the fields of loaded strip s (strip l of a block of m) into column strip(s).
-   pure subroutine store_strip(ws, s, l, m, result)
+   !> The creepage-independent fields of loaded strip s: element positions, p_n,e, y, Δx.
+   pure subroutine store_strip(ws, s, result)
       type(march_workspace_type), intent(in) :: ws
-      integer, intent(in) :: s, l, m
+      integer, intent(in) :: s
       type(tangential_patch_type), intent(inout) :: result
-      integer :: i
+      integer :: i, nx
 
       i = ws%strip(s)
-      call store_column(ws%nx, m, l, ws%a(s), ws%pe_peak(s), ws%xn, ws%ell, ws%tx, ws%ty, &
-         ws%sc, ws%slip, result%x(:, i), result%pn(:, i), result%px(:, i), result%py(:, i), &
-         result%slip(:, i), result%state(:, i))
+      nx = ws%nx
+      result%x(:, i) = ws%a(s)*ws%xn(1:nx)
+      result%pn(:, i) = ws%pe_peak(s)*ws%ell(1:nx)
       result%y(i) = ws%y_strip(i)
-      result%dx(i) = 2.0_wp*ws%a(s)/real(ws%nx, wp)
+      result%dx(i) = 2.0_wp*ws%a(s)/real(nx, wp)
    end subroutine store_strip
-
-   !> The per-element fields of one strip from the block buffers: positions, p_n,e, output
-   !> tractions, slip magnitude and state.
-   pure subroutine store_column(nx, m, l, a, pe_peak, xn, ell, tx, ty, sc, slip_buffer, x, pn, &
-      px, py, slip, state)
-      integer, intent(in) :: nx, m, l
-      real(wp), intent(in) :: a, pe_peak
-      real(wp), intent(in) :: xn(nx), ell(nx)
-      real(wp), dimension(m, nx), intent(in) :: tx, ty, sc, slip_buffer
-      real(wp), intent(out) :: x(nx), pn(nx), px(nx), py(nx), slip(nx)
-      integer(i1), intent(out) :: state(nx)
-      integer :: j
-
-      do j = 1, nx
-         x(j) = a*xn(j)
-         pn(j) = pe_peak*ell(j)
-         px(j) = tx(l, j)
-         py(j) = ty(l, j)
-         slip(j) = slip_buffer(l, j)
-         state(j) = merge(state_slip, state_adhesion, sc(l, j) < 1.0_wp)
-      end do
-   end subroutine store_column
 
    !> Unloaded strips: exterior, zero fields.
    pure subroutine store_inactive(ws, result)

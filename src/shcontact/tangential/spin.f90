@@ -31,7 +31,8 @@ module shcontact_tangential_spin
    implicit none
    private
 
-   public :: geometric_spin, local_creepages, scaled_spin_factor, min_geometric_spin
+   public :: geometric_spin, strip_spin_terms, local_creepages, scaled_spin_factor, &
+      min_geometric_spin
 
    !> Smallest |φ_geo,0| (rad/mm) accepted by the scaled spin model.
    real(wp), parameter :: min_geometric_spin = 1.0e-9_wp
@@ -47,6 +48,28 @@ contains
       real(wp) :: phi_geo
       phi_geo = sin(gamma)/r0
    end function geometric_spin
+
+   !> The geometric terms of one strip used by the spin models: φ_geo,i = sin γ_i / r₀ (as
+   !> [[geometric_spin]]), φ_geo,i − φ_geo,0 = (sin γ_i − sin γ₀)/r₀ and cos γ₀/cos γ_i. One
+   !> sine and one cosine per strip (the compiler pairs them into one sincos call).
+   elemental subroutine strip_spin_terms(gamma, sin0, cos0, r0, phi_geo, dphi_geo, cos_ratio)
+      !> Contact angle of the strip γ_i (rad), CONTACT's sign, |γ_i| < π/2.
+      real(wp), intent(in) :: gamma
+      !> sin γ₀ and cos γ₀ of the reference point.
+      real(wp), intent(in) :: sin0, cos0
+      !> Rolling radius at the reference point r₀ (mm), > 0.
+      real(wp), intent(in) :: r0
+      !> φ_geo,i and φ_geo,i − φ_geo,0 (rad/mm).
+      real(wp), intent(out) :: phi_geo, dphi_geo
+      !> cos γ₀/cos γ_i.
+      real(wp), intent(out) :: cos_ratio
+      real(wp) :: sin_i
+
+      sin_i = sin(gamma)
+      phi_geo = sin_i/r0
+      dphi_geo = (sin_i - sin0)/r0
+      cos_ratio = cos0/cos(gamma)
+   end subroutine strip_spin_terms
 
    !> λ = φ/φ_geo,0 of the scaled model B; an error when the geometric spin at the reference point
    !> vanishes (tread contact with γ₀ ≈ 0), where model B is singular (physics.md §6.2).
