@@ -18,7 +18,7 @@ module shcontact_normal_loading
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
-      semihertz_strips, ellipse_strips, reserve_strips, clear_strips
+      semihertz_strips, semihertz_load, ellipse_strips, reserve_strips, clear_strips
    use shcontact_normal_patch, only: normal_patch_type
    implicit none
    private
@@ -61,11 +61,13 @@ module shcontact_normal_loading
    end type patch_residual
 
    !> F_z(Δz)^{2/3} − F_z,target^{2/3} of several patches, with Δz = origin + x and
-   !> δ_k = Δz cos γ_k − g₀,k (physics.md §4.6).
+   !> δ_k = Δz cos γ_k − g₀,k (physics.md §4.6). The patches are filled only when `fill` (the
+   !> search needs the forces alone).
    type, extends(scalar_function_type) :: vertical_residual
       type(normal_contact_type), pointer :: contacts(:) => null()
       type(normal_patch_type), pointer :: patches(:) => null()
       real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp, force = 0.0_wp
+      logical :: fill = .false.
       type(error_type), allocatable :: error
    contains
       procedure :: eval => vertical_residual_eval
@@ -234,6 +236,7 @@ contains
       call solve_increasing(f, guess%approach/cos_g, x_max, root, error)
       if (allocated(f%error)) call move_alloc(f%error, error)
       if (allocated(error)) return
+      f%fill = .true.
       residual = f%eval(root)
       if (allocated(f%error)) then
          call move_alloc(f%error, error)
@@ -271,6 +274,25 @@ contains
             error)
       end if
    end subroutine fill_patch
+
+   !> The normal force of one patch at approach δ, for the load iterations: the semi-Hertz load
+   !> without building the strip table (bit for bit the load [[fill_patch]] gives); the 'hertz'
+   !> method fills the patch.
+   subroutine patch_load(contact, approach, patch, load, error)
+      type(normal_contact_type), intent(in) :: contact
+      real(wp), intent(in) :: approach
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp), intent(out) :: load
+      type(error_type), allocatable, intent(out) :: error
+
+      if (contact%options%method == method_hertz) then
+         call fill_patch(contact, approach, patch, error)
+         load = patch%load
+      else
+         call semihertz_load(contact%geometry, contact%options, contact%e_star, approach, load, &
+            error)
+      end if
+   end subroutine patch_load
 
    !> Root of an increasing residual with f(0) < 0 on (0, x_max]: bracket from the guess by
    !> geometric steps, then Brent. Beyond x_max the geometry cannot carry the load.
@@ -335,15 +357,16 @@ contains
       real(wp), intent(in) :: x
       real(wp) :: fx
       type(error_type), allocatable :: error
+      real(wp) :: load
 
-      call fill_patch(self%contact, self%origin + x, self%patch, error)
+      call patch_load(self%contact, self%origin + x, self%patch, load, error)
       if (allocated(error)) then
          ! Report after the search; answer as if overloaded so that the search stays finite.
          if (.not. allocated(self%error)) call move_alloc(error, self%error)
          fx = self%target_23
          return
       end if
-      fx = self%patch%load**(2.0_wp/3.0_wp) - self%target_23
+      fx = load**(2.0_wp/3.0_wp) - self%target_23
    end function patch_residual_eval
 
    function vertical_residual_eval(self, x) result(fx)
@@ -351,21 +374,26 @@ contains
       real(wp), intent(in) :: x
       real(wp) :: fx
       type(error_type), allocatable :: error
-      real(wp) :: dz, cos_g
+      real(wp) :: dz, cos_g, approach, load
       integer :: k
 
       dz = self%origin + x
       self%force = 0.0_wp
       do k = 1, size(self%contacts)
          cos_g = cos(self%contacts(k)%geometry%gamma0)
-         call fill_patch(self%contacts(k), dz*cos_g - self%contacts(k)%geometry%gap0, &
-            self%patches(k), error)
+         approach = dz*cos_g - self%contacts(k)%geometry%gap0
+         if (self%fill) then
+            call fill_patch(self%contacts(k), approach, self%patches(k), error)
+            load = self%patches(k)%load
+         else
+            call patch_load(self%contacts(k), approach, self%patches(k), load, error)
+         end if
          if (allocated(error)) then
             if (.not. allocated(self%error)) call move_alloc(error, self%error)
             fx = self%target_23
             return
          end if
-         self%force = self%force + self%patches(k)%load*cos_g
+         self%force = self%force + load*cos_g
       end do
       fx = self%force**(2.0_wp/3.0_wp) - self%target_23
    end function vertical_residual_eval

@@ -17,7 +17,8 @@ module shcontact_normal_semihertz
    implicit none
    private
 
-   public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, ellipse_strips
+   public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
+      ellipse_strips
    public :: reserve_strips, clear_strips
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
@@ -46,6 +47,10 @@ module shcontact_normal_semihertz
       real(wp), allocatable :: eps_a(:), eps_b(:)
       !> Approach at which each table point comes into contact, g/ε_b (mm).
       real(wp), allocatable :: touch(:)
+      !> Largest touch value between each point and i_first (inclusive): the contact interval
+      !> for an approach δ is where reach < δ, found by bisection (reach is monotonic on each
+      !> side of i_first) instead of a walk over the table.
+      real(wp), allocatable :: reach(:)
       !> Local Hertz coefficients m(y), n(y).
       real(wp), allocatable :: m(:), n(:)
       !> Pressure factor √((A+B)/(E(k)K(k))) (1/√mm²): p₀ = E*·factor·√δ (physics.md §4.3
@@ -122,9 +127,15 @@ contains
       end do
       prepared%i_first = minloc(prepared%touch, dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
+      prepared%reach(prepared%i_first) = prepared%touch(prepared%i_first)
+      do i = prepared%i_first - 1, 1, -1
+         prepared%reach(i) = max(prepared%reach(i + 1), prepared%touch(i))
+      end do
+      do i = prepared%i_first + 1, n
+         prepared%reach(i) = max(prepared%reach(i - 1), prepared%touch(i))
+      end do
       ! The interval reaches a table end once δ exceeds every touch value between it and i_first.
-      prepared%approach_max = min(maxval(prepared%touch(1:prepared%i_first)), &
-         maxval(prepared%touch(prepared%i_first:n)))
+      prepared%approach_max = min(prepared%reach(1), prepared%reach(n))
    end subroutine prepare_semihertz
 
    !> Reject tables the strip method cannot use, naming the item and the value.
@@ -198,54 +209,28 @@ contains
       !> Set when the contact interval reaches the end of the table.
       type(error_type), allocatable, intent(out) :: error
 
-      integer :: i, j_lo, j_hi, c, n
-      real(wp) :: y_lo, y_hi, dy, t, psi, eps_b, delta_i, a_max
+      integer :: i, c, n
+      real(wp) :: y_lo, dy, t, delta_i, a_max
+      logical :: touching
 
       n = options%n_strips
       call reserve_strips(patch, n)
-      call clear_strips(patch, prepared%gamma0, prepared%r0)
+      call clear_totals(patch, prepared%gamma0, prepared%r0)
       patch%approach = approach
-      if (approach <= prepared%approach_touch) return
-
-      ! Walk out from the first-contact point while the table points are in contact.
-      j_lo = prepared%i_first
-      do while (j_lo > 1)
-         if (approach <= prepared%touch(j_lo - 1)) exit
-         j_lo = j_lo - 1
-      end do
-      j_hi = prepared%i_first
-      do while (j_hi < prepared%n_table)
-         if (approach <= prepared%touch(j_hi + 1)) exit
-         j_hi = j_hi + 1
-      end do
-      ! A walk that ends on the first or last point found it in contact (δ > touch there).
-      if (j_lo == 1 .or. j_hi == prepared%n_table) then
-         call table_end_error(prepared, approach, error)
+      call contact_interval(prepared, approach, n, touching, y_lo, dy, error)
+      if (.not. touching .or. allocated(error)) then
+         call clear_arrays(patch, prepared%gamma0, prepared%r0)
          return
       end if
-      ! ψ = ε_b(δ − g/ε_b) = δ ε_b − g is linear on each cell: exact crossings of the table model.
-      y_lo = table_y(prepared, j_lo)
-      if (j_lo > 1) y_lo = y_lo - prepared%h*crossing(psi_at(prepared, approach, j_lo), &
-                                                  psi_at(prepared, approach, j_lo - 1))
-      y_hi = table_y(prepared, j_hi)
-      if (j_hi < prepared%n_table) y_hi = y_hi + prepared%h*crossing( &
-         psi_at(prepared, approach, j_hi), psi_at(prepared, approach, j_hi + 1))
 
-      dy = (y_hi - y_lo)/n
+      ! Every strip array is written below: no clearing needed.
       patch%dy = dy
       a_max = 0.0_wp
       do i = 1, n
          patch%y(i) = y_lo + (i - 0.5_wp)*dy
-         call locate(prepared, patch%y(i), c, t)
-         psi = (1.0_wp - t)*psi_at(prepared, approach, c) + t*psi_at(prepared, approach, c + 1)
-         eps_b = lerp(prepared%eps_b, c, t)
-         delta_i = max(0.0_wp, psi/eps_b)
-         patch%eps_a(i) = lerp(prepared%eps_a, c, t)
-         ! Steps 4–6: a_i = √(ε_a δ_i/A_i), p₀,ᵢ = local Hertz peak at δ_i, N_i = (π/2)p₀,ᵢ a_i δy.
-         patch%a(i) = sqrt(patch%eps_a(i)*delta_i/lerp(prepared%curv_a, c, t))
+         call strip_load(prepared, e_star, approach, patch%y(i), dy, c, t, delta_i, &
+            patch%eps_a(i), patch%a(i), patch%p0(i), patch%strip_load(i))
          patch%k(i) = sqrt(delta_i/approach)
-         patch%p0(i) = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
-         patch%strip_load(i) = 0.5_wp*pi*patch%p0(i)*patch%a(i)*dy
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
          patch%gamma(i) = lerp(prepared%gamma, c, t)
@@ -258,6 +243,143 @@ contains
          patch%k(1:n) = patch%a(1:n)/a_max
       call strip_totals(patch)
    end subroutine semihertz_strips
+
+   !> The normal force Σ N_i of the strips of [[semihertz_strips]] alone, bit for bit the same,
+   !> for the load iteration (the other strip quantities are needed only at its end). Zero below
+   !> contact.
+   pure subroutine semihertz_load(prepared, options, e_star, approach, load, error)
+      !> Prepared geometry (with strip data).
+      type(semihertz_geometry_type), intent(in) :: prepared
+      !> Number of strips.
+      type(normal_options_type), intent(in) :: options
+      !> E* (MPa).
+      real(wp), intent(in) :: e_star
+      !> Approach δ (mm).
+      real(wp), intent(in) :: approach
+      !> Σ N_i (N).
+      real(wp), intent(out) :: load
+      !> Set when the contact interval reaches the end of the table.
+      type(error_type), allocatable, intent(out) :: error
+
+      integer :: i, c, n
+      real(wp) :: y_lo, dy, t, delta_i, eps_a, a, p0, strip_n
+      logical :: touching
+
+      load = 0.0_wp
+      n = options%n_strips
+      call contact_interval(prepared, approach, n, touching, y_lo, dy, error)
+      if (.not. touching .or. allocated(error)) return
+      ! Summed in strip order, as strip_totals does.
+      do i = 1, n
+         call strip_load(prepared, e_star, approach, y_lo + (i - 0.5_wp)*dy, dy, c, t, delta_i, &
+            eps_a, a, p0, strip_n)
+         load = load + strip_n
+      end do
+   end subroutine semihertz_load
+
+   !> The contact interval for approach δ, cut into n strips: its start y_lo and the strip width
+   !> dy; `touching` is false below contact. ψ = ε_b(δ − g/ε_b) = δ ε_b − g is linear on each
+   !> cell: the interval ends at its exact crossings of the table model.
+   pure subroutine contact_interval(prepared, approach, n, touching, y_lo, dy, error)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      integer, intent(in) :: n
+      logical, intent(out) :: touching
+      real(wp), intent(out) :: y_lo, dy
+      type(error_type), allocatable, intent(out) :: error
+      integer :: j_lo, j_hi
+      real(wp) :: y_hi
+
+      y_lo = 0.0_wp
+      dy = 0.0_wp
+      touching = approach > prepared%approach_touch
+      if (.not. touching) return
+      ! The table points in contact: outwards from the first-contact point while touch < δ.
+      j_lo = first_reached(prepared%reach, prepared%i_first, approach)
+      j_hi = last_reached(prepared%reach, prepared%i_first, prepared%n_table, approach)
+      ! An interval that ends on the first or last point found it in contact (δ > touch there).
+      if (j_lo == 1 .or. j_hi == prepared%n_table) then
+         call table_end_error(prepared, approach, error)
+         return
+      end if
+      y_lo = table_y(prepared, j_lo) - prepared%h*crossing(psi_at(prepared, approach, j_lo), &
+         psi_at(prepared, approach, j_lo - 1))
+      y_hi = table_y(prepared, j_hi) + prepared%h*crossing(psi_at(prepared, approach, j_hi), &
+         psi_at(prepared, approach, j_hi + 1))
+      dy = (y_hi - y_lo)/n
+   end subroutine contact_interval
+
+   !> Steps 4–6 on the strip centred at y (physics.md §4.3): δ_i = max(0, ψ/ε_b),
+   !> a_i = √(ε_a δ_i/A_i), p₀,ᵢ = the local Hertz peak at δ_i, N_i = (π/2) p₀,ᵢ a_i δy; also the
+   !> table cell c and fraction t of y.
+   pure subroutine strip_load(prepared, e_star, approach, y, dy, c, t, delta_i, eps_a, a, p0, &
+      load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach, y, dy
+      integer, intent(out) :: c
+      real(wp), intent(out) :: t, delta_i, eps_a, a, p0, load
+      real(wp) :: psi, eps_b
+
+      call locate(prepared, y, c, t)
+      psi = (1.0_wp - t)*psi_at(prepared, approach, c) + t*psi_at(prepared, approach, c + 1)
+      eps_b = lerp(prepared%eps_b, c, t)
+      delta_i = max(0.0_wp, psi/eps_b)
+      eps_a = lerp(prepared%eps_a, c, t)
+      a = sqrt(eps_a*delta_i/lerp(prepared%curv_a, c, t))
+      p0 = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
+      load = 0.5_wp*pi*p0*a*dy
+   end subroutine strip_load
+
+   !> The smallest j ≤ i_first with reach(j) < δ (reach does not increase from 1 to i_first;
+   !> reach(i_first) < δ).
+   pure integer function first_reached(reach, i_first, approach) result(j_lo)
+      real(wp), intent(in) :: reach(:)
+      integer, intent(in) :: i_first
+      real(wp), intent(in) :: approach
+      integer :: lo, hi, mid
+
+      ! Invariant: reach(hi) < δ; reach(lo) ≥ δ unless lo is the first point.
+      lo = 1
+      hi = i_first
+      if (approach > reach(lo)) then
+         j_lo = lo
+         return
+      end if
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (approach > reach(mid)) then
+            hi = mid
+         else
+            lo = mid
+         end if
+      end do
+      j_lo = hi
+   end function first_reached
+
+   !> The largest j ≥ i_first with reach(j) < δ (reach does not decrease from i_first to n).
+   pure integer function last_reached(reach, i_first, n, approach) result(j_hi)
+      real(wp), intent(in) :: reach(:)
+      integer, intent(in) :: i_first, n
+      real(wp), intent(in) :: approach
+      integer :: lo, hi, mid
+
+      ! Invariant: reach(lo) < δ; reach(hi) ≥ δ unless hi is the last point.
+      lo = i_first
+      hi = n
+      if (approach > reach(hi)) then
+         j_hi = hi
+         return
+      end if
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (approach > reach(mid)) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      j_hi = lo
+   end function last_reached
 
    !> The strip table of one Hertz ellipse centred at the reference point (`method = 'hertz'`):
    !> y_i over [−b, b], k_i = √(1 − y_i²/b²), a_i = k_i a, p₀,ᵢ = k_i p₀ and the global m, n;
@@ -330,6 +452,14 @@ contains
       type(normal_patch_type), intent(inout) :: patch
       !> Contact angle (rad) and rolling radius (mm) of the reference point.
       real(wp), intent(in) :: gamma0, r0
+      call clear_totals(patch, gamma0, r0)
+      call clear_arrays(patch, gamma0, r0)
+   end subroutine clear_strips
+
+   !> The scalars of a patch out of contact.
+   pure subroutine clear_totals(patch, gamma0, r0)
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp), intent(in) :: gamma0, r0
       patch%is_hertz = .false.
       patch%ellipse_a = 0.0_wp
       patch%ellipse_b = 0.0_wp
@@ -341,6 +471,12 @@ contains
       patch%dy = 0.0_wp
       patch%gamma0 = gamma0
       patch%r0 = r0
+   end subroutine clear_totals
+
+   !> The strip arrays of a patch out of contact.
+   pure subroutine clear_arrays(patch, gamma0, r0)
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp), intent(in) :: gamma0, r0
       patch%y(:) = 0.0_wp
       patch%a(:) = 0.0_wp
       patch%k(:) = 0.0_wp
@@ -352,7 +488,7 @@ contains
       patch%gamma(:) = gamma0
       patch%delta_r(:) = 0.0_wp
       patch%r_wheel(:) = r0
-   end subroutine clear_strips
+   end subroutine clear_arrays
 
    !> Load, area Σ 2a_i δy and peak pressure from the strips.
    pure subroutine strip_totals(patch)
@@ -372,16 +508,16 @@ contains
       if (allocated(prepared%gap)) then
          if (size(prepared%gap) == n) return
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
-            prepared%eps_a, prepared%eps_b, prepared%touch, prepared%m, prepared%n, &
-            prepared%p_factor)
+            prepared%eps_a, prepared%eps_b, prepared%touch, prepared%reach, prepared%m, &
+            prepared%n, prepared%p_factor)
       end if
       allocate (prepared%gap(n), prepared%curv_a(n), prepared%gamma(n), prepared%r_wheel(n), &
-         prepared%eps_a(n), prepared%eps_b(n), prepared%touch(n), prepared%m(n), prepared%n(n), &
-         prepared%p_factor(n))
+         prepared%eps_a(n), prepared%eps_b(n), prepared%touch(n), prepared%reach(n), &
+         prepared%m(n), prepared%n(n), prepared%p_factor(n))
    end subroutine reserve_table
 
    !> "load too large for the patch geometry", with where the table ends.
-   subroutine table_end_error(prepared, approach, error)
+   pure subroutine table_end_error(prepared, approach, error)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       type(error_type), allocatable, intent(out) :: error
