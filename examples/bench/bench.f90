@@ -8,6 +8,8 @@
 !>     --quick                --runs 5 --batch-time 0.002, two DOE runs (for slow builds)
 !>     --profiles DIR         directory of the Manchester profiles (default ../shared/profiles);
 !>                            the built-in S1002 and UIC60 are used when it is absent
+!>     --table-gap G          contact_options%table_gap (mm, default the library's 2 mm): how
+!>                            far the strip tables reach; the geometry cost grows with it
 !>     --output FILE          HDF5 summary of the DOE (default build/shcontact_bench_doe.h5)
 !>     --save-results FILE    write the forces of the checked cases to a text file
 !>     --compare-results FILE compare the forces with a file saved by another build
@@ -53,6 +55,7 @@ program shcontact_bench
       character(len=:), allocatable :: profiles, output, save_file, compare_file
       integer :: alloc_check = 0
       character(len=:), allocatable :: only
+      real(wp) :: table_gap = -1.0_wp
    end type bench_config_type
 
    type(bench_config_type) :: config
@@ -72,6 +75,7 @@ program shcontact_bench
    call read_arguments(config)
    call load_profiles(config%profiles, wheel, rail, track, profile_note)
    position = wheelset_position_type(y_ws=0.0_wp)
+   if (config%table_gap > 0.0_wp) contact_options%table_gap = config%table_gap
    t0 = wall_time()
    call prepare_profiles(wheel, rail, track, contact_options, profiles, error)
    t_profiles = wall_time() - t0
@@ -150,6 +154,9 @@ contains
             config%save_file = trim(val)
          case ('--compare-results')
             config%compare_file = trim(val)
+         case ('--table-gap')
+            read (val, *, iostat=stat) config%table_gap
+            if (stat == 0 .and. .not. (config%table_gap > 0.0_wp)) stat = 1
          case ('--only')
             config%only = trim(val)
             if (all(config%only /= [character(len=10) :: 'geometry', 'tangential', 'full', &
@@ -323,22 +330,33 @@ contains
 
    subroutine bench_full_case()
       type(full_case_kernel) :: full
-      type(timing_type) :: t
-      integer :: i
+      type(timing_type) :: t(2, 2)
+      integer :: i, c
 
-      call section('full case on reused geometry: solve_load + prepare_fastsim_sh + '// &
-         'solve_prepared (weighted bound)')
+      call section('full case on reused geometry (normal solve for the load + tangential '// &
+         'preparation + solve, weighted bound, forces only unless said)')
+      write (output_unit, '(a)') '  FASTSIM_SH: semi-Hertz solve_load + prepare_fastsim_sh + '// &
+         'solve_prepared; FASTSIM: Hertz solve_load + prepare_fastsim + solve_prepared'
       do i = 2, 3
-         full%contact = normal_contact(sizes(i))
-         full%load = case_load
-         full%material = material
-         full%options = tangential_options_type(n_elements=50, fields=.false.)
-         full%creepage = headline
-         t = time_kernel(full, config%runs, config%batch_time)
-         call report(full, t, 'full case, '//itoa(sizes(i))//' x 50, forces only')
-         full%options%fields = .true.
-         t = time_kernel(full, config%runs, config%batch_time)
-         call report(full, t, 'full case, '//itoa(sizes(i))//' x 50, with element fields')
+         do c = 1, 2
+            full%classical = c == 2
+            full%n_strips = sizes(i)
+            full%contact = normal_contact(sizes(i), hertz=full%classical)
+            full%load = case_load
+            full%material = material
+            full%options = tangential_options_type(n_elements=50, fields=.false.)
+            full%creepage = headline
+            t(c, 1) = time_kernel(full, config%runs, config%batch_time)
+            call report(full, t(c, 1), merge('FASTSIM   ', 'FASTSIM_SH', full%classical)// &
+               ' full case, '//itoa(sizes(i))//' x 50')
+            full%options%fields = .true.
+            t(c, 2) = time_kernel(full, config%runs, config%batch_time)
+            call report(full, t(c, 2), merge('FASTSIM   ', 'FASTSIM_SH', full%classical)// &
+               ' full case, '//itoa(sizes(i))//' x 50, with element fields')
+         end do
+         write (output_unit, '(2x,a,f5.2,a,f5.2,a)') 'ratio FASTSIM_SH/FASTSIM, full case '// &
+            itoa(sizes(i))//' x 50: ', t(1, 1)%median/t(2, 1)%median, ' (forces), ', &
+            t(1, 2)%median/t(2, 2)%median, ' (with fields)'
       end do
    end subroutine bench_full_case
 
@@ -548,12 +566,18 @@ contains
 
    ! ------------------------------------------------------------------------------ helpers
 
-   !> The seed patch prepared for the strip method with n strips.
-   function normal_contact(n) result(contact)
+   !> The seed patch prepared for the strip method (or the Hertz method) with n strips.
+   function normal_contact(n, hertz) result(contact)
       integer, intent(in) :: n
+      logical, intent(in), optional :: hertz
       type(normal_contact_type) :: contact
-      call prepare_normal_contact(contact, patches(1), normal_options_type(n_strips=n), &
-         material, error)
+      type(normal_options_type) :: options
+
+      options%n_strips = n
+      if (present(hertz)) then
+         if (hertz) options%method = method_hertz
+      end if
+      call prepare_normal_contact(contact, patches(1), options, material, error)
       call stop_on(error, 'prepare_normal_contact')
    end function normal_contact
 

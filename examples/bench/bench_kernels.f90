@@ -79,8 +79,12 @@ module bench_kernels
       procedure :: run => run_solve
    end type solve_kernel
 
-   !> A full case on reused geometry: normal solve for a load, FASTSIM_SH preparation, solve.
+   !> A full case on reused geometry: normal solve for a load, FASTSIM_SH preparation, solve;
+   !> or, when `classical`, the Hertz normal solve (the contact prepared with method 'hertz') and
+   !> classical FASTSIM on its ellipse.
    type, extends(kernel_type) :: full_case_kernel
+      logical :: classical = .false.
+      integer :: n_strips = 0
       type(normal_contact_type) :: contact
       real(wp) :: load = 0.0_wp
       type(material_type) :: material
@@ -156,8 +160,17 @@ contains
       integer, intent(in) :: k
       type(error_type), allocatable :: error
       call solve_load(self%contact, load_step(self%load, k), self%patch, error)
-      if (.not. allocated(error)) call prepare_fastsim_sh(self%ws, self%patch, self%material, &
-         self%options, error)
+      if (allocated(error)) then
+         call record(self, error)
+         return
+      end if
+      if (self%classical) then
+         call prepare_fastsim(self%ws, self%patch%ellipse_a, self%patch%ellipse_b, &
+            self%patch%load, self%material, self%options, self%n_strips, error, &
+            y_centre=self%patch%ellipse_y_centre, gamma0=self%patch%gamma0)
+      else
+         call prepare_fastsim_sh(self%ws, self%patch, self%material, self%options, error)
+      end if
       if (.not. allocated(error)) call solve_prepared(self%ws, self%creepage, self%result, error)
       call record(self, error)
    end subroutine run_full_case
