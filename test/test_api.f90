@@ -99,6 +99,7 @@ contains
          new_unittest('options_by_name', test_options), &
          new_unittest('legacy_interface', test_legacy), &
          new_unittest('legacy_bad_arguments', test_legacy_bad), &
+         new_unittest('legacy_two_threads', test_legacy_threads), &
          new_unittest('c_interface', test_c_api) &
          ]
    end subroutine collect_api
@@ -586,6 +587,46 @@ contains
       call shc_destroy(ih, istat)
       call check(error, istat, stat_usage, message='destroying twice')
    end subroutine test_legacy_bad
+
+   !> Two handles created, used and destroyed from two OpenMP threads at once give the results
+   !> of the same calls made one after the other.
+   subroutine test_legacy_threads(error)
+      type(error_type), allocatable, intent(out) :: error
+      double precision :: sequential(25, 4, 2), parallel(25, 4, 2)
+      integer :: stats(2)
+
+      call legacy_sequence(1, sequential(:, :, 1), stats(1))
+      call legacy_sequence(2, sequential(:, :, 2), stats(2))
+      call check(error, all(stats == 0), message='a sequential legacy call failed')
+      if (allocated(error)) return
+      !$omp parallel sections num_threads(2) default(none) shared(parallel, stats)
+      !$omp section
+      call legacy_sequence(1, parallel(:, :, 1), stats(1))
+      !$omp section
+      call legacy_sequence(2, parallel(:, :, 2), stats(2))
+      !$omp end parallel sections
+      call check(error, all(stats == 0), message='a threaded legacy call failed')
+      if (allocated(error)) return
+      call check(error, bitwise_equal(reshape(sequential, [size(sequential)]), &
+         reshape(parallel, [size(parallel)])), message='threaded legacy results differ')
+   end subroutine test_legacy_threads
+
+   !> Create a handle, solve four cases (sequence 1 or 2), destroy it; stat = worst status.
+   subroutine legacy_sequence(which, values, stat)
+      integer, intent(in) :: which
+      double precision, intent(out) :: values(:, :)
+      integer, intent(out) :: stat
+      integer :: ih, i, istat
+
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, stat)
+      do i = 1, size(values, 2)
+         call shc_solve(ih, 4.0d0 + 0.1d0*i + 0.05d0*which, 0.0d0, 1, 60.0d3, 0.1d-3*i, &
+            0.0d0, 1.0d-4*which, values(:, i), istat)
+         stat = max(stat, istat)
+      end do
+      call shc_destroy(ih, istat)
+      stat = max(stat, istat)
+   end subroutine legacy_sequence
 
    !> The C API called from Fortran: the headline case and the bad calls.
    subroutine test_c_api(error)

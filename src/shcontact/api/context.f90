@@ -275,7 +275,8 @@ contains
          if (.not. ieee_is_finite(x)) stat = 1
       end if
       if (stat /= 0) then
-         call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected a finite number", &
+         call fatal_error(error, "option "//key//" = '"//trim(text)// &
+            "': expected a finite number", &
             stat_invalid_input)
          return
       end if
