@@ -1,0 +1,176 @@
+!> Small text helpers for the input/output layer: numbers as the shortest text that reads back
+!> exactly, case folding, quoting for namelists and JSON.
+module shcontact_io_text
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use shcontact_core_kinds, only: wp
+   implicit none
+   private
+
+   public :: format_real, format_int, to_lower, quote_string, json_string, strip_quotes
+
+contains
+
+   !> The shortest decimal text that reads back to exactly `x` (round trip), in plain notation
+   !> for 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise.
+   pure function format_real(x) result(text)
+      !> The number.
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=40) :: buf, fmt
+      character(len=20) :: digits
+      real(wp) :: back
+      integer :: d, ios, epos, expo, nd
+
+      if (ieee_is_nan(x)) then
+         text = 'NaN'
+         return
+      else if (.not. ieee_is_finite(x)) then
+         text = merge('-Infinity', '+Infinity', x < 0.0_wp)
+         return
+      else if (x == 0.0_wp) then
+         text = '0.0'
+         return
+      end if
+      ! Fewest significant digits that survive a write/read cycle (at most 17 for IEEE double).
+      do d = 1, 17
+         write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
+         write (buf, fmt) x
+         read (buf, *, iostat=ios) back
+         if (ios == 0 .and. back == x) exit
+      end do
+      buf = adjustl(buf)
+      epos = index(buf, 'E')
+      read (buf(epos + 1:), *) expo
+      ! Mantissa digits without sign and point: "d.ddd" -> "dddd".
+      digits = ''
+      nd = 0
+      do d = 1, epos - 1
+         if (buf(d:d) >= '0' .and. buf(d:d) <= '9') then
+            nd = nd + 1
+            digits(nd:nd) = buf(d:d)
+         end if
+      end do
+      do while (nd > 1 .and. digits(nd:nd) == '0')
+         nd = nd - 1
+      end do
+      text = ''
+      if (x < 0.0_wp) text = '-'
+      if (expo >= -4 .and. expo < 7) then
+         text = text//plain(digits(1:nd), expo)
+      else
+         text = text//digits(1:1)//'.'
+         if (nd > 1) then
+            text = text//digits(2:nd)
+         else
+            text = text//'0'
+         end if
+         text = text//'e'//format_int(expo)
+      end if
+   end function format_real
+
+   !> Digits d₁d₂… with the decimal point after the (expo+1)-th digit, zero-padded.
+   pure function plain(digits, expo) result(text)
+      character(len=*), intent(in) :: digits
+      integer, intent(in) :: expo
+      character(len=:), allocatable :: text
+      integer :: nd
+      nd = len(digits)
+      if (expo < 0) then
+         text = '0.'//repeat('0', -expo - 1)//digits
+      else if (expo + 1 >= nd) then
+         text = digits//repeat('0', expo + 1 - nd)//'.0'
+      else
+         text = digits(1:expo + 1)//'.'//digits(expo + 2:nd)
+      end if
+   end function plain
+
+   !> An integer as text without blanks.
+   pure function format_int(i) result(text)
+      !> The number.
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function format_int
+
+   !> ASCII lower case.
+   pure function to_lower(s) result(t)
+      !> The text.
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i, c
+      t = s
+      do i = 1, len(s)
+         c = iachar(s(i:i))
+         if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
+      end do
+   end function to_lower
+
+   !> A Fortran string literal in apostrophes (embedded apostrophes doubled), for namelists.
+   pure function quote_string(s) result(q)
+      !> The text (trailing blanks are removed).
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: q
+      integer :: i
+      q = "'"
+      do i = 1, len_trim(s)
+         if (s(i:i) == "'") then
+            q = q//"''"
+         else
+            q = q//s(i:i)
+         end if
+      end do
+      q = q//"'"
+   end function quote_string
+
+   !> Remove one level of matching apostrophes or quotes (undoubling embedded ones).
+   pure function strip_quotes(s) result(t)
+      !> The text, possibly quoted.
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: t
+      character(len=1) :: q
+      integer :: i, n
+      t = trim(adjustl(s))
+      n = len(t)
+      if (n < 2) return
+      q = t(1:1)
+      if ((q /= "'" .and. q /= '"') .or. t(n:n) /= q) return
+      t = t(2:n - 1)
+      i = 1
+      do while (i < len(t))
+         if (t(i:i) == q .and. t(i + 1:i + 1) == q) t = t(1:i)//t(i + 2:)
+         i = i + 1
+      end do
+   end function strip_quotes
+
+   !> A JSON string literal: quotes, backslashes and control characters escaped.
+   pure function json_string(s) result(q)
+      !> The text (trailing blanks are removed).
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: q
+      character(len=6) :: hex
+      integer :: i, c
+      q = '"'
+      do i = 1, len_trim(s)
+         c = iachar(s(i:i))
+         select case (c)
+         case (34)
+            q = q//'\"'
+         case (92)
+            q = q//'\\'
+         case (10)
+            q = q//'\n'
+         case (9)
+            q = q//'\t'
+         case (0:8, 11:31)
+            write (hex, '(a,z4.4)') '\u', c
+            q = q//hex
+         case default
+            q = q//s(i:i)
+         end select
+      end do
+      q = q//'"'
+   end function json_string
+
+end module shcontact_io_text
