@@ -15,6 +15,9 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_hertz, only: collect_hertz
+   use test_semihertz, only: collect_semihertz
+   use test_normal_loading, only: collect_normal_loading
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -27,7 +30,10 @@ program tester
       new_testsuite('layout', collect_layout), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
-      new_testsuite('lapack', collect_lapack) &
+      new_testsuite('lapack', collect_lapack), &
+      new_testsuite('hertz', collect_hertz), &
+      new_testsuite('semihertz', collect_semihertz), &
+      new_testsuite('normal_loading', collect_normal_loading) &
       ]
 
    call read_selection(suite_name, test_name)

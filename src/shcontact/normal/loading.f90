@@ -1,0 +1,373 @@
+!> Loading of the normal problem (physics.md §4.5–4.6): a prescribed approach, a prescribed
+!> normal force on one patch, or a prescribed vertical wheel load shared by several patches
+!> through one rigid approach of the wheel.
+!>
+!> A [[normal_contact_type]] is prepared once per patch geometry ([[prepare_normal_contact]]);
+!> the solves then allocate nothing unless the number of strips changes. Force matching solves
+!> N(δ)^{2/3} = N_target^{2/3}: that residual is exactly linear in δ on Hertzian geometry (N ∝
+!> δ^{3/2}) and nearly so otherwise, so Brent's secant/inverse-quadratic steps converge in a few
+!> evaluations while its bracket safeguards the kinks of N(δ) where strips enter.
+module shcontact_normal_loading
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact, &
+      stat_numerical, stat_usage
+   use shcontact_core_material, only: material_type, check_material
+   use shcontact_math_roots, only: scalar_function_type, find_root
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz
+   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
+      hertz_from_approach
+   use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
+      semihertz_strips, ellipse_strips, reserve_strips, clear_strips
+   use shcontact_normal_patch, only: normal_patch_type
+   implicit none
+   private
+
+   public :: normal_contact_type, prepare_normal_contact
+   public :: solve_approach, solve_load, solve_vertical_load
+
+   !> Relative accuracy of the force matching (the issue asks for 1e-10).
+   real(wp), parameter :: load_rtol = 1.0e-10_wp
+   !> Relative tolerance handed to Brent on the approach (well inside load_rtol).
+   real(wp), parameter :: root_rtol = 1.0e-13_wp
+   !> Bracket steps around the first guess (Hertz at the reference point).
+   real(wp), parameter :: grow = 1.25_wp, shrink = 0.8_wp
+   !> Keep the bracket this far (relative) inside the largest approach the table allows.
+   real(wp), parameter :: table_margin = 1.0e-12_wp
+
+   !> One patch prepared for the normal solve: options, material, the reduced geometry and the
+   !> Hertz shape at the reference point. It is also the solve's workspace.
+   type :: normal_contact_type
+      !> Method, reduction, strips.
+      type(normal_options_type) :: options
+      !> Elastic constants.
+      type(material_type) :: material
+      !> E* = G/(1 − ν) (MPa).
+      real(wp) :: e_star = 0.0_wp
+      !> The geometry reduced for the strip method.
+      type(semihertz_geometry_type) :: geometry
+      !> Hertz shape at A(0)/B(0): the `'hertz'` method and the first guess of force matching.
+      type(hertz_shape_type) :: ref_shape
+   end type normal_contact_type
+
+   !> N(δ)^{2/3} − N_target^{2/3} of one patch, with δ = origin + x.
+   type, extends(scalar_function_type) :: patch_residual
+      type(normal_contact_type), pointer :: contact => null()
+      type(normal_patch_type), pointer :: patch => null()
+      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp
+      type(error_type), allocatable :: error
+   contains
+      procedure :: eval => patch_residual_eval
+   end type patch_residual
+
+   !> F_z(Δz)^{2/3} − F_z,target^{2/3} of several patches, with Δz = origin + x and
+   !> δ_k = Δz cos γ_k − g₀,k (physics.md §4.6).
+   type, extends(scalar_function_type) :: vertical_residual
+      type(normal_contact_type), pointer :: contacts(:) => null()
+      type(normal_patch_type), pointer :: patches(:) => null()
+      real(wp) :: origin = 0.0_wp, target_23 = 0.0_wp, force = 0.0_wp
+      type(error_type), allocatable :: error
+   contains
+      procedure :: eval => vertical_residual_eval
+   end type vertical_residual
+
+contains
+
+   !> Prepare one patch: check the options, material and geometry, reduce the geometry
+   !> (per-point ε_a, ε_b, m, n: once per geometry) and solve the reference Hertz shape.
+   subroutine prepare_normal_contact(contact, geometry, options, material, error)
+      !> The prepared patch (its arrays are reused when the table size is unchanged).
+      type(normal_contact_type), intent(inout) :: contact
+      !> Patch geometry.
+      type(patch_geometry_type), intent(in) :: geometry
+      !> Normal-contact options.
+      type(normal_options_type), intent(in) :: options
+      !> Elastic constants.
+      type(material_type), intent(in) :: material
+      !> Set for invalid options, material or geometry.
+      type(error_type), allocatable, intent(out) :: error
+
+      call check_normal_options(options, error)
+      if (allocated(error)) return
+      call check_material(material, error)
+      if (allocated(error)) return
+      contact%options = options
+      contact%material = material
+      contact%e_star = material%e_star()
+      call prepare_semihertz(geometry, options, contact%geometry, error)
+      if (allocated(error)) return
+      call hertz_shape(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, error)
+   end subroutine prepare_normal_contact
+
+   !> The normal solution for a prescribed approach δ of the patch (no iteration).
+   subroutine solve_approach(contact, approach, patch, error)
+      !> The prepared patch.
+      type(normal_contact_type), intent(in) :: contact
+      !> Approach δ (mm), measured from the first contact of the undeformed surfaces.
+      real(wp), intent(in) :: approach
+      !> The solution.
+      type(normal_patch_type), intent(inout) :: patch
+      !> stat_no_contact when the surfaces do not touch or the table is too short.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=96) :: buf
+
+      if (.not. (approach > contact%geometry%approach_touch)) then
+         write (buf, '(a,es12.4,a,es12.4,a)') 'approach ', approach, &
+            ' mm is at or below first contact (', contact%geometry%approach_touch, ' mm)'
+         call fatal_error(error, 'the profiles do not touch: '//trim(buf), stat_no_contact)
+         return
+      end if
+      call fill_patch(contact, approach, patch, error)
+   end subroutine solve_approach
+
+   !> The normal solution for a prescribed normal force N on one patch: δ such that
+   !> Σ N_i = N to a relative 1e-10 (physics.md §4.5).
+   subroutine solve_load(contact, load, patch, error)
+      !> The prepared patch.
+      type(normal_contact_type), intent(in), target :: contact
+      !> Normal force N (N), positive.
+      real(wp), intent(in) :: load
+      !> The solution.
+      type(normal_patch_type), intent(inout), target :: patch
+      !> stat_invalid_input for N ≤ 0, stat_no_contact when the table cannot carry N.
+      type(error_type), allocatable, intent(out) :: error
+
+      type(patch_residual) :: f
+      type(hertz_type) :: guess
+      real(wp) :: x_max, root
+      character(len=64) :: buf
+
+      call check_force(load, 'normal force N', error)
+      if (allocated(error)) return
+      call hertz_from_load(contact%geometry%curv_a0, contact%geometry%curv_b0, load, &
+         contact%material, guess, error, shape=contact%ref_shape)
+      if (allocated(error)) return
+      if (contact%options%method == method_hertz) then
+         call ellipse_strips(contact%geometry, guess, contact%options%n_strips, patch)
+         return
+      end if
+
+      f%contact => contact
+      f%patch => patch
+      f%origin = contact%geometry%approach_touch
+      f%target_23 = load**(2.0_wp/3.0_wp)
+      x_max = (contact%geometry%approach_max - f%origin)*(1.0_wp - table_margin)
+      call solve_increasing(f, guess%approach, x_max, root, error)
+      if (allocated(f%error)) call move_alloc(f%error, error)
+      if (allocated(error)) return
+      ! Brent may stop without evaluating at its final estimate: fill the patch there.
+      call fill_patch(contact, f%origin + root, patch, error)
+      if (allocated(error)) return
+      if (abs(patch%load - load) > load_rtol*load) then
+         write (buf, '(es12.4,a,es12.4)') patch%load, ' N instead of ', load
+         call fatal_error(error, 'normal force matching did not converge: '//trim(buf)//' N', &
+            stat_numerical)
+      end if
+   end subroutine solve_load
+
+   !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
+   !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
+   !> not touch at the solution come back cleared (zero strips, zero load).
+   subroutine solve_vertical_load(contacts, f_z, patches, dz, error)
+      !> The prepared patches.
+      type(normal_contact_type), intent(in), target :: contacts(:)
+      !> Vertical wheel load F_z (N), positive.
+      real(wp), intent(in) :: f_z
+      !> The solutions, one per patch (same size as contacts).
+      type(normal_patch_type), intent(inout), target :: patches(:)
+      !> The common rigid approach Δz of the wheel (mm).
+      real(wp), intent(out) :: dz
+      !> Set for bad input or a load the tables cannot carry.
+      type(error_type), allocatable, intent(out) :: error
+
+      type(vertical_residual) :: f
+      type(hertz_type) :: guess
+      real(wp) :: cos_g, start, x_max, root, residual
+      integer :: k, k_first
+      character(len=96) :: buf
+
+      dz = 0.0_wp
+      if (size(contacts) < 1 .or. size(patches) /= size(contacts)) then
+         write (buf, '(i0,a,i0,a)') size(contacts), ' patches and ', size(patches), ' solutions'
+         call fatal_error(error, 'vertical load: '//trim(buf)// &
+            ': expected at least one patch and one solution per patch', stat_usage)
+         return
+      end if
+      call check_force(f_z, 'vertical load F_z', error)
+      if (allocated(error)) return
+
+      ! Δz where each patch starts to touch, and where its table would run out.
+      f%origin = huge(1.0_wp)
+      x_max = huge(1.0_wp)
+      k_first = 1
+      do k = 1, size(contacts)
+         cos_g = cos(contacts(k)%geometry%gamma0)
+         if (.not. (cos_g > 0.0_wp)) then
+            write (buf, '(i0,a,es12.4,a)') k, ': contact angle ', contacts(k)%geometry%gamma0, &
+               ' rad'
+            call fatal_error(error, 'vertical load: patch '//trim(buf)// &
+               ': expected |gamma0| < pi/2 to carry a vertical load', stat_invalid_input)
+            return
+         end if
+         start = (contacts(k)%geometry%approach_touch + contacts(k)%geometry%gap0)/cos_g
+         if (start < f%origin) then
+            f%origin = start
+            k_first = k
+         end if
+      end do
+      do k = 1, size(contacts)
+         if (contacts(k)%geometry%has_strip_data) x_max = min(x_max, &
+            (contacts(k)%geometry%approach_max + contacts(k)%geometry%gap0)/ &
+            cos(contacts(k)%geometry%gamma0) - f%origin)
+      end do
+      x_max = x_max*(1.0_wp - table_margin)
+
+      ! First guess: the first patch to touch carries everything, as a Hertz contact.
+      cos_g = cos(contacts(k_first)%geometry%gamma0)
+      call hertz_from_load(contacts(k_first)%geometry%curv_a0, contacts(k_first)%geometry%curv_b0, &
+         f_z/cos_g, contacts(k_first)%material, guess, error, shape=contacts(k_first)%ref_shape)
+      if (allocated(error)) return
+
+      f%contacts => contacts
+      f%patches => patches
+      f%target_23 = f_z**(2.0_wp/3.0_wp)
+      call solve_increasing(f, guess%approach/cos_g, x_max, root, error)
+      if (allocated(f%error)) call move_alloc(f%error, error)
+      if (allocated(error)) return
+      residual = f%eval(root)
+      if (allocated(f%error)) then
+         call move_alloc(f%error, error)
+         return
+      end if
+      dz = f%origin + root
+      if (abs(f%force - f_z) > load_rtol*f_z) then
+         write (buf, '(es12.4,a,es12.4)') f%force, ' N instead of ', f_z
+         call fatal_error(error, 'vertical load matching did not converge: '//trim(buf)//' N', &
+            stat_numerical)
+      end if
+   end subroutine solve_vertical_load
+
+   !> Fill the patch for approach δ by the contact's method; below contact the patch is cleared.
+   subroutine fill_patch(contact, approach, patch, error)
+      type(normal_contact_type), intent(in) :: contact
+      real(wp), intent(in) :: approach
+      type(normal_patch_type), intent(inout) :: patch
+      type(error_type), allocatable, intent(out) :: error
+      type(hertz_type) :: sol
+
+      if (contact%options%method == method_hertz) then
+         if (approach > 0.0_wp) then
+            call hertz_from_approach(contact%geometry%curv_a0, contact%geometry%curv_b0, approach, &
+               contact%material, sol, error, shape=contact%ref_shape)
+            if (allocated(error)) return
+            call ellipse_strips(contact%geometry, sol, contact%options%n_strips, patch)
+         else
+            call reserve_strips(patch, contact%options%n_strips)
+            call clear_strips(patch, contact%geometry%gamma0, contact%geometry%r0)
+            patch%approach = approach
+         end if
+      else
+         call semihertz_strips(contact%geometry, contact%options, contact%e_star, approach, patch, &
+            error)
+      end if
+   end subroutine fill_patch
+
+   !> Root of an increasing residual with f(0) < 0 on (0, x_max]: bracket from the guess by
+   !> geometric steps, then Brent. Beyond x_max the geometry cannot carry the load.
+   subroutine solve_increasing(f, x_guess, x_max, root, error)
+      class(scalar_function_type), intent(inout) :: f
+      real(wp), intent(in) :: x_guess, x_max
+      real(wp), intent(out) :: root
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: lo, hi, flo, fhi
+      character(len=96) :: buf
+      integer :: i
+
+      root = 0.0_wp
+      if (.not. (x_max > 0.0_wp)) then
+         call fatal_error(error, 'load too large for the patch geometry: the geometry table '// &
+            'ends where contact starts', stat_no_contact)
+         return
+      end if
+      hi = min(x_guess, x_max)
+      fhi = f%eval(hi)
+      if (fhi >= 0.0_wp) then
+         lo = hi; flo = fhi
+         do i = 1, 400
+            hi = lo; fhi = flo
+            lo = shrink*hi
+            flo = f%eval(lo)
+            if (flo < 0.0_wp) exit
+         end do
+      else
+         do i = 1, 400
+            if (hi >= x_max) then
+               write (buf, '(es12.4,a)') x_max, ' mm beyond first contact'
+               call fatal_error(error, 'load too large for the patch geometry: the contact '// &
+                  'reaches the end of the geometry table at an approach of '//trim(buf), &
+                  stat_no_contact)
+               return
+            end if
+            lo = hi; flo = fhi
+            hi = min(x_max, grow*hi)
+            fhi = f%eval(hi)
+            if (fhi >= 0.0_wp) exit
+         end do
+      end if
+      call find_root(f, lo, hi, root, error, xtol=0.0_wp, rtol=root_rtol, f_lower=flo, &
+         f_upper=fhi)
+   end subroutine solve_increasing
+
+   !> Error unless a force is positive and finite.
+   pure subroutine check_force(value, what, error)
+      real(wp), intent(in) :: value
+      character(len=*), intent(in) :: what
+      type(error_type), allocatable, intent(out) :: error
+      character(len=32) :: buf
+      if (value > 0.0_wp .and. value < huge(1.0_wp)) return
+      write (buf, '(es12.4)') value
+      call fatal_error(error, what//' = '//trim(adjustl(buf))//' N: expected a positive value', &
+         stat_invalid_input)
+   end subroutine check_force
+
+   function patch_residual_eval(self, x) result(fx)
+      class(patch_residual), intent(inout) :: self
+      real(wp), intent(in) :: x
+      real(wp) :: fx
+      type(error_type), allocatable :: error
+
+      call fill_patch(self%contact, self%origin + x, self%patch, error)
+      if (allocated(error)) then
+         ! Report after the search; answer as if overloaded so that the search stays finite.
+         if (.not. allocated(self%error)) call move_alloc(error, self%error)
+         fx = self%target_23
+         return
+      end if
+      fx = self%patch%load**(2.0_wp/3.0_wp) - self%target_23
+   end function patch_residual_eval
+
+   function vertical_residual_eval(self, x) result(fx)
+      class(vertical_residual), intent(inout) :: self
+      real(wp), intent(in) :: x
+      real(wp) :: fx
+      type(error_type), allocatable :: error
+      real(wp) :: dz, cos_g
+      integer :: k
+
+      dz = self%origin + x
+      self%force = 0.0_wp
+      do k = 1, size(self%contacts)
+         cos_g = cos(self%contacts(k)%geometry%gamma0)
+         call fill_patch(self%contacts(k), dz*cos_g - self%contacts(k)%geometry%gap0, &
+            self%patches(k), error)
+         if (allocated(error)) then
+            if (.not. allocated(self%error)) call move_alloc(error, self%error)
+            fx = self%target_23
+            return
+         end if
+         self%force = self%force + self%patches(k)%load*cos_g
+      end do
+      fx = self%force**(2.0_wp/3.0_wp) - self%target_23
+   end function vertical_residual_eval
+
+end module shcontact_normal_loading

@@ -1,0 +1,317 @@
+!> Tests of the normal loading cases (physics.md §4.5–4.6): the Hertz method on a patch, and a
+!> vertical wheel load shared by several patches through one rigid approach.
+module test_normal_loading
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_constants, only: pi
+   use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_no_contact, &
+      stat_usage
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_options, only: normal_options_type, method_hertz
+   use shcontact_normal_hertz, only: hertz_type, hertz_from_load, hertz_from_approach
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
+      solve_approach, solve_load, solve_vertical_load
+   use test_semihertz, only: polynomial_patch
+   implicit none
+   private
+   public :: collect_normal_loading
+
+   !> Tread patch: seed-like curvatures (physics.md §1.5), contact angle −0.03 rad.
+   real(wp), parameter :: tread_a = 1.0_wp/920, tread_b = 1.0_wp/600, tread_gamma = -0.03_wp
+   !> Flange-root patch: sharper lateral curvature, contact angle −0.9 rad, 0.01 mm gap.
+   real(wp), parameter :: flange_a = 0.62_wp/920, flange_b = 1.0_wp/60, flange_gamma = -0.9_wp
+   real(wp), parameter :: flange_gap = 0.01_wp
+
+contains
+
+   !> Collect the tests.
+   subroutine collect_normal_loading(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('hertz_method_force', test_hertz_force), &
+         new_unittest('hertz_method_approach', test_hertz_approach), &
+         new_unittest('two_patches_balance', test_two_patches), &
+         new_unittest('two_patches_hertz_method', test_two_patches_hertz), &
+         new_unittest('second_patch_apart', test_patch_apart), &
+         new_unittest('vertical_load_errors', test_vertical_errors), &
+         new_unittest('workspace_reuse', test_reuse) &
+         ]
+   end subroutine collect_normal_loading
+
+   !> Prepare the tread and flange patches with the given options.
+   subroutine two_contacts(contacts, options, error, gap_flange)
+      type(normal_contact_type), intent(inout) :: contacts(2)
+      type(normal_options_type), intent(in) :: options
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: gap_flange
+      type(patch_geometry_type) :: geom
+      type(lib_error), allocatable :: err
+      type(material_type) :: mat
+      real(wp) :: gap
+
+      gap = flange_gap
+      if (present(gap_flange)) gap = gap_flange
+      call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, gamma0=tread_gamma)
+      call prepare_normal_contact(contacts(1), geom, options, mat, err)
+      if (.not. allocated(err)) then
+         call polynomial_patch(geom, flange_a, flange_b, 4.0_wp, 0.005_wp, gamma0=flange_gamma, &
+            gap0=gap)
+         call prepare_normal_contact(contacts(2), geom, options, mat, err)
+      end if
+      if (allocated(err)) call test_failed(error, err%message)
+   end subroutine two_contacts
+
+   !> `method = 'hertz'` with a prescribed force: the ellipse of the reference curvatures
+   !> (whatever the gap does away from y = 0), with its strip table k_i = √(1 − y_i²/b²).
+   subroutine test_hertz_force(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(material_type) :: mat
+      real(wp), parameter :: load = 64700.0_wp
+      integer :: i
+
+      options%method = method_hertz
+      call polynomial_patch(geom, tread_a, tread_b, 10.0_wp, 0.05_wp, c3=5.0e-5_wp, &
+         gamma0=tread_gamma)
+      call prepare_normal_contact(contact, geom, options, mat, err)
+      if (.not. allocated(err)) call solve_load(contact, load, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patch%is_hertz, message='is_hertz')
+      if (allocated(error)) return
+      call check(error, patch%ellipse_a, 6.2329_wp, thr=5.01e-5_wp, message='a')
+      if (allocated(error)) return
+      call check(error, patch%ellipse_b, 4.6885_wp, thr=5.01e-5_wp, message='b')
+      if (allocated(error)) return
+      call check(error, patch%approach, 0.07886_wp, thr=5.01e-6_wp, message='delta')
+      if (allocated(error)) return
+      call check(error, patch%p_max, 1057.1_wp, thr=0.1_wp, message='p_max')
+      if (allocated(error)) return
+      call check(error, patch%load, load, thr=1.0e-12_wp, rel=.true., message='load')
+      if (allocated(error)) return
+      call check(error, patch%area, pi*patch%ellipse_a*patch%ellipse_b, thr=1.0e-12_wp, &
+         rel=.true., message='area')
+      if (allocated(error)) return
+      ! Midpoint rule over the ellipse: Σ N_i = N (1 + O((δy/b)²)).
+      call check(error, sum(patch%strip_load), load, thr=1.0e-4_wp, rel=.true., message='sum N_i')
+      if (allocated(error)) return
+      call check(error, patch%gamma0, tread_gamma, message='gamma0')
+      if (allocated(error)) return
+      do i = 1, patch%n_strips
+         call check(error, patch%k(i), sqrt(1.0_wp - (patch%y(i)/patch%ellipse_b)**2), &
+            thr=1.0e-12_wp, message='k_i')
+         if (allocated(error)) return
+         call check(error, patch%a(i), patch%k(i)*patch%ellipse_a, thr=1.0e-12_wp, message='a_i')
+         if (allocated(error)) return
+         call check(error, patch%gamma(i), tread_gamma + 2.0e-3_wp*patch%y(i), thr=1.0e-12_wp, &
+            message='gamma_i from the geometry')
+         if (allocated(error)) return
+         call check(error, patch%delta_r(i), 4.0e-2_wp*patch%y(i), thr=1.0e-12_wp, &
+            message='delta r_i')
+         if (allocated(error)) return
+      end do
+   end subroutine test_hertz_force
+
+   !> `method = 'hertz'` with a prescribed approach: Hertz's load for δ = 0.07886 mm.
+   subroutine test_hertz_approach(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(material_type) :: mat
+
+      options%method = method_hertz
+      call polynomial_patch(geom, tread_a, tread_b, 10.0_wp, 0.05_wp)
+      call prepare_normal_contact(contact, geom, options, mat, err)
+      if (.not. allocated(err)) call solve_approach(contact, 0.07886_wp, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patch%load, 64700.0_wp, thr=2.0e-4_wp, rel=.true., message='N(delta)')
+   end subroutine test_hertz_approach
+
+   !> Tread and flange patches under F_z = 80 kN: Σ N_k cos γ_k = F_z to 1e-10, each patch at
+   !> δ_k = Δz cos γ_k − g₀,k, and each patch's load is Hertz's at its approach (the patches are
+   !> quadratic) within 0.5 %.
+   subroutine test_two_patches(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contacts(2)
+      type(normal_patch_type) :: patches(2)
+      type(hertz_type) :: hz
+      type(material_type) :: mat
+      real(wp), parameter :: f_z = 80000.0_wp, gammas(2) = [tread_gamma, flange_gamma]
+      real(wp), parameter :: gaps(2) = [0.0_wp, flange_gap]
+      real(wp), parameter :: curv(2, 2) = reshape([tread_a, tread_b, flange_a, flange_b], [2, 2])
+      real(wp) :: dz
+      integer :: k
+
+      call two_contacts(contacts, options, error)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, f_z, patches, dz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patches(1)%load*cos(tread_gamma) + patches(2)%load*cos(flange_gamma), &
+         f_z, thr=1.0e-10_wp, rel=.true., message='vertical balance')
+      if (allocated(error)) return
+      do k = 1, 2
+         call check(error, patches(k)%approach, dz*cos(gammas(k)) - gaps(k), thr=1.0e-14_wp, &
+            message='common rigid approach')
+         if (allocated(error)) return
+         call check(error, patches(k)%load > 0.1_wp*f_z, message='both patches should carry')
+         if (allocated(error)) return
+         call hertz_from_approach(curv(1, k), curv(2, k), patches(k)%approach, mat, hz, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, patches(k)%load, hz%load, thr=5.0e-3_wp, rel=.true., &
+            message='patch load against Hertz at its approach')
+         if (allocated(error)) return
+      end do
+   end subroutine test_two_patches
+
+   !> The same with `method = 'hertz'`: the patch loads are Hertz's at δ_k to rounding.
+   subroutine test_two_patches_hertz(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contacts(2)
+      type(normal_patch_type) :: patches(2)
+      type(hertz_type) :: h1, h2
+      type(material_type) :: mat
+      real(wp), parameter :: f_z = 80000.0_wp
+      real(wp) :: dz
+
+      options%method = method_hertz
+      call two_contacts(contacts, options, error)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, f_z, patches, dz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call hertz_from_approach(tread_a, tread_b, dz*cos(tread_gamma), mat, h1, err)
+      if (.not. allocated(err)) call hertz_from_approach(flange_a, flange_b, &
+         dz*cos(flange_gamma) - flange_gap, mat, h2, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, h1%load*cos(tread_gamma) + h2%load*cos(flange_gamma), f_z, &
+         thr=1.0e-10_wp, rel=.true., message='balance from closed-form Hertz loads')
+      if (allocated(error)) return
+      call check(error, patches(2)%ellipse_a, h2%a, thr=1.0e-12_wp, rel=.true.)
+   end subroutine test_two_patches_hertz
+
+   !> A patch whose gap is larger than the wheel's approach stays out of contact (cleared, zero
+   !> load); the other carries F_z/cos γ.
+   subroutine test_patch_apart(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contacts(2)
+      type(normal_patch_type) :: patches(2)
+      real(wp), parameter :: f_z = 60000.0_wp
+      real(wp) :: dz
+
+      call two_contacts(contacts, options, error, gap_flange=2.0_wp)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, f_z, patches, dz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patches(2)%load, 0.0_wp, message='the apart patch carries nothing')
+      if (allocated(error)) return
+      call check(error, maxval(patches(2)%a) <= 0.0_wp, message='apart patch strips a_i = 0')
+      if (allocated(error)) return
+      call check(error, patches(2)%approach < 0.0_wp, message='negative approach when apart')
+      if (allocated(error)) return
+      call check(error, patches(1)%load, f_z/cos(tread_gamma), thr=1.0e-10_wp, rel=.true.)
+   end subroutine test_patch_apart
+
+   !> Bad vertical-load input and a load the tables cannot carry are error values.
+   subroutine test_vertical_errors(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contacts(2)
+      type(normal_patch_type) :: patches(2), one(1)
+      real(wp) :: dz
+
+      call two_contacts(contacts, options, error)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, -1.0_wp, patches, dz, err)
+      call check(error, allocated(err), message='F_z < 0 must be an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_invalid_input)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, 1.0e4_wp, one, dz, err)
+      call check(error, allocated(err), message='size mismatch must be an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_usage)
+      if (allocated(error)) return
+      ! The flange table (±4 mm) cannot hold the patch of a 2 MN load.
+      call solve_vertical_load(contacts, 2.0e6_wp, patches, dz, err)
+      call check(error, allocated(err), message='an overload must be an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_no_contact)
+      if (allocated(error)) return
+      call check(error, index(err%message, 'load too large') > 0, message=err%message)
+      if (allocated(error)) return
+      contacts(2)%geometry%gamma0 = 0.5_wp*pi + 0.1_wp
+      call solve_vertical_load(contacts, 1.0e4_wp, patches, dz, err)
+      call check(error, allocated(err), message='a contact angle beyond 90 deg must be an error')
+   end subroutine test_vertical_errors
+
+   !> One prepared contact and one patch serve many cases; changing n_strips resizes the table.
+   subroutine test_reuse(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(hertz_type) :: hz
+      type(material_type) :: mat
+      integer :: i
+
+      call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp)
+      call prepare_normal_contact(contact, geom, options, mat, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do i = 1, 20
+         call solve_load(contact, 5.0e3_wp*i, patch, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, patch%load, 5.0e3_wp*i, thr=1.0e-10_wp, rel=.true.)
+         if (allocated(error)) return
+      end do
+      call hertz_from_load(tread_a, tread_b, 1.0e5_wp, mat, hz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patch%approach, hz%approach, thr=5.0e-3_wp, rel=.true.)
+      if (allocated(error)) return
+      options%n_strips = 37
+      call prepare_normal_contact(contact, geom, options, mat, err)
+      if (.not. allocated(err)) call solve_load(contact, 1.0e4_wp, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, size(patch%a), 37)
+      if (allocated(error)) return
+      call check(error, patch%n_strips, 37)
+   end subroutine test_reuse
+
+end module test_normal_loading
