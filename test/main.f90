@@ -18,6 +18,8 @@ program tester
    use test_hertz, only: collect_hertz
    use test_semihertz, only: collect_semihertz
    use test_normal_loading, only: collect_normal_loading
+   use test_config, only: collect_config
+   use test_hdf5io, only: collect_hdf5io
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -33,7 +35,9 @@ program tester
       new_testsuite('lapack', collect_lapack), &
       new_testsuite('hertz', collect_hertz), &
       new_testsuite('semihertz', collect_semihertz), &
-      new_testsuite('normal_loading', collect_normal_loading) &
+      new_testsuite('normal_loading', collect_normal_loading), &
+      new_testsuite('config', collect_config), &
+      new_testsuite('hdf5io', collect_hdf5io) &
       ]
 
    call read_selection(suite_name, test_name)

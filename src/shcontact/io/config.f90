@@ -19,7 +19,8 @@ module shcontact_io_config
    private
 
    public :: case_config_type, sweep_axis_type, case_point_type
-   public :: load_config, read_config_file, apply_override, validate_config, config_namelist
+   public :: load_config, read_config_file, read_config_text, apply_override, validate_config
+   public :: config_namelist
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
    public :: path_len, name_len, max_sweep_values
 
@@ -74,8 +75,10 @@ module shcontact_io_config
       variable_info_type('track', 'gauge', k_real, 'mm', 'track gauge'), &
       variable_info_type('track', 'gauge_height', k_real, 'mm', &
       'gauge measured this far below the rail top'), &
-      variable_info_type('track', 'cant', k_real, 'rad', &
-      'rail inclination (1:40 = 0.025); 0 when the rail file is already canted'), &
+      variable_info_type('track', 'inclination', k_real, '1', &
+      'rail inclination as a slope towards the track centre (1:40 = 0.025)'), &
+      variable_info_type('track', 'rail_canted', k_logical, '', &
+      '.true. when the rail profile is already canted (Manchester .prr)'), &
       variable_info_type('track', 'flange_back_distance', k_real, 'mm', &
       'distance between the flange backs of the wheelset'), &
       variable_info_type('track', 'flange_back_position', k_real, 'mm', &
@@ -103,6 +106,10 @@ module shcontact_io_config
       variable_info_type('normal', 'epsilon', k_real, '1', &
       "penetration reduction of reduction = 'constant'"), &
       variable_info_type('normal', 'n_strips', k_int, '', 'number of strips per patch'), &
+      variable_info_type('normal', 'b_min', k_real, '1/mm', &
+      'smallest lateral relative curvature B (concave gap curvature is clamped to it)'), &
+      variable_info_type('normal', 'longitudinal_curvature', k_string, '', &
+      "A(y) = cos(gamma)/(2 r_w): 'local' gamma(y) or 'reference' gamma0"), &
       variable_info_type('tangential', 'method', k_string, '', "'fastsim-sh' or 'fastsim'"), &
       variable_info_type('tangential', 'bound', k_string, '', &
       "'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip', 'clipped'"), &
@@ -165,6 +172,8 @@ module shcontact_io_config
    character(len=*), parameter :: load_modes(*) = [character(len=8) :: 'force', 'approach', &
       'vertical']
    character(len=*), parameter :: normal_methods(*) = [character(len=10) :: 'semi-hertz', 'hertz']
+   character(len=*), parameter :: curvature_modes(*) = [character(len=9) :: 'local', &
+      'reference']
    character(len=*), parameter :: reductions(*) = [character(len=11) :: 'local-hertz', 'constant']
    character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
       'fastsim']
@@ -199,8 +208,10 @@ module shcontact_io_config
       character(len=name_len) :: side = 'right'
       !> Track gauge (mm), measured `gauge_height` below the rail top.
       real(wp) :: gauge = 1435.0_wp, gauge_height = 14.0_wp
-      !> Rail inclination (rad): atan(1/40).
-      real(wp) :: cant = 0.024994793618920_wp
+      !> Rail inclination as a slope towards the track centre (1:40).
+      real(wp) :: inclination = 0.025_wp
+      !> The rail profile is already canted: the inclination is not applied again.
+      logical :: rail_canted = .false.
       !> Flange-back distance and flange-back position in wheel-profile coordinates (mm).
       real(wp) :: flange_back_distance = 1360.0_wp, flange_back_position = -70.0_wp
       !> Nominal rolling radius R₀ (mm).
@@ -237,6 +248,10 @@ module shcontact_io_config
       character(len=name_len) :: reduction = 'local-hertz'
       real(wp) :: epsilon = 0.55_wp
       integer :: n_strips = 100
+      !> Clamp of B(y) (1/mm), physics.md decision 4.
+      real(wp) :: b_min = 1.0e-4_wp
+      !> 'local' (cos γ(y)) or 'reference' (cos γ₀) in A(y).
+      character(len=name_len) :: longitudinal_curvature = 'local'
    end type normal_config_type
 
    !> `&tangential`: the tangential solver.
@@ -388,6 +403,47 @@ contains
       end do
    end subroutine read_config_file
 
+   !> A configuration from namelist text (as stored in an output file), validated.
+   subroutine read_config_text(text, name, config, error)
+      !> Namelist text, lines separated by new-line characters.
+      character(len=*), intent(in) :: text
+      !> What to call the text in messages.
+      character(len=*), intent(in) :: name
+      !> The configuration.
+      type(case_config_type), intent(out) :: config
+      !> Set when the text is not a valid configuration.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: lines(:)
+      type(assignment_list_type) :: list
+      integer :: i, n, start, next, longest
+
+      n = 0
+      longest = 1
+      start = 1
+      do while (start <= len(text))
+         next = index(text(start:), new_line('a'))
+         if (next == 0) next = len(text) - start + 2
+         n = n + 1
+         longest = max(longest, next - 1)
+         start = start + next
+      end do
+      allocate (character(len=longest) :: lines(n))
+      start = 1
+      do i = 1, n
+         next = index(text(start:), new_line('a'))
+         if (next == 0) next = len(text) - start + 2
+         lines(i) = text(start:start + next - 2)
+         start = start + next
+      end do
+      call parse_namelist(lines, name, list, error)
+      if (allocated(error)) return
+      do i = 1, list%n
+         call apply_assignment(config, list%items(i), '', error)
+         if (allocated(error)) return
+      end do
+      call validate_config(config, error)
+   end subroutine read_config_text
+
    !> Apply one override `group%var=value` (string values may be given without quotes).
    subroutine apply_override(config, text, error)
       !> Updated in place.
@@ -417,7 +473,10 @@ contains
       end if
       iv = find_variable(a%group, a%name)
       if (iv > 0) then
-         if (variables(iv)%kind == k_string .or. variables(iv)%kind == k_string_list) then
+         if (variables(iv)%kind == k_string) then
+            if (index("'"//'"', a%value(1:min(1, len(a%value)))) == 0) &
+               a%value = quote_string(a%value)
+         else if (variables(iv)%kind == k_string_list) then
             a%value = quote_items(a%value)
          end if
       end if
@@ -783,9 +842,11 @@ contains
       character(len=:), allocatable :: q
       integer :: start, comma
       character(len=:), allocatable :: item
-      if (index(value, "'") > 0 .or. index(value, '"') > 0) then
-         q = value
-         return
+      if (len(value) > 0) then
+         if (value(1:1) == "'" .or. value(1:1) == '"') then
+            q = value
+            return
+         end if
       end if
       q = ''
       start = 1
@@ -1059,10 +1120,10 @@ contains
       character(len=*), intent(in) :: name, base_dir
       select case (name)
       case ('wheel')
-         if (index(profiles%wheel, 'builtin:') /= 1) profiles%wheel = join_path(base_dir, &
+         if (index(to_lower(profiles%wheel), 'builtin:') /= 1) profiles%wheel = join_path(base_dir, &
             trim(profiles%wheel))
       case ('rail')
-         if (index(profiles%rail, 'builtin:') /= 1) profiles%rail = join_path(base_dir, &
+         if (index(to_lower(profiles%rail), 'builtin:') /= 1) profiles%rail = join_path(base_dir, &
             trim(profiles%rail))
       end select
    end subroutine resolve_profile_path
@@ -1094,16 +1155,19 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: msg
       character(len=name_len) :: side
-      real(wp) :: gauge, gauge_height, cant, flange_back_distance, flange_back_position, &
-         nominal_radius
-      namelist /track/ side, gauge, gauge_height, cant, flange_back_distance, &
+      real(wp) :: gauge, gauge_height, inclination, flange_back_distance, &
          flange_back_position, nominal_radius
-      side = g%side; gauge = g%gauge; gauge_height = g%gauge_height; cant = g%cant
+      logical :: rail_canted
+      namelist /track/ side, gauge, gauge_height, inclination, rail_canted, &
+         flange_back_distance, flange_back_position, nominal_radius
+      side = g%side; gauge = g%gauge; gauge_height = g%gauge_height
+      inclination = g%inclination; rail_canted = g%rail_canted
       flange_back_distance = g%flange_back_distance
       flange_back_position = g%flange_back_position; nominal_radius = g%nominal_radius
       read (text, nml=track, iostat=stat, iomsg=msg)
       if (stat /= 0) return
-      g%side = to_lower(side); g%gauge = gauge; g%gauge_height = gauge_height; g%cant = cant
+      g%side = to_lower(side); g%gauge = gauge; g%gauge_height = gauge_height
+      g%inclination = inclination; g%rail_canted = rail_canted
       g%flange_back_distance = flange_back_distance
       g%flange_back_position = flange_back_position; g%nominal_radius = nominal_radius
    end subroutine read_track
@@ -1168,15 +1232,17 @@ contains
       character(len=*), intent(in) :: text
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: msg
-      character(len=name_len) :: method, reduction
-      real(wp) :: epsilon
+      character(len=name_len) :: method, reduction, longitudinal_curvature
+      real(wp) :: epsilon, b_min
       integer :: n_strips
-      namelist /normal/ method, reduction, epsilon, n_strips
+      namelist /normal/ method, reduction, epsilon, n_strips, b_min, longitudinal_curvature
       method = g%method; reduction = g%reduction; epsilon = g%epsilon; n_strips = g%n_strips
+      b_min = g%b_min; longitudinal_curvature = g%longitudinal_curvature
       read (text, nml=normal, iostat=stat, iomsg=msg)
       if (stat /= 0) return
       g%method = to_lower(method); g%reduction = to_lower(reduction); g%epsilon = epsilon
-      g%n_strips = n_strips
+      g%n_strips = n_strips; g%b_min = b_min
+      g%longitudinal_curvature = to_lower(longitudinal_curvature)
    end subroutine read_normal
 
    subroutine read_tangential(g, text, stat, msg)
@@ -1389,7 +1455,7 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'track', 'gauge_height', c%track%gauge_height, error)
          if (allocated(error)) return
-         call check_real_var(c, 'track', 'cant', c%track%cant, error)
+         call check_real_var(c, 'track', 'inclination', c%track%inclination, error)
          if (allocated(error)) return
          call check_real_var(c, 'track', 'flange_back_distance', c%track%flange_back_distance, &
             error)
@@ -1431,6 +1497,11 @@ contains
          if (allocated(error)) return
          call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, 2, 100000, error)
          if (allocated(error)) return
+         call check_real_var(c, 'normal', 'b_min', c%normal%b_min, error)
+         if (allocated(error)) return
+         call check_choice(c, 'normal', 'longitudinal_curvature', &
+            c%normal%longitudinal_curvature, curvature_modes, error)
+         if (allocated(error)) return
          call check_choice(c, 'tangential', 'method', c%tangential%method, tangential_methods, &
             error)
          if (allocated(error)) return
@@ -1462,8 +1533,10 @@ contains
          lo = 500.0_wp; hi = 2000.0_wp
       case ('gauge_height')
          lo = 0.0_wp; hi = 50.0_wp
-      case ('cant')
+      case ('inclination')
          lo = -0.2_wp; hi = 0.2_wp
+      case ('b_min')
+         lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
       case ('flange_back_distance')
          lo = 400.0_wp; hi = 2000.0_wp
       case ('flange_back_position')
@@ -1580,12 +1653,16 @@ contains
    !> A built-in name is one we have; anything else is a file name (checked when it is read).
    subroutine check_profile_name(config, name, value, builtin, error)
       type(case_config_type), intent(in) :: config
-      character(len=*), intent(in) :: name, value, builtin
+      character(len=*), intent(in) :: name, builtin
+      !> The profile name; a built-in name is spelt canonically on return.
+      character(len=*), intent(inout) :: value
       type(error_type), allocatable, intent(out) :: error
+      if (to_lower(value) == to_lower(builtin)) value = builtin
       if (len_trim(value) == 0) then
          call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
             " is empty; expected '"//builtin//"' or a file name")
-      else if (index(value, 'builtin:') == 1 .and. to_lower(value) /= builtin) then
+      else if (index(to_lower(value), 'builtin:') == 1 .and. &
+               to_lower(value) /= to_lower(builtin)) then
          call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
             " = '"//trim(value)//"': unknown built-in profile; expected '"//builtin// &
             "' or a file name")
@@ -1905,7 +1982,8 @@ contains
             case ('side'); value = quote_string(config%track%side)
             case ('gauge'); value = format_real(config%track%gauge)
             case ('gauge_height'); value = format_real(config%track%gauge_height)
-            case ('cant'); value = format_real(config%track%cant)
+            case ('inclination'); value = format_real(config%track%inclination)
+            case ('rail_canted'); value = format_logical(config%track%rail_canted)
             case ('flange_back_distance')
                value = format_real(config%track%flange_back_distance)
             case ('flange_back_position')
@@ -1942,6 +2020,9 @@ contains
             case ('reduction'); value = quote_string(config%normal%reduction)
             case ('epsilon'); value = format_real(config%normal%epsilon)
             case ('n_strips'); value = format_int(config%normal%n_strips)
+            case ('b_min'); value = format_real(config%normal%b_min)
+            case ('longitudinal_curvature')
+               value = quote_string(config%normal%longitudinal_curvature)
             end select
          case ('tangential')
             select case (name)
@@ -1990,6 +2071,16 @@ contains
       end do
       text = text//'/'//nl
    end function config_namelist
+
+   pure function format_logical(flag) result(text)
+      logical, intent(in) :: flag
+      character(len=:), allocatable :: text
+      if (flag) then
+         text = '.true.'
+      else
+         text = '.false.'
+      end if
+   end function format_logical
 
    !> The values of an axis as a namelist value list.
    pure function axis_text(axis) result(value)

@@ -58,7 +58,7 @@ module shcontact_io_hdf5
 
    !> Read a dataset into an allocatable array or a text.
    interface h5_read
-      module procedure :: read_real_1d, read_real_2d, read_int_1d, read_text_0d
+      module procedure :: read_real_1d, read_real_2d, read_int_1d, read_text_0d, read_text_1d
    end interface h5_read
 
    !> Read a scalar attribute.
@@ -815,6 +815,36 @@ contains
       end if
       text = unpad(text)
    end subroutine read_text_0d
+
+   subroutine read_text_1d(file, path, texts, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path of a 1-D fixed-length text array.
+      character(len=*), intent(in) :: path
+      !> The texts (padding removed; length of the longest).
+      character(len=:), allocatable, intent(out) :: texts(:)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, str
+      integer(hsize_t) :: dims(1)
+      integer(size_t) :: n
+      integer :: stat, s, i
+      call open_dataset(file, path, 1, dset, dims, error)
+      if (allocated(error)) return
+      call h5dget_type_f(dset, str, s)
+      call h5tget_size_f(str, n, s)
+      allocate (character(len=n) :: texts(dims(1)))
+      call h5dread_f(dset, str, texts, dims, stat)
+      call h5tclose_f(str, s)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot read the texts')
+         return
+      end if
+      do i = 1, size(texts)
+         texts(i) = unpad(texts(i))
+      end do
+   end subroutine read_text_1d
 
    !> Text up to the first NUL.
    pure function unpad(text) result(t)

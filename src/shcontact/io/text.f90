@@ -19,7 +19,7 @@ contains
       character(len=40) :: buf, fmt
       character(len=20) :: digits
       real(wp) :: back
-      integer :: d, ios, epos, expo, nd
+      integer :: d, ios, epos, expo, nd, first
 
       if (ieee_is_nan(x)) then
          text = 'NaN'
@@ -32,7 +32,10 @@ contains
          return
       end if
       ! Fewest significant digits that survive a write/read cycle (at most 17 for IEEE double).
-      do d = 1, 17
+      ! Near the overflow threshold a rounded-up short form would overflow when read back.
+      first = 1
+      if (abs(x) > 1.0e307_wp) first = 17
+      do d = first, 17
          write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
          write (buf, fmt) x
          read (buf, *, iostat=ios) back
