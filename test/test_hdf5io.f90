@@ -8,6 +8,7 @@ module test_hdf5io
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_read, h5_read_attribute, h5_copy, h5_exists
    use shcontact_io_files, only: file_exists, delete_file, process_id
+   use shcontact_io_text, only: string_type
    use shcontact_io_config, only: case_config_type, load_config, config_namelist
    use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
       read_result_summary
@@ -313,7 +314,8 @@ contains
       call check(error, messages(1) == 'the profiles do not touch', message='failure message')
       if (allocated(error)) return
       ! Parts given in any order.
-      call merge_result_files(merged, [part2, part1], 'test', info%date, lerr)
+      call merge_result_files(merged, [string_type(part2), string_type(part1)], 'test', &
+         info%date, lerr)
       call fail_on(error, lerr, 'merge')
       if (allocated(error)) return
       call h5_open(f, merged, lerr)
@@ -345,13 +347,14 @@ contains
       call write_result_file(part1, info, config, [1, 2, 3], results(1:3), lerr)
       call fail_on(error, lerr, 'write')
       if (allocated(error)) return
-      call merge_result_files(merged, [part1], 'test', info%date, lerr)
+      call merge_result_files(merged, [string_type(part1)], 'test', info%date, lerr)
       call check(error, allocated(lerr), message='missing cases')
       if (allocated(error)) return
       call check(error, index(lerr%message, '3 of 6 cases are missing') > 0 .and. &
          .not. file_exists(merged), message=lerr%message)
       if (allocated(error)) return
-      call merge_result_files(merged, [part1, part1], 'test', info%date, lerr)
+      call merge_result_files(merged, [string_type(part1), string_type(part1)], 'test', &
+         info%date, lerr)
       call check(error, allocated(lerr), message='duplicate cases')
       if (allocated(error)) return
       call check(error, index(lerr%message, 'case 1 is in both') > 0, message=lerr%message)
@@ -361,7 +364,8 @@ contains
          'sweep%bound=weighted,clipped', 'output%fields=traction,state'], other, lerr)
       info2%namelist = config_namelist(other)
       call write_result_file(part2, info2, other, [4, 5, 6], results(4:6), lerr)
-      call merge_result_files(merged, [part1, part2], 'test', info%date, lerr)
+      call merge_result_files(merged, [string_type(part1), string_type(part2)], 'test', &
+         info%date, lerr)
       call check(error, allocated(lerr), message='another configuration')
       if (allocated(error)) return
       call check(error, lerr%stat == stat_invalid_input .and. &

@@ -9,7 +9,7 @@ module shcontact_case_result
    private
 
    public :: case_summary_type, case_result_type, summary_columns, n_summary_columns
-   public :: summary_value, set_summary_value, case_not_run
+   public :: summary_value, set_summary_value, case_not_run, failure_type
 
    !> Status of a case that has not been solved yet.
    integer, parameter :: case_not_run = -1
@@ -59,6 +59,14 @@ module shcontact_case_result
       type(normal_patch_type), allocatable :: normal(:)
       type(tangential_patch_type), allocatable :: tangential(:)
    end type case_result_type
+
+   !> A failed case and why.
+   type :: failure_type
+      !> Case number.
+      integer :: case = 0
+      !> The error message.
+      character(len=:), allocatable :: message
+   end type failure_type
 
 contains
 

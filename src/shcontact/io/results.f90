@@ -31,7 +31,7 @@ module shcontact_io_results
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute
-   use shcontact_io_text, only: format_int
+   use shcontact_io_text, only: format_int, string_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run
    implicit none
@@ -541,17 +541,20 @@ contains
 
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
-   subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial)
+   subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
+                                 shard)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
-      character(len=*), intent(in) :: inputs(:)
+      type(string_type), intent(in) :: inputs(:)
       !> Command line and date recorded in the merged file.
       character(len=*), intent(in) :: command_line, date
       !> Set when the inputs do not fit together or cannot be read or written.
       type(error_type), allocatable, intent(out) :: error
       !> Accept a run with cases missing (they are absent from the summary).
       logical, intent(in), optional :: allow_partial
+      !> 'I/N' when the merged file is one shard of a run.
+      character(len=*), intent(in), optional :: shard
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
@@ -573,7 +576,7 @@ contains
       n_fail = 0
       longest = 1
       do f = 1, size(inputs)
-         call read_result_summary(trim(inputs(f)), text, n_cases, indices, summaries, failed, &
+         call read_result_summary(inputs(f)%text, text, n_cases, indices, summaries, failed, &
             messages, error)
          if (allocated(error)) return
          if (f == 1) then
@@ -583,20 +586,20 @@ contains
             source = 0
             allocate (all_failed(0))
          else if (text /= first_text .or. n_cases /= n_first) then
-            call fatal_error(error, 'merge: "'//trim(inputs(f))//'" comes from another run '// &
-               'than "'//trim(inputs(1))//'" (configurations differ)', stat_invalid_input)
+            call fatal_error(error, 'merge: "'//inputs(f)%text//'" comes from another run '// &
+               'than "'//inputs(1)%text//'" (configurations differ)', stat_invalid_input)
             return
          end if
          do i = 1, size(indices)
             icase = indices(i)
             if (icase < 1 .or. icase > n_cases) then
-               call fatal_error(error, 'merge: "'//trim(inputs(f))//'" holds case '// &
+               call fatal_error(error, 'merge: "'//inputs(f)%text//'" holds case '// &
                   format_int(icase)//' of a run of '//format_int(n_cases), stat_invalid_input)
                return
             end if
             if (source(icase) /= 0) then
                call fatal_error(error, 'merge: case '//format_int(icase)//' is in both "'// &
-                  trim(inputs(source(icase)))//'" and "'//trim(inputs(f))//'"', &
+                  inputs(source(icase))%text//'" and "'//inputs(f)%text//'"', &
                   stat_invalid_input)
                return
             end if
@@ -617,7 +620,7 @@ contains
          return
       end if
 
-      call read_config_text(first_text, '"'//trim(inputs(1))//'":/input/namelist', config, error)
+      call read_config_text(first_text, '"'//inputs(1)%text//'":/input/namelist', config, error)
       if (allocated(error)) return
       order = pack([(i, i=1, n_first)], source > 0)
 
@@ -627,10 +630,11 @@ contains
       info%date = date
       info%n_cases = n_first
       info%shard = ''
+      if (present(shard)) info%shard = shard
       call h5_create(out, output, error, compression=config%output%compression, &
          single=config%output%precision == 'single')
       if (allocated(error)) return
-      call h5_open(src, trim(inputs(1)), error)
+      call h5_open(src, inputs(1)%text, error)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
       if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
       if (.not. allocated(error) .and. h5_exists(src, 'geometry')) &
@@ -649,7 +653,7 @@ contains
          if (source(icase) /= open_index) then
             call h5_close(src)
             open_index = source(icase)
-            call h5_open(src, trim(inputs(open_index)), error)
+            call h5_open(src, inputs(open_index)%text, error)
             if (allocated(error)) exit
          end if
          if (h5_exists(src, case_group_name(icase, n_first))) call h5_copy(src, &

@@ -7,8 +7,42 @@ module shcontact_io_text
    private
 
    public :: format_real, format_int, to_lower, quote_string, json_string, strip_quotes
+   public :: string_type, string_list_type
+
+   !> A text of any length (for lists of texts of different lengths).
+   type :: string_type
+      character(len=:), allocatable :: text
+   end type string_type
+
+   !> A growable list of texts.
+   type :: string_list_type
+      !> The texts; items(1:n) are in use.
+      type(string_type), allocatable :: items(:)
+      !> Number of texts.
+      integer :: n = 0
+   contains
+      !> Append a text.
+      procedure :: push => string_list_push
+   end type string_list_type
 
 contains
+
+   !> Append a text to the list.
+   pure subroutine string_list_push(self, text)
+      !> The list.
+      class(string_list_type), intent(inout) :: self
+      !> The text.
+      character(len=*), intent(in) :: text
+      type(string_type), allocatable :: grown(:)
+      if (.not. allocated(self%items)) allocate (self%items(8))
+      if (self%n == size(self%items)) then
+         allocate (grown(2*self%n))
+         grown(1:self%n) = self%items(1:self%n)
+         call move_alloc(grown, self%items)
+      end if
+      self%n = self%n + 1
+      self%items(self%n)%text = text
+   end subroutine string_list_push
 
    !> The shortest decimal text that reads back to exactly `x` (round trip), in plain notation
    !> for 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise.
