@@ -1,0 +1,56 @@
+!> Small text helpers for messages and option parsing.
+module shcontact_core_strings
+   use shcontact_core_kinds, only: wp
+   implicit none
+   private
+
+   public :: to_lower, str_int, str_real
+
+contains
+
+   !> ASCII lower case (option names, file extensions).
+   pure function to_lower(text) result(low)
+      !> Text to convert.
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer :: i, code
+      low = text
+      do i = 1, len(text)
+         code = iachar(text(i:i))
+         if (code >= iachar('A') .and. code <= iachar('Z')) low(i:i) = achar(code + 32)
+      end do
+   end function to_lower
+
+   !> An integer as text without blanks.
+   pure function str_int(i) result(text)
+      !> The number.
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(i0)') i
+      text = trim(buffer)
+   end function str_int
+
+   !> A real in short form for messages: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6,
+   !> otherwise 6 significant digits in exponent form.
+   pure function str_real(x) result(text)
+      !> The number.
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      integer :: last
+      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
+         write (buffer, '(f20.6)') x
+         text = trim(adjustl(buffer))
+         last = verify(text, '0', back=.true.)
+         if (text(last:last) == '.') last = last - 1
+         text = text(:last)
+      else if (x == 0.0_wp) then
+         text = '0'
+      else
+         write (buffer, '(es13.5e3)') x
+         text = trim(adjustl(buffer))
+      end if
+   end function str_real
+
+end module shcontact_core_strings
