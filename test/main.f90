@@ -23,6 +23,7 @@ program tester
    use test_profile_builtin, only: collect_profile_builtin
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
+   use test_app, only: collect_app
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -43,7 +44,8 @@ program tester
       new_testsuite('profile_cleanup', collect_profile_cleanup), &
       new_testsuite('profile_builtin', collect_profile_builtin), &
       new_testsuite('config', collect_config), &
-      new_testsuite('hdf5io', collect_hdf5io) &
+      new_testsuite('hdf5io', collect_hdf5io), &
+      new_testsuite('app', collect_app) &
       ]
 
    call read_selection(suite_name, test_name)

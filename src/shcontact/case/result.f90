@@ -32,7 +32,8 @@ module shcontact_case_result
       real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
       !> Main patch: Coulomb check max|p|/(μ p_n) and adhesion area fraction.
       real(wp) :: coulomb_ratio = 0.0_wp, adhesion_fraction = 0.0_wp
-      !> Main patch: approach (mm), contact area (mm²), peak pressure (MPa).
+      !> Main patch: approach δ (mm; column `delta` of /summary), contact area (mm²), peak
+      !> pressure (MPa).
       real(wp) :: approach = 0.0_wp, area = 0.0_wp, p_max = 0.0_wp
       !> Main patch: contact angle γ₀ (rad), rolling radius r₀ (mm), lateral track position of
       !> the reference point (mm).
@@ -44,7 +45,7 @@ module shcontact_case_result
    character(len=*), parameter :: summary_columns(2, n_summary_columns) = reshape( &
       [character(len=17) :: &
       'fn_total', 'N', 'fn', 'N', 'fx', 'N', 'fy', 'N', 'mz', 'N mm', 'fx_norm', '1', &
-      'fy_norm', '1', 'coulomb_ratio', '1', 'adhesion_fraction', '1', 'approach', 'mm', &
+      'fy_norm', '1', 'coulomb_ratio', '1', 'adhesion_fraction', '1', 'delta', 'mm', &
       'area', 'mm^2', 'p_max', 'MPa', 'gamma0', 'rad', 'r0', 'mm', 'y_track', 'mm'], &
       [2, n_summary_columns])
 

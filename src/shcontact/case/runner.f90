@@ -10,6 +10,7 @@ module shcontact_case_runner
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
    use shcontact_core_material, only: material_type
+   use shcontact_core_strings, only: str_int
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_reader, only: read_profile
    use shcontact_profile_cleanup, only: clean_profile
@@ -182,7 +183,7 @@ contains
       do k = 1, n
          call prepare_normal_contact(contacts(k), geometry(k), setup%normal, setup%material, &
             error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str(k))
+         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
          if (failed(stage, error)) return
       end do
       select case (setup%load_mode)
@@ -255,7 +256,7 @@ contains
          end if
          call solve_tangential(ws, stage%normal(k), material, creepage, options, &
             tangential(k), error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str(k))
+         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
       end do
       if (allocated(error)) then
          result%summary%stat = error%stat
@@ -299,13 +300,5 @@ contains
       s%r0 = stage%geometry(m)%r0
       s%y_track = stage%geometry(m)%y_track
    end subroutine summarise
-
-   pure function str(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=12) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function str
 
 end module shcontact_case_runner

@@ -28,7 +28,8 @@ module shcontact_case_sweep
    use shcontact_io_files, only: make_directory, remove_directory, delete_file, file_exists, &
       rename_file
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
-   use shcontact_io_text, only: format_int, string_list_type
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: string_list_type
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
       case_not_run
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
@@ -121,7 +122,7 @@ contains
       integer :: dot, slash
       name = trim(file)
       if (n_shards <= 1) return
-      tag = '-shard'//format_int(shard)//'of'//format_int(n_shards)
+      tag = '-shard'//str_int(shard)//'of'//str_int(n_shards)
       dot = index(name, '.', back=.true.)
       slash = index(name, '/', back=.true.)
       if (dot > slash + 1) then
@@ -170,15 +171,15 @@ contains
       n = config%n_cases()
       outcome%n_cases = n
       if (options%n_shards < 1 .or. options%shard < 1 .or. options%shard > options%n_shards) then
-         call fatal_error(error, 'shard '//format_int(options%shard)//'/'// &
-            format_int(options%n_shards)//': expected 1 <= I <= N', stat_usage)
+         call fatal_error(error, 'shard '//str_int(options%shard)//'/'// &
+            str_int(options%n_shards)//': expected 1 <= I <= N', stat_usage)
          return
       end if
       call shard_range(n, options%shard, options%n_shards, outcome%first, outcome%last)
       if (outcome%last < outcome%first) then
-         call fatal_error(error, 'shard '//format_int(options%shard)//'/'// &
-            format_int(options%n_shards)//' of a run of '//format_int(n)// &
-            ' cases is empty; use at most '//format_int(n)//' shards', stat_usage)
+         call fatal_error(error, 'shard '//str_int(options%shard)//'/'// &
+            str_int(options%n_shards)//' of a run of '//str_int(n)// &
+            ' cases is empty; use at most '//str_int(n)//' shards', stat_usage)
          return
       end if
       outcome%output = shard_output_name(config%output%file, options%shard, options%n_shards)
@@ -200,8 +201,8 @@ contains
       info%date = iso_timestamp()
       info%n_cases = n
       info%shard = ''
-      if (options%n_shards > 1) info%shard = format_int(options%shard)//'/'// &
-         format_int(options%n_shards)
+      if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
+         str_int(options%n_shards)
       info%profiles = [setup%wheel, setup%rail]
       common_geometry = .not. (config%sweep%axes(1)%active .or. config%sweep%axes(2)%active)
       if (common_geometry) then
@@ -275,7 +276,7 @@ contains
       type(failure_type), intent(in) :: failure
       character(len=:), allocatable :: text
       text = failure%message
-      if (outcome%n_cases > 1) text = 'case '//format_int(failure%case)//': '//text
+      if (outcome%n_cases > 1) text = 'case '//str_int(failure%case)//': '//text
    end function failure_text
 
    subroutine add_failure(failures, icase, message)

@@ -13,7 +13,8 @@ module shcontact_io_config
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io
    use shcontact_core_material, only: material_type
-   use shcontact_io_text, only: format_real, format_int, to_lower, quote_string, strip_quotes
+   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_io_text, only: format_real, quote_string, strip_quotes
    use shcontact_io_files, only: directory_part, join_path
    implicit none
    private
@@ -510,13 +511,13 @@ contains
          if (is_iostat_end(stat)) exit
          if (stat /= 0 .and. .not. is_iostat_eor(stat)) then
             call fatal_error(error, 'cannot read the case file "'//filename//'" at line '// &
-               format_int(n + 1), stat_io)
+               str_int(n + 1), stat_io)
             close (unit)
             return
          end if
          if (length >= len(buf)) then
-            call fatal_error(error, filename//':'//format_int(n + 1)//': line longer than '// &
-               format_int(len(buf) - 1)//' characters')
+            call fatal_error(error, filename//':'//str_int(n + 1)//': line longer than '// &
+               str_int(len(buf) - 1)//' characters')
             close (unit)
             return
          end if
@@ -579,7 +580,7 @@ contains
                do ig = 1, nseen
                   if (seen(ig) == group) then
                      call fatal_error(error, line_ref(il)//': group &'//group// &
-                        ' appears twice (first at line '//format_int(seen_line(ig))// &
+                        ' appears twice (first at line '//str_int(seen_line(ig))// &
                         '); put all its variables in one group')
                      return
                   end if
@@ -641,7 +642,7 @@ contains
       end do
       if (inside) then
          call fatal_error(error, filename//': group &'//group//' (line '// &
-            format_int(seen_line(nseen))//') is not closed with /')
+            str_int(seen_line(nseen))//') is not closed with /')
       end if
 
    contains
@@ -649,7 +650,7 @@ contains
       function line_ref(line) result(w)
          integer, intent(in) :: line
          character(len=:), allocatable :: w
-         w = filename//':'//format_int(line)
+         w = filename//':'//str_int(line)
       end function line_ref
 
       !> Store the pending assignment, if any.
@@ -931,16 +932,16 @@ contains
       if (a%n_items > capacity) then
          if (capacity == 1) then
             call fatal_error(error, value_context(a)//': expected one value ('// &
-               type_phrase(variables(iv))//'), found '//format_int(a%n_items))
+               type_phrase(variables(iv))//'), found '//str_int(a%n_items))
          else
-            call fatal_error(error, value_context(a)//': at most '//format_int(capacity)// &
-               ' values allowed, found '//format_int(a%n_items))
+            call fatal_error(error, value_context(a)//': at most '//str_int(capacity)// &
+               ' values allowed, found '//str_int(a%n_items))
          end if
          return
       end if
       if (a%longest_string > string_capacity(variables(iv))) then
          call fatal_error(error, value_context(a)//': longer than '// &
-            format_int(string_capacity(variables(iv)))//' characters')
+            str_int(string_capacity(variables(iv)))//' characters')
          return
       end if
 
@@ -1443,7 +1444,8 @@ contains
          if (allocated(error)) return
          call check_profile_name(c, 'wheel', c%profiles%wheel, 'builtin:S1002', error)
          if (allocated(error)) return
-         call check_profile_name(c, 'rail', c%profiles%rail, 'builtin:UIC60', error)
+         call check_profile_name(c, 'rail', c%profiles%rail, 'builtin:UIC60', error, &
+            also='builtin:UIC60-canted')
          if (allocated(error)) return
          call check_real_var(c, 'profiles', 'wheel_smoothing', c%profiles%wheel_smoothing, error)
          if (allocated(error)) return
@@ -1513,6 +1515,12 @@ contains
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
             error)
          if (allocated(error)) return
+         if (c%tangential%method == 'fastsim' .and. c%normal%method /= 'hertz') then
+            call fatal_error(error, origin(c, 'tangential%method')//": &tangential method = "// &
+               "'fastsim' works on the Hertz ellipse of the reference point: set &normal "// &
+               "method = 'hertz' (now '"//trim(c%normal%method)//"')")
+            return
+         end if
          call check_output(c, error)
          if (allocated(error)) return
          call check_sweep(c, error)
@@ -1634,8 +1642,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       if (i >= lo .and. i <= hi) return
       call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//name// &
-         ' = '//format_int(i)//' is out of range; expected '//format_int(lo)//' <= '//name// &
-         ' <= '//format_int(hi))
+         ' = '//str_int(i)//' is out of range; expected '//str_int(lo)//' <= '//name// &
+         ' <= '//str_int(hi))
    end subroutine check_int_var
 
    !> A choice among a fixed list.
@@ -1651,13 +1659,21 @@ contains
    end subroutine check_choice
 
    !> A built-in name is one we have; anything else is a file name (checked when it is read).
-   subroutine check_profile_name(config, name, value, builtin, error)
+   subroutine check_profile_name(config, name, value, builtin, error, also)
       type(case_config_type), intent(in) :: config
       character(len=*), intent(in) :: name, builtin
       !> The profile name; a built-in name is spelt canonically on return.
       character(len=*), intent(inout) :: value
       type(error_type), allocatable, intent(out) :: error
+      !> Another accepted built-in name.
+      character(len=*), intent(in), optional :: also
       if (to_lower(value) == to_lower(builtin)) value = builtin
+      if (present(also)) then
+         if (to_lower(value) == to_lower(also)) then
+            value = also
+            return
+         end if
+      end if
       if (len_trim(value) == 0) then
          call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
             " is empty; expected '"//builtin//"' or a file name")
@@ -1665,9 +1681,16 @@ contains
                to_lower(value) /= to_lower(builtin)) then
          call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
             " = '"//trim(value)//"': unknown built-in profile; expected '"//builtin// &
-            "' or a file name")
+            "'"//alternative(also)//" or a file name")
       end if
    end subroutine check_profile_name
+
+   pure function alternative(also) result(text)
+      character(len=*), intent(in), optional :: also
+      character(len=:), allocatable :: text
+      text = ''
+      if (present(also)) text = ", '"//also//"'"
+   end function alternative
 
    subroutine check_output(config, error)
       type(case_config_type), intent(inout) :: config
@@ -1728,21 +1751,21 @@ contains
                if (axis%points /= 0) then
                   if (axis%points < 2 .or. axis%points > max_sweep_values) then
                      call fatal_error(error, origin(config, 'sweep%'//name//'_points')// &
-                        ': &sweep '//name//'_points = '//format_int(axis%points)// &
+                        ': &sweep '//name//'_points = '//str_int(axis%points)// &
                         ' is out of range; expected 0 (a list) or 2 to '// &
-                        format_int(max_sweep_values))
+                        str_int(max_sweep_values))
                      return
                   end if
                   if (size(axis%given) /= 2) then
                      call fatal_error(error, where//': &sweep '//name//' has '// &
-                        format_int(size(axis%given))//' values; with '//name// &
+                        str_int(size(axis%given))//' values; with '//name// &
                         '_points > 0 it must hold exactly two: first, last')
                      return
                   end if
                end if
                axis%active = size(axis%given) > 0
                do i = 1, size(axis%given)
-                  call check_real(config, 'sweep', name, name//'('//format_int(i)//')', &
+                  call check_real(config, 'sweep', name, name//'('//str_int(i)//')', &
                      axis%given(i), error)
                   if (allocated(error)) return
                end do
@@ -1759,8 +1782,8 @@ contains
                   n_list = axis%size()
                else if (axis%size() /= n_list) then
                   call fatal_error(error, where//": &sweep mode = 'list' needs lists of equal "// &
-                     'length; '//name//' has '//format_int(axis%size())//' values, an '// &
-                     'earlier list '//format_int(n_list))
+                     'length; '//name//' has '//str_int(axis%size())//' values, an '// &
+                     'earlier list '//str_int(n_list))
                   return
                end if
             end if
@@ -2019,7 +2042,7 @@ contains
             case ('method'); value = quote_string(config%normal%method)
             case ('reduction'); value = quote_string(config%normal%reduction)
             case ('epsilon'); value = format_real(config%normal%epsilon)
-            case ('n_strips'); value = format_int(config%normal%n_strips)
+            case ('n_strips'); value = str_int(config%normal%n_strips)
             case ('b_min'); value = format_real(config%normal%b_min)
             case ('longitudinal_curvature')
                value = quote_string(config%normal%longitudinal_curvature)
@@ -2029,7 +2052,7 @@ contains
             case ('method'); value = quote_string(config%tangential%method)
             case ('bound'); value = quote_string(config%tangential%bound)
             case ('spin_model'); value = quote_string(config%tangential%spin_model)
-            case ('n_elements'); value = format_int(config%tangential%n_elements)
+            case ('n_elements'); value = str_int(config%tangential%n_elements)
             end select
          case ('output')
             select case (name)
@@ -2042,8 +2065,8 @@ contains
                   value = value//quote_string(config%output%fields(n))
                end do
             case ('precision'); value = quote_string(config%output%precision)
-            case ('compression'); value = format_int(config%output%compression)
-            case ('checkpoint_cases'); value = format_int(config%output%checkpoint_cases)
+            case ('compression'); value = str_int(config%output%compression)
+            case ('checkpoint_cases'); value = str_int(config%output%checkpoint_cases)
             end select
          case ('sweep')
             if (name == 'mode') then
@@ -2052,7 +2075,7 @@ contains
                ia = axis_index(name(1:index(name, '_points') - 1))
                if (.not. config%sweep%axes(ia)%active) cycle
                if (config%sweep%axes(ia)%points == 0) cycle
-               value = format_int(config%sweep%axes(ia)%points)
+               value = str_int(config%sweep%axes(ia)%points)
             else
                ia = axis_index(name)
                if (.not. config%sweep%axes(ia)%active) cycle

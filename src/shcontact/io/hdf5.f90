@@ -23,7 +23,7 @@ module shcontact_io_hdf5
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    use shcontact_io_files, only: rename_file, delete_file, process_id
-   use shcontact_io_text, only: format_int
+   use shcontact_core_strings, only: str_int
    implicit none
    private
 
@@ -104,7 +104,7 @@ contains
       call start_library(error)
       if (allocated(error)) return
       file%name = name
-      file%temp_name = name//'.tmp'//format_int(process_id())
+      file%temp_name = name//'.tmp'//str_int(process_id())
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
       call h5fcreate_f(file%temp_name, H5F_ACC_TRUNC_F, file%id, stat)
@@ -697,8 +697,8 @@ contains
       if (ndims == rank) then
          if (rank > 0) call h5sget_simple_extent_dims_f(space, dims, maxdims, s)
       else
-         call fail(error, file, path, 'expected rank '//format_int(rank)//', found '// &
-            format_int(ndims))
+         call fail(error, file, path, 'expected rank '//str_int(rank)//', found '// &
+            str_int(ndims))
       end if
       call h5sclose_f(space, s)
       if (allocated(error)) call h5dclose_f(dset, s)

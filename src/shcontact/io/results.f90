@@ -31,7 +31,8 @@ module shcontact_io_results
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute
-   use shcontact_io_text, only: format_int, string_type
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: string_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run
    implicit none
@@ -78,8 +79,8 @@ contains
       character(len=:), allocatable :: name
       character(len=16) :: fmt
       character(len=24) :: buf
-      write (fmt, '(a,i0,a,i0,a)') '(i', max(6, len(format_int(n_cases))), '.', &
-         max(6, len(format_int(n_cases))), ')'
+      write (fmt, '(a,i0,a,i0,a)') '(i', max(6, len(str_int(n_cases))), '.', &
+         max(6, len(str_int(n_cases))), ')'
       write (buf, fmt) icase
       name = 'cases/'//trim(buf)
    end function case_group_name
@@ -144,7 +145,7 @@ contains
       end if
       if (allocated(info%geometry)) then
          do k = 1, size(info%geometry)
-            call write_geometry(file, 'geometry/patch_'//format_int(k), info%geometry(k), error)
+            call write_geometry(file, 'geometry/patch_'//str_int(k), info%geometry(k), error)
             if (allocated(error)) return
          end do
       end if
@@ -346,7 +347,7 @@ contains
          config%wants_field('state') .or. config%wants_field('slip')
       if (.not. any_field .or. result%summary%stat /= 0) return
       do k = 1, result%summary%n_patches
-         patch = group//'/patch_'//format_int(k)
+         patch = group//'/patch_'//str_int(k)
          if (config%wants_field('geometry') .and. geometry_varies(config) .and. &
              allocated(result%geometry)) then
             call write_geometry(file, patch//'/geometry', result%geometry(k), error)
@@ -451,9 +452,9 @@ contains
       if (config%wants_field('state') .and. allocated(t%state)) then
          call h5_write(file, path//'/state', t%state, '1', error, compress=.true.)
          if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'codes', &
-            format_int(int(state_exterior))//' exterior, '// &
-            format_int(int(state_adhesion))//' adhesion, '// &
-            format_int(int(state_slip))//' slip', error)
+            str_int(int(state_exterior))//' exterior, '// &
+            str_int(int(state_adhesion))//' adhesion, '// &
+            str_int(int(state_slip))//' slip', error)
          if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'exterior', &
             int(state_exterior), error)
          if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'adhesion', &
@@ -594,11 +595,11 @@ contains
             icase = indices(i)
             if (icase < 1 .or. icase > n_cases) then
                call fatal_error(error, 'merge: "'//inputs(f)%text//'" holds case '// &
-                  format_int(icase)//' of a run of '//format_int(n_cases), stat_invalid_input)
+                  str_int(icase)//' of a run of '//str_int(n_cases), stat_invalid_input)
                return
             end if
             if (source(icase) /= 0) then
-               call fatal_error(error, 'merge: case '//format_int(icase)//' is in both "'// &
+               call fatal_error(error, 'merge: case '//str_int(icase)//' is in both "'// &
                   inputs(source(icase))%text//'" and "'//inputs(f)%text//'"', &
                   stat_invalid_input)
                return
@@ -614,9 +615,9 @@ contains
       end do
       if (.not. partial .and. any(source == 0)) then
          icase = findloc(source, 0, dim=1)
-         call fatal_error(error, 'merge: '//format_int(count(source == 0))//' of '// &
-            format_int(n_first)//' cases are missing (the first is case '// &
-            format_int(icase)//'); give every shard', stat_invalid_input)
+         call fatal_error(error, 'merge: '//str_int(count(source == 0))//' of '// &
+            str_int(n_first)//' cases are missing (the first is case '// &
+            str_int(icase)//'); give every shard', stat_invalid_input)
          return
       end if
 

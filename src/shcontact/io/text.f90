@@ -3,10 +3,11 @@
 module shcontact_io_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
    implicit none
    private
 
-   public :: format_real, format_int, to_lower, quote_string, json_string, strip_quotes
+   public :: format_real, quote_string, json_string, strip_quotes
    public :: string_type, string_list_type
 
    !> A text of any length (for lists of texts of different lengths).
@@ -52,8 +53,7 @@ contains
       character(len=:), allocatable :: text
       character(len=40) :: buf, fmt
       character(len=20) :: digits
-      real(wp) :: back
-      integer :: d, ios, epos, expo, nd, first
+      integer :: d, epos, expo, nd, lo, hi
 
       if (ieee_is_nan(x)) then
          text = 'NaN'
@@ -65,16 +65,31 @@ contains
          text = '0.0'
          return
       end if
-      ! Fewest significant digits that survive a write/read cycle (at most 17 for IEEE double).
-      ! Near the overflow threshold a rounded-up short form would overflow when read back.
-      first = 1
-      if (abs(x) > 1.0e307_wp) first = 17
-      do d = first, 17
-         write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
-         write (buf, fmt) x
-         read (buf, *, iostat=ios) back
-         if (ios == 0 .and. back == x) exit
-      end do
+      ! The fewest significant digits that round-trip: the property is monotone in the number
+      ! of digits, so test 15 (enough for most short inputs) and bisect below it, or go up to
+      ! 16 and 17 (always enough for IEEE double). Near the overflow threshold a rounded-up
+      ! short form would overflow when read back: use 17 digits there.
+      if (abs(x) > 1.0e307_wp) then
+         d = 17
+      else if (round_trips(x, 15)) then
+         lo = 0
+         hi = 15
+         do while (hi - lo > 1)
+            d = (lo + hi)/2
+            if (round_trips(x, d)) then
+               hi = d
+            else
+               lo = d
+            end if
+         end do
+         d = hi
+      else if (round_trips(x, 16)) then
+         d = 16
+      else
+         d = 17
+      end if
+      write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
+      write (buf, fmt) x
       buf = adjustl(buf)
       epos = index(buf, 'E')
       read (buf(epos + 1:), *) expo
@@ -101,9 +116,22 @@ contains
          else
             text = text//'0'
          end if
-         text = text//'e'//format_int(expo)
+         text = text//'e'//str_int(expo)
       end if
    end function format_real
+
+   !> True when x written with d significant digits reads back exactly.
+   pure logical function round_trips(x, d)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: d
+      character(len=40) :: buf, fmt
+      real(wp) :: back
+      integer :: ios
+      write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
+      write (buf, fmt) x
+      read (buf, *, iostat=ios) back
+      round_trips = ios == 0 .and. back == x
+   end function round_trips
 
    !> Digits d₁d₂… with the decimal point after the (expo+1)-th digit, zero-padded.
    pure function plain(digits, expo) result(text)
@@ -120,29 +148,6 @@ contains
          text = digits(1:expo + 1)//'.'//digits(expo + 2:nd)
       end if
    end function plain
-
-   !> An integer as text without blanks.
-   pure function format_int(i) result(text)
-      !> The number.
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function format_int
-
-   !> ASCII lower case.
-   pure function to_lower(s) result(t)
-      !> The text.
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i, c
-      t = s
-      do i = 1, len(s)
-         c = iachar(s(i:i))
-         if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-      end do
-   end function to_lower
 
    !> A Fortran string literal in apostrophes (embedded apostrophes doubled), for namelists.
    pure function quote_string(s) result(q)
