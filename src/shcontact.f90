@@ -1,23 +1,72 @@
 !> shcontact: wheel–rail rolling contact with the semi-Hertzian strip method and FASTSIM_SH.
 !>
-!> This facade re-exports the public API; users `use shcontact` and need nothing else.
+!> This facade re-exports the public API; users `use shcontact` and need nothing else. The data
+!> flows one way: profiles → geometry → normal → tangential.
 module shcontact
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
       stat_numerical, stat_no_contact, stat_usage
    use shcontact_version_info, only: shcontact_version
-   use shcontact_core_material, only: material_type
-   use shcontact_profile_points, only: profile_type
-   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_core_material, only: material_type, check_material
+   ! profiles
+   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
+   use shcontact_profile_reader, only: read_profile, profile_format_names
+   use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_builtin, only: builtin_profile, builtin_profile_names
+   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
+   use shcontact_profile_spline, only: profile_spline_type
+   ! geometry
+   use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left, &
+      check_track, check_position
+   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
+      check_contact_options, prepare_profiles, find_contact_patches, positioned_profiles, &
+      write_geometry_table
+   use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
+   ! normal
+   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
+      hertz_from_approach, hertz_from_semiaxes
+   use shcontact_normal_options, only: normal_options_type, new_normal_options, &
+      check_normal_options, normal_method_name => method_name, reduction_name
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
+      solve_approach, solve_load, solve_vertical_load
+   use shcontact_normal_pressure, only: element_pressure
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_tangential_patch, only: tangential_patch_type
+   ! tangential
+   use shcontact_tangential_creepage, only: creepage_type, check_creepage
+   use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
+      parse_method, parse_bound, parse_spin_model, tangential_method_name => method_name, &
+      bound_name, spin_model_name
+   use shcontact_tangential_kalker, only: kalker_coefficients
+   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_fastsim, only: prepare_fastsim, solve_fastsim
+   use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh, solve_fastsim_sh
+   use shcontact_tangential_solver, only: track_forces_type, solve_tangential, &
+      solve_tangential_patches
+   use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
+      state_slip
    implicit none
    private
 
    public :: wp, error_type, fatal_error
    public :: stat_invalid_input, stat_io, stat_numerical, stat_no_contact, stat_usage
    public :: shcontact_version
-   public :: material_type, profile_type, patch_geometry_type, normal_patch_type
-   public :: tangential_patch_type
+   public :: material_type, check_material
+   public :: profile_type, profile_kind_rail, profile_kind_wheel, read_profile, &
+      profile_format_names, clean_profile, builtin_profile, builtin_profile_names, &
+      write_profile_plain, write_builtin_profiles, profile_spline_type
+   public :: track_type, wheelset_position_type, side_right, side_left, check_track, &
+      check_position, contact_options_type, prepared_profiles_type, check_contact_options, &
+      prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
+      patch_geometry_type, geometry_sample_type
+   public :: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, hertz_from_approach, &
+      hertz_from_semiaxes, normal_options_type, new_normal_options, check_normal_options, &
+      normal_method_name, reduction_name, normal_contact_type, prepare_normal_contact, &
+      solve_approach, solve_load, solve_vertical_load, element_pressure, normal_patch_type
+   public :: creepage_type, check_creepage, tangential_options_type, check_tangential_options, &
+      parse_method, parse_bound, parse_spin_model, tangential_method_name, bound_name, &
+      spin_model_name, kalker_coefficients, march_workspace_type, prepare_fastsim, &
+      solve_fastsim, prepare_fastsim_sh, solve_fastsim_sh, track_forces_type, &
+      solve_tangential, solve_tangential_patches, tangential_patch_type, state_exterior, &
+      state_adhesion, state_slip
 
 end module shcontact

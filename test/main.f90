@@ -21,6 +21,11 @@ program tester
    use test_profile_reader, only: collect_profile_reader
    use test_profile_cleanup, only: collect_profile_cleanup
    use test_profile_builtin, only: collect_profile_builtin
+   use test_spline, only: collect_spline
+   use test_geometry, only: collect_geometry
+   use test_kalker, only: collect_kalker
+   use test_fastsim, only: collect_fastsim
+   use test_fastsim_sh, only: collect_fastsim_sh
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
    use test_app, only: collect_app
@@ -43,6 +48,11 @@ program tester
       new_testsuite('profile_reader', collect_profile_reader), &
       new_testsuite('profile_cleanup', collect_profile_cleanup), &
       new_testsuite('profile_builtin', collect_profile_builtin), &
+      new_testsuite('spline', collect_spline), &
+      new_testsuite('geometry', collect_geometry), &
+      new_testsuite('kalker', collect_kalker), &
+      new_testsuite('fastsim', collect_fastsim), &
+      new_testsuite('fastsim_sh', collect_fastsim_sh), &
       new_testsuite('config', collect_config), &
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app) &

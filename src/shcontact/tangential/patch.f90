@@ -29,6 +29,13 @@ module shcontact_tangential_patch
       real(wp) :: coulomb_ratio = 0.0_wp
       !> Adhesion area / contact area.
       real(wp) :: adhesion_fraction = 0.0_wp
+      !> Parabolic-bound load ratio (32/(9π)) Σ k_i N_i / F_n (physics.md §6.4): the full-slip
+      !> force of the pure parabolic bound over μF_n (1 on a Hertz ellipse).
+      real(wp) :: parabolic_load_ratio = 0.0_wp
+      !> Forces on the wheel in the track frame (x rolling, y lateral towards the field side,
+      !> z down, CONTACT's track frame), from F_y and F_n rotated by the reference contact angle
+      !> γ₀ (N): fy_track = F_y cos γ₀ + F_n sin γ₀, fz_track = F_y sin γ₀ − F_n cos γ₀.
+      real(wp) :: fy_track = 0.0_wp, fz_track = 0.0_wp
       !> Element centres (mm): x(j, i) and the strip centres y(i).
       real(wp), allocatable :: x(:, :)
       real(wp), allocatable :: y(:)

@@ -1,0 +1,763 @@
+!> Wheel on rail: the contact search and the strip geometry of every candidate patch
+!> (physics.md §4.1, §4.6, §5.3–5.4).
+!>
+!> Two steps, so that a scan over many wheel positions smooths the profiles only once:
+!>
+!> 1. [[prepare_profiles]]: fit the smoothing splines (§5.5), place the rail (§5.2), find the
+!>    tape-circle height of the wheel profile and sample both profiles densely.
+!> 2. [[find_contact_patches]] for one wheelset position:
+!>    * place the wheel (lateral shift, roll), sample the vertical gap to the rail, lower the wheel
+!>      onto the rail and take every separate local minimum of the gap as a candidate patch
+!>      (minima behind a maximum lower than `merge_gap` belong to their deeper neighbour);
+!>    * refine each candidate to the point pair with a common normal (the minimum of the distance
+!>      measured along the rail normal), and adjust the wheel height until the smallest of these
+!>      gaps is zero; candidates whose gap exceeds `max_gap` are dropped;
+!>    * per patch, turn both profiles by −γ₀ about the reference point and tabulate on a uniform
+!>      grid y_i = i·h the gap along the reference normal and the curvatures A(y), B(y), the local
+!>      contact angle γ(y) and rolling radius r_w(y), over the whole basin of the minimum.
+!>
+!> Conventions (binding, see doc/geometry.md):
+!> * Every quantity of a patch is given in its side frame (y towards the field side, z down), the
+!>   track frame for the right wheel and its mirror image for the left one, except `y_track`,
+!>   which is the true track coordinate (negative on the left).
+!> * Contact angle γ = atan(dz_rail/dy) in that frame (CONTACT's sign for the right wheel): the
+!>   Manchester right wheel at y_ws = 0 has γ₀ = −0.0290 rad. CONTACT reports the left wheel's
+!>   angle in the unmirrored track frame, i.e. −γ₀.
+!> * Local contact angle γ(y): the angle of the wheel surface on the strip, so that γ and
+!>   δr = r_w − r₀ come from the same wheel spline (§6.1) and dr_w/dy = sin γ along the tangent
+!>   plane (dr_w/dy_track = tan γ).
+!> * Rolling radius r_w = r_nom + z_w(y_w) − z_w(0) in wheel profile coordinates (z down, y_w = 0
+!>   on the tape circle).
+!> * A(y) = cos γ(y)/(2 r_w(y)) (option: cos γ₀, the fixed reference normal); B(y) = ½ g''(y),
+!>   analytic from the splines, clamped to ≥ b_min.
+module shcontact_geometry_contact
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
+      stat_io, stat_numerical, stat_no_contact
+   use shcontact_profile_points, only: profile_type
+   use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
+      source_name => profile_label
+   use shcontact_geometry_rigid, only: rigid_map_type, translation, to_frame
+   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta
+   use shcontact_geometry_search, only: polyline_envelope, gap_minima
+   use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
+      check_position, rail_placement, wheel_placement, str => real_text
+   use shcontact_geometry_patch, only: patch_geometry_type
+   implicit none
+   private
+
+   public :: contact_options_type, prepared_profiles_type, check_contact_options
+   public :: prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table
+
+   !> Options of the contact search and the strip tables.
+   type :: contact_options_type
+      !> Smoothing length of the wheel and the rail profile (mm, physics.md §5.5); 0
+      !> interpolates (analytic profiles), 1–3 mm suits measured ones.
+      real(wp) :: l_filt_wheel = 0.0_wp
+      real(wp) :: l_filt_rail = 0.0_wp
+      !> Spacing h of the strip tables (mm).
+      real(wp) :: table_step = 0.025_wp
+      !> The tables stop where the gap exceeds this (mm), or earlier at a maximum of the gap.
+      real(wp) :: table_gap = 2.0_wp
+      !> Smallest lateral relative curvature B (1/mm); concave gap curvature is clamped to it.
+      real(wp) :: b_min = 1.0e-4_wp
+      !> Candidates whose gap exceeds the smallest one by more than this are ignored (mm).
+      real(wp) :: max_gap = 1.0_wp
+      !> Two minima separated by a maximum less than this above the shallower one are one
+      !> patch (mm).
+      real(wp) :: merge_gap = 0.005_wp
+      !> Spacing of the dense sampling used to find the candidates (mm).
+      real(wp) :: sample_step = 0.05_wp
+      !> A(y) with the fixed reference normal, cos γ₀/(2 r_w(y)), instead of the local cos γ(y).
+      logical :: a_reference_normal = .false.
+   end type contact_options_type
+
+   !> Profiles ready for the contact search at any wheelset position.
+   type :: prepared_profiles_type
+      !> Track and wheelset dimensions.
+      type(track_type) :: track
+      !> Options.
+      type(contact_options_type) :: options
+      !> Smoothed profiles, in their own coordinates.
+      type(profile_spline_type) :: wheel, rail
+      !> Rail profile coordinates → side frame.
+      type(rigid_map_type) :: rail_map
+      !> Wheel profile z at y = 0, the tape circle (mm).
+      real(wp) :: z_tape = 0.0_wp
+      !> Dense samples of the wheel, profile coordinates (mm).
+      real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
+      !> Dense samples of the rail, side frame (mm).
+      real(wp), allocatable :: rail_s(:), rail_y(:), rail_z(:)
+   end type prepared_profiles_type
+
+   !> Find the contact patches: from prepared profiles, or from raw profiles in one go.
+   interface find_contact_patches
+      module procedure find_patches_prepared
+      module procedure find_patches_raw
+   end interface find_contact_patches
+
+   !> A rail point, the wheel point on its normal, and the distance between them.
+   type :: normal_pair_type
+      !> Arc lengths and spline intervals on the rail and the wheel.
+      real(wp) :: s_r = 0.0_wp, s_w = 0.0_wp
+      integer :: k_r = 1, k_w = 1
+      !> Rail point in the side frame (mm) and the angle of the rail tangent there (rad).
+      real(wp) :: y = 0.0_wp, z = 0.0_wp, theta = 0.0_wp
+      !> Distance from the rail to the wheel along the rail normal (mm; < 0: interpenetration).
+      real(wp) :: gap = 0.0_wp
+      !> d(gap)/ds_r and its approximate derivative.
+      real(wp) :: dgap = 0.0_wp, d2gap = 0.0_wp
+   end type normal_pair_type
+
+   !> Largest number of candidates followed at one position.
+   integer, parameter :: max_candidates = 16
+   !> Convergence of the common-normal search (mm).
+   real(wp), parameter :: s_tol = 1.0e-10_wp
+   !> Height adjustment stops when the smallest gap is below this (mm).
+   real(wp), parameter :: gap_tol = 1.0e-10_wp
+   !> A profile is followed in a frame while |dη/ds| exceeds this (steeper: it turns back).
+   real(wp), parameter :: min_deta = 0.05_wp
+   !> Rows of the work tables: g − gap0, g'', γ, r_w, rail arc length.
+   integer, parameter :: row_count = 5
+
+contains
+
+   !> Reject options out of their meaningful range.
+   pure subroutine check_contact_options(options, error)
+      !> The options.
+      type(contact_options_type), intent(in) :: options
+      !> Set on an invalid value, naming it.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. (options%l_filt_wheel >= 0.0_wp .and. options%l_filt_rail >= 0.0_wp)) then
+         call fatal_error(error, 'l_filt_wheel = '//str(options%l_filt_wheel)// &
+            ', l_filt_rail = '//str(options%l_filt_rail)//' mm: expected lengths >= 0')
+      else if (.not. (options%table_step >= 1.0e-4_wp .and. options%table_step <= 1.0_wp)) then
+         call fatal_error(error, 'table_step = '//str(options%table_step)// &
+            ' mm: expected 1e-4 to 1 mm (0.02-0.05 recommended)')
+      else if (.not. (options%sample_step >= 1.0e-3_wp .and. options%sample_step <= 1.0_wp)) then
+         call fatal_error(error, 'sample_step = '//str(options%sample_step)// &
+            ' mm: expected 1e-3 to 1 mm')
+      else if (.not. (options%table_gap > 0.0_wp .and. options%table_gap <= 100.0_wp)) then
+         call fatal_error(error, 'table_gap = '//str(options%table_gap)// &
+            ' mm: expected a positive gap of a few mm')
+      else if (.not. (options%b_min > 0.0_wp .and. options%b_min < 1.0_wp)) then
+         call fatal_error(error, 'b_min = '//str(options%b_min)// &
+            ' 1/mm: expected a small positive curvature (1e-4)')
+      else if (.not. (options%max_gap >= 0.0_wp .and. options%max_gap <= 100.0_wp)) then
+         call fatal_error(error, 'max_gap = '//str(options%max_gap)//' mm: expected 0 to 100 mm')
+      else if (.not. (options%merge_gap >= 0.0_wp .and. options%merge_gap <= 1.0_wp)) then
+         call fatal_error(error, 'merge_gap = '//str(options%merge_gap)// &
+            ' mm: expected 0 to 1 mm')
+      end if
+   end subroutine check_contact_options
+
+   !> Smooth the profiles, place the rail and sample both profiles, once for all wheel
+   !> positions.
+   subroutine prepare_profiles(wheel, rail, track, options, prepared, error)
+      !> Wheel and rail profiles (right-side canonical form, physics.md §5.1).
+      type(profile_type), intent(in) :: wheel, rail
+      !> Track and wheelset dimensions.
+      type(track_type), intent(in) :: track
+      !> Options.
+      type(contact_options_type), intent(in) :: options
+      !> The result.
+      type(prepared_profiles_type), intent(out) :: prepared
+      !> Set on invalid input.
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: s0
+      logical :: found
+      type(spline_point_type) :: p
+      real(wp), allocatable :: u(:), v(:)
+
+      call check_track(track, error)
+      if (allocated(error)) return
+      call check_contact_options(options, error)
+      if (allocated(error)) return
+      prepared%track = track
+      prepared%options = options
+      call prepared%wheel%fit(wheel, options%l_filt_wheel, error)
+      if (allocated(error)) return
+      call prepared%rail%fit(rail, options%l_filt_rail, error)
+      if (allocated(error)) return
+      call rail_placement(track, prepared%rail, prepared%rail_map, error)
+      if (allocated(error)) then
+         call prefix_error(error, source_name(rail))
+         return
+      end if
+      call prepared%wheel%locate_y(0.0_wp, s0, found)
+      if (.not. found) then
+         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross y = 0; '// &
+            'expected its origin on the tape circle (S1002: flange back at y = -70 mm)', &
+            stat_invalid_input)
+         return
+      end if
+      p = prepared%wheel%eval(s0)
+      prepared%z_tape = p%z
+      call sample_spline(prepared%wheel, options%sample_step, prepared%wheel_s, &
+         prepared%wheel_y, prepared%wheel_z)
+      call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
+      allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
+      call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)
+   end subroutine prepare_profiles
+
+   !> Find the contact patches for one wheel position, from raw profiles (smoothing included).
+   subroutine find_patches_raw(wheel, rail, track, position, options, patches, error)
+      !> Wheel and rail profiles (right-side canonical form).
+      type(profile_type), intent(in) :: wheel, rail
+      !> Track and wheelset dimensions.
+      type(track_type), intent(in) :: track
+      !> Wheelset position and side.
+      type(wheelset_position_type), intent(in) :: position
+      !> Options.
+      type(contact_options_type), intent(in) :: options
+      !> The patches, deepest first (gap0 = 0 for the first).
+      type(patch_geometry_type), allocatable, intent(out) :: patches(:)
+      !> Set on invalid input or when the profiles do not touch.
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: prepared
+
+      call prepare_profiles(wheel, rail, track, options, prepared, error)
+      if (allocated(error)) return
+      call find_patches_prepared(prepared, position, patches, error)
+   end subroutine find_patches_raw
+
+   !> Find the contact patches for one wheel position: candidates, wheel height, reference
+   !> points and strip tables (see the module header).
+   subroutine find_patches_prepared(prepared, position, patches, error)
+      !> Profiles from [[prepare_profiles]].
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Wheelset position and side.
+      type(wheelset_position_type), intent(in) :: position
+      !> The patches, deepest first (gap0 = 0 for the first).
+      type(patch_geometry_type), allocatable, intent(out) :: patches(:)
+      !> Set on invalid input, when the profiles do not touch, or when no candidate converges.
+      type(error_type), allocatable, intent(out) :: error
+      type(rigid_map_type) :: wheel_map
+      type(normal_pair_type) :: pairs(max_candidates)
+      type(patch_geometry_type) :: found(max_candidates)
+      real(wp) :: covered(2, max_candidates)
+      logical :: keep(max_candidates)
+      integer :: n_pairs, i, j, n_kept
+
+      call place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+      if (allocated(error)) return
+      ! Deepest first; a candidate inside an earlier patch's basin (reached through a negligible
+      ! maximum) belongs to that patch.
+      keep = .false.
+      do i = 1, n_pairs
+         keep(i) = .true.
+         do j = 1, i - 1
+            if (.not. keep(j)) cycle
+            if (pairs(i)%s_r >= covered(1, j) .and. pairs(i)%s_r <= covered(2, j)) then
+               keep(i) = .false.
+               exit
+            end if
+         end do
+         if (.not. keep(i)) cycle
+         call build_table(prepared, wheel_map, position%side, pairs(i), found(i), &
+            covered(:, i), error)
+         if (allocated(error)) return
+      end do
+      n_kept = count(keep(1:n_pairs))
+      allocate (patches(n_kept))
+      n_kept = 0
+      do i = 1, n_pairs
+         if (.not. keep(i)) cycle
+         n_kept = n_kept + 1
+         patches(n_kept) = found(i)
+      end do
+   end subroutine find_patches_prepared
+
+   !> The positioned profiles in true track coordinates (the left side mirrored back), with the
+   !> wheel lowered onto the rail, sampled as polylines for plotting.
+   subroutine positioned_profiles(prepared, position, rail_y, rail_z, wheel_y, wheel_z, error)
+      !> Profiles from [[prepare_profiles]].
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Wheelset position and side.
+      type(wheelset_position_type), intent(in) :: position
+      !> Rail and wheel polylines, track coordinates (mm, z down).
+      real(wp), allocatable, intent(out) :: rail_y(:), rail_z(:), wheel_y(:), wheel_z(:)
+      !> Set when the wheel cannot be placed on the rail.
+      type(error_type), allocatable, intent(out) :: error
+      type(rigid_map_type) :: wheel_map
+      type(normal_pair_type) :: pairs(max_candidates)
+      integer :: n_pairs
+
+      call place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+      if (allocated(error)) return
+      rail_y = position%side*prepared%rail_y
+      rail_z = prepared%rail_z
+      allocate (wheel_y(size(prepared%wheel_y)), wheel_z(size(prepared%wheel_z)))
+      call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wheel_y, wheel_z)
+      wheel_y = position%side*wheel_y
+   end subroutine positioned_profiles
+
+   !> Place the wheel for a position: the lateral map, the vertical shift that makes the smallest
+   !> gap zero, and the refined candidates (deepest first, gaps ≤ max_gap).
+   subroutine place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(wheelset_position_type), intent(in) :: position
+      type(rigid_map_type), intent(out) :: wheel_map
+      type(normal_pair_type), intent(out) :: pairs(:)
+      integer, intent(out) :: n_pairs
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: shift, gmin
+      integer :: it, i, imin
+
+      call check_position(position, error)
+      if (allocated(error)) return
+      if (.not. allocated(prepared%rail_s)) then
+         call fatal_error(error, 'contact search: the profiles were not prepared '// &
+            '(call prepare_profiles first)', stat_invalid_input)
+         return
+      end if
+      wheel_map = wheel_placement(prepared%track, position)
+      call sampled_candidates(prepared, wheel_map, pairs, n_pairs, shift, error)
+      if (allocated(error)) return
+      wheel_map = wheel_map%then(translation(0.0_wp, shift))
+
+      ! Refine, then move the wheel vertically until the smallest normal gap is zero: a shift
+      ! Δz reduces the gap of a patch with angle γ by Δz·cos γ.
+      do it = 1, 30
+         call refine_all(prepared, wheel_map, pairs, n_pairs)
+         if (n_pairs == 0) then
+            call fatal_error(error, 'contact search: no candidate contact point converged '// &
+               '(no common normal between the wheel and the rail profile); '// &
+               'check the profiles and the wheel position', stat_numerical)
+            return
+         end if
+         imin = minloc(pairs(1:n_pairs)%gap, 1)
+         gmin = pairs(imin)%gap
+         if (abs(gmin) <= gap_tol) exit
+         wheel_map = wheel_map%then(translation(0.0_wp, gmin/cos(pairs(imin)%theta)))
+      end do
+      if (abs(gmin) > 1.0e3_wp*gap_tol) then
+         call fatal_error(error, 'contact search: the wheel height did not converge (smallest '// &
+            'gap '//str(gmin)//' mm)', stat_numerical)
+         return
+      end if
+      call select_candidates(prepared%options, pairs, n_pairs)
+      do i = 1, n_pairs
+         pairs(i)%gap = max(pairs(i)%gap - gmin, 0.0_wp)
+      end do
+   end subroutine place_wheel
+
+   !> Sample the vertical gap between the rail and the wheel (before any vertical shift), find
+   !> its separate minima and turn them into starting points of the refinement. `shift` is the
+   !> vertical move (down) that makes the sampled gap's minimum zero.
+   pure subroutine sampled_candidates(prepared, wheel_map, pairs, n_pairs, shift, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(out) :: pairs(:)
+      integer, intent(out) :: n_pairs
+      real(wp), intent(out) :: shift
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: wy(:), wz(:), rz(:), rs(:), wzl(:), ws(:), gap(:)
+      logical, allocatable :: rc(:), wc(:)
+      integer, allocatable :: minima(:)
+      integer :: count, m, j, i
+      real(wp) :: h, y0, y1, slope
+      logical :: interior
+
+      n_pairs = 0
+      shift = 0.0_wp
+      h = prepared%options%sample_step
+      allocate (wy(size(prepared%wheel_y)), wz(size(prepared%wheel_z)))
+      call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wy, wz)
+      y0 = max(minval(prepared%rail_y), minval(wy))
+      y1 = min(maxval(prepared%rail_y), maxval(wy))
+      if (y1 - y0 < 4.0_wp*h) then
+         call fatal_error(error, 'contact search: the wheel (y = '//str(minval(wy))//' to '// &
+            str(maxval(wy))//' mm) and the rail (y = '//str(minval(prepared%rail_y))//' to '// &
+            str(maxval(prepared%rail_y))//' mm, side frame) do not overlap laterally; '// &
+            'check the lateral shift and the track dimensions', stat_no_contact)
+         return
+      end if
+      m = int((y1 - y0)/h) + 1
+      allocate (rz(m), rs(m), wzl(m), ws(m), gap(m), rc(m), wc(m), minima(m))
+      call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
+         .false., rz, rs, rc)
+      call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
+      rc = rc .and. wc
+      gap = 0.0_wp
+      where (rc) gap = rz - wzl
+      call gap_minima(gap, rc, prepared%options%merge_gap, minima, count, interior)
+      if (.not. interior) then
+         j = minloc(gap, 1, mask=rc)
+         call fatal_error(error, 'contact search: the wheel touches the rail at the end of a '// &
+            'profile (y = '//str(y0 + (j - 1)*h)//' mm, side frame), not on a running surface; '// &
+            'the profiles do not overlap enough at this wheel position', stat_no_contact)
+         return
+      end if
+      shift = gap(minima(1))
+      do i = 1, count
+         if (n_pairs == size(pairs)) exit
+         j = minima(i)
+         ! Keep what may lie within max_gap along its own normal (gap·cos γ, with a margin).
+         slope = (rz(j + 1) - rz(j - 1))/(2.0_wp*h)
+         if ((gap(j) - shift)/sqrt(1.0_wp + slope**2) > 1.5_wp*prepared%options%max_gap &
+            + 10.0_wp*h) cycle
+         n_pairs = n_pairs + 1
+         pairs(n_pairs)%s_r = rs(j)
+         pairs(n_pairs)%s_w = ws(j)
+         pairs(n_pairs)%k_r = prepared%rail%interval(rs(j))
+         pairs(n_pairs)%k_w = prepared%wheel%interval(ws(j))
+      end do
+   end subroutine sampled_candidates
+
+   !> Refine every candidate; drop those that fail, and duplicates (same rail point).
+   pure subroutine refine_all(prepared, wheel_map, pairs, n_pairs)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(inout) :: pairs(:)
+      integer, intent(inout) :: n_pairs
+      logical :: ok(n_pairs)
+      integer :: i, j, n
+
+      do i = 1, n_pairs
+         call refine_pair(prepared, wheel_map, pairs(i), ok(i))
+         do j = 1, i - 1
+            if (ok(i) .and. ok(j)) then
+               if (abs(pairs(i)%s_r - pairs(j)%s_r) < 1.0e-3_wp) ok(i) = .false.
+            end if
+         end do
+      end do
+      n = 0
+      do i = 1, n_pairs
+         if (.not. ok(i)) cycle
+         n = n + 1
+         pairs(n) = pairs(i)
+      end do
+      n_pairs = n
+   end subroutine refine_all
+
+   !> Keep the candidates within max_gap of the deepest, deepest first.
+   pure subroutine select_candidates(options, pairs, n_pairs)
+      type(contact_options_type), intent(in) :: options
+      type(normal_pair_type), intent(inout) :: pairs(:)
+      integer, intent(inout) :: n_pairs
+      type(normal_pair_type) :: tmp
+      real(wp) :: gmin
+      integer :: i, j, n
+
+      gmin = minval(pairs(1:n_pairs)%gap)
+      n = 0
+      do i = 1, n_pairs
+         if (pairs(i)%gap - gmin > options%max_gap) cycle
+         n = n + 1
+         pairs(n) = pairs(i)
+      end do
+      n_pairs = n
+      do i = 2, n_pairs
+         tmp = pairs(i)
+         j = i - 1
+         do while (j >= 1)
+            if (pairs(j)%gap <= tmp%gap) exit
+            pairs(j + 1) = pairs(j)
+            j = j - 1
+         end do
+         pairs(j + 1) = tmp
+      end do
+   end subroutine select_candidates
+
+   !> The distance from the rail point at s_r to the wheel along the rail normal, and its
+   !> derivative d(gap)/ds_r = −(1 + κ_r·gap)·ζ_w' (ζ_w' the wheel's slope in the frame of the
+   !> rail tangent): zero where the two profiles have a common normal.
+   pure subroutine normal_pair(prepared, wheel_map, pair, ok)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(inout) :: pair
+      logical, intent(out) :: ok
+      type(spline_point_type) :: q
+      type(rigid_map_type) :: frame, wmap
+      type(frame_point_type) :: w
+      real(wp) :: ty, tz, kappa
+      integer :: dir
+
+      pair%k_r = prepared%rail%interval(pair%s_r, pair%k_r)
+      q = prepared%rail%eval(pair%s_r, pair%k_r)
+      call prepared%rail_map%point(q%y, q%z, pair%y, pair%z)
+      call prepared%rail_map%vector(q%dy, q%dz, ty, tz)
+      pair%theta = atan2(tz, ty)
+      kappa = (q%dy*q%d2z - q%dz*q%d2y)/hypot(q%dy, q%dz)**3
+      frame = to_frame(pair%theta, pair%y, pair%z)
+      wmap = wheel_map%then(frame)
+      w = frame_point(prepared%wheel, wmap, pair%s_w, 1, pair%k_w)
+      dir = merge(1, -1, w%deta >= 0.0_wp)
+      call locate_eta(prepared%wheel, wmap, 0.0_wp, dir, pair%s_w, pair%k_w, ok)
+      if (.not. ok) return
+      w = frame_point(prepared%wheel, wmap, pair%s_w, dir, pair%k_w)
+      ok = w%deta > min_deta
+      if (.not. ok) return
+      pair%gap = -w%zeta
+      pair%dgap = -(1.0_wp + kappa*pair%gap)*w%slope
+      ! The rail's graph curvature in its own tangent frame is κ_r.
+      pair%d2gap = kappa - w%curv
+   end subroutine normal_pair
+
+   !> The common-normal point near a start: a zero of d(gap)/ds_r where the gap has a minimum,
+   !> bracketed by stepping downhill, then safeguarded Newton steps with bisection.
+   pure subroutine refine_pair(prepared, wheel_map, pair, ok)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(inout) :: pair
+      logical, intent(out) :: ok
+      type(normal_pair_type) :: lo, hi, trial
+      real(wp) :: step, s_min, s_max, s_new
+      integer :: it, dir
+
+      s_min = prepared%rail%s(1)
+      s_max = prepared%rail%s(prepared%rail%size())
+      call normal_pair(prepared, wheel_map, pair, ok)
+      if (.not. ok) return
+      if (abs(pair%dgap) < tiny(1.0_wp)) return
+      ! Bracket: walk downhill until the slope of the gap changes sign.
+      dir = merge(1, -1, pair%dgap < 0.0_wp)
+      step = 0.02_wp
+      if (pair%d2gap > 0.0_wp) step = min(1.0_wp, max(1.0e-7_wp, 2.0_wp*abs(pair%dgap)/pair%d2gap))
+      lo = pair
+      do it = 1, 200
+         trial = lo
+         trial%s_r = min(s_max, max(s_min, lo%s_r + dir*step))
+         if (abs(trial%s_r - lo%s_r) < s_tol) then
+            ! The end of the rail profile: no minimum on this side.
+            ok = .false.
+            return
+         end if
+         call normal_pair(prepared, wheel_map, trial, ok)
+         if (.not. ok) return
+         if ((trial%dgap > 0.0_wp) .eqv. (dir > 0)) exit
+         lo = trial
+         step = min(2.0_wp, 1.6_wp*step)
+      end do
+      if (.not. ((trial%dgap > 0.0_wp) .eqv. (dir > 0))) then
+         ok = .false.
+         return
+      end if
+      ! lo: slope of the gap pointing downhill towards hi.
+      hi = trial
+      pair = trial
+      do it = 1, 100
+         if (abs(hi%s_r - lo%s_r) <= s_tol) exit
+         s_new = 0.5_wp*(lo%s_r + hi%s_r)
+         if (pair%d2gap > 0.0_wp) then
+            if (abs(pair%dgap) < pair%d2gap*abs(hi%s_r - lo%s_r)) then
+               s_new = pair%s_r - pair%dgap/pair%d2gap
+               if ((s_new - lo%s_r)*(s_new - hi%s_r) >= 0.0_wp) s_new = 0.5_wp*(lo%s_r + hi%s_r)
+            end if
+         end if
+         trial = pair
+         trial%s_r = s_new
+         call normal_pair(prepared, wheel_map, trial, ok)
+         if (.not. ok) return
+         step = abs(trial%s_r - pair%s_r)
+         pair = trial
+         if (step <= s_tol) exit
+         if ((pair%dgap > 0.0_wp) .eqv. (hi%dgap > 0.0_wp)) then
+            hi = pair
+         else
+            lo = pair
+         end if
+      end do
+      ok = .true.
+   end subroutine refine_pair
+
+   !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
+   !> followed outwards in steps h while the gap rises (physics.md §5.4). `covered` returns the
+   !> rail arc-length range of the table.
+   pure subroutine build_table(prepared, wheel_map, side, pair, patch, covered, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      integer, intent(in) :: side
+      type(normal_pair_type), intent(in) :: pair
+      type(patch_geometry_type), intent(out) :: patch
+      real(wp), intent(out) :: covered(2)
+      type(error_type), allocatable, intent(out) :: error
+      type(rigid_map_type) :: rmap, wmap, frame
+      type(frame_point_type) :: r0, w0
+      real(wp), allocatable :: left(:, :), right(:, :), rows(:, :)
+      real(wp) :: h, gap0
+      integer :: n_left, n_right, n_max, dir_r, dir_w, n, i, i0
+
+      h = prepared%options%table_step
+      frame = to_frame(pair%theta, pair%y, pair%z)
+      rmap = prepared%rail_map%then(frame)
+      wmap = wheel_map%then(frame)
+      r0 = frame_point(prepared%rail, rmap, pair%s_r, 1, pair%k_r)
+      w0 = frame_point(prepared%wheel, wmap, pair%s_w, 1, pair%k_w)
+      dir_r = merge(1, -1, r0%deta >= 0.0_wp)
+      dir_w = merge(1, -1, w0%deta >= 0.0_wp)
+      r0 = frame_point(prepared%rail, rmap, pair%s_r, dir_r, pair%k_r)
+      w0 = frame_point(prepared%wheel, wmap, pair%s_w, dir_w, pair%k_w)
+      gap0 = r0%zeta - w0%zeta
+      n_max = int(min(prepared%rail%length(), prepared%wheel%length())/h) + 2
+      allocate (left(row_count, n_max), right(row_count, n_max))
+      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, right, &
+         n_right, covered(2))
+      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, left, &
+         n_left, covered(1))
+      if (covered(1) > covered(2)) covered = covered([2, 1])
+
+      n = n_left + n_right + 1
+      i0 = n_left + 1
+      allocate (rows(row_count, n))
+      rows(:, i0) = strip_row(prepared, r0, w0, pair%theta, gap0)
+      rows(:, i0 + 1:n) = right(:, 1:n_right)
+      rows(:, i0 - 1:1:-1) = left(:, 1:n_left)
+      patch%h = h
+      patch%y = [((i - i0)*h, i=1, n)]
+      patch%gap = max(rows(1, :), 0.0_wp)
+      patch%gap(i0) = 0.0_wp
+      patch%curv_b = max(0.5_wp*rows(2, :), prepared%options%b_min)
+      patch%gamma = rows(3, :)
+      patch%r_wheel = rows(4, :)
+      if (prepared%options%a_reference_normal) then
+         patch%curv_a = cos(pair%theta)/(2.0_wp*patch%r_wheel)
+      else
+         patch%curv_a = cos(patch%gamma)/(2.0_wp*patch%r_wheel)
+      end if
+      patch%y_track = side*pair%y
+      patch%z_track = pair%z
+      patch%y_rail = r0%u
+      patch%y_wheel = w0%u
+      patch%gamma0 = pair%theta
+      patch%r0 = patch%r_wheel(i0)
+      patch%gap0 = gap0
+      if (any(patch%r_wheel <= 0.0_wp)) then
+         call fatal_error(error, 'contact search: a wheel rolling radius <= 0 in the patch at '// &
+            'y = '//str(patch%y_track)//' mm; check the nominal radius and the wheel profile', &
+            stat_invalid_input)
+      end if
+   end subroutine build_table
+
+   !> One row of the tables from the rail and wheel points of a strip.
+   pure function strip_row(prepared, r, w, theta, gap0) result(row)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(frame_point_type), intent(in) :: r, w
+      real(wp), intent(in) :: theta, gap0
+      real(wp) :: row(row_count)
+      row(1) = (r%zeta - w%zeta) - gap0
+      row(2) = r%curv - w%curv
+      ! Local contact angle: the wheel surface's angle in the side frame (see module header).
+      row(3) = theta + atan(w%slope)
+      row(4) = prepared%track%nominal_radius + w%v - prepared%z_tape
+      row(5) = r%s
+   end function strip_row
+
+   !> Follow both profiles from the reference point in steps `step` of η, until the gap exceeds
+   !> table_gap, falls behind a maximum by more than merge_gap (a neighbouring basin: the table
+   !> is cut at the maximum), or a profile ends or turns back.
+   pure subroutine follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, rows, &
+         n_rows, s_end)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: rmap, wmap
+      type(frame_point_type), intent(in) :: r0, w0
+      integer, intent(in) :: dir_r, dir_w
+      real(wp), intent(in) :: theta, gap0, step
+      real(wp), intent(out) :: rows(:, :)
+      integer, intent(out) :: n_rows
+      real(wp), intent(out) :: s_end
+      type(frame_point_type) :: r, w
+      real(wp) :: s_r, s_w, top
+      integer :: k_r, k_w, j, j_top
+      logical :: ok_r, ok_w
+
+      s_r = r0%s; s_w = w0%s; k_r = r0%k; k_w = w0%k
+      top = 0.0_wp; j_top = 0
+      n_rows = 0
+      do j = 1, size(rows, 2)
+         call locate_eta(prepared%rail, rmap, j*step, dir_r, s_r, k_r, ok_r)
+         call locate_eta(prepared%wheel, wmap, j*step, dir_w, s_w, k_w, ok_w)
+         if (.not. (ok_r .and. ok_w)) exit
+         r = frame_point(prepared%rail, rmap, s_r, dir_r, k_r)
+         w = frame_point(prepared%wheel, wmap, s_w, dir_w, k_w)
+         if (r%deta <= min_deta .or. w%deta <= min_deta) exit
+         rows(:, j) = strip_row(prepared, r, w, theta, gap0)
+         n_rows = j
+         if (rows(1, j) >= top) then
+            top = rows(1, j); j_top = j
+         else if (rows(1, j) < top - prepared%options%merge_gap) then
+            n_rows = j_top
+            exit
+         end if
+         if (rows(1, j) > prepared%options%table_gap) exit
+      end do
+      s_end = r0%s
+      if (n_rows > 0) s_end = rows(5, n_rows)
+   end subroutine follow
+
+   !> Sample a spline at all knots and between them at spacing ≤ step.
+   pure subroutine sample_spline(spline, step, s, y, z)
+      type(profile_spline_type), intent(in) :: spline
+      real(wp), intent(in) :: step
+      real(wp), allocatable, intent(out) :: s(:), y(:), z(:)
+      type(spline_point_type) :: p
+      integer :: k, i, m, n, nsub(spline%size() - 1)
+
+      n = spline%size()
+      nsub = max(1, ceiling((spline%s(2:n) - spline%s(1:n - 1))/step))
+      m = sum(nsub) + 1
+      allocate (s(m), y(m), z(m))
+      m = 0
+      do k = 1, n - 1
+         do i = 0, nsub(k) - 1
+            m = m + 1
+            s(m) = spline%s(k) + i*(spline%s(k + 1) - spline%s(k))/nsub(k)
+            p = spline%eval(s(m), k)
+            y(m) = p%y; z(m) = p%z
+         end do
+      end do
+      p = spline%eval(spline%s(n))
+      s(m + 1) = p%s; y(m + 1) = p%y; z(m + 1) = p%z
+   end subroutine sample_spline
+
+   !> Write the strip tables of all patches to a text file: a header naming the columns and
+   !> units, then per patch a comment line with its reference data and one line per table point
+   !> (blank lines between patches, for gnuplot's `index`).
+   subroutine write_geometry_table(patches, filename, error)
+      !> The patches.
+      type(patch_geometry_type), intent(in) :: patches(:)
+      !> File to write (replaced).
+      character(len=*), intent(in) :: filename
+      !> Set when the file cannot be written.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: unit, stat, k, i
+      character(len=256) :: msg
+
+      open (newunit=unit, file=filename, status='replace', action='write', iostat=stat, &
+         iomsg=msg)
+      if (stat /= 0) then
+         call fatal_error(error, filename//': cannot open for writing: '//trim(msg), stat_io)
+         return
+      end if
+      write (unit, '(a)', iostat=stat) &
+         '# shcontact contact-patch geometry (physics.md §4.1, §5.4); y from the reference '// &
+         'point towards the field side, in the tangent plane', &
+         '# gamma: local contact angle, CONTACT sign (right wheel tread < 0); '// &
+         'delta_r = r_w - r0', &
+         '# columns: patch  y[mm]  gap[mm]  A[1/mm]  B[1/mm]  gamma[rad]  r_w[mm]  delta_r[mm]'
+      do k = 1, size(patches)
+         if (stat /= 0) exit
+         associate (p => patches(k))
+            if (k > 1) write (unit, '(/)', iostat=stat)
+            write (unit, '(a,i0,a,i0,7(a,es16.8),a,i0)', iostat=stat) '# patch ', k, ' of ', &
+               size(patches), ': y_track = ', p%y_track, ' mm, z_track = ', p%z_track, &
+               ' mm, y_rail = ', p%y_rail, ' mm, y_wheel = ', p%y_wheel, ' mm, gamma0 = ', &
+               p%gamma0, ' rad, r0 = ', p%r0, ' mm, gap0 = ', p%gap0, ' mm, points = ', p%size()
+            do i = 1, p%size()
+               if (stat /= 0) exit
+               write (unit, '(i3,7es17.8e3)', iostat=stat) k, p%y(i), p%gap(i), p%curv_a(i), &
+                  p%curv_b(i), p%gamma(i), p%r_wheel(i), p%r_wheel(i) - p%r0
+            end do
+         end associate
+      end do
+      if (stat /= 0) then
+         call fatal_error(error, filename//': write failed', stat_io)
+         close (unit)
+         return
+      end if
+      close (unit, iostat=stat)
+   end subroutine write_geometry_table
+
+end module shcontact_geometry_contact

@@ -1,0 +1,279 @@
+!> Options of the tangential solver (physics.md decisions 8–11): method, traction bound, spin
+!> model, discretisation. Each switch is an integer code with a string parser (for the namelist)
+!> and a name function (for outputs).
+module shcontact_tangential_options
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
+   use shcontact_tangential_kalker, only: kalker_scheme_scaled
+   implicit none
+   private
+
+   public :: tangential_options_type, check_tangential_options
+   public :: method_fastsim_sh, method_fastsim
+   public :: bound_ellipsoidal, bound_parabolic, bound_weighted, bound_weighted_slip, bound_clipped
+   public :: spin_additive, spin_uniform, spin_scaled, spin_geometric
+   public :: spin_flexibility_spin, spin_flexibility_longitudinal
+   public :: parse_method, parse_bound, parse_spin_model, parse_kalker_scheme, &
+      parse_spin_flexibility
+   public :: method_name, bound_name, spin_model_name, kalker_scheme_name, spin_flexibility_name
+
+   !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (physics.md §6.5).
+   integer, parameter :: method_fastsim_sh = 1
+   !> `method = 'fastsim'`: classical three-flexibility FASTSIM on the Hertz ellipse (§3).
+   integer, parameter :: method_fastsim = 2
+
+   !> `bound = 'ellipsoidal'`: μ times the strip's semi-elliptic pressure (seed eq 28).
+   integer, parameter :: bound_ellipsoidal = 1
+   !> `bound = 'parabolic'`: μ times the parabolic pressure (seed eq 27).
+   integer, parameter :: bound_parabolic = 2
+   !> `bound = 'weighted'` (W1): parabolic march, every traction times p_n,e/p_n,p (§6.4).
+   integer, parameter :: bound_weighted = 3
+   !> `bound = 'weighted-slip'` (W2): weight only in slip elements, adhesion clipped to μp_n,e.
+   integer, parameter :: bound_weighted_slip = 4
+   !> `bound = 'clipped'` (W3): parabolic march, tractions clipped to μp_n,e.
+   integer, parameter :: bound_clipped = 5
+
+   !> `spin_model = 'additive'` (C): φ_i = φ + (φ_geo,i − φ_geo,0) (physics.md §6.2).
+   integer, parameter :: spin_additive = 1
+   !> `spin_model = 'uniform'` (D): φ_i = φ, ν_xi = ν_x − φ y_i, ν_yi = ν_y.
+   integer, parameter :: spin_uniform = 2
+   !> `spin_model = 'scaled'` (B): φ_i = λ φ_geo,i with λ = φ/φ_geo,0.
+   integer, parameter :: spin_scaled = 3
+   !> `spin_model = 'geometric'` (G): φ_i = φ_geo,i, the input φ is ignored (seed eqs 18–19).
+   integer, parameter :: spin_geometric = 4
+
+   !> `spin_flexibility = 'spin'`: the spin part −φ y_i of the longitudinal slip builds up with
+   !> the strip's spin flexibility L_φ,i, as in Kalker's three-flexibility FASTSIM (§3.1), so that
+   !> FASTSIM_SH reduces to FASTSIM on a Hertzian patch.
+   integer, parameter :: spin_flexibility_spin = 1
+   !> `spin_flexibility = 'longitudinal'`: all of ν_xi builds up with L_x,i (seed eq 21 literally).
+   integer, parameter :: spin_flexibility_longitudinal = 2
+
+   character(len=*), parameter :: method_names(2) = [character(len=10) :: 'fastsim-sh', 'fastsim']
+   character(len=*), parameter :: bound_names(5) = [character(len=13) :: 'ellipsoidal', &
+      'parabolic', 'weighted', 'weighted-slip', 'clipped']
+   character(len=*), parameter :: spin_model_names(4) = [character(len=9) :: 'additive', &
+      'uniform', 'scaled', 'geometric']
+   character(len=*), parameter :: kalker_scheme_names(2) = [character(len=7) :: 'scaled', &
+      'contact']
+   character(len=*), parameter :: spin_flexibility_names(2) = [character(len=12) :: 'spin', &
+      'longitudinal']
+
+   !> Largest accepted number of elements per strip.
+   integer, parameter :: max_elements = 1000000
+
+   !> The validated configuration of the tangential solver.
+   type :: tangential_options_type
+      !> [[method_fastsim_sh]] (default) or [[method_fastsim]].
+      integer :: method = method_fastsim_sh
+      !> Traction bound, `bound_*` (default [[bound_weighted]], decision 9).
+      integer :: bound = bound_weighted
+      !> Local spin model, `spin_*` (default [[spin_additive]], decision 10).
+      integer :: spin_model = spin_additive
+      !> Elements per strip n_x (default 50, decision 11).
+      integer :: n_elements = 50
+      !> Kalker-table interpolation, `kalker_scheme_*` of shcontact_tangential_kalker (default
+      !> [[kalker_scheme_scaled]], decision 7); the names 'scaled', 'contact' are in code order.
+      integer :: kalker_scheme = kalker_scheme_scaled
+      !> Flexibility of the spin part of the longitudinal slip (default [[spin_flexibility_spin]]).
+      integer :: spin_flexibility = spin_flexibility_spin
+      !> Fill the per-element fields of the result; .false. computes the totals only (faster).
+      logical :: fields = .true.
+   end type tangential_options_type
+
+contains
+
+   !> Reject option values out of range, naming the option and the allowed values.
+   pure subroutine check_tangential_options(options, error)
+      !> The options to check.
+      type(tangential_options_type), intent(in) :: options
+      !> Set when an option is invalid.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=16) :: buf
+
+      call check_code('method', options%method, method_names, error)
+      if (allocated(error)) return
+      call check_code('bound', options%bound, bound_names, error)
+      if (allocated(error)) return
+      call check_code('spin_model', options%spin_model, spin_model_names, error)
+      if (allocated(error)) return
+      call check_code('kalker_scheme', options%kalker_scheme, kalker_scheme_names, error)
+      if (allocated(error)) return
+      call check_code('spin_flexibility', options%spin_flexibility, spin_flexibility_names, error)
+      if (allocated(error)) return
+      if (options%n_elements < 1 .or. options%n_elements > max_elements) then
+         write (buf, '(i0)') options%n_elements
+         call fatal_error(error, 'tangential option n_elements = '//trim(buf)// &
+            ': expected 1 to 1000000 elements per strip (default 50)', stat_invalid_input)
+      end if
+   end subroutine check_tangential_options
+
+   !> Parse `method`: 'fastsim-sh' or 'fastsim' (case-insensitive, '_' taken as '-').
+   pure subroutine parse_method(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `method_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('method', text, method_names, code, error)
+   end subroutine parse_method
+
+   !> Parse `bound`: 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip' or 'clipped'.
+   pure subroutine parse_bound(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `bound_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('bound', text, bound_names, code, error)
+   end subroutine parse_bound
+
+   !> Parse `spin_model`: 'additive', 'uniform', 'scaled' or 'geometric'.
+   pure subroutine parse_spin_model(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `spin_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('spin_model', text, spin_model_names, code, error)
+   end subroutine parse_spin_model
+
+   !> Parse `kalker_scheme`: 'scaled' or 'contact'.
+   pure subroutine parse_kalker_scheme(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `kalker_scheme_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('kalker_scheme', text, kalker_scheme_names, code, error)
+   end subroutine parse_kalker_scheme
+
+   !> Parse `spin_flexibility`: 'spin' or 'longitudinal'.
+   pure subroutine parse_spin_flexibility(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `spin_flexibility_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('spin_flexibility', text, spin_flexibility_names, code, error)
+   end subroutine parse_spin_flexibility
+
+   !> Name of a method code ('?' when out of range).
+   pure function method_name(code) result(name)
+      !> A `method_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, method_names)
+   end function method_name
+
+   !> Name of a bound code ('?' when out of range).
+   pure function bound_name(code) result(name)
+      !> A `bound_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, bound_names)
+   end function bound_name
+
+   !> Name of a spin-model code ('?' when out of range).
+   pure function spin_model_name(code) result(name)
+      !> A `spin_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, spin_model_names)
+   end function spin_model_name
+
+   !> Name of a Kalker-scheme code ('?' when out of range).
+   pure function kalker_scheme_name(code) result(name)
+      !> A `kalker_scheme_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, kalker_scheme_names)
+   end function kalker_scheme_name
+
+   !> Name of a spin-flexibility code ('?' when out of range).
+   pure function spin_flexibility_name(code) result(name)
+      !> A `spin_flexibility_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, spin_flexibility_names)
+   end function spin_flexibility_name
+
+   !> Look `text` up in `names` (the code is the position); error lists the allowed values.
+   pure subroutine parse_choice(option, text, names, code, error)
+      character(len=*), intent(in) :: option, text
+      character(len=*), intent(in) :: names(:)
+      integer, intent(out) :: code
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: key
+      integer :: i
+
+      key = normalised(text)
+      do i = 1, size(names)
+         if (key == trim(names(i))) then
+            code = i
+            return
+         end if
+      end do
+      code = 0
+      call fatal_error(error, 'tangential option '//option//" = '"//trim(adjustl(text))// &
+         "': expected one of "//name_list(names), stat_invalid_input)
+   end subroutine parse_choice
+
+   !> Error when a code is not a position in `names`.
+   pure subroutine check_code(option, code, names, error)
+      character(len=*), intent(in) :: option
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: names(:)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=16) :: buf
+
+      if (code < 1 .or. code > size(names)) then
+         write (buf, '(i0)') code
+         call fatal_error(error, 'tangential option '//option//' has the invalid code '// &
+            trim(buf)//': expected one of '//name_list(names), stat_invalid_input)
+      end if
+   end subroutine check_code
+
+   !> 'a', 'b', 'c' for the error messages.
+   pure function name_list(names) result(list)
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: list
+      integer :: i
+
+      list = "'"//trim(names(1))//"'"
+      do i = 2, size(names)
+         list = list//", '"//trim(names(i))//"'"
+      end do
+   end function name_list
+
+   pure function choice_name(code, names) result(name)
+      integer, intent(in) :: code
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: name
+
+      if (code >= 1 .and. code <= size(names)) then
+         name = trim(names(code))
+      else
+         name = '?'
+      end if
+   end function choice_name
+
+   !> Lower case, no surrounding blanks, '_' read as '-' (namelist strings often use either).
+   pure function normalised(text) result(key)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: key
+      integer :: i, ic
+
+      key = trim(adjustl(text))
+      do i = 1, len(key)
+         ic = iachar(key(i:i))
+         if (ic >= iachar('A') .and. ic <= iachar('Z')) key(i:i) = achar(ic + 32)
+         if (key(i:i) == '_') key(i:i) = '-'
+      end do
+   end function normalised
+
+end module shcontact_tangential_options
