@@ -40,7 +40,8 @@ contains
          new_unittest('killed_and_resumed', test_resume), &
          new_unittest('some_cases_fail', test_partial_failure), &
          new_unittest('bad_input', test_bad_input), &
-         new_unittest('usage_errors', test_usage) &
+         new_unittest('usage_errors', test_usage), &
+         new_unittest('profiles_and_geometry_commands', test_other_commands) &
          ]
    end subroutine collect_app
 
@@ -520,5 +521,31 @@ contains
       call check(error, stat, 1, message='unknown command')
       call shell('rm -rf '//dir)
    end subroutine test_usage
+
+   subroutine test_other_commands(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('commands')
+      stat = run_program(dir, 'profiles --write built-in')
+      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/built-in/S1002.txt') .and. &
+         file_exists(dir//'/built-in/UIC60.txt'), message='built-in profiles written')
+      if (allocated(error)) return
+      ! A written profile reads back as a case input.
+      stat = run_program(dir, 'run -q --check --set profiles%wheel=built-in/S1002.txt')
+      call check(error, stat, 0, message='written profile as input: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'geometry -o geometry.txt --set position%t_y=0')
+      call check(error, stat, 0, message='geometry: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/geometry.txt'), '# patch 1 of', 'geometry table')
+      if (allocated(error)) return
+      stat = run_program(dir, 'profiles')
+      call check(error, stat, 1, message='profiles without --write')
+      call shell('rm -rf '//dir)
+   end subroutine test_other_commands
 
 end module test_app

@@ -45,15 +45,17 @@ contains
       self%items(self%n)%text = text
    end subroutine string_list_push
 
-   !> The shortest decimal text that reads back to exactly `x` (round trip), in plain notation
-   !> for 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise.
+   !> A short decimal text that reads back to exactly `x` (16 or 17 significant digits without
+   !> trailing zeros: 0.1, 2.0e-3 and 64700 come out as written), in plain notation for
+   !> 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise.
    pure function format_real(x) result(text)
       !> The number.
       real(wp), intent(in) :: x
       character(len=:), allocatable :: text
-      character(len=40) :: buf, fmt
+      character(len=40) :: buf
       character(len=20) :: digits
-      integer :: d, epos, expo, nd, lo, hi
+      real(wp) :: back
+      integer :: d, epos, expo, nd, ios
 
       if (ieee_is_nan(x)) then
          text = 'NaN'
@@ -65,31 +67,15 @@ contains
          text = '0.0'
          return
       end if
-      ! The fewest significant digits that round-trip: the property is monotone in the number
-      ! of digits, so test 15 (enough for most short inputs) and bisect below it, or go up to
-      ! 16 and 17 (always enough for IEEE double). Near the overflow threshold a rounded-up
-      ! short form would overflow when read back: use 17 digits there.
-      if (abs(x) > 1.0e307_wp) then
-         d = 17
-      else if (round_trips(x, 15)) then
-         lo = 0
-         hi = 15
-         do while (hi - lo > 1)
-            d = (lo + hi)/2
-            if (round_trips(x, d)) then
-               hi = d
-            else
-               lo = d
-            end if
-         end do
-         d = hi
-      else if (round_trips(x, 16)) then
-         d = 16
-      else
-         d = 17
+      ! 16 significant digits read back exactly for most doubles (17 always do); trailing
+      ! zeros are dropped below, so short inputs such as 0.1 or 2e-3 come out short. Near the
+      ! overflow threshold the rounded 16-digit form could overflow when read back.
+      ios = 1
+      if (abs(x) < 1.0e307_wp) then
+         write (buf, '(es24.15e3)') x
+         read (buf, *, iostat=ios) back
       end if
-      write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
-      write (buf, fmt) x
+      if (ios /= 0 .or. back /= x) write (buf, '(es25.16e3)') x
       buf = adjustl(buf)
       epos = index(buf, 'E')
       read (buf(epos + 1:), *) expo
@@ -119,19 +105,6 @@ contains
          text = text//'e'//str_int(expo)
       end if
    end function format_real
-
-   !> True when x written with d significant digits reads back exactly.
-   pure logical function round_trips(x, d)
-      real(wp), intent(in) :: x
-      integer, intent(in) :: d
-      character(len=40) :: buf, fmt
-      real(wp) :: back
-      integer :: ios
-      write (fmt, '(a,i0,a)') '(es30.', d - 1, 'e3)'
-      write (buf, fmt) x
-      read (buf, *, iostat=ios) back
-      round_trips = ios == 0 .and. back == x
-   end function round_trips
 
    !> Digits d₁d₂… with the decimal point after the (expo+1)-th digit, zero-padded.
    pure function plain(digits, expo) result(text)
