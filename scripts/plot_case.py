@@ -211,6 +211,17 @@ def plot_geometry(f, group, patch, title, out):
     return True
 
 
+def tangential_label(namelist):
+    """'fastsim-sh, weighted' from the &tangential group of the stored namelist."""
+    group = namelist.split("&tangential", 1)[-1].split("\n/", 1)[0]
+    values = {}
+    for line in group.splitlines():
+        if "=" in line:
+            key, value = line.split("!", 1)[0].split("=", 1)
+            values[key.strip()] = value.strip().strip("'")
+    return ", ".join(v for v in (values.get("method"), values.get("bound")) if v)
+
+
 def plot_creep(f, title, out):
     """Seed Figs 6-7: |f_x| and |f_y| against the innermost swept real input; one curve per
     combination of the choice inputs (bound, spin model); other swept real inputs of a grid
@@ -233,6 +244,7 @@ def plot_creep(f, title, out):
             keep &= v == v[0]
             others.append(f"{a} = {v[0]:g}")
     labels = [a for a in swept if a in ("bound", "spin_model")]
+    default_label = tangential_label(text(f["input/namelist"][()]))
     keys = [tuple(text(s[a][i]) for a in labels) for i in range(len(ok))]
     label, scale = AXIS_DISPLAY.get(xname, (xname, 1.0))
     if together:
@@ -244,7 +256,7 @@ def plot_creep(f, title, out):
             continue
         xv = s[xname][...][rows] * scale
         order = np.argsort(xv)
-        name = ", ".join(key) if key else "FASTSIM_SH"
+        name = ", ".join(key) if key else default_label
         axes[0].plot(xv[order], np.abs(s["fx_norm"][...][rows])[order], "o-", ms=3, label=name)
         axes[1].plot(xv[order], np.abs(s["fy_norm"][...][rows])[order], "o-", ms=3, label=name)
     for ax, comp in zip(axes, ("x", "y")):
