@@ -29,7 +29,8 @@ module shcontact_case_runner
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_solver, only: solve_tangential
-   use shcontact_io_config, only: case_config_type, case_point_type
+   use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
+      spin_model_choices
    use shcontact_case_result, only: case_result_type, case_summary_type
    implicit none
    private
@@ -52,6 +53,9 @@ module shcontact_case_runner
       type(material_type) :: material
       !> 'force', 'approach' or 'vertical'.
       character(len=:), allocatable :: load_mode
+      !> Solver codes of the bound and spin-model names (parsed once, looked up per case).
+      integer :: bound_codes(size(bound_choices)) = 0
+      integer :: spin_model_codes(size(spin_model_choices)) = 0
    end type run_setup_type
 
    !> Geometry and normal solution of one (t_y, roll, load), shared by the cases that have them.
@@ -78,6 +82,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(track_type) :: track
       type(contact_options_type) :: options
+      integer :: k
 
       call load_profile(config%profiles%wheel, config%profiles%wheel_format, profile_kind_wheel, &
          setup%wheel, error)
@@ -114,6 +119,14 @@ contains
          config%wants_field('slip')
       setup%material = config%material
       setup%load_mode = trim(config%load%mode)
+      do k = 1, size(bound_choices)
+         call parse_bound(trim(bound_choices(k)), setup%bound_codes(k), error)
+         if (allocated(error)) return
+      end do
+      do k = 1, size(spin_model_choices)
+         call parse_spin_model(trim(spin_model_choices(k)), setup%spin_model_codes(k), error)
+         if (allocated(error)) return
+      end do
    end subroutine prepare_run
 
    !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
@@ -236,9 +249,14 @@ contains
          return
       end if
       options = setup%tangential
-      call parse_bound(trim(point%bound), options%bound, error)
-      if (.not. allocated(error)) call parse_spin_model(trim(point%spin_model), &
-         options%spin_model, error)
+      ! The names were validated with the configuration: look their codes up.
+      do k = 1, size(bound_choices)
+         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
+      end do
+      do k = 1, size(spin_model_choices)
+         if (point%spin_model == spin_model_choices(k)) &
+            options%spin_model = setup%spin_model_codes(k)
+      end do
       material = setup%material
       material%friction = point%friction
       creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
@@ -284,7 +302,10 @@ contains
          if (stage%normal(k)%load > stage%normal(m)%load) m = k
       end do
       s%main_patch = m
-      s%fn_total = sum(stage%normal%load)
+      s%fn_total = 0.0_wp
+      do k = 1, size(stage%normal)
+         s%fn_total = s%fn_total + stage%normal(k)%load
+      end do
       s%fn = stage%normal(m)%load
       s%fx = tangential(m)%fx
       s%fy = tangential(m)%fy

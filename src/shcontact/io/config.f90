@@ -23,7 +23,7 @@ module shcontact_io_config
    public :: load_config, read_config_file, read_config_text, apply_override, validate_config
    public :: config_namelist
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
-   public :: path_len, name_len, max_sweep_values
+   public :: path_len, name_len, max_sweep_values, bound_choices, spin_model_choices
 
    !> Length of file-name variables.
    integer, parameter :: path_len = 512
@@ -178,10 +178,12 @@ module shcontact_io_config
    character(len=*), parameter :: reductions(*) = [character(len=11) :: 'local-hertz', 'constant']
    character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
       'fastsim']
+   !> The traction bounds and spin models (physics.md decisions 9, 10).
    character(len=*), parameter :: bounds(*) = [character(len=13) :: 'ellipsoidal', 'parabolic', &
       'weighted', 'weighted-slip', 'clipped']
    character(len=*), parameter :: spin_models(*) = [character(len=9) :: 'additive', 'uniform', &
       'scaled', 'geometric']
+   character(len=*), parameter :: bound_choices(*) = bounds, spin_model_choices(*) = spin_models
    character(len=*), parameter :: field_names(*) = [character(len=8) :: 'auto', 'all', 'none', &
       'geometry', 'strips', 'pressure', 'traction', 'state', 'slip']
    character(len=*), parameter :: precisions(*) = [character(len=6) :: 'double', 'single']

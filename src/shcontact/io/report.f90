@@ -107,7 +107,8 @@ contains
       case default
          line = pad(str_int(icase), 8)//pad(str_int(summary%stat), 7)
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//pad(input_text(p, ia, .false.), 14)
+            if (config%sweep%axes(ia)%active) line = line//pad(input_text(p, ia, .false., &
+               short=.true.), 14)
          end do
          if (ok) then
             do k = 1, size(text_columns)
@@ -150,28 +151,40 @@ contains
    end function report_case_text
 
    !> A swept input of a case as text (quoted for JSON when it is a choice).
-   function input_text(p, ia, json) result(text)
+   function input_text(p, ia, json, short) result(text)
       type(case_point_type), intent(in) :: p
       integer, intent(in) :: ia
       logical, intent(in) :: json
+      !> Five significant digits instead of the exact value.
+      logical, intent(in), optional :: short
       character(len=:), allocatable :: text
+      real(wp) :: x
       select case (trim(sweep_axis_names(ia)))
-      case ('t_y'); text = format_real(p%t_y)
-      case ('roll'); text = format_real(p%roll)
-      case ('normal_force'); text = format_real(p%normal_force)
-      case ('approach'); text = format_real(p%approach)
-      case ('vertical_force'); text = format_real(p%vertical_force)
-      case ('friction'); text = format_real(p%friction)
       case ('bound')
          text = trim(p%bound)
          if (json) text = json_string(text)
+         return
       case ('spin_model')
          text = trim(p%spin_model)
          if (json) text = json_string(text)
-      case ('nu_x'); text = format_real(p%nu_x)
-      case ('nu_y'); text = format_real(p%nu_y)
-      case default; text = format_real(p%phi)
+         return
+      case ('t_y'); x = p%t_y
+      case ('roll'); x = p%roll
+      case ('normal_force'); x = p%normal_force
+      case ('approach'); x = p%approach
+      case ('vertical_force'); x = p%vertical_force
+      case ('friction'); x = p%friction
+      case ('nu_x'); x = p%nu_x
+      case ('nu_y'); x = p%nu_y
+      case default; x = p%phi
       end select
+      if (present(short)) then
+         if (short) then
+            text = short_real(x)
+            return
+         end if
+      end if
+      text = format_real(x)
    end function input_text
 
    pure integer function column_index(name)
@@ -183,26 +196,21 @@ contains
       end do
    end function column_index
 
-   !> Five significant digits, for reading: fixed notation for 1e-3 ≤ |x| < 1e6.
+   !> Five significant digits, for reading (one formatted write: tables of sweeps are long).
    pure function short_real(x) result(text)
       real(wp), intent(in) :: x
       character(len=:), allocatable :: text
-      character(len=32) :: buf, fmt
-      integer :: e
+      character(len=24) :: buf
+      integer :: n
       if (x == 0.0_wp) then
          text = '0'
-      else if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         e = floor(log10(abs(x)))
-         write (fmt, '(a,i0,a)') '(f0.', max(0, 4 - e), ')'
-         write (buf, fmt) x
-         text = trim(adjustl(buf))
-         if (text(1:1) == '.') text = '0'//text
-         if (text(1:2) == '-.') text = '-0'//text(2:)
-         if (text(len(text):) == '.') text = text(1:len(text) - 1)
-      else
-         write (buf, '(es11.4)') x
-         text = trim(adjustl(buf))
+         return
       end if
+      write (buf, '(1p,g14.5e2)') x
+      buf = adjustl(buf)
+      n = len_trim(buf)
+      if (buf(n:n) == '.') n = n - 1
+      text = buf(1:n)
    end function short_real
 
    pure function pad(text, width) result(padded)
