@@ -26,6 +26,9 @@ program tester
    use test_kalker, only: collect_kalker
    use test_fastsim, only: collect_fastsim
    use test_fastsim_sh, only: collect_fastsim_sh
+   use test_config, only: collect_config
+   use test_hdf5io, only: collect_hdf5io
+   use test_app, only: collect_app
    use test_api, only: collect_api
    use test_examples, only: collect_examples
    implicit none
@@ -52,6 +55,9 @@ program tester
       new_testsuite('kalker', collect_kalker), &
       new_testsuite('fastsim', collect_fastsim), &
       new_testsuite('fastsim_sh', collect_fastsim_sh), &
+      new_testsuite('config', collect_config), &
+      new_testsuite('hdf5io', collect_hdf5io), &
+      new_testsuite('app', collect_app), &
       new_testsuite('api', collect_api), &
       new_testsuite('examples', collect_examples) &
       ]

@@ -26,6 +26,10 @@ module test_api
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       contact_fields_type, load_normal_force, load_vertical_force, &
       load_approach, result_value_count, patch_value_count, result_values, patch_values
+   use shcontact_io_config, only: case_config_type, case_point_type, load_config
+   use shcontact_case_result, only: case_result_type
+   use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
+      solve_stage, solve_case
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_solve, &
       shcontact_last_error, shcontact_set_option, shcontact_patch
    implicit none
@@ -89,6 +93,7 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('headline_matches_pipeline', test_headline_pipeline), &
+         new_unittest('headline_matches_app_runner', test_app_runner), &
          new_unittest('init_from_profiles', test_init_profiles), &
          new_unittest('cache_gives_same_results', test_cache), &
          new_unittest('vertical_load_balance', test_vertical), &
@@ -169,6 +174,48 @@ contains
       call check(error, result%track%fz, result%main%fy*sin(result%main%gamma0) &
          - result%main%fn*cos(result%main%gamma0), rel=.true., thr=1.0e-12_wp)
    end subroutine test_headline_pipeline
+
+   !> The app's case runner on its default configuration (the headline case) and the solver
+   !> object give the same summary, bit for bit.
+   subroutine test_app_runner(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_result_type) :: result
+      type(case_config_type) :: config
+      type(case_point_type) :: point
+      type(run_setup_type) :: setup
+      type(stage_type) :: stage
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type), allocatable :: tangential(:)
+      type(case_result_type) :: app
+      type(lib_error), allocatable :: err
+      character(len=1) :: no_overrides(0)
+
+      call headline_result(result, error)
+      if (allocated(error)) return
+      call load_config('', no_overrides, config, err)
+      if (.not. allocated(err)) call prepare_run(config, setup, err)
+      if (lib_failed(error, err)) return
+      point = config%case_point(1)
+      call check(error, point%t_y, headline_t_y)
+      if (allocated(error)) return
+      call solve_geometry(setup, point, geometry, err)
+      if (lib_failed(error, err)) return
+      call solve_stage(setup, point, geometry, stage)
+      call solve_case(setup, point, stage, ws, tangential, app, .false.)
+      call check(error, app%summary%stat, 0, message='the app runner failed')
+      if (allocated(error)) return
+      call check(error, app%summary%main_patch == result%main_patch .and. &
+         app%summary%n_patches == result%n_loaded, message='patch counts differ from the app')
+      if (allocated(error)) return
+      call check(error, bitwise_equal([app%summary%fx, app%summary%fy, app%summary%mz, &
+         app%summary%fn, app%summary%fx_norm, app%summary%fy_norm, app%summary%coulomb_ratio, &
+         app%summary%approach, app%summary%gamma0, app%summary%y_track], [result%main%fx, &
+         result%main%fy, result%main%mz, result%main%fn, result%main%fx_norm, &
+         result%main%fy_norm, result%main%coulomb_ratio, result%main%approach, &
+         result%main%gamma0, result%main%y_track]), &
+         message='the solver object differs from the app runner')
+   end subroutine test_app_runner
 
    !> init from profile_type objects gives the same result as init from `builtin:` names.
    subroutine test_init_profiles(error)
