@@ -43,9 +43,13 @@ contains
    !> even when the creation fails, so that shc_errmsg can tell why; destroy it. ihandle = 0
    !> means that all handles are in use.
    subroutine legacy_create(ihandle, wheel, rail, iside, istat)
+      !> The new handle (0 when the table is full).
       integer, intent(out) :: ihandle
+      !> Wheel and rail profile: `builtin:NAME` or a file name.
       character(len=*), intent(in) :: wheel, rail
+      !> 1 right wheel, −1 left wheel.
       integer, intent(in) :: iside
+      !> Status (0 success).
       integer, intent(out) :: istat
       integer :: i
 
@@ -68,7 +72,9 @@ contains
 
    !> Release a handle (status 1 for an invalid one).
    subroutine legacy_destroy(ihandle, istat)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
       if (.not. valid(ihandle)) return
@@ -80,8 +86,11 @@ contains
 
    !> Set G (MPa), ν and μ.
    subroutine legacy_set_material(ihandle, g, poiss, fric, istat)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> G (MPa), ν, μ.
       real(wp), intent(in) :: g, poiss, fric
+      !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
       if (valid(ihandle)) istat = context_set_material(slots(ihandle)%ctx, g, poiss, fric)
@@ -90,10 +99,15 @@ contains
    !> Set the track: gauge, gauge-point depth, rail inclination (slope), rail already canted
    !> (icant /= 0), flange-back distance and position, nominal radius (mm).
    subroutine legacy_set_track(ihandle, gauge, gheight, slope, icant, fbdist, fbpos, rnom, istat)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> Gauge, gauge-point depth (mm), rail inclination (slope).
       real(wp), intent(in) :: gauge, gheight, slope
+      !> Non-zero: the rail profile is already canted.
       integer, intent(in) :: icant
+      !> Flange-back distance and position, nominal radius (mm).
       real(wp), intent(in) :: fbdist, fbpos, rnom
+      !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
       if (valid(ihandle)) istat = context_set_track(slots(ihandle)%ctx, gauge, gheight, slope, &
@@ -102,8 +116,11 @@ contains
 
    !> Set one option by name and textual value (shcontact_api_context's option_keys).
    subroutine legacy_set_option(ihandle, key, value, istat)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> Option name (`group%variable`) and value.
       character(len=*), intent(in) :: key, value
+      !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
       if (valid(ihandle)) istat = context_set_option(slots(ihandle)%ctx, key, value)
@@ -111,11 +128,17 @@ contains
 
    !> Solve one contact; values(1:result_value_count) receives the flat result.
    subroutine legacy_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> Lateral shift (mm) and roll (rad).
       real(wp), intent(in) :: ty, roll
+      !> Load mode: 1 normal force, 2 vertical force, 3 approach.
       integer, intent(in) :: imode
+      !> Load (N or mm) and creepages ν_x, ν_y, φ (rad/mm).
       real(wp), intent(in) :: fload, cksi, ceta, cphi
+      !> The flat result.
       real(wp), intent(out) :: values(result_value_count)
+      !> Status (0 success).
       integer, intent(out) :: istat
       values = 0.0_wp
       istat = stat_usage
@@ -125,8 +148,11 @@ contains
 
    !> The flat values of patch ipatch of the last solve.
    subroutine legacy_patch(ihandle, ipatch, values, istat)
+      !> The handle and the patch index.
       integer, intent(in) :: ihandle, ipatch
+      !> The patch values.
       real(wp), intent(out) :: values(patch_value_count)
+      !> Status (0 success).
       integer, intent(out) :: istat
       values = 0.0_wp
       istat = stat_usage
@@ -136,7 +162,9 @@ contains
    !> The message of the last call on a handle (blank after a success), or why the handle is
    !> not valid. Cut to len(msg).
    subroutine legacy_message(ihandle, msg)
+      !> The handle.
       integer, intent(in) :: ihandle
+      !> The message.
       character(len=*), intent(out) :: msg
       if (valid(ihandle)) then
          msg = context_message(slots(ihandle)%ctx)
