@@ -26,6 +26,7 @@ program tester
    use test_kalker, only: collect_kalker
    use test_fastsim, only: collect_fastsim
    use test_fastsim_sh, only: collect_fastsim_sh
+   use test_validation, only: collect_validation
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -49,7 +50,8 @@ program tester
       new_testsuite('geometry', collect_geometry), &
       new_testsuite('kalker', collect_kalker), &
       new_testsuite('fastsim', collect_fastsim), &
-      new_testsuite('fastsim_sh', collect_fastsim_sh) &
+      new_testsuite('fastsim_sh', collect_fastsim_sh), &
+      new_testsuite('validation', collect_validation) &
       ]
 
    call read_selection(suite_name, test_name)
