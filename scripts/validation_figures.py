@@ -157,23 +157,24 @@ def fig_normal(ref_dir, tables, out):
 
 
 def resample_fields(fields, bound, x, y):
-    """Our element fields of one bound on a regular grid (x, y) (CONTACT's y): px, py, state."""
+    """Our element fields of one bound on a regular grid (x, y) (CONTACT's y): px, py, state.
+    Each grid point takes the element of the nearest strip that contains it."""
     strips = np.unique(fields["strip"].astype(int))
     nx = int(fields["element"].max())
     yc = np.array([fields["y_contact_mm"][fields["strip"] == s][0] for s in strips])
-    dy = np.min(np.diff(yc))
+    dy = np.median(np.diff(yc))
+    nearest = np.argmin(np.abs(y[..., None] - yc[None, None, :]), axis=-1)
+    inside = (y >= yc[0] - 0.5 * dy) & (y <= yc[-1] + 0.5 * dy)
     px = np.zeros(x.shape)
     py = np.zeros(x.shape)
     st = np.zeros(x.shape)
-    for s, ys in zip(strips, yc):
+    for k, s in enumerate(strips):
         sel = fields["strip"] == s
-        xs = fields["x_mm"][sel]
         order = np.argsort(fields["element"][sel])
-        xs = xs[order]
+        xs = fields["x_mm"][sel][order]
         a = xs[0] / (1.0 - 1.0 / nx)  # first centre at a (1 - 1/nx)
-        rows = np.abs(y - ys) <= 0.5 * dy
         j = np.floor((a - x) / (2.0 * a / nx)).astype(int)
-        ok = rows & (j >= 0) & (j < nx)
+        ok = inside & (nearest == k) & (j >= 0) & (j < nx)
         jj = np.clip(j, 0, nx - 1)
         for name, target in (("px_", px), ("py_", py), ("state_", st)):
             v = fields[name + bound][sel][order]

@@ -613,8 +613,8 @@ contains
    end subroutine write_hertz_row
 
    !> Per-element tractions on the rail (−p on the wheel) of the headline case for every bound
-   !> with the recommended spin model and flexibility, on a coarser grid for the figures (50 strips
-   !> × 40 elements); columns per bound: px, py (MPa), state (0 exterior, 1 adhesion, 2 slip).
+   !> with the recommended spin model and flexibility, on a coarser grid for the figures (40 strips
+   !> × 32 elements); columns per bound: px, py (MPa), state (0 exterior, 1 adhesion, 2 slip).
    subroutine write_fields(path, geometry, material, ref, rec, error)
       character(len=*), intent(in) :: path
       type(patch_geometry_type), intent(in) :: geometry
@@ -622,7 +622,7 @@ contains
       type(reference_type), intent(in) :: ref
       type(recommended_type), intent(in) :: rec
       type(error_type), allocatable, intent(out) :: error
-      integer, parameter :: n_strips = 50, n_elements = 40
+      integer, parameter :: n_strips = 40, n_elements = 32
       type(normal_patch_type) :: patch
       type(tangential_options_type) :: options
       type(march_workspace_type) :: ws
@@ -661,7 +661,7 @@ contains
                v = [v, -result(ib)%px(j, i), -result(ib)%py(j, i), &
                   real(result(ib)%state(j, i), wp)]
             end do
-            call out%row(v, digits=4)
+            call out%row(v, digits=3)
          end do
       end do
       call out%close()
