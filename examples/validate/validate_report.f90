@@ -111,6 +111,7 @@ contains
       call all_variants(out_dir//'errors.csv', patches, ellipse, exact_pressure, material, &
          ref, rec, selected, error)
       if (allocated(error)) return
+      call print_recommended(ref, selected, rec)
       call write_sweeps(out_dir, ref, selected, error)
       if (allocated(error)) return
       call write_cdf(out_dir//'doe_cdf.csv', ref, selected, error)
@@ -389,6 +390,29 @@ contains
       end if
       call out%row(v, text=run%text, digits=4)
    end subroutine write_metrics
+
+   !> The headline numbers of the recommended settings on stdout.
+   subroutine print_recommended(ref, selected, rec)
+      type(reference_type), intent(in) :: ref
+      type(run_type), intent(in) :: selected(:)
+      type(recommended_type), intent(in) :: rec
+      type(error_stats_type) :: sx, sy
+      integer :: r
+
+      do r = 1, size(selected)
+         if (selected(r)%label /= rec%bound//'_'//rec%spin_model) cycle
+         sx = error_stats(abs_errors(selected(r)%set(i_doe)%fx, ref%sets(i_doe)%fx))
+         sy = error_stats(abs_errors(selected(r)%set(i_doe)%fy, ref%sets(i_doe)%fy))
+         write (output_unit, '(a)') 'recommended settings: bound '//rec%bound//', spin model '// &
+            rec%spin_model//', spin flexibility '//rec%spin_flexibility//', reduction '// &
+            rec%reduction
+         write (output_unit, '(a,2f8.4,a,2f8.4)') '  headline f_x, f_y:', &
+            selected(r)%set(i_headline)%fx(1), selected(r)%set(i_headline)%fy(1), &
+            '   exact:', ref%sets(i_headline)%fx(1), ref%sets(i_headline)%fy(1)
+         write (output_unit, '(a,2f8.4,a,2f8.4)') '  DOE 10^3 max |df_x|, |df_y|:', sx%max, &
+            sy%max, '   P80:', sx%p80, sy%p80
+      end do
+   end subroutine print_recommended
 
    ! ------------------------------------------------------------------------------ sweeps, CDF
 
@@ -712,7 +736,6 @@ contains
       call out%row([fx, fy, run%set(3)%fx(last), run%set(3)%fy(last)], text=['hertz-ellipse'], &
          digits=4)
       call out%close()
-      write (output_unit, '(a)') '  wrote '//path
    end subroutine saturation
 
 end module validate_report
