@@ -31,6 +31,7 @@ program tester
    use test_app, only: collect_app
    use test_api, only: collect_api
    use test_examples, only: collect_examples
+   use test_validation, only: collect_validation
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -59,7 +60,8 @@ program tester
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app), &
       new_testsuite('api', collect_api), &
-      new_testsuite('examples', collect_examples) &
+      new_testsuite('examples', collect_examples), &
+      new_testsuite('validation', collect_validation) &
       ]
 
    call read_selection(suite_name, test_name)
