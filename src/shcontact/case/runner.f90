@@ -25,7 +25,7 @@ module shcontact_case_runner
       solve_approach, solve_vertical_load
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model
+      parse_spin_model, parse_spin_flexibility
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_solver, only: solve_tangential
@@ -112,6 +112,9 @@ contains
          n_strips=config%normal%n_strips)
       if (allocated(error)) return
       call parse_method(trim(config%tangential%method), setup%tangential%method, error)
+      if (allocated(error)) return
+      call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
+         setup%tangential%spin_flexibility, error)
       if (allocated(error)) return
       setup%tangential%n_elements = config%tangential%n_elements
       setup%tangential%fields = config%wants_field('pressure') .or. &

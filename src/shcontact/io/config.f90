@@ -116,6 +116,9 @@ module shcontact_io_config
       "'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip', 'clipped'"), &
       variable_info_type('tangential', 'spin_model', k_string, '', &
       "'additive', 'uniform', 'scaled', 'geometric'"), &
+      variable_info_type('tangential', 'spin_flexibility', k_string, '', &
+      "flexibility of the spin part of the longitudinal slip: 'longitudinal' (L_x, seed eq 21) "// &
+      "or 'spin' (L_phi, Kalker's FASTSIM)"), &
       variable_info_type('tangential', 'n_elements', k_int, '', &
       'number of elements per strip (n_x)'), &
       variable_info_type('output', 'file', k_string, '', 'HDF5 output file'), &
@@ -183,6 +186,8 @@ module shcontact_io_config
       'weighted', 'weighted-slip', 'clipped']
    character(len=*), parameter :: spin_models(*) = [character(len=9) :: 'additive', 'uniform', &
       'scaled', 'geometric']
+   character(len=*), parameter :: spin_flexibilities(*) = [character(len=12) :: &
+      'longitudinal', 'spin']
    character(len=*), parameter :: bound_choices(*) = bounds, spin_model_choices(*) = spin_models
    character(len=*), parameter :: field_names(*) = [character(len=8) :: 'auto', 'all', 'none', &
       'geometry', 'strips', 'pressure', 'traction', 'state', 'slip']
@@ -261,7 +266,8 @@ module shcontact_io_config
    type :: tangential_config_type
       character(len=name_len) :: method = 'fastsim-sh'
       character(len=name_len) :: bound = 'weighted'
-      character(len=name_len) :: spin_model = 'additive'
+      character(len=name_len) :: spin_model = 'uniform'
+      character(len=name_len) :: spin_flexibility = 'longitudinal'
       integer :: n_elements = 50
    end type tangential_config_type
 
@@ -1253,14 +1259,16 @@ contains
       character(len=*), intent(in) :: text
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: msg
-      character(len=name_len) :: method, bound, spin_model
+      character(len=name_len) :: method, bound, spin_model, spin_flexibility
       integer :: n_elements
-      namelist /tangential/ method, bound, spin_model, n_elements
+      namelist /tangential/ method, bound, spin_model, spin_flexibility, n_elements
       method = g%method; bound = g%bound; spin_model = g%spin_model; n_elements = g%n_elements
+      spin_flexibility = g%spin_flexibility
       read (text, nml=tangential, iostat=stat, iomsg=msg)
       if (stat /= 0) return
       g%method = to_lower(method); g%bound = to_lower(bound)
       g%spin_model = to_lower(spin_model); g%n_elements = n_elements
+      g%spin_flexibility = to_lower(spin_flexibility)
    end subroutine read_tangential
 
    subroutine read_output(g, name, text, stat, msg)
@@ -1513,6 +1521,9 @@ contains
          if (allocated(error)) return
          call check_choice(c, 'tangential', 'spin_model', c%tangential%spin_model, spin_models, &
             error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'spin_flexibility', c%tangential%spin_flexibility, &
+            spin_flexibilities, error)
          if (allocated(error)) return
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
             error)
@@ -2054,6 +2065,8 @@ contains
             case ('method'); value = quote_string(config%tangential%method)
             case ('bound'); value = quote_string(config%tangential%bound)
             case ('spin_model'); value = quote_string(config%tangential%spin_model)
+            case ('spin_flexibility')
+               value = quote_string(config%tangential%spin_flexibility)
             case ('n_elements'); value = str_int(config%tangential%n_elements)
             end select
          case ('output')
