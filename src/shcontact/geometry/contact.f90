@@ -4,7 +4,8 @@
 !> Two steps, so that a scan over many wheel positions smooths the profiles only once:
 !>
 !> 1. [[prepare_profiles]]: fit the smoothing splines (§5.5), place the rail (§5.2), find the
-!>    tape-circle height of the wheel profile and sample both profiles densely.
+!>    tape-circle height of the wheel profile (at flange_back_position + tape_circle_offset) and
+!>    sample both profiles densely.
 !> 2. [[find_contact_patches]] for one wheelset position:
 !>    * place the wheel (lateral shift, roll), sample the vertical gap to the rail, lower the wheel
 !>      onto the rail and take every separate local minimum of the gap as a candidate patch
@@ -28,8 +29,9 @@
 !> * Local contact angle γ(y): the angle of the wheel surface on the strip, so that γ and
 !>   δr = r_w − r₀ come from the same wheel spline (§6.1) and dr_w/dy = sin γ along the tangent
 !>   plane (dr_w/dy_track = tan γ).
-!> * Rolling radius r_w = r_nom + z_w(y_w) − z_w(0) in wheel profile coordinates (z down, y_w = 0
-!>   on the tape circle).
+!> * Rolling radius r_w = r_nom + z_w(y_w) − z_w(y_tape) in wheel profile coordinates (z down),
+!>   y_tape = flange_back_position + tape_circle_offset the tape circle (0 for S1002, 70 mm for a
+!>   MiniProf wheel whose origin is the flange back).
 !> * A(y) = cos γ(y)/(2 r_w(y)) (option: cos γ₀, the fixed reference normal); B(y) = ½ g''(y),
 !>   analytic from the splines, clamped to ≥ b_min.
 module shcontact_geometry_contact
@@ -43,7 +45,7 @@ module shcontact_geometry_contact
    use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta
    use shcontact_geometry_search, only: polyline_envelope, gap_minima
    use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
-      check_position, rail_placement, wheel_placement, str => real_text
+      check_position, rail_placement, wheel_placement, tape_circle_position, str => real_text
    use shcontact_geometry_patch, only: patch_geometry_type
    implicit none
    private
@@ -84,8 +86,8 @@ module shcontact_geometry_contact
       type(profile_spline_type) :: wheel, rail
       !> Rail profile coordinates → side frame.
       type(rigid_map_type) :: rail_map
-      !> Wheel profile z at y = 0, the tape circle (mm).
-      real(wp) :: z_tape = 0.0_wp
+      !> Wheel profile y and z of the tape circle (mm).
+      real(wp) :: y_tape = 0.0_wp, z_tape = 0.0_wp
       !> Dense samples of the wheel, profile coordinates (mm).
       real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
       !> Dense samples of the rail, side frame (mm).
@@ -187,10 +189,14 @@ contains
          call prefix_error(error, source_name(rail))
          return
       end if
-      call prepared%wheel%locate_y(0.0_wp, s0, found)
+      prepared%y_tape = tape_circle_position(track)
+      call prepared%wheel%locate_y(prepared%y_tape, s0, found)
       if (.not. found) then
-         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross y = 0; '// &
-            'expected its origin on the tape circle (S1002: flange back at y = -70 mm)', &
+         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross its '// &
+            'tape circle y = '//str(prepared%y_tape)//' mm (flange_back_position '// &
+            str(track%flange_back_position)//' + tape_circle_offset '// &
+            str(track%tape_circle_offset)//' mm); expected the flange back at y = -70 mm for '// &
+            'an origin on the tape circle (S1002), at y = 0 for a MiniProf wheel', &
             stat_invalid_input)
          return
       end if
