@@ -34,8 +34,6 @@ module shcontact_normal_loading
    real(wp), parameter :: grow = 1.25_wp, shrink = 0.8_wp
    !> Keep the bracket this far (relative) inside the largest approach the table allows.
    real(wp), parameter :: table_margin = 1.0e-12_wp
-   !> Gap of the point that closes a table at a basin limit (mm): far beyond any approach.
-   real(wp), parameter :: wall_gap = 1.0e3_wp
 
    !> One patch prepared for the normal solve: options, material, the reduced geometry and the
    !> Hertz shape at the reference point. It is also the solve's workspace.
@@ -177,7 +175,9 @@ contains
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
    !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
-   !> not touch at the solution come back cleared (zero strips, zero load).
+   !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
+   !> stays inside its own basin ([[confine_to_basin]]): neighbours that meet under load split
+   !> the merged region at the ridge between them, and no region is counted twice.
    subroutine solve_vertical_load(contacts, f_z, patches, dz, error)
       !> The prepared patches.
       type(normal_contact_type), intent(in), target :: contacts(:)
@@ -258,11 +258,12 @@ contains
    end subroutine solve_vertical_load
 
    !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
-   !> "Neighbouring patches"): past a basin limit the table runs into a neighbouring patch's
-   !> basin, which that patch carries, so it is cut one point beyond the limit and that point is
-   !> given the gap `wall_gap`: the strip method's contact interval then stops at the limit, and
-   !> N(δ) stays continuous when the contact reaches the ridge (growing across it would add the
-   !> neighbour's already penetrated region at once). `confined` is false, and `basin` untouched,
+   !> "Neighbouring patches under load"): past a basin limit the table runs into a neighbouring
+   !> patch's basin, which that patch carries, so it is cut one point beyond the limit and that
+   !> point is raised to the table's largest gap. The strip method's contact interval then stops
+   !> within h of the limit, N(δ) stays continuous when the contact reaches the ridge (growing
+   !> across it would add the neighbour's already penetrated region at once), and the approach is
+   !> bounded on that side as at an open table end. `confined` is false, and `basin` untouched,
    !> when no limit lies inside the table or the table is malformed (prepare_semihertz reports).
    pure subroutine confine_to_basin(geometry, basin, confined)
       type(patch_geometry_type), intent(in) :: geometry
@@ -306,8 +307,8 @@ contains
       basin%curv_b = geometry%curv_b(j_lo:j_hi)
       basin%gamma = geometry%gamma(j_lo:j_hi)
       basin%r_wheel = geometry%r_wheel(j_lo:j_hi)
-      if (j_lo < i_lo) basin%gap(1) = wall_gap
-      if (j_hi > i_hi) basin%gap(j_hi - j_lo + 1) = wall_gap
+      if (j_lo < i_lo) basin%gap(1) = maxval(geometry%gap)
+      if (j_hi > i_hi) basin%gap(j_hi - j_lo + 1) = maxval(geometry%gap)
       confined = .true.
    end subroutine confine_to_basin
 
