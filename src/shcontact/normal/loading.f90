@@ -285,10 +285,10 @@ contains
       i_ref = 1 + nint(-geometry%y(1)/geometry%h)
       i_lo = 1
       i_hi = n
-      if (geometry%basin_lower > geometry%y(1)) &
-         i_lo = min(i_ref, 1 + nint((geometry%basin_lower - geometry%y(1))/geometry%h))
-      if (geometry%basin_upper < geometry%y(n)) &
-         i_hi = max(i_ref, 1 + nint((geometry%basin_upper - geometry%y(1))/geometry%h))
+      if (geometry%basin_lower > geometry%y(1)) i_lo = min(i_ref, &
+         1 + nint((min(geometry%basin_lower, geometry%y(n)) - geometry%y(1))/geometry%h))
+      if (geometry%basin_upper < geometry%y(n)) i_hi = max(i_ref, &
+         1 + nint((max(geometry%basin_upper, geometry%y(1)) - geometry%y(1))/geometry%h))
       j_lo = max(1, i_lo - 1)
       j_hi = min(n, i_hi + 1)
       basin%y_track = geometry%y_track
