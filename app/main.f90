@@ -1,19 +1,40 @@
 !> The shcontact command-line program: parse the command line, call the library, map errors to
-!> exit statuses.
+!> exit statuses (0 ok, 1 usage, 2 invalid input, 3 I/O failure, 4 some sweep cases failed,
+!> 5 numerical failure, 6 no contact).
 program shcontact_main
-   use shcontact, only: shcontact_version
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use shcontact, only: shcontact_version, error_type
+   use shcontact_app_cli, only: cli_type, parse_command_line, usage_text
+   use shcontact_app_commands, only: run_command, merge_command, profiles_command, &
+      geometry_command, report_error
    implicit none
-   integer :: nargs
-   character(len=256) :: arg
+   type(cli_type) :: cli
+   type(error_type), allocatable :: error
+   integer :: status
 
-   nargs = command_argument_count()
-   if (nargs >= 1) then
-      call get_command_argument(1, arg)
-      select case (trim(arg))
-      case ('--version', '-V')
-         print '(a)', 'shcontact '//shcontact_version
-         stop
-      end select
+   call parse_command_line(cli, error)
+   if (allocated(error)) then
+      status = report_error(error)
+      write (error_unit, '(a)') usage_text()
+      stop status, quiet = .true.
    end if
-   print '(a)', 'shcontact '//shcontact_version//': the case runner is not built yet; try --version'
+   select case (cli%command)
+   case ('help')
+      write (output_unit, '(a)') 'shcontact '//shcontact_version// &
+         ': wheel-rail rolling contact (semi-Hertzian normal contact, FASTSIM_SH)'
+      write (output_unit, '(a)') usage_text()
+      status = 0
+   case ('version')
+      write (output_unit, '(a)') 'shcontact '//shcontact_version
+      status = 0
+   case ('merge')
+      status = merge_command(cli)
+   case ('profiles')
+      status = profiles_command(cli)
+   case ('geometry')
+      status = geometry_command(cli)
+   case default
+      status = run_command(cli)
+   end select
+   stop status, quiet = .true.
 end program shcontact_main

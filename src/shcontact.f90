@@ -44,6 +44,11 @@ module shcontact
       solve_tangential_patches
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
       state_slip
+   ! api
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      patch_result_type, contact_fields_type, load_profile, load_normal_force, &
+      load_vertical_force, load_approach, load_mode_name, max_patches, patch_value_count, &
+      result_value_count, patch_values, result_values
    implicit none
    private
 
@@ -68,5 +73,9 @@ module shcontact
       solve_fastsim, prepare_fastsim_sh, solve_fastsim_sh, track_forces_type, &
       solve_tangential, solve_tangential_patches, tangential_patch_type, state_exterior, &
       state_adhesion, state_slip
+   public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type, &
+      contact_fields_type, load_profile, load_normal_force, load_vertical_force, load_approach, &
+      load_mode_name, max_patches, patch_value_count, result_value_count, patch_values, &
+      result_values
 
 end module shcontact

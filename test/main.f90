@@ -26,6 +26,12 @@ program tester
    use test_kalker, only: collect_kalker
    use test_fastsim, only: collect_fastsim
    use test_fastsim_sh, only: collect_fastsim_sh
+   use test_config, only: collect_config
+   use test_hdf5io, only: collect_hdf5io
+   use test_app, only: collect_app
+   use test_api, only: collect_api
+   use test_examples, only: collect_examples
+   use test_validation, only: collect_validation
    use test_performance_invariants, only: collect_performance_invariants
    implicit none
 
@@ -51,6 +57,12 @@ program tester
       new_testsuite('kalker', collect_kalker), &
       new_testsuite('fastsim', collect_fastsim), &
       new_testsuite('fastsim_sh', collect_fastsim_sh), &
+      new_testsuite('config', collect_config), &
+      new_testsuite('hdf5io', collect_hdf5io), &
+      new_testsuite('app', collect_app), &
+      new_testsuite('api', collect_api), &
+      new_testsuite('examples', collect_examples), &
+      new_testsuite('validation', collect_validation), &
       new_testsuite('performance_invariants', collect_performance_invariants) &
       ]
 

@@ -11,7 +11,7 @@ module test_fastsim_sh
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
       method_fastsim, method_fastsim_sh, bound_ellipsoidal, bound_parabolic, bound_weighted, &
       bound_weighted_slip, bound_clipped, spin_additive, spin_uniform, spin_scaled, &
-      spin_geometric, spin_flexibility_longitudinal, parse_method, parse_bound, &
+      spin_geometric, spin_flexibility_longitudinal, spin_flexibility_spin, parse_method, parse_bound, &
       parse_spin_model, parse_kalker_scheme, parse_spin_flexibility, bound_name, method_name, &
       spin_model_name
    use shcontact_tangential_creepage, only: creepage_type
@@ -190,6 +190,10 @@ contains
       type(tangential_options_type) :: options
       options%bound = bound
       options%n_elements = nx
+      ! Kalker's spin flexibility for the −φy slip: the setting under which FASTSIM_SH equals
+      ! FASTSIM on a Hertzian patch (the library default follows seed eq 21 instead).
+      options%spin_flexibility = spin_flexibility_spin
+      options%spin_model = spin_additive
       if (present(spin_model)) options%spin_model = spin_model
       options%fields = .false.
       if (present(fields)) options%fields = fields

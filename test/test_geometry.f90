@@ -51,6 +51,8 @@ contains
          new_unittest('a_with_reference_normal', test_a_reference_normal), &
          new_unittest('rail_without_gauge_face', test_no_gauge_face), &
          new_unittest('wheel_without_origin', test_wheel_without_origin), &
+         new_unittest('tape_circle_from_flange_back', test_tape_circle), &
+         new_unittest('miniprof_wheel_rolling_radius', test_miniprof_wheel), &
          new_unittest('no_overlap_is_no_contact', test_no_overlap), &
          new_unittest('geometry_table_written', test_write_table), &
          new_unittest('manchester_rail_position', test_manchester_rail), &
@@ -506,12 +508,26 @@ contains
       if (allocated(error)) return
       call check(error, patches(2)%gap0, 0.2_wp, thr=1.0e-9_wp, message='second gap0')
       if (allocated(error)) return
-      ! The two tables meet at the ridge y_wheel = 0 and do not overlap.
-      call check(error, patches(1)%y_track + patches(1)%y(patches(1)%size()), 750.0_wp, &
-         thr=0.06_wp, message='first table ends at the ridge')
+      ! The two basins meet at the ridge y_wheel = 0 (γ₀ = 0: table y is track y)...
+      call check(error, patches(1)%y_track + patches(1)%basin_upper, 750.0_wp, thr=0.06_wp, &
+         message='first basin ends at the ridge')
       if (allocated(error)) return
-      call check(error, patches(2)%y_track + patches(2)%y(1), 750.0_wp, thr=0.06_wp, &
-         message='second table starts at the ridge')
+      call check(error, patches(2)%y_track + patches(2)%basin_lower, 750.0_wp, thr=0.06_wp, &
+         message='second basin starts at the ridge')
+      if (allocated(error)) return
+      call check(error, patches(1)%basin_lower <= patches(1)%y(1) .and. &
+         patches(2)%basin_upper >= patches(2)%y(patches(2)%size()), &
+         message='no neighbour on the outer sides: the basins reach the table ends')
+      if (allocated(error)) return
+      ! ...and the deeper patch's table runs on into the second basin, where its gap is the
+      ! second minimum's 0.2 mm (the second bump's lowest point is at table y = 16).
+      i = nint(16.0_wp/patches(1)%h) + nint(-patches(1)%y(1)/patches(1)%h) + 1
+      call check(error, i <= patches(1)%size(), message='first table reaches the second minimum')
+      if (allocated(error)) return
+      call check(error, patches(1)%y(i), 16.0_wp, thr=1.0e-9_wp, message='table point at y = 16')
+      if (allocated(error)) return
+      call check(error, patches(1)%gap(i), 0.2_wp, thr=1.0e-8_wp, &
+         message='second minimum in the first table')
    end subroutine test_two_patches
 
    !> A wheel shifted far beyond the rail: no contact, with a message.
@@ -667,8 +683,83 @@ contains
       call check(error, allocated(err), message='wheel without origin accepted')
       if (allocated(error)) return
       call check(error, index(err%message, 'circle wheel') > 0 .and. &
-         index(err%message, 'y = 0') > 0, message='message: '//err%message)
+         index(err%message, 'tape circle y = 0') > 0, message='message: '//err%message)
    end subroutine test_wheel_without_origin
+
+   !> The tape circle lies tape_circle_offset from the flange back: a circle wheel with its
+   !> origin moved 70 mm onto the flange back (MiniProf style) and flange_back_position = 0 gives
+   !> the patch of the same wheel with its origin on the tape circle and the default −70 (same
+   !> place, r₀ = r_nom at the lowest point); with tape_circle_offset = 75 the tape circle is
+   !> 5 mm to the field side of the lowest point, so r₀ = r_nom + R − √(R² − 5²).
+   subroutine test_tape_circle(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type), allocatable :: ref(:), moved(:)
+      type(profile_type) :: wheel
+      type(track_type) :: track
+      real(wp), parameter :: radius = 50.0_wp
+      integer :: n
+
+      wheel = circle_wheel(radius, 20.0_wp, 201)
+      call patches_for(wheel, flat_rail(), upright_track(), wheelset_position_type(), ref, error)
+      if (allocated(error)) return
+      call check(error, ref(1)%r0, r_nom, thr=1.0e-9_wp, message='r0 at the tape circle')
+      if (allocated(error)) return
+      wheel%y = wheel%y + 70.0_wp
+      track = upright_track()
+      track%flange_back_position = 0.0_wp
+      call patches_for(wheel, flat_rail(), track, wheelset_position_type(), moved, error)
+      if (allocated(error)) return
+      n = ref(1)%size()
+      call check(error, moved(1)%size(), n, message='table size')
+      if (allocated(error)) return
+      call check(error, moved(1)%y_track, ref(1)%y_track, thr=1.0e-9_wp, message='y_track')
+      if (allocated(error)) return
+      call check(error, moved(1)%y_wheel, ref(1)%y_wheel + 70.0_wp, thr=1.0e-9_wp, &
+         message='y_wheel in the moved profile coordinates')
+      if (allocated(error)) return
+      call check(error, maxval(abs(moved(1)%r_wheel - ref(1)%r_wheel)) < 1.0e-9_wp, &
+         message='rolling radii')
+      if (allocated(error)) return
+      track%tape_circle_offset = 75.0_wp
+      call patches_for(wheel, flat_rail(), track, wheelset_position_type(), moved, error)
+      if (allocated(error)) return
+      call check(error, moved(1)%r0, r_nom + radius - sqrt(radius**2 - 25.0_wp), thr=1.0e-8_wp, &
+         message='r0 with the tape circle 5 mm off the contact')
+   end subroutine test_tape_circle
+
+   !> A measured MiniProf wheel (origin at the flange back) on the built-in UIC60 1:40 at
+   !> y_ws = 0 with flange_back_position = 0: a tread contact (γ₀ < 0, |γ₀| < 0.1 rad) with a
+   !> rolling radius within 3 mm of the nominal 460 mm (with the tape circle taken at the origin,
+   !> the flange back, r₀ was 479 mm). Skipped when ../shared is absent.
+   subroutine test_miniprof_wheel(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: file = profiles_dir//'Car7216_0001r.whl'
+      type(patch_geometry_type), allocatable :: patches(:)
+      type(profile_type) :: wheel, rail
+      type(track_type) :: track
+      type(lib_error), allocatable :: err
+      integer, allocatable :: lines(:)
+      logical :: there
+
+      inquire (file=file, exist=there)
+      if (.not. there) then
+         call skip_test(error, file//' is absent')
+         return
+      end if
+      call read_profile(file, wheel, err, line_of_point=lines)
+      if (.not. allocated(err)) call clean_profile(wheel, err, lines)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      track%flange_back_position = 0.0_wp
+      call patches_for(wheel, rail, track, wheelset_position_type(), patches, error)
+      if (allocated(error)) return
+      call check(error, patches(1)%r0, 460.0_wp, thr=3.0_wp, message='r0 near nominal')
+      if (allocated(error)) return
+      call check(error, patches(1)%gamma0 < 0.0_wp .and. patches(1)%gamma0 > -0.1_wp, &
+         message='tread contact angle (CONTACT sign: < 0 on the right tread)')
+   end subroutine test_miniprof_wheel
 
    ! ---------------------------------------------------------------- Manchester benchmark
 
@@ -796,8 +887,8 @@ contains
    end subroutine reference_value
 
    !> y_ws = 5 mm (cf. physics.md §5.6, where CONTACT finds two regions near this shift): the
-   !> tread and the gauge corner both touch or nearly so, and both are found, with tables that do
-   !> not overlap.
+   !> tread and the gauge corner both touch or nearly so, and both are found, with basins that
+   !> meet at the ridge between them and tables that run on into the neighbour's basin.
    subroutine test_manchester_two_patches(error)
       type(error_type), allocatable, intent(out) :: error
       type(prepared_profiles_type) :: prep
@@ -826,10 +917,16 @@ contains
       call check(error, abs(patches(corner)%gamma0) > 2.0_wp*abs(patches(tread)%gamma0), &
          message='gauge corner steeper than the tread')
       if (allocated(error)) return
-      ! Tables: the tread patch (field side) starts beyond the end of the corner patch.
-      call check(error, patches(tread)%y_track + patches(tread)%y(1)*cos(patches(tread)%gamma0) &
-         >= patches(corner)%y_track + patches(corner)%y(patches(corner)%size()) &
-         *cos(patches(corner)%gamma0) - 0.1_wp, message='tables overlap')
+      ! Basins: the tread's (field side) begins where the corner's ends, at the ridge between
+      ! them; the tables run on past it, each into the other's basin.
+      associate (t => patches(tread), c => patches(corner))
+         call check(error, t%y_track + t%basin_lower*cos(t%gamma0), &
+            c%y_track + c%basin_upper*cos(c%gamma0), thr=0.1_wp, message='basins meet')
+         if (allocated(error)) return
+         call check(error, t%y_track + t%y(1)*cos(t%gamma0) < c%y_track .and. &
+            c%y_track + c%y(c%size())*cos(c%gamma0) > t%y_track, &
+            message='each table reaches the other reference point')
+      end associate
    end subroutine test_manchester_two_patches
 
    !> Scan y_ws = 0…10 mm in steps of 0.05 mm: the deepest contact point moves continuously

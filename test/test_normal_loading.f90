@@ -10,6 +10,11 @@ module test_normal_loading
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_options, only: normal_options_type, method_hertz
+   use shcontact_profile_points, only: profile_type
+   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_geometry_track, only: track_type, wheelset_position_type
+   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
+      prepare_profiles, find_contact_patches
    use shcontact_normal_hertz, only: hertz_type, hertz_from_load, hertz_from_approach
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_approach, solve_load, solve_vertical_load
@@ -36,7 +41,9 @@ contains
          new_unittest('two_patches_hertz_method', test_two_patches_hertz), &
          new_unittest('second_patch_apart', test_patch_apart), &
          new_unittest('vertical_load_errors', test_vertical_errors), &
-         new_unittest('workspace_reuse', test_reuse) &
+         new_unittest('workspace_reuse', test_reuse), &
+         new_unittest('patch_confined_to_basin', test_confined), &
+         new_unittest('default_case_ty_scan', test_ty_scan) &
          ]
    end subroutine collect_normal_loading
 
@@ -313,5 +320,131 @@ contains
       if (allocated(error)) return
       call check(error, patch%n_strips, 37)
    end subroutine test_reuse
+
+   !> A patch is confined to its own basin: with basin_upper = L = 1 mm on g = B y² (constant
+   !> A, B), the contact interval at an approach that would reach y = c > L stops at U within h
+   !> of L (the closing point beyond L has the table's largest gap, so ψ crosses zero a small
+   !> fraction of h past L), and since strips are independent and N'(y) ∝ δ_i ∝ c² − y², the
+   !> load is the unconfined one times [c²(c + U) − (c³ + U³)/3]/(4c³/3) (midpoint rule: 1e-4).
+   !> A prescribed force beyond that approach is matched with the interval still ending at L.
+   subroutine test_confined(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: free, confined
+      type(normal_patch_type) :: p_free, p_conf
+      type(material_type) :: mat
+      real(wp), parameter :: limit = 1.0_wp, approach = 0.02_wp
+      real(wp) :: c, u, ratio
+
+      call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp)
+      call prepare_normal_contact(free, geom, options, mat, err)
+      geom%basin_upper = limit
+      if (.not. allocated(err)) call prepare_normal_contact(confined, geom, options, mat, err)
+      if (.not. allocated(err)) call solve_approach(free, approach, p_free, err)
+      if (.not. allocated(err)) call solve_approach(confined, approach, p_conf, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      c = -(p_free%y(1) - 0.5_wp*p_free%dy)
+      call check(error, c > 2.0_wp*limit, message='the free contact reaches beyond the limit')
+      if (allocated(error)) return
+      call check(error, p_conf%y(1) - 0.5_wp*p_conf%dy, -c, thr=1.0e-12_wp, &
+         message='lower end unchanged')
+      if (allocated(error)) return
+      u = p_conf%y(p_conf%n_strips) + 0.5_wp*p_conf%dy
+      call check(error, u >= limit .and. u < limit + geom%h, message='upper end at the limit')
+      if (allocated(error)) return
+      ratio = (c**2*(c + u) - (c**3 + u**3)/3.0_wp)/(4.0_wp*c**3/3.0_wp)
+      call check(error, p_conf%load, ratio*p_free%load, thr=1.0e-4_wp, rel=.true., &
+         message='load of the confined strips')
+      if (allocated(error)) return
+      call solve_load(confined, 2.0_wp*p_free%load, p_conf, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, p_conf%load, 2.0_wp*p_free%load, thr=1.0e-10_wp, rel=.true., &
+         message='force matched')
+      if (allocated(error)) return
+      u = p_conf%y(p_conf%n_strips) + 0.5_wp*p_conf%dy
+      call check(error, u >= limit .and. u < limit + geom%h, &
+         message='upper end at the limit under the larger force')
+   end subroutine test_confined
+
+   !> The default case (built-in S1002 on the built-in UIC60 1:40) at t_y = 0…10 mm in steps of
+   !> 0.5 mm solves at every position under N = 64.7 kN on the deepest patch and under
+   !> F_z = 64.7 kN shared by all patches. At t_y = 5 mm the tread and the gauge corner (0.004 mm
+   !> off) both carry, and the tread contact reaches the ridge between them (the two regions
+   !> meet): there each patch stops at its basin limit, so no region is counted twice.
+   subroutine test_ty_scan(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(profile_type) :: wheel, rail
+      type(prepared_profiles_type) :: prep
+      type(patch_geometry_type), allocatable :: geom(:)
+      type(normal_options_type) :: options
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(normal_patch_type) :: single
+      type(material_type) :: mat
+      real(wp), parameter :: load = 64700.0_wp
+      character(len=16) :: at
+      real(wp) :: t_y, dz, f_z, y_lo, y_hi
+      integer :: i, k
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), prep, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do i = 0, 20
+         t_y = 0.5_wp*i
+         write (at, '(a,f4.1,a)') 't_y = ', t_y, ': '
+         call find_contact_patches(prep, wheelset_position_type(y_ws=t_y), geom, err)
+         if (allocated(err)) then
+            call test_failed(error, at//err%message); return
+         end if
+         if (allocated(contacts)) deallocate (contacts, patches)
+         allocate (contacts(size(geom)), patches(size(geom)))
+         do k = 1, size(geom)
+            call prepare_normal_contact(contacts(k), geom(k), options, mat, err)
+            if (allocated(err)) exit
+         end do
+         if (.not. allocated(err)) call solve_load(contacts(1), load, single, err)
+         if (allocated(err)) then
+            call test_failed(error, at//'force: '//err%message); return
+         end if
+         call check(error, single%load, load, thr=1.0e-10_wp, rel=.true., message=at//'N')
+         if (allocated(error)) return
+         call solve_vertical_load(contacts, load, patches, dz, err)
+         if (allocated(err)) then
+            call test_failed(error, at//'vertical: '//err%message); return
+         end if
+         f_z = 0.0_wp
+         do k = 1, size(geom)
+            f_z = f_z + patches(k)%load*cos(geom(k)%gamma0)
+            if (.not. (patches(k)%load > 0.0_wp)) cycle
+            y_lo = patches(k)%y(1) - 0.5_wp*patches(k)%dy
+            y_hi = patches(k)%y(patches(k)%n_strips) + 0.5_wp*patches(k)%dy
+            call check(error, y_lo > geom(k)%basin_lower - geom(k)%h .and. &
+               y_hi < geom(k)%basin_upper + geom(k)%h, message=at//'contact inside its basin')
+            if (allocated(error)) return
+         end do
+         call check(error, f_z, load, thr=1.0e-10_wp, rel=.true., message=at//'F_z')
+         if (allocated(error)) return
+         if (i == 10) then
+            call check(error, size(geom), 2, message=at//'tread and gauge corner')
+            if (allocated(error)) return
+            call check(error, patches(2)%load > 0.2_wp*load, message=at//'both carry')
+            if (allocated(error)) return
+            call check(error, patches(1)%y(1) - 0.5_wp*patches(1)%dy, geom(1)%basin_lower, &
+               thr=geom(1)%h, message=at//'the tread contact reaches the ridge')
+            if (allocated(error)) return
+         end if
+      end do
+   end subroutine test_ty_scan
 
 end module test_normal_loading

@@ -3,59 +3,52 @@
 !>     fpm run --profile release --example shcontact-bench [-- OPTIONS]
 !>
 !> Options:
+!>     --case FILE            the case and its design of experiments, an app namelist file
+!>                            (default examples/doe_8000.nml: the seed's DOE on the default case)
 !>     --runs N               timed repetitions per item (default 15); median, min and max
 !>     --batch-time S         target length of one timed batch in s (default 0.01)
-!>     --quick                --runs 5 --batch-time 0.002, two DOE runs (for slow builds)
-!>     --profiles DIR         directory of the Manchester profiles (default ../shared/profiles);
-!>                            the built-in S1002 and UIC60 are used when it is absent
-!>     --table-gap G          contact_options%table_gap (mm, default the library's 2 mm): how
-!>                            far the strip tables reach; the geometry cost grows with it
-!>     --output FILE          HDF5 summary of the DOE (default build/shcontact_bench_doe.h5)
+!>     --doe-runs N           repetitions of each DOE run (default 5)
+!>     --quick                --runs 5 --batch-time 0.002 --doe-runs 2 (for slow builds)
+!>     --only SECTION         run one section: geometry, tangential, full or doe (no checks)
+!>     --output FILE          HDF5 file of the DOE (default build/shcontact_bench_doe.h5)
 !>     --save-results FILE    write the forces of the checked cases to a text file
 !>     --compare-results FILE compare the forces with a file saved by another build
-!>     --only SECTION         run one section: geometry, tangential, full or doe (no checks)
 !>     --alloc-check N        only solve N full cases and N DOE cases, then stop (run it under
 !>                            valgrind with N and 2N: the allocation count must not change)
 !>
-!> The case is the seed's: S1002 on UIC60 1:40 (Manchester profiles), centred wheelset, normal
-!> force 64.7 kN, G = 82670 MPa, ν = 0.27, μ = 0.3; creepages at the geometric contact point
-!> ν_x = 0.58e-3, ν_y = 0.061e-3, φ = 2.74e-4 rad/mm (../shared/reference/README.md).
+!> The case is the app's (shcontact_io_config): by default the built-in S1002 on UIC60 1:40 at
+!> t_y = 4.733 mm, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27, μ = 0.3, 100 strips × 50 elements,
+!> weighted bound; the single-case items use its creepages (ν_x = 0.58e-3, ν_y = 0.061e-3,
+!> φ = 2.74e-4 rad/mm), the DOE its sweep.
 program shcontact_bench
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options, output_unit, &
       error_unit
    use omp_lib, only: omp_get_num_procs, omp_get_max_threads
-   use hdf5, only: h5open_f, h5close_f
-   use shcontact, only: wp, error_type, material_type, profile_type, read_profile, clean_profile, &
-      builtin_profile, track_type, wheelset_position_type, contact_options_type, &
-      prepared_profiles_type, prepare_profiles, find_contact_patches, patch_geometry_type, &
-      normal_options_type, normal_contact_type, prepare_normal_contact, solve_load, &
-      normal_patch_type, tangential_options_type, march_workspace_type, prepare_fastsim_sh, &
-      creepage_type, tangential_patch_type, solve_tangential, bound_name, shcontact_version
+   use shcontact, only: wp, error_type, material_type, wheelset_position_type, &
+      find_contact_patches, patch_geometry_type, normal_options_type, normal_contact_type, &
+      prepare_normal_contact, solve_load, normal_patch_type, tangential_options_type, &
+      march_workspace_type, prepare_fastsim_sh, creepage_type, tangential_patch_type, &
+      solve_tangential, bound_name, parse_bound, parse_spin_model, shcontact_version
    use shcontact_normal_options, only: method_hertz
    use shcontact_tangential_options, only: bound_weighted
-   use shcontact_tangential_march, only: solve_prepared
+   use shcontact_io_config, only: case_config_type, case_point_type, load_config, axis_load
+   use shcontact_case_runner, only: run_setup_type, prepare_run
+   use shcontact_case_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep
    use bench_timing, only: kernel_type, timing_type, time_kernel, wall_time, median_of
    use bench_kernels, only: geometry_kernel, normal_prepare_kernel, normal_load_kernel, &
       sh_prepare_kernel, fastsim_prepare_kernel, solve_kernel, full_case_kernel
-   use bench_summary, only: doe_table_type, write_doe_summary
-   use bench_doe, only: doe_creepages, solve_doe, reserve_table
+   use bench_doe, only: doe_table_type, solve_doe, reserve_table
    implicit none
 
-   real(wp), parameter :: case_load = 64700.0_wp
-   type(creepage_type), parameter :: headline = creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp)
    integer, parameter :: sizes(3) = [25, 50, 100]
    integer, parameter :: n_bounds = 5
-   !> DOE grid: 20 values per creepage, 8000 cases, default discretisation.
-   integer, parameter :: doe_points = 20, doe_strips = 100, doe_elements = 50
 
    type bench_config_type
       integer :: runs = 15
       integer :: doe_runs = 5
       real(wp) :: batch_time = 0.01_wp
-      character(len=:), allocatable :: profiles, output, save_file, compare_file
+      character(len=:), allocatable :: case_file, output, save_file, compare_file, only
       integer :: alloc_check = 0
-      character(len=:), allocatable :: only
-      real(wp) :: table_gap = -1.0_wp
    end type bench_config_type
 
    !> The figures the targets of issue 9 are about (negative: not measured in this run).
@@ -66,51 +59,43 @@ program shcontact_bench
       real(wp) :: ratio_solve(3*n_bounds) = -1.0_wp, ratio_prep_solve(3*n_bounds) = -1.0_wp
       !> Full FASTSIM_SH case at 50 x 50 and 100 x 50, forces only (s).
       real(wp) :: full50 = -1.0_wp, full100 = -1.0_wp
-      !> DOE end to end with 1 and 2 threads (s).
+      !> DOE through the app's sweep driver with 1 and 2 threads (s).
       real(wp) :: doe1 = -1.0_wp, doe2 = -1.0_wp
    end type summary_type
 
    type(bench_config_type) :: config
    type(summary_type) :: summary
+   type(case_config_type) :: case_config
+   type(run_setup_type) :: setup
+   type(case_point_type) :: point
    type(material_type) :: material
-   type(profile_type) :: wheel, rail
-   type(track_type) :: track
-   type(contact_options_type) :: contact_options
    type(wheelset_position_type) :: position
-   type(prepared_profiles_type) :: profiles
+   type(normal_options_type) :: normal_options
+   type(tangential_options_type) :: tangential_options
+   type(creepage_type) :: headline
    type(patch_geometry_type), allocatable :: patches(:)
    type(error_type), allocatable :: error
-   character(len=:), allocatable :: profile_note
    real(wp), allocatable :: saved(:)
-   integer :: hstat
-   real(wp) :: t0, t_profiles
+   real(wp) :: case_load, t0, t_setup
 
    call read_arguments(config)
-   call load_profiles(config%profiles, wheel, rail, track, profile_note)
-   position = wheelset_position_type(y_ws=0.0_wp)
-   if (config%table_gap > 0.0_wp) contact_options%table_gap = config%table_gap
+   call load_config(config%case_file, [character(len=len(config%output) + 12) :: &
+      'output%file='//config%output], case_config, error)
+   call stop_on(error, config%case_file)
    t0 = wall_time()
-   call prepare_profiles(wheel, rail, track, contact_options, profiles, error)
-   t_profiles = wall_time() - t0
-   call stop_on(error, 'prepare_profiles')
-   call find_contact_patches(profiles, position, patches, error)
+   call prepare_run(case_config, setup, error)
+   t_setup = wall_time() - t0
+   call stop_on(error, 'prepare_run')
+   call case_of_run()
+   call find_contact_patches(setup%prepared, position, patches, error)
    call stop_on(error, 'find_contact_patches')
-   call h5open_f(hstat)
-   if (hstat /= 0) call fail('cannot initialise the HDF5 library')
 
    if (config%alloc_check > 0) then
       call allocation_run(config%alloc_check)
-      call h5close_f(hstat)
       stop
    end if
 
    call print_header()
-   write (output_unit, '(a)') 'case: '//profile_note//', y_ws = 0, Fn = 64.7 kN, G = 82670 MPa, '// &
-      'nu = 0.27, mu = 0.3; creepages nu_x = 0.58e-3, nu_y = 0.061e-3, phi = 2.74e-4 rad/mm'
-   write (output_unit, '(a,i0,a,es9.2,a)') 'each item: ', config%runs, ' timed batches of about ', &
-      config%batch_time, ' s; time per call in microseconds'
-   write (output_unit, '(a,f0.1,a)') 'profile smoothing and sampling (once per profile pair, '// &
-      'one run): ', 1.0e3_wp*t_profiles, ' ms'
    allocate (saved(0))
    if (wanted('geometry')) call bench_geometry_and_normal()
    if (wanted('tangential')) call bench_tangential()
@@ -119,7 +104,6 @@ program shcontact_bench
    if (len(config%only) == 0) call check_results()
    call print_summary()
    call print_load('load at the end')
-   call h5close_f(hstat)
 
 contains
 
@@ -135,8 +119,9 @@ contains
       type(bench_config_type), intent(inout) :: config
       character(len=512) :: arg, val
       integer :: i, n, stat
+      logical :: flag
 
-      config%profiles = '../shared/profiles'
+      config%case_file = 'examples/doe_8000.nml'
       config%output = 'build/shcontact_bench_doe.h5'
       config%save_file = ''
       config%compare_file = ''
@@ -148,69 +133,76 @@ contains
          val = ''
          if (i < n) call get_command_argument(i + 1, val)
          stat = 0
+         flag = .false.
          select case (trim(arg))
          case ('--quick')
             config%runs = 5
             config%doe_runs = 2
             config%batch_time = 0.002_wp
-            i = i - 1
+            flag = .true.
+         case ('--case')
+            config%case_file = trim(val)
          case ('--runs')
             read (val, *, iostat=stat) config%runs
             if (stat == 0 .and. config%runs < 1) stat = 1
+         case ('--doe-runs')
+            read (val, *, iostat=stat) config%doe_runs
+            if (stat == 0 .and. config%doe_runs < 1) stat = 1
          case ('--batch-time')
             read (val, *, iostat=stat) config%batch_time
             if (stat == 0 .and. .not. (config%batch_time > 0.0_wp)) stat = 1
-         case ('--profiles')
-            config%profiles = trim(val)
+         case ('--only')
+            config%only = trim(val)
+            if (all(config%only /= [character(len=10) :: 'geometry', 'tangential', 'full', &
+               'doe'])) stat = 1
          case ('--output')
             config%output = trim(val)
          case ('--save-results')
             config%save_file = trim(val)
          case ('--compare-results')
             config%compare_file = trim(val)
-         case ('--table-gap')
-            read (val, *, iostat=stat) config%table_gap
-            if (stat == 0 .and. .not. (config%table_gap > 0.0_wp)) stat = 1
-         case ('--only')
-            config%only = trim(val)
-            if (all(config%only /= [character(len=10) :: 'geometry', 'tangential', 'full', &
-               'doe'])) stat = 1
          case ('--alloc-check')
             read (val, *, iostat=stat) config%alloc_check
             if (stat == 0 .and. config%alloc_check < 1) stat = 1
          case default
             call fail('unknown argument '//trim(arg)//'; see the header of examples/bench/bench.f90')
          end select
-         if (stat /= 0 .or. (i == n .and. trim(arg) /= '--quick')) &
+         if (.not. flag .and. (stat /= 0 .or. i == n)) &
             call fail('bad or missing value for '//trim(arg))
-         i = i + 2
+         i = i + merge(1, 2, flag)
       end do
    end subroutine read_arguments
 
-   !> The Manchester profiles when present, else the built-in S1002 and canted UIC60.
-   subroutine load_profiles(dir, wheel, rail, track, note)
-      character(len=*), intent(in) :: dir
-      type(profile_type), intent(out) :: wheel, rail
-      type(track_type), intent(out) :: track
-      character(len=:), allocatable, intent(out) :: note
-      type(error_type), allocatable :: error
-      logical :: there
+   !> The single case of the run: the first point of its sweep with the case file's creepages;
+   !> the run must keep the geometry and the load (a DOE over tangential inputs only).
+   subroutine case_of_run()
+      integer :: k, code
 
-      inquire (file=dir//'/MBench_S1002_v3.prw', exist=there)
-      track%rail_canted = .true.
-      if (there) then
-         call read_profile(dir//'/MBench_S1002_v3.prw', wheel, error)
-         if (.not. allocated(error)) call clean_profile(wheel, error)
-         if (.not. allocated(error)) call read_profile(dir//'/MBench_UIC60_v3.prr', rail, error)
-         if (.not. allocated(error)) call clean_profile(rail, error)
-         note = 'MBench_S1002_v3.prw on MBench_UIC60_v3.prr (canted 1:40)'
-      else
-         call builtin_profile('S1002', wheel, error)
-         if (.not. allocated(error)) call builtin_profile('UIC60-canted', rail, error)
-         note = 'built-in S1002 on built-in UIC60 canted 1:40 ('//dir//' is absent)'
-      end if
-      call stop_on(error, 'reading the profiles')
-   end subroutine load_profiles
+      if (case_config%load%mode /= 'force') call fail(config%case_file// &
+         ": the benchmark needs load%mode = 'force'")
+      point = case_config%case_point(1)
+      do k = 2, case_config%n_cases()
+         if (case_config%shares_with(k, axis_load) /= 1) call fail(config%case_file// &
+            ': the sweep must vary the tangential inputs only (one normal patch)')
+      end do
+      position = setup%position
+      position%y_ws = point%t_y
+      position%roll = point%roll
+      case_load = point%normal_force
+      material = setup%material
+      material%friction = point%friction
+      normal_options = setup%normal
+      tangential_options = setup%tangential
+      call parse_bound(trim(point%bound), code, error)
+      call stop_on(error, 'bound')
+      tangential_options%bound = code
+      call parse_spin_model(trim(point%spin_model), code, error)
+      call stop_on(error, 'spin model')
+      tangential_options%spin_model = code
+      tangential_options%fields = .false.
+      headline = creepage_type(case_config%creepage%nu_x, case_config%creepage%nu_y, &
+         case_config%creepage%phi)
+   end subroutine case_of_run
 
    subroutine print_header()
       character(len=256) :: model
@@ -221,6 +213,18 @@ contains
       write (output_unit, '(a)') 'compiler: '//compiler_version()
       write (output_unit, '(a)') 'flags: '//compiler_options()
       call print_load('load at the start')
+      write (output_unit, '(a)') 'case: '//config%case_file//': '// &
+         trim(case_config%profiles%wheel)//' on '//trim(case_config%profiles%rail)//', t_y = '// &
+         real_text(point%t_y)//' mm, Fn = '//real_text(case_load)//' N, mu = '// &
+         real_text(material%friction)//', '//itoa(normal_options%n_strips)//' strips x '// &
+         itoa(tangential_options%n_elements)//' elements, bound '// &
+         bound_name(tangential_options%bound)//', spin model '//trim(point%spin_model)
+      write (output_unit, '(a)') 'single-case creepages: nu_x = '//real_text(headline%nu_x)// &
+         ', nu_y = '//real_text(headline%nu_y)//', phi = '//real_text(headline%phi)//' rad/mm'
+      write (output_unit, '(a,i0,a,es9.2,a)') 'each item: ', config%runs, &
+         ' timed batches of about ', config%batch_time, ' s; time per call in microseconds'
+      write (output_unit, '(a,f8.2,a)') 'profiles read, smoothed and sampled (prepare_run, '// &
+         'once per run, one run): ', 1.0e3_wp*t_setup, ' ms'
    end subroutine print_header
 
    !> The first "model name" of /proc/cpuinfo.
@@ -266,13 +270,14 @@ contains
       integer :: i
 
       call section('geometry and normal contact')
-      geo%profiles = profiles
+      geo%profiles = setup%prepared
       geo%position = position
       t = time_kernel(geo, config%runs, config%batch_time)
       call report(geo, t, 'geometry: contact search + strip tables, one wheel position')
       write (output_unit, '(a,i0,a,i0,a)') '      (', size(patches), ' patch(es), ', &
          patches(1)%size(), ' table points)'
       prep%geometry = patches(1)
+      prep%options = normal_options
       prep%material = material
       t = time_kernel(prep, config%runs, config%batch_time)
       call report(prep, t, 'normal: prepare_normal_contact (once per geometry)')
@@ -304,7 +309,10 @@ contains
          patch = normal_solution(sizes(i), .false.)
          hertz = normal_solution(sizes(i), .true.)
          do b = 1, n_bounds
-            options = tangential_options_type(bound=b, n_elements=sizes(i), fields=.false.)
+            options = tangential_options
+            options%bound = b
+            options%n_elements = sizes(i)
+            options%fields = .false.
             sh_prep%patch = patch
             sh_prep%material = material
             sh_prep%options = options
@@ -355,9 +363,11 @@ contains
       integer :: i, c
 
       call section('full case on reused geometry (normal solve for the load + tangential '// &
-         'preparation + solve, weighted bound, forces only unless said)')
+         'preparation + solve, forces only unless said)')
       write (output_unit, '(a)') '  FASTSIM_SH: semi-Hertz solve_load + prepare_fastsim_sh + '// &
          'solve_prepared; FASTSIM: Hertz solve_load + prepare_fastsim + solve_prepared'
+      write (output_unit, '(a,i0,a)') '  the load cycles through ', 16, &
+         ' values in [0.9, 1.1] F_n (nothing is cached between loads)'
       do i = 2, 3
          do c = 1, 2
             full%classical = c == 2
@@ -365,184 +375,158 @@ contains
             full%contact = normal_contact(sizes(i), hertz=full%classical)
             full%load = case_load
             full%material = material
-            full%options = tangential_options_type(n_elements=50, fields=.false.)
+            full%options = tangential_options
+            full%options%fields = .false.
             full%creepage = headline
             t(c, 1) = time_kernel(full, config%runs, config%batch_time)
             if (c == 1 .and. i == 2) summary%full50 = t(c, 1)%median
             if (c == 1 .and. i == 3) summary%full100 = t(c, 1)%median
             call report(full, t(c, 1), merge('FASTSIM   ', 'FASTSIM_SH', full%classical)// &
-               ' full case, '//itoa(sizes(i))//' x 50')
+               ' full case, '//itoa(sizes(i))//' x '//itoa(full%options%n_elements))
             full%options%fields = .true.
             t(c, 2) = time_kernel(full, config%runs, config%batch_time)
             call report(full, t(c, 2), merge('FASTSIM   ', 'FASTSIM_SH', full%classical)// &
-               ' full case, '//itoa(sizes(i))//' x 50, with element fields')
+               ' full case, '//itoa(sizes(i))//' x '//itoa(full%options%n_elements)// &
+               ', with element fields')
          end do
          write (output_unit, '(2x,a,f5.2,a,f5.2,a)') 'ratio FASTSIM_SH/FASTSIM, full case '// &
-            itoa(sizes(i))//' x 50: ', t(1, 1)%median/t(2, 1)%median, ' (forces), ', &
+            itoa(sizes(i))//' strips: ', t(1, 1)%median/t(2, 1)%median, ' (forces), ', &
             t(1, 2)%median/t(2, 2)%median, ' (with fields)'
       end do
    end subroutine bench_full_case
 
-   !> The 8000 cases end to end: contact search, normal solve, FASTSIM_SH preparation, the
-   !> cases, the HDF5 summary; with 1 and 2 threads.
+   !> The DOE of the case file end to end through the app's sweep driver (geometry, normal
+   !> solution, every case, the HDF5 file with its checkpoint blocks, merge), with 1 and 2
+   !> threads; and the same cases as a bare library loop on one prepared workspace.
    subroutine bench_doe()
       type(creepage_type), allocatable :: creepages(:)
       type(doe_table_type) :: table
-      real(wp), allocatable :: t_total(:), t_cases(:), t_write(:)
-      integer :: threads, r
+      type(sweep_outcome_type) :: outcome
+      type(march_workspace_type) :: ws
+      type(normal_patch_type) :: patch
+      real(wp), allocatable :: t_app(:), t_loop(:)
+      integer :: threads, r, n
 
-      call section('design of experiments: 20 x 20 x 20 creepages (nu_x, nu_y in [0, 2e-3], '// &
-         'phi in [0, 2e-3] rad/mm), '//itoa(doe_strips)//' x '//itoa(doe_elements)// &
-         ', weighted bound, HDF5 summary')
-      write (output_unit, '(a)') '  end to end from the prepared profiles: contact search, '// &
-         'normal solve, FASTSIM_SH preparation, 8000 solves, HDF5 file written and renamed'
-      creepages = doe_creepages(doe_points, 2.0e-3_wp)
-      call reserve_table(table, size(creepages))
-      allocate (t_total(config%doe_runs), t_cases(config%doe_runs), t_write(config%doe_runs))
+      n = case_config%n_cases()
+      call section('design of experiments: '//config%case_file//', '//itoa(n)//' cases')
+      creepages = run_creepages()
+      call reserve_table(table, n)
+      allocate (t_app(config%doe_runs), t_loop(config%doe_runs))
+      patch = normal_solution(normal_options%n_strips, .false.)
+      call prepare_fastsim_sh(ws, patch, material, tangential_options, error)
+      call stop_on(error, 'DOE: prepare_fastsim_sh')
+      write (output_unit, '(a)') '  app: run_sweep (shcontact_case_sweep) end to end: '// &
+         'geometry, normal solution, every case, HDF5 blocks, merged file '//config%output
+      write (output_unit, '(a)') '  library loop: solve_prepared on one prepared workspace '// &
+         'per thread, forces only, no file'
       do threads = 1, 2
          do r = 1, config%doe_runs
-            call run_doe(creepages, threads, table, t_total(r), t_cases(r), t_write(r))
+            call run_app(threads, outcome, t_app(r))
+            t0 = wall_time()
+            call solve_doe(ws, creepages, table, threads)
+            t_loop(r) = wall_time() - t0
          end do
-         write (output_unit, '(2x,a,i0,a,3(a,f8.1,a,f8.1,a,f8.1,a))') 'threads ', threads, &
-            ': ', 'total ', 1.0e3_wp*median_of(t_total), ' ms [', 1.0e3_wp*minval(t_total), &
-            ', ', 1.0e3_wp*maxval(t_total), ']; ', 'cases ', 1.0e3_wp*median_of(t_cases), &
-            ' ms [', 1.0e3_wp*minval(t_cases), ', ', 1.0e3_wp*maxval(t_cases), ']; ', &
-            'HDF5 ', 1.0e3_wp*median_of(t_write), ' ms [', 1.0e3_wp*minval(t_write), ', ', &
-            1.0e3_wp*maxval(t_write), ']'
-         if (threads == 1) summary%doe1 = median_of(t_total)
-         if (threads == 2) summary%doe2 = median_of(t_total)
+         write (output_unit, '(2x,a,i0,a,3(f8.1,a),a,3(f8.1,a),a,f6.2,a)') 'threads ', threads, &
+            ': app ', 1.0e3_wp*median_of(t_app), ' ms [', 1.0e3_wp*minval(t_app), ', ', &
+            1.0e3_wp*maxval(t_app), ']', '; library loop ', 1.0e3_wp*median_of(t_loop), &
+            ' ms [', 1.0e3_wp*minval(t_loop), ', ', 1.0e3_wp*maxval(t_loop), ']', ' (', &
+            1.0e6_wp*median_of(t_loop)/n, ' us per case)'
+         if (threads == 1) summary%doe1 = median_of(t_app)
+         if (threads == 2) summary%doe2 = median_of(t_app)
       end do
-      write (output_unit, '(2x,a,i0,a)') '(', config%doe_runs, ' runs each; summary in '// &
-         config%output//')'
-      if (any(table%status /= 0)) call fail('a DOE case failed')
-      call check_pipeline(creepages, table)
+      write (output_unit, '(2x,a,i0,a)') '(', config%doe_runs, ' runs each)'
+      if (any(table%status /= 0)) call fail('a DOE case failed in the library loop')
+      if (size(outcome%failures) > 0) call fail('a DOE case failed in the app')
+      call check_doe(creepages, table, outcome)
       call keep_array(table%fx)
       call keep_array(table%fy)
       call keep_array(table%mz)
    end subroutine bench_doe
 
-   !> One DOE run, timed as a whole and in parts.
-   subroutine run_doe(creepages, threads, table, t_total, t_cases, t_write)
-      type(creepage_type), intent(in) :: creepages(:)
+   !> The creepages of the run's cases.
+   function run_creepages() result(creepages)
+      type(creepage_type), allocatable :: creepages(:)
+      type(case_point_type) :: p
+      integer :: k
+      allocate (creepages(case_config%n_cases()))
+      do k = 1, size(creepages)
+         p = case_config%case_point(k)
+         creepages(k) = creepage_type(p%nu_x, p%nu_y, p%phi)
+      end do
+   end function run_creepages
+
+   !> One run of the app's sweep driver, timed.
+   subroutine run_app(threads, outcome, seconds)
       integer, intent(in) :: threads
-      type(doe_table_type), intent(inout) :: table
-      real(wp), intent(out) :: t_total, t_cases, t_write
-      type(patch_geometry_type), allocatable :: found(:)
-      type(normal_contact_type) :: contact
-      type(normal_patch_type) :: patch
-      type(march_workspace_type) :: ws
-      character(len=:), allocatable :: message
-      real(wp) :: t0, t1, t2
-      integer :: stat
+      type(sweep_outcome_type), intent(out) :: outcome
+      real(wp), intent(out) :: seconds
+      type(sweep_options_type) :: options
 
+      options%threads = threads
+      options%command_line = 'shcontact-bench'
       t0 = wall_time()
-      call find_contact_patches(profiles, position, found, error)
-      call stop_on(error, 'DOE: find_contact_patches')
-      call prepare_normal_contact(contact, found(1), normal_options_type(n_strips=doe_strips), &
-         material, error)
-      call stop_on(error, 'DOE: prepare_normal_contact')
-      call solve_load(contact, case_load, patch, error)
-      call stop_on(error, 'DOE: solve_load')
-      call prepare_fastsim_sh(ws, patch, material, doe_options(.false.), error)
-      call stop_on(error, 'DOE: prepare_fastsim_sh')
-      t1 = wall_time()
-      call solve_doe(ws, creepages, table, threads)
-      t2 = wall_time()
-      call write_doe_summary(config%output, table, patch%load, 'shcontact-bench DOE: '// &
-         profile_note//', y_ws = 0 mm, Fn = 64700 N, G = 82670 MPa, nu = 0.27, mu = 0.3, '// &
-         'FASTSIM_SH, bound weighted, spin model additive, '//itoa(doe_strips)// &
-         ' strips x '//itoa(doe_elements)//' elements', stat, message)
-      if (stat /= 0) call fail(message)
-      t_total = wall_time() - t0
-      t_cases = t2 - t1
-      t_write = wall_time() - t2
-   end subroutine run_doe
-
-   !> The DOE's tangential options (defaults: weighted bound, additive spin model).
-   pure function doe_options(fields) result(options)
-      logical, intent(in) :: fields
-      type(tangential_options_type) :: options
-      options = tangential_options_type(n_elements=doe_elements, fields=fields)
-   end function doe_options
+      call run_sweep(case_config, options, outcome, error)
+      seconds = wall_time() - t0
+      call stop_on(error, 'run_sweep')
+   end subroutine run_app
 
    ! ------------------------------------------------------------------------------- checks
 
-   !> The targets of issue 9 against this run's medians.
-   subroutine print_summary()
-      call section('targets (issue 9; medians of this run)')
-      if (summary%sh50_worst > 0.0_wp) write (output_unit, '(2x,a,f6.2,a,f6.2,a,a)') &
-         'FASTSIM_SH solve 50 x 50 <= 15 us: weighted ', 1.0e6_wp*summary%sh50_weighted, &
-         ' us, slowest bound ', 1.0e6_wp*summary%sh50_worst, ' us: ', &
-         verdict(summary%sh50_worst <= 15.0e-6_wp)
-      if (summary%full50 > 0.0_wp) write (output_unit, '(2x,a,f6.2,a,f6.2,a,a)') &
-         'full case (normal + tangential, geometry reused) <= 30 us: 50 x 50 ', &
-         1.0e6_wp*summary%full50, ' us, 100 x 50 ', 1.0e6_wp*summary%full100, ' us: ', &
-         verdict(summary%full50 <= 30.0e-6_wp)
-      if (summary%ratio_solve(1) > 0.0_wp) then
-         write (output_unit, '(2x,a,f5.2,a,f5.2,a,a)') 'FASTSIM_SH/FASTSIM <= 1.2 (median and '// &
-            'largest over the 3 sizes x 5 bounds): solve ', median_of(summary%ratio_solve), &
-            ', largest ', maxval(summary%ratio_solve), ': ', &
-            verdict(median_of(summary%ratio_solve) <= 1.2_wp)
-         write (output_unit, '(2x,a,f5.2,a,f5.2,a,a)') '  with the preparation from the '// &
-            'normal solution (prepare + solve): ', median_of(summary%ratio_prep_solve), &
-            ', largest ', maxval(summary%ratio_prep_solve), ': ', &
-            verdict(median_of(summary%ratio_prep_solve) <= 1.2_wp)
-      end if
-      if (summary%doe2 > 0.0_wp) write (output_unit, '(2x,a,f6.1,a,f6.1,a,a)') &
-         '8000-case DOE with HDF5 summary <= 0.5 s with 2 threads: ', 1.0e3_wp*summary%doe2, &
-         ' ms (1 thread: ', 1.0e3_wp*summary%doe1, ' ms): ', verdict(summary%doe2 <= 0.5_wp)
-      write (output_unit, '(2x,a)') 'no heap allocation per case: run --alloc-check N and 2N '// &
-         'under valgrind (doc/performance.md)'
-   end subroutine print_summary
-
-   pure function verdict(met) result(text)
-      logical, intent(in) :: met
-      character(len=:), allocatable :: text
-      if (met) then
-         text = 'met'
-      else
-         text = 'NOT met'
-      end if
-   end function verdict
-
-   !> The forces of the timed DOE equal those of the library's plain pipeline: raw profiles,
-   !> find_contact_patches (smoothing included), prepare_normal_contact, solve_load, then
-   !> solve_tangential per case with a fresh workspace layout and the element fields on.
-   subroutine check_pipeline(creepages, table)
+   !> The forces of the library loop (2 threads, one reused workspace, no fields) equal, case by
+   !> case, those of the app's sweep and those of the library's plain pipeline: the profiles as
+   !> read, find_contact_patches with the smoothing, prepare_normal_contact, solve_load, then
+   !> solve_tangential per case with a fresh preparation and the element fields on.
+   subroutine check_doe(creepages, table, outcome)
       type(creepage_type), intent(in) :: creepages(:)
       type(doe_table_type), intent(in) :: table
+      type(sweep_outcome_type), intent(in) :: outcome
       type(patch_geometry_type), allocatable :: found(:)
       type(normal_contact_type) :: contact
       type(normal_patch_type) :: patch
       type(march_workspace_type) :: ws
       type(tangential_patch_type) :: result
-      real(wp) :: diff, scale
-      integer :: k, n_equal
+      type(tangential_options_type) :: options
+      real(wp) :: diff_app, diff_pipe, scale
+      integer :: k, n_app, n_pipe
 
-      call find_contact_patches(wheel, rail, track, position, contact_options, found, error)
+      call section('checks')
+      call find_contact_patches(setup%wheel, setup%rail, setup%prepared%track, position, &
+         setup%prepared%options, found, error)
       call stop_on(error, 'pipeline: find_contact_patches')
-      call prepare_normal_contact(contact, found(1), normal_options_type(n_strips=doe_strips), &
-         material, error)
+      call prepare_normal_contact(contact, found(1), normal_options, material, error)
       call stop_on(error, 'pipeline: prepare_normal_contact')
       call solve_load(contact, case_load, patch, error)
       call stop_on(error, 'pipeline: solve_load')
+      options = tangential_options
+      options%fields = .true.
       scale = material%friction*patch%load
-      diff = 0.0_wp
-      n_equal = 0
+      diff_app = 0.0_wp
+      diff_pipe = 0.0_wp
+      n_app = 0
+      n_pipe = 0
       do k = 1, size(creepages)
-         call solve_tangential(ws, patch, material, creepages(k), doe_options(.true.), result, &
-            error)
+         call solve_tangential(ws, patch, material, creepages(k), options, result, error)
          call stop_on(error, 'pipeline: solve_tangential')
-         diff = max(diff, abs(result%fx - table%fx(k))/scale, abs(result%fy - table%fy(k))/scale)
+         diff_pipe = max(diff_pipe, abs(result%fx - table%fx(k))/scale, &
+            abs(result%fy - table%fy(k))/scale)
          if (result%fx == table%fx(k) .and. result%fy == table%fy(k) .and. &
-            result%mz == table%mz(k)) n_equal = n_equal + 1
+            result%mz == table%mz(k)) n_pipe = n_pipe + 1
+         associate (s => outcome%summaries(k))
+            diff_app = max(diff_app, abs(s%fx - table%fx(k))/scale, &
+               abs(s%fy - table%fy(k))/scale)
+            if (s%fx == table%fx(k) .and. s%fy == table%fy(k) .and. s%mz == table%mz(k)) &
+               n_app = n_app + 1
+         end associate
       end do
-      call section('checks')
-      write (output_unit, '(2x,a,i0,a,i0,a,es9.2)') 'DOE (2 threads, reused workspace, no '// &
-         'fields) vs the library pipeline (raw profiles, solve_tangential, fields): ', n_equal, &
-         ' of ', size(creepages), ' cases bitwise equal; max |dF|/(mu Fn) = ', diff
-      if (diff > 1.0e-12_wp) call fail('the benchmark forces differ from the pipeline''s')
-   end subroutine check_pipeline
+      write (output_unit, '(2x,a,i0,a,i0,a,es9.2)') 'DOE library loop vs the library pipeline '// &
+         '(profiles as read, solve_tangential, fields): ', n_pipe, ' of ', size(creepages), &
+         ' cases bitwise equal; max |dF|/(mu Fn) = ', diff_pipe
+      write (output_unit, '(2x,a,i0,a,i0,a,es9.2)') 'DOE library loop vs the app (run_sweep '// &
+         'summaries): ', n_app, ' of ', size(creepages), &
+         ' cases bitwise equal; max |dF|/(mu Fn) = ', diff_app
+      if (diff_pipe > 1.0e-12_wp .or. diff_app > 1.0e-12_wp) &
+         call fail('the benchmark forces differ from the pipeline''s or the app''s')
+   end subroutine check_doe
 
    !> Save the checked forces, or compare them with another build's.
    subroutine check_results()
@@ -591,6 +575,44 @@ contains
       saved = [saved, values]
    end subroutine keep_array
 
+   !> The targets of issue 9 against this run's medians.
+   subroutine print_summary()
+      call section('targets (issue 9; medians of this run)')
+      if (summary%sh50_worst > 0.0_wp) write (output_unit, '(2x,a,f6.2,a,f6.2,a,a)') &
+         'FASTSIM_SH solve 50 x 50 <= 15 us: weighted ', 1.0e6_wp*summary%sh50_weighted, &
+         ' us, slowest bound ', 1.0e6_wp*summary%sh50_worst, ' us: ', &
+         verdict(summary%sh50_worst <= 15.0e-6_wp)
+      if (summary%full50 > 0.0_wp) write (output_unit, '(2x,a,f6.2,a,f6.2,a,a)') &
+         'full case (normal + tangential, geometry reused) <= 30 us: 50 strips ', &
+         1.0e6_wp*summary%full50, ' us, 100 strips ', 1.0e6_wp*summary%full100, ' us: ', &
+         verdict(summary%full50 <= 30.0e-6_wp)
+      if (summary%ratio_solve(1) > 0.0_wp) then
+         write (output_unit, '(2x,a,f5.2,a,f5.2,a,a)') 'FASTSIM_SH/FASTSIM <= 1.2 (median and '// &
+            'largest over the 3 sizes x 5 bounds): solve ', median_of(summary%ratio_solve), &
+            ', largest ', maxval(summary%ratio_solve), ': ', &
+            verdict(median_of(summary%ratio_solve) <= 1.2_wp)
+         write (output_unit, '(2x,a,f5.2,a,f5.2,a,a)') '  with the preparation from the '// &
+            'normal solution (prepare + solve): ', median_of(summary%ratio_prep_solve), &
+            ', largest ', maxval(summary%ratio_prep_solve), ': ', &
+            verdict(median_of(summary%ratio_prep_solve) <= 1.2_wp)
+      end if
+      if (summary%doe2 > 0.0_wp) write (output_unit, '(2x,a,f6.1,a,f6.1,a,a)') &
+         'DOE end to end with the HDF5 file <= 0.5 s with 2 threads: ', 1.0e3_wp*summary%doe2, &
+         ' ms (1 thread: ', 1.0e3_wp*summary%doe1, ' ms): ', verdict(summary%doe2 <= 0.5_wp)
+      write (output_unit, '(2x,a)') 'no heap allocation per case: run --alloc-check N and 2N '// &
+         'under valgrind (doc/performance.md)'
+   end subroutine print_summary
+
+   pure function verdict(met) result(text)
+      logical, intent(in) :: met
+      character(len=:), allocatable :: text
+      if (met) then
+         text = 'met'
+      else
+         text = 'NOT met'
+      end if
+   end function verdict
+
    ! ---------------------------------------------------------------- allocation check
 
    !> N full cases (solve_load with varying load, prepare_fastsim_sh, solve_prepared with the
@@ -605,19 +627,20 @@ contains
       type(normal_patch_type) :: patch
       integer :: k
 
-      full%contact = normal_contact(100)
+      full%contact = normal_contact(normal_options%n_strips)
       full%load = case_load
       full%material = material
-      full%options = tangential_options_type()
+      full%options = tangential_options
+      full%options%fields = .true.
       full%creepage = headline
       do k = 1, n
          call full%run(k)
       end do
       if (full%failed) call fail('alloc-check: '//full%message)
-      patch = normal_solution(100, .false.)
-      call prepare_fastsim_sh(ws, patch, material, doe_options(.false.), error)
+      patch = normal_solution(normal_options%n_strips, .false.)
+      call prepare_fastsim_sh(ws, patch, material, tangential_options, error)
       call stop_on(error, 'alloc-check: prepare_fastsim_sh')
-      creepages = doe_creepages(doe_points, 2.0e-3_wp)
+      creepages = run_creepages()
       creepages = [(creepages(mod(k - 1, size(creepages)) + 1), k=1, n)]
       call reserve_table(table, n)
       call solve_doe(ws, creepages, table, 1)
@@ -629,13 +652,14 @@ contains
 
    ! ------------------------------------------------------------------------------ helpers
 
-   !> The seed patch prepared for the strip method (or the Hertz method) with n strips.
+   !> The case's patch prepared for the strip method (or the Hertz method) with n strips.
    function normal_contact(n, hertz) result(contact)
       integer, intent(in) :: n
       logical, intent(in), optional :: hertz
       type(normal_contact_type) :: contact
       type(normal_options_type) :: options
 
+      options = normal_options
       options%n_strips = n
       if (present(hertz)) then
          if (hertz) options%method = method_hertz
@@ -650,12 +674,9 @@ contains
       logical, intent(in) :: hertz
       type(normal_patch_type) :: patch
       type(normal_contact_type) :: contact
-      type(normal_options_type) :: options
 
-      options%n_strips = n
-      if (hertz) options%method = method_hertz
-      call prepare_normal_contact(contact, patches(1), options, material, error)
-      if (.not. allocated(error)) call solve_load(contact, case_load, patch, error)
+      contact = normal_contact(n, hertz)
+      call solve_load(contact, case_load, patch, error)
       call stop_on(error, 'normal solution')
    end function normal_solution
 
@@ -691,6 +712,14 @@ contains
       write (buf, '(i0)') i
       text = trim(buf)
    end function itoa
+
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(g0.6)') x
+      text = trim(adjustl(buf))
+   end function real_text
 
    subroutine stop_on(error, what)
       type(error_type), allocatable, intent(in) :: error

@@ -1,47 +1,28 @@
-!> The seed's design of experiments (physics.md §7 "DOE"): ν_x, ν_y ∈ [0, 2e-3] and
-!> φ ∈ [0, 2e-3] rad/mm on a 20 × 20 × 20 grid, one normal patch for all cases. The cases are
-!> independent: OpenMP threads share them, each thread with its own copy of the prepared
-!> workspace (one allocation per thread, none per case); every case is stored by its index, so
-!> the results do not depend on the thread count.
+!> A design of experiments at the library level: one normal patch, one prepared FASTSIM_SH
+!> workspace, only the creepages vary. The cases are independent: OpenMP threads share them,
+!> each thread with its own copy of the prepared workspace (one allocation per thread, none per
+!> case); every case is stored by its index, so the results do not depend on the thread count.
+!> This is the hardware's share of the seed's DOE; the app's sweep driver (run_sweep) adds the
+!> case bookkeeping and the HDF5 file.
 module bench_doe
    use shcontact, only: wp, error_type, creepage_type, march_workspace_type, &
       tangential_patch_type
    use shcontact_tangential_march, only: solve_prepared
-   use bench_summary, only: doe_table_type
    implicit none
    private
 
-   public :: doe_creepages, solve_doe, reserve_table
+   public :: doe_table_type, solve_doe, reserve_table
+
+   !> The results, one entry per case. Forces on the wheel (N, N·mm).
+   type :: doe_table_type
+      real(wp), allocatable :: nu_x(:), nu_y(:), phi(:)
+      real(wp), allocatable :: fx(:), fy(:), mz(:), fx_norm(:), fy_norm(:)
+      real(wp), allocatable :: coulomb_ratio(:), adhesion_fraction(:)
+      !> Library status per case (0: solved).
+      integer, allocatable :: status(:)
+   end type doe_table_type
 
 contains
-
-   !> The grid in the order of ../shared/reference/*/doe_*.csv: φ fastest, then ν_y, then ν_x.
-   pure function doe_creepages(n_points, top) result(creepages)
-      !> Values per creepage.
-      integer, intent(in) :: n_points
-      !> Largest ν_x, ν_y (dimensionless) and φ (rad/mm).
-      real(wp), intent(in) :: top
-      type(creepage_type) :: creepages(n_points**3)
-      integer :: i, j, l, k
-
-      k = 0
-      do i = 1, n_points
-         do j = 1, n_points
-            do l = 1, n_points
-               k = k + 1
-               creepages(k) = creepage_type(grid(i), grid(j), grid(l))
-            end do
-         end do
-      end do
-
-   contains
-
-      pure real(wp) function grid(i)
-         integer, intent(in) :: i
-         grid = top*real(i - 1, wp)/real(n_points - 1, wp)
-      end function grid
-
-   end function doe_creepages
 
    !> Allocate the table for n cases (only when its size differs).
    subroutine reserve_table(table, n)

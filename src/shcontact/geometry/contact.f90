@@ -4,7 +4,8 @@
 !> Two steps, so that a scan over many wheel positions smooths the profiles only once:
 !>
 !> 1. [[prepare_profiles]]: fit the smoothing splines (§5.5), place the rail (§5.2), find the
-!>    tape-circle height of the wheel profile and sample both profiles densely.
+!>    tape-circle height of the wheel profile (at flange_back_position + tape_circle_offset) and
+!>    sample both profiles densely.
 !> 2. [[find_contact_patches]] for one wheelset position:
 !>    * place the wheel (lateral shift, roll), sample the vertical gap to the rail, lower the wheel
 !>      onto the rail and take every separate local minimum of the gap as a candidate patch
@@ -14,7 +15,9 @@
 !>      gaps is zero; candidates whose gap exceeds `max_gap` are dropped;
 !>    * per patch, turn both profiles by −γ₀ about the reference point and tabulate on a uniform
 !>      grid y_i = i·h the gap along the reference normal and the curvatures A(y), B(y), the local
-!>      contact angle γ(y) and rolling radius r_w(y), over the whole basin of the minimum.
+!>      contact angle γ(y) and rolling radius r_w(y), out to `table_gap`: over the basin of the
+!>      minimum and on past a maximum into a neighbouring basin (patches merge under load; the
+!>      basin limits are kept in `basin_lower`, `basin_upper`).
 !>
 !> Conventions (binding, see doc/geometry.md):
 !> * Every quantity of a patch is given in its side frame (y towards the field side, z down), the
@@ -26,8 +29,9 @@
 !> * Local contact angle γ(y): the angle of the wheel surface on the strip, so that γ and
 !>   δr = r_w − r₀ come from the same wheel spline (§6.1) and dr_w/dy = sin γ along the tangent
 !>   plane (dr_w/dy_track = tan γ).
-!> * Rolling radius r_w = r_nom + z_w(y_w) − z_w(0) in wheel profile coordinates (z down, y_w = 0
-!>   on the tape circle).
+!> * Rolling radius r_w = r_nom + z_w(y_w) − z_w(y_tape) in wheel profile coordinates (z down),
+!>   y_tape = flange_back_position + tape_circle_offset the tape circle (0 for S1002, 70 mm for a
+!>   MiniProf wheel whose origin is the flange back).
 !> * A(y) = cos γ(y)/(2 r_w(y)) (option: cos γ₀, the fixed reference normal); B(y) = ½ g''(y),
 !>   analytic from the splines, clamped to ≥ b_min.
 module shcontact_geometry_contact
@@ -41,7 +45,7 @@ module shcontact_geometry_contact
    use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta
    use shcontact_geometry_search, only: polyline_envelope, gap_minima
    use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
-      check_position, rail_placement, wheel_placement, str => real_text
+      check_position, rail_placement, wheel_placement, tape_circle_position, str => real_text
    use shcontact_geometry_patch, only: patch_geometry_type
    implicit none
    private
@@ -82,8 +86,8 @@ module shcontact_geometry_contact
       type(profile_spline_type) :: wheel, rail
       !> Rail profile coordinates → side frame.
       type(rigid_map_type) :: rail_map
-      !> Wheel profile z at y = 0, the tape circle (mm).
-      real(wp) :: z_tape = 0.0_wp
+      !> Wheel profile y and z of the tape circle (mm).
+      real(wp) :: y_tape = 0.0_wp, z_tape = 0.0_wp
       !> Dense samples of the wheel, profile coordinates (mm).
       real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
       !> Dense samples of the rail, side frame (mm).
@@ -185,10 +189,14 @@ contains
          call prefix_error(error, source_name(rail))
          return
       end if
-      call prepared%wheel%locate_y(0.0_wp, s0, found)
+      prepared%y_tape = tape_circle_position(track)
+      call prepared%wheel%locate_y(prepared%y_tape, s0, found)
       if (.not. found) then
-         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross y = 0; '// &
-            'expected its origin on the tape circle (S1002: flange back at y = -70 mm)', &
+         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross its '// &
+            'tape circle y = '//str(prepared%y_tape)//' mm (flange_back_position '// &
+            str(track%flange_back_position)//' + tape_circle_offset '// &
+            str(track%tape_circle_offset)//' mm); expected the flange back at y = -70 mm for '// &
+            'an origin on the tape circle (S1002), at y = 0 for a MiniProf wheel', &
             stat_invalid_input)
          return
       end if
@@ -564,8 +572,9 @@ contains
    end subroutine refine_pair
 
    !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
-   !> followed outwards in steps h while the gap rises (physics.md §5.4). `covered` returns the
-   !> rail arc-length range of the table.
+   !> followed outwards in steps h up to table_gap (physics.md §5.4). `covered` returns the rail
+   !> arc-length range of the patch's own basin (up to the maxima that separate it from its
+   !> neighbours), which the tables may overrun.
    pure subroutine build_table(prepared, wheel_map, side, pair, patch, covered, error)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
@@ -578,7 +587,7 @@ contains
       type(frame_point_type) :: r0, w0
       real(wp), allocatable :: left(:, :), right(:, :), rows(:, :)
       real(wp) :: h, gap0
-      integer :: n_left, n_right, n_max, dir_r, dir_w, n, i, i0
+      integer :: n_left, n_right, basin_left, basin_right, n_max, dir_r, dir_w, n, i, i0
 
       h = prepared%options%table_step
       frame = to_frame(pair%theta, pair%y, pair%z)
@@ -594,9 +603,9 @@ contains
       n_max = int(min(prepared%rail%length(), prepared%wheel%length())/h) + 2
       allocate (left(row_count, n_max), right(row_count, n_max))
       call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, right, &
-         n_right, covered(2))
+         n_right, basin_right, covered(2))
       call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, left, &
-         n_left, covered(1))
+         n_left, basin_left, covered(1))
       if (covered(1) > covered(2)) covered = covered([2, 1])
 
       n = n_left + n_right + 1
@@ -607,6 +616,8 @@ contains
       rows(:, i0 - 1:1:-1) = left(:, 1:n_left)
       patch%h = h
       patch%y = [((i - i0)*h, i=1, n)]
+      patch%basin_lower = -basin_left*h
+      patch%basin_upper = basin_right*h
       patch%gap = max(rows(1, :), 0.0_wp)
       patch%gap(i0) = 0.0_wp
       patch%curv_b = max(0.5_wp*rows(2, :), prepared%options%b_min)
@@ -646,26 +657,30 @@ contains
    end function strip_row
 
    !> Follow both profiles from the reference point in steps `step` of η, until the gap exceeds
-   !> table_gap, falls behind a maximum by more than merge_gap (a neighbouring basin: the table
-   !> is cut at the maximum), or a profile ends or turns back.
+   !> table_gap or a profile ends or turns back. The patch's own basin ends at the first maximum
+   !> behind which the gap falls by more than merge_gap (a neighbouring minimum): `n_basin` rows
+   !> and the rail arc length `s_basin` there. The table runs on past it into the neighbour's
+   !> basin, so that the patch can grow into its neighbour under load.
    pure subroutine follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, rows, &
-         n_rows, s_end)
+         n_rows, n_basin, s_basin)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: rmap, wmap
       type(frame_point_type), intent(in) :: r0, w0
       integer, intent(in) :: dir_r, dir_w
       real(wp), intent(in) :: theta, gap0, step
       real(wp), intent(out) :: rows(:, :)
-      integer, intent(out) :: n_rows
-      real(wp), intent(out) :: s_end
+      integer, intent(out) :: n_rows, n_basin
+      real(wp), intent(out) :: s_basin
       type(frame_point_type) :: r, w
       real(wp) :: s_r, s_w, top
       integer :: k_r, k_w, j, j_top
-      logical :: ok_r, ok_w
+      logical :: ok_r, ok_w, cut
 
       s_r = r0%s; s_w = w0%s; k_r = r0%k; k_w = w0%k
       top = 0.0_wp; j_top = 0
+      cut = .false.
       n_rows = 0
+      n_basin = 0
       do j = 1, size(rows, 2)
          call locate_eta(prepared%rail, rmap, j*step, dir_r, s_r, k_r, ok_r)
          call locate_eta(prepared%wheel, wmap, j*step, dir_w, s_w, k_w, ok_w)
@@ -675,16 +690,19 @@ contains
          if (r%deta <= min_deta .or. w%deta <= min_deta) exit
          rows(:, j) = strip_row(prepared, r, w, theta, gap0)
          n_rows = j
-         if (rows(1, j) >= top) then
-            top = rows(1, j); j_top = j
-         else if (rows(1, j) < top - prepared%options%merge_gap) then
-            n_rows = j_top
-            exit
+         if (.not. cut) then
+            if (rows(1, j) >= top) then
+               top = rows(1, j); j_top = j
+            else if (rows(1, j) < top - prepared%options%merge_gap) then
+               cut = .true.
+               n_basin = j_top
+            end if
          end if
          if (rows(1, j) > prepared%options%table_gap) exit
       end do
-      s_end = r0%s
-      if (n_rows > 0) s_end = rows(5, n_rows)
+      if (.not. cut) n_basin = n_rows
+      s_basin = r0%s
+      if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
 
    !> Sample a spline at all knots and between them at spacing ≤ step.

@@ -46,6 +46,12 @@ module shcontact_geometry_patch
       real(wp) :: gap0 = 0.0_wp
       !> Table spacing (mm).
       real(wp) :: h = 0.0_wp
+      !> The patch's own basin, in table coordinates y (mm): the tables run on past a gap maximum
+      !> that separates it from a neighbouring minimum (into the neighbour's basin, so that the
+      !> patch can grow into it), and these mark those maxima; the table ends where there is none.
+      !> The defaults (±huge) say "no neighbour".
+      real(wp) :: basin_lower = -huge(1.0_wp)
+      real(wp) :: basin_upper = huge(1.0_wp)
       !> Lateral coordinate of the table points (mm), uniform spacing h, y(i0) = 0.
       real(wp), allocatable :: y(:)
       !> g(y) ≥ 0 (mm).

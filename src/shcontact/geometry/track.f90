@@ -10,10 +10,15 @@
 !> * Rail: canted about its profile origin by the rail inclination (unless the profile is already
 !>   canted), then shifted so that its gauge point (the point of the gauge face `gauge_height`
 !>   below the rail top) lies at y = gauge/2 and its top at z = 0.
-!> * Wheel: profile origin (tape circle) at y = y_c + flange_back_distance/2 − flange_back_position,
-!>   z = 0, with the wheelset centre at y_c = ±y_ws (side frame), z = −nominal_radius; the wheelset
-!>   roll turns the wheel about that centre. The contact search then lowers or lifts the wheel
-!>   until the smallest gap is zero.
+!> * Wheel: profile origin at y = y_c + flange_back_distance/2 − flange_back_position (so the
+!>   flange back lies at y_c + flange_back_distance/2), z = 0, with the wheelset centre at
+!>   y_c = ±y_ws (side frame), z = −nominal_radius; the wheelset roll turns the wheel about that
+!>   centre. The contact search then lowers or lifts the wheel until the smallest gap is zero.
+!> * Tape circle (where the rolling radius is nominal_radius): tape_circle_offset (70 mm, the
+!>   EN 13715 measuring plane) from the flange back towards the field side, i.e. at
+!>   y_w = flange_back_position + tape_circle_offset in wheel profile coordinates
+!>   ([[tape_circle_position]]): y_w = 0 for S1002 (flange back at −70), 70 mm for a MiniProf
+!>   wheel (origin at the flange back, flange_back_position = 0).
 module shcontact_geometry_track
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
@@ -23,7 +28,8 @@ module shcontact_geometry_track
    private
 
    public :: track_type, wheelset_position_type, side_right, side_left
-   public :: check_track, check_position, rail_placement, wheel_placement, real_text
+   public :: check_track, check_position, rail_placement, wheel_placement, tape_circle_position
+   public :: real_text
 
    !> The right wheel and rail (track y > 0).
    integer, parameter :: side_right = 1
@@ -46,6 +52,8 @@ module shcontact_geometry_track
       real(wp) :: flange_back_position = -70.0_wp
       !> Nominal rolling radius at the tape circle (mm).
       real(wp) :: nominal_radius = 460.0_wp
+      !> Lateral distance from the flange back to the tape circle (mm; EN 13715: 70).
+      real(wp) :: tape_circle_offset = 70.0_wp
    end type track_type
 
    !> Where the wheelset is, and which of its wheels is solved.
@@ -88,6 +96,11 @@ contains
       else if (.not. (track%nominal_radius > 0.0_wp .and. track%nominal_radius < 1.0e4_wp)) then
          call fatal_error(error, 'nominal wheel radius = '//real_text(track%nominal_radius)// &
             ' mm: expected a positive radius in mm (e.g. 460)')
+      else if (.not. (track%tape_circle_offset > 0.0_wp .and. &
+         track%tape_circle_offset < 1000.0_wp)) then
+         call fatal_error(error, 'tape-circle offset = '//real_text(track%tape_circle_offset)// &
+            ' mm: expected the positive distance from the flange back to the tape circle '// &
+            '(EN 13715: 70)')
       end if
    end subroutine check_track
 
@@ -165,6 +178,14 @@ contains
       map = map%then(rotation_about(position%side*position%roll, y_centre, &
          -track%nominal_radius))
    end function wheel_placement
+
+   !> The tape circle's lateral position in wheel profile coordinates (mm):
+   !> flange_back_position + tape_circle_offset (0 for S1002, 70 for a MiniProf wheel).
+   elemental real(wp) function tape_circle_position(track) result(y_tape)
+      !> Track and wheelset dimensions.
+      type(track_type), intent(in) :: track
+      y_tape = track%flange_back_position + track%tape_circle_offset
+   end function tape_circle_position
 
    !> The highest point (smallest z) of a mapped profile: the best knot, refined by golden-section
    !> search over its two neighbouring intervals.

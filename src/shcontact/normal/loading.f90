@@ -76,7 +76,8 @@ module shcontact_normal_loading
 contains
 
    !> Prepare one patch: check the options, material and geometry, reduce the geometry
-   !> (per-point ε_a, ε_b, m, n: once per geometry) and solve the reference Hertz shape.
+   !> (per-point ε_a, ε_b, m, n: once per geometry) and solve the reference Hertz shape. The
+   !> contact of the patch is confined to its own basin ([[confine_to_basin]]).
    subroutine prepare_normal_contact(contact, geometry, options, material, error)
       !> The prepared patch (its arrays are reused when the table size is unchanged).
       type(normal_contact_type), intent(inout) :: contact
@@ -88,6 +89,8 @@ contains
       type(material_type), intent(in) :: material
       !> Set for invalid options, material or geometry.
       type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type) :: basin
+      logical :: confined
 
       call check_normal_options(options, error)
       if (allocated(error)) return
@@ -96,7 +99,12 @@ contains
       contact%options = options
       contact%material = material
       contact%e_star = material%e_star()
-      call prepare_semihertz(geometry, options, contact%geometry, error)
+      call confine_to_basin(geometry, basin, confined)
+      if (confined) then
+         call prepare_semihertz(basin, options, contact%geometry, error)
+      else
+         call prepare_semihertz(geometry, options, contact%geometry, error)
+      end if
       if (allocated(error)) return
       call hertz_shape(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, error)
    end subroutine prepare_normal_contact
@@ -169,7 +177,9 @@ contains
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
    !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
-   !> not touch at the solution come back cleared (zero strips, zero load).
+   !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
+   !> stays inside its own basin ([[confine_to_basin]]): neighbours that meet under load split
+   !> the merged region at the ridge between them, and no region is counted twice.
    subroutine solve_vertical_load(contacts, f_z, patches, dz, error)
       !> The prepared patches.
       type(normal_contact_type), intent(in), target :: contacts(:)
@@ -249,6 +259,61 @@ contains
             stat_numerical)
       end if
    end subroutine solve_vertical_load
+
+   !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
+   !> "Neighbouring patches under load"): past a basin limit the table runs into a neighbouring
+   !> patch's basin, which that patch carries, so it is cut one point beyond the limit and that
+   !> point is raised to the table's largest gap. The strip method's contact interval then stops
+   !> within h of the limit, N(δ) stays continuous when the contact reaches the ridge (growing
+   !> across it would add the neighbour's already penetrated region at once), and the approach is
+   !> bounded on that side as at an open table end. `confined` is false, and `basin` untouched,
+   !> when no limit lies inside the table or the table is malformed (prepare_semihertz reports).
+   pure subroutine confine_to_basin(geometry, basin, confined)
+      type(patch_geometry_type), intent(in) :: geometry
+      type(patch_geometry_type), intent(inout) :: basin
+      logical, intent(out) :: confined
+      integer :: n, i_lo, i_hi, i_ref, j_lo, j_hi
+
+      confined = .false.
+      if (.not. (allocated(geometry%y) .and. allocated(geometry%gap) .and. &
+                 allocated(geometry%curv_a) .and. allocated(geometry%curv_b) .and. &
+                 allocated(geometry%gamma) .and. allocated(geometry%r_wheel))) return
+      n = size(geometry%y)
+      if (n < 2 .or. any([size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
+                          size(geometry%gamma), size(geometry%r_wheel)] /= n)) return
+      if (.not. (geometry%h > 0.0_wp .and. geometry%y(1) <= 0.0_wp .and. &
+                 geometry%y(n) >= 0.0_wp)) return
+      ! Compare before dividing: the limits default to ±huge.
+      if (geometry%basin_lower <= geometry%y(1) .and. geometry%basin_upper >= geometry%y(n)) return
+      i_ref = 1 + nint(-geometry%y(1)/geometry%h)
+      i_lo = 1
+      i_hi = n
+      if (geometry%basin_lower > geometry%y(1)) i_lo = min(i_ref, &
+         1 + nint((min(geometry%basin_lower, geometry%y(n)) - geometry%y(1))/geometry%h))
+      if (geometry%basin_upper < geometry%y(n)) i_hi = max(i_ref, &
+         1 + nint((max(geometry%basin_upper, geometry%y(1)) - geometry%y(1))/geometry%h))
+      j_lo = max(1, i_lo - 1)
+      j_hi = min(n, i_hi + 1)
+      basin%y_track = geometry%y_track
+      basin%z_track = geometry%z_track
+      basin%y_rail = geometry%y_rail
+      basin%y_wheel = geometry%y_wheel
+      basin%gamma0 = geometry%gamma0
+      basin%r0 = geometry%r0
+      basin%gap0 = geometry%gap0
+      basin%h = geometry%h
+      basin%basin_lower = geometry%basin_lower
+      basin%basin_upper = geometry%basin_upper
+      basin%y = geometry%y(j_lo:j_hi)
+      basin%gap = geometry%gap(j_lo:j_hi)
+      basin%curv_a = geometry%curv_a(j_lo:j_hi)
+      basin%curv_b = geometry%curv_b(j_lo:j_hi)
+      basin%gamma = geometry%gamma(j_lo:j_hi)
+      basin%r_wheel = geometry%r_wheel(j_lo:j_hi)
+      if (j_lo < i_lo) basin%gap(1) = maxval(geometry%gap)
+      if (j_hi > i_hi) basin%gap(j_hi - j_lo + 1) = maxval(geometry%gap)
+      confined = .true.
+   end subroutine confine_to_basin
 
    !> Fill the patch for approach δ by the contact's method; below contact the patch is cleared.
    subroutine fill_patch(contact, approach, patch, error)

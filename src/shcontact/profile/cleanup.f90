@@ -206,7 +206,8 @@ contains
       integer :: i, n, m
 
       n = profile%size()
-      turn = turning_angles(profile%y, profile%z)
+      allocate (turn(n))
+      turn(:) = turning_angles(profile%y, profile%z)
       if (.not. any(abs(turn) > zigzag_angle)) return
       allocate (y(n), z(n), new_lines(n))
       m = 1

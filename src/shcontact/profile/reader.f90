@@ -848,7 +848,7 @@ contains
          return
       end if
       if (len(buffer) >= 3) then
-         if (buffer(1:3) == achar(239)//achar(187)//achar(191)) buffer(1:3) = '   '
+         if (buffer(1:3) == char(239)//char(187)//char(191)) buffer(1:3) = '   '
       end if
 
       n = 0

@@ -67,15 +67,19 @@ module shcontact_tangential_options
       integer :: method = method_fastsim_sh
       !> Traction bound, `bound_*` (default [[bound_weighted]], decision 9).
       integer :: bound = bound_weighted
-      !> Local spin model, `spin_*` (default [[spin_additive]], decision 10).
-      integer :: spin_model = spin_additive
+      !> Local spin model, `spin_*`. Default [[spin_uniform]]: it fits the exact theory best for
+      !> prescribed creepages (doc/validation.md); use [[spin_additive]] (physics.md decision 10)
+      !> when the creepages come from wheelset kinematics.
+      integer :: spin_model = spin_uniform
       !> Elements per strip n_x (default 50, decision 11).
       integer :: n_elements = 50
       !> Kalker-table interpolation, `kalker_scheme_*` of shcontact_tangential_kalker (default
       !> [[kalker_scheme_scaled]], decision 7); the names 'scaled', 'contact' are in code order.
       integer :: kalker_scheme = kalker_scheme_scaled
-      !> Flexibility of the spin part of the longitudinal slip (default [[spin_flexibility_spin]]).
-      integer :: spin_flexibility = spin_flexibility_spin
+      !> Flexibility of the spin part of the longitudinal slip. Default
+      !> [[spin_flexibility_longitudinal]] (seed eq 21 literally; best fit in doc/validation.md);
+      !> [[spin_flexibility_spin]] makes FASTSIM_SH equal to FASTSIM on a Hertzian patch.
+      integer :: spin_flexibility = spin_flexibility_longitudinal
       !> Fill the per-element fields of the result; .false. computes the totals only (faster).
       logical :: fields = .true.
    end type tangential_options_type

@@ -1,0 +1,78 @@
+/*
+ * shcontact from C: the headline case through the C API (include/shcontact.h), then three bad
+ * calls that must come back with a status and a message.
+ *
+ * S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm, G = 82670 MPa, nu = 0.27,
+ * mu = 0.3, normal force 64.7 kN, creepages 0.58e-3, 0.061e-3, spin 2.74e-4 1/mm, FASTSIM_SH.
+ *
+ * Build:  cc headline.c $(pkg-config --cflags --libs shcontact) -o headline
+ * Run:    ./headline [t_y]      (lateral wheelset shift in mm, default 4.733)
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "shcontact.h"
+
+static int fail(shcontact_contact *contact, const char *what)
+{
+    char message[512];
+    int status = shcontact_last_error(contact, message, (int)sizeof message);
+    fprintf(stderr, "%s failed (status %d): %s\n", what, status, message);
+    shcontact_destroy(contact);
+    return 1;
+}
+
+static void report_bad_call(const char *name, shcontact_contact *contact, int status)
+{
+    char message[512];
+    shcontact_last_error(contact, message, (int)sizeof message);
+    printf("%s %d %s\n", name, status, message);
+}
+
+int main(int argc, char **argv)
+{
+    /* Lateral wheelset shift Y_WS (mm): the app's default (physics.md decision 13). */
+    const double t_y = argc > 1 ? atof(argv[1]) : 4.733;
+    const double roll = 0.0, normal_force = 64.7e3;
+    const double nu_x = 0.58e-3, nu_y = 0.061e-3, phi = 2.74e-4;
+    double v[SHCONTACT_RESULT_SIZE];
+    shcontact_contact *contact = NULL;
+    int status;
+
+    if (shcontact_create(&contact, "builtin:S1002", "builtin:UIC60", SHCONTACT_RIGHT) != 0)
+        return fail(contact, "shcontact_create");
+    if (shcontact_set_material(contact, 82670.0, 0.27, 0.3) != 0)
+        return fail(contact, "shcontact_set_material");
+    if (shcontact_set_option(contact, "tangential%method", "fastsim-sh") != 0)
+        return fail(contact, "shcontact_set_option");
+    if (shcontact_solve(contact, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, nu_x, nu_y,
+                        phi, v) != 0)
+        return fail(contact, "shcontact_solve");
+
+    printf("# headline case, C interface\n");
+    printf("t_y %.17e\n", t_y);
+    printf("fx %.17e\n", v[SHCONTACT_FX]);
+    printf("fy %.17e\n", v[SHCONTACT_FY]);
+    printf("mz %.17e\n", v[SHCONTACT_MZ]);
+    printf("fn %.17e\n", v[SHCONTACT_FN]);
+    printf("fx_norm %.17e\n", v[SHCONTACT_FX_NORM]);
+    printf("fy_norm %.17e\n", v[SHCONTACT_FY_NORM]);
+    printf("gamma0 %.17e\n", v[SHCONTACT_GAMMA0]);
+    printf("n_patches %.17e\n", v[SHCONTACT_N_PATCHES]);
+    printf("sum_fz %.17e\n", v[SHCONTACT_SUM_FZ]);
+
+    /* Bad calls: an invalid (NULL) handle, a negative load, a NaN creepage. */
+    status = shcontact_solve(NULL, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, nu_x,
+                             nu_y, phi, v);
+    report_bad_call("status_invalid_handle", NULL, status);
+    status = shcontact_solve(contact, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, -normal_force, nu_x,
+                             nu_y, phi, v);
+    report_bad_call("status_negative_load", contact, status);
+    status = shcontact_solve(contact, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, NAN,
+                             nu_y, phi, v);
+    report_bad_call("status_nan_creepage", contact, status);
+
+    shcontact_destroy(contact);
+    return 0;
+}

@@ -1,0 +1,161 @@
+!> shcontact-validate: the validation against the exact theory (issues 4, 5, 7).
+!>
+!>     fpm run --example shcontact-validate --profile release [-- REFERENCE PROFILES OUTPUT]
+!>
+!> Defaults: REFERENCE = ../shared/reference/, PROFILES = ../shared/profiles/, OUTPUT =
+!> doc/validation/ (all relative to the worktree root). Runs our cases matching the reference
+!> (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27, μ = 0.3; README §2) and
+!> writes the CSV tables that doc/validation.md quotes and scripts/validation_figures.py draws.
+!> When the reference data or the profiles are absent it says so and ends normally (exit 0).
+program validate
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use shcontact, only: wp, error_type, material_type, prepared_profiles_type, &
+      patch_geometry_type, normal_patch_type
+   use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
+   use validate_case, only: load_manchester, deepest_patch, solve_normal
+   use validate_normal, only: patch_summary_type, summarise_patch, reference_patch_summary, &
+      write_strips, manchester_rows
+   use validate_report, only: recommended_type, run_tangential
+   implicit none
+
+   character(len=:), allocatable :: ref_root, profiles_dir, out_dir, ref_dir
+   type(prepared_profiles_type) :: prepared
+   type(patch_geometry_type) :: geometry
+   type(material_type) :: material
+   type(recommended_type) :: rec
+   type(error_type), allocatable :: error
+   real(wp) :: y_geo
+   logical :: there
+
+   call arguments(ref_root, profiles_dir, out_dir)
+   ref_dir = ref_root//'ty0_literal/'
+   inquire (file=ref_dir//'summary.csv', exist=there)
+   if (.not. there) then
+      write (output_unit, '(a)') 'shcontact-validate: the exact-theory reference '//ref_dir// &
+         'summary.csv is absent; nothing to validate (the reference data is not part of the '// &
+         'repository: see doc/validation.md).'
+      stop
+   end if
+   inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+   if (.not. there) then
+      write (output_unit, '(a)') 'shcontact-validate: the profiles '//profiles_dir// &
+         'MBench_S1002_v3.prw are absent; nothing to validate.'
+      stop
+   end if
+
+   ! The settings recommended as defaults in doc/validation.md.
+   rec%bound = 'weighted'
+   rec%spin_model = 'uniform'
+   rec%spin_flexibility = 'longitudinal'
+   rec%reduction = 'local-hertz'
+   rec%n_strips = 100
+   rec%n_elements = 50
+   ! README §2: both bodies G = 82670 MPa, ν = 0.27; μ = 0.3.
+   material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
+
+   call load_manchester(profiles_dir, prepared, error)
+   if (.not. allocated(error)) call deepest_patch(prepared, 0.0_wp, geometry, error)
+   if (.not. allocated(error)) call reference_y_geo(ref_dir, y_geo, error)
+   if (.not. allocated(error)) call normal_tables(ref_root, ref_dir, out_dir, geometry, &
+      material, y_geo, rec, error)
+   if (.not. allocated(error)) call manchester_rows(prepared, out_dir//'manchester_10kN.csv', &
+      error)
+   if (.not. allocated(error)) call run_tangential(ref_dir, out_dir, geometry, material, rec, &
+      error)
+   if (allocated(error)) then
+      write (error_unit, '(a)') 'shcontact-validate: '//error%message
+      error stop 1
+   end if
+   write (output_unit, '(a)') 'shcontact-validate: tables written to '//out_dir
+
+contains
+
+   !> Optional positional arguments REFERENCE PROFILES OUTPUT (directories).
+   subroutine arguments(ref_root, profiles_dir, out_dir)
+      character(len=:), allocatable, intent(out) :: ref_root, profiles_dir, out_dir
+      ref_root = directory_argument(1, '../shared/reference/')
+      profiles_dir = directory_argument(2, '../shared/profiles/')
+      out_dir = directory_argument(3, 'doc/validation/')
+   end subroutine arguments
+
+   !> Argument i as a directory with a trailing '/', or the default.
+   function directory_argument(i, default) result(dir)
+      integer, intent(in) :: i
+      character(len=*), intent(in) :: default
+      character(len=:), allocatable :: dir
+      character(len=1024) :: buf
+      dir = default
+      if (command_argument_count() < i) return
+      call get_command_argument(i, buf)
+      dir = trim(buf)
+      if (dir(len(dir):len(dir)) /= '/') dir = dir//'/'
+   end function directory_argument
+
+   !> CONTACT's y of the geometric contact point in its local coordinates (summary.csv y_geo).
+   subroutine reference_y_geo(ref_dir, y_geo, error)
+      character(len=*), intent(in) :: ref_dir
+      real(wp), intent(out) :: y_geo
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_table_type) :: summary
+      call read_csv(ref_dir//'summary.csv', summary, error)
+      if (allocated(error)) return
+      call summary_value(summary, 'y_geo', y_geo, error)
+   end subroutine reference_y_geo
+
+   !> normal_summary.csv (the reference's patch and ours by method and reduction) and the strip
+   !> tables normal_strips_<variant>.csv for the pressure maps.
+   subroutine normal_tables(ref_root, ref_dir, out_dir, geometry, material, y_geo, rec, error)
+      character(len=*), intent(in) :: ref_root, ref_dir, out_dir
+      type(patch_geometry_type), intent(in) :: geometry
+      type(material_type), intent(in) :: material
+      real(wp), intent(in) :: y_geo
+      type(recommended_type), intent(in) :: rec
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: labels(3) = [character(len=22) :: 'semi-hertz_local-hertz', &
+         'semi-hertz_constant', 'hertz']
+      character(len=*), parameter :: methods(3) = [character(len=10) :: 'semi-hertz', &
+         'semi-hertz', 'hertz']
+      character(len=*), parameter :: reductions(3) = [character(len=11) :: 'local-hertz', &
+         'constant', 'local-hertz']
+      type(csv_writer_type) :: out
+      type(patch_summary_type) :: s
+      type(normal_patch_type) :: patch
+      integer :: k
+
+      call out%open(out_dir//'normal_summary.csv', 'source,approach_mm,load_N,length_mm,'// &
+         'width_mm,area_mm2,p_max_MPa,y_min_mm,y_max_mm,y_centre_mm', error)
+      if (allocated(error)) return
+      call reference_patch_summary(ref_root//'headline_summary.csv', 'module3_exact_nonhertz', &
+         ref_dir//'grid_module3_exact_nonhertz.csv', s, error)
+      if (allocated(error)) return
+      call write_summary(out, 'contact-exact', s)
+      call reference_patch_summary(ref_root//'headline_summary.csv', 'module3_exact_hertz', &
+         ref_dir//'grid_module3_exact_hertz.csv', s, error)
+      if (allocated(error)) return
+      ! CONTACT's Hertz grid is centred at the ellipse centre, i.e. at the geometric point.
+      s%y_min = s%y_min + y_geo
+      s%y_max = s%y_max + y_geo
+      s%y_centre = s%y_centre + y_geo
+      call write_summary(out, 'contact-exact-hertz-ellipse', s)
+      do k = 1, size(labels)
+         call solve_normal(geometry, material, methods(k), reductions(k), rec%n_strips, &
+            64700.0_wp, patch, error)
+         if (allocated(error)) return
+         call write_summary(out, 'shcontact_'//trim(labels(k)), summarise_patch(patch, y_geo))
+         call write_strips(out_dir//'normal_strips_'//trim(labels(k))//'.csv', patch, y_geo, &
+            error)
+         if (allocated(error)) return
+      end do
+      call out%close()
+   end subroutine normal_tables
+
+   !> One row of normal_summary.csv.
+   subroutine write_summary(out, label, s)
+      type(csv_writer_type), intent(in) :: out
+      character(len=*), intent(in) :: label
+      type(patch_summary_type), intent(in) :: s
+      call out%row([s%approach, s%load, s%length, s%width, s%area, s%p_max, s%y_min, s%y_max, &
+         s%y_centre], text=[label], digits=5)
+   end subroutine write_summary
+
+end program validate

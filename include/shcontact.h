@@ -1,0 +1,120 @@
+/*
+ * shcontact: wheel-rail rolling contact (semi-Hertzian normal contact, FASTSIM_SH).
+ * C API over the library's Fortran solver objects (src/shcontact/api/capi.f90, doc/api.md).
+ *
+ * Units: mm, N, N/mm^2 (MPa), rad; spin creepage in rad/mm. Creepages are those of the wheel
+ * relative to the rail at the geometric contact point; forces act on the wheel.
+ *
+ * Every function returns a status: SHCONTACT_OK (0) or an error code; the handle keeps the
+ * status and message of its last call for shcontact_last_error. Distinct handles may be used
+ * from distinct threads at once; one handle must not be used by two threads at the same time.
+ *
+ * Link: pkg-config --cflags --libs shcontact   (libshcontact.so; see doc/api.md)
+ */
+#ifndef SHCONTACT_H
+#define SHCONTACT_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Status codes (shcontact_core_error). */
+#define SHCONTACT_OK 0
+#define SHCONTACT_USAGE 1          /* bad handle or argument */
+#define SHCONTACT_INVALID_INPUT 2  /* out-of-range or non-finite data, bad profile */
+#define SHCONTACT_IO 3             /* a profile file could not be read */
+#define SHCONTACT_NUMERICAL 5      /* a numerical procedure failed */
+#define SHCONTACT_NO_CONTACT 6     /* the profiles do not touch, or the load cannot be carried */
+
+/* Wheel side. */
+#define SHCONTACT_RIGHT 1
+#define SHCONTACT_LEFT (-1)
+
+/* Load modes of shcontact_solve. */
+#define SHCONTACT_LOAD_NORMAL_FORCE 1   /* normal force N (N) on the deepest patch */
+#define SHCONTACT_LOAD_VERTICAL_FORCE 2 /* vertical wheel load (N) shared by all patches */
+#define SHCONTACT_LOAD_APPROACH 3       /* approach (mm) of the deepest patch */
+
+/* Values of one patch (shcontact_patch; also the first values of a result), 0-based. */
+#define SHCONTACT_FX 0             /* F_x (N), rolling direction */
+#define SHCONTACT_FY 1             /* F_y (N), lateral, contact plane */
+#define SHCONTACT_MZ 2             /* spin moment M_z about the reference point (N mm) */
+#define SHCONTACT_FN 3             /* normal force F_n (N) */
+#define SHCONTACT_FX_NORM 4        /* F_x / (mu F_n) */
+#define SHCONTACT_FY_NORM 5        /* F_y / (mu F_n) */
+#define SHCONTACT_FY_TRACK 6       /* lateral force, track frame (N) */
+#define SHCONTACT_FZ_TRACK 7       /* vertical force, track frame, z down (N) */
+#define SHCONTACT_APPROACH 8       /* approach delta (mm) */
+#define SHCONTACT_AREA 9           /* contact area (mm^2) */
+#define SHCONTACT_P_MAX 10         /* largest strip peak pressure (MPa) */
+#define SHCONTACT_GAMMA0 11        /* contact angle at the reference point (rad, CONTACT's sign) */
+#define SHCONTACT_R0 12            /* wheel rolling radius at the reference point (mm) */
+#define SHCONTACT_Y_TRACK 13       /* reference point, lateral track coordinate (mm) */
+#define SHCONTACT_Z_TRACK 14       /* reference point, vertical track coordinate (mm, down) */
+#define SHCONTACT_COULOMB 15       /* max |p| / (mu p_n) */
+#define SHCONTACT_ADHESION 16      /* adhesion area fraction */
+#define SHCONTACT_PATCH_SIZE 17
+
+/* Values of a result (shcontact_solve): the main (most loaded) patch, then: */
+#define SHCONTACT_N_PATCHES 17     /* patches found */
+#define SHCONTACT_N_LOADED 18      /* patches solved (1, or all for a vertical load) */
+#define SHCONTACT_MAIN_PATCH 19    /* index (1-based) of the main patch */
+#define SHCONTACT_SUM_FX 20        /* totals over the loaded patches, track frame (N) */
+#define SHCONTACT_SUM_FY 21
+#define SHCONTACT_SUM_FZ 22
+#define SHCONTACT_SUM_FN 23
+#define SHCONTACT_DZ 24            /* rigid vertical approach of the wheel (mm), vertical load */
+#define SHCONTACT_RESULT_SIZE 25
+
+/* An opaque contact (one wheel on its rail). */
+typedef struct shcontact_contact shcontact_contact;
+
+/* Create a contact from profile names ("builtin:S1002", "builtin:UIC60", "builtin:UIC60-canted"
+ * or file names) with the default track (Manchester benchmark, rail canted 1:40 by the track,
+ * R0 = 460 mm), material (G = 82670 MPa, nu = 0.27, mu = 0.3) and options. *handle receives a
+ * handle also when the creation fails (its last error tells why); destroy it in any case. */
+int shcontact_create(shcontact_contact **handle, const char *wheel, const char *rail, int side);
+
+/* Release a contact (NULL is ignored). */
+int shcontact_destroy(shcontact_contact *handle);
+
+/* Shear modulus G (MPa), Poisson's ratio, friction coefficient. */
+int shcontact_set_material(shcontact_contact *handle, double shear_modulus, double poisson,
+                           double friction);
+
+/* Track: gauge, gauge-point depth (mm), rail inclination (slope, 1:40 = 0.025), rail_canted != 0
+ * when the rail profile is already canted, flange-back distance, flange-back position in wheel
+ * profile coordinates, nominal rolling radius (mm). Prepares the profiles again. */
+int shcontact_set_track(shcontact_contact *handle, double gauge, double gauge_height,
+                        double inclination, int rail_canted, double flange_back_distance,
+                        double flange_back_position, double nominal_radius);
+
+/* One option as in the app's case files: key "group%variable", value as text. Keys:
+ * normal%method (semi-hertz, hertz), normal%reduction (local-hertz, constant), normal%epsilon,
+ * normal%n_strips, normal%b_min, tangential%method (fastsim-sh, fastsim), tangential%bound
+ * (ellipsoidal, parabolic, weighted, weighted-slip, clipped), tangential%spin_model (additive,
+ * uniform, scaled, geometric), tangential%n_elements, profiles%wheel_smoothing,
+ * profiles%rail_smoothing. */
+int shcontact_set_option(shcontact_contact *handle, const char *key, const char *value);
+
+/* Solve one contact: lateral wheelset shift t_y (mm, CONTACT's Y_WS), roll (rad), load mode and
+ * value, creepages nu_x, nu_y and spin phi (rad/mm). values[SHCONTACT_RESULT_SIZE] receives the
+ * result (zeros on failure). No allocation once the position repeats; nothing printed. */
+int shcontact_solve(shcontact_contact *handle, double t_y, double roll, int load_mode,
+                    double load, double nu_x, double nu_y, double phi, double *values);
+
+/* values[SHCONTACT_PATCH_SIZE] of patch `patch` (1-based) of the last solve. */
+int shcontact_patch(shcontact_contact *handle, int patch, double *values);
+
+/* Status of the last call on handle; its message is copied to buffer (NUL-terminated, cut to
+ * length - 1 characters, empty after a success). A NULL handle gives SHCONTACT_USAGE. */
+int shcontact_last_error(const shcontact_contact *handle, char *buffer, int length);
+
+/* The library version ("0.1.0") copied to buffer; returns its length. */
+int shcontact_version(char *buffer, int length);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHCONTACT_H */

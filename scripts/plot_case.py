@@ -1,0 +1,313 @@
+#!/usr/bin/env python3
+"""Plot a shcontact result file (HDF5): the figures of the seed paper for one case or a sweep.
+
+    python3 scripts/plot_case.py OUT.h5 [--case N] [--patch K] [--outdir DIR] [--prefix NAME]
+
+Writes, when the file holds what they need:
+
+    NAME_pressure.png   normal pressure on the patch and the strip table (seed Fig. 4)
+    NAME_traction.png   tangential tractions on the wheel as arrows, adhesion and slip areas
+                        and the stick/slip boundary (seed Fig. 5)
+    NAME_geometry.png   gap and lateral relative curvature B(y) of the patch (seed Fig. 3)
+    NAME_creep.png      normalised creep forces |f_x|, |f_y| against the swept input, one curve
+                        per traction bound / spin model (seed Figs 6-7)
+
+NAME defaults to the file name without .h5. The field figures need a case stored with its
+fields (the default for a single case; `&output fields = 'all'` in a sweep).
+Needs h5py, numpy and matplotlib: `scripts/setup --plot` installs them.
+"""
+import argparse
+import os
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+#: Swept inputs a /summary table can have, in the program's loop order.
+SWEEP_AXES = ["t_y", "roll", "normal_force", "approach", "vertical_force", "friction",
+              "bound", "spin_model", "nu_x", "nu_y", "phi"]
+#: How to show a swept input: (label, scale).
+AXIS_DISPLAY = {
+    "nu_x": (r"$\nu_x$ [‰]", 1e3), "nu_y": (r"$\nu_y$ [‰]", 1e3),
+    "phi": (r"$\varphi$ [1/m]", 1e3), "t_y": (r"$t_y$ [mm]", 1.0),
+    "roll": ("roll [rad]", 1.0), "normal_force": ("N [kN]", 1e-3),
+    "vertical_force": ("$F_z$ [kN]", 1e-3), "approach": (r"$\delta$ [mm]", 1.0),
+    "friction": (r"$\mu$", 1.0),
+}
+
+
+def text(value):
+    """An HDF5 string (bytes or numpy bytes) as str."""
+    if isinstance(value, (bytes, np.bytes_)):
+        return value.decode("utf-8", "replace")
+    return str(value)
+
+
+def element_rectangles(x, y, dx, dy):
+    """Corner lists of the elements: x (ny, nx) centres, y (ny,) strip centres."""
+    ny, nx = x.shape
+    half_x = np.repeat(0.5 * dx[:, None], nx, axis=1)
+    yc = np.repeat(y[:, None], nx, axis=1)
+    x0, x1 = x - half_x, x + half_x
+    y0, y1 = yc - 0.5 * dy, yc + 0.5 * dy
+    return np.stack([np.stack([x0, y0], -1), np.stack([x1, y0], -1),
+                     np.stack([x1, y1], -1), np.stack([x0, y1], -1)], axis=-2).reshape(-1, 4, 2)
+
+
+def pick_case(f, case):
+    """The group of the requested case, or of the first case with fields."""
+    if "cases" not in f:
+        return None
+    names = sorted(f["cases"].keys())
+    if case is not None:
+        for name in names:
+            if int(name) == case:
+                return f["cases"][name]
+        sys.exit(f"plot_case: case {case} has no fields in the file (cases with fields: "
+                 f"{', '.join(str(int(n)) for n in names[:10])} ...)")
+    return f["cases"][names[0]] if names else None
+
+
+def plot_pressure(group, patch, title, out):
+    """Seed Fig. 4: p_n on the element grid, and the strip peak pressure and half-length."""
+    tan = group[f"patch_{patch}/tangential"]
+    nor = group[f"patch_{patch}/normal"]
+    if "pn" not in tan or "x" not in tan:
+        return False
+    x, y, dx, dy, pn = (tan["x"][...], tan["y"][...], tan["dx"][...], tan["dy"][()],
+                        tan["pn"][...])
+    inside = pn.ravel() > 0
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 5), gridspec_kw={"width_ratios": [3, 2]})
+    rects = element_rectangles(x, y, dx, dy)[inside]
+    coll = PolyCollection(rects, array=pn.ravel()[inside], cmap="viridis", edgecolors="none")
+    ax.add_collection(coll)
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, rolling direction [mm]")
+    ax.set_ylabel("y, lateral (field side +) [mm]")
+    ax.set_title("normal pressure $p_n$")
+    fig.colorbar(coll, ax=ax, label="$p_n$ [MPa]")
+    if "p0" in nor:
+        ys, p0, a = nor["y"][...], nor["p0"][...], nor["a"][...]
+        ax2.plot(ys, p0, color="C0", label=r"strip peak pressure $p_{0,i}$")
+        ax2.set_xlabel("y [mm]")
+        ax2.set_ylabel("$p_{0,i}$ [MPa]", color="C0")
+        ax3 = ax2.twinx()
+        ax3.plot(ys, a, color="C1", label="half-length $a_i$")
+        ax3.set_ylabel("$a_i$ [mm]", color="C1")
+        ax2.set_title(f"strips: N = {nor['load'][()] / 1e3:.2f} kN, "
+                      f"$p_{{max}}$ = {nor['p_max'][()]:.0f} MPa")
+        ax2.grid(alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def stick_slip_boundary(x, state, dx):
+    """Per strip: x between the last adhesion element and the first slip element after it
+    (elements run from the leading edge), or nan."""
+    xb = np.full(x.shape[0], np.nan)
+    for i in range(x.shape[0]):
+        s = state[i]
+        for j in range(len(s) - 1):
+            if s[j] == 1 and s[j + 1] == 2:
+                xb[i] = 0.5 * (x[i, j] + x[i, j + 1])
+                break
+    return xb
+
+
+def plot_traction(group, patch, title, out):
+    """Seed Fig. 5: traction arrows on the wheel, adhesion and slip areas, their boundary."""
+    tan = group[f"patch_{patch}/tangential"]
+    if "px" not in tan or "state" not in tan:
+        return False
+    x, y, dx, dy = tan["x"][...], tan["y"][...], tan["dx"][...], tan["dy"][()]
+    px, py, state = tan["px"][...], tan["py"][...], tan["state"][...]
+    inside = state.ravel() > 0
+    fig, ax = plt.subplots(figsize=(9, 7))
+    colours = np.where(state.ravel() == 1, 0.0, 1.0)[inside]
+    coll = PolyCollection(element_rectangles(x, y, dx, dy)[inside], array=colours,
+                          cmap=matplotlib.colors.ListedColormap(["#cfe3f7", "#f9d9b8"]),
+                          edgecolors="none")
+    coll.set_clim(0, 1)
+    ax.add_collection(coll)
+    ny, nx = x.shape
+    sj, si = max(1, nx // 20), max(1, ny // 30)
+    sel = (slice(None, None, si), slice(None, None, sj))
+    mask = state[sel] > 0
+    mag = np.hypot(px, py)
+    scale = mag.max() / (2.0 * max(dx.max() * sj, dy * si)) if mag.max() > 0 else 1.0
+    ax.quiver(x[sel][mask], np.repeat(y[:, None], nx, axis=1)[sel][mask], px[sel][mask],
+              py[sel][mask], angles="xy", scale_units="xy", scale=scale, width=0.0025,
+              color="k")
+    xb = stick_slip_boundary(x, state, dx)
+    ax.plot(xb, y, color="C3", lw=2, label="stick/slip boundary")
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, rolling direction [mm] (leading edge at +x)")
+    ax.set_ylabel("y, lateral (field side +) [mm]")
+    forces = (f"$F_x$ = {tan['fx'][()]:.0f} N, $F_y$ = {tan['fy'][()]:.0f} N, "
+              f"$f_x$ = {tan['fx_norm'][()]:.3f}, $f_y$ = {tan['fy_norm'][()]:.3f}, "
+              f"adhesion {100 * tan['adhesion_fraction'][()]:.0f} %")
+    ax.set_title("tangential tractions on the wheel\n" + forces, fontsize=10)
+    ax.legend(handles=[Patch(color="#cfe3f7", label="adhesion"),
+                       Patch(color="#f9d9b8", label="slip"),
+                       plt.Line2D([], [], color="C3", lw=2, label="stick/slip boundary")],
+              loc="upper right", fontsize=9)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def plot_geometry(f, group, patch, title, out):
+    """Seed Fig. 3: gap and lateral relative curvature of the patch, with the profiles."""
+    g = None
+    if group is not None and f"patch_{patch}/geometry" in group:
+        g = group[f"patch_{patch}/geometry"]
+    elif f"geometry/patch_{patch}" in f:
+        g = f[f"geometry/patch_{patch}"]
+    if g is None or "y" not in g:
+        return False
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
+    if "input/profiles/wheel" in f and "input/profiles/rail" in f:
+        for name, colour in (("rail", "C0"), ("wheel", "C1")):
+            yz = f[f"input/profiles/{name}"][...]
+            axes[0].plot(yz[:, 0], yz[:, 1], color=colour,
+                         label=f"{name}: {text(f['input/profiles/' + name].attrs['source'])}")
+        axes[0].invert_yaxis()
+        axes[0].set_aspect("equal")
+        axes[0].set_xlabel("y [mm]")
+        axes[0].set_ylabel("z (down) [mm]")
+        axes[0].set_title("profiles (own coordinates)")
+        axes[0].legend(fontsize=8)
+    y = g["y"][...]
+    axes[1].plot(y, g["gap"][...], color="C2")
+    axes[1].set_xlabel("y from the reference point [mm]")
+    axes[1].set_ylabel("gap g(y) [mm]")
+    axes[1].set_yscale("symlog", linthresh=1e-3)
+    axes[1].set_title(r"gap, $\gamma_0$ = %.4f rad" % g["gamma0"][()])
+    axes[2].plot(y, g["curv_b"][...], label="B(y)")
+    axes[2].plot(y, g["curv_a"][...], label="A(y)")
+    axes[2].set_xlabel("y from the reference point [mm]")
+    axes[2].set_ylabel("relative curvature [1/mm]")
+    axes[2].set_title("lateral B(y) and longitudinal A(y)")
+    axes[2].legend()
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def tangential_label(namelist):
+    """'fastsim-sh, weighted' from the &tangential group of the stored namelist."""
+    group = namelist.split("&tangential", 1)[-1].split("\n/", 1)[0]
+    values = {}
+    for line in group.splitlines():
+        if "=" in line:
+            key, value = line.split("!", 1)[0].split("=", 1)
+            values[key.strip()] = value.strip().strip("'")
+    return ", ".join(v for v in (values.get("method"), values.get("bound")) if v)
+
+
+def plot_creep(f, title, out):
+    """Seed Figs 6-7: |f_x| and |f_y| against the innermost swept real input; one curve per
+    combination of the choice inputs (bound, spin model); other swept real inputs of a grid
+    at their first value."""
+    s = f["summary"]
+    swept = [a for a in SWEEP_AXES if a in s]
+    real_axes = [a for a in swept if a not in ("bound", "spin_model")]
+    if not real_axes or len(s["case"]) < 2:
+        return False
+    ok = s["status"][...] == 0
+    xname = real_axes[-1]
+    list_mode = "mode = 'list'" in text(f["input/namelist"][()])
+    keep = ok.copy()
+    others, together = [], []
+    for a in real_axes[:-1]:
+        if list_mode:
+            together.append(a)  # the i-th values go together
+        else:
+            v = s[a][...]
+            keep &= v == v[0]
+            others.append(f"{a} = {v[0]:g}")
+    labels = [a for a in swept if a in ("bound", "spin_model")]
+    default_label = tangential_label(text(f["input/namelist"][()]))
+    keys = [tuple(text(s[a][i]) for a in labels) for i in range(len(ok))]
+    label, scale = AXIS_DISPLAY.get(xname, (xname, 1.0))
+    if together:
+        label = " = ".join([AXIS_DISPLAY.get(a, (a, 1))[0] for a in together] + [label])
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharex=True)
+    for key in sorted(set(keys)):
+        rows = keep & np.array([k == key for k in keys])
+        if not rows.any():
+            continue
+        xv = s[xname][...][rows] * scale
+        order = np.argsort(xv)
+        name = ", ".join(key) if key else default_label
+        axes[0].plot(xv[order], np.abs(s["fx_norm"][...][rows])[order], "o-", ms=3, label=name)
+        axes[1].plot(xv[order], np.abs(s["fy_norm"][...][rows])[order], "o-", ms=3, label=name)
+    for ax, comp in zip(axes, ("x", "y")):
+        ax.set_xlabel(label)
+        ax.set_ylabel(rf"$|f_{comp}| = |F_{comp}|/(\mu F_n)$")
+        ax.grid(alpha=0.3)
+        ax.set_ylim(bottom=0)
+        ax.legend(fontsize=9)
+    if others:
+        title += " (" + ", ".join(others) + ")"
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("file", help="shcontact HDF5 result file")
+    parser.add_argument("--case", type=int, help="case to draw the fields of (default: first "
+                        "case with fields)")
+    parser.add_argument("--patch", type=int, default=1, help="contact patch (default 1)")
+    parser.add_argument("--outdir", default=".", help="directory for the PNGs")
+    parser.add_argument("--prefix", help="file name prefix (default: the file name)")
+    args = parser.parse_args()
+    prefix = args.prefix or os.path.splitext(os.path.basename(args.file))[0]
+    os.makedirs(args.outdir, exist_ok=True)
+    written = []
+    with h5py.File(args.file, "r") as f:
+        if text(f.attrs.get("software", b"")) != "shcontact":
+            sys.exit(f"plot_case: {args.file} is not a shcontact result file")
+        group = pick_case(f, args.case)
+        title = os.path.basename(args.file)
+        if group is not None:
+            title_case = f"{title}, case {int(group.name.split('/')[-1])}"
+            for kind, plot in (("pressure", plot_pressure), ("traction", plot_traction)):
+                out = os.path.join(args.outdir, f"{prefix}_{kind}.png")
+                if plot(group, args.patch, title_case, out):
+                    written.append(out)
+        out = os.path.join(args.outdir, f"{prefix}_geometry.png")
+        if plot_geometry(f, group, args.patch, title, out):
+            written.append(out)
+        out = os.path.join(args.outdir, f"{prefix}_creep.png")
+        if "summary" in f and plot_creep(f, title, out):
+            written.append(out)
+    for name in written:
+        print(name)
+    if not written:
+        sys.exit("plot_case: nothing to plot (no fields and no sweep in the file)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,237 @@
+!> The C API (include/shcontact.h): `bind(C)` functions over the same engine as the Fortran API,
+!> with opaque handles and integer status codes.
+!>
+!> A handle is the C address of a heap-allocated [[contact_context_type]]; there is no table and
+!> no global state, so distinct handles may be used from distinct threads at once. Every call
+!> returns a status (0 success, 1 usage, 2 invalid input, 3 I/O, 5 numerical, 6 no contact) and
+!> keeps it, with its message, in the handle for [[shcontact_last_error]]. A NULL handle is
+!> reported as status 1; a dangling (destroyed) handle cannot be detected.
+module shcontact_api_capi
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_ptr, &
+      c_null_char, c_loc, c_f_pointer, c_associated, c_size_t
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: stat_usage
+   use shcontact_api_solver, only: patch_value_count, result_value_count
+   use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
+      context_set_track, context_set_option, context_solve, context_patch, context_message, &
+      context_fail
+   use shcontact_version_info, only: shcontact_version
+   implicit none
+   private
+
+   public :: shcontact_create, shcontact_destroy, shcontact_set_material, shcontact_set_track, &
+      shcontact_set_option, shcontact_solve, shcontact_patch, shcontact_last_error, &
+      shcontact_version_string
+
+   interface
+      !> The C library's strlen.
+      pure integer(c_size_t) function c_strlen(text) bind(C, name='strlen')
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: text
+      end function c_strlen
+   end interface
+
+   !> Message for a NULL handle.
+   character(len=*), parameter :: null_handle_message = 'invalid contact handle: NULL '// &
+      '(expected a handle from shcontact_create that was not destroyed)'
+
+contains
+
+   !> Create a contact from profile names (NUL-terminated: `builtin:NAME` or file names) for the
+   !> right (side = 1) or left (side = −1) wheel. *handle receives the new handle, also when the
+   !> creation fails (then its last error tells why; destroy it); NULL only when memory is out.
+   integer(c_int) function shcontact_create(handle, wheel, rail, side) &
+         result(stat) bind(C, name='shcontact_create')
+      !> Where to store the handle (shcontact_contact **).
+      type(c_ptr), value :: handle
+      !> Wheel and rail profile names (const char *).
+      type(c_ptr), value :: wheel, rail
+      !> 1 right, −1 left.
+      integer(c_int), value :: side
+      type(c_ptr), pointer :: out
+      type(contact_context_type), pointer :: ctx
+      integer :: alloc_stat
+
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, out)
+      out = c_null_ptr
+      allocate (ctx, stat=alloc_stat)
+      if (alloc_stat /= 0) return
+      out = c_loc(ctx)
+      if (.not. (c_associated(wheel) .and. c_associated(rail))) then
+         stat = context_fail(ctx, 'shcontact_create: wheel or rail profile name is NULL; '// &
+            "expected a name such as 'builtin:S1002' or a file name", stat_usage)
+         return
+      end if
+      stat = context_create(ctx, from_c(wheel), from_c(rail), int(side))
+   end function shcontact_create
+
+   !> Release a contact; NULL is accepted and ignored (status 0).
+   integer(c_int) function shcontact_destroy(handle) result(stat) &
+         bind(C, name='shcontact_destroy')
+      !> The handle.
+      type(c_ptr), value :: handle
+      type(contact_context_type), pointer :: ctx
+      stat = 0
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      deallocate (ctx)
+   end function shcontact_destroy
+
+   !> Set the shear modulus G (MPa), Poisson's ratio ν and the friction coefficient μ.
+   integer(c_int) function shcontact_set_material(handle, shear_modulus, poisson, friction) &
+         result(stat) bind(C, name='shcontact_set_material')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> G, ν, μ.
+      real(c_double), value :: shear_modulus, poisson, friction
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_set_material(ctx, real(shear_modulus, wp), real(poisson, wp), &
+         real(friction, wp))
+   end function shcontact_set_material
+
+   !> Set the track and wheelset dimensions (mm; inclination as a slope; rail_canted /= 0 when
+   !> the rail profile is already canted).
+   integer(c_int) function shcontact_set_track(handle, gauge, gauge_height, inclination, &
+         rail_canted, flange_back_distance, flange_back_position, nominal_radius) result(stat) &
+         bind(C, name='shcontact_set_track')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Gauge and gauge-point depth (mm), rail inclination.
+      real(c_double), value :: gauge, gauge_height, inclination
+      !> Non-zero: the rail profile is already canted.
+      integer(c_int), value :: rail_canted
+      !> Flange-back distance, flange-back position, nominal radius (mm).
+      real(c_double), value :: flange_back_distance, flange_back_position, nominal_radius
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_set_track(ctx, real(gauge, wp), real(gauge_height, wp), &
+         real(inclination, wp), rail_canted /= 0, real(flange_back_distance, wp), &
+         real(flange_back_position, wp), real(nominal_radius, wp))
+   end function shcontact_set_track
+
+   !> Set one option by name (`group%variable`, as in the app's case files) and textual value.
+   integer(c_int) function shcontact_set_option(handle, key, value) result(stat) &
+         bind(C, name='shcontact_set_option')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Option name and value (const char *, NUL-terminated).
+      type(c_ptr), value :: key, value
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      if (.not. (c_associated(key) .and. c_associated(value))) then
+         stat = context_fail(ctx, 'shcontact_set_option: key or value is NULL', stat_usage)
+         return
+      end if
+      stat = context_set_option(ctx, from_c(key), from_c(value))
+   end function shcontact_set_option
+
+   !> Solve one contact: lateral shift t_y (mm), roll (rad), load mode (1 normal force N,
+   !> 2 vertical force N, 3 approach mm) and value, creepages ν_x, ν_y, φ (rad/mm). values
+   !> receives SHCONTACT_RESULT_SIZE numbers (zeros on failure).
+   integer(c_int) function shcontact_solve(handle, t_y, roll, load_mode, load, nu_x, nu_y, phi, &
+         values) result(stat) bind(C, name='shcontact_solve')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Position, load and creepages.
+      real(c_double), value :: t_y, roll
+      integer(c_int), value :: load_mode
+      real(c_double), value :: load, nu_x, nu_y, phi
+      !> The result (result_value_count values).
+      real(c_double), intent(out) :: values(result_value_count)
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_solve(ctx, real(t_y, wp), real(roll, wp), int(load_mode), real(load, wp), &
+         real(nu_x, wp), real(nu_y, wp), real(phi, wp), values)
+   end function shcontact_solve
+
+   !> The SHCONTACT_PATCH_SIZE values of patch `patch` (1-based) of the last solve.
+   integer(c_int) function shcontact_patch(handle, patch, values) result(stat) &
+         bind(C, name='shcontact_patch')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Patch index, 1 to the number of patches.
+      integer(c_int), value :: patch
+      !> The patch values.
+      real(c_double), intent(out) :: values(patch_value_count)
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_patch(ctx, int(patch), values)
+   end function shcontact_patch
+
+   !> The status of the last call on a handle; its message is copied to buffer (NUL-terminated,
+   !> cut to length − 1 characters; empty after a success). For a NULL handle: status 1.
+   integer(c_int) function shcontact_last_error(handle, buffer, length) result(stat) &
+         bind(C, name='shcontact_last_error')
+      !> The handle (may be NULL).
+      type(c_ptr), value :: handle
+      !> Where to copy the message (char *; may be NULL, then nothing is copied).
+      type(c_ptr), value :: buffer
+      !> Size of buffer in bytes.
+      integer(c_int), value :: length
+      type(contact_context_type), pointer :: ctx
+
+      if (.not. c_associated(handle)) then
+         stat = stat_usage
+         call to_c(null_handle_message, buffer, length)
+         return
+      end if
+      call c_f_pointer(handle, ctx)
+      stat = ctx%stat
+      call to_c(context_message(ctx), buffer, length)
+   end function shcontact_last_error
+
+   !> The library version ("0.1.0"), copied like shcontact_last_error; returns its length.
+   integer(c_int) function shcontact_version_string(buffer, length) result(n) &
+         bind(C, name='shcontact_version')
+      !> Where to copy the version (char *; may be NULL).
+      type(c_ptr), value :: buffer
+      !> Size of buffer in bytes.
+      integer(c_int), value :: length
+      call to_c(shcontact_version, buffer, length)
+      n = len(shcontact_version)
+   end function shcontact_version_string
+
+   !> A Fortran string from a NUL-terminated C string.
+   function from_c(text) result(str)
+      type(c_ptr), intent(in) :: text
+      character(len=:), allocatable :: str
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n, i
+      n = int(c_strlen(text))
+      call c_f_pointer(text, chars, [n])
+      allocate (character(len=n) :: str)
+      do i = 1, n
+         str(i:i) = chars(i)
+      end do
+   end function from_c
+
+   !> Copy a Fortran string to a C buffer of `length` bytes, NUL-terminated and cut to fit.
+   subroutine to_c(str, buffer, length)
+      character(len=*), intent(in) :: str
+      type(c_ptr), intent(in) :: buffer
+      integer(c_int), intent(in) :: length
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n, i
+      if (length < 1 .or. .not. c_associated(buffer)) return
+      call c_f_pointer(buffer, chars, [length])
+      n = min(len(str), int(length) - 1)
+      do i = 1, n
+         chars(i) = str(i:i)
+      end do
+      chars(n + 1) = c_null_char
+   end subroutine to_c
+
+end module shcontact_api_capi

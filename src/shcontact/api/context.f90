@@ -1,0 +1,311 @@
+!> A solver with its last result and last status, as the flat interfaces (legacy Fortran entry
+!> points, C API) need: every operation takes plain integers, reals and strings and returns an
+!> integer status, 0 on success or one of the `stat_*` codes of shcontact_core_error, and keeps
+!> the message in the context. The message lives in a fixed buffer, so a successful call
+!> allocates nothing here.
+module shcontact_api_context
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
+   use shcontact_core_material, only: material_type
+   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_geometry_track, only: track_type
+   use shcontact_geometry_contact, only: contact_options_type
+   use shcontact_normal_options, only: normal_options_type, new_normal_options
+   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
+      parse_spin_model
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
+      max_patches, patch_value_count, result_value_count, patch_values, result_values
+   implicit none
+   private
+
+   public :: contact_context_type, option_keys
+   public :: context_create, context_set_material, context_set_track, context_set_option, &
+      context_solve, context_patch, context_message, context_fail
+
+   !> Longest message kept (longer ones are cut).
+   integer, parameter :: message_capacity = 1024
+
+   !> Keys accepted by [[context_set_option]] (the app's `group%variable` names).
+   character(len=*), parameter :: option_keys(11) = [character(len=24) :: 'normal%method', &
+      'normal%reduction', 'normal%epsilon', 'normal%n_strips', 'normal%b_min', &
+      'tangential%method', 'tangential%bound', 'tangential%spin_model', &
+      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing']
+
+   !> One contact of a flat interface.
+   type :: contact_context_type
+      !> The solver.
+      type(contact_solver_type) :: solver
+      !> The result of the last successful solve.
+      type(contact_result_type) :: result
+      !> True when `result` holds a solution.
+      logical :: has_result = .false.
+      !> Status of the last operation (0: success).
+      integer :: stat = 0
+      !> Message of the last operation ('' on success).
+      character(len=message_capacity) :: message = ''
+      integer :: message_len = 0
+   end type contact_context_type
+
+contains
+
+   !> Create the solver from profile names (`builtin:NAME` or files) with default track, material
+   !> and options.
+   integer function context_create(ctx, wheel, rail, side) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Wheel and rail profile: `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: wheel, rail
+      !> 1: right wheel, −1: left wheel.
+      integer, intent(in) :: side
+      type(error_type), allocatable :: error
+
+      ctx%has_result = .false.
+      call ctx%solver%init(trim(wheel), trim(rail), error, side=side)
+      stat = record(ctx, error)
+   end function context_create
+
+   !> Set the shear modulus G (MPa), Poisson's ratio ν and the friction coefficient μ.
+   integer function context_set_material(ctx, shear_modulus, poisson, friction) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> G (MPa), ν, μ.
+      real(wp), intent(in) :: shear_modulus, poisson, friction
+      type(error_type), allocatable :: error
+
+      if (usable(ctx, error)) call ctx%solver%set_material(material_type(shear_modulus, &
+         poisson, friction), error)
+      stat = record(ctx, error)
+   end function context_set_material
+
+   !> Set the track and wheelset dimensions (see shcontact_geometry_track's track_type).
+   integer function context_set_track(ctx, gauge, gauge_height, inclination, rail_canted, &
+         flange_back_distance, flange_back_position, nominal_radius) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Gauge (mm) and depth of the gauge point below the rail top (mm).
+      real(wp), intent(in) :: gauge, gauge_height
+      !> Rail inclination as a slope (1:40 = 0.025).
+      real(wp), intent(in) :: inclination
+      !> The rail profile is already canted.
+      logical, intent(in) :: rail_canted
+      !> Flange-back distance (mm) and flange-back position in wheel profile coordinates (mm).
+      real(wp), intent(in) :: flange_back_distance, flange_back_position
+      !> Nominal rolling radius R₀ (mm).
+      real(wp), intent(in) :: nominal_radius
+      type(error_type), allocatable :: error
+
+      if (usable(ctx, error)) call ctx%solver%set_track(error, track=track_type( &
+         gauge=gauge, gauge_height=gauge_height, rail_inclination=inclination, &
+         rail_canted=rail_canted, flange_back_distance=flange_back_distance, &
+         flange_back_position=flange_back_position, nominal_radius=nominal_radius))
+      stat = record(ctx, error)
+   end function context_set_track
+
+   !> Set one option by its name in the app's case files (`group%variable`, see [[option_keys]])
+   !> and its value as text, e.g. ('tangential%bound', 'ellipsoidal') or ('normal%n_strips', '200').
+   integer function context_set_option(ctx, key, value) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Option name (case-insensitive).
+      character(len=*), intent(in) :: key
+      !> Its value.
+      character(len=*), intent(in) :: value
+      type(error_type), allocatable :: error
+      type(normal_options_type) :: normal, parsed
+      type(tangential_options_type) :: tangential
+      type(contact_options_type) :: search
+      character(len=:), allocatable :: name
+
+      if (.not. usable(ctx, error)) then
+         stat = record(ctx, error)
+         return
+      end if
+      call ctx%solver%get_options(normal, tangential)
+      search = ctx%solver%get_contact_options()
+      name = trim(adjustl(to_lower(key)))
+      select case (name)
+      case ('normal%method')
+         call new_normal_options(parsed, error, method=trim(value))
+         normal%method = parsed%method
+      case ('normal%reduction')
+         call new_normal_options(parsed, error, reduction=trim(value))
+         normal%reduction = parsed%reduction
+      case ('normal%epsilon')
+         call read_real(name, value, normal%epsilon, error)
+      case ('normal%n_strips')
+         call read_int(name, value, normal%n_strips, error)
+      case ('normal%b_min')
+         call read_real(name, value, search%b_min, error)
+      case ('tangential%method')
+         call parse_method(trim(value), tangential%method, error)
+      case ('tangential%bound')
+         call parse_bound(trim(value), tangential%bound, error)
+      case ('tangential%spin_model')
+         call parse_spin_model(trim(value), tangential%spin_model, error)
+      case ('tangential%n_elements')
+         call read_int(name, value, tangential%n_elements, error)
+      case ('profiles%wheel_smoothing')
+         call read_real(name, value, search%l_filt_wheel, error)
+      case ('profiles%rail_smoothing')
+         call read_real(name, value, search%l_filt_rail, error)
+      case default
+         call fatal_error(error, "option '"//trim(key)//"': unknown; expected one of "// &
+            key_list(), stat_invalid_input)
+      end select
+      if (.not. allocated(error)) then
+         select case (name)
+         case ('normal%b_min', 'profiles%wheel_smoothing', 'profiles%rail_smoothing')
+            call ctx%solver%set_track(error, contact_options=search)
+         case default
+            call ctx%solver%set_options(error, normal=normal, tangential=tangential)
+         end select
+      end if
+      stat = record(ctx, error)
+   end function context_set_option
+
+   !> Solve one contact and return the flat result ([[result_values]]).
+   integer function context_solve(ctx, t_y, roll, load_mode, load, nu_x, nu_y, phi, values) &
+         result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Lateral wheelset shift (mm) and roll (rad).
+      real(wp), intent(in) :: t_y, roll
+      !> 1: normal force (N), 2: vertical force (N), 3: approach (mm).
+      integer, intent(in) :: load_mode
+      !> The force or approach.
+      real(wp), intent(in) :: load
+      !> Creepages ν_x, ν_y and spin φ (rad/mm).
+      real(wp), intent(in) :: nu_x, nu_y, phi
+      !> The flat result (result_value_count values; zero on failure).
+      real(wp), intent(out) :: values(result_value_count)
+      type(error_type), allocatable :: error
+
+      values = 0.0_wp
+      ctx%has_result = .false.
+      if (usable(ctx, error)) then
+         call ctx%solver%solve(t_y, roll, contact_load_type(load_mode, load), &
+            creepage_type(nu_x, nu_y, phi), ctx%result, error)
+         if (.not. allocated(error)) then
+            ctx%has_result = .true.
+            call result_values(ctx%result, values)
+         end if
+      end if
+      stat = record(ctx, error)
+   end function context_solve
+
+   !> The flat values of patch k of the last solve ([[patch_values]]).
+   integer function context_patch(ctx, k, values) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Patch index, 1 to the number of patches of the last result.
+      integer, intent(in) :: k
+      !> The patch values (patch_value_count; zero on failure).
+      real(wp), intent(out) :: values(patch_value_count)
+      type(error_type), allocatable :: error
+
+      values = 0.0_wp
+      if (.not. ctx%has_result) then
+         call fatal_error(error, 'patch values: no result yet (the last solve failed or none '// &
+            'was made)', stat_usage)
+      else if (k < 1 .or. k > min(ctx%result%n_patches, max_patches)) then
+         call fatal_error(error, 'patch '//str_int(k)//': expected 1 to '// &
+            str_int(ctx%result%n_patches)//' (the patches of the last solve)', stat_usage)
+      else
+         call patch_values(ctx%result%patch(k), values)
+      end if
+      stat = record(ctx, error)
+   end function context_patch
+
+   !> The message of the last operation ('' after a success).
+   pure function context_message(ctx) result(message)
+      !> The context.
+      type(contact_context_type), intent(in) :: ctx
+      character(len=:), allocatable :: message
+      message = ctx%message(1:ctx%message_len)
+   end function context_message
+
+   !> Record a failure that happened outside the context (a bad argument of a flat call).
+   integer function context_fail(ctx, message, stat) result(status)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> What went wrong.
+      character(len=*), intent(in) :: message
+      !> The status code.
+      integer, intent(in) :: stat
+      type(error_type), allocatable :: error
+      call fatal_error(error, message, stat)
+      status = record(ctx, error)
+   end function context_fail
+
+   !> True when the solver is ready; otherwise set error.
+   logical function usable(ctx, error)
+      type(contact_context_type), intent(in) :: ctx
+      type(error_type), allocatable, intent(out) :: error
+      usable = ctx%solver%is_ready()
+      if (.not. usable) call fatal_error(error, 'contact not initialised: its creation failed ('// &
+         'see the message of that call) or it was destroyed', stat_usage)
+   end function usable
+
+   !> Keep the status and message of an operation; return the status (0 on success).
+   integer function record(ctx, error) result(stat)
+      type(contact_context_type), intent(inout) :: ctx
+      type(error_type), allocatable, intent(in) :: error
+      if (.not. allocated(error)) then
+         ctx%stat = 0
+         ctx%message_len = 0
+      else
+         ctx%stat = error%stat
+         ctx%message_len = min(len(error%message), message_capacity)
+         ctx%message(1:ctx%message_len) = error%message(1:ctx%message_len)
+      end if
+      stat = ctx%stat
+   end function record
+
+   !> A real option value from text.
+   subroutine read_real(key, text, value, error)
+      character(len=*), intent(in) :: key, text
+      real(wp), intent(inout) :: value
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      real(wp) :: x
+      read (text, *, iostat=stat) x
+      if (stat == 0) then
+         if (.not. ieee_is_finite(x)) stat = 1
+      end if
+      if (stat /= 0) then
+         call fatal_error(error, "option "//key//" = '"//trim(text)// &
+            "': expected a finite number", &
+            stat_invalid_input)
+         return
+      end if
+      value = x
+   end subroutine read_real
+
+   !> An integer option value from text.
+   subroutine read_int(key, text, value, error)
+      character(len=*), intent(in) :: key, text
+      integer, intent(inout) :: value
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat, i
+      read (text, *, iostat=stat) i
+      if (stat /= 0) then
+         call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected an integer", &
+            stat_invalid_input)
+         return
+      end if
+      value = i
+   end subroutine read_int
+
+   !> The accepted keys, comma-separated.
+   pure function key_list() result(text)
+      character(len=:), allocatable :: text
+      integer :: i
+      text = trim(option_keys(1))
+      do i = 2, size(option_keys)
+         text = text//', '//trim(option_keys(i))
+      end do
+   end function key_list
+
+end module shcontact_api_context

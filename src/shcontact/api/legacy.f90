@@ -1,0 +1,276 @@
+!> Legacy Fortran entry points: external subroutines `shc_*` with default `integer` and
+!> `double precision` explicit-shape arguments and an integer status, callable from fixed-form
+!> Fortran 77 without modules. Contacts are referred to by integer handles, as CONTACT's `cntc_*`
+!> library does (doc/api.md lists the calls and the layout of the result arrays).
+!>
+!> This module holds the handle table: [[max_handles]] slots, each an allocatable
+!> [[contact_context_type]] (so an unused slot costs a few bytes). Handles are 1 to max_handles;
+!> 0 is never valid. Creating and destroying a handle is serialised by a named OpenMP critical
+!> section; every other call touches only its own slot, so distinct handles may be used from
+!> distinct threads at once. One handle must not be used by two threads at the same time.
+!>
+!> Status codes: 0 success, 1 usage (bad handle, bad argument), 2 invalid input, 3 I/O,
+!> 5 numerical, 6 no contact (shcontact_core_error).
+module shcontact_api_legacy
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: stat_usage
+   use shcontact_core_strings, only: str_int
+   use shcontact_api_solver, only: patch_value_count, result_value_count
+   use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
+      context_set_track, context_set_option, context_solve, context_patch, context_message
+   implicit none
+   private
+
+   public :: max_handles
+   public :: legacy_create, legacy_destroy, legacy_set_material, legacy_set_track, &
+      legacy_set_option, legacy_solve, legacy_patch, legacy_message
+
+   !> Capacity of the handle table.
+   integer, parameter :: max_handles = 1024
+
+   !> One slot of the table.
+   type :: slot_type
+      !> The contact; allocated while the handle is in use.
+      type(contact_context_type), allocatable :: ctx
+   end type slot_type
+
+   !> The handle table (the only global state of the library, and only of this layer).
+   type(slot_type), save, target :: slots(max_handles)
+
+contains
+
+   !> Reserve a handle and create its contact from profile names. A handle is returned (> 0)
+   !> even when the creation fails, so that shc_errmsg can tell why; destroy it. ihandle = 0
+   !> means that all handles are in use.
+   subroutine legacy_create(ihandle, wheel, rail, iside, istat)
+      !> The new handle (0 when the table is full).
+      integer, intent(out) :: ihandle
+      !> Wheel and rail profile: `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: wheel, rail
+      !> 1 right wheel, −1 left wheel.
+      integer, intent(in) :: iside
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      integer :: i
+
+      ihandle = 0
+      !$omp critical (shcontact_legacy_handles)
+      do i = 1, max_handles
+         if (.not. allocated(slots(i)%ctx)) then
+            allocate (slots(i)%ctx)
+            ihandle = i
+            exit
+         end if
+      end do
+      !$omp end critical (shcontact_legacy_handles)
+      if (ihandle == 0) then
+         istat = stat_usage
+         return
+      end if
+      istat = context_create(slots(ihandle)%ctx, wheel, rail, iside)
+   end subroutine legacy_create
+
+   !> Release a handle (status 1 for an invalid one).
+   subroutine legacy_destroy(ihandle, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (.not. valid(ihandle)) return
+      !$omp critical (shcontact_legacy_handles)
+      deallocate (slots(ihandle)%ctx)
+      !$omp end critical (shcontact_legacy_handles)
+      istat = 0
+   end subroutine legacy_destroy
+
+   !> Set G (MPa), ν and μ.
+   subroutine legacy_set_material(ihandle, g, poiss, fric, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> G (MPa), ν, μ.
+      real(wp), intent(in) :: g, poiss, fric
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_set_material(slots(ihandle)%ctx, g, poiss, fric)
+   end subroutine legacy_set_material
+
+   !> Set the track: gauge, gauge-point depth, rail inclination (slope), rail already canted
+   !> (icant /= 0), flange-back distance and position, nominal radius (mm).
+   subroutine legacy_set_track(ihandle, gauge, gheight, slope, icant, fbdist, fbpos, rnom, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Gauge, gauge-point depth (mm), rail inclination (slope).
+      real(wp), intent(in) :: gauge, gheight, slope
+      !> Non-zero: the rail profile is already canted.
+      integer, intent(in) :: icant
+      !> Flange-back distance and position, nominal radius (mm).
+      real(wp), intent(in) :: fbdist, fbpos, rnom
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_set_track(slots(ihandle)%ctx, gauge, gheight, slope, &
+         icant /= 0, fbdist, fbpos, rnom)
+   end subroutine legacy_set_track
+
+   !> Set one option by name and textual value (shcontact_api_context's option_keys).
+   subroutine legacy_set_option(ihandle, key, value, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Option name (`group%variable`) and value.
+      character(len=*), intent(in) :: key, value
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_set_option(slots(ihandle)%ctx, key, value)
+   end subroutine legacy_set_option
+
+   !> Solve one contact; values(1:result_value_count) receives the flat result.
+   subroutine legacy_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Lateral shift (mm) and roll (rad).
+      real(wp), intent(in) :: ty, roll
+      !> Load mode: 1 normal force, 2 vertical force, 3 approach.
+      integer, intent(in) :: imode
+      !> Load (N or mm) and creepages ν_x, ν_y, φ (rad/mm).
+      real(wp), intent(in) :: fload, cksi, ceta, cphi
+      !> The flat result.
+      real(wp), intent(out) :: values(result_value_count)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      values = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_solve(slots(ihandle)%ctx, ty, roll, imode, fload, &
+         cksi, ceta, cphi, values)
+   end subroutine legacy_solve
+
+   !> The flat values of patch ipatch of the last solve.
+   subroutine legacy_patch(ihandle, ipatch, values, istat)
+      !> The handle and the patch index.
+      integer, intent(in) :: ihandle, ipatch
+      !> The patch values.
+      real(wp), intent(out) :: values(patch_value_count)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      values = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_patch(slots(ihandle)%ctx, ipatch, values)
+   end subroutine legacy_patch
+
+   !> The message of the last call on a handle (blank after a success), or why the handle is
+   !> not valid. Cut to len(msg).
+   subroutine legacy_message(ihandle, msg)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> The message.
+      character(len=*), intent(out) :: msg
+      if (valid(ihandle)) then
+         msg = context_message(slots(ihandle)%ctx)
+      else
+         msg = 'invalid contact handle '//str_int(ihandle)//': expected a handle from '// &
+            'shc_create that was not destroyed (1 to '//str_int(max_handles)// &
+            '; shc_create returns 0 when all handles are in use)'
+      end if
+   end subroutine legacy_message
+
+   !> True for a handle of a created, not destroyed contact.
+   logical function valid(ihandle)
+      integer, intent(in) :: ihandle
+      valid = .false.
+      if (ihandle < 1 .or. ihandle > max_handles) return
+      valid = allocated(slots(ihandle)%ctx)
+   end function valid
+
+end module shcontact_api_legacy
+
+! The external entry points (no module, implicit interfaces allowed to the caller). Each one
+! forwards to its legacy_* procedure above; the argument lists are the same.
+
+!> Create a contact from profile names ('builtin:S1002', 'builtin:UIC60' or file names) for
+!> the right (iside = 1) or left (iside = -1) wheel. See legacy_create.
+subroutine shc_create(ihandle, wheel, rail, iside, istat)
+   use shcontact_api_legacy, only: legacy_create
+   implicit none
+   integer, intent(out) :: ihandle
+   character(len=*), intent(in) :: wheel, rail
+   integer, intent(in) :: iside
+   integer, intent(out) :: istat
+   call legacy_create(ihandle, wheel, rail, iside, istat)
+end subroutine shc_create
+
+!> Release a contact.
+subroutine shc_destroy(ihandle, istat)
+   use shcontact_api_legacy, only: legacy_destroy
+   implicit none
+   integer, intent(in) :: ihandle
+   integer, intent(out) :: istat
+   call legacy_destroy(ihandle, istat)
+end subroutine shc_destroy
+
+!> Set the shear modulus G (MPa), Poisson's ratio and the friction coefficient.
+subroutine shc_set_material(ihandle, g, poiss, fric, istat)
+   use shcontact_api_legacy, only: legacy_set_material
+   implicit none
+   integer, intent(in) :: ihandle
+   double precision, intent(in) :: g, poiss, fric
+   integer, intent(out) :: istat
+   call legacy_set_material(ihandle, g, poiss, fric, istat)
+end subroutine shc_set_material
+
+!> Set the track and wheelset dimensions (mm; slope e.g. 0.025; icant /= 0: rail already canted).
+subroutine shc_set_track(ihandle, gauge, gheight, slope, icant, fbdist, fbpos, rnom, istat)
+   use shcontact_api_legacy, only: legacy_set_track
+   implicit none
+   integer, intent(in) :: ihandle
+   double precision, intent(in) :: gauge, gheight, slope
+   integer, intent(in) :: icant
+   double precision, intent(in) :: fbdist, fbpos, rnom
+   integer, intent(out) :: istat
+   call legacy_set_track(ihandle, gauge, gheight, slope, icant, fbdist, fbpos, rnom, istat)
+end subroutine shc_set_track
+
+!> Set one option: key 'group%variable' as in the app's case files, value as text.
+subroutine shc_set_option(ihandle, key, value, istat)
+   use shcontact_api_legacy, only: legacy_set_option
+   implicit none
+   integer, intent(in) :: ihandle
+   character(len=*), intent(in) :: key, value
+   integer, intent(out) :: istat
+   call legacy_set_option(ihandle, key, value, istat)
+end subroutine shc_set_option
+
+!> Solve: lateral shift ty (mm), roll (rad), load mode imode (1 normal force N, 2 vertical
+!> force N, 3 approach mm) and its value fload, creepages cksi, ceta (-) and cphi (rad/mm);
+!> values(25) receives the result (doc/api.md).
+subroutine shc_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
+   use shcontact_api_legacy, only: legacy_solve
+   implicit none
+   integer, intent(in) :: ihandle
+   double precision, intent(in) :: ty, roll
+   integer, intent(in) :: imode
+   double precision, intent(in) :: fload, cksi, ceta, cphi
+   double precision, intent(out) :: values(25)
+   integer, intent(out) :: istat
+   call legacy_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
+end subroutine shc_solve
+
+!> The values(17) of patch ipatch of the last solve (doc/api.md).
+subroutine shc_patch(ihandle, ipatch, values, istat)
+   use shcontact_api_legacy, only: legacy_patch
+   implicit none
+   integer, intent(in) :: ihandle, ipatch
+   double precision, intent(out) :: values(17)
+   integer, intent(out) :: istat
+   call legacy_patch(ihandle, ipatch, values, istat)
+end subroutine shc_patch
+
+!> The message of the last call on a handle (blank after a success).
+subroutine shc_errmsg(ihandle, msg)
+   use shcontact_api_legacy, only: legacy_message
+   implicit none
+   integer, intent(in) :: ihandle
+   character(len=*), intent(out) :: msg
+   call legacy_message(ihandle, msg)
+end subroutine shc_errmsg

@@ -1,0 +1,835 @@
+!> The modern Fortran API: one solver object per wheel–rail contact (one wheel), created once and
+!> called for every wheel position, load and creepage set (issue 8).
+!>
+!> [[contact_solver_type]] holds the prepared profiles (smoothing splines, placed rail, dense
+!> samples), the patch geometry, the prepared normal problems, the normal and tangential solutions
+!> and the tangential workspace. [[solve]] runs the same pipeline as the app's case runner
+!> (`src/shcontact/case/runner.f90`):
+!>
+!> 1. contact search at (t_y, roll) → candidate patches, deepest first;
+!> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, or a
+!>    prescribed vertical wheel load shared by all patches through one rigid approach
+!>    (physics.md §4.5–4.6);
+!> 3. tangential problem of every loaded patch with the same creepages (prescribed at the
+!>    geometric contact point, physics.md decision 13), forces on the wheel (decision 2);
+!> 4. summary: the most loaded ("main") patch, every patch, and the totals in the track frame.
+!>
+!> **The call path.** [[solve]] prints nothing, opens no file, touches no global state (the
+!> library has none), so distinct solver objects can be used from several threads at once.
+!> Everything it needs lives in the object: the tangential workspace grows to its size at the first
+!> call and is then reused. The object remembers the last position and load: a call at the same
+!> (t_y, roll) reuses the geometry, and one with the same load too reuses the normal solution
+!> (creepage or friction sweeps cost only the tangential march). With an unchanged position a call
+!> allocates nothing after the first one; a new position allocates inside the contact search of
+!> shcontact_geometry_contact, which returns fresh strip tables (see doc/api.md). Asking for the
+!> fields in some calls and not in others reallocates the element fields when the choice changes.
+module shcontact_api_solver
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
+      stat_no_contact, stat_usage
+   use shcontact_core_strings, only: to_lower, str_int, str_real
+   use shcontact_core_material, only: material_type, check_material
+   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
+   use shcontact_profile_reader, only: read_profile
+   use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
+   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
+      prepare_profiles, find_contact_patches
+   use shcontact_normal_options, only: normal_options_type, check_normal_options
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
+      solve_approach, solve_vertical_load
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_tangential_options, only: tangential_options_type, check_tangential_options
+   use shcontact_tangential_creepage, only: creepage_type, check_creepage
+   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_solver, only: track_forces_type, solve_tangential
+   implicit none
+   private
+
+   public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
+   public :: contact_fields_type, load_profile
+   public :: load_normal_force, load_vertical_force, load_approach, load_mode_name
+   public :: max_patches, patch_value_count, result_value_count, patch_values, result_values
+
+   !> Load mode: normal force N (N) on the first (deepest) patch.
+   integer, parameter :: load_normal_force = 1
+   !> Load mode: vertical wheel load F_z (N) shared by all patches (physics.md §4.6).
+   integer, parameter :: load_vertical_force = 2
+   !> Load mode: approach δ (mm) of the first patch.
+   integer, parameter :: load_approach = 3
+   character(len=*), parameter :: load_mode_names(3) = [character(len=14) :: 'normal force', &
+      'vertical force', 'approach']
+
+   !> Most patches one contact may have (the contact search follows at most 16 candidates).
+   integer, parameter :: max_patches = 16
+   !> Length of the flat per-patch value list ([[patch_values]]).
+   integer, parameter :: patch_value_count = 17
+   !> Length of the flat result value list ([[result_values]]).
+   integer, parameter :: result_value_count = 25
+
+   !> The load of one solve.
+   type :: contact_load_type
+      !> [[load_normal_force]], [[load_vertical_force]] or [[load_approach]].
+      integer :: mode = load_normal_force
+      !> The force (N, > 0) or the approach (mm).
+      real(wp) :: value = 0.0_wp
+   end type contact_load_type
+
+   !> The solution of one patch (forces on the wheel, physics.md decision 2).
+   type :: patch_result_type
+      !> Tangential forces F_x, F_y (N, contact frame) and spin moment M_z about the reference
+      !> point (N·mm).
+      real(wp) :: fx = 0.0_wp, fy = 0.0_wp, mz = 0.0_wp
+      !> Normal force F_n (N).
+      real(wp) :: fn = 0.0_wp
+      !> Normalised forces F/(μ F_n).
+      real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
+      !> Lateral and vertical force in the track frame (N, z down).
+      real(wp) :: fy_track = 0.0_wp, fz_track = 0.0_wp
+      !> Approach δ (mm), contact area (mm²), largest strip peak pressure (MPa).
+      real(wp) :: approach = 0.0_wp, area = 0.0_wp, p_max = 0.0_wp
+      !> Contact angle γ₀ (rad, CONTACT's sign) and rolling radius r₀ (mm) at the reference point.
+      real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp
+      !> Reference point in track coordinates (mm; y from the track centre, z down).
+      real(wp) :: y_track = 0.0_wp, z_track = 0.0_wp
+      !> Coulomb check max|p|/(μ p_n,e) and adhesion area fraction.
+      real(wp) :: coulomb_ratio = 0.0_wp, adhesion_fraction = 0.0_wp
+   end type patch_result_type
+
+   !> The result of one solve. Fixed size: filling it allocates nothing.
+   type :: contact_result_type
+      !> Patches found by the contact search (deepest first).
+      integer :: n_patches = 0
+      !> Patches solved: 1 for a normal force or approach, n_patches for a vertical load.
+      integer :: n_loaded = 0
+      !> The most loaded patch (the app's "main" patch).
+      integer :: main_patch = 0
+      !> Rigid vertical approach Δz of the wheel (mm), vertical load only.
+      real(wp) :: dz = 0.0_wp
+      !> The main patch: patch(main_patch).
+      type(patch_result_type) :: main
+      !> Totals over the loaded patches, forces on the wheel in the track frame (N).
+      type(track_forces_type) :: track
+      !> Every patch; patches beyond n_loaded carry their geometry only.
+      type(patch_result_type) :: patch(max_patches)
+   end type contact_result_type
+
+   !> Copies of the fields of one solve (physics.md decision 12): per patch its strip tables, the
+   !> normal strips and the tangential element fields. The arrays are reused from call to call and
+   !> reallocated only when their size changes.
+   type :: contact_fields_type
+      !> Patches filled (the loaded ones).
+      integer :: n_patches = 0
+      !> Geometry tables of each patch.
+      type(patch_geometry_type) :: geometry(max_patches)
+      !> Normal solution (strips) of each patch.
+      type(normal_patch_type) :: normal(max_patches)
+      !> Tangential solution (elements) of each patch.
+      type(tangential_patch_type) :: tangential(max_patches)
+   end type contact_fields_type
+
+   !> One wheel–rail contact: its data, its prepared geometry and all its workspace.
+   type :: contact_solver_type
+      private
+      !> True once [[init]] has succeeded.
+      logical :: ready = .false.
+      !> The profiles as given (kept to prepare again when the track changes).
+      type(profile_type) :: wheel, rail
+      !> Track, side, material and options.
+      type(track_type) :: track
+      type(contact_options_type) :: contact_options
+      integer :: side = side_right
+      type(material_type) :: material
+      type(normal_options_type) :: normal_options
+      type(tangential_options_type) :: tangential_options
+      !> Profiles ready for the contact search.
+      type(prepared_profiles_type) :: prepared
+      !> Geometry of the last position (valid when has_geometry).
+      logical :: has_geometry = .false.
+      real(wp) :: t_y = 0.0_wp, roll = 0.0_wp
+      type(patch_geometry_type), allocatable :: geometry(:)
+      !> Patches whose normal problem is prepared for this geometry.
+      integer :: n_prepared = 0
+      type(normal_contact_type) :: contacts(max_patches)
+      !> Normal solution of the last load (valid when has_normal).
+      logical :: has_normal = .false.
+      type(contact_load_type) :: load
+      integer :: n_loaded = 0
+      real(wp) :: dz = 0.0_wp
+      type(normal_patch_type) :: normal(max_patches)
+      !> Tangential workspace and solutions.
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: tangential(max_patches)
+   contains
+      !> Create the solver from profiles, or from profile names (`builtin:NAME` or files).
+      generic :: init => init_profiles, init_names
+      procedure, private :: init_profiles, init_names
+      !> Solve one wheel position, load and creepage set.
+      procedure :: solve
+      !> Change the elastic constants and the friction coefficient.
+      procedure :: set_material
+      !> Change the normal and/or the tangential options.
+      procedure :: set_options
+      !> Change the track and/or the contact-search options (prepares the profiles again).
+      procedure :: set_track
+      !> Current data, for the flat interfaces.
+      procedure :: get_material, get_options, get_track, get_contact_options
+      !> True once init has succeeded.
+      procedure :: is_ready
+   end type contact_solver_type
+
+contains
+
+   !> Create the solver from profiles: check everything and prepare the profiles (smoothing,
+   !> rail placement, sampling) once for all calls of [[solve]].
+   subroutine init_profiles(self, wheel, rail, error, track, material, side, contact_options, &
+         normal_options, tangential_options)
+      !> The solver (any earlier content is replaced).
+      class(contact_solver_type), intent(inout) :: self
+      !> Wheel and rail profiles (right-side canonical form, physics.md §5.1).
+      type(profile_type), intent(in) :: wheel, rail
+      !> Set for invalid data; the solver is then not ready.
+      type(error_type), allocatable, intent(out) :: error
+      !> Track and wheelset dimensions (default: track_type(), the Manchester benchmark).
+      type(track_type), intent(in), optional :: track
+      !> G, ν, μ (default: material_type(), the seed's steel with μ = 0.3).
+      type(material_type), intent(in), optional :: material
+      !> side_right (default) or side_left.
+      integer, intent(in), optional :: side
+      !> Contact-search options (smoothing, table spacing, ...).
+      type(contact_options_type), intent(in), optional :: contact_options
+      !> Normal options (method, reduction, strips).
+      type(normal_options_type), intent(in), optional :: normal_options
+      !> Tangential options (method, bound, spin model, elements). Its `fields` component is
+      !> ignored: [[solve]] fills the fields when its `fields` argument is present.
+      type(tangential_options_type), intent(in), optional :: tangential_options
+
+      call reset(self)
+      self%wheel = wheel
+      self%rail = rail
+      if (present(track)) self%track = track
+      if (present(material)) self%material = material
+      if (present(side)) self%side = side
+      if (present(contact_options)) self%contact_options = contact_options
+      if (present(normal_options)) self%normal_options = normal_options
+      if (present(tangential_options)) self%tangential_options = tangential_options
+      if (self%side /= side_right .and. self%side /= side_left) then
+         call fatal_error(error, 'wheel side = '//str_int(self%side)// &
+            ': expected 1 (right) or -1 (left)', stat_invalid_input)
+         return
+      end if
+      call check_finite_data(self%material, self%track, error)
+      if (allocated(error)) return
+      call check_material(self%material, error)
+      if (allocated(error)) return
+      call check_normal_options(self%normal_options, error)
+      if (allocated(error)) return
+      call check_tangential_options(self%tangential_options, error)
+      if (allocated(error)) return
+      call prepare_profiles(self%wheel, self%rail, self%track, self%contact_options, &
+         self%prepared, error)
+      if (allocated(error)) return
+      self%ready = .true.
+   end subroutine init_profiles
+
+   !> Create the solver from profile names: `builtin:NAME` (S1002, UIC60, UIC60-canted) or a file
+   !> name (read, checked and cleaned as the app does). Profiles are read here, never in [[solve]].
+   subroutine init_names(self, wheel, rail, error, track, material, side, contact_options, &
+         normal_options, tangential_options, wheel_format, rail_format)
+      !> The solver (any earlier content is replaced).
+      class(contact_solver_type), intent(inout) :: self
+      !> Wheel and rail profile: `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: wheel, rail
+      !> Set for unreadable profiles or invalid data; the solver is then not ready.
+      type(error_type), allocatable, intent(out) :: error
+      !> See [[init_profiles]].
+      type(track_type), intent(in), optional :: track
+      !> See [[init_profiles]].
+      type(material_type), intent(in), optional :: material
+      !> See [[init_profiles]].
+      integer, intent(in), optional :: side
+      !> See [[init_profiles]].
+      type(contact_options_type), intent(in), optional :: contact_options
+      !> See [[init_profiles]].
+      type(normal_options_type), intent(in), optional :: normal_options
+      !> See [[init_profiles]].
+      type(tangential_options_type), intent(in), optional :: tangential_options
+      !> File formats: 'auto' (default), 'plain', 'simpack', 'miniprof'.
+      character(len=*), intent(in), optional :: wheel_format, rail_format
+      type(profile_type) :: wheel_profile, rail_profile
+
+      call reset(self)
+      call load_profile(wheel, profile_kind_wheel, wheel_profile, error, wheel_format)
+      if (allocated(error)) return
+      call load_profile(rail, profile_kind_rail, rail_profile, error, rail_format)
+      if (allocated(error)) return
+      call self%init_profiles(wheel_profile, rail_profile, error, track, material, side, &
+         contact_options, normal_options, tangential_options)
+   end subroutine init_names
+
+   !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
+   subroutine load_profile(spec, kind, profile, error, format)
+      !> `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: spec
+      !> profile_kind_wheel or profile_kind_rail (file formats that need it).
+      integer, intent(in) :: kind
+      !> The profile.
+      type(profile_type), intent(out) :: profile
+      !> Set for a missing, unreadable or malformed profile, or an unknown built-in name.
+      type(error_type), allocatable, intent(out) :: error
+      !> File format: 'auto' (default), 'plain', 'simpack', 'miniprof'.
+      character(len=*), intent(in), optional :: format
+      integer, allocatable :: lines(:)
+      character(len=:), allocatable :: fmt
+
+      if (index(to_lower(adjustl(spec)), 'builtin:') == 1) then
+         call builtin_profile(trim(adjustl(spec(index(spec, ':') + 1:))), profile, error)
+         return
+      end if
+      fmt = 'auto'
+      if (present(format)) fmt = trim(format)
+      call read_profile(trim(spec), profile, error, format=fmt, kind=kind, line_of_point=lines)
+      if (allocated(error)) return
+      call clean_profile(profile, error, lines)
+   end subroutine load_profile
+
+   !> Solve one contact: geometry at (t_y, roll), normal problem for the load, tangential problem
+   !> for the creepages, and the summary. See the module text for what is reused between calls.
+   subroutine solve(self, t_y, roll, load, creepage, result, error, fields)
+      !> The solver, from [[init]].
+      class(contact_solver_type), intent(inout) :: self
+      !> Lateral wheelset shift (mm), CONTACT's Y_WS (physics.md decision 13).
+      real(wp), intent(in) :: t_y
+      !> Wheelset roll (rad), positive lowers the right wheel.
+      real(wp), intent(in) :: roll
+      !> The load: a normal force, a vertical wheel load or an approach.
+      type(contact_load_type), intent(in) :: load
+      !> Creepages at the geometric contact point (ν_x, ν_y, φ in rad/mm), wheel relative to rail.
+      type(creepage_type), intent(in) :: creepage
+      !> The forces and the per-patch summary.
+      type(contact_result_type), intent(out) :: result
+      !> Set for bad input (status and message); the solver stays usable.
+      type(error_type), allocatable, intent(out) :: error
+      !> When present: filled with copies of the geometry, normal and tangential fields.
+      type(contact_fields_type), intent(inout), optional :: fields
+      type(tangential_options_type) :: options
+      integer :: k
+
+      if (.not. self%ready) then
+         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
+            'its error)', stat_usage)
+         return
+      end if
+      call check_call(t_y, roll, load, creepage, error)
+      if (allocated(error)) return
+      call update_geometry(self, t_y, roll, error)
+      if (allocated(error)) return
+      call update_normal(self, load, error)
+      if (allocated(error)) return
+
+      options = self%tangential_options
+      options%fields = present(fields)
+      do k = 1, self%n_loaded
+         if (.not. (self%normal(k)%load > 0.0_wp)) cycle
+         call solve_tangential(self%ws, self%normal(k), self%material, creepage, options, &
+            self%tangential(k), error)
+         if (allocated(error)) then
+            if (self%n_loaded > 1) call prefix_error(error, 'patch '//str_int(k))
+            return
+         end if
+      end do
+      call summarise(self, result)
+      if (present(fields)) call copy_fields(self, fields)
+   end subroutine solve
+
+   !> Reject non-finite positions and creepages and impossible loads before anything computes
+   !> with them (the checks use ieee_is_finite, so NaN raises no floating-point exception).
+   subroutine check_call(t_y, roll, load, creepage, error)
+      real(wp), intent(in) :: t_y, roll
+      type(contact_load_type), intent(in) :: load
+      type(creepage_type), intent(in) :: creepage
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. all(ieee_is_finite([t_y, roll]))) then
+         call fatal_error(error, 'wheel position (t_y, roll): expected finite numbers, found '// &
+            'NaN or Inf', stat_invalid_input)
+         return
+      end if
+      if (load%mode < 1 .or. load%mode > size(load_mode_names)) then
+         call fatal_error(error, 'load mode = '//str_int(load%mode)//': expected 1 (normal '// &
+            'force), 2 (vertical force) or 3 (approach)', stat_invalid_input)
+         return
+      end if
+      if (.not. ieee_is_finite(load%value)) then
+         call fatal_error(error, trim(load_mode_names(load%mode))// &
+            ': expected a finite number, found NaN or Inf', stat_invalid_input)
+         return
+      end if
+      if (load%mode /= load_approach .and. .not. (load%value > 0.0_wp)) then
+         call fatal_error(error, trim(load_mode_names(load%mode))//' = '// &
+            str_real(load%value)//' N: expected a positive force', stat_invalid_input)
+         return
+      end if
+      call check_creepage(creepage, error)
+   end subroutine check_call
+
+   !> The contact patches at (t_y, roll), unless they are those of the last call.
+   subroutine update_geometry(self, t_y, roll, error)
+      type(contact_solver_type), intent(inout) :: self
+      real(wp), intent(in) :: t_y, roll
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_position_type) :: position
+
+      if (self%has_geometry .and. same(t_y, self%t_y) .and. same(roll, self%roll)) return
+      self%has_geometry = .false.
+      self%has_normal = .false.
+      self%n_prepared = 0
+      position = wheelset_position_type(side=self%side, y_ws=t_y, roll=roll)
+      call find_contact_patches(self%prepared, position, self%geometry, error)
+      if (allocated(error)) return
+      if (size(self%geometry) < 1) then
+         call fatal_error(error, 'contact search at t_y = '//str_real(t_y)//' mm, roll = '// &
+            str_real(roll)//' rad: no contact patch found', stat_no_contact)
+         return
+      end if
+      if (size(self%geometry) > max_patches) then
+         call fatal_error(error, 'contact search: '//str_int(size(self%geometry))// &
+            ' patches; the solver holds at most '//str_int(max_patches), stat_usage)
+         return
+      end if
+      self%t_y = t_y
+      self%roll = roll
+      self%has_geometry = .true.
+   end subroutine update_geometry
+
+   !> The normal solution for the load, unless it is that of the last call on this geometry.
+   !> Force and approach load the first (deepest) patch, a vertical load all patches.
+   subroutine update_normal(self, load, error)
+      type(contact_solver_type), intent(inout) :: self
+      type(contact_load_type), intent(in) :: load
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, n
+
+      if (self%has_normal .and. load%mode == self%load%mode .and. &
+         same(load%value, self%load%value)) return
+      self%has_normal = .false.
+      n = 1
+      if (load%mode == load_vertical_force) n = size(self%geometry)
+      do k = self%n_prepared + 1, n
+         call prepare_normal_contact(self%contacts(k), self%geometry(k), self%normal_options, &
+            self%material, error)
+         if (allocated(error)) then
+            if (n > 1) call prefix_error(error, 'patch '//str_int(k))
+            return
+         end if
+         self%n_prepared = k
+      end do
+      self%dz = 0.0_wp
+      select case (load%mode)
+      case (load_normal_force)
+         call solve_load(self%contacts(1), load%value, self%normal(1), error)
+      case (load_approach)
+         call solve_approach(self%contacts(1), load%value, self%normal(1), error)
+      case default
+         call solve_vertical_load(self%contacts(1:n), load%value, self%normal(1:n), self%dz, &
+            error)
+      end select
+      if (allocated(error)) return
+      self%load = load
+      self%n_loaded = n
+      self%has_normal = .true.
+   end subroutine update_normal
+
+   !> The result: every patch, the most loaded one and the track-frame totals.
+   pure subroutine summarise(self, result)
+      type(contact_solver_type), intent(in) :: self
+      type(contact_result_type), intent(inout) :: result
+      integer :: k, m
+
+      result%n_patches = size(self%geometry)
+      result%n_loaded = self%n_loaded
+      result%dz = self%dz
+      do k = 1, result%n_patches
+         associate (p => result%patch(k), g => self%geometry(k))
+            p%gamma0 = g%gamma0
+            p%r0 = g%r0
+            p%y_track = g%y_track
+            p%z_track = g%z_track
+         end associate
+      end do
+      m = 1
+      do k = 1, self%n_loaded
+         associate (p => result%patch(k), n => self%normal(k), t => self%tangential(k))
+            p%fn = n%load
+            p%approach = n%approach
+            p%area = n%area
+            p%p_max = n%p_max
+            if (.not. (n%load > 0.0_wp)) cycle
+            p%fx = t%fx
+            p%fy = t%fy
+            p%mz = t%mz
+            p%fx_norm = t%fx_norm
+            p%fy_norm = t%fy_norm
+            p%fy_track = t%fy_track
+            p%fz_track = t%fz_track
+            p%coulomb_ratio = t%coulomb_ratio
+            p%adhesion_fraction = t%adhesion_fraction
+            result%track%fx = result%track%fx + t%fx
+            result%track%fy = result%track%fy + t%fy_track
+            result%track%fz = result%track%fz + t%fz_track
+            result%track%fn = result%track%fn + n%load
+         end associate
+         if (self%normal(k)%load > self%normal(m)%load) m = k
+      end do
+      result%main_patch = m
+      result%main = result%patch(m)
+   end subroutine summarise
+
+   !> Copy the fields of the loaded patches, reusing the arrays of `fields`.
+   pure subroutine copy_fields(self, fields)
+      type(contact_solver_type), intent(in) :: self
+      type(contact_fields_type), intent(inout) :: fields
+      integer :: k
+
+      fields%n_patches = self%n_loaded
+      do k = 1, self%n_loaded
+         call copy_geometry(self%geometry(k), fields%geometry(k))
+         call copy_normal(self%normal(k), fields%normal(k))
+         if (self%normal(k)%load > 0.0_wp) then
+            call copy_tangential(self%tangential(k), fields%tangential(k))
+         else
+            fields%tangential(k)%nx = 0
+            fields%tangential(k)%ny = 0
+         end if
+      end do
+   end subroutine copy_fields
+
+   !> Copy a patch geometry into reused arrays.
+   pure subroutine copy_geometry(src, dst)
+      type(patch_geometry_type), intent(in) :: src
+      type(patch_geometry_type), intent(inout) :: dst
+      dst%y_track = src%y_track
+      dst%z_track = src%z_track
+      dst%y_rail = src%y_rail
+      dst%y_wheel = src%y_wheel
+      dst%gamma0 = src%gamma0
+      dst%r0 = src%r0
+      dst%gap0 = src%gap0
+      dst%h = src%h
+      call copy_vector(src%y, dst%y)
+      call copy_vector(src%gap, dst%gap)
+      call copy_vector(src%curv_a, dst%curv_a)
+      call copy_vector(src%curv_b, dst%curv_b)
+      call copy_vector(src%gamma, dst%gamma)
+      call copy_vector(src%r_wheel, dst%r_wheel)
+   end subroutine copy_geometry
+
+   !> Copy a normal solution into reused arrays.
+   pure subroutine copy_normal(src, dst)
+      type(normal_patch_type), intent(in) :: src
+      type(normal_patch_type), intent(inout) :: dst
+      dst%n_strips = src%n_strips
+      dst%is_hertz = src%is_hertz
+      dst%ellipse_a = src%ellipse_a
+      dst%ellipse_b = src%ellipse_b
+      dst%ellipse_y_centre = src%ellipse_y_centre
+      dst%approach = src%approach
+      dst%load = src%load
+      dst%area = src%area
+      dst%p_max = src%p_max
+      dst%dy = src%dy
+      dst%gamma0 = src%gamma0
+      dst%r0 = src%r0
+      call copy_vector(src%y, dst%y)
+      call copy_vector(src%a, dst%a)
+      call copy_vector(src%k, dst%k)
+      call copy_vector(src%p0, dst%p0)
+      call copy_vector(src%strip_load, dst%strip_load)
+      call copy_vector(src%m, dst%m)
+      call copy_vector(src%n, dst%n)
+      call copy_vector(src%eps_a, dst%eps_a)
+      call copy_vector(src%gamma, dst%gamma)
+      call copy_vector(src%delta_r, dst%delta_r)
+      call copy_vector(src%r_wheel, dst%r_wheel)
+   end subroutine copy_normal
+
+   !> Copy a tangential solution into reused arrays.
+   pure subroutine copy_tangential(src, dst)
+      type(tangential_patch_type), intent(in) :: src
+      type(tangential_patch_type), intent(inout) :: dst
+      dst%nx = src%nx
+      dst%ny = src%ny
+      dst%fx = src%fx
+      dst%fy = src%fy
+      dst%mz = src%mz
+      dst%fn = src%fn
+      dst%fx_norm = src%fx_norm
+      dst%fy_norm = src%fy_norm
+      dst%coulomb_ratio = src%coulomb_ratio
+      dst%adhesion_fraction = src%adhesion_fraction
+      dst%parabolic_load_ratio = src%parabolic_load_ratio
+      dst%fy_track = src%fy_track
+      dst%fz_track = src%fz_track
+      dst%dy = src%dy
+      call copy_matrix(src%x, dst%x)
+      call copy_vector(src%y, dst%y)
+      call copy_vector(src%dx, dst%dx)
+      call copy_matrix(src%pn, dst%pn)
+      call copy_matrix(src%px, dst%px)
+      call copy_matrix(src%py, dst%py)
+      call copy_matrix(src%slip, dst%slip)
+      if (.not. allocated(src%state)) then
+         if (allocated(dst%state)) deallocate (dst%state)
+         return
+      end if
+      if (allocated(dst%state)) then
+         if (any(shape(dst%state) /= shape(src%state))) deallocate (dst%state)
+      end if
+      if (.not. allocated(dst%state)) allocate (dst%state(size(src%state, 1), &
+         size(src%state, 2)))
+      dst%state(:, :) = src%state
+   end subroutine copy_tangential
+
+   !> dst(:) = src, reallocating dst only when its size differs (or src is unallocated).
+   pure subroutine copy_vector(src, dst)
+      real(wp), allocatable, intent(in) :: src(:)
+      real(wp), allocatable, intent(inout) :: dst(:)
+      if (.not. allocated(src)) then
+         if (allocated(dst)) deallocate (dst)
+         return
+      end if
+      if (allocated(dst)) then
+         if (size(dst) /= size(src)) deallocate (dst)
+      end if
+      if (.not. allocated(dst)) allocate (dst(size(src)))
+      dst(:) = src
+   end subroutine copy_vector
+
+   !> dst(:, :) = src, reallocating dst only when its shape differs (or src is unallocated).
+   pure subroutine copy_matrix(src, dst)
+      real(wp), allocatable, intent(in) :: src(:, :)
+      real(wp), allocatable, intent(inout) :: dst(:, :)
+      if (.not. allocated(src)) then
+         if (allocated(dst)) deallocate (dst)
+         return
+      end if
+      if (allocated(dst)) then
+         if (any(shape(dst) /= shape(src))) deallocate (dst)
+      end if
+      if (.not. allocated(dst)) allocate (dst(size(src, 1), size(src, 2)))
+      dst(:, :) = src
+   end subroutine copy_matrix
+
+   !> Change G, ν and μ. A new G or ν prepares the normal problem again at the next solve; μ
+   !> alone only changes the tangential solution.
+   subroutine set_material(self, material, error)
+      !> The solver.
+      class(contact_solver_type), intent(inout) :: self
+      !> The new data.
+      type(material_type), intent(in) :: material
+      !> Set for non-physical data (the solver keeps its old data).
+      type(error_type), allocatable, intent(out) :: error
+
+      call check_finite_data(material, self%track, error)
+      if (allocated(error)) return
+      call check_material(material, error)
+      if (allocated(error)) return
+      if (.not. (same(material%shear_modulus, self%material%shear_modulus) .and. &
+         same(material%poisson, self%material%poisson))) call forget_normal(self)
+      self%material = material
+   end subroutine set_material
+
+   !> Change the normal and/or tangential options (checked first; nothing changes on error).
+   subroutine set_options(self, error, normal, tangential)
+      !> The solver.
+      class(contact_solver_type), intent(inout) :: self
+      !> Set for an invalid option.
+      type(error_type), allocatable, intent(out) :: error
+      !> New normal options.
+      type(normal_options_type), intent(in), optional :: normal
+      !> New tangential options (`fields` is ignored, see [[init_profiles]]).
+      type(tangential_options_type), intent(in), optional :: tangential
+
+      if (present(normal)) then
+         call check_normal_options(normal, error)
+         if (allocated(error)) return
+      end if
+      if (present(tangential)) then
+         call check_tangential_options(tangential, error)
+         if (allocated(error)) return
+      end if
+      if (present(normal)) then
+         self%normal_options = normal
+         call forget_normal(self)
+      end if
+      if (present(tangential)) self%tangential_options = tangential
+   end subroutine set_options
+
+   !> Change the track and/or the contact-search options: the profiles are prepared again.
+   subroutine set_track(self, error, track, contact_options)
+      !> The solver.
+      class(contact_solver_type), intent(inout) :: self
+      !> Set for invalid data; the solver keeps its old track.
+      type(error_type), allocatable, intent(out) :: error
+      !> New track and wheelset dimensions.
+      type(track_type), intent(in), optional :: track
+      !> New contact-search options.
+      type(contact_options_type), intent(in), optional :: contact_options
+      type(prepared_profiles_type) :: prepared
+      type(track_type) :: new_track
+      type(contact_options_type) :: new_options
+
+      if (.not. self%ready) then
+         call fatal_error(error, 'contact solver: not initialised (call init first)', stat_usage)
+         return
+      end if
+      new_track = self%track
+      new_options = self%contact_options
+      if (present(track)) new_track = track
+      if (present(contact_options)) new_options = contact_options
+      call check_finite_data(self%material, new_track, error)
+      if (allocated(error)) return
+      call prepare_profiles(self%wheel, self%rail, new_track, new_options, prepared, error)
+      if (allocated(error)) return
+      self%track = new_track
+      self%contact_options = new_options
+      self%prepared = prepared
+      self%has_geometry = .false.
+      call forget_normal(self)
+   end subroutine set_track
+
+   !> The current material.
+   pure function get_material(self) result(material)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      type(material_type) :: material
+      material = self%material
+   end function get_material
+
+   !> The current normal and tangential options.
+   pure subroutine get_options(self, normal, tangential)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      !> The normal options.
+      type(normal_options_type), intent(out) :: normal
+      !> The tangential options.
+      type(tangential_options_type), intent(out) :: tangential
+      normal = self%normal_options
+      tangential = self%tangential_options
+   end subroutine get_options
+
+   !> Reject NaN or Inf in the material or the track before the range checks compare them
+   !> (a comparison with NaN would raise the invalid-operation exception).
+   pure subroutine check_finite_data(material, track, error)
+      type(material_type), intent(in) :: material
+      type(track_type), intent(in) :: track
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. all(ieee_is_finite([material%shear_modulus, material%poisson, &
+         material%friction]))) then
+         call fatal_error(error, 'material (G, nu, mu): expected finite numbers, found NaN '// &
+            'or Inf', stat_invalid_input)
+      else if (.not. all(ieee_is_finite([track%gauge, track%gauge_height, &
+         track%rail_inclination, track%flange_back_distance, track%flange_back_position, &
+         track%nominal_radius]))) then
+         call fatal_error(error, 'track dimensions: expected finite numbers, found NaN or Inf', &
+            stat_invalid_input)
+      end if
+   end subroutine check_finite_data
+
+   !> The current contact-search options.
+   pure function get_contact_options(self) result(options)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      type(contact_options_type) :: options
+      options = self%contact_options
+   end function get_contact_options
+
+   !> The current track.
+   pure function get_track(self) result(track)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      type(track_type) :: track
+      track = self%track
+   end function get_track
+
+   !> True once [[init]] has succeeded.
+   pure logical function is_ready(self)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      is_ready = self%ready
+   end function is_ready
+
+   !> Bitwise equality: the cache keys of the last call are reused only for the very same input.
+   elemental logical function same(a, b)
+      real(wp), intent(in) :: a, b
+      same = transfer(a, 0_i8) == transfer(b, 0_i8)
+   end function same
+
+   !> The normal problem must be prepared and solved again.
+   pure subroutine forget_normal(self)
+      type(contact_solver_type), intent(inout) :: self
+      self%n_prepared = 0
+      self%has_normal = .false.
+   end subroutine forget_normal
+
+   !> Back to the state of a new object (keeps no data of an earlier init).
+   pure subroutine reset(self)
+      class(contact_solver_type), intent(inout) :: self
+      self%ready = .false.
+      self%has_geometry = .false.
+      self%has_normal = .false.
+      self%n_prepared = 0
+      self%n_loaded = 0
+      self%side = side_right
+      self%track = track_type()
+      self%material = material_type()
+      self%contact_options = contact_options_type()
+      self%normal_options = normal_options_type()
+      self%tangential_options = tangential_options_type()
+   end subroutine reset
+
+   !> The name of a load mode, for messages.
+   pure function load_mode_name(mode) result(name)
+      !> A load mode code.
+      integer, intent(in) :: mode
+      character(len=:), allocatable :: name
+      if (mode >= 1 .and. mode <= size(load_mode_names)) then
+         name = trim(load_mode_names(mode))
+      else
+         name = 'unknown'
+      end if
+   end function load_mode_name
+
+   !> A patch as a flat list (the layout of doc/api.md and include/shcontact.h): F_x, F_y, M_z,
+   !> F_n, f_x, f_y, F_y,track, F_z,track, δ, area, p_max, γ₀, r₀, y_track, z_track, Coulomb
+   !> ratio, adhesion fraction.
+   pure subroutine patch_values(patch, values)
+      !> The patch.
+      type(patch_result_type), intent(in) :: patch
+      !> Its values (at least patch_value_count).
+      real(wp), intent(out) :: values(:)
+      values(1:patch_value_count) = [patch%fx, patch%fy, patch%mz, patch%fn, patch%fx_norm, &
+         patch%fy_norm, patch%fy_track, patch%fz_track, patch%approach, patch%area, &
+         patch%p_max, patch%gamma0, patch%r0, patch%y_track, patch%z_track, &
+         patch%coulomb_ratio, patch%adhesion_fraction]
+   end subroutine patch_values
+
+   !> A result as a flat list: the main patch ([[patch_values]], 1–17), then the number of
+   !> patches, of loaded patches, the main patch's index, the track totals ΣF_x, ΣF_y, ΣF_z,
+   !> ΣF_n and the vertical approach Δz (18–25).
+   pure subroutine result_values(result, values)
+      !> The result.
+      type(contact_result_type), intent(in) :: result
+      !> Its values (at least result_value_count).
+      real(wp), intent(out) :: values(:)
+      call patch_values(result%main, values(1:patch_value_count))
+      values(patch_value_count + 1:result_value_count) = [real(result%n_patches, wp), &
+         real(result%n_loaded, wp), real(result%main_patch, wp), result%track%fx, &
+         result%track%fy, result%track%fz, result%track%fn, result%dz]
+   end subroutine result_values
+
+end module shcontact_api_solver

@@ -1,0 +1,126 @@
+!> The result of one case: the summary numbers every case has, and the per-patch solutions that
+!> are kept when fields are stored.
+module shcontact_case_result
+   use shcontact_core_kinds, only: wp
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_tangential_patch, only: tangential_patch_type
+   implicit none
+   private
+
+   public :: case_summary_type, case_result_type, summary_columns, n_summary_columns
+   public :: summary_value, set_summary_value, case_not_run, failure_type
+
+   !> Status of a case that has not been solved yet.
+   integer, parameter :: case_not_run = -1
+
+   !> The numbers of one case that go into the `/summary` table (forces on the wheel,
+   !> physics.md decision 2). With several patches, `fn` is their total normal force and the
+   !> other values are those of the main patch (the one carrying the largest normal force).
+   type :: case_summary_type
+      !> 0 when solved; otherwise the error status ([[case_not_run]] before it runs).
+      integer :: stat = case_not_run
+      !> Number of contact patches.
+      integer :: n_patches = 0
+      !> Index of the main patch.
+      integer :: main_patch = 0
+      !> Total normal force of all patches (N).
+      real(wp) :: fn_total = 0.0_wp
+      !> Main patch: normal force (N), tangential forces (N), spin moment (N·mm).
+      real(wp) :: fn = 0.0_wp, fx = 0.0_wp, fy = 0.0_wp, mz = 0.0_wp
+      !> Main patch: normalised forces F/(μ F_n).
+      real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
+      !> Main patch: Coulomb check max|p|/(μ p_n) and adhesion area fraction.
+      real(wp) :: coulomb_ratio = 0.0_wp, adhesion_fraction = 0.0_wp
+      !> Main patch: approach δ (mm; column `delta` of /summary), contact area (mm²), peak
+      !> pressure (MPa).
+      real(wp) :: approach = 0.0_wp, area = 0.0_wp, p_max = 0.0_wp
+      !> Main patch: contact angle γ₀ (rad), rolling radius r₀ (mm), lateral track position of
+      !> the reference point (mm).
+      real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp, y_track = 0.0_wp
+   end type case_summary_type
+
+   !> Names and units of the real summary columns, in file order.
+   integer, parameter :: n_summary_columns = 15
+   character(len=*), parameter :: summary_columns(2, n_summary_columns) = reshape( &
+      [character(len=17) :: &
+      'fn_total', 'N', 'fn', 'N', 'fx', 'N', 'fy', 'N', 'mz', 'N mm', 'fx_norm', '1', &
+      'fy_norm', '1', 'coulomb_ratio', '1', 'adhesion_fraction', '1', 'delta', 'mm', &
+      'area', 'mm^2', 'p_max', 'MPa', 'gamma0', 'rad', 'r0', 'mm', 'y_track', 'mm'], &
+      [2, n_summary_columns])
+
+   !> Everything one case produced.
+   type :: case_result_type
+      !> The summary numbers.
+      type(case_summary_type) :: summary
+      !> Why the case failed (when summary%stat > 0).
+      character(len=:), allocatable :: message
+      !> Per-patch geometry, normal and tangential solutions (kept when fields are stored).
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_patch_type), allocatable :: normal(:)
+      type(tangential_patch_type), allocatable :: tangential(:)
+   end type case_result_type
+
+   !> A failed case and why.
+   type :: failure_type
+      !> Case number.
+      integer :: case = 0
+      !> The error message.
+      character(len=:), allocatable :: message
+   end type failure_type
+
+contains
+
+   !> The value of real summary column `k` (numbering of [[summary_columns]]).
+   pure real(wp) function summary_value(s, k)
+      !> The summary.
+      type(case_summary_type), intent(in) :: s
+      !> Column number.
+      integer, intent(in) :: k
+      select case (k)
+      case (1); summary_value = s%fn_total
+      case (2); summary_value = s%fn
+      case (3); summary_value = s%fx
+      case (4); summary_value = s%fy
+      case (5); summary_value = s%mz
+      case (6); summary_value = s%fx_norm
+      case (7); summary_value = s%fy_norm
+      case (8); summary_value = s%coulomb_ratio
+      case (9); summary_value = s%adhesion_fraction
+      case (10); summary_value = s%approach
+      case (11); summary_value = s%area
+      case (12); summary_value = s%p_max
+      case (13); summary_value = s%gamma0
+      case (14); summary_value = s%r0
+      case default; summary_value = s%y_track
+      end select
+   end function summary_value
+
+   !> Set real summary column `k`.
+   pure subroutine set_summary_value(s, k, value)
+      !> The summary.
+      type(case_summary_type), intent(inout) :: s
+      !> Column number.
+      integer, intent(in) :: k
+      !> The value.
+      real(wp), intent(in) :: value
+      select case (k)
+      case (1); s%fn_total = value
+      case (2); s%fn = value
+      case (3); s%fx = value
+      case (4); s%fy = value
+      case (5); s%mz = value
+      case (6); s%fx_norm = value
+      case (7); s%fy_norm = value
+      case (8); s%coulomb_ratio = value
+      case (9); s%adhesion_fraction = value
+      case (10); s%approach = value
+      case (11); s%area = value
+      case (12); s%p_max = value
+      case (13); s%gamma0 = value
+      case (14); s%r0 = value
+      case default; s%y_track = value
+      end select
+   end subroutine set_summary_value
+
+end module shcontact_case_result

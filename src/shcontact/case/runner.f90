@@ -1,0 +1,328 @@
+!> One case, stage by stage: configuration → profiles → geometry (contact search, strip tables)
+!> → normal solution → tangential solution → summary.
+!>
+!> [[prepare_run]] does everything that is the same for every case of a run (reading and
+!> smoothing the profiles, placing the rail, translating the options). A sweep then solves the
+!> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
+!> tangential problem once per case ([[solve_case]]). None of these procedures print or touch
+!> global state, so cases can be solved by several threads at once.
+module shcontact_case_runner
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_material, only: material_type
+   use shcontact_core_strings, only: str_int
+   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
+   use shcontact_profile_reader, only: read_profile
+   use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
+   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
+      prepare_profiles, find_contact_patches
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_options, only: normal_options_type, new_normal_options
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
+      solve_approach, solve_vertical_load
+   use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
+      parse_spin_model, parse_spin_flexibility
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
+      spin_model_choices
+   use shcontact_case_result, only: case_result_type, case_summary_type
+   implicit none
+   private
+
+   public :: run_setup_type, stage_type, prepare_run, load_profile, solve_geometry, solve_stage
+   public :: solve_case, march_workspace_type, tangential_patch_type
+
+   !> What every case of a run shares.
+   type :: run_setup_type
+      !> The profiles as read (or built in).
+      type(profile_type) :: wheel, rail
+      !> Smoothed, placed profiles ready for the contact search.
+      type(prepared_profiles_type) :: prepared
+      !> Side of the wheel (the lateral shift and roll come with each case).
+      type(wheelset_position_type) :: position
+      !> Normal and tangential options (bound and spin model come with each case).
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+      !> Elastic constants (the friction comes with each case).
+      type(material_type) :: material
+      !> 'force', 'approach' or 'vertical'.
+      character(len=:), allocatable :: load_mode
+      !> Solver codes of the bound and spin-model names (parsed once, looked up per case).
+      integer :: bound_codes(size(bound_choices)) = 0
+      integer :: spin_model_codes(size(spin_model_choices)) = 0
+   end type run_setup_type
+
+   !> Geometry and normal solution of one (t_y, roll, load), shared by the cases that have them.
+   type :: stage_type
+      !> 0 when solved, else the error status.
+      integer :: stat = 0
+      !> Why it failed.
+      character(len=:), allocatable :: message
+      !> The candidate patches.
+      type(patch_geometry_type), allocatable :: geometry(:)
+      !> The normal solution of each loaded patch.
+      type(normal_patch_type), allocatable :: normal(:)
+   end type stage_type
+
+contains
+
+   !> Read the profiles and prepare everything the cases share.
+   subroutine prepare_run(config, setup, error)
+      !> The validated configuration.
+      type(case_config_type), intent(in) :: config
+      !> The shared data.
+      type(run_setup_type), intent(out) :: setup
+      !> Set for unreadable or bad profiles, or profiles that cannot be placed.
+      type(error_type), allocatable, intent(out) :: error
+      type(track_type) :: track
+      type(contact_options_type) :: options
+      integer :: k
+
+      call load_profile(config%profiles%wheel, config%profiles%wheel_format, profile_kind_wheel, &
+         setup%wheel, error)
+      if (allocated(error)) return
+      call load_profile(config%profiles%rail, config%profiles%rail_format, profile_kind_rail, &
+         setup%rail, error)
+      if (allocated(error)) return
+
+      track%gauge = config%track%gauge
+      track%gauge_height = config%track%gauge_height
+      track%rail_inclination = config%track%inclination
+      track%rail_canted = config%track%rail_canted
+      track%flange_back_distance = config%track%flange_back_distance
+      track%flange_back_position = config%track%flange_back_position
+      track%nominal_radius = config%track%nominal_radius
+      options%l_filt_wheel = config%profiles%wheel_smoothing
+      options%l_filt_rail = config%profiles%rail_smoothing
+      options%b_min = config%normal%b_min
+      options%a_reference_normal = config%normal%longitudinal_curvature == 'reference'
+      call prepare_profiles(setup%wheel, setup%rail, track, options, setup%prepared, error)
+      if (allocated(error)) return
+
+      setup%position%side = side_right
+      if (config%track%side == 'left') setup%position%side = side_left
+      call new_normal_options(setup%normal, error, method=trim(config%normal%method), &
+         reduction=trim(config%normal%reduction), epsilon=config%normal%epsilon, &
+         n_strips=config%normal%n_strips)
+      if (allocated(error)) return
+      call parse_method(trim(config%tangential%method), setup%tangential%method, error)
+      if (allocated(error)) return
+      call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
+         setup%tangential%spin_flexibility, error)
+      if (allocated(error)) return
+      setup%tangential%n_elements = config%tangential%n_elements
+      setup%tangential%fields = config%wants_field('pressure') .or. &
+         config%wants_field('traction') .or. config%wants_field('state') .or. &
+         config%wants_field('slip')
+      setup%material = config%material
+      setup%load_mode = trim(config%load%mode)
+      do k = 1, size(bound_choices)
+         call parse_bound(trim(bound_choices(k)), setup%bound_codes(k), error)
+         if (allocated(error)) return
+      end do
+      do k = 1, size(spin_model_choices)
+         call parse_spin_model(trim(spin_model_choices(k)), setup%spin_model_codes(k), error)
+         if (allocated(error)) return
+      end do
+   end subroutine prepare_run
+
+   !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
+   subroutine load_profile(spec, format, kind, profile, error)
+      !> `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: spec
+      !> File format ('auto', 'plain', 'simpack', 'miniprof').
+      character(len=*), intent(in) :: format
+      !> profile_kind_wheel or profile_kind_rail.
+      integer, intent(in) :: kind
+      !> The profile.
+      type(profile_type), intent(out) :: profile
+      !> Set for a missing, unreadable or malformed profile.
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: lines(:)
+
+      if (index(spec, 'builtin:') == 1) then
+         call builtin_profile(trim(spec(9:)), profile, error)
+         return
+      end if
+      call read_profile(trim(spec), profile, error, format=trim(format), kind=kind, &
+         line_of_point=lines)
+      if (allocated(error)) return
+      call clean_profile(profile, error, lines)
+   end subroutine load_profile
+
+   !> The contact patches of one wheelset position.
+   subroutine solve_geometry(setup, point, geometry, error)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (t_y, roll).
+      type(case_point_type), intent(in) :: point
+      !> The patches, deepest first.
+      type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
+      !> Set when the profiles do not touch or the search fails.
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_position_type) :: position
+      position = setup%position
+      position%y_ws = point%t_y
+      position%roll = point%roll
+      call find_contact_patches(setup%prepared, position, geometry, error)
+      if (allocated(error)) return
+      if (size(geometry) == 0) call fatal_error(error, 'no contact patch found', stat_invalid_input)
+   end subroutine solve_geometry
+
+   !> Normal solution for one (t_y, roll, load) on its geometry. Loading 'force' and
+   !> 'approach' act on the first (deepest) patch, 'vertical' on all patches at once
+   !> (physics.md §4.6).
+   subroutine solve_stage(setup, point, geometry, stage)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (load).
+      type(case_point_type), intent(in) :: point
+      !> The patches of this wheelset position.
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      !> The result; stage%stat > 0 on failure.
+      type(stage_type), intent(out) :: stage
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(error_type), allocatable :: error
+      real(wp) :: dz
+      integer :: k, n
+
+      stage%geometry = geometry
+      n = 1
+      if (setup%load_mode == 'vertical') n = size(geometry)
+      allocate (contacts(n), stage%normal(n))
+      do k = 1, n
+         call prepare_normal_contact(contacts(k), geometry(k), setup%normal, setup%material, &
+            error)
+         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+         if (failed(stage, error)) return
+      end do
+      select case (setup%load_mode)
+      case ('force')
+         call solve_load(contacts(1), point%normal_force, stage%normal(1), error)
+      case ('approach')
+         call solve_approach(contacts(1), point%approach, stage%normal(1), error)
+      case default
+         call solve_vertical_load(contacts, point%vertical_force, stage%normal, dz, error)
+      end select
+      if (failed(stage, error)) return
+   end subroutine solve_stage
+
+   !> Record an error in the stage; true when there was one.
+   logical function failed(stage, error)
+      type(stage_type), intent(inout) :: stage
+      type(error_type), allocatable, intent(in) :: error
+      failed = allocated(error)
+      if (.not. failed) return
+      stage%stat = error%stat
+      stage%message = error%message
+   end function failed
+
+   !> The tangential solution of one case on its stage, and its summary. `fields` keeps the
+   !> geometry, normal and tangential solutions in the result.
+   subroutine solve_case(setup, point, stage, ws, tangential, result, fields)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (friction, bound, spin model, creepages).
+      type(case_point_type), intent(in) :: point
+      !> Its geometry and normal solution.
+      type(stage_type), intent(in) :: stage
+      !> The thread's tangential workspace, reused from case to case.
+      type(march_workspace_type), intent(inout) :: ws
+      !> The thread's tangential solutions, one per patch, reused from case to case.
+      type(tangential_patch_type), allocatable, intent(inout) :: tangential(:)
+      !> The result (summary%stat > 0 on failure, with a message).
+      type(case_result_type), intent(out) :: result
+      !> Keep the solutions in the result.
+      logical, intent(in) :: fields
+      type(error_type), allocatable :: error
+      type(tangential_options_type) :: options
+      type(material_type) :: material
+      type(creepage_type) :: creepage
+      integer :: k, n
+
+      if (stage%stat /= 0) then
+         result%summary%stat = stage%stat
+         result%message = stage%message
+         return
+      end if
+      options = setup%tangential
+      ! The names were validated with the configuration: look their codes up.
+      do k = 1, size(bound_choices)
+         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
+      end do
+      do k = 1, size(spin_model_choices)
+         if (point%spin_model == spin_model_choices(k)) &
+            options%spin_model = setup%spin_model_codes(k)
+      end do
+      material = setup%material
+      material%friction = point%friction
+      creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
+      n = size(stage%normal)
+      if (allocated(tangential)) then
+         if (size(tangential) < n) deallocate (tangential)
+      end if
+      if (.not. allocated(tangential)) allocate (tangential(n))
+      do k = 1, n
+         if (allocated(error)) exit
+         if (.not. (stage%normal(k)%load > 0.0_wp)) then
+            ! A patch that carries nothing (vertical loading) has no tractions.
+            tangential(k) = tangential_patch_type()
+            cycle
+         end if
+         call solve_tangential(ws, stage%normal(k), material, creepage, options, &
+            tangential(k), error)
+         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+      end do
+      if (allocated(error)) then
+         result%summary%stat = error%stat
+         result%message = error%message
+         return
+      end if
+      call summarise(stage, tangential(1:n), result%summary)
+      if (fields) then
+         result%geometry = stage%geometry
+         result%normal = stage%normal
+         result%tangential = tangential(1:n)
+      end if
+   end subroutine solve_case
+
+   !> Summary numbers: totals over the patches and the values of the main (most loaded) patch.
+   pure subroutine summarise(stage, tangential, s)
+      type(stage_type), intent(in) :: stage
+      type(tangential_patch_type), intent(in) :: tangential(:)
+      type(case_summary_type), intent(inout) :: s
+      integer :: m, k
+      s%stat = 0
+      s%n_patches = size(stage%normal)
+      m = 1
+      do k = 2, size(stage%normal)
+         if (stage%normal(k)%load > stage%normal(m)%load) m = k
+      end do
+      s%main_patch = m
+      s%fn_total = 0.0_wp
+      do k = 1, size(stage%normal)
+         s%fn_total = s%fn_total + stage%normal(k)%load
+      end do
+      s%fn = stage%normal(m)%load
+      s%fx = tangential(m)%fx
+      s%fy = tangential(m)%fy
+      s%mz = tangential(m)%mz
+      s%fx_norm = tangential(m)%fx_norm
+      s%fy_norm = tangential(m)%fy_norm
+      s%coulomb_ratio = tangential(m)%coulomb_ratio
+      s%adhesion_fraction = tangential(m)%adhesion_fraction
+      s%approach = stage%normal(m)%approach
+      s%area = stage%normal(m)%area
+      s%p_max = stage%normal(m)%p_max
+      s%gamma0 = stage%geometry(m)%gamma0
+      s%r0 = stage%geometry(m)%r0
+      s%y_track = stage%geometry(m)%y_track
+   end subroutine summarise
+
+end module shcontact_case_runner

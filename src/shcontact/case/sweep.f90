@@ -1,0 +1,546 @@
+!> The sweep driver: every case of a run (one case, a grid or a list), solved in blocks by
+!> OpenMP threads, checkpointed after each block, assembled into one HDF5 file.
+!>
+!> * **Determinism.** Each case is solved by one thread, from its own inputs only, and stored by
+!>   its index: the results are bitwise identical for any number of threads and any block size.
+!> * **Shared stages.** Geometry is computed once per distinct (t_y, roll) and the normal
+!>   solution once per distinct (t_y, roll, load) of a block; a sweep over creepages, friction,
+!>   bound or spin model solves the tangential problem only.
+!> * **Checkpoints.** Next to the output OUT.h5 a directory OUT.h5.partial/ receives one
+!>   complete result file per finished block (written under a temporary name, renamed when
+!>   complete) and a list of them, `blocks.txt`. A run that is killed keeps every finished
+!>   block readable; `resume` solves only the missing cases. At the end the blocks are merged
+!>   into OUT.h5 (again through a temporary name) and the directory is removed, so a failed
+!>   or interrupted run never leaves a partial file under the final name.
+!> * **Shards.** Shard I of N solves the contiguous slice of cases
+!>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
+!>   unsharded run.
+module shcontact_case_sweep
+   !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
+      stat_io, stat_usage
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
+      axis_geometry, axis_load
+   use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
+      read_result_summary
+   use shcontact_io_files, only: make_directory, remove_directory, delete_file, file_exists, &
+      rename_file
+   use shcontact_io_clock, only: iso_timestamp, wall_seconds
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: string_list_type
+   use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
+      case_not_run
+   use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
+      solve_stage, solve_case, march_workspace_type, tangential_patch_type
+   implicit none
+   private
+
+   public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
+   public :: shard_range, shard_output_name, checkpoint_directory
+
+   abstract interface
+      !> Called with the number of finished cases of the shard (resumed ones included): from
+      !> one thread while cases are solved (committed = .false.), and after each checkpoint
+      !> block is written (committed = .true.).
+      subroutine progress_interface(done, total, committed)
+         !> Cases finished and cases in the shard.
+         integer, intent(in) :: done, total
+         !> A checkpoint block has just been written.
+         logical, intent(in) :: committed
+      end subroutine progress_interface
+   end interface
+
+   !> How to run.
+   type :: sweep_options_type
+      !> Threads (0: the OpenMP default).
+      integer :: threads = 0
+      !> This shard and the number of shards.
+      integer :: shard = 1, n_shards = 1
+      !> Continue from the checkpoint of an interrupted run.
+      logical :: resume = .false.
+      !> Recorded in the output file.
+      character(len=:), allocatable :: command_line
+      !> Progress report (optional).
+      procedure(progress_interface), pointer, nopass :: progress => null()
+   end type sweep_options_type
+
+   !> What a run did.
+   type :: sweep_outcome_type
+      !> The file written.
+      character(len=:), allocatable :: output
+      !> Cases of the run, and the slice [first, last] of this shard.
+      integer :: n_cases = 0, first = 1, last = 0
+      !> Summaries of the shard's cases, indexed first:last.
+      type(case_summary_type), allocatable :: summaries(:)
+      !> The failed cases.
+      type(failure_type), allocatable :: failures(:)
+      !> Cases taken from the checkpoint, threads used.
+      integer :: n_resumed = 0, n_threads = 1
+   end type sweep_outcome_type
+
+   !> Name of the checkpoint list inside the checkpoint directory.
+   character(len=*), parameter :: manifest_name = 'blocks.txt'
+   !> Automatic block size: aim at this many seconds per block.
+   real(wp), parameter :: block_seconds = 5.0_wp
+
+   !> Geometry of one wheelset position (or why there is none).
+   type :: geometry_set_type
+      integer :: stat = 0
+      character(len=:), allocatable :: message
+      type(patch_geometry_type), allocatable :: patches(:)
+   end type geometry_set_type
+
+   !> Per-thread tangential solutions.
+   type :: thread_solutions_type
+      type(tangential_patch_type), allocatable :: patches(:)
+   end type thread_solutions_type
+
+contains
+
+   !> Cases ((shard−1)·n/N, shard·n/N] of a run of n cases split in N shards.
+   pure subroutine shard_range(n_cases, shard, n_shards, first, last)
+      !> Cases of the run.
+      integer, intent(in) :: n_cases
+      !> Shard index (1-based) and number of shards.
+      integer, intent(in) :: shard, n_shards
+      !> First and last case of the shard (last < first when it is empty).
+      integer, intent(out) :: first, last
+      first = int(int(shard - 1, kind=8)*n_cases/n_shards) + 1
+      last = int(int(shard, kind=8)*n_cases/n_shards)
+   end subroutine shard_range
+
+   !> OUT.h5 → OUT-shardIofN.h5 (the extension kept), unchanged for one shard.
+   pure function shard_output_name(file, shard, n_shards) result(name)
+      !> Output file of the run.
+      character(len=*), intent(in) :: file
+      !> Shard index and number of shards.
+      integer, intent(in) :: shard, n_shards
+      character(len=:), allocatable :: name
+      character(len=:), allocatable :: tag
+      integer :: dot, slash
+      name = trim(file)
+      if (n_shards <= 1) return
+      tag = '-shard'//str_int(shard)//'of'//str_int(n_shards)
+      dot = index(name, '.', back=.true.)
+      slash = index(name, '/', back=.true.)
+      if (dot > slash + 1) then
+         name = name(1:dot - 1)//tag//name(dot:)
+      else
+         name = name//tag
+      end if
+   end function shard_output_name
+
+   !> The checkpoint directory of an output file.
+   pure function checkpoint_directory(output) result(dir)
+      !> The output file.
+      character(len=*), intent(in) :: output
+      character(len=:), allocatable :: dir
+      dir = trim(output)//'.partial'
+   end function checkpoint_directory
+
+   !> Run every case of the shard and write the output file.
+   !>
+   !> Returns an error (and leaves no output) when the run cannot start (profiles, output
+   !> directory, checkpoint of another configuration) or when every case failed; when only
+   !> some cases fail the file is written and `outcome%failures` lists them.
+   subroutine run_sweep(config, options, outcome, error)
+      !> The validated configuration.
+      type(case_config_type), intent(in) :: config
+      !> Threads, shard, resume, progress.
+      type(sweep_options_type), intent(in) :: options
+      !> What was done.
+      type(sweep_outcome_type), intent(out) :: outcome
+      !> Set when the run failed as a whole.
+      type(error_type), allocatable, intent(out) :: error
+
+      type(run_setup_type) :: setup
+      type(run_info_type) :: info
+      type(geometry_set_type) :: common
+      type(march_workspace_type), allocatable :: workspaces(:)
+      type(thread_solutions_type), allocatable :: solutions(:)
+      type(case_result_type), allocatable :: results(:)
+      character(len=:), allocatable :: dir
+      type(string_list_type) :: blocks
+      integer, allocatable :: todo(:)
+      logical :: common_geometry, fields
+      integer :: n, n_done, next, block, nb, i
+      real(wp) :: t0, per_case
+
+      n = config%n_cases()
+      outcome%n_cases = n
+      if (options%n_shards < 1 .or. options%shard < 1 .or. options%shard > options%n_shards) then
+         call fatal_error(error, 'shard '//str_int(options%shard)//'/'// &
+            str_int(options%n_shards)//': expected 1 <= I <= N', stat_usage)
+         return
+      end if
+      call shard_range(n, options%shard, options%n_shards, outcome%first, outcome%last)
+      if (outcome%last < outcome%first) then
+         call fatal_error(error, 'shard '//str_int(options%shard)//'/'// &
+            str_int(options%n_shards)//' of a run of '//str_int(n)// &
+            ' cases is empty; use at most '//str_int(n)//' shards', stat_usage)
+         return
+      end if
+      outcome%output = shard_output_name(config%output%file, options%shard, options%n_shards)
+      dir = checkpoint_directory(outcome%output)
+      allocate (outcome%summaries(outcome%first:outcome%last), outcome%failures(0))
+      outcome%n_threads = 1
+      !$ outcome%n_threads = omp_get_max_threads()
+      if (options%threads > 0) outcome%n_threads = options%threads
+      fields = config%wants_field('geometry') .or. config%wants_field('strips') .or. &
+         config%wants_field('pressure') .or. config%wants_field('traction') .or. &
+         config%wants_field('state') .or. config%wants_field('slip')
+
+      ! Everything that can fail before any file is touched.
+      call prepare_run(config, setup, error)
+      if (allocated(error)) return
+      info%namelist = config_namelist(config)
+      info%command_line = 'shcontact'
+      if (allocated(options%command_line)) info%command_line = options%command_line
+      info%date = iso_timestamp()
+      info%n_cases = n
+      info%shard = ''
+      if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
+         str_int(options%n_shards)
+      info%profiles = [setup%wheel, setup%rail]
+      common_geometry = .not. (config%sweep%axes(1)%active .or. config%sweep%axes(2)%active)
+      if (common_geometry) then
+         call solve_geometry(setup, config%case_point(outcome%first), common%patches, error)
+         if (allocated(error)) return
+         info%geometry = common%patches
+      end if
+
+      call make_directory(dir, error)
+      if (allocated(error)) then
+         call prefix_error(error, 'cannot write the output "'//outcome%output//'"')
+         return
+      end if
+      if (options%resume) then
+         call read_checkpoint(dir, info%namelist, n, outcome, blocks, error)
+         if (allocated(error)) return
+      else
+         call clear_checkpoint(dir, keep_directory=.true.)
+         blocks%n = 0
+      end if
+
+      todo = pack([(i, i=outcome%first, outcome%last)], &
+         outcome%summaries%stat == case_not_run)
+      n_done = (outcome%last - outcome%first + 1) - size(todo)
+      allocate (workspaces(outcome%n_threads), solutions(outcome%n_threads))
+      next = 1
+      block = max(16, 4*outcome%n_threads)
+      if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
+      do while (next <= size(todo))
+         nb = min(block, size(todo) - next + 1)
+         if (allocated(results)) deallocate (results)
+         allocate (results(nb))
+         t0 = wall_seconds()
+         call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
+            results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
+            outcome%last - outcome%first + 1)
+         per_case = (wall_seconds() - t0)/nb
+         call commit_block(dir, blocks, info, config, todo(next:next + nb - 1), results, error)
+         if (allocated(error)) return
+         do i = 1, nb
+            outcome%summaries(todo(next + i - 1)) = results(i)%summary
+            if (results(i)%summary%stat > 0) call add_failure(outcome%failures, &
+               todo(next + i - 1), message_of(results(i)))
+         end do
+         n_done = n_done + nb
+         next = next + nb
+         if (associated(options%progress)) call options%progress(n_done, &
+            outcome%last - outcome%first + 1, .true.)
+         if (config%output%checkpoint_cases == 0 .and. per_case > 0.0_wp) then
+            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
+               block_seconds/per_case)))
+         end if
+      end do
+
+      if (size(outcome%failures) == outcome%last - outcome%first + 1) then
+         ! Nothing to write: every case failed, and they all tell why.
+         call fatal_error(error, failure_text(outcome, outcome%failures(1)), &
+            outcome%summaries(outcome%failures(1)%case)%stat)
+         call clear_checkpoint(dir, keep_directory=.false.)
+         return
+      end if
+      call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
+         info%date, error, allow_partial=options%n_shards > 1, shard=info%shard)
+      if (allocated(error)) return
+      call clear_checkpoint(dir, keep_directory=.false.)
+   end subroutine run_sweep
+
+   !> "case i: message" (just the message for a one-case run).
+   function failure_text(outcome, failure) result(text)
+      type(sweep_outcome_type), intent(in) :: outcome
+      type(failure_type), intent(in) :: failure
+      character(len=:), allocatable :: text
+      text = failure%message
+      if (outcome%n_cases > 1) text = 'case '//str_int(failure%case)//': '//text
+   end function failure_text
+
+   subroutine add_failure(failures, icase, message)
+      type(failure_type), allocatable, intent(inout) :: failures(:)
+      integer, intent(in) :: icase
+      character(len=*), intent(in) :: message
+      type(failure_type) :: f
+      f%case = icase
+      f%message = message
+      failures = [failures, f]
+   end subroutine add_failure
+
+   function message_of(result) result(message)
+      type(case_result_type), intent(in) :: result
+      character(len=:), allocatable :: message
+      message = 'failed'
+      if (allocated(result%message)) message = result%message
+   end function message_of
+
+   !> Solve the cases of one block: shared geometry and normal stages first, then every case,
+   !> each by one thread.
+   subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
+                          solutions, fields, n_threads, options, done_before, total)
+      type(run_setup_type), intent(in) :: setup
+      type(case_config_type), intent(in) :: config
+      logical, intent(in) :: common_geometry
+      type(geometry_set_type), intent(in) :: common
+      integer, intent(in) :: cases(:)
+      type(case_result_type), intent(inout) :: results(:)
+      type(march_workspace_type), intent(inout) :: workspaces(:)
+      type(thread_solutions_type), intent(inout) :: solutions(:)
+      logical, intent(in) :: fields
+      integer, intent(in) :: n_threads
+      type(sweep_options_type), intent(in) :: options
+      integer, intent(in) :: done_before, total
+
+      integer, allocatable :: geometry_keys(:), load_keys(:), stage_of(:), geometry_of(:)
+      type(geometry_set_type), allocatable :: geometries(:)
+      type(stage_type), allocatable :: stages(:)
+      type(error_type), allocatable :: error
+      integer :: i, k, nb, done, me, report
+      logical :: has_progress
+
+      nb = size(cases)
+      allocate (stage_of(nb))
+      ! Distinct (t_y, roll, load) of the block, each named by its first case of the run.
+      load_keys = [(config%shares_with(cases(i), axis_load), i=1, nb)]
+      call unique_keys(load_keys, stage_of)
+      allocate (geometry_of(size(load_keys)))
+      geometry_keys = [(config%shares_with(load_keys(k), axis_geometry), k=1, size(load_keys))]
+      call unique_keys(geometry_keys, geometry_of)
+
+      if (common_geometry) then
+         allocate (geometries(1))
+         geometries(1) = common
+         geometry_of = 1
+      else
+         allocate (geometries(size(geometry_keys)))
+         !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
+         !$omp shared(geometries, geometry_keys, setup, config) private(k, error)
+         do k = 1, size(geometry_keys)
+            call solve_geometry(setup, config%case_point(geometry_keys(k)), &
+               geometries(k)%patches, error)
+            if (allocated(error)) then
+               geometries(k)%stat = error%stat
+               geometries(k)%message = error%message
+            end if
+         end do
+         !$omp end parallel do
+      end if
+
+      allocate (stages(size(load_keys)))
+      !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
+      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config) private(k)
+      do k = 1, size(load_keys)
+         if (geometries(geometry_of(k))%stat /= 0) then
+            stages(k)%stat = geometries(geometry_of(k))%stat
+            stages(k)%message = geometries(geometry_of(k))%message
+         else
+            call solve_stage(setup, config%case_point(load_keys(k)), &
+               geometries(geometry_of(k))%patches, stages(k))
+         end if
+      end do
+      !$omp end parallel do
+
+      done = done_before
+      has_progress = associated(options%progress)
+      !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+      !$omp shared(cases, stages, stage_of, results, workspaces, solutions, setup, config, &
+      !$omp fields, options, done, total, has_progress, nb) private(i, me, report)
+      do i = 1, nb
+         me = 1
+         !$ me = omp_get_thread_num() + 1
+         call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
+            workspaces(me), solutions(me)%patches, results(i), fields)
+         !$omp atomic capture
+         done = done + 1
+         report = done
+         !$omp end atomic
+         if (has_progress .and. me == 1) call options%progress(report, total, .false.)
+      end do
+      !$omp end parallel do
+   end subroutine solve_block
+
+   !> Replace each key by its position in the list of distinct keys (order of appearance) and
+   !> shrink the list to the distinct keys.
+   pure subroutine unique_keys(keys, position)
+      integer, allocatable, intent(inout) :: keys(:)
+      integer, intent(out) :: position(:)
+      integer, allocatable :: distinct(:)
+      integer :: i, j, n
+      allocate (distinct(size(keys)))
+      n = 0
+      do i = 1, size(keys)
+         position(i) = 0
+         do j = n, max(1, n - 8), -1
+            if (distinct(j) == keys(i)) then
+               position(i) = j
+               exit
+            end if
+         end do
+         if (position(i) == 0) then
+            do j = 1, n
+               if (distinct(j) == keys(i)) then
+                  position(i) = j
+                  exit
+               end if
+            end do
+         end if
+         if (position(i) == 0) then
+            n = n + 1
+            distinct(n) = keys(i)
+            position(i) = n
+         end if
+      end do
+      keys = distinct(1:n)
+   end subroutine unique_keys
+
+   ! ------------------------------------------------------------------------------------------
+   ! Checkpoints
+   ! ------------------------------------------------------------------------------------------
+
+   !> Write a block file and add it to the list.
+   subroutine commit_block(dir, blocks, info, config, cases, results, error)
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(inout) :: blocks
+      type(run_info_type), intent(in) :: info
+      type(case_config_type), intent(in) :: config
+      integer, intent(in) :: cases(:)
+      type(case_result_type), intent(in) :: results(:)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name
+      character(len=12) :: buf
+      write (buf, '(i6.6)') blocks%n + 1
+      name = dir//'/block_'//trim(buf)//'.h5'
+      call write_result_file(name, info, config, cases, results, error)
+      if (allocated(error)) return
+      call blocks%push(name)
+      call write_manifest(dir, blocks, error)
+   end subroutine commit_block
+
+   !> Rewrite the list of block files (through a temporary file and a rename).
+   subroutine write_manifest(dir, blocks, error)
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(in) :: blocks
+      type(error_type), allocatable, intent(out) :: error
+      integer :: unit, stat, i
+      character(len=:), allocatable :: name
+      name = dir//'/'//manifest_name
+      open (newunit=unit, file=name//'.tmp', status='replace', action='write', iostat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
+         return
+      end if
+      do i = 1, blocks%n
+         write (unit, '(a)', iostat=stat) blocks%items(i)%text
+      end do
+      close (unit)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
+         return
+      end if
+      call rename_file(name//'.tmp', name, error)
+   end subroutine write_manifest
+
+   !> The block files listed in the checkpoint directory.
+   subroutine read_manifest(dir, blocks)
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(out) :: blocks
+      integer :: unit, stat
+      character(len=4096) :: line
+      blocks%n = 0
+      open (newunit=unit, file=dir//'/'//manifest_name, status='old', action='read', &
+         iostat=stat)
+      if (stat /= 0) return
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (len_trim(line) > 0) call blocks%push(trim(line))
+      end do
+      close (unit)
+   end subroutine read_manifest
+
+   !> Take the finished cases from the checkpoint of an interrupted run of this configuration.
+   subroutine read_checkpoint(dir, namelist, n_cases, outcome, blocks, error)
+      character(len=*), intent(in) :: dir, namelist
+      integer, intent(in) :: n_cases
+      type(sweep_outcome_type), intent(inout) :: outcome
+      type(string_list_type), intent(out) :: blocks
+      type(error_type), allocatable, intent(out) :: error
+      type(string_list_type) :: listed
+      character(len=:), allocatable :: text, messages(:)
+      integer, allocatable :: indices(:), failed(:)
+      type(case_summary_type), allocatable :: summaries(:)
+      integer :: b, i, n, j
+
+      call read_manifest(dir, listed)
+      blocks%n = 0
+      do b = 1, listed%n
+         if (.not. file_exists(listed%items(b)%text)) cycle
+         call read_result_summary(listed%items(b)%text, text, n, indices, summaries, failed, &
+            messages, error)
+         if (allocated(error)) then
+            call prefix_error(error, 'cannot resume from the checkpoint in "'//dir//'"')
+            return
+         end if
+         if (text /= namelist .or. n /= n_cases) then
+            call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made '// &
+               'with another configuration; run without --resume to start again', &
+               stat_invalid_input)
+            return
+         end if
+         do i = 1, size(indices)
+            if (indices(i) < outcome%first .or. indices(i) > outcome%last) cycle
+            outcome%summaries(indices(i)) = summaries(i)
+            outcome%n_resumed = outcome%n_resumed + 1
+         end do
+         do j = 1, size(failed)
+            call add_failure(outcome%failures, failed(j), trim_text(messages(j)))
+         end do
+         call blocks%push(listed%items(b)%text)
+      end do
+   end subroutine read_checkpoint
+
+   function trim_text(text) result(t)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: t
+      t = trim(text)
+   end function trim_text
+
+   !> Remove the block files, the list and (unless kept) the directory of a checkpoint.
+   subroutine clear_checkpoint(dir, keep_directory)
+      character(len=*), intent(in) :: dir
+      logical, intent(in) :: keep_directory
+      type(string_list_type) :: blocks
+      integer :: i
+      call read_manifest(dir, blocks)
+      do i = 1, blocks%n
+         if (delete_file(blocks%items(i)%text)) continue
+      end do
+      if (delete_file(dir//'/'//manifest_name)) continue
+      if (.not. keep_directory) then
+         if (remove_directory(dir)) continue
+      end if
+   end subroutine clear_checkpoint
+
+end module shcontact_case_sweep

@@ -1,0 +1,970 @@
+!> HDF5 behind one module: files written under a temporary name and renamed when complete,
+!> datasets with a `units` attribute, optional deflate compression, every handle closed on every
+!> path, errors as values (the HDF5 library's own error printing is switched off).
+!>
+!> Paths are slash-separated from the root (`cases/000001/patch_1/normal/a`); missing
+!> intermediate groups are created. Object modification times are not recorded, so the same
+!> content written in the same order gives the same bytes. Fortran arrays keep their memory
+!> order: a Fortran (n1, n2) array is seen by C and h5py as shape (n2, n1).
+module shcontact_io_hdf5
+   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
+      h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
+      H5P_DATASET_CREATE_F, H5P_LINK_CREATE_F, H5P_GROUP_CREATE_F, h5pset_chunk_f, &
+      h5pset_deflate_f, h5pset_obj_track_times_f, h5pset_create_inter_group_f, h5screate_f, &
+      h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, h5dcreate_f, h5dopen_f, h5dclose_f, &
+      h5dwrite_f, h5dread_f, h5dget_space_f, h5dget_type_f, h5sget_simple_extent_ndims_f, &
+      h5sget_simple_extent_dims_f, h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5tclose_f, &
+      h5tget_size_f, H5T_C_S1, H5T_STR_NULLPAD_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_REAL, &
+      H5T_NATIVE_INTEGER, H5T_STD_I8LE, H5T_STD_I32LE, H5T_IEEE_F64LE, h5kind_to_type, &
+      H5_INTEGER_KIND, h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, &
+      h5aexists_by_name_f, h5aget_type_f, h5gcreate_f, h5gclose_f, h5ocopy_f, h5lexists_f, &
+      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE
+   use shcontact_core_kinds, only: wp, i1
+   use shcontact_core_error, only: error_type, fatal_error, stat_io
+   use shcontact_io_files, only: rename_file, delete_file, process_id
+   use shcontact_core_strings, only: str_int
+   implicit none
+   private
+
+   public :: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, h5_close
+   public :: h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists
+   public :: h5_read, h5_read_attribute, h5_dataset_size
+
+   !> An open HDF5 file.
+   type :: h5_file_type
+      !> HDF5 identifier (−1 when closed).
+      integer(hid_t) :: id = -1
+      !> The file's final name.
+      character(len=:), allocatable :: name
+      !> The name it is written under until [[h5_commit]] ('' for files opened to read).
+      character(len=:), allocatable :: temp_name
+      !> Deflate level for datasets written with `compress = .true.` (0: none).
+      integer :: compression = 0
+      !> Store real datasets written with `compress = .true.` as 32-bit floats.
+      logical :: single = .false.
+   end type h5_file_type
+
+   !> Write a dataset (real, integer, int8 or text; scalar, 1-D or 2-D) with its units.
+   interface h5_write
+      module procedure :: write_real_0d, write_real_1d, write_real_2d, write_int_0d, &
+         write_int_1d, write_int8_2d, write_text_0d, write_text_1d
+   end interface h5_write
+
+   !> Write a scalar attribute (text, real or integer) on a group or dataset.
+   interface h5_write_attribute
+      module procedure :: attr_text, attr_real, attr_int
+   end interface h5_write_attribute
+
+   !> Read a dataset into an allocatable array or a text.
+   interface h5_read
+      module procedure :: read_real_1d, read_real_2d, read_int_1d, read_text_0d, read_text_1d
+   end interface h5_read
+
+   !> Read a scalar attribute.
+   interface h5_read_attribute
+      module procedure :: read_attr_text, read_attr_int, read_attr_real
+   end interface h5_read_attribute
+
+   !> Datasets smaller than this are stored contiguously, without compression.
+   integer, parameter :: min_compressed_size = 256
+
+contains
+
+   ! ------------------------------------------------------------------------------------------
+   ! Files
+   ! ------------------------------------------------------------------------------------------
+
+   !> Start the library once per call (idempotent) and silence its error printing.
+   subroutine start_library(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      call h5open_f(stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'the HDF5 library could not be initialised', stat_io)
+         return
+      end if
+      call h5eset_auto_f(0, stat)
+   end subroutine start_library
+
+   !> Create `name` for writing; the data go to `name.tmp<pid>` until [[h5_commit]].
+   subroutine h5_create(file, name, error, compression, single)
+      !> The new file.
+      type(h5_file_type), intent(out) :: file
+      !> Final file name.
+      character(len=*), intent(in) :: name
+      !> Set when the file cannot be created.
+      type(error_type), allocatable, intent(out) :: error
+      !> Deflate level for compressed datasets (default 0).
+      integer, intent(in), optional :: compression
+      !> Store compressed real datasets as 32-bit floats.
+      logical, intent(in), optional :: single
+      integer :: stat
+
+      call start_library(error)
+      if (allocated(error)) return
+      file%name = name
+      file%temp_name = name//'.tmp'//str_int(process_id())
+      if (present(compression)) file%compression = compression
+      if (present(single)) file%single = single
+      call h5fcreate_f(file%temp_name, H5F_ACC_TRUNC_F, file%id, stat)
+      if (stat /= 0) then
+         file%id = -1
+         call fatal_error(error, 'cannot create the output file "'//name// &
+            '" (is the directory there and writable?)', stat_io)
+      end if
+   end subroutine h5_create
+
+   !> Close a file being written and give it its final name.
+   subroutine h5_commit(file, error)
+      !> The file; closed afterwards.
+      type(h5_file_type), intent(inout) :: file
+      !> Set when closing or renaming fails (the temporary file is then removed).
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      call h5fclose_f(file%id, stat)
+      file%id = -1
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot finish writing "'//file%name//'"', stat_io)
+         if (delete_file(file%temp_name)) continue
+         return
+      end if
+      call rename_file(file%temp_name, file%name, error)
+      if (allocated(error)) then
+         if (delete_file(file%temp_name)) continue
+      end if
+   end subroutine h5_commit
+
+   !> Abandon a file being written: close it and remove the temporary file.
+   subroutine h5_discard(file)
+      !> The file; closed afterwards.
+      type(h5_file_type), intent(inout) :: file
+      integer :: stat
+      if (file%id >= 0) call h5fclose_f(file%id, stat)
+      file%id = -1
+      if (allocated(file%temp_name)) then
+         if (len(file%temp_name) > 0) then
+            if (delete_file(file%temp_name)) continue
+         end if
+      end if
+   end subroutine h5_discard
+
+   !> Open an existing file to read.
+   subroutine h5_open(file, name, error)
+      !> The file.
+      type(h5_file_type), intent(out) :: file
+      !> Its name.
+      character(len=*), intent(in) :: name
+      !> Set when it cannot be opened as HDF5.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      logical :: exists
+      call start_library(error)
+      if (allocated(error)) return
+      file%name = name
+      file%temp_name = ''
+      inquire (file=name, exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, 'cannot open "'//name//'": no such file', stat_io)
+         return
+      end if
+      call h5fopen_f(name, H5F_ACC_RDONLY_F, file%id, stat)
+      if (stat /= 0) then
+         file%id = -1
+         call fatal_error(error, 'cannot open "'//name//'" as an HDF5 file', stat_io)
+      end if
+   end subroutine h5_open
+
+   !> Close a file opened to read (or abandon one being written).
+   subroutine h5_close(file)
+      !> The file.
+      type(h5_file_type), intent(inout) :: file
+      call h5_discard(file)
+   end subroutine h5_close
+
+   ! ------------------------------------------------------------------------------------------
+   ! Groups, links, copies
+   ! ------------------------------------------------------------------------------------------
+
+   !> Create a group (and its missing parents).
+   subroutine h5_make_group(file, path, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Group path.
+      character(len=*), intent(in) :: path
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: gid, lcpl, gcpl
+      integer :: stat, s
+      call h5pcreate_f(H5P_LINK_CREATE_F, lcpl, stat)
+      call h5pset_create_inter_group_f(lcpl, 1, s)
+      call h5pcreate_f(H5P_GROUP_CREATE_F, gcpl, s)
+      call h5pset_obj_track_times_f(gcpl, .false., s)
+      call h5gcreate_f(file%id, path, gid, stat, lcpl_id=lcpl, gcpl_id=gcpl)
+      if (stat == 0) call h5gclose_f(gid, s)
+      call h5pclose_f(gcpl, s)
+      call h5pclose_f(lcpl, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot create the group')
+   end subroutine h5_make_group
+
+   !> True when a link of that path exists (every parent is checked first).
+   function h5_exists(file, path) result(exists)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      logical :: exists
+      integer :: stat, i, j
+      exists = .false.
+      i = 0
+      do
+         j = index(path(i + 1:), '/')
+         if (j == 0) then
+            call h5lexists_f(file%id, path, exists, stat)
+            if (stat /= 0) exists = .false.
+            return
+         end if
+         i = i + j
+         if (i > 1) then
+            call h5lexists_f(file%id, path(1:i - 1), exists, stat)
+            if (stat /= 0 .or. .not. exists) then
+               exists = .false.
+               return
+            end if
+         end if
+      end do
+   end function h5_exists
+
+   !> Copy an object (a group with everything under it, or a dataset) between files.
+   subroutine h5_copy(source, path, target, target_path, error)
+      !> File to copy from.
+      type(h5_file_type), intent(in) :: source
+      !> Object in it.
+      character(len=*), intent(in) :: path
+      !> File to copy to.
+      type(h5_file_type), intent(in) :: target
+      !> Destination path (its parent groups are created).
+      character(len=*), intent(in) :: target_path
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: lcpl
+      integer :: stat, s
+      call h5pcreate_f(H5P_LINK_CREATE_F, lcpl, stat)
+      call h5pset_create_inter_group_f(lcpl, 1, s)
+      call h5ocopy_f(source%id, path, target%id, target_path, stat, lcpl_id=lcpl)
+      call h5pclose_f(lcpl, s)
+      if (stat /= 0) call fatal_error(error, 'cannot copy "'//path//'" from "'//source%name// &
+         '" to "'//target%name//'"', stat_io)
+   end subroutine h5_copy
+
+   ! ------------------------------------------------------------------------------------------
+   ! Writing datasets
+   ! ------------------------------------------------------------------------------------------
+
+   !> Create a dataset of the given file type and shape; compressed and chunked when asked and
+   !> large enough. Returns the dataset; the caller writes and closes it.
+   subroutine create_dataset(file, path, type_id, dims, compress, dset, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(in) :: type_id
+      integer(hsize_t), intent(in) :: dims(:)
+      logical, intent(in) :: compress
+      integer(hid_t), intent(out) :: dset
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: space, dcpl, lcpl
+      integer :: stat, s
+
+      if (size(dims) == 0) then
+         call h5screate_f(H5S_SCALAR_F, space, stat)
+      else
+         call h5screate_simple_f(size(dims), dims, space, stat)
+      end if
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot create the data space')
+         return
+      end if
+      call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, s)
+      call h5pset_obj_track_times_f(dcpl, .false., s)
+      if (compress .and. file%compression > 0 .and. size(dims) > 0) then
+         if (product(dims) >= min_compressed_size) then
+            call h5pset_chunk_f(dcpl, size(dims), dims, s)
+            call h5pset_deflate_f(dcpl, file%compression, s)
+         end if
+      end if
+      call h5pcreate_f(H5P_LINK_CREATE_F, lcpl, s)
+      call h5pset_create_inter_group_f(lcpl, 1, s)
+      call h5dcreate_f(file%id, path, type_id, space, dset, stat, dcpl_id=dcpl, lcpl_id=lcpl)
+      call h5pclose_f(lcpl, s)
+      call h5pclose_f(dcpl, s)
+      call h5sclose_f(space, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot create the dataset')
+   end subroutine create_dataset
+
+   !> The file type of a real dataset: 32-bit when the file stores compressed fields in single
+   !> precision, else 64-bit.
+   integer(hid_t) function real_file_type(file, compress)
+      type(h5_file_type), intent(in) :: file
+      logical, intent(in) :: compress
+      real_file_type = H5T_IEEE_F64LE
+      if (compress .and. file%single) real_file_type = H5T_IEEE_F32LE
+   end function real_file_type
+
+   !> Finish a write: check its status, attach the units, close the dataset.
+   subroutine finish_dataset(file, path, dset, stat, units, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(inout) :: dset
+      integer, intent(in) :: stat
+      character(len=*), intent(in) :: units
+      type(error_type), allocatable, intent(out) :: error
+      integer :: s
+      if (stat /= 0) then
+         call h5dclose_f(dset, s)
+         call fail(error, file, path, 'cannot write the dataset')
+         return
+      end if
+      call put_text_attribute(dset, 'units', units, s)
+      call h5dclose_f(dset, s)
+      if (s /= 0) call fail(error, file, path, 'cannot write the units of the dataset')
+   end subroutine finish_dataset
+
+   subroutine write_real_0d(file, path, value, units, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The value.
+      real(wp), intent(in) :: value
+      !> Its units ('1' for dimensionless).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      call create_dataset(file, path, H5T_IEEE_F64LE, dims, .false., dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, value, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_real_0d
+
+   subroutine write_real_1d(file, path, values, units, error, compress)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      real(wp), intent(in) :: values(:)
+      !> Their units ('1' for dimensionless).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      !> Apply the file's compression and precision settings (a per-element field).
+      logical, intent(in), optional :: compress
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      logical :: pack
+      pack = .false.
+      if (present(compress)) pack = compress
+      dims = shape(values, kind=hsize_t)
+      call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_real_1d
+
+   subroutine write_real_2d(file, path, values, units, error, compress)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values (seen as shape (n2, n1) from C and h5py).
+      real(wp), intent(in) :: values(:, :)
+      !> Their units ('1' for dimensionless).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      !> Apply the file's compression and precision settings (a per-element field).
+      logical, intent(in), optional :: compress
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: stat
+      logical :: pack
+      pack = .false.
+      if (present(compress)) pack = compress
+      dims = shape(values, kind=hsize_t)
+      call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_real_2d
+
+   subroutine write_int_0d(file, path, value, units, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The value.
+      integer, intent(in) :: value
+      !> Its units ('1' for counts and codes).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(0)
+      integer :: stat
+      call create_dataset(file, path, H5T_STD_I32LE, dims, .false., dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, value, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_int_0d
+
+   subroutine write_int_1d(file, path, values, units, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      integer, intent(in) :: values(:)
+      !> Their units ('1' for counts and codes).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat
+      dims = shape(values, kind=hsize_t)
+      call create_dataset(file, path, H5T_STD_I32LE, dims, .false., dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_int_1d
+
+   subroutine write_int8_2d(file, path, values, units, error, compress)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      integer(i1), intent(in) :: values(:, :)
+      !> Their units ('1' for codes).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      !> Apply the file's compression (a per-element field).
+      logical, intent(in), optional :: compress
+      integer(i1), allocatable, target :: buf(:, :)
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: stat
+      logical :: pack
+      type(c_ptr) :: ptr
+      pack = .false.
+      if (present(compress)) pack = compress
+      dims = shape(values, kind=hsize_t)
+      call create_dataset(file, path, H5T_STD_I8LE, dims, pack, dset, error)
+      if (allocated(error)) return
+      buf = values
+      stat = 0
+      if (size(buf) > 0) then
+         ptr = c_loc(buf(1, 1))
+         call h5dwrite_f(dset, h5kind_to_type(i1, H5_INTEGER_KIND), ptr, stat)
+      end if
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_int8_2d
+
+   subroutine write_text_0d(file, path, text, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The text (stored as a fixed-length string, no units attribute needed but one is
+      !> written as '' for uniformity).
+      character(len=*), intent(in) :: text
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, str
+      integer(hsize_t) :: dims(0)
+      integer :: stat, s
+      call make_string_type(max(1, len(text)), str, stat)
+      call create_dataset(file, path, str, dims, .false., dset, error)
+      if (allocated(error)) then
+         call h5tclose_f(str, s)
+         return
+      end if
+      if (len(text) > 0) then
+         call h5dwrite_f(dset, str, text, dims, stat)
+      else
+         call h5dwrite_f(dset, str, achar(0), dims, stat)
+      end if
+      call h5tclose_f(str, s)
+      call finish_dataset(file, path, dset, stat, '', error)
+   end subroutine write_text_0d
+
+   subroutine write_text_1d(file, path, texts, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The texts (trailing blanks are not stored).
+      character(len=*), intent(in) :: texts(:)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n
+      n = 1
+      if (size(texts) > 0) n = max(1, maxval(len_trim(texts)))
+      call write_fixed(n)
+
+   contains
+
+      !> Write the texts NUL-padded to n characters.
+      subroutine write_fixed(n)
+         integer, intent(in) :: n
+         character(len=n) :: buf(size(texts))
+         integer(hid_t) :: dset, str
+         integer(hsize_t) :: dims(1)
+         integer :: stat, s, i
+         do i = 1, size(texts)
+            buf(i) = repeat(achar(0), n)
+            buf(i)(1:len_trim(texts(i))) = texts(i)(1:len_trim(texts(i)))
+         end do
+         dims = shape(texts, kind=hsize_t)
+         call make_string_type(n, str, stat)
+         call create_dataset(file, path, str, dims, .false., dset, error)
+         if (allocated(error)) then
+            call h5tclose_f(str, s)
+            return
+         end if
+         call h5dwrite_f(dset, str, buf, dims, stat)
+         call h5tclose_f(str, s)
+         call finish_dataset(file, path, dset, stat, '', error)
+      end subroutine write_fixed
+
+   end subroutine write_text_1d
+
+   !> A C string type of n bytes, null-padded.
+   subroutine make_string_type(n, str, stat)
+      integer, intent(in) :: n
+      integer(hid_t), intent(out) :: str
+      integer, intent(out) :: stat
+      integer :: s
+      call h5tcopy_f(H5T_C_S1, str, stat)
+      call h5tset_size_f(str, int(n, size_t), s)
+      call h5tset_strpad_f(str, H5T_STR_NULLPAD_F, s)
+   end subroutine make_string_type
+
+   ! ------------------------------------------------------------------------------------------
+   ! Attributes
+   ! ------------------------------------------------------------------------------------------
+
+   !> Write a scalar text attribute on an open object.
+   subroutine put_text_attribute(obj, name, text, stat)
+      integer(hid_t), intent(in) :: obj
+      character(len=*), intent(in) :: name, text
+      integer, intent(out) :: stat
+      integer(hid_t) :: space, str, attr
+      integer(hsize_t) :: dims(0)
+      integer :: s
+      call h5screate_f(H5S_SCALAR_F, space, stat)
+      if (stat /= 0) return
+      call make_string_type(max(1, len(text)), str, s)
+      call h5acreate_f(obj, name, str, space, attr, stat)
+      if (stat == 0) then
+         if (len(text) > 0) then
+            call h5awrite_f(attr, str, text, dims, stat)
+         else
+            call h5awrite_f(attr, str, achar(0), dims, stat)
+         end if
+         call h5aclose_f(attr, s)
+      end if
+      call h5tclose_f(str, s)
+      call h5sclose_f(space, s)
+   end subroutine put_text_attribute
+
+   !> Open the object at `path` ('/' for the root).
+   subroutine open_object(file, path, obj, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(out) :: obj
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      call h5oopen_f(file%id, path, obj, stat)
+      if (stat /= 0) call fail(error, file, path, 'no such object')
+   end subroutine open_object
+
+   subroutine attr_text(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path ('/' for the root group).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The text.
+      character(len=*), intent(in) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj
+      integer :: stat, s
+      call open_object(file, path, obj, error)
+      if (allocated(error)) return
+      call put_text_attribute(obj, name, value, stat)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot write the attribute '//name)
+   end subroutine attr_text
+
+   subroutine attr_real(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path ('/' for the root group).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The value.
+      real(wp), intent(in) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, space, attr
+      integer(hsize_t) :: dims(0)
+      integer :: stat, s
+      call open_object(file, path, obj, error)
+      if (allocated(error)) return
+      call h5screate_f(H5S_SCALAR_F, space, s)
+      call h5acreate_f(obj, name, H5T_IEEE_F64LE, space, attr, stat)
+      if (stat == 0) then
+         call h5awrite_f(attr, H5T_NATIVE_DOUBLE, value, dims, stat)
+         call h5aclose_f(attr, s)
+      end if
+      call h5sclose_f(space, s)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot write the attribute '//name)
+   end subroutine attr_real
+
+   subroutine attr_int(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path ('/' for the root group).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The value.
+      integer, intent(in) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, space, attr
+      integer(hsize_t) :: dims(0)
+      integer :: stat, s
+      call open_object(file, path, obj, error)
+      if (allocated(error)) return
+      call h5screate_f(H5S_SCALAR_F, space, s)
+      call h5acreate_f(obj, name, H5T_STD_I32LE, space, attr, stat)
+      if (stat == 0) then
+         call h5awrite_f(attr, H5T_NATIVE_INTEGER, value, dims, stat)
+         call h5aclose_f(attr, s)
+      end if
+      call h5sclose_f(space, s)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot write the attribute '//name)
+   end subroutine attr_int
+
+   ! ------------------------------------------------------------------------------------------
+   ! Reading
+   ! ------------------------------------------------------------------------------------------
+
+   !> Open a dataset and get its shape (rank must be `rank`, or ≤ `rank` for 0).
+   subroutine open_dataset(file, path, rank, dset, dims, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: rank
+      integer(hid_t), intent(out) :: dset
+      integer(hsize_t), intent(out) :: dims(max(rank, 1))
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: space
+      integer(hsize_t) :: maxdims(max(rank, 1))
+      integer :: stat, s, ndims
+      if (.not. h5_exists(file, path)) then
+         call fail(error, file, path, 'no such dataset')
+         return
+      end if
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot open the dataset')
+         return
+      end if
+      call h5dget_space_f(dset, space, s)
+      call h5sget_simple_extent_ndims_f(space, ndims, s)
+      dims = 1
+      if (ndims == rank) then
+         if (rank > 0) call h5sget_simple_extent_dims_f(space, dims, maxdims, s)
+      else
+         call fail(error, file, path, 'expected rank '//str_int(rank)//', found '// &
+            str_int(ndims))
+      end if
+      call h5sclose_f(space, s)
+      if (allocated(error)) call h5dclose_f(dset, s)
+   end subroutine open_dataset
+
+   !> Number of elements of a dataset (0 when it does not exist).
+   function h5_dataset_size(file, path) result(n)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      integer :: n
+      integer(hid_t) :: dset, space
+      integer(hsize_t) :: dims(8), maxdims(8)
+      integer :: stat, s, ndims
+      n = 0
+      if (.not. h5_exists(file, path)) return
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) return
+      call h5dget_space_f(dset, space, s)
+      call h5sget_simple_extent_ndims_f(space, ndims, s)
+      dims = 1
+      if (ndims > 0) call h5sget_simple_extent_dims_f(space, dims(1:ndims), maxdims(1:ndims), s)
+      n = int(product(dims(1:max(ndims, 1))))
+      if (ndims == 0) n = 1
+      call h5sclose_f(space, s)
+      call h5dclose_f(dset, s)
+   end function h5_dataset_size
+
+   subroutine read_real_1d(file, path, values, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      real(wp), allocatable, intent(out) :: values(:)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat, s
+      call open_dataset(file, path, 1, dset, dims, error)
+      if (allocated(error)) return
+      allocate (values(dims(1)))
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+   end subroutine read_real_1d
+
+   subroutine read_real_2d(file, path, values, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      real(wp), allocatable, intent(out) :: values(:, :)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(2)
+      integer :: stat, s
+      call open_dataset(file, path, 2, dset, dims, error)
+      if (allocated(error)) return
+      allocate (values(dims(1), dims(2)))
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+   end subroutine read_real_2d
+
+   subroutine read_int_1d(file, path, values, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values.
+      integer, allocatable, intent(out) :: values(:)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat, s
+      call open_dataset(file, path, 1, dset, dims, error)
+      if (allocated(error)) return
+      allocate (values(dims(1)))
+      call h5dread_f(dset, H5T_NATIVE_INTEGER, values, dims, stat)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+   end subroutine read_int_1d
+
+   subroutine read_text_0d(file, path, text, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path of a scalar text.
+      character(len=*), intent(in) :: path
+      !> The text (padding removed).
+      character(len=:), allocatable, intent(out) :: text
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, str
+      integer(hsize_t) :: dims(1)
+      integer(size_t) :: n
+      integer :: stat, s
+      call open_dataset(file, path, 0, dset, dims, error)
+      if (allocated(error)) return
+      call h5dget_type_f(dset, str, s)
+      call h5tget_size_f(str, n, s)
+      allocate (character(len=n) :: text)
+      call h5dread_f(dset, str, text, dims(1:0), stat)
+      call h5tclose_f(str, s)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot read the text')
+         return
+      end if
+      text = unpad(text)
+   end subroutine read_text_0d
+
+   subroutine read_text_1d(file, path, texts, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path of a 1-D fixed-length text array.
+      character(len=*), intent(in) :: path
+      !> The texts (padding removed; length of the longest).
+      character(len=:), allocatable, intent(out) :: texts(:)
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, str
+      integer(hsize_t) :: dims(1)
+      integer(size_t) :: n
+      integer :: stat, s, i
+      call open_dataset(file, path, 1, dset, dims, error)
+      if (allocated(error)) return
+      call h5dget_type_f(dset, str, s)
+      call h5tget_size_f(str, n, s)
+      allocate (character(len=n) :: texts(dims(1)))
+      call h5dread_f(dset, str, texts, dims, stat)
+      call h5tclose_f(str, s)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot read the texts')
+         return
+      end if
+      do i = 1, size(texts)
+         texts(i) = unpad(texts(i))
+      end do
+   end subroutine read_text_1d
+
+   !> Text up to the first NUL.
+   pure function unpad(text) result(t)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: t
+      integer :: i
+      i = index(text, achar(0))
+      if (i == 0) then
+         t = text
+      else
+         t = text(1:i - 1)
+      end if
+   end function unpad
+
+   !> Open an attribute of an object.
+   subroutine open_attribute(file, path, name, obj, attr, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      integer(hid_t), intent(out) :: obj, attr
+      type(error_type), allocatable, intent(out) :: error
+      logical :: exists
+      integer :: stat, s
+      call open_object(file, path, obj, error)
+      if (allocated(error)) return
+      call h5aexists_by_name_f(file%id, path, name, exists, stat)
+      if (stat /= 0 .or. .not. exists) then
+         call h5oclose_f(obj, s)
+         call fail(error, file, path, 'no attribute '//name)
+         return
+      end if
+      call h5aopen_f(obj, name, attr, stat)
+      if (stat /= 0) then
+         call h5oclose_f(obj, s)
+         call fail(error, file, path, 'cannot open the attribute '//name)
+      end if
+   end subroutine open_attribute
+
+   subroutine read_attr_text(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The text.
+      character(len=:), allocatable, intent(out) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr, str
+      integer(hsize_t) :: dims(0)
+      integer(size_t) :: n
+      integer :: stat, s
+      call open_attribute(file, path, name, obj, attr, error)
+      if (allocated(error)) return
+      call h5aget_type_f(attr, str, s)
+      call h5tget_size_f(str, n, s)
+      allocate (character(len=n) :: value)
+      call h5aread_f(attr, str, value, dims, stat)
+      call h5tclose_f(str, s)
+      call h5aclose_f(attr, s)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot read the attribute '//name)
+         return
+      end if
+      value = unpad(value)
+   end subroutine read_attr_text
+
+   subroutine read_attr_int(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The value.
+      integer, intent(out) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(0)
+      integer :: stat, s
+      value = 0
+      call open_attribute(file, path, name, obj, attr, error)
+      if (allocated(error)) return
+      call h5aread_f(attr, H5T_NATIVE_INTEGER, value, dims, stat)
+      call h5aclose_f(attr, s)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the attribute '//name)
+   end subroutine read_attr_int
+
+   subroutine read_attr_real(file, path, name, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> The value.
+      real(wp), intent(out) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      integer(hsize_t) :: dims(0)
+      integer :: stat, s
+      value = 0.0_wp
+      call open_attribute(file, path, name, obj, attr, error)
+      if (allocated(error)) return
+      call h5aread_f(attr, H5T_NATIVE_DOUBLE, value, dims, stat)
+      call h5aclose_f(attr, s)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the attribute '//name)
+   end subroutine read_attr_real
+
+   !> An I/O error naming the file and the object.
+   subroutine fail(error, file, path, what)
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path, what
+      call fatal_error(error, file%name//': '//path//': '//what, stat_io)
+   end subroutine fail
+
+end module shcontact_io_hdf5

@@ -1,0 +1,236 @@
+!> The results summary as text: a readable block or table (`text`), one CSV line per case
+!> (`csv`, with a header line), or one JSON object per line (`json`, JSON Lines). The library
+!> builds the lines; the program prints them.
+module shcontact_io_report
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
+      sweep_axis_names
+   use shcontact_io_text, only: format_real, json_string
+   use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
+      summary_value
+   implicit none
+   private
+
+   public :: report_formats, report_header, report_line, report_case_text
+
+   !> Accepted values of the format.
+   character(len=*), parameter :: report_formats(3) = [character(len=4) :: 'text', 'csv', 'json']
+
+   !> Columns shown in the text table of a sweep (besides the swept inputs).
+   character(len=*), parameter :: text_columns(7) = [character(len=17) :: 'fn', 'fx', 'fy', &
+      'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction']
+
+contains
+
+   !> The line before the per-case lines ('' when the format has none).
+   function report_header(config, format) result(line)
+      !> The configuration (which inputs are swept).
+      type(case_config_type), intent(in) :: config
+      !> 'text', 'csv' or 'json'.
+      character(len=*), intent(in) :: format
+      character(len=:), allocatable :: line
+      integer :: ia, k
+      select case (format)
+      case ('csv')
+         line = 'case,status,n_patches'
+         do ia = 1, n_sweep_axes
+            if (config%sweep%axes(ia)%active) line = line//','//trim(sweep_axis_names(ia))
+         end do
+         do k = 1, n_summary_columns
+            line = line//','//trim(summary_columns(1, k))
+         end do
+         line = line//',message'
+      case ('text')
+         line = ''
+         if (config%n_cases() == 1) return
+         line = pad('case', 8)//pad('status', 7)
+         do ia = 1, n_sweep_axes
+            if (config%sweep%axes(ia)%active) line = line//pad(trim(sweep_axis_names(ia)), 14)
+         end do
+         do k = 1, size(text_columns)
+            line = line//pad(trim(text_columns(k)), 14)
+         end do
+         line = trim(line)
+      case default
+         line = ''
+      end select
+   end function report_header
+
+   !> One line for case `icase`.
+   function report_line(config, icase, summary, format, message) result(line)
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> Case number.
+      integer, intent(in) :: icase
+      !> Its summary.
+      type(case_summary_type), intent(in) :: summary
+      !> 'text', 'csv' or 'json'.
+      character(len=*), intent(in) :: format
+      !> Why it failed (failed cases).
+      character(len=*), intent(in), optional :: message
+      character(len=:), allocatable :: line, value
+      type(case_point_type) :: p
+      integer :: ia, k
+      logical :: ok
+
+      p = config%case_point(icase)
+      ok = summary%stat == 0
+      select case (format)
+      case ('csv')
+         line = str_int(icase)//','//str_int(summary%stat)//','//str_int(summary%n_patches)
+         do ia = 1, n_sweep_axes
+            if (config%sweep%axes(ia)%active) line = line//','//input_text(p, ia, .false.)
+         end do
+         do k = 1, n_summary_columns
+            value = ''
+            if (ok) value = format_real(summary_value(summary, k))
+            line = line//','//value
+         end do
+         line = line//','
+         if (present(message)) line = line//csv_quoted(message)
+      case ('json')
+         line = '{"case":'//str_int(icase)//',"status":'//str_int(summary%stat)// &
+            ',"n_patches":'//str_int(summary%n_patches)
+         do ia = 1, n_sweep_axes
+            if (config%sweep%axes(ia)%active) line = line//',"'//trim(sweep_axis_names(ia))// &
+               '":'//input_text(p, ia, .true.)
+         end do
+         if (ok) then
+            do k = 1, n_summary_columns
+               line = line//',"'//trim(summary_columns(1, k))//'":'// &
+                  format_real(summary_value(summary, k))
+            end do
+         end if
+         if (present(message)) line = line//',"message":'//json_string(message)
+         line = line//'}'
+      case default
+         line = pad(str_int(icase), 8)//pad(str_int(summary%stat), 7)
+         do ia = 1, n_sweep_axes
+            if (config%sweep%axes(ia)%active) line = line//pad(input_text(p, ia, .false., &
+               short=.true.), 14)
+         end do
+         if (ok) then
+            do k = 1, size(text_columns)
+               line = line//pad(short_real(summary_value(summary, column_index(text_columns(k)))), &
+                  14)
+            end do
+         else if (present(message)) then
+            line = line//message
+         end if
+         line = trim(line)
+      end select
+   end function report_line
+
+   !> A readable block for a single case (text format).
+   function report_case_text(config, summary) result(text)
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> The summary of the case.
+      type(case_summary_type), intent(in) :: summary
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: nl = new_line('a')
+      associate (s => summary)
+         text = 'wheel '//trim(config%profiles%wheel)//' on rail '//trim(config%profiles%rail)// &
+            ', t_y = '//format_real(config%position%t_y)//' mm'//nl// &
+            'creepages  nu_x = '//format_real(config%creepage%nu_x)//', nu_y = '// &
+            format_real(config%creepage%nu_y)//', phi = '//format_real(config%creepage%phi)// &
+            ' rad/mm; mu = '//format_real(config%material%friction)//nl// &
+            'contact    '//str_int(s%n_patches)//' patch(es); main patch: gamma0 = '// &
+            short_real(s%gamma0)//' rad, r0 = '//short_real(s%r0)//' mm, y_track = '// &
+            short_real(s%y_track)//' mm'//nl// &
+            'normal     Fn = '//short_real(s%fn)//' N, approach = '//short_real(s%approach)// &
+            ' mm, area = '//short_real(s%area)//' mm^2, p_max = '//short_real(s%p_max)// &
+            ' MPa'//nl// &
+            'tangential Fx = '//short_real(s%fx)//' N, Fy = '//short_real(s%fy)//' N, Mz = '// &
+            short_real(s%mz)//' N mm (forces on the wheel)'//nl// &
+            '           fx = '//short_real(s%fx_norm)//', fy = '//short_real(s%fy_norm)// &
+            ' (F/(mu Fn)); adhesion fraction '//short_real(s%adhesion_fraction)// &
+            ', Coulomb ratio '//short_real(s%coulomb_ratio)
+      end associate
+   end function report_case_text
+
+   !> A swept input of a case as text (quoted for JSON when it is a choice).
+   function input_text(p, ia, json, short) result(text)
+      type(case_point_type), intent(in) :: p
+      integer, intent(in) :: ia
+      logical, intent(in) :: json
+      !> Five significant digits instead of the exact value.
+      logical, intent(in), optional :: short
+      character(len=:), allocatable :: text
+      real(wp) :: x
+      select case (trim(sweep_axis_names(ia)))
+      case ('bound')
+         text = trim(p%bound)
+         if (json) text = json_string(text)
+         return
+      case ('spin_model')
+         text = trim(p%spin_model)
+         if (json) text = json_string(text)
+         return
+      case ('t_y'); x = p%t_y
+      case ('roll'); x = p%roll
+      case ('normal_force'); x = p%normal_force
+      case ('approach'); x = p%approach
+      case ('vertical_force'); x = p%vertical_force
+      case ('friction'); x = p%friction
+      case ('nu_x'); x = p%nu_x
+      case ('nu_y'); x = p%nu_y
+      case default; x = p%phi
+      end select
+      if (present(short)) then
+         if (short) then
+            text = short_real(x)
+            return
+         end if
+      end if
+      text = format_real(x)
+   end function input_text
+
+   pure integer function column_index(name)
+      character(len=*), intent(in) :: name
+      integer :: k
+      column_index = 1
+      do k = 1, n_summary_columns
+         if (summary_columns(1, k) == name) column_index = k
+      end do
+   end function column_index
+
+   !> Five significant digits, for reading (one formatted write: tables of sweeps are long).
+   pure function short_real(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      integer :: n
+      if (x == 0.0_wp) then
+         text = '0'
+         return
+      end if
+      write (buf, '(1p,g14.5e2)') x
+      buf = adjustl(buf)
+      n = len_trim(buf)
+      if (buf(n:n) == '.') n = n - 1
+      text = buf(1:n)
+   end function short_real
+
+   pure function pad(text, width) result(padded)
+      character(len=*), intent(in) :: text
+      integer, intent(in) :: width
+      character(len=max(width, len(text) + 1)) :: padded
+      padded = text
+   end function pad
+
+   !> A CSV field in double quotes (embedded quotes doubled).
+   pure function csv_quoted(text) result(q)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: q
+      integer :: i
+      q = '"'
+      do i = 1, len_trim(text)
+         if (text(i:i) == '"') q = q//'"'
+         q = q//text(i:i)
+      end do
+      q = q//'"'
+   end function csv_quoted
+
+end module shcontact_io_report

@@ -1,0 +1,709 @@
+!> The layout of shcontact's HDF5 result files, and the merge of several files of one run
+!> (shards, checkpoint blocks) into one.
+!>
+!> Every result file of a run has the same layout, whatever subset of cases it holds:
+!>
+!>     /                     attributes: software, version, date, command_line, units,
+!>                           sign_convention, n_cases (cases of the whole run), cases_in_file
+!>                           (and shard = 'I/N' in a shard file)
+!>     /input/namelist       the resolved configuration (namelist text)
+!>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`
+!>     /geometry/patch_K/... the patch geometry tables, when every case shares them
+!>     /summary/...          one row per case: case, status, n_patches, main_patch, a column
+!>                           per swept input, a column per result (forces, normalised forces...)
+!>     /failures/case, message           the cases that failed, and why
+!>     /cases/NNNNNN/patch_K/{geometry,normal,tangential}/...   per-case fields, when asked
+!>
+!> Every dataset has a `units` attribute ('1' for dimensionless numbers, '' for text). A merge
+!> of the files of one run is identical, dataset for dataset, to the file of an uninterrupted,
+!> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
+module shcontact_io_results
+   use shcontact_core_kinds, only: wp, i1
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io
+   use shcontact_version_info, only: shcontact_version
+   use shcontact_profile_points, only: profile_type
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, &
+      state_adhesion, state_slip
+   use shcontact_io_config, only: case_config_type, read_config_text, n_sweep_axes, &
+      sweep_axis_names, axis_geometry, case_point_type
+   use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
+      h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
+      h5_read_attribute
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: string_type
+   use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
+      n_summary_columns, summary_value, set_summary_value, case_not_run
+   implicit none
+   private
+
+   public :: run_info_type, write_result_file, merge_result_files, read_result_summary
+   public :: case_group_name, units_text, sign_convention_text
+
+   !> The units system, stored as a root attribute (physics.md decision 1).
+   character(len=*), parameter :: units_text = 'mm, N, MPa (N/mm^2), rad; creepages '// &
+      'dimensionless, spin creepage rad/mm; forces N, moments N mm'
+   !> The sign convention, stored as a root attribute (physics.md decision 2).
+   character(len=*), parameter :: sign_convention_text = 'body 1 = wheel, body 2 = rail. '// &
+      'Creepages: velocity of the wheel surface relative to the rail surface at the '// &
+      'geometric contact point divided by the rolling speed, in the contact frame (x rolling '// &
+      'direction, y lateral in the tangent plane towards the field side, z = x cross y into '// &
+      'the rail). Tractions and forces act on the wheel (F_x = -G c^2 c11 nu_x in linear '// &
+      'theory). CONTACT reports the rail side of both: both signs flip.'
+
+   !> What every result file of a run carries besides the cases.
+   type :: run_info_type
+      !> The resolved configuration as namelist text.
+      character(len=:), allocatable :: namelist
+      !> The command that produced the file, and when (ISO 8601).
+      character(len=:), allocatable :: command_line, date
+      !> Number of cases of the whole run.
+      integer :: n_cases = 1
+      !> 'I/N' for a shard file, '' otherwise.
+      character(len=:), allocatable :: shard
+      !> The profiles used (wheel, rail), when loaded.
+      type(profile_type), allocatable :: profiles(:)
+      !> The patch geometry, when every case shares it.
+      type(patch_geometry_type), allocatable :: geometry(:)
+   end type run_info_type
+
+contains
+
+   !> Group of case `icase` ('cases/000042'); at least six digits, more for huge runs.
+   pure function case_group_name(icase, n_cases) result(name)
+      !> Case index.
+      integer, intent(in) :: icase
+      !> Cases of the run (sets the width).
+      integer, intent(in) :: n_cases
+      character(len=:), allocatable :: name
+      character(len=16) :: fmt
+      character(len=24) :: buf
+      write (fmt, '(a,i0,a,i0,a)') '(i', max(6, len(str_int(n_cases))), '.', &
+         max(6, len(str_int(n_cases))), ')'
+      write (buf, fmt) icase
+      name = 'cases/'//trim(buf)
+   end function case_group_name
+
+   !> Write one result file holding the cases `results` (case numbers `indices`), under a
+   !> temporary name renamed when complete.
+   subroutine write_result_file(name, info, config, indices, results, error)
+      !> File name.
+      character(len=*), intent(in) :: name
+      !> Run information (header, profiles, common geometry).
+      type(run_info_type), intent(in) :: info
+      !> The configuration (fields, compression, sweep axes).
+      type(case_config_type), intent(in) :: config
+      !> Case numbers of the results, ascending.
+      integer, intent(in) :: indices(:)
+      !> The results.
+      type(case_result_type), intent(in) :: results(:)
+      !> Set on failure; no file is left under `name` then.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type) :: file
+      type(case_summary_type), allocatable :: summaries(:)
+      integer :: i
+
+      call h5_create(file, name, error, compression=config%output%compression, &
+         single=config%output%precision == 'single')
+      if (allocated(error)) return
+      call write_header(file, info, size(indices), error)
+      summaries = results%summary
+      if (.not. allocated(error)) call write_summary(file, config, indices, summaries, error)
+      if (.not. allocated(error)) call write_failures(file, indices, results, error)
+      do i = 1, size(results)
+         if (allocated(error)) exit
+         call write_case(file, config, case_group_name(indices(i), info%n_cases), results(i), &
+            error)
+      end do
+      if (allocated(error)) then
+         call h5_discard(file)
+         return
+      end if
+      call h5_commit(file, error)
+   end subroutine write_result_file
+
+   !> Root attributes, /input and the common /geometry.
+   subroutine write_header(file, info, cases_in_file, error)
+      type(h5_file_type), intent(in) :: file
+      type(run_info_type), intent(in) :: info
+      integer, intent(in) :: cases_in_file
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+      character(len=*), parameter :: profile_names(2) = ['wheel', 'rail ']
+
+      call write_root_attributes(file, info, cases_in_file, error)
+      if (allocated(error)) return
+      call h5_write(file, 'input/namelist', info%namelist, error)
+      if (allocated(error)) return
+      if (allocated(info%profiles)) then
+         do k = 1, min(2, size(info%profiles))
+            call write_profile(file, 'input/profiles/'//trim(profile_names(k)), &
+               info%profiles(k), error)
+            if (allocated(error)) return
+         end do
+      end if
+      if (allocated(info%geometry)) then
+         do k = 1, size(info%geometry)
+            call write_geometry(file, 'geometry/patch_'//str_int(k), info%geometry(k), error)
+            if (allocated(error)) return
+         end do
+      end if
+   end subroutine write_header
+
+   subroutine write_root_attributes(file, info, cases_in_file, error)
+      type(h5_file_type), intent(in) :: file
+      type(run_info_type), intent(in) :: info
+      integer, intent(in) :: cases_in_file
+      type(error_type), allocatable, intent(out) :: error
+      call h5_write_attribute(file, '/', 'software', 'shcontact', error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'version', &
+         shcontact_version, error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'date', info%date, error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'command_line', &
+         info%command_line, error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'units', units_text, error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'sign_convention', &
+         sign_convention_text, error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'n_cases', info%n_cases, &
+         error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'cases_in_file', &
+         cases_in_file, error)
+      if (allocated(info%shard)) then
+         if (len(info%shard) > 0 .and. .not. allocated(error)) &
+            call h5_write_attribute(file, '/', 'shard', info%shard, error)
+      end if
+   end subroutine write_root_attributes
+
+   !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
+   subroutine write_profile(file, path, profile, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(profile_type), intent(in) :: profile
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: yz(:, :)
+      integer :: n
+      n = profile%size()
+      allocate (yz(2, n))
+      if (n > 0) then
+         yz(1, :) = profile%y
+         yz(2, :) = profile%z
+      end if
+      call h5_write(file, path, yz, 'mm', error)
+      if (allocated(error)) return
+      call h5_write_attribute(file, path, 'columns', 'y (lateral, to the field side), '// &
+         'z (vertical, positive downward)', error)
+      if (allocated(error)) return
+      if (allocated(profile%source)) then
+         call h5_write_attribute(file, path, 'source', profile%source, error)
+      else
+         call h5_write_attribute(file, path, 'source', '', error)
+      end if
+   end subroutine write_profile
+
+   !> The patch geometry tables and reference point.
+   subroutine write_geometry(file, path, g, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(patch_geometry_type), intent(in) :: g
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. allocated(g%y)) then
+         call h5_make_group(file, path, error)
+         return
+      end if
+      call h5_write(file, path//'/y', g%y, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gap', g%gap, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/curv_a', g%curv_a, '1/mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/curv_b', g%curv_b, '1/mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gamma', g%gamma, 'rad', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/r_wheel', g%r_wheel, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/y_track', g%y_track, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/z_track', g%z_track, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/y_rail', g%y_rail, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/y_wheel', g%y_wheel, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gamma0', g%gamma0, 'rad', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/r0', g%r0, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gap0', g%gap0, 'mm', error)
+   end subroutine write_geometry
+
+   !> The /summary table: one row per case of the file.
+   subroutine write_summary(file, config, indices, summaries, error)
+      type(h5_file_type), intent(in) :: file
+      type(case_config_type), intent(in) :: config
+      integer, intent(in) :: indices(:)
+      type(case_summary_type), intent(in) :: summaries(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: column(:)
+      character(len=32), allocatable :: labels(:)
+      type(case_point_type) :: p
+      integer :: ia, i, k
+      character(len=:), allocatable :: name
+      integer, allocatable :: ints(:)
+
+      call h5_write(file, 'summary/case', indices, '1', error)
+      ints = summaries%stat
+      if (.not. allocated(error)) call h5_write(file, 'summary/status', ints, '1', error)
+      ints = summaries%n_patches
+      if (.not. allocated(error)) call h5_write(file, 'summary/n_patches', ints, '1', error)
+      ints = summaries%main_patch
+      if (.not. allocated(error)) call h5_write(file, 'summary/main_patch', ints, '1', error)
+      if (allocated(error)) return
+      allocate (column(size(indices)), labels(size(indices)))
+      do ia = 1, n_sweep_axes
+         if (.not. config%sweep%axes(ia)%active) cycle
+         name = trim(sweep_axis_names(ia))
+         do i = 1, size(indices)
+            p = config%case_point(indices(i))
+            select case (name)
+            case ('t_y'); column(i) = p%t_y
+            case ('roll'); column(i) = p%roll
+            case ('normal_force'); column(i) = p%normal_force
+            case ('approach'); column(i) = p%approach
+            case ('vertical_force'); column(i) = p%vertical_force
+            case ('friction'); column(i) = p%friction
+            case ('bound'); labels(i) = p%bound
+            case ('spin_model'); labels(i) = p%spin_model
+            case ('nu_x'); column(i) = p%nu_x
+            case ('nu_y'); column(i) = p%nu_y
+            case ('phi'); column(i) = p%phi
+            end select
+         end do
+         if (config%sweep%axes(ia)%is_label) then
+            call h5_write(file, 'summary/'//name, labels, error)
+         else
+            call h5_write(file, 'summary/'//name, column, axis_units(name), error)
+         end if
+         if (allocated(error)) return
+      end do
+      do k = 1, n_summary_columns
+         do i = 1, size(summaries)
+            column(i) = summary_value(summaries(i), k)
+         end do
+         call h5_write(file, 'summary/'//trim(summary_columns(1, k)), column, &
+            trim(summary_columns(2, k)), error)
+         if (allocated(error)) return
+      end do
+   end subroutine write_summary
+
+   pure function axis_units(name) result(units)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: units
+      select case (name)
+      case ('t_y', 'approach'); units = 'mm'
+      case ('roll'); units = 'rad'
+      case ('normal_force', 'vertical_force'); units = 'N'
+      case ('phi'); units = 'rad/mm'
+      case default; units = '1'
+      end select
+   end function axis_units
+
+   !> /failures: the failed cases and their messages (only when some failed).
+   subroutine write_failures(file, indices, results, error)
+      type(h5_file_type), intent(in) :: file
+      integer, intent(in) :: indices(:)
+      type(case_result_type), intent(in) :: results(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: failed(:)
+      character(len=:), allocatable :: messages(:)
+      integer :: i, n, longest
+      failed = pack([(i, i=1, size(results))], results%summary%stat > 0)
+      if (size(failed) == 0) return
+      longest = 1
+      do i = 1, size(failed)
+         if (allocated(results(failed(i))%message)) longest = max(longest, &
+            len(results(failed(i))%message))
+      end do
+      allocate (character(len=longest) :: messages(size(failed)))
+      do i = 1, size(failed)
+         n = failed(i)
+         messages(i) = ''
+         if (allocated(results(n)%message)) messages(i) = results(n)%message
+      end do
+      call write_failure_table(file, indices(failed), messages, error)
+   end subroutine write_failures
+
+   subroutine write_failure_table(file, cases, messages, error)
+      type(h5_file_type), intent(in) :: file
+      integer, intent(in) :: cases(:)
+      character(len=*), intent(in) :: messages(:)
+      type(error_type), allocatable, intent(out) :: error
+      call h5_write(file, 'failures/case', cases, '1', error)
+      if (.not. allocated(error)) call h5_write(file, 'failures/message', messages, error)
+   end subroutine write_failure_table
+
+   !> The per-case group: the fields the configuration asks for, per patch.
+   subroutine write_case(file, config, group, result, error)
+      type(h5_file_type), intent(in) :: file
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: group
+      type(case_result_type), intent(in) :: result
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+      character(len=:), allocatable :: patch
+      logical :: any_field
+
+      any_field = config%wants_field('geometry') .or. config%wants_field('strips') .or. &
+         config%wants_field('pressure') .or. config%wants_field('traction') .or. &
+         config%wants_field('state') .or. config%wants_field('slip')
+      if (.not. any_field .or. result%summary%stat /= 0) return
+      do k = 1, result%summary%n_patches
+         patch = group//'/patch_'//str_int(k)
+         if (config%wants_field('geometry') .and. geometry_varies(config) .and. &
+             allocated(result%geometry)) then
+            call write_geometry(file, patch//'/geometry', result%geometry(k), error)
+            if (allocated(error)) return
+         end if
+         if (allocated(result%normal)) then
+            call write_normal(file, config, patch//'/normal', result%normal(k), error)
+            if (allocated(error)) return
+         end if
+         if (allocated(result%tangential)) then
+            call write_tangential(file, config, patch//'/tangential', result%tangential(k), &
+               error)
+            if (allocated(error)) return
+         end if
+      end do
+   end subroutine write_case
+
+   !> True when a sweep changes the geometry from case to case.
+   pure logical function geometry_varies(config)
+      type(case_config_type), intent(in) :: config
+      geometry_varies = config%sweep%axes(1)%active .or. config%sweep%axes(2)%active
+   end function geometry_varies
+
+   subroutine write_normal(file, config, path, n, error)
+      type(h5_file_type), intent(in) :: file
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: path
+      type(normal_patch_type), intent(in) :: n
+      type(error_type), allocatable, intent(out) :: error
+      integer :: m
+      call h5_write(file, path//'/approach', n%approach, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/load', n%load, 'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/area', n%area, 'mm^2', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/p_max', n%p_max, 'MPa', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/dy', n%dy, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/is_hertz', merge(1, 0, &
+         n%is_hertz), '1', error)
+      if (n%is_hertz .and. .not. allocated(error)) then
+         call h5_write(file, path//'/ellipse_a', n%ellipse_a, 'mm', error)
+         if (.not. allocated(error)) call h5_write(file, path//'/ellipse_b', n%ellipse_b, 'mm', &
+            error)
+         if (.not. allocated(error)) call h5_write(file, path//'/ellipse_y_centre', &
+            n%ellipse_y_centre, 'mm', error)
+      end if
+      if (allocated(error) .or. .not. config%wants_field('strips')) return
+      if (.not. allocated(n%y)) return
+      m = n%n_strips
+      call h5_write(file, path//'/y', n%y(1:m), 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/a', n%a(1:m), 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/k', n%k(1:m), '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/p0', n%p0(1:m), 'MPa', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/strip_load', n%strip_load(1:m), &
+         'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/m', n%m(1:m), '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/n', n%n(1:m), '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/eps_a', n%eps_a(1:m), '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gamma', n%gamma(1:m), 'rad', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/delta_r', n%delta_r(1:m), 'mm', &
+         error)
+      if (.not. allocated(error)) call h5_write(file, path//'/r_wheel', n%r_wheel(1:m), 'mm', &
+         error)
+   end subroutine write_normal
+
+   subroutine write_tangential(file, config, path, t, error)
+      type(h5_file_type), intent(in) :: file
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: path
+      type(tangential_patch_type), intent(in) :: t
+      type(error_type), allocatable, intent(out) :: error
+      call h5_write(file, path//'/fx', t%fx, 'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fy', t%fy, 'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/mz', t%mz, 'N mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fn', t%fn, 'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fx_norm', t%fx_norm, '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fy_norm', t%fy_norm, '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/coulomb_ratio', t%coulomb_ratio, &
+         '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/adhesion_fraction', &
+         t%adhesion_fraction, '1', error)
+      if (allocated(error) .or. .not. allocated(t%x)) return
+      if (.not. (config%wants_field('pressure') .or. config%wants_field('traction') .or. &
+                 config%wants_field('state') .or. config%wants_field('slip'))) return
+      call h5_write(file, path//'/x', t%x, 'mm', error, compress=.true.)
+      if (.not. allocated(error)) call h5_write(file, path//'/y', t%y, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/dx', t%dx, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/dy', t%dy, 'mm', error)
+      if (allocated(error)) return
+      if (config%wants_field('pressure') .and. allocated(t%pn)) then
+         call h5_write(file, path//'/pn', t%pn, 'MPa', error, compress=.true.)
+         if (allocated(error)) return
+      end if
+      if (config%wants_field('traction') .and. allocated(t%px)) then
+         call h5_write(file, path//'/px', t%px, 'MPa', error, compress=.true.)
+         if (.not. allocated(error)) call h5_write(file, path//'/py', t%py, 'MPa', error, &
+            compress=.true.)
+         if (allocated(error)) return
+      end if
+      if (config%wants_field('slip') .and. allocated(t%slip)) then
+         call h5_write(file, path//'/slip', t%slip, '1', error, compress=.true.)
+         if (allocated(error)) return
+      end if
+      if (config%wants_field('state') .and. allocated(t%state)) then
+         call h5_write(file, path//'/state', t%state, '1', error, compress=.true.)
+         if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'codes', &
+            str_int(int(state_exterior))//' exterior, '// &
+            str_int(int(state_adhesion))//' adhesion, '// &
+            str_int(int(state_slip))//' slip', error)
+         if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'exterior', &
+            int(state_exterior), error)
+         if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'adhesion', &
+            int(state_adhesion), error)
+         if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'slip', &
+            int(state_slip), error)
+      end if
+   end subroutine write_tangential
+
+   ! ------------------------------------------------------------------------------------------
+   ! Reading and merging
+   ! ------------------------------------------------------------------------------------------
+
+   !> The configuration, run size, case numbers, summaries and failures of a result file.
+   subroutine read_result_summary(name, config_text, n_cases, indices, summaries, &
+                                  failed_cases, failed_messages, error)
+      !> File name.
+      character(len=*), intent(in) :: name
+      !> The resolved configuration it was made with.
+      character(len=:), allocatable, intent(out) :: config_text
+      !> Cases of its run.
+      integer, intent(out) :: n_cases
+      !> Case numbers it holds.
+      integer, allocatable, intent(out) :: indices(:)
+      !> Their summaries.
+      type(case_summary_type), allocatable, intent(out) :: summaries(:)
+      !> Failed cases and their messages.
+      integer, allocatable, intent(out) :: failed_cases(:)
+      character(len=:), allocatable, intent(out) :: failed_messages(:)
+      !> Set when the file cannot be read or is not a shcontact result file.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type) :: file
+      integer, allocatable :: ints(:)
+      real(wp), allocatable :: column(:)
+      character(len=:), allocatable :: software
+      integer :: k, i
+
+      n_cases = 0
+      call h5_open(file, name, error)
+      if (allocated(error)) return
+      call h5_read_attribute(file, '/', 'software', software, error)
+      if (allocated(error)) then
+         call fatal_error(error, '"'//name//'" is not a shcontact result file', stat_invalid_input)
+         call h5_close(file)
+         return
+      end if
+      call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
+      if (.not. allocated(error)) call h5_read(file, 'input/namelist', config_text, error)
+      if (.not. allocated(error)) call h5_read(file, 'summary/case', indices, error)
+      if (allocated(error)) then
+         call h5_close(file)
+         return
+      end if
+      allocate (summaries(size(indices)))
+      call h5_read(file, 'summary/status', ints, error)
+      if (.not. allocated(error)) then
+         summaries%stat = ints
+         call h5_read(file, 'summary/n_patches', ints, error)
+      end if
+      if (.not. allocated(error)) then
+         summaries%n_patches = ints
+         call h5_read(file, 'summary/main_patch', ints, error)
+      end if
+      if (.not. allocated(error)) summaries%main_patch = ints
+      do k = 1, n_summary_columns
+         if (allocated(error)) exit
+         call h5_read(file, 'summary/'//trim(summary_columns(1, k)), column, error)
+         if (allocated(error)) exit
+         do i = 1, size(summaries)
+            call set_summary_value(summaries(i), k, column(i))
+         end do
+      end do
+      if (.not. allocated(error)) then
+         if (h5_exists(file, 'failures/case')) then
+            call h5_read(file, 'failures/case', failed_cases, error)
+            if (.not. allocated(error)) call h5_read(file, 'failures/message', failed_messages, &
+               error)
+         else
+            allocate (failed_cases(0))
+            allocate (character(len=1) :: failed_messages(0))
+         end if
+      end if
+      call h5_close(file)
+   end subroutine read_result_summary
+
+   !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
+   !> must come from the same configuration and together hold every case exactly once.
+   subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
+                                 shard)
+      !> The merged file (written under a temporary name, renamed when complete).
+      character(len=*), intent(in) :: output
+      !> The files to merge.
+      type(string_type), intent(in) :: inputs(:)
+      !> Command line and date recorded in the merged file.
+      character(len=*), intent(in) :: command_line, date
+      !> Set when the inputs do not fit together or cannot be read or written.
+      type(error_type), allocatable, intent(out) :: error
+      !> Accept a run with cases missing (they are absent from the summary).
+      logical, intent(in), optional :: allow_partial
+      !> 'I/N' when the merged file is one shard of a run.
+      character(len=*), intent(in), optional :: shard
+
+      character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
+      integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
+      type(case_summary_type), allocatable :: summaries(:), all(:)
+      type(case_config_type) :: config
+      type(run_info_type) :: info
+      type(h5_file_type) :: out, src
+      integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest
+      integer, allocatable :: order(:)
+      logical :: partial
+
+      partial = .false.
+      if (present(allow_partial)) partial = allow_partial
+      if (size(inputs) == 0) then
+         call fatal_error(error, 'merge: no input files', stat_invalid_input)
+         return
+      end if
+      n_first = 0
+      n_fail = 0
+      longest = 1
+      do f = 1, size(inputs)
+         call read_result_summary(inputs(f)%text, text, n_cases, indices, summaries, failed, &
+            messages, error)
+         if (allocated(error)) return
+         if (f == 1) then
+            first_text = text
+            n_first = n_cases
+            allocate (all(n_cases), source(n_cases))
+            source = 0
+            allocate (all_failed(0))
+         else if (text /= first_text .or. n_cases /= n_first) then
+            call fatal_error(error, 'merge: "'//inputs(f)%text//'" comes from another run '// &
+               'than "'//inputs(1)%text//'" (configurations differ)', stat_invalid_input)
+            return
+         end if
+         do i = 1, size(indices)
+            icase = indices(i)
+            if (icase < 1 .or. icase > n_cases) then
+               call fatal_error(error, 'merge: "'//inputs(f)%text//'" holds case '// &
+                  str_int(icase)//' of a run of '//str_int(n_cases), stat_invalid_input)
+               return
+            end if
+            if (source(icase) /= 0) then
+               call fatal_error(error, 'merge: case '//str_int(icase)//' is in both "'// &
+                  inputs(source(icase))%text//'" and "'//inputs(f)%text//'"', &
+                  stat_invalid_input)
+               return
+            end if
+            source(icase) = f
+            all(icase) = summaries(i)
+         end do
+         all_failed = [all_failed, failed]
+         do i = 1, size(messages)
+            longest = max(longest, len_trim(messages(i)))
+         end do
+         if (size(failed) > 0) call append_messages(all_messages, messages, n_fail)
+      end do
+      if (.not. partial .and. any(source == 0)) then
+         icase = findloc(source, 0, dim=1)
+         call fatal_error(error, 'merge: '//str_int(count(source == 0))//' of '// &
+            str_int(n_first)//' cases are missing (the first is case '// &
+            str_int(icase)//'); give every shard', stat_invalid_input)
+         return
+      end if
+
+      call read_config_text(first_text, '"'//inputs(1)%text//'":/input/namelist', config, error)
+      if (allocated(error)) return
+      order = pack([(i, i=1, n_first)], source > 0)
+
+      ! Header: copy /input and /geometry from the first file.
+      info%namelist = first_text
+      info%command_line = command_line
+      info%date = date
+      info%n_cases = n_first
+      info%shard = ''
+      if (present(shard)) info%shard = shard
+      call h5_create(out, output, error, compression=config%output%compression, &
+         single=config%output%precision == 'single')
+      if (allocated(error)) return
+      call h5_open(src, inputs(1)%text, error)
+      if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
+      if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
+      if (.not. allocated(error) .and. h5_exists(src, 'geometry')) &
+         call h5_copy(src, 'geometry', out, 'geometry', error)
+      call h5_close(src)
+      if (.not. allocated(error)) call write_summary(out, config, order, all(order), error)
+      if (.not. allocated(error) .and. n_fail > 0) then
+         call sort_failures(all_failed(1:n_fail), all_messages(1:n_fail))
+         call write_failure_table(out, all_failed(1:n_fail), all_messages(1:n_fail), error)
+      end if
+      ! Per-case groups, in case order, reading each input file while its cases come.
+      open_index = 0
+      do i = 1, size(order)
+         if (allocated(error)) exit
+         icase = order(i)
+         if (source(icase) /= open_index) then
+            call h5_close(src)
+            open_index = source(icase)
+            call h5_open(src, inputs(open_index)%text, error)
+            if (allocated(error)) exit
+         end if
+         if (h5_exists(src, case_group_name(icase, n_first))) call h5_copy(src, &
+            case_group_name(icase, n_first), out, case_group_name(icase, n_first), error)
+      end do
+      call h5_close(src)
+      if (allocated(error)) then
+         call h5_discard(out)
+         return
+      end if
+      call h5_commit(out, error)
+   end subroutine merge_result_files
+
+   subroutine append_messages(all, messages, n)
+      character(len=:), allocatable, intent(inout) :: all(:)
+      character(len=*), intent(in) :: messages(:)
+      integer, intent(inout) :: n
+      character(len=:), allocatable :: tmp(:)
+      integer :: l, i
+      l = len(messages)
+      if (allocated(all)) l = max(l, len(all))
+      allocate (character(len=l) :: tmp(n + size(messages)))
+      do i = 1, n
+         tmp(i) = all(i)
+      end do
+      tmp(n + 1:) = messages
+      n = n + size(messages)
+      call move_alloc(tmp, all)
+   end subroutine append_messages
+
+   !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
+   subroutine sort_failures(cases, messages)
+      integer, intent(inout) :: cases(:)
+      character(len=*), intent(inout) :: messages(:)
+      integer :: i, j, c
+      character(len=len(messages)) :: m
+      do i = 2, size(cases)
+         c = cases(i)
+         m = messages(i)
+         j = i - 1
+         do while (j >= 1)
+            if (cases(j) <= c) exit
+            cases(j + 1) = cases(j)
+            messages(j + 1) = messages(j)
+            j = j - 1
+         end do
+         cases(j + 1) = c
+         messages(j + 1) = m
+      end do
+   end subroutine sort_failures
+
+end module shcontact_io_results

@@ -1,0 +1,552 @@
+!> Tests of the shcontact program itself, run as a user runs it (execute_command_line): the
+!> default case, sweeps with 1 and 2 threads, shards and merge, an interrupted and resumed sweep,
+!> every kind of bad input (exit status, message, no output left behind), and h5dump reading
+!> every output.
+!>
+!> The program is found next to the tester in fpm's build tree (build/<hash>/test/tester →
+!> build/<hash>/app/shcontact, which `fpm test` builds with the same flags), or at the path in
+!> the environment variable SHCONTACT_EXE. Scratch files go to a fresh directory under $TMPDIR
+!> (default /tmp) that is removed at the end. Tests that need h5dump skip without it.
+module test_app
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use shcontact_io_files, only: file_exists, process_id
+   implicit none
+   private
+   public :: collect_app
+
+   !> The sweep used by the determinism, shard and resume tests: 3 × 2 × 2 = 12 cases,
+   !> all fields, checkpoint blocks of 3 cases, coarse grids to keep it fast.
+   character(len=*), parameter :: sweep_case(*) = [character(len=72) :: &
+      '! 12-case sweep of the app tests', &
+      '&sweep', &
+      "  bound = 'weighted', 'clipped'", &
+      '  nu_x = 0.0, 1.0e-3, 2.0e-3', &
+      '  phi = 0.0, 1.0e-3', &
+      '/', &
+      "&output fields = 'all', checkpoint_cases = 3, compression = 1 /", &
+      '&normal n_strips = 40 /', &
+      '&tangential n_elements = 20 /']
+
+contains
+
+   subroutine collect_app(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('default_case', test_default_case), &
+         new_unittest('check_prints_resolved_namelist', test_check), &
+         new_unittest('summary_formats', test_formats), &
+         new_unittest('threads_give_identical_files', test_threads), &
+         new_unittest('shards_merge_to_unsharded', test_shards), &
+         new_unittest('killed_and_resumed', test_resume), &
+         new_unittest('some_cases_fail', test_partial_failure), &
+         new_unittest('bad_input', test_bad_input), &
+         new_unittest('usage_errors', test_usage), &
+         new_unittest('profiles_and_geometry_commands', test_other_commands) &
+         ]
+   end subroutine collect_app
+
+   ! ------------------------------------------------------------------------------------------
+   ! Helpers
+   ! ------------------------------------------------------------------------------------------
+
+   !> The program, or '' when it cannot be found.
+   function program_path() result(path)
+      character(len=:), allocatable :: path
+      character(len=4096) :: buf
+      integer :: length, stat, slash
+      call get_environment_variable('SHCONTACT_EXE', buf, length, stat)
+      if (stat == 0 .and. length > 0) then
+         path = buf(1:length)
+         return
+      end if
+      call get_command_argument(0, buf, length)
+      path = ''
+      slash = index(buf(1:length), '/test/', back=.true.)
+      if (slash == 0) return
+      path = buf(1:slash)//'app/shcontact'
+      if (path(1:1) /= '/') path = current_directory()//'/'//path
+      if (.not. file_exists(path)) path = ''
+   end function program_path
+
+   function current_directory() result(dir)
+      character(len=:), allocatable :: dir
+      character(len=4096) :: buf
+      integer :: length, stat
+      call get_environment_variable('PWD', buf, length, stat)
+      dir = buf(1:length)
+   end function current_directory
+
+   !> A fresh scratch directory for one test.
+   function scratch_directory(tag) result(dir)
+      character(len=*), intent(in) :: tag
+      character(len=:), allocatable :: dir
+      character(len=4096) :: buf
+      character(len=16) :: pid
+      integer :: length, stat
+      call get_environment_variable('TMPDIR', buf, length, stat)
+      if (stat /= 0 .or. length == 0) then
+         buf = '/tmp'
+         length = 4
+      end if
+      write (pid, '(i0)') process_id()
+      dir = buf(1:length)//'/shcontact_test_app_'//trim(pid)//'_'//tag
+      call shell('rm -rf '//dir//' && mkdir -p '//dir)
+   end function scratch_directory
+
+   subroutine shell(command, stat)
+      character(len=*), intent(in) :: command
+      integer, intent(out), optional :: stat
+      integer :: s, cmdstat
+      call execute_command_line(command, exitstat=s, cmdstat=cmdstat)
+      if (cmdstat /= 0) s = -1
+      if (present(stat)) stat = s
+   end subroutine shell
+
+   !> Run the program in `dir` with arguments `args` (and environment assignments `env`);
+   !> stdout and stderr go to dir/out.txt and dir/err.txt. Returns the exit status.
+   function run_program(dir, args, env) result(stat)
+      character(len=*), intent(in) :: dir, args
+      character(len=*), intent(in), optional :: env
+      integer :: stat
+      character(len=:), allocatable :: prefix
+      prefix = 'env -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_COUNT -u SLURM_ARRAY_TASK_MIN '// &
+         'SOURCE_DATE_EPOCH=1700000000 OMP_NUM_THREADS=2 '
+      if (present(env)) prefix = prefix//env//' '
+      call shell('cd '//dir//' && '//prefix//program_path()//' '//args// &
+         ' > out.txt 2> err.txt', stat)
+   end function run_program
+
+   !> The whole text of a file ('' when it is missing).
+   function file_text(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: unit, stat, size_
+      text = ''
+      open (newunit=unit, file=name, access='stream', form='unformatted', status='old', &
+         action='read', iostat=stat)
+      if (stat /= 0) return
+      inquire (unit=unit, size=size_)
+      if (size_ > 0) then
+         deallocate (text)
+         allocate (character(len=size_) :: text)
+         read (unit, iostat=stat) text
+      end if
+      close (unit)
+   end function file_text
+
+   !> The integer a file holds (−1 when it holds none).
+   integer function file_integer(name) result(value)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: stat
+      text = file_text(name)
+      read (text, *, iostat=stat) value
+      if (stat /= 0) value = -1
+   end function file_integer
+
+   subroutine write_lines(name, lines)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: lines(:)
+      integer :: unit, i
+      open (newunit=unit, file=name, status='replace', action='write')
+      do i = 1, size(lines)
+         write (unit, '(a)') trim(lines(i))
+      end do
+      close (unit)
+   end subroutine write_lines
+
+   !> Skip when the program (or h5dump, if asked) is not available.
+   logical function unavailable(error, need_h5dump)
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in) :: need_h5dump
+      integer :: stat
+      unavailable = len(program_path()) == 0
+      if (unavailable) then
+         call skip_test(error, 'the shcontact program was not found next to the tester; '// &
+            'set SHCONTACT_EXE')
+         return
+      end if
+      if (need_h5dump) then
+         call shell('h5dump --version > /dev/null 2>&1', stat)
+         unavailable = stat /= 0
+         if (unavailable) call skip_test(error, 'h5dump is not installed (scripts/setup)')
+      end if
+   end function unavailable
+
+   !> h5dump of a file with full precision, without the line naming the file and without the
+   !> attributes that record how and when it was made (command line, date).
+   subroutine dump(file, dumpfile, stat)
+      character(len=*), intent(in) :: file, dumpfile
+      integer, intent(out) :: stat
+      call shell('h5dump -m %.17g '//file//" | sed -e '1d' -e '/ATTRIBUTE ""command_line""/,"// &
+         "/^   }$/d' -e '/ATTRIBUTE ""date""/,/^   }$/d' > "//dumpfile//' && test -s '// &
+         dumpfile, stat)
+   end subroutine dump
+
+   !> Check that two result files hold the same data (see [[dump]]).
+   subroutine check_same_content(error, a, b, what)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: a, b, what
+      integer :: stat
+      call dump(a, a//'.dump', stat)
+      if (stat == 0) call dump(b, b//'.dump', stat)
+      call check(error, stat, 0, message='h5dump reads '//a//' and '//b)
+      if (allocated(error)) return
+      call shell('cmp -s '//a//'.dump '//b//'.dump', stat)
+      call check(error, stat, 0, message=what//': '//a//' and '//b//' differ')
+   end subroutine check_same_content
+
+   subroutine expect_in(error, text, fragment, what)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: text, fragment, what
+      if (index(text, fragment) == 0) call test_failed(error, what//': expected "'// &
+         fragment//'" in: '//text)
+   end subroutine expect_in
+
+   ! ------------------------------------------------------------------------------------------
+   ! Tests
+   ! ------------------------------------------------------------------------------------------
+
+   subroutine test_default_case(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, text
+      integer :: stat, n_datasets, n_units
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('default')
+      stat = run_program(dir, 'run -o default.h5')
+      call check(error, stat, 0, message='default case: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/out.txt')
+      call expect_in(error, text, 'Fn = 64700', 'summary of the headline case')
+      if (allocated(error)) return
+      call expect_in(error, text, 'fx = ', 'normalised forces in the summary')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'results in default.h5', 'note on stderr')
+      if (allocated(error)) return
+      ! Self-describing root, the resolved namelist, fields of the case.
+      call shell('cd '//dir//' && h5dump -A default.h5 > attrs.txt', stat)
+      call check(error, stat, 0, message='h5dump reads the output')
+      if (allocated(error)) return
+      text = file_text(dir//'/attrs.txt')
+      call expect_in(error, text, 'ATTRIBUTE "sign_convention"', 'root attributes')
+      if (allocated(error)) return
+      call expect_in(error, text, 'ATTRIBUTE "units"', 'units')
+      if (allocated(error)) return
+      call expect_in(error, text, '"2023-11-14T22:13:20Z"', 'date from SOURCE_DATE_EPOCH')
+      if (allocated(error)) return
+      call expect_in(error, text, 'DATASET "px"', 'traction field stored')
+      if (allocated(error)) return
+      call expect_in(error, text, 'ATTRIBUTE "adhesion"', 'state code meanings')
+      if (allocated(error)) return
+      ! Every dataset has a units attribute.
+      call shell('cd '//dir//' && grep -c "^ *DATASET " attrs.txt > n_datasets.txt && '// &
+         'grep -c "ATTRIBUTE \"units\"" attrs.txt > n_units.txt', stat)
+      n_datasets = file_integer(dir//'/n_datasets.txt')
+      n_units = file_integer(dir//'/n_units.txt')
+      call check(error, n_units, n_datasets + 1, &
+         message='one units attribute per dataset (and the root attribute units)')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/default.h5.partial'), &
+         message='the checkpoint directory is removed')
+      call shell('rm -rf '//dir)
+   end subroutine test_default_case
+
+   subroutine test_check(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, first
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('check')
+      stat = run_program(dir, '--check --set creepage%nu_y=-1e-3 run')
+      call check(error, stat, 1, message='options before the command are a usage error')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --check --set creepage%nu_y=-1e-3 --set sweep%phi=0,1e-3')
+      call check(error, stat, 0, message='--check: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      first = file_text(dir//'/out.txt')
+      call expect_in(error, first, 'nu_y = -0.001', 'the override in the resolved namelist')
+      if (allocated(error)) return
+      call expect_in(error, first, "wheel = 'builtin:S1002'", 'defaults in the resolved namelist')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/shcontact.h5'), message='--check solves nothing')
+      if (allocated(error)) return
+      ! The printed namelist is a case file that resolves to itself.
+      call shell('cp '//dir//'/out.txt '//dir//'/resolved.nml')
+      stat = run_program(dir, 'run resolved.nml --check')
+      call check(error, stat, 0, message='resolved namelist as a case file')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/out.txt') == first, &
+         message='the resolved namelist reads back to itself')
+      call shell('rm -rf '//dir)
+   end subroutine test_check
+
+   subroutine test_formats(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, text
+      integer :: stat, lines
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('formats')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      stat = run_program(dir, 'run sweep.nml -q --format csv -o s.h5')
+      call check(error, stat, 0, message='csv: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/out.txt')
+      call expect_in(error, text, 'case,status,n_patches,bound,nu_x,phi,fn_total', 'csv header')
+      if (allocated(error)) return
+      call shell('test $(wc -l < '//dir//'/out.txt) -eq 13', stat)
+      call check(error, stat, 0, message='a header and one csv line per case')
+      if (allocated(error)) return
+      call check(error, len(file_text(dir//'/err.txt')) == 0, message='-q: nothing on stderr')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sweep.nml -q --format json -o s.h5')
+      call check(error, stat, 0, message='json')
+      if (allocated(error)) return
+      call shell('grep -c "^{\"case\":[0-9]*,\"status\":0,.*\"fy_norm\":.*}$" '//dir// &
+         '/out.txt > '//dir//'/n.txt', stat)
+      lines = file_integer(dir//'/n.txt')
+      call check(error, lines, 12, message='one JSON object per line and case')
+      call shell('rm -rf '//dir)
+   end subroutine test_formats
+
+   subroutine test_threads(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('threads')
+      call shell('mkdir -p '//dir//'/one '//dir//'/two')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      ! The same command line in two directories; only the thread count differs.
+      stat = run_program(dir//'/one', 'run ../sweep.nml -q -o out.h5', 'OMP_NUM_THREADS=1')
+      call check(error, stat, 0, message='1 thread: '//file_text(dir//'/one/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir//'/two', 'run ../sweep.nml -q -o out.h5', 'OMP_NUM_THREADS=2')
+      call check(error, stat, 0, message='2 threads: '//file_text(dir//'/two/err.txt'))
+      if (allocated(error)) return
+      call shell('cmp '//dir//'/one/out.h5 '//dir//'/two/out.h5', stat)
+      call check(error, stat, 0, message='1 and 2 threads give byte-identical files')
+      if (allocated(error)) return
+      call check_same_content(error, dir//'/one/out.h5', dir//'/two/out.h5', 'threads')
+      call shell('rm -rf '//dir)
+   end subroutine test_threads
+
+   subroutine test_shards(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('shards')
+      call shell('mkdir -p '//dir//'/whole')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      stat = run_program(dir//'/whole', 'run ../sweep.nml -q -o out.h5')
+      call check(error, stat, 0, message='unsharded: '//file_text(dir//'/whole/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sweep.nml -q -o out.h5 --shard 1/3')
+      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5', &
+         'SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3')
+      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5', &
+         'SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=3')
+      call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/out-shard1of3.h5') .and. &
+         file_exists(dir//'/out-shard2of3.h5') .and. file_exists(dir//'/out-shard3of3.h5'), &
+         message='one file per shard, the third from SLURM_ARRAY_TASK_ID - _MIN + 1')
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge out.h5 out-shard3of3.h5 out-shard1of3.h5 '// &
+         'out-shard2of3.h5')
+      call check(error, stat, 0, message='merge: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check_same_content(error, dir//'/whole/out.h5', dir//'/out.h5', 'shard + merge')
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge bad.h5 out-shard1of3.h5 out-shard2of3.h5')
+      call check(error, stat, 2, message='merge with a shard missing')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '4 of 12 cases are missing', 'message')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/bad.h5'), message='no file from a failed merge')
+      call shell('rm -rf '//dir)
+   end subroutine test_shards
+
+   subroutine test_resume(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('resume')
+      call shell('mkdir -p '//dir//'/whole')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      stat = run_program(dir//'/whole', 'run ../sweep.nml -q -o out.h5')
+      call check(error, stat, 0, message='uninterrupted: '//file_text(dir//'/whole/err.txt'))
+      if (allocated(error)) return
+      ! Killed after 2 of 4 checkpoint blocks.
+      stat = run_program(dir, 'run sweep.nml -q -o out.h5', &
+         'SHCONTACT_TEST_ABORT_AFTER_BLOCKS=2')
+      call check(error, stat /= 0, message='the interrupted run fails')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/out.h5'), &
+         message='no file under the final name after the interruption')
+      if (allocated(error)) return
+      call shell('h5dump -d /summary/case '//dir//'/out.h5.partial/block_000002.h5 > '// &
+         dir//'/block.txt', stat)
+      call check(error, stat, 0, message='finished blocks are readable')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/block.txt'), '(0): 4, 5, 6', 'cases of block 2')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sweep.nml -o out.h5 --resume')
+      call check(error, stat, 0, message='resume: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '12 of 12 case(s) solved (6 from the '// &
+         'checkpoint)', 'finished cases are not solved again')
+      if (allocated(error)) return
+      call check_same_content(error, dir//'/whole/out.h5', dir//'/out.h5', 'killed and resumed')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/out.h5.partial'), &
+         message='the checkpoint is removed when complete')
+      if (allocated(error)) return
+      ! A checkpoint of another configuration is not used.
+      stat = run_program(dir, 'run sweep.nml -q -o other.h5', &
+         'SHCONTACT_TEST_ABORT_AFTER_BLOCKS=1')
+      stat = run_program(dir, 'run sweep.nml -q -o other.h5 --resume --set material%friction=0.2')
+      call check(error, stat, 2, message='resume with another configuration')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'another configuration', 'message')
+      call shell('rm -rf '//dir)
+   end subroutine test_resume
+
+   subroutine test_partial_failure(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('partial')
+      ! The second approach (5 mm) is far beyond the patch geometry (tables end at a 2 mm gap).
+      stat = run_program(dir, 'run -o f.h5 --set load%mode=approach '// &
+         '--set sweep%approach=0.05,5 --format csv')
+      call check(error, stat, 4, message='some cases failed: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'case 2 failed', 'the failed case')
+      if (allocated(error)) return
+      call shell('h5dump -d /failures/case '//dir//'/f.h5 > '//dir//'/failures.txt', stat)
+      call check(error, stat, 0, message='the file records the failures')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/failures.txt'), '(0): 2', 'failed case number')
+      call shell('rm -rf '//dir)
+   end subroutine test_partial_failure
+
+   !> Each kind of bad input: exit status, a message naming the problem, no output left.
+   subroutine test_bad_input(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('bad')
+      call write_lines(dir//'/unknown.nml', [character(len=40) :: '&creepage', &
+         '  nu_x = 1e-3', '  spin = 2e-4', '/'])
+      call write_lines(dir//'/type.nml', [character(len=40) :: '&material friction = high /'])
+      call write_lines(dir//'/range.nml', [character(len=40) :: '&material', 'poisson = 0.7', &
+         '/'])
+      call write_lines(dir//'/broken.prr', [character(len=40) :: '0.0 0.0', '1.0 abc', &
+         '2.0 0.5'])
+      call expect_failure(error, dir, 'run unknown.nml', 2, &
+         'unknown.nml:3: &creepage: unknown variable "spin"')
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run type.nml', 2, &
+         'type.nml:1: &material friction = high: expected a real number')
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run range.nml', 2, &
+         'range.nml:2: &material poisson = 0.7 is out of range; expected 0.0 <= poisson < 0.5')
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run --set profiles%rail=missing.prr', 3, 'missing.prr')
+      if (allocated(error)) return
+      call expect_failure(error, dir, "run --set profiles%rail=broken.prr --set "// &
+         "profiles%rail_format=plain", 2, 'broken.prr')
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run --set track%flange_back_distance=1800', 6, &
+         'do not overlap')
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run -o /nonexistent_shcontact_dir/out.h5', 3, &
+         'cannot write the output "/nonexistent_shcontact_dir/out.h5"')
+      if (allocated(error)) return
+      call check(error, .not. file_exists('/nonexistent_shcontact_dir'), &
+         message='nothing created for an unwritable output')
+      call shell('rm -rf '//dir)
+   end subroutine test_bad_input
+
+   !> Run, expect the status and the message on stderr, and no output file or checkpoint.
+   subroutine expect_failure(error, dir, args, status, fragment)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: dir, args, fragment
+      integer, intent(in) :: status
+      integer :: stat
+      if (index(args, ' -o ') > 0) then
+         stat = run_program(dir, args)
+      else
+         stat = run_program(dir, args//' -o out.h5')
+      end if
+      call check(error, stat, status, message=args//': exit status; stderr: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), fragment, args)
+      if (allocated(error)) return
+      call shell('cd '//dir//' && test -z "$(ls -d out.h5* shcontact.h5* 2>/dev/null)"', stat)
+      call check(error, stat, 0, message=args//': an output file or checkpoint was left behind')
+   end subroutine expect_failure
+
+   subroutine test_usage(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('usage')
+      stat = run_program(dir, '--version')
+      call check(error, stat, 0, message='--version')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), 'shcontact 0.', '--version output')
+      if (allocated(error)) return
+      stat = run_program(dir, '--help')
+      call check(error, stat, 0, message='--help')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), 'Exit status', '--help lists exit codes')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --frobnicate')
+      call check(error, stat, 1, message='unknown option')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'unknown option "--frobnicate"', 'message')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --shard 4/3')
+      call check(error, stat, 1, message='bad shard')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --threads 0')
+      call check(error, stat, 1, message='bad thread count')
+      if (allocated(error)) return
+      stat = run_program(dir, 'frobnicate')
+      call check(error, stat, 1, message='unknown command')
+      call shell('rm -rf '//dir)
+   end subroutine test_usage
+
+   subroutine test_other_commands(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('commands')
+      stat = run_program(dir, 'profiles --write built-in')
+      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/built-in/S1002.txt') .and. &
+         file_exists(dir//'/built-in/UIC60.txt'), message='built-in profiles written')
+      if (allocated(error)) return
+      ! A written profile reads back as a case input.
+      stat = run_program(dir, 'run -q --check --set profiles%wheel=built-in/S1002.txt')
+      call check(error, stat, 0, message='written profile as input: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'geometry -o geometry.txt --set position%t_y=0')
+      call check(error, stat, 0, message='geometry: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/geometry.txt'), '# patch 1 of', 'geometry table')
+      if (allocated(error)) return
+      stat = run_program(dir, 'profiles')
+      call check(error, stat, 1, message='profiles without --write')
+      call shell('rm -rf '//dir)
+   end subroutine test_other_commands
+
+end module test_app

@@ -1,0 +1,427 @@
+!> Tests of the namelist case configuration: defaults, partial groups, overrides, every kind of
+!> bad input and its message, sweeps, and the printed namelist reading back to the same
+!> configuration.
+module test_config
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io
+   use shcontact_io_config, only: case_config_type, case_point_type, load_config, &
+      read_config_text, config_namelist, axis_geometry, axis_load
+   use shcontact_io_text, only: format_real
+   use shcontact_io_files, only: delete_file, process_id
+   implicit none
+   private
+   public :: collect_config
+
+   character(len=0), parameter :: no_overrides(0) = [character(len=0) ::]
+
+contains
+
+   subroutine collect_config(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('defaults_are_headline_case', test_defaults), &
+         new_unittest('partial_groups_any_order', test_partial_file), &
+         new_unittest('overrides', test_overrides), &
+         new_unittest('unknown_variable', test_unknown_variable), &
+         new_unittest('unknown_group', test_unknown_group), &
+         new_unittest('wrong_type', test_wrong_type), &
+         new_unittest('out_of_range', test_out_of_range), &
+         new_unittest('bad_choice', test_bad_choice), &
+         new_unittest('structure_errors', test_structure_errors), &
+         new_unittest('missing_file', test_missing_file), &
+         new_unittest('sweep_grid_order', test_sweep_grid), &
+         new_unittest('sweep_list_and_errors', test_sweep_list), &
+         new_unittest('shared_stages', test_shares_with), &
+         new_unittest('namelist_round_trip', test_round_trip), &
+         new_unittest('format_real_round_trip', test_format_real) &
+         ]
+   end subroutine collect_config
+
+   !> A scratch case file with the given lines; returns its name.
+   function scratch_file(tag, lines) result(name)
+      character(len=*), intent(in) :: tag
+      character(len=*), intent(in) :: lines(:)
+      character(len=:), allocatable :: name
+      integer :: unit, i
+      character(len=16) :: pid
+      write (pid, '(i0)') process_id()
+      name = '/tmp/shcontact_test_config_'//trim(pid)//'_'//tag//'.nml'
+      open (newunit=unit, file=name, status='replace', action='write')
+      do i = 1, size(lines)
+         write (unit, '(a)') trim(lines(i))
+      end do
+      close (unit)
+   end function scratch_file
+
+   !> Load a scratch file and expect an error whose message contains every fragment.
+   subroutine expect_error(error, tag, lines, fragments, stat)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: tag
+      character(len=*), intent(in) :: lines(:), fragments(:)
+      integer, intent(in), optional :: stat
+      type(case_config_type) :: config
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: name
+      integer :: i
+      name = scratch_file(tag, lines)
+      call load_config(name, no_overrides, config, lerr)
+      if (delete_file(name)) continue
+      if (.not. allocated(lerr)) then
+         call test_failed(error, tag//': expected an error, got none')
+         return
+      end if
+      do i = 1, size(fragments)
+         if (index(lerr%message, trim(fragments(i))) == 0) then
+            call test_failed(error, tag//': message lacks "'//trim(fragments(i))//'": '// &
+               lerr%message)
+            return
+         end if
+      end do
+      if (present(stat)) call check(error, lerr%stat, stat, message=tag//': status')
+   end subroutine expect_error
+
+   subroutine test_defaults(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      call load_config('', no_overrides, c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%n_cases(), 1)
+      if (allocated(error)) return
+      call check(error, c%profiles%wheel == 'builtin:S1002' .and. &
+         c%profiles%rail == 'builtin:UIC60', message='built-in S1002 on UIC60')
+      if (allocated(error)) return
+      call check(error, c%track%inclination, 0.025_wp)
+      if (allocated(error)) return
+      call check(error, c%position%t_y, 4.733_wp)
+      if (allocated(error)) return
+      call check(error, c%load%normal_force, 64700.0_wp)
+      if (allocated(error)) return
+      call check(error, c%track%nominal_radius, 460.0_wp)
+      if (allocated(error)) return
+      call check(error, c%material%shear_modulus, 82670.0_wp)
+      if (allocated(error)) return
+      call check(error, c%material%poisson, 0.27_wp)
+      if (allocated(error)) return
+      call check(error, c%material%friction, 0.3_wp)
+      if (allocated(error)) return
+      call check(error, c%creepage%nu_x, 0.58e-3_wp)
+      if (allocated(error)) return
+      call check(error, c%creepage%nu_y, 0.061e-3_wp)
+      if (allocated(error)) return
+      call check(error, c%creepage%phi, 2.74e-4_wp)
+      if (allocated(error)) return
+      call check(error, c%tangential%method == 'fastsim-sh', message='FASTSIM_SH by default')
+      if (allocated(error)) return
+      call check(error, c%wants_field('traction'), message='a single case stores its fields')
+   end subroutine test_defaults
+
+   subroutine test_partial_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: name
+      name = scratch_file('partial', [character(len=80) :: &
+         '! a comment line', &
+         '&creepage nu_y = -2.5e-4 /', &
+         '', &
+         "&tangential bound = 'Clipped', n_elements = 40  ! trailing comment", &
+         '/', &
+         '&material', &
+         '  friction = 0.25', &
+         '/', &
+         "&profiles wheel = 'wheel.prw' /"])
+      call load_config(name, no_overrides, c, lerr)
+      if (delete_file(name)) continue
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%creepage%nu_y, -2.5e-4_wp)
+      if (allocated(error)) return
+      call check(error, c%creepage%nu_x, 0.58e-3_wp, message='untouched variable keeps default')
+      if (allocated(error)) return
+      call check(error, c%tangential%bound == 'clipped', message='choices are case-insensitive')
+      if (allocated(error)) return
+      call check(error, c%tangential%n_elements, 40)
+      if (allocated(error)) return
+      call check(error, c%material%friction, 0.25_wp)
+      if (allocated(error)) return
+      call check(error, c%profiles%wheel == '/tmp/wheel.prw', &
+         message='relative profile names are taken from the case file directory: '// &
+         trim(c%profiles%wheel))
+   end subroutine test_partial_file
+
+   subroutine test_overrides(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      call load_config('', [character(len=40) :: 'creepage%nu_x=1e-3', &
+         'tangential%bound=parabolic', 'sweep%phi=0,1e-3', 'sweep%phi=0,2e-3,3e-3', &
+         'output%fields=pressure,state'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%creepage%nu_x, 1.0e-3_wp)
+      if (allocated(error)) return
+      call check(error, c%tangential%bound == 'parabolic', message='unquoted string override')
+      if (allocated(error)) return
+      call check(error, c%n_cases(), 3, message='a list override replaces the whole list')
+      if (allocated(error)) return
+      call check(error, c%wants_field('state') .and. .not. c%wants_field('traction'), &
+         message='field list override')
+      if (allocated(error)) return
+      call load_config('', [character(len=40) :: 'creepage.nu_x=1'], c, lerr)
+      call check(error, allocated(lerr), message='malformed override is an error')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, 'group%variable=value') > 0, message=lerr%message)
+      if (allocated(error)) return
+      call load_config('', [character(len=40) :: 'creepage%nu_x=abc'], c, lerr)
+      call check(error, allocated(lerr), message='wrong type in an override')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, '--set creepage%nu_x=abc') > 0 .and. &
+         index(lerr%message, 'real number') > 0, message=lerr%message)
+   end subroutine test_overrides
+
+   subroutine test_unknown_variable(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'unknown_var', [character(len=40) :: '&creepage', &
+         '  nux = 1e-3', '/'], [character(len=40) :: 'unknown_var.nml:2', '&creepage', &
+         'unknown variable "nux"', 'did you mean "nu_x"', 'nu_x, nu_y, phi'], &
+         stat_invalid_input)
+   end subroutine test_unknown_variable
+
+   subroutine test_unknown_group(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'unknown_group', [character(len=40) :: '&creepge nu_x = 0 /'], &
+         [character(len=40) :: 'unknown_group.nml:1', 'unknown group &creepge', '&creepage'])
+   end subroutine test_unknown_group
+
+   subroutine test_wrong_type(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'type_real', [character(len=40) :: '&position t_y = abc /'], &
+         [character(len=40) :: 'type_real.nml:1', '&position t_y = abc', &
+         'expected a real number in mm'])
+      if (allocated(error)) return
+      call expect_error(error, 'type_int', [character(len=40) :: '&normal n_strips = 1.5 /'], &
+         [character(len=40) :: '&normal n_strips = 1.5', 'expected an integer'])
+      if (allocated(error)) return
+      call expect_error(error, 'type_string', [character(len=40) :: &
+         '&normal method = hertz /'], [character(len=40) :: 'expected a quoted string', &
+         "strings are quoted"])
+      if (allocated(error)) return
+      call expect_error(error, 'type_count', [character(len=40) :: &
+         '&creepage nu_x = 1e-3, 2e-3 /'], [character(len=40) :: 'expected one value', &
+         'found 2'])
+      if (allocated(error)) return
+      call expect_error(error, 'type_logical', [character(len=40) :: &
+         '&track rail_canted = maybe /'], [character(len=40) :: 'expected a logical'])
+   end subroutine test_wrong_type
+
+   subroutine test_out_of_range(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'range', [character(len=40) :: '&material', 'poisson = 0.5', &
+         '/'], [character(len=60) :: 'range.nml:2', '&material poisson = 0.5', &
+         'out of range', '0.0 <= poisson < 0.5'], stat_invalid_input)
+      if (allocated(error)) return
+      call expect_error(error, 'range_nan', [character(len=40) :: '&creepage phi = NaN /'], &
+         [character(len=60) :: '&creepage phi = NaN', 'out of range'])
+      if (allocated(error)) return
+      call expect_error(error, 'range_sweep', [character(len=40) :: &
+         '&sweep nu_x = 0, 1e-3, 5 /'], [character(len=60) :: 'range_sweep.nml:1', &
+         '&sweep nu_x(3) = 5.0', '-1.0 <= nu_x <= 1.0'])
+      if (allocated(error)) return
+      call expect_error(error, 'range_int', [character(len=40) :: '&output compression = 12 /'], &
+         [character(len=60) :: 'compression = 12', '0 <= compression <= 9'])
+   end subroutine test_out_of_range
+
+   subroutine test_bad_choice(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'choice', [character(len=40) :: &
+         "&tangential bound = 'elliptic' /"], [character(len=80) :: 'choice.nml:1', &
+         "&tangential bound = 'elliptic' is not allowed", "'ellipsoidal', 'parabolic'"])
+      if (allocated(error)) return
+      call expect_error(error, 'builtin', [character(len=40) :: &
+         "&profiles wheel = 'builtin:S1003' /"], [character(len=80) :: &
+         'unknown built-in profile', 'builtin:S1002'])
+   end subroutine test_bad_choice
+
+   subroutine test_structure_errors(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'unclosed', [character(len=40) :: '&creepage nu_x = 0'], &
+         [character(len=60) :: 'group &creepage (line 1) is not closed with /'])
+      if (allocated(error)) return
+      call expect_error(error, 'twice', [character(len=40) :: '&creepage nu_x = 0 /', &
+         '&creepage nu_y = 0 /'], [character(len=60) :: 'twice.nml:2', 'appears twice'])
+      if (allocated(error)) return
+      call expect_error(error, 'outside', [character(len=40) :: 'nu_x = 0'], &
+         [character(len=60) :: 'outside.nml:1', 'outside a group'])
+      if (allocated(error)) return
+      call expect_error(error, 'quote', [character(len=40) :: "&normal method = 'hertz /"], &
+         [character(len=60) :: 'quote.nml:1', 'unterminated string'])
+      if (allocated(error)) return
+      call expect_error(error, 'subscript', [character(len=40) :: '&sweep nu_x(2) = 1e-3 /'], &
+         [character(len=60) :: 'give the whole variable'])
+   end subroutine test_structure_errors
+
+   subroutine test_missing_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      call load_config('/nonexistent/case.nml', no_overrides, c, lerr)
+      call check(error, allocated(lerr), message='missing case file is an error')
+      if (allocated(error)) return
+      call check(error, lerr%stat, stat_io)
+      if (allocated(error)) return
+      call check(error, index(lerr%message, '/nonexistent/case.nml') > 0, message=lerr%message)
+   end subroutine test_missing_file
+
+   subroutine test_sweep_grid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      type(case_point_type) :: p
+      call load_config('', [character(len=60) :: 'sweep%nu_x=0,2e-3', 'sweep%nu_x_points=20', &
+         'sweep%phi=0,1e-3,2e-3', "sweep%bound=weighted,clipped"], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%n_cases(), 20*2*3)
+      if (allocated(error)) return
+      ! Loop order: bound, nu_x, phi (phi fastest).
+      p = c%case_point(1)
+      call check(error, p%nu_x == 0.0_wp .and. p%phi == 0.0_wp .and. p%bound == 'weighted', &
+         message='first case')
+      if (allocated(error)) return
+      p = c%case_point(2)
+      call check(error, p%phi, 1.0e-3_wp, message='phi varies fastest')
+      if (allocated(error)) return
+      p = c%case_point(4)
+      call check(error, p%nu_x, 2.0e-3_wp/19, rel=.true., thr=4*epsilon(1.0_wp), &
+         message='linspace step 2e-3/19')
+      if (allocated(error)) return
+      p = c%case_point(60)
+      call check(error, p%nu_x == 2.0e-3_wp .and. p%phi == 2.0e-3_wp .and. &
+         p%bound == 'weighted', message='last value of a range is exact')
+      if (allocated(error)) return
+      p = c%case_point(61)
+      call check(error, p%bound == 'clipped' .and. p%nu_x == 0.0_wp, message='outer axis')
+      if (allocated(error)) return
+      call check(error, p%nu_y, 0.061e-3_wp, message='unswept input keeps its base value')
+      if (allocated(error)) return
+      call check(error, .not. c%wants_field('traction'), message='sweeps store no fields')
+   end subroutine test_sweep_grid
+
+   subroutine test_sweep_list(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      type(case_point_type) :: p
+      call load_config('', [character(len=60) :: "sweep%mode=list", 'sweep%nu_x=0,1e-3,2e-3', &
+         'sweep%nu_y=3e-3,4e-3,5e-3'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%n_cases(), 3)
+      if (allocated(error)) return
+      p = c%case_point(2)
+      call check(error, p%nu_x == 1.0e-3_wp .and. p%nu_y == 4.0e-3_wp, message='list pairs')
+      if (allocated(error)) return
+      call load_config('', [character(len=60) :: "sweep%mode=list", 'sweep%nu_x=0,1e-3', &
+         'sweep%nu_y=3e-3,4e-3,5e-3'], c, lerr)
+      call check(error, allocated(lerr), message='lists of unequal length')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, 'equal length') > 0, message=lerr%message)
+      if (allocated(error)) return
+      call load_config('', [character(len=60) :: 'sweep%nu_x=0,1e-3,2e-3', &
+         'sweep%nu_x_points=5'], c, lerr)
+      call check(error, allocated(lerr), message='a range needs exactly two values')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, 'exactly two') > 0, message=lerr%message)
+      if (allocated(error)) return
+      call load_config('', [character(len=60) :: 'sweep%approach=0.01,0.02'], c, lerr)
+      call check(error, allocated(lerr), message='load axis of another load mode')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, "mode = 'force'") > 0, message=lerr%message)
+   end subroutine test_sweep_list
+
+   subroutine test_shares_with(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(lib_error), allocatable :: lerr
+      call load_config('', [character(len=60) :: 'sweep%t_y=0,1,2', &
+         'sweep%normal_force=5e4,6e4', 'sweep%nu_x=0,1e-3,2e-3,3e-3'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      ! Case 14 = t_y index 2, force index 2, nu_x index 2 (4 nu_x per force, 8 per t_y).
+      call check(error, c%shares_with(14, axis_geometry), 9, message='same geometry from case 9')
+      if (allocated(error)) return
+      call check(error, c%shares_with(14, axis_load), 13, message='same normal from case 13')
+      if (allocated(error)) return
+      call load_config('', [character(len=60) :: 'sweep%mode=list', 'sweep%t_y=0,1,0', &
+         'sweep%nu_x=0,1e-3,2e-3'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%shares_with(3, axis_geometry), 1, message='list: equal t_y found')
+   end subroutine test_shares_with
+
+   subroutine test_round_trip(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c, d
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: text
+      call load_config('', [character(len=60) :: 'creepage%nu_x=1.23456789012345e-4', &
+         "profiles%wheel=it's.prw", 'sweep%phi=0,2e-3', 'sweep%phi_points=21', &
+         'sweep%bound=weighted,clipped', 'track%rail_canted=.true.'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      text = config_namelist(c)
+      call read_config_text(text, 'printed', d, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'printed namelist does not read back: '//lerr%message// &
+            new_line('a')//text)
+         return
+      end if
+      call check(error, config_namelist(d) == text, message='printed namelist is a fixed point')
+      if (allocated(error)) return
+      call check(error, d%creepage%nu_x == c%creepage%nu_x, message='exact real round trip')
+      if (allocated(error)) return
+      call check(error, d%profiles%wheel == "it's.prw", message='quotes in strings')
+      if (allocated(error)) return
+      call check(error, d%n_cases() == 42 .and. d%track%rail_canted, message='sweep and logical')
+   end subroutine test_round_trip
+
+   subroutine test_format_real(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: values(*) = [0.0_wp, 1.0_wp, -2.5e-12_wp, 0.58e-3_wp, 64700.0_wp, &
+         1.0_wp/3.0_wp, huge(1.0_wp), tiny(1.0_wp), 123456789.0_wp, 0.1_wp, -7.0e6_wp]
+      integer :: i
+      real(wp) :: back
+      character(len=:), allocatable :: text
+      do i = 1, size(values)
+         text = format_real(values(i))
+         read (text, *) back
+         call check(error, back == values(i), message='round trip of '//format_real(values(i)))
+         if (allocated(error)) return
+      end do
+      call check(error, format_real(64700.0_wp) == '64700.0', message=format_real(64700.0_wp))
+      if (allocated(error)) return
+      call check(error, format_real(0.58e-3_wp) == '0.00058', message=format_real(0.58e-3_wp))
+      if (allocated(error)) return
+      call check(error, format_real(2.74e-5_wp) == '2.74e-5', message=format_real(2.74e-5_wp))
+   end subroutine test_format_real
+
+end module test_config

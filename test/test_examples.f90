@@ -1,0 +1,319 @@
+!> The interface examples built and run as separate programs (issue 8): the library of this build
+!> is installed into a scratch prefix with `scripts/install --archive` (shared library, header,
+!> pkg-config file), then the fixed-form Fortran 77 example, the C example and the Python ctypes
+!> script are built with `pkg-config --cflags --libs shcontact` and run. Each prints the headline
+!> case and three bad calls; the numbers must agree with each other bit for bit (one shared
+!> library) and with the solver object of this tester to round-off, and every bad call must
+!> return its status. A C driver also counts the heap allocations of shcontact_solve.
+!>
+!> The archive is the newest build/*/shcontact/libshcontact.a (the one `fpm test` just built),
+!> or $SHCONTACT_ARCHIVE. Missing tools (bash, gfortran, gcc, pkg-config, python3) skip a test.
+module test_examples
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use shcontact_core_kinds, only: wp, i8
+   use shcontact_api_solver, only: contact_result_type
+   use test_api, only: headline_result, headline_t_y
+   implicit none
+   private
+
+   public :: collect_examples
+
+   !> Scratch directory (under build/, which git ignores) and the install prefix in it.
+   character(len=*), parameter :: scratch = 'build/test_examples'
+   character(len=*), parameter :: prefix = scratch//'/prefix'
+   character(len=*), parameter :: pkg_config = 'PKG_CONFIG_PATH='//prefix// &
+      '/lib/pkgconfig pkg-config'
+   !> Keys printed by every example, in the same order.
+   character(len=*), parameter :: keys(9) = [character(len=9) :: 'fx', 'fy', 'mz', 'fn', &
+      'fx_norm', 'fy_norm', 'gamma0', 'n_patches', 'sum_fz']
+   !> Round-off between this tester and the installed library, which may come from a build with
+   !> other optimisation flags (the same build agrees to the last bit).
+   real(wp), parameter :: round_off = 1.0e-9_wp
+
+   !> Install state of this run: 0 not tried, 1 installed, 2 failed, 3 tools missing.
+   integer, save :: install_state = 0
+
+contains
+
+   !> Collect all exported unit tests.
+   subroutine collect_examples(testsuite)
+      !> The tests.
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('install_prefix', test_install), &
+         new_unittest('legacy_f77_example', test_f77), &
+         new_unittest('c_example', test_c), &
+         new_unittest('python_ctypes_example', test_python), &
+         new_unittest('interfaces_agree', test_agree), &
+         new_unittest('no_allocation_in_solve', test_allocations) &
+         ]
+   end subroutine collect_examples
+
+   !> The scratch install has the shared library, the header and a working pkg-config file.
+   subroutine test_install(error)
+      type(error_type), allocatable, intent(out) :: error
+      call ensure_installed(error)
+      if (allocated(error)) return
+      call check(error, exists(prefix//'/lib/libshcontact.so') .and. &
+         exists(prefix//'/include/shcontact.h') .and. &
+         exists(prefix//'/lib/pkgconfig/shcontact.pc'), &
+         message='shared library, header or pkg-config file missing in '//prefix)
+      if (allocated(error)) return
+      call check(error, run(pkg_config//' --exists shcontact') == 0, &
+         message='pkg-config does not find shcontact.pc')
+   end subroutine test_install
+
+   !> The fixed-form Fortran 77 example.
+   subroutine test_f77(error)
+      type(error_type), allocatable, intent(out) :: error
+      call example_test('gfortran', 'gfortran examples/legacy_f77/headline.f $('//pkg_config// &
+         ' --cflags --libs shcontact) -o '//scratch//'/f77_headline', &
+         scratch//'/f77_headline', 'f77', error)
+   end subroutine test_f77
+
+   !> The C example.
+   subroutine test_c(error)
+      type(error_type), allocatable, intent(out) :: error
+      call example_test('gcc', 'gcc -std=c99 -Wall -Wextra -Werror examples/c_api/headline.c $('// &
+         pkg_config//' --cflags --libs shcontact) -o '//scratch//'/c_headline', &
+         scratch//'/c_headline', 'c', error)
+   end subroutine test_c
+
+   !> The Python ctypes script.
+   subroutine test_python(error)
+      type(error_type), allocatable, intent(out) :: error
+      call example_test('python3', '', 'python3 examples/python_ctypes/headline.py --lib '// &
+         prefix//'/lib/libshcontact.so', 'python', error)
+   end subroutine test_python
+
+   !> The three interfaces print the same numbers, bit for bit.
+   subroutine test_agree(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: f77(size(keys)), c(size(keys)), python(size(keys))
+      logical :: have(3)
+      integer :: i
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      have = [exists(output('f77')), exists(output('c')), exists(output('python'))]
+      if (count(have) < 2) then
+         call skip_test(error, 'fewer than two example outputs (run the suite, not this test)')
+         return
+      end if
+      if (have(1)) call read_values(output('f77'), f77, error)
+      if (allocated(error)) return
+      if (have(2)) call read_values(output('c'), c, error)
+      if (allocated(error)) return
+      if (have(3)) call read_values(output('python'), python, error)
+      if (allocated(error)) return
+      do i = 1, size(keys)
+         if (all(have(1:2))) call check(error, transfer(f77(i), 0_i8) == transfer(c(i), 0_i8), &
+            message='F77 and C differ in '//trim(keys(i)))
+         if (allocated(error)) return
+         if (all(have(2:3))) call check(error, transfer(c(i), 0_i8) == &
+            transfer(python(i), 0_i8), message='C and Python differ in '//trim(keys(i)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_agree
+
+   !> shcontact_solve allocates nothing at a repeated wheel position (new loads, load modes and
+   !> creepages). The count at new positions (the contact search) is not checked here.
+   subroutine test_allocations(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: same
+      integer :: unit, stat
+      character(len=64) :: key
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (run('command -v gcc') /= 0) then
+         call skip_test(error, 'no C compiler')
+         return
+      end if
+      if (run('gcc -std=gnu99 examples/c_api/alloc_check.c $('//pkg_config// &
+         ' --cflags --libs shcontact) -o '//scratch//'/alloc_check') /= 0) then
+         call skip_test(error, 'the allocation counter needs glibc (__libc_malloc)')
+         return
+      end if
+      call check(error, run(scratch//'/alloc_check > '//output('alloc')), 0, &
+         message='alloc_check failed (a solve returned an error)')
+      if (allocated(error)) return
+      open (newunit=unit, file=output('alloc'), status='old', action='read')
+      read (unit, *) key
+      read (unit, *, iostat=stat) key, same
+      close (unit)
+      call check(error, stat == 0 .and. key == 'same_position', message='alloc_check output')
+      if (allocated(error)) return
+      call check(error, same, 0.0_wp, message='allocations per shcontact_solve at the same '// &
+         'position')
+   end subroutine test_allocations
+
+   ! --- helpers ---------------------------------------------------------------------------------
+
+   !> Build (unless `build` is empty) and run one example, then compare its numbers with the
+   !> solver object and check its three bad calls.
+   subroutine example_test(tool, build, command, name, error)
+      character(len=*), intent(in) :: tool, build, command, name
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_result_type) :: expected
+      real(wp) :: values(size(keys))
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (run('command -v '//tool) /= 0) then
+         call skip_test(error, tool//' not found')
+         return
+      end if
+      if (len(build) > 0) then
+         call check(error, run(build//' 2> '//output(name//'_build')), 0, &
+            message='building the '//name//' example failed: see '//output(name//'_build'))
+         if (allocated(error)) return
+      end if
+      call check(error, run(command//' > '//output(name)), 0, &
+         message='the '//name//' example failed')
+      if (allocated(error)) return
+
+      call headline_result(expected, error)
+      if (allocated(error)) return
+      call read_values(output(name), values, error)
+      if (allocated(error)) return
+      call check(error, values(1), expected%main%fx, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(2), expected%main%fy, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(3), expected%main%mz, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(4), expected%main%fn, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(5), expected%main%fx_norm, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(6), expected%main%fy_norm, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, values(7), expected%main%gamma0, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, nint(values(8)), expected%n_patches)
+      if (allocated(error)) return
+      call check(error, values(9), expected%track%fz, rel=.true., thr=round_off)
+      if (allocated(error)) return
+      call check(error, value_of(output(name), 't_y'), headline_t_y, thr=1.0e-12_wp)
+      if (allocated(error)) return
+      call check_bad_call(output(name), [character(len=21) :: 'status_invalid_handle', &
+         'status_negative_load', 'status_nan_creepage'], [1, 2, 2], error)
+   end subroutine example_test
+
+   !> Each bad-call line: `name status message` with the expected status and a message.
+   subroutine check_bad_call(file, names, stats, error)
+      character(len=*), intent(in) :: file
+      character(len=*), intent(in) :: names(:)
+      integer, intent(in) :: stats(:)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=512) :: line
+      integer :: unit, stat, i, status, found
+      character(len=32) :: name
+
+      found = 0
+      open (newunit=unit, file=file, status='old', action='read')
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         read (line, *, iostat=stat) name, status
+         if (stat /= 0) cycle
+         do i = 1, size(names)
+            if (name /= names(i)) cycle
+            found = found + 1
+            ! After the name and the status comes the message.
+            call check(error, status == stats(i) .and. len_trim(line) > len_trim(name) + 4, &
+               message=file//': '//trim(line))
+            if (allocated(error)) exit
+         end do
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      if (allocated(error)) return
+      call check(error, found, size(names), message=file//': bad-call lines missing')
+   end subroutine check_bad_call
+
+   !> The numbers of `keys` in an example's output.
+   subroutine read_values(file, values, error)
+      character(len=*), intent(in) :: file
+      real(wp), intent(out) :: values(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+      do i = 1, size(keys)
+         values(i) = value_of(file, trim(keys(i)))
+      end do
+      if (any(values >= huge(1.0_wp))) call test_failed(error, file//': a value is missing')
+   end subroutine read_values
+
+   !> The number after `key` on its line of an output file; huge() when absent.
+   function value_of(file, key) result(value)
+      character(len=*), intent(in) :: file, key
+      real(wp) :: value
+      character(len=512) :: line
+      character(len=32) :: name
+      integer :: unit, stat
+      real(wp) :: x
+
+      value = huge(1.0_wp)
+      open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+      if (stat /= 0) return
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         read (line, *, iostat=stat) name, x
+         if (stat == 0 .and. name == key) then
+            value = x
+            exit
+         end if
+      end do
+      close (unit)
+   end function value_of
+
+   !> Install this build's library into the scratch prefix, once per run.
+   subroutine ensure_installed(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: find_archive = 'a=${SHCONTACT_ARCHIVE:-$(ls -t '// &
+         'build/*/shcontact/libshcontact.a 2>/dev/null | head -1)}; [ -n "$a" ] && '
+
+      if (install_state == 0) then
+         install_state = 3
+         if (run('command -v gfortran && command -v pkg-config') == 0) then
+            install_state = 2
+            if (run('rm -rf '//scratch//' && mkdir -p '//scratch//' && '//find_archive// &
+               'scripts/install --archive "$a" --prefix '//prefix//' 2> '//scratch// &
+               '/install.log') == 0) install_state = 1
+         end if
+      end if
+      select case (install_state)
+      case (2)
+         call test_failed(error, 'scripts/install --archive failed: see '//scratch// &
+            '/install.log')
+      case (3)
+         call skip_test(error, 'gfortran or pkg-config not found (or no shell)')
+      end select
+   end subroutine ensure_installed
+
+   !> Run a shell command quietly; its exit status (−1 when there is no shell).
+   integer function run(command) result(stat)
+      character(len=*), intent(in) :: command
+      integer :: cmdstat
+      stat = -1
+      call execute_command_line('( '//command//' ) > /dev/null 2>&1 < /dev/null', &
+         exitstat=stat, cmdstat=cmdstat)
+      if (cmdstat /= 0) stat = -1
+   end function run
+
+   !> Where an example's output goes.
+   function output(name) result(file)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: file
+      file = scratch//'/'//name//'.out'
+   end function output
+
+   !> True when the file exists.
+   logical function exists(file)
+      character(len=*), intent(in) :: file
+      inquire (file=file, exist=exists)
+   end function exists
+
+end module test_examples
