@@ -37,7 +37,7 @@ module shcontact_api_solver
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
-      prepare_profiles, find_contact_patches
+      contact_patches_type, prepare_profiles, find_contact_patches, extract_patch, max_candidates
    use shcontact_normal_options, only: normal_options_type, check_normal_options
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
       solve_approach, solve_vertical_load
@@ -65,7 +65,7 @@ module shcontact_api_solver
       'vertical force', 'approach']
 
    !> Most patches one contact may have (the contact search follows at most 16 candidates).
-   integer, parameter :: max_patches = 16
+   integer, parameter :: max_patches = max_candidates
    !> Length of the flat per-patch value list ([[patch_values]]).
    integer, parameter :: patch_value_count = 17
    !> Length of the flat result value list ([[result_values]]).
@@ -151,7 +151,7 @@ module shcontact_api_solver
       !> Geometry of the last position (valid when has_geometry).
       logical :: has_geometry = .false.
       real(wp) :: t_y = 0.0_wp, roll = 0.0_wp
-      type(patch_geometry_type), allocatable :: geometry(:)
+      type(contact_patches_type) :: patches
       !> Patches whose normal problem is prepared for this geometry.
       integer :: n_prepared = 0
       type(normal_contact_type) :: contacts(max_patches)
@@ -389,15 +389,15 @@ contains
       self%has_normal = .false.
       self%n_prepared = 0
       position = wheelset_position_type(side=self%side, y_ws=t_y, roll=roll)
-      call find_contact_patches(self%prepared, position, self%geometry, error)
+      call find_contact_patches(self%prepared, position, self%patches, error)
       if (allocated(error)) return
-      if (size(self%geometry) < 1) then
+      if (self%patches%count < 1) then
          call fatal_error(error, 'contact search at t_y = '//str_real(t_y)//' mm, roll = '// &
             str_real(roll)//' rad: no contact patch found', stat_no_contact)
          return
       end if
-      if (size(self%geometry) > max_patches) then
-         call fatal_error(error, 'contact search: '//str_int(size(self%geometry))// &
+      if (self%patches%count > max_patches) then
+         call fatal_error(error, 'contact search: '//str_int(self%patches%count)// &
             ' patches; the solver holds at most '//str_int(max_patches), stat_usage)
          return
       end if
@@ -418,10 +418,10 @@ contains
          same(load%value, self%load%value)) return
       self%has_normal = .false.
       n = 1
-      if (load%mode == load_vertical_force) n = size(self%geometry)
+      if (load%mode == load_vertical_force) n = self%patches%count
       do k = self%n_prepared + 1, n
-         call prepare_normal_contact(self%contacts(k), self%geometry(k), self%normal_options, &
-            self%material, error)
+         call prepare_normal_contact(self%contacts(k), self%patches%patch(k), &
+            self%normal_options, self%material, error, n_points=self%patches%points(k))
          if (allocated(error)) then
             if (n > 1) call prefix_error(error, 'patch '//str_int(k))
             return
@@ -450,11 +450,11 @@ contains
       type(contact_result_type), intent(inout) :: result
       integer :: k, m
 
-      result%n_patches = size(self%geometry)
+      result%n_patches = self%patches%count
       result%n_loaded = self%n_loaded
       result%dz = self%dz
       do k = 1, result%n_patches
-         associate (p => result%patch(k), g => self%geometry(k))
+         associate (p => result%patch(k), g => self%patches%patch(k))
             p%gamma0 = g%gamma0
             p%r0 = g%r0
             p%y_track = g%y_track
@@ -497,7 +497,7 @@ contains
 
       fields%n_patches = self%n_loaded
       do k = 1, self%n_loaded
-         call copy_geometry(self%geometry(k), fields%geometry(k))
+         call extract_patch(self%patches, k, fields%geometry(k))
          call copy_normal(self%normal(k), fields%normal(k))
          if (self%normal(k)%load > 0.0_wp) then
             call copy_tangential(self%tangential(k), fields%tangential(k))
@@ -507,26 +507,6 @@ contains
          end if
       end do
    end subroutine copy_fields
-
-   !> Copy a patch geometry into reused arrays.
-   pure subroutine copy_geometry(src, dst)
-      type(patch_geometry_type), intent(in) :: src
-      type(patch_geometry_type), intent(inout) :: dst
-      dst%y_track = src%y_track
-      dst%z_track = src%z_track
-      dst%y_rail = src%y_rail
-      dst%y_wheel = src%y_wheel
-      dst%gamma0 = src%gamma0
-      dst%r0 = src%r0
-      dst%gap0 = src%gap0
-      dst%h = src%h
-      call copy_vector(src%y, dst%y)
-      call copy_vector(src%gap, dst%gap)
-      call copy_vector(src%curv_a, dst%curv_a)
-      call copy_vector(src%curv_b, dst%curv_b)
-      call copy_vector(src%gamma, dst%gamma)
-      call copy_vector(src%r_wheel, dst%r_wheel)
-   end subroutine copy_geometry
 
    !> Copy a normal solution into reused arrays.
    pure subroutine copy_normal(src, dst)

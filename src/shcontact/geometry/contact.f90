@@ -50,8 +50,12 @@ module shcontact_geometry_contact
    implicit none
    private
 
-   public :: contact_options_type, prepared_profiles_type, check_contact_options
-   public :: prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table
+   public :: contact_options_type, prepared_profiles_type, contact_patches_type
+   public :: check_contact_options, prepare_profiles, find_contact_patches, extract_patch
+   public :: positioned_profiles, write_geometry_table, max_candidates
+
+   !> Largest number of candidates followed at one position (and of patches found).
+   integer, parameter :: max_candidates = 16
 
    !> Options of the contact search and the strip tables.
    type :: contact_options_type
@@ -94,10 +98,37 @@ module shcontact_geometry_contact
       real(wp), allocatable :: rail_s(:), rail_y(:), rail_z(:)
    end type prepared_profiles_type
 
-   !> Find the contact patches: from prepared profiles, or from raw profiles in one go.
+   !> The patches of one wheel position in storage the caller keeps from search to search
+   !> ([[find_contact_patches]] with this type), so that a search allocates nothing once the
+   !> storage is large enough: the tables of patch k are the first `points(k)` entries of
+   !> `patch(k)`'s arrays, which only ever grow (their size is a capacity, not the table size).
+   !> The work arrays of the search live here too; they are sized from the prepared profiles at
+   !> the first search. [[extract_patch]] copies a patch out with tables of exact size.
+   type :: contact_patches_type
+      !> Number of patches found, deepest first (0 after a failed search).
+      integer :: count = 0
+      !> Number of table points of each patch.
+      integer :: points(max_candidates) = 0
+      !> The patches; only the first points(k) table entries of patch(k) belong to it.
+      type(patch_geometry_type) :: patch(max_candidates)
+      !> The wheel samples placed laterally (side frame, mm).
+      real(wp), allocatable, private :: wheel_y(:), wheel_z(:)
+      !> The sampling grid: rail and wheel envelopes and their arc lengths, the gap, where it is
+      !> defined, and the indices of its minima.
+      real(wp), allocatable, private :: rail_env(:), rail_env_s(:), wheel_env(:), &
+         wheel_env_s(:), gap(:)
+      logical, allocatable, private :: rail_covered(:), wheel_covered(:)
+      integer, allocatable, private :: minima(:)
+      !> Rows of the strip tables on either side of the reference point.
+      real(wp), allocatable, private :: left(:, :), right(:, :)
+   end type contact_patches_type
+
+   !> Find the contact patches: from prepared profiles, or from raw profiles in one go; into
+   !> freshly allocated tables, or into a reused [[contact_patches_type]].
    interface find_contact_patches
       module procedure find_patches_prepared
       module procedure find_patches_raw
+      module procedure find_patches_reuse
    end interface find_contact_patches
 
    !> A rail point, the wheel point on its normal, and the distance between them.
@@ -113,8 +144,6 @@ module shcontact_geometry_contact
       real(wp) :: dgap = 0.0_wp, d2gap = 0.0_wp
    end type normal_pair_type
 
-   !> Largest number of candidates followed at one position.
-   integer, parameter :: max_candidates = 16
    !> Convergence of the common-normal search (mm).
    real(wp), parameter :: s_tol = 1.0e-10_wp
    !> Height adjustment stops when the smallest gap is below this (mm).
@@ -231,7 +260,7 @@ contains
    end subroutine find_patches_raw
 
    !> Find the contact patches for one wheel position: candidates, wheel height, reference
-   !> points and strip tables (see the module header).
+   !> points and strip tables (see the module header), into tables of exact size.
    subroutine find_patches_prepared(prepared, position, patches, error)
       !> Profiles from [[prepare_profiles]].
       type(prepared_profiles_type), intent(in) :: prepared
@@ -241,14 +270,37 @@ contains
       type(patch_geometry_type), allocatable, intent(out) :: patches(:)
       !> Set on invalid input, when the profiles do not touch, or when no candidate converges.
       type(error_type), allocatable, intent(out) :: error
+      type(contact_patches_type) :: found
+      integer :: k
+
+      call find_patches_reuse(prepared, position, found, error)
+      if (allocated(error)) return
+      allocate (patches(found%count))
+      do k = 1, found%count
+         call extract_patch(found, k, patches(k))
+      end do
+   end subroutine find_patches_prepared
+
+   !> Find the contact patches for one wheel position into storage kept by the caller (see
+   !> [[contact_patches_type]]): the same patches as the other forms, bit for bit, and no
+   !> allocation once the storage has grown to the tables' size.
+   subroutine find_patches_reuse(prepared, position, patches, error)
+      !> Profiles from [[prepare_profiles]].
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Wheelset position and side.
+      type(wheelset_position_type), intent(in) :: position
+      !> The patches, deepest first (gap0 = 0 for the first); count = 0 on error.
+      type(contact_patches_type), intent(inout) :: patches
+      !> Set on invalid input, when the profiles do not touch, or when no candidate converges.
+      type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: wheel_map
       type(normal_pair_type) :: pairs(max_candidates)
-      type(patch_geometry_type) :: found(max_candidates)
       real(wp) :: covered(2, max_candidates)
       logical :: keep(max_candidates)
-      integer :: n_pairs, i, j, n_kept
+      integer :: n_pairs, i, j
 
-      call place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+      patches%count = 0
+      call place_wheel(prepared, position, patches, wheel_map, pairs, n_pairs, error)
       if (allocated(error)) return
       ! Deepest first; a candidate inside an earlier patch's basin (reached through a negligible
       ! maximum) belongs to that patch.
@@ -263,19 +315,59 @@ contains
             end if
          end do
          if (.not. keep(i)) cycle
-         call build_table(prepared, wheel_map, position%side, pairs(i), found(i), &
-            covered(:, i), error)
-         if (allocated(error)) return
+         call build_table(prepared, wheel_map, position%side, pairs(i), patches, &
+            patches%count + 1, covered(:, i), error)
+         if (allocated(error)) then
+            patches%count = 0
+            return
+         end if
+         patches%count = patches%count + 1
       end do
-      n_kept = count(keep(1:n_pairs))
-      allocate (patches(n_kept))
-      n_kept = 0
-      do i = 1, n_pairs
-         if (.not. keep(i)) cycle
-         n_kept = n_kept + 1
-         patches(n_kept) = found(i)
-      end do
-   end subroutine find_patches_prepared
+   end subroutine find_patches_reuse
+
+   !> Patch k of a [[contact_patches_type]] with tables of exact size; the arrays of `patch`
+   !> are reused when they already have that size.
+   pure subroutine extract_patch(patches, k, patch)
+      !> The patches of a search.
+      type(contact_patches_type), intent(in) :: patches
+      !> Which patch (1 to patches%count).
+      integer, intent(in) :: k
+      !> The copy.
+      type(patch_geometry_type), intent(inout) :: patch
+      integer :: n
+
+      n = patches%points(k)
+      associate (src => patches%patch(k))
+         patch%y_track = src%y_track
+         patch%z_track = src%z_track
+         patch%y_rail = src%y_rail
+         patch%y_wheel = src%y_wheel
+         patch%gamma0 = src%gamma0
+         patch%r0 = src%r0
+         patch%gap0 = src%gap0
+         patch%h = src%h
+         patch%basin_lower = src%basin_lower
+         patch%basin_upper = src%basin_upper
+         call copy_table(src%y, n, patch%y)
+         call copy_table(src%gap, n, patch%gap)
+         call copy_table(src%curv_a, n, patch%curv_a)
+         call copy_table(src%curv_b, n, patch%curv_b)
+         call copy_table(src%gamma, n, patch%gamma)
+         call copy_table(src%r_wheel, n, patch%r_wheel)
+      end associate
+   end subroutine extract_patch
+
+   !> dst = src(1:n), reallocating dst only when its size is not n.
+   pure subroutine copy_table(src, n, dst)
+      real(wp), intent(in) :: src(:)
+      integer, intent(in) :: n
+      real(wp), allocatable, intent(inout) :: dst(:)
+      if (allocated(dst)) then
+         if (size(dst) /= n) deallocate (dst)
+      end if
+      if (.not. allocated(dst)) allocate (dst(n))
+      dst(:) = src(1:n)
+   end subroutine copy_table
 
    !> The positioned profiles in true track coordinates (the left side mirrored back), with the
    !> wheel lowered onto the rail, sampled as polylines for plotting.
@@ -290,9 +382,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: wheel_map
       type(normal_pair_type) :: pairs(max_candidates)
+      type(contact_patches_type) :: work
       integer :: n_pairs
 
-      call place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+      call place_wheel(prepared, position, work, wheel_map, pairs, n_pairs, error)
       if (allocated(error)) return
       rail_y = position%side*prepared%rail_y
       rail_z = prepared%rail_z
@@ -303,9 +396,11 @@ contains
 
    !> Place the wheel for a position: the lateral map, the vertical shift that makes the smallest
    !> gap zero, and the refined candidates (deepest first, gaps ≤ max_gap).
-   subroutine place_wheel(prepared, position, wheel_map, pairs, n_pairs, error)
+   subroutine place_wheel(prepared, position, work, wheel_map, pairs, n_pairs, error)
       type(prepared_profiles_type), intent(in) :: prepared
       type(wheelset_position_type), intent(in) :: position
+      !> Provides the work arrays of the sampling.
+      type(contact_patches_type), intent(inout) :: work
       type(rigid_map_type), intent(out) :: wheel_map
       type(normal_pair_type), intent(out) :: pairs(:)
       integer, intent(out) :: n_pairs
@@ -321,7 +416,7 @@ contains
          return
       end if
       wheel_map = wheel_placement(prepared%track, position)
-      call sampled_candidates(prepared, wheel_map, pairs, n_pairs, shift, error)
+      call sampled_candidates(prepared, wheel_map, work, pairs, n_pairs, shift, error)
       if (allocated(error)) return
       wheel_map = wheel_map%then(translation(0.0_wp, shift))
 
@@ -353,37 +448,62 @@ contains
 
    !> Sample the vertical gap between the rail and the wheel (before any vertical shift), find
    !> its separate minima and turn them into starting points of the refinement. `shift` is the
-   !> vertical move (down) that makes the sampled gap's minimum zero.
-   pure subroutine sampled_candidates(prepared, wheel_map, pairs, n_pairs, shift, error)
+   !> vertical move (down) that makes the sampled gap's minimum zero. The samples live in the
+   !> work arrays of `work` ([[reserve_search]]).
+   pure subroutine sampled_candidates(prepared, wheel_map, work, pairs, n_pairs, shift, error)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
+      type(contact_patches_type), intent(inout) :: work
       type(normal_pair_type), intent(out) :: pairs(:)
       integer, intent(out) :: n_pairs
       real(wp), intent(out) :: shift
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: wy(:), wz(:), rz(:), rs(:), wzl(:), ws(:), gap(:)
-      logical, allocatable :: rc(:), wc(:)
-      integer, allocatable :: minima(:)
-      integer :: count, m, j, i
-      real(wp) :: h, y0, y1, slope
-      logical :: interior
+      integer :: m, n_w
+      real(wp) :: h, y0, y1
 
       n_pairs = 0
       shift = 0.0_wp
       h = prepared%options%sample_step
-      allocate (wy(size(prepared%wheel_y)), wz(size(prepared%wheel_z)))
-      call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wy, wz)
-      y0 = max(minval(prepared%rail_y), minval(wy))
-      y1 = min(maxval(prepared%rail_y), maxval(wy))
-      if (y1 - y0 < 4.0_wp*h) then
-         call fatal_error(error, 'contact search: the wheel (y = '//str(minval(wy))//' to '// &
-            str(maxval(wy))//' mm) and the rail (y = '//str(minval(prepared%rail_y))//' to '// &
-            str(maxval(prepared%rail_y))//' mm, side frame) do not overlap laterally; '// &
-            'check the lateral shift and the track dimensions', stat_no_contact)
-         return
-      end if
-      m = int((y1 - y0)/h) + 1
-      allocate (rz(m), rs(m), wzl(m), ws(m), gap(m), rc(m), wc(m), minima(m))
+      n_w = size(prepared%wheel_y)
+      call reserve_search(prepared, work, 0)
+      associate (wy => work%wheel_y(1:n_w), wz => work%wheel_z(1:n_w))
+         call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wy, wz)
+         y0 = max(minval(prepared%rail_y), minval(wy))
+         y1 = min(maxval(prepared%rail_y), maxval(wy))
+         if (y1 - y0 < 4.0_wp*h) then
+            call fatal_error(error, 'contact search: the wheel (y = '//str(minval(wy))//' to '// &
+               str(maxval(wy))//' mm) and the rail (y = '//str(minval(prepared%rail_y))// &
+               ' to '//str(maxval(prepared%rail_y))//' mm, side frame) do not overlap '// &
+               'laterally; check the lateral shift and the track dimensions', stat_no_contact)
+            return
+         end if
+         m = int((y1 - y0)/h) + 1
+         call reserve_search(prepared, work, m)
+         call grid_candidates(prepared, wy, wz, y0, work%rail_env(1:m), work%rail_env_s(1:m), &
+            work%wheel_env(1:m), work%wheel_env_s(1:m), work%gap(1:m), work%rail_covered(1:m), &
+            work%wheel_covered(1:m), work%minima(1:m), pairs, n_pairs, shift, error)
+      end associate
+   end subroutine sampled_candidates
+
+   !> [[sampled_candidates]] on the grid y_j = y0 + (j − 1) h, j = 1..size(gap), given the
+   !> placed wheel samples (wy, wz); the other arrays are work space of the grid's size.
+   pure subroutine grid_candidates(prepared, wy, wz, y0, rz, rs, wzl, ws, gap, rc, wc, minima, &
+         pairs, n_pairs, shift, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      real(wp), intent(in) :: wy(:), wz(:), y0
+      real(wp), intent(out) :: rz(:), rs(:), wzl(:), ws(:), gap(:)
+      logical, intent(out) :: rc(:), wc(:)
+      integer, intent(out) :: minima(:)
+      type(normal_pair_type), intent(inout) :: pairs(:)
+      integer, intent(inout) :: n_pairs
+      real(wp), intent(out) :: shift
+      type(error_type), allocatable, intent(out) :: error
+      integer :: count, j, i
+      real(wp) :: h, slope
+      logical :: interior
+
+      h = prepared%options%sample_step
+      shift = 0.0_wp
       call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
          .false., rz, rs, rc)
       call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
@@ -412,7 +532,67 @@ contains
          pairs(n_pairs)%k_r = prepared%rail%interval(rs(j))
          pairs(n_pairs)%k_w = prepared%wheel%interval(ws(j))
       end do
-   end subroutine sampled_candidates
+   end subroutine grid_candidates
+
+   !> Size the work arrays of the search for these profiles, once: the placed wheel samples, a
+   !> sampling grid over the rail's whole width (the overlap with the wheel is never wider),
+   !> at least `m` points, and the strip-table rows. Arrays only grow.
+   pure subroutine reserve_search(prepared, work, m)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(contact_patches_type), intent(inout) :: work
+      integer, intent(in) :: m
+      integer :: n_grid
+
+      call reserve_vector(work%wheel_y, size(prepared%wheel_y))
+      call reserve_vector(work%wheel_z, size(prepared%wheel_y))
+      if (allocated(work%gap)) then
+         if (size(work%gap) >= m) return
+      end if
+      n_grid = max(m, int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
+         prepared%options%sample_step) + 1)
+      call reserve_vector(work%rail_env, n_grid)
+      call reserve_vector(work%rail_env_s, n_grid)
+      call reserve_vector(work%wheel_env, n_grid)
+      call reserve_vector(work%wheel_env_s, n_grid)
+      call reserve_vector(work%gap, n_grid)
+      if (allocated(work%rail_covered)) deallocate (work%rail_covered, work%wheel_covered, &
+         work%minima)
+      allocate (work%rail_covered(n_grid), work%wheel_covered(n_grid), work%minima(n_grid))
+   end subroutine reserve_search
+
+   !> Make `a` hold at least n values (its content is not kept when it grows).
+   pure subroutine reserve_vector(a, n)
+      real(wp), allocatable, intent(inout) :: a(:)
+      integer, intent(in) :: n
+      if (allocated(a)) then
+         if (size(a) >= n) return
+         deallocate (a)
+      end if
+      allocate (a(n))
+   end subroutine reserve_vector
+
+   !> Make `a` hold at least rows × n values (its content is not kept when it grows).
+   pure subroutine reserve_rows(a, rows, n)
+      real(wp), allocatable, intent(inout) :: a(:, :)
+      integer, intent(in) :: rows, n
+      if (allocated(a)) then
+         if (size(a, 1) == rows .and. size(a, 2) >= n) return
+         deallocate (a)
+      end if
+      allocate (a(rows, n))
+   end subroutine reserve_rows
+
+   !> Make the tables of a patch hold at least n points.
+   pure subroutine reserve_patch(patch, n)
+      type(patch_geometry_type), intent(inout) :: patch
+      integer, intent(in) :: n
+      call reserve_vector(patch%y, n)
+      call reserve_vector(patch%gap, n)
+      call reserve_vector(patch%curv_a, n)
+      call reserve_vector(patch%curv_b, n)
+      call reserve_vector(patch%gamma, n)
+      call reserve_vector(patch%r_wheel, n)
+   end subroutine reserve_patch
 
    !> Refine every candidate; drop those that fail, and duplicates (same rail point).
    pure subroutine refine_all(prepared, wheel_map, pairs, n_pairs)
@@ -420,7 +600,7 @@ contains
       type(rigid_map_type), intent(in) :: wheel_map
       type(normal_pair_type), intent(inout) :: pairs(:)
       integer, intent(inout) :: n_pairs
-      logical :: ok(n_pairs)
+      logical :: ok(max_candidates)
       integer :: i, j, n
 
       do i = 1, n_pairs
@@ -572,21 +752,21 @@ contains
    end subroutine refine_pair
 
    !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
-   !> followed outwards in steps h up to table_gap (physics.md §5.4). `covered` returns the rail
-   !> arc-length range of the patch's own basin (up to the maxima that separate it from its
-   !> neighbours), which the tables may overrun.
-   pure subroutine build_table(prepared, wheel_map, side, pair, patch, covered, error)
+   !> followed outwards in steps h up to table_gap (physics.md §5.4), into patch k of `patches`.
+   !> `covered` returns the rail arc-length range of the patch's own basin (up to the maxima
+   !> that separate it from its neighbours), which the tables may overrun.
+   pure subroutine build_table(prepared, wheel_map, side, pair, patches, k, covered, error)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
       integer, intent(in) :: side
       type(normal_pair_type), intent(in) :: pair
-      type(patch_geometry_type), intent(out) :: patch
+      type(contact_patches_type), intent(inout) :: patches
+      integer, intent(in) :: k
       real(wp), intent(out) :: covered(2)
       type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: rmap, wmap, frame
       type(frame_point_type) :: r0, w0
-      real(wp), allocatable :: left(:, :), right(:, :), rows(:, :)
-      real(wp) :: h, gap0
+      real(wp) :: h, gap0, swap
       integer :: n_left, n_right, basin_left, basin_right, n_max, dir_r, dir_w, n, i, i0
 
       h = prepared%options%table_step
@@ -601,46 +781,67 @@ contains
       w0 = frame_point(prepared%wheel, wmap, pair%s_w, dir_w, pair%k_w)
       gap0 = r0%zeta - w0%zeta
       n_max = int(min(prepared%rail%length(), prepared%wheel%length())/h) + 2
-      allocate (left(row_count, n_max), right(row_count, n_max))
-      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, right, &
-         n_right, basin_right, covered(2))
-      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, left, &
-         n_left, basin_left, covered(1))
-      if (covered(1) > covered(2)) covered = covered([2, 1])
+      call reserve_rows(patches%left, row_count, n_max)
+      call reserve_rows(patches%right, row_count, n_max)
+      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, &
+         patches%right(:, 1:n_max), n_right, basin_right, covered(2))
+      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, &
+         patches%left(:, 1:n_max), n_left, basin_left, covered(1))
+      if (covered(1) > covered(2)) then
+         swap = covered(1)
+         covered(1) = covered(2)
+         covered(2) = swap
+      end if
 
       n = n_left + n_right + 1
       i0 = n_left + 1
-      allocate (rows(row_count, n))
-      rows(:, i0) = strip_row(prepared, r0, w0, pair%theta, gap0)
-      rows(:, i0 + 1:n) = right(:, 1:n_right)
-      rows(:, i0 - 1:1:-1) = left(:, 1:n_left)
-      patch%h = h
-      patch%y = [((i - i0)*h, i=1, n)]
-      patch%basin_lower = -basin_left*h
-      patch%basin_upper = basin_right*h
-      patch%gap = max(rows(1, :), 0.0_wp)
-      patch%gap(i0) = 0.0_wp
-      patch%curv_b = max(0.5_wp*rows(2, :), prepared%options%b_min)
-      patch%gamma = rows(3, :)
-      patch%r_wheel = rows(4, :)
-      if (prepared%options%a_reference_normal) then
-         patch%curv_a = cos(pair%theta)/(2.0_wp*patch%r_wheel)
-      else
-         patch%curv_a = cos(patch%gamma)/(2.0_wp*patch%r_wheel)
-      end if
-      patch%y_track = side*pair%y
-      patch%z_track = pair%z
-      patch%y_rail = r0%u
-      patch%y_wheel = w0%u
-      patch%gamma0 = pair%theta
-      patch%r0 = patch%r_wheel(i0)
-      patch%gap0 = gap0
-      if (any(patch%r_wheel <= 0.0_wp)) then
-         call fatal_error(error, 'contact search: a wheel rolling radius <= 0 in the patch at '// &
-            'y = '//str(patch%y_track)//' mm; check the nominal radius and the wheel profile', &
-            stat_invalid_input)
-      end if
+      call reserve_patch(patches%patch(k), n)
+      patches%points(k) = n
+      associate (patch => patches%patch(k))
+         call put_row(patch, i0, i0, h, prepared%options%b_min, &
+            strip_row(prepared, r0, w0, pair%theta, gap0))
+         do i = 1, n_right
+            call put_row(patch, i0 + i, i0, h, prepared%options%b_min, patches%right(:, i))
+         end do
+         do i = 1, n_left
+            call put_row(patch, i0 - i, i0, h, prepared%options%b_min, patches%left(:, i))
+         end do
+         patch%h = h
+         patch%basin_lower = -basin_left*h
+         patch%basin_upper = basin_right*h
+         patch%gap(i0) = 0.0_wp
+         if (prepared%options%a_reference_normal) then
+            patch%curv_a(1:n) = cos(pair%theta)/(2.0_wp*patch%r_wheel(1:n))
+         else
+            patch%curv_a(1:n) = cos(patch%gamma(1:n))/(2.0_wp*patch%r_wheel(1:n))
+         end if
+         patch%y_track = side*pair%y
+         patch%z_track = pair%z
+         patch%y_rail = r0%u
+         patch%y_wheel = w0%u
+         patch%gamma0 = pair%theta
+         patch%r0 = patch%r_wheel(i0)
+         patch%gap0 = gap0
+         if (any(patch%r_wheel(1:n) <= 0.0_wp)) then
+            call fatal_error(error, 'contact search: a wheel rolling radius <= 0 in the patch '// &
+               'at y = '//str(patch%y_track)//' mm; check the nominal radius and the wheel '// &
+               'profile', stat_invalid_input)
+         end if
+      end associate
    end subroutine build_table
+
+   !> Table point i of a patch (reference point i0) from a row of [[strip_row]]: the gap
+   !> (≥ 0), B = g''/2 clamped to b_min, γ and r_w.
+   pure subroutine put_row(patch, i, i0, h, b_min, row)
+      type(patch_geometry_type), intent(inout) :: patch
+      integer, intent(in) :: i, i0
+      real(wp), intent(in) :: h, b_min, row(row_count)
+      patch%y(i) = (i - i0)*h
+      patch%gap(i) = max(row(1), 0.0_wp)
+      patch%curv_b(i) = max(0.5_wp*row(2), b_min)
+      patch%gamma(i) = row(3)
+      patch%r_wheel(i) = row(4)
+   end subroutine put_row
 
    !> One row of the tables from the rail and wheel points of a strip.
    pure function strip_row(prepared, r, w, theta, gap0) result(row)

@@ -77,9 +77,10 @@ contains
 
    !> Prepare one patch: check the options, material and geometry, reduce the geometry
    !> (per-point ε_a, ε_b, m, n: once per geometry) and solve the reference Hertz shape. The
-   !> contact of the patch is confined to its own basin ([[confine_to_basin]]).
-   subroutine prepare_normal_contact(contact, geometry, options, material, error)
-      !> The prepared patch (its arrays are reused when the table size is unchanged).
+   !> contact of the patch is confined to its own basin ([[confine_to_basin]]). A reused
+   !> `contact` allocates nothing once it has held a table as long.
+   subroutine prepare_normal_contact(contact, geometry, options, material, error, n_points)
+      !> The prepared patch (its arrays only grow: they are reused for any shorter table).
       type(normal_contact_type), intent(inout) :: contact
       !> Patch geometry.
       type(patch_geometry_type), intent(in) :: geometry
@@ -89,7 +90,11 @@ contains
       type(material_type), intent(in) :: material
       !> Set for invalid options, material or geometry.
       type(error_type), allocatable, intent(out) :: error
-      type(patch_geometry_type) :: basin
+      !> The tables are the first n_points entries of the geometry's arrays, which may be longer
+      !> (shcontact_geometry_contact's contact_patches_type). Default: all entries.
+      integer, intent(in), optional :: n_points
+      real(wp) :: gap_first, gap_last
+      integer :: first, last
       logical :: confined
 
       call check_normal_options(options, error)
@@ -99,11 +104,12 @@ contains
       contact%options = options
       contact%material = material
       contact%e_star = material%e_star()
-      call confine_to_basin(geometry, basin, confined)
+      call confine_to_basin(geometry, n_points, first, last, gap_first, gap_last, confined)
       if (confined) then
-         call prepare_semihertz(basin, options, contact%geometry, error)
+         call prepare_semihertz(geometry, options, contact%geometry, error, first=first, &
+            last=last, gap_first=gap_first, gap_last=gap_last)
       else
-         call prepare_semihertz(geometry, options, contact%geometry, error)
+         call prepare_semihertz(geometry, options, contact%geometry, error, last=n_points)
       end if
       if (allocated(error)) return
       call hertz_shape(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, error)
@@ -266,21 +272,39 @@ contains
    !> point is raised to the table's largest gap. The strip method's contact interval then stops
    !> within h of the limit, N(δ) stays continuous when the contact reaches the ridge (growing
    !> across it would add the neighbour's already penetrated region at once), and the approach is
-   !> bounded on that side as at an open table end. `confined` is false, and `basin` untouched,
-   !> when no limit lies inside the table or the table is malformed (prepare_semihertz reports).
-   pure subroutine confine_to_basin(geometry, basin, confined)
+   !> bounded on that side as at an open table end. The cut table is points first..last of the
+   !> geometry's, with gaps gap_first and gap_last at its ends (nothing is copied). `confined` is
+   !> false, and the other results unset, when no limit lies inside the table or the table is
+   !> malformed (prepare_semihertz reports).
+   pure subroutine confine_to_basin(geometry, n_points, first, last, gap_first, gap_last, &
+         confined)
       type(patch_geometry_type), intent(in) :: geometry
-      type(patch_geometry_type), intent(inout) :: basin
+      !> The table's size when the arrays may be longer (see prepare_normal_contact).
+      integer, intent(in), optional :: n_points
+      integer, intent(out) :: first, last
+      real(wp), intent(out) :: gap_first, gap_last
       logical, intent(out) :: confined
-      integer :: n, i_lo, i_hi, i_ref, j_lo, j_hi
+      integer :: n, i_lo, i_hi, i_ref
+      integer :: sizes(5)
 
       confined = .false.
+      first = 1
+      last = 1
+      gap_first = 0.0_wp
+      gap_last = 0.0_wp
       if (.not. (allocated(geometry%y) .and. allocated(geometry%gap) .and. &
                  allocated(geometry%curv_a) .and. allocated(geometry%curv_b) .and. &
                  allocated(geometry%gamma) .and. allocated(geometry%r_wheel))) return
-      n = size(geometry%y)
-      if (n < 2 .or. any([size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
-                          size(geometry%gamma), size(geometry%r_wheel)] /= n)) return
+      sizes = [size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
+         size(geometry%gamma), size(geometry%r_wheel)]
+      if (present(n_points)) then
+         n = n_points
+         if (n > size(geometry%y) .or. any(sizes < n)) return
+      else
+         n = size(geometry%y)
+         if (any(sizes /= n)) return
+      end if
+      if (n < 2) return
       if (.not. (geometry%h > 0.0_wp .and. geometry%y(1) <= 0.0_wp .and. &
                  geometry%y(n) >= 0.0_wp)) return
       ! Compare before dividing: the limits default to ±huge.
@@ -292,26 +316,12 @@ contains
          1 + nint((min(geometry%basin_lower, geometry%y(n)) - geometry%y(1))/geometry%h))
       if (geometry%basin_upper < geometry%y(n)) i_hi = max(i_ref, &
          1 + nint((max(geometry%basin_upper, geometry%y(1)) - geometry%y(1))/geometry%h))
-      j_lo = max(1, i_lo - 1)
-      j_hi = min(n, i_hi + 1)
-      basin%y_track = geometry%y_track
-      basin%z_track = geometry%z_track
-      basin%y_rail = geometry%y_rail
-      basin%y_wheel = geometry%y_wheel
-      basin%gamma0 = geometry%gamma0
-      basin%r0 = geometry%r0
-      basin%gap0 = geometry%gap0
-      basin%h = geometry%h
-      basin%basin_lower = geometry%basin_lower
-      basin%basin_upper = geometry%basin_upper
-      basin%y = geometry%y(j_lo:j_hi)
-      basin%gap = geometry%gap(j_lo:j_hi)
-      basin%curv_a = geometry%curv_a(j_lo:j_hi)
-      basin%curv_b = geometry%curv_b(j_lo:j_hi)
-      basin%gamma = geometry%gamma(j_lo:j_hi)
-      basin%r_wheel = geometry%r_wheel(j_lo:j_hi)
-      if (j_lo < i_lo) basin%gap(1) = maxval(geometry%gap)
-      if (j_hi > i_hi) basin%gap(j_hi - j_lo + 1) = maxval(geometry%gap)
+      first = max(1, i_lo - 1)
+      last = min(n, i_hi + 1)
+      gap_first = geometry%gap(first)
+      gap_last = geometry%gap(last)
+      if (first < i_lo) gap_first = maxval(geometry%gap(1:n))
+      if (last > i_hi) gap_last = maxval(geometry%gap(1:n))
       confined = .true.
    end subroutine confine_to_basin
 

@@ -10,7 +10,7 @@ module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
-   use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
+   use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape
    use shcontact_normal_patch, only: normal_patch_type
@@ -24,7 +24,8 @@ module shcontact_normal_semihertz
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
    type :: semihertz_geometry_type
-      !> Number of table points.
+      !> Number of table points (the arrays below may be longer: only the first n_table entries
+      !> belong to the table).
       integer :: n_table = 0
       !> Table point where contact starts (smallest g/ε_b; the reference point y = 0 for a
       !> well-formed table).
@@ -61,8 +62,12 @@ module shcontact_normal_semihertz
 contains
 
    !> Check a patch geometry and reduce it to a [[semihertz_geometry_type]]: once per geometry.
-   !> Arrays are reallocated only when the table size changes.
-   subroutine prepare_semihertz(geometry, options, prepared, error)
+   !> The tables used are points first..last of the geometry's (all of them by default), with
+   !> the gap at the two ends optionally replaced (a table cut at a basin limit, see
+   !> shcontact_normal_loading). The arrays of `prepared` only grow: a reused one allocates
+   !> nothing once it has held a table as long.
+   subroutine prepare_semihertz(geometry, options, prepared, error, first, last, gap_first, &
+         gap_last)
       !> The patch geometry (uniform y grid containing y = 0).
       type(patch_geometry_type), intent(in) :: geometry
       !> Method and reduction.
@@ -71,28 +76,36 @@ contains
       type(semihertz_geometry_type), intent(inout) :: prepared
       !> Set for an inconsistent or non-Hertzian table.
       type(error_type), allocatable, intent(out) :: error
+      !> First and last table point used (default 1 and size(geometry%y); with `last` the
+      !> arrays may be longer than the table).
+      integer, intent(in), optional :: first, last
+      !> Gap to use at the first and the last point used instead of the table's (mm).
+      real(wp), intent(in), optional :: gap_first, gap_last
 
       type(hertz_shape_type) :: shape
-      type(geometry_sample_type) :: ref
       real(wp) :: last_ratio, ratio
-      integer :: i, n
+      integer :: i, j, n, i1, i2
 
-      call check_geometry(geometry, error)
+      i1 = 1
+      if (present(first)) i1 = first
+      call check_geometry(geometry, i1, last, error)
       if (allocated(error)) return
-      n = size(geometry%y)
+      i2 = size(geometry%y)
+      if (present(last)) i2 = last
+      n = i2 - i1 + 1
       call reserve_table(prepared, n)
-      prepared%y_first = geometry%y(1)
+      prepared%y_first = geometry%y(i1)
       prepared%h = geometry%h
       prepared%gamma0 = geometry%gamma0
       prepared%r0 = geometry%r0
       prepared%gap0 = geometry%gap0
-      ref = geometry%sample(0.0_wp)
-      prepared%curv_a0 = ref%curv_a
-      prepared%curv_b0 = ref%curv_b
-      prepared%gap(:) = geometry%gap
-      prepared%curv_a(:) = geometry%curv_a
-      prepared%gamma(:) = geometry%gamma
-      prepared%r_wheel(:) = geometry%r_wheel
+      call reference_curvatures(geometry, i1, i2, prepared%curv_a0, prepared%curv_b0)
+      prepared%gap(1:n) = geometry%gap(i1:i2)
+      if (present(gap_first)) prepared%gap(1) = gap_first
+      if (present(gap_last)) prepared%gap(n) = gap_last
+      prepared%curv_a(1:n) = geometry%curv_a(i1:i2)
+      prepared%gamma(1:n) = geometry%gamma(i1:i2)
+      prepared%r_wheel(1:n) = geometry%r_wheel(i1:i2)
 
       prepared%has_strip_data = options%method == method_semi_hertz
       if (.not. prepared%has_strip_data) then
@@ -106,7 +119,8 @@ contains
       ! last bit, are common on circular arcs).
       last_ratio = -1.0_wp
       do i = 1, n
-         ratio = geometry%curv_a(i)/geometry%curv_b(i)
+         j = i1 - 1 + i
+         ratio = geometry%curv_a(j)/geometry%curv_b(j)
          if (abs(ratio - last_ratio) > spacing(ratio)) then
             call hertz_shape(ratio, shape, error)
             if (allocated(error)) return
@@ -114,7 +128,7 @@ contains
          end if
          prepared%m(i) = shape%m
          prepared%n(i) = shape%n
-         prepared%p_factor(i) = sqrt((geometry%curv_a(i) + geometry%curv_b(i))/(shape%ee*shape%kk))
+         prepared%p_factor(i) = sqrt((geometry%curv_a(j) + geometry%curv_b(j))/(shape%ee*shape%kk))
          if (options%reduction == reduction_constant) then
             ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
             prepared%eps_a(i) = options%epsilon
@@ -123,9 +137,9 @@ contains
             prepared%eps_a(i) = shape%eps_a
             prepared%eps_b(i) = shape%eps_b
          end if
-         prepared%touch(i) = geometry%gap(i)/prepared%eps_b(i)
+         prepared%touch(i) = prepared%gap(i)/prepared%eps_b(i)
       end do
-      prepared%i_first = minloc(prepared%touch, dim=1)
+      prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
       prepared%reach(prepared%i_first) = prepared%touch(prepared%i_first)
       do i = prepared%i_first - 1, 1, -1
@@ -138,12 +152,38 @@ contains
       prepared%approach_max = min(prepared%reach(1), prepared%reach(n))
    end subroutine prepare_semihertz
 
-   !> Reject tables the strip method cannot use, naming the item and the value.
-   subroutine check_geometry(geometry, error)
+   !> A(0) and B(0) of the table points i1..i2, interpolated exactly as
+   !> patch_geometry_type%sample does on a table holding just those points.
+   pure subroutine reference_curvatures(geometry, i1, i2, curv_a0, curv_b0)
       type(patch_geometry_type), intent(in) :: geometry
+      integer, intent(in) :: i1, i2
+      real(wp), intent(out) :: curv_a0, curv_b0
+      real(wp), parameter :: y = 0.0_wp
+      integer :: i
+      real(wp) :: t
+
+      if (y <= geometry%y(i1)) then
+         i = i1; t = 0.0_wp
+      else if (y >= geometry%y(i2)) then
+         i = i2 - 1; t = 1.0_wp
+      else
+         i = i1 - 1 + min(i2 - i1, 1 + int((y - geometry%y(i1))/geometry%h))
+         t = (y - geometry%y(i))/(geometry%y(i + 1) - geometry%y(i))
+      end if
+      curv_a0 = (1 - t)*geometry%curv_a(i) + t*geometry%curv_a(i + 1)
+      curv_b0 = (1 - t)*geometry%curv_b(i) + t*geometry%curv_b(i + 1)
+   end subroutine reference_curvatures
+
+   !> Reject tables the strip method cannot use, naming the item and the value: points i1..last
+   !> (all of them, in arrays of one common size, when `last` is absent).
+   subroutine check_geometry(geometry, i1, last, error)
+      type(patch_geometry_type), intent(in) :: geometry
+      integer, intent(in) :: i1
+      integer, intent(in), optional :: last
       type(error_type), allocatable, intent(out) :: error
       character(len=64) :: buf
-      integer :: n, i
+      integer :: n, i, i2
+      logical :: bad_size
 
       if (.not. (allocated(geometry%y) .and. allocated(geometry%gap) .and. &
                  allocated(geometry%curv_a) .and. allocated(geometry%curv_b) .and. &
@@ -152,9 +192,18 @@ contains
             'must all be allocated', stat_invalid_input)
          return
       end if
-      n = size(geometry%y)
-      if (n < 2 .or. any([size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
-                          size(geometry%gamma), size(geometry%r_wheel)] /= n)) then
+      if (present(last)) then
+         i2 = last
+         bad_size = i1 < 1 .or. any([size(geometry%y), size(geometry%gap), &
+            size(geometry%curv_a), size(geometry%curv_b), size(geometry%gamma), &
+            size(geometry%r_wheel)] < i2)
+      else
+         i2 = size(geometry%y)
+         bad_size = any([size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
+            size(geometry%gamma), size(geometry%r_wheel)] /= i2)
+      end if
+      n = i2 - i1 + 1
+      if (n < 2 .or. bad_size) then
          write (buf, '(i0)') n
          call fatal_error(error, 'patch geometry: tables must have one common size of at least '// &
             '2 points (y has '//trim(buf)//')', stat_invalid_input)
@@ -166,20 +215,20 @@ contains
             ' mm: expected h > 0', stat_invalid_input)
          return
       end if
-      do i = 2, n
-         if (abs(geometry%y(i) - geometry%y(1) - (i - 1)*geometry%h) > 1.0e-6_wp*geometry%h) then
-            write (buf, '(i0,a,es12.4)') i, ') = ', geometry%y(i)
+      do i = i1 + 1, i2
+         if (abs(geometry%y(i) - geometry%y(i1) - (i - i1)*geometry%h) > 1.0e-6_wp*geometry%h) then
+            write (buf, '(i0,a,es12.4)') i - i1 + 1, ') = ', geometry%y(i)
             call fatal_error(error, 'patch geometry: y('//trim(buf)// &
                ' mm is off the uniform grid of spacing h', stat_invalid_input)
             return
          end if
       end do
-      if (geometry%y(1) > 0.0_wp .or. geometry%y(n) < 0.0_wp) then
+      if (geometry%y(i1) > 0.0_wp .or. geometry%y(i2) < 0.0_wp) then
          call fatal_error(error, 'patch geometry: the table must contain the reference point y = 0', &
             stat_invalid_input)
          return
       end if
-      do i = 1, n
+      do i = i1, i2
          if (.not. (geometry%curv_a(i) > 0.0_wp .and. geometry%curv_b(i) > 0.0_wp)) then
             write (buf, '(3(es12.4,a))') geometry%y(i), ' mm: A = ', geometry%curv_a(i), &
                ', B = ', geometry%curv_b(i), ''
@@ -500,13 +549,15 @@ contains
       patch%p_max = maxval(patch%p0(1:n))
    end subroutine strip_totals
 
-   !> Allocate the prepared tables for n points (only when the size changes).
+   !> Make the prepared tables hold n points: the arrays only grow (their size is a capacity;
+   !> n_table is the table's size), so a reused geometry allocates nothing once it has held a
+   !> table as long.
    pure subroutine reserve_table(prepared, n)
       type(semihertz_geometry_type), intent(inout) :: prepared
       integer, intent(in) :: n
       prepared%n_table = n
       if (allocated(prepared%gap)) then
-         if (size(prepared%gap) == n) return
+         if (size(prepared%gap) >= n) return
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
             prepared%eps_a, prepared%eps_b, prepared%touch, prepared%reach, prepared%m, &
             prepared%n, prepared%p_factor)
