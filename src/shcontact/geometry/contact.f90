@@ -545,8 +545,9 @@ contains
 
       call reserve_vector(work%wheel_y, size(prepared%wheel_y))
       call reserve_vector(work%wheel_z, size(prepared%wheel_y))
-      if (allocated(work%gap)) then
-         if (size(work%gap) >= m) return
+      ! minima is allocated last and never larger than the others.
+      if (allocated(work%minima)) then
+         if (size(work%minima) >= m) return
       end if
       n_grid = max(m, int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
          prepared%options%sample_step) + 1)
@@ -560,15 +561,19 @@ contains
       allocate (work%rail_covered(n_grid), work%wheel_covered(n_grid), work%minima(n_grid))
    end subroutine reserve_search
 
-   !> Make `a` hold at least n values (its content is not kept when it grows).
+   !> Make `a` hold at least n values (its content is not kept when it grows). It grows by half
+   !> at least, so that a scan over positions with ever longer tables reallocates rarely.
    pure subroutine reserve_vector(a, n)
       real(wp), allocatable, intent(inout) :: a(:)
       integer, intent(in) :: n
+      integer :: capacity
+      capacity = n
       if (allocated(a)) then
          if (size(a) >= n) return
+         capacity = max(n, size(a) + size(a)/2)
          deallocate (a)
       end if
-      allocate (a(n))
+      allocate (a(capacity))
    end subroutine reserve_vector
 
    !> Make `a` hold at least rows × n values (its content is not kept when it grows).

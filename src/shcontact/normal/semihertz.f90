@@ -551,20 +551,24 @@ contains
 
    !> Make the prepared tables hold n points: the arrays only grow (their size is a capacity;
    !> n_table is the table's size), so a reused geometry allocates nothing once it has held a
-   !> table as long.
+   !> table as long. They grow by half at least, so that a scan over positions with ever
+   !> longer tables reallocates rarely.
    pure subroutine reserve_table(prepared, n)
       type(semihertz_geometry_type), intent(inout) :: prepared
       integer, intent(in) :: n
+      integer :: c
       prepared%n_table = n
+      c = n
       if (allocated(prepared%gap)) then
          if (size(prepared%gap) >= n) return
+         c = max(n, size(prepared%gap) + size(prepared%gap)/2)
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
             prepared%eps_a, prepared%eps_b, prepared%touch, prepared%reach, prepared%m, &
             prepared%n, prepared%p_factor)
       end if
-      allocate (prepared%gap(n), prepared%curv_a(n), prepared%gamma(n), prepared%r_wheel(n), &
-         prepared%eps_a(n), prepared%eps_b(n), prepared%touch(n), prepared%reach(n), &
-         prepared%m(n), prepared%n(n), prepared%p_factor(n))
+      allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%r_wheel(c), &
+         prepared%eps_a(c), prepared%eps_b(c), prepared%touch(c), prepared%reach(c), &
+         prepared%m(c), prepared%n(c), prepared%p_factor(c))
    end subroutine reserve_table
 
    !> "load too large for the patch geometry", with where the table ends.
