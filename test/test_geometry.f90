@@ -2,7 +2,7 @@
 !> and strip tables on analytic profiles with exactly known gaps and curvatures.
 module test_geometry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: lib_error => error_type, stat_no_contact, stat_invalid_input
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_spline, only: profile_spline_type
@@ -13,7 +13,8 @@ module test_geometry
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_left, &
       rail_placement
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
-      prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table
+      prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
+      contact_patches_type, extract_patch
    use shcontact_geometry_patch, only: patch_geometry_type
    implicit none
    private
@@ -59,7 +60,8 @@ contains
          new_unittest('manchester_ty0_geometric_point', test_manchester_ty0), &
          new_unittest('manchester_two_patches_ty5', test_manchester_two_patches), &
          new_unittest('manchester_scan_0_to_10', test_manchester_scan), &
-         new_unittest('builtin_profiles_as_manchester', test_builtin_as_manchester) &
+         new_unittest('builtin_profiles_as_manchester', test_builtin_as_manchester), &
+         new_unittest('reused_patch_storage', test_reused_storage) &
          ]
    end subroutine collect_geometry
 
@@ -1034,5 +1036,87 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_builtin_as_manchester
+
+   !> The search into reused storage (contact_patches_type) gives the patches of the search
+   !> into fresh tables bit for bit, whatever the storage held before (positions with one and
+   !> with two patches, in an order where tables shrink and grow, and after a failed search);
+   !> a second pass over the same positions reallocates nothing (the capacities stay).
+   subroutine test_reused_storage(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: prep
+      type(contact_patches_type) :: reused
+      type(patch_geometry_type), allocatable :: fresh(:)
+      type(patch_geometry_type) :: copy
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      real(wp), parameter :: shifts(5) = [5.0_wp, 0.0_wp, 9.0_wp, 2.0_wp, 4.733_wp]
+      integer :: capacity(2), pass, i, k, n, two_patches
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), prep, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      two_patches = 0
+      capacity = 0
+      do pass = 1, 2
+         do i = 1, size(shifts)
+            call find_contact_patches(prep, wheelset_position_type(y_ws=shifts(i)), reused, err)
+            if (.not. allocated(err)) call find_contact_patches(prep, &
+               wheelset_position_type(y_ws=shifts(i)), fresh, err)
+            if (allocated(err)) then
+               call test_failed(error, 'find_contact_patches: '//err%message); return
+            end if
+            call check(error, reused%count, size(fresh), message='number of patches')
+            if (allocated(error)) return
+            if (reused%count > 1) two_patches = two_patches + 1
+            do k = 1, reused%count
+               n = reused%points(k)
+               call check(error, n, size(fresh(k)%y), message='table size')
+               if (allocated(error)) return
+               associate (r => reused%patch(k), f => fresh(k))
+                  call check(error, same_bits([r%y_track, r%z_track, r%y_rail, r%y_wheel, &
+                     r%gamma0, r%r0, r%gap0, r%h, r%basin_lower, r%basin_upper], &
+                     [f%y_track, f%z_track, f%y_rail, f%y_wheel, f%gamma0, f%r0, f%gap0, f%h, &
+                     f%basin_lower, f%basin_upper]) .and. same_bits(r%y(1:n), f%y) .and. &
+                     same_bits(r%gap(1:n), f%gap) .and. same_bits(r%curv_a(1:n), f%curv_a) .and. &
+                     same_bits(r%curv_b(1:n), f%curv_b) .and. &
+                     same_bits(r%gamma(1:n), f%gamma) .and. same_bits(r%r_wheel(1:n), f%r_wheel), &
+                     message='reused storage differs from fresh tables')
+                  if (allocated(error)) return
+               end associate
+               call extract_patch(reused, k, copy)
+               call check(error, size(copy%y) == n .and. same_bits(copy%gap, fresh(k)%gap) .and. &
+                  same_bits(copy%curv_b, fresh(k)%curv_b), message='extract_patch')
+               if (allocated(error)) return
+            end do
+         end do
+         if (pass == 1) then
+            capacity = [size(reused%patch(1)%y), size(reused%patch(2)%y)]
+            ! A failed search leaves no patch and the storage usable.
+            call find_contact_patches(prep, wheelset_position_type(y_ws=300.0_wp), reused, err)
+            call check(error, allocated(err) .and. reused%count == 0, &
+               message='a wheel far off the rail: expected an error and no patch')
+            if (allocated(error)) return
+            deallocate (err)
+         end if
+      end do
+      call check(error, two_patches >= 2, message='expected positions with two patches')
+      if (allocated(error)) return
+      call check(error, size(reused%patch(1)%y) == capacity(1) .and. &
+         size(reused%patch(2)%y) == capacity(2), message='the second pass reallocated tables')
+   contains
+      logical function same_bits(a, b)
+         real(wp), intent(in) :: a(:), b(:)
+         integer :: j
+         same_bits = size(a) == size(b)
+         if (.not. same_bits) return
+         do j = 1, size(a)
+            same_bits = same_bits .and. transfer(a(j), 0_i8) == transfer(b(j), 0_i8)
+         end do
+      end function same_bits
+   end subroutine test_reused_storage
 
 end module test_geometry

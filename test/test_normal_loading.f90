@@ -2,7 +2,7 @@
 !> vertical wheel load shared by several patches through one rigid approach.
 module test_normal_loading
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_no_contact, &
       stat_usage
@@ -43,6 +43,7 @@ contains
          new_unittest('vertical_load_errors', test_vertical_errors), &
          new_unittest('workspace_reuse', test_reuse), &
          new_unittest('patch_confined_to_basin', test_confined), &
+         new_unittest('table_prefix_and_capacity', test_table_prefix), &
          new_unittest('default_case_ty_scan', test_ty_scan) &
          ]
    end subroutine collect_normal_loading
@@ -446,5 +447,103 @@ contains
          end if
       end do
    end subroutine test_ty_scan
+
+   !> Tables given as the first n_points entries of longer arrays (the contact search's reused
+   !> storage) prepare exactly the contact the exact-size tables give, bit for bit, free and
+   !> confined to a basin, whatever the arrays hold beyond; a contact prepared again on a
+   !> shorter table keeps its arrays (no reallocation) and equals a fresh one.
+   subroutine test_table_prefix(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom, padded, short
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: exact, prefix, reused, fresh
+      type(material_type) :: mat
+      integer :: n, pad, case, capacity
+
+      pad = 50
+      call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, curv_a1=2.0e-6_wp, &
+         c3=1.0e-5_wp)
+      n = size(geom%y)
+      do case = 1, 2
+         if (case == 2) then
+            geom%basin_lower = -3.0_wp
+            geom%basin_upper = 1.0_wp
+         end if
+         padded = geom
+         call pad_tables(padded, pad)
+         call prepare_normal_contact(exact, geom, options, mat, err)
+         if (.not. allocated(err)) call prepare_normal_contact(prefix, padded, options, mat, err, &
+            n_points=n)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call compare(exact, prefix, 'prefix of longer arrays', error)
+         if (allocated(error)) return
+      end do
+
+      geom%basin_lower = -huge(1.0_wp)
+      geom%basin_upper = huge(1.0_wp)
+      call prepare_normal_contact(reused, geom, options, mat, err)
+      capacity = size(reused%geometry%gap)
+      call polynomial_patch(short, tread_a, tread_b, 6.0_wp, 0.01_wp, c3=1.0e-5_wp)
+      if (.not. allocated(err)) call prepare_normal_contact(reused, short, options, mat, err)
+      if (.not. allocated(err)) call prepare_normal_contact(fresh, short, options, mat, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, size(reused%geometry%gap) == capacity .and. &
+         reused%geometry%n_table == size(short%y), message='shorter table: arrays reallocated')
+      if (allocated(error)) return
+      call compare(fresh, reused, 'reused contact', error)
+      if (allocated(error)) return
+
+      call prepare_normal_contact(prefix, geom, options, mat, err, n_points=n + 1)
+      call check(error, allocated(err), message='n_points beyond the arrays: expected an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_invalid_input)
+   contains
+      !> Lengthen every table by m entries that no valid table holds.
+      subroutine pad_tables(g, m)
+         type(patch_geometry_type), intent(inout) :: g
+         integer, intent(in) :: m
+         g%y = [g%y, (-1.0_wp, n = 1, m)]
+         g%gap = [g%gap, (-1.0_wp, n = 1, m)]
+         g%curv_a = [g%curv_a, (-1.0_wp, n = 1, m)]
+         g%curv_b = [g%curv_b, (-1.0_wp, n = 1, m)]
+         g%gamma = [g%gamma, (9.0_wp, n = 1, m)]
+         g%r_wheel = [g%r_wheel, (-1.0_wp, n = 1, m)]
+         n = size(g%y) - m
+      end subroutine pad_tables
+      !> The two contacts solve three loads to the same bits.
+      subroutine compare(a, b, what, error)
+         type(normal_contact_type), intent(in) :: a, b
+         character(len=*), intent(in) :: what
+         type(error_type), allocatable, intent(out) :: error
+         type(normal_patch_type) :: pa, pb
+         integer :: i, j
+         do i = 1, 3
+            call solve_load(a, 2.0e4_wp*i, pa, err)
+            if (.not. allocated(err)) call solve_load(b, 2.0e4_wp*i, pb, err)
+            if (allocated(err)) then
+               call test_failed(error, what//': '//err%message); return
+            end if
+            call check(error, bits(pa%approach) == bits(pb%approach) .and. &
+               bits(pa%load) == bits(pb%load) .and. bits(pa%area) == bits(pb%area), &
+               message=what//': approach, load or area differ')
+            if (allocated(error)) return
+            do j = 1, pa%n_strips
+               call check(error, bits(pa%y(j)) == bits(pb%y(j)) .and. &
+                  bits(pa%a(j)) == bits(pb%a(j)) .and. bits(pa%p0(j)) == bits(pb%p0(j)) .and. &
+                  bits(pa%gamma(j)) == bits(pb%gamma(j)), message=what//': strips differ')
+               if (allocated(error)) return
+            end do
+         end do
+      end subroutine compare
+      elemental integer(i8) function bits(x)
+         real(wp), intent(in) :: x
+         bits = transfer(x, 0_i8)
+      end function bits
+   end subroutine test_table_prefix
 
 end module test_normal_loading
