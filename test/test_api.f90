@@ -99,6 +99,7 @@ contains
          new_unittest('vertical_load_balance', test_vertical), &
          new_unittest('left_right_mirror', test_mirror), &
          new_unittest('fields_consistent_and_reused', test_fields), &
+         new_unittest('moving_wheel_reuses_workspace', test_moving), &
          new_unittest('openmp_two_solvers', test_openmp), &
          new_unittest('bad_arguments_modern', test_bad_modern), &
          new_unittest('options_by_name', test_options), &
@@ -370,6 +371,50 @@ contains
       call check(error, all(field_addresses(fields) == addresses), &
          message='the fields were reallocated between calls of the same size')
    end subroutine test_fields
+
+   !> One solver moved among wheel positions (tables that shrink and grow, one and two patches,
+   !> both force modes, with fields) gives at every call the result and the geometry fields of a
+   !> new solver at that position, bit for bit: the reused workspaces carry nothing over.
+   subroutine test_moving(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: moving, fresh
+      type(contact_result_type) :: r_moving, r_fresh
+      type(contact_fields_type) :: f_moving, f_fresh
+      type(lib_error), allocatable :: err
+      real(wp), parameter :: positions(6) = [headline_t_y, 0.0_wp, 9.0_wp, 1.0_wp, 5.5_wp, 2.0_wp]
+      integer :: i, k, mode, two
+
+      call new_solver(moving, error)
+      if (allocated(error)) return
+      two = 0
+      do i = 1, 2*size(positions)
+         mode = merge(load_vertical_force, load_normal_force, i > size(positions))
+         call new_solver(fresh, error)
+         if (allocated(error)) return
+         call moving%solve(positions(1 + mod(i - 1, size(positions))), 0.0_wp, &
+            contact_load_type(mode, headline_load), headline_creepage, r_moving, err, f_moving)
+         if (lib_failed(error, err)) return
+         call fresh%solve(positions(1 + mod(i - 1, size(positions))), 0.0_wp, &
+            contact_load_type(mode, headline_load), headline_creepage, r_fresh, err, f_fresh)
+         if (lib_failed(error, err)) return
+         call check(error, same_result(r_fresh, r_moving), &
+            message='the result depends on earlier positions')
+         if (allocated(error)) return
+         if (r_moving%n_loaded > 1) two = two + 1
+         call check(error, f_moving%n_patches, f_fresh%n_patches)
+         if (allocated(error)) return
+         do k = 1, f_fresh%n_patches
+            associate (a => f_moving%geometry(k), b => f_fresh%geometry(k))
+               call check(error, bitwise_equal(a%y, b%y) .and. bitwise_equal(a%gap, b%gap) .and. &
+                  bitwise_equal(a%curv_a, b%curv_a) .and. bitwise_equal(a%curv_b, b%curv_b) &
+                  .and. bitwise_equal(a%gamma, b%gamma) .and. &
+                  bitwise_equal(a%r_wheel, b%r_wheel), message='geometry fields differ')
+               if (allocated(error)) return
+            end associate
+         end do
+      end do
+      call check(error, two > 0, message='expected a position with two loaded patches')
+   end subroutine test_moving
 
    !> Two solver objects used from two OpenMP threads at once give the same numbers, bit for
    !> bit, as the same calls made one after the other.
