@@ -19,10 +19,12 @@
 !> Everything it needs lives in the object: the tangential workspace grows to its size at the first
 !> call and is then reused. The object remembers the last position and load: a call at the same
 !> (t_y, roll) reuses the geometry, and one with the same load too reuses the normal solution
-!> (creepage or friction sweeps cost only the tangential march). With an unchanged position a call
-!> allocates nothing after the first one; a new position allocates inside the contact search of
-!> shcontact_geometry_contact, which returns fresh strip tables (see doc/api.md). Asking for the
-!> fields in some calls and not in others reallocates the element fields when the choice changes.
+!> (creepage or friction sweeps cost only the tangential march). A call allocates nothing once the
+!> workspaces are large enough: the contact search fills a reused contact_patches_type whose
+!> tables only grow, and the prepared normal problems read those tables in place and only grow
+!> too, so after the first call only a position needing longer tables than any before allocates
+!> (see doc/api.md). Asking for the fields in some calls and not in others reallocates the element
+!> fields when the choice changes; the geometry fields follow the table lengths.
 module shcontact_api_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp, i8

@@ -6,7 +6,8 @@
 !> 1. [[prepare_profiles]]: fit the smoothing splines (§5.5), place the rail (§5.2), find the
 !>    tape-circle height of the wheel profile (at flange_back_position + tape_circle_offset) and
 !>    sample both profiles densely.
-!> 2. [[find_contact_patches]] for one wheelset position:
+!> 2. [[find_contact_patches]] for one wheelset position, into fresh tables or into a
+!>    [[contact_patches_type]] the caller keeps (no allocation once it is large enough):
 !>    * place the wheel (lateral shift, roll), sample the vertical gap to the rail, lower the wheel
 !>      onto the rail and take every separate local minimum of the gap as a candidate patch
 !>      (minima behind a maximum lower than `merge_gap` belong to their deeper neighbour);
