@@ -30,12 +30,10 @@ module shcontact_api_solver
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_no_contact, stat_usage
-   use shcontact_core_strings, only: to_lower, str_int, str_real
+   use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
-   use shcontact_profile_reader, only: read_profile
-   use shcontact_profile_cleanup, only: clean_profile
-   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_profile_source, only: load_profile
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
@@ -274,30 +272,6 @@ contains
    end subroutine init_names
 
    !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
-   subroutine load_profile(spec, kind, profile, error, format)
-      !> `builtin:NAME` or a file name.
-      character(len=*), intent(in) :: spec
-      !> profile_kind_wheel or profile_kind_rail (file formats that need it).
-      integer, intent(in) :: kind
-      !> The profile.
-      type(profile_type), intent(out) :: profile
-      !> Set for a missing, unreadable or malformed profile, or an unknown built-in name.
-      type(error_type), allocatable, intent(out) :: error
-      !> File format: 'auto' (default), 'plain', 'simpack', 'miniprof'.
-      character(len=*), intent(in), optional :: format
-      integer, allocatable :: lines(:)
-      character(len=:), allocatable :: fmt
-
-      if (index(to_lower(adjustl(spec)), 'builtin:') == 1) then
-         call builtin_profile(trim(adjustl(spec(index(spec, ':') + 1:))), profile, error)
-         return
-      end if
-      fmt = 'auto'
-      if (present(format)) fmt = trim(format)
-      call read_profile(trim(spec), profile, error, format=fmt, kind=kind, line_of_point=lines)
-      if (allocated(error)) return
-      call clean_profile(profile, error, lines)
-   end subroutine load_profile
 
    !> Solve one contact: geometry at (t_y, roll), normal problem for the load, tangential problem
    !> for the creepages, and the summary. See the module text for what is reused between calls.

@@ -12,9 +12,7 @@ module shcontact_case_runner
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: str_int
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
-   use shcontact_profile_reader, only: read_profile
-   use shcontact_profile_cleanup, only: clean_profile
-   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_profile_source, only: load_profile
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
@@ -35,7 +33,7 @@ module shcontact_case_runner
    implicit none
    private
 
-   public :: run_setup_type, stage_type, prepare_run, load_profile, solve_geometry, solve_stage
+   public :: run_setup_type, stage_type, prepare_run, solve_geometry, solve_stage
    public :: solve_case, march_workspace_type, tangential_patch_type
 
    !> What every case of a run shares.
@@ -84,11 +82,11 @@ contains
       type(contact_options_type) :: options
       integer :: k
 
-      call load_profile(config%profiles%wheel, config%profiles%wheel_format, profile_kind_wheel, &
-         setup%wheel, error)
+      call load_profile(config%profiles%wheel, profile_kind_wheel, &
+         setup%wheel, error, config%profiles%wheel_format)
       if (allocated(error)) return
-      call load_profile(config%profiles%rail, config%profiles%rail_format, profile_kind_rail, &
-         setup%rail, error)
+      call load_profile(config%profiles%rail, profile_kind_rail, &
+         setup%rail, error, config%profiles%rail_format)
       if (allocated(error)) return
 
       track%gauge = config%track%gauge
@@ -133,28 +131,6 @@ contains
    end subroutine prepare_run
 
    !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
-   subroutine load_profile(spec, format, kind, profile, error)
-      !> `builtin:NAME` or a file name.
-      character(len=*), intent(in) :: spec
-      !> File format ('auto', 'plain', 'simpack', 'miniprof').
-      character(len=*), intent(in) :: format
-      !> profile_kind_wheel or profile_kind_rail.
-      integer, intent(in) :: kind
-      !> The profile.
-      type(profile_type), intent(out) :: profile
-      !> Set for a missing, unreadable or malformed profile.
-      type(error_type), allocatable, intent(out) :: error
-      integer, allocatable :: lines(:)
-
-      if (index(spec, 'builtin:') == 1) then
-         call builtin_profile(trim(spec(9:)), profile, error)
-         return
-      end if
-      call read_profile(trim(spec), profile, error, format=trim(format), kind=kind, &
-         line_of_point=lines)
-      if (allocated(error)) return
-      call clean_profile(profile, error, lines)
-   end subroutine load_profile
 
    !> The contact patches of one wheelset position.
    subroutine solve_geometry(setup, point, geometry, error)
