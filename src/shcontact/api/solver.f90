@@ -47,11 +47,15 @@ module shcontact_api_solver
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: track_forces_type, solve_tangential
+   use shcontact_tangential_options, only: spin_additive
+   use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
+   use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
+      side_state, yawed_wheel_profile, axle_offset, contact_lead, yaw_radius_factor
    implicit none
    private
 
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
-   public :: contact_fields_type, load_profile
+   public :: contact_fields_type, load_profile, wheelset_state_type
    public :: load_normal_force, load_vertical_force, load_approach, load_mode_name
    public :: max_patches, patch_value_count, result_value_count, patch_values, result_values
 
@@ -98,6 +102,12 @@ module shcontact_api_solver
       real(wp) :: y_track = 0.0_wp, z_track = 0.0_wp
       !> Coulomb check max|p|/(μ p_n,e) and adhesion area fraction.
       real(wp) :: coulomb_ratio = 0.0_wp, adhesion_fraction = 0.0_wp
+      !> Creepages used at the reference point (ν_x, ν_y, φ in rad/mm; wheel relative to rail):
+      !> those given to [[solve]], or those of the wheelset's motion in [[solve_kinematic]].
+      real(wp) :: nu_x = 0.0_wp, nu_y = 0.0_wp, phi = 0.0_wp
+      !> Longitudinal position of the reference point in the track frame (mm, forward; nonzero
+      !> with a yaw angle, shcontact_geometry_kinematics).
+      real(wp) :: x_track = 0.0_wp
    end type patch_result_type
 
    !> The result of one solve. Fixed size: filling it allocates nothing.
@@ -148,9 +158,14 @@ module shcontact_api_solver
       type(tangential_options_type) :: tangential_options
       !> Profiles ready for the contact search.
       type(prepared_profiles_type) :: prepared
+      !> The profiles prepared for the yaw angle `yaw` (side frame) of the last kinematic call:
+      !> the wheel replaced by its contact locus (shcontact_geometry_kinematics).
+      type(prepared_profiles_type) :: yawed
+      logical :: has_yawed = .false.
+      real(wp) :: yawed_angle = 0.0_wp
       !> Geometry of the last position (valid when has_geometry).
       logical :: has_geometry = .false.
-      real(wp) :: t_y = 0.0_wp, roll = 0.0_wp
+      real(wp) :: t_y = 0.0_wp, roll = 0.0_wp, yaw = 0.0_wp
       type(contact_patches_type) :: patches
       !> Patches whose normal problem is prepared for this geometry.
       integer :: n_prepared = 0
@@ -164,12 +179,18 @@ module shcontact_api_solver
       !> Tangential workspace and solutions.
       type(march_workspace_type) :: ws
       type(tangential_patch_type) :: tangential(max_patches)
+      !> Creepages of each solved patch at its reference point.
+      type(creepage_type) :: creepage(max_patches)
+      !> Longitudinal position of each patch's reference point (mm, track frame).
+      real(wp) :: x_track(max_patches) = 0.0_wp
    contains
       !> Create the solver from profiles, or from profile names (`builtin:NAME` or files).
       generic :: init => init_profiles, init_names
       procedure, private :: init_profiles, init_names
       !> Solve one wheel position, load and creepage set.
       procedure :: solve
+      !> Solve one wheel from the wheelset's position and velocities.
+      procedure :: solve_kinematic
       !> Change the elastic constants and the friction coefficient.
       procedure :: set_material
       !> Change the normal and/or the tangential options.
@@ -302,7 +323,7 @@ contains
       end if
       call check_call(t_y, roll, load, creepage, error)
       if (allocated(error)) return
-      call update_geometry(self, t_y, roll, error)
+      call update_geometry(self, t_y, roll, 0.0_wp, error)
       if (allocated(error)) return
       call update_normal(self, load, error)
       if (allocated(error)) return
@@ -310,17 +331,91 @@ contains
       options = self%tangential_options
       options%fields = present(fields)
       do k = 1, self%n_loaded
-         if (.not. (self%normal(k)%load > 0.0_wp)) cycle
-         call solve_tangential(self%ws, self%normal(k), self%material, creepage, options, &
-            self%tangential(k), error)
-         if (allocated(error)) then
-            if (self%n_loaded > 1) call prefix_error(error, 'patch '//str_int(k))
-            return
-         end if
+         call solve_patch(self, k, creepage, options, error)
+         if (allocated(error)) return
       end do
       call summarise(self, result)
       if (present(fields)) call copy_fields(self, fields)
    end subroutine solve
+
+   !> Solve one wheel from the wheelset's kinematics (physics.md decision 14): the contact
+   !> search at the wheelset's lateral shift, roll and yaw (the yawed wheel's contact locus,
+   !> shcontact_geometry_kinematics), the normal problem for the load (a vertical wheel load
+   !> shared by all patches is what a vehicle code wants), then every loaded patch with the
+   !> creepages of the wheelset's rigid-body motion at its own reference point
+   !> (shcontact_tangential_rigid_slip) and the 'additive' spin model, which carries that rigid
+   !> slip to each strip with the strip's own rolling radius, contact angle and spin. The
+   !> result holds each patch's creepages and longitudinal position and the totals in the track
+   !> frame (forces on the wheel).
+   subroutine solve_kinematic(self, state, load, result, error, fields)
+      !> The solver, from [[init]].
+      class(contact_solver_type), intent(inout) :: self
+      !> Wheelset position and velocities, track frame (mm, mm/s, rad, rad/s).
+      type(wheelset_state_type), intent(in) :: state
+      !> The load: load_vertical_force (recommended), load_normal_force or load_approach.
+      type(contact_load_type), intent(in) :: load
+      !> The forces, per patch and in total.
+      type(contact_result_type), intent(out) :: result
+      !> Set for bad input; the solver stays usable.
+      type(error_type), allocatable, intent(out) :: error
+      !> When present: filled with copies of the fields.
+      type(contact_fields_type), intent(inout), optional :: fields
+      type(wheelset_state_type) :: local
+      type(tangential_options_type) :: options
+      type(creepage_type) :: creepage
+      type(contact_point_type) :: point
+      real(wp) :: speed
+      integer :: k
+
+      if (.not. self%ready) then
+         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
+            'its error)', stat_usage)
+         return
+      end if
+      call check_wheelset_state(state, error)
+      if (allocated(error)) return
+      call check_call(state%y_ws, state%roll, load, creepage_type(), error)
+      if (allocated(error)) return
+      local = side_state(state, self%side)
+      call update_geometry(self, state%y_ws, state%roll, local%yaw, error)
+      if (allocated(error)) return
+      call update_normal(self, load, error)
+      if (allocated(error)) return
+
+      options = self%tangential_options
+      options%fields = present(fields)
+      options%spin_model = spin_additive
+      do k = 1, self%n_loaded
+         associate (g => self%patches%patch(k))
+            point = contact_point_type(axle=g%y_wheel + axle_offset(self%track), radius=g%r0, &
+               gamma=g%gamma0)
+         end associate
+         call rigid_creepages(local, point, creepage, speed, error)
+         if (allocated(error)) return
+         call solve_patch(self, k, creepage, options, error)
+         if (allocated(error)) return
+      end do
+      call summarise(self, result)
+      if (present(fields)) call copy_fields(self, fields)
+   end subroutine solve_kinematic
+
+   !> The tangential problem of loaded patch k for its creepages.
+   subroutine solve_patch(self, k, creepage, options, error)
+      type(contact_solver_type), intent(inout) :: self
+      integer, intent(in) :: k
+      type(creepage_type), intent(in) :: creepage
+      type(tangential_options_type), intent(in) :: options
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. (self%normal(k)%load > 0.0_wp)) return
+      call solve_tangential(self%ws, self%normal(k), self%material, creepage, options, &
+         self%tangential(k), error)
+      if (allocated(error)) then
+         if (self%n_loaded > 1) call prefix_error(error, 'patch '//str_int(k))
+         return
+      end if
+      self%creepage(k) = creepage
+   end subroutine solve_patch
 
    !> Reject non-finite positions and creepages and impossible loads before anything computes
    !> with them (the checks use ieee_is_finite, so NaN raises no floating-point exception).
@@ -353,19 +448,33 @@ contains
       call check_creepage(creepage, error)
    end subroutine check_call
 
-   !> The contact patches at (t_y, roll), unless they are those of the last call.
-   subroutine update_geometry(self, t_y, roll, error)
+   !> The contact patches at (t_y, roll, yaw), unless they are those of the last call. With a yaw
+   !> angle the search runs on the yawed wheel's contact locus (profiles prepared once per yaw
+   !> angle, [[prepare_yaw]]); the table's rolling radii are then turned back into the true
+   !> ones, and each reference point gets its longitudinal lead.
+   subroutine update_geometry(self, t_y, roll, yaw, error)
       type(contact_solver_type), intent(inout) :: self
+      !> Lateral shift (mm) and roll (rad), track frame.
       real(wp), intent(in) :: t_y, roll
+      !> Yaw angle of the side frame (rad).
+      real(wp), intent(in) :: yaw
       type(error_type), allocatable, intent(out) :: error
       type(wheelset_position_type) :: position
+      integer :: k
 
-      if (self%has_geometry .and. same(t_y, self%t_y) .and. same(roll, self%roll)) return
+      if (self%has_geometry .and. same(t_y, self%t_y) .and. same(roll, self%roll) .and. &
+         same(yaw, self%yaw)) return
       self%has_geometry = .false.
       self%has_normal = .false.
       self%n_prepared = 0
       position = wheelset_position_type(side=self%side, y_ws=t_y, roll=roll)
-      call find_contact_patches(self%prepared, position, self%patches, error)
+      if (yaw == 0.0_wp) then
+         call find_contact_patches(self%prepared, position, self%patches, error)
+      else
+         call prepare_yaw(self, yaw, error)
+         if (allocated(error)) return
+         call find_contact_patches(self%yawed, position, self%patches, error)
+      end if
       if (allocated(error)) return
       if (self%patches%count < 1) then
          call fatal_error(error, 'contact search at t_y = '//str_real(t_y)//' mm, roll = '// &
@@ -377,10 +486,47 @@ contains
             ' patches; the solver holds at most '//str_int(max_patches), stat_usage)
          return
       end if
+      do k = 1, self%patches%count
+         associate (g => self%patches%patch(k), n => self%patches%points(k))
+            if (yaw /= 0.0_wp) then
+               g%r_wheel(1:n) = g%r_wheel(1:n)/yaw_radius_factor(g%gamma(1:n), yaw)
+               g%r0 = g%r0/yaw_radius_factor(g%gamma0, yaw)
+            end if
+            self%x_track(k) = contact_lead(g%y_wheel + axle_offset(self%track), g%r0, &
+               g%gamma0, yaw)
+         end associate
+      end do
       self%t_y = t_y
       self%roll = roll
+      self%yaw = yaw
       self%has_geometry = .true.
    end subroutine update_geometry
+
+   !> Prepare the profiles for a yaw angle (side frame): the wheel replaced by its contact locus,
+   !> interpolated (it is made of points of the already smoothed wheel), with the unyawed tape
+   !> circle height, so that the table's rolling radius is r cos θ.
+   subroutine prepare_yaw(self, yaw, error)
+      type(contact_solver_type), intent(inout) :: self
+      real(wp), intent(in) :: yaw
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: locus
+      type(contact_options_type) :: options
+
+      if (self%has_yawed .and. same(yaw, self%yawed_angle)) return
+      self%has_yawed = .false.
+      call yawed_wheel_profile(self%wheel, self%prepared%wheel, self%track, &
+         self%prepared%z_tape, yaw, locus)
+      options = self%contact_options
+      options%l_filt_wheel = 0.0_wp
+      call prepare_profiles(locus, self%rail, self%track, options, self%yawed, error)
+      if (allocated(error)) then
+         call prefix_error(error, 'yawed wheel (yaw '//str_real(yaw)//' rad)')
+         return
+      end if
+      self%yawed%z_tape = self%prepared%z_tape
+      self%yawed_angle = yaw
+      self%has_yawed = .true.
+   end subroutine prepare_yaw
 
    !> The normal solution for the load, unless it is that of the last call on this geometry.
    !> Force and approach load the first (deepest) patch, a vertical load all patches.
@@ -435,6 +581,7 @@ contains
             p%r0 = g%r0
             p%y_track = g%y_track
             p%z_track = g%z_track
+            p%x_track = self%x_track(k)
          end associate
       end do
       m = 1
@@ -454,6 +601,9 @@ contains
             p%fz_track = t%fz_track
             p%coulomb_ratio = t%coulomb_ratio
             p%adhesion_fraction = t%adhesion_fraction
+            p%nu_x = self%creepage(k)%nu_x
+            p%nu_y = self%creepage(k)%nu_y
+            p%phi = self%creepage(k)%phi
             result%track%fx = result%track%fx + t%fx
             result%track%fy = result%track%fy + t%fy_track
             result%track%fz = result%track%fz + t%fz_track
@@ -655,6 +805,7 @@ contains
       self%contact_options = new_options
       self%prepared = prepared
       self%has_geometry = .false.
+      self%has_yawed = .false.
       call forget_normal(self)
    end subroutine set_track
 
@@ -737,6 +888,7 @@ contains
       class(contact_solver_type), intent(inout) :: self
       self%ready = .false.
       self%has_geometry = .false.
+      self%has_yawed = .false.
       self%has_normal = .false.
       self%n_prepared = 0
       self%n_loaded = 0
