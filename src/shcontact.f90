@@ -22,6 +22,8 @@ module shcontact
       check_contact_options, prepare_profiles, find_contact_patches, positioned_profiles, &
       write_geometry_table
    use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
+      pure_rolling_pitch_rate, yawed_wheel_profile, contact_lead
    ! normal
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
       hertz_from_approach, hertz_from_semiaxes
@@ -44,6 +46,7 @@ module shcontact
       solve_tangential_patches
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
       state_slip
+   use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
    ! api
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       patch_result_type, contact_fields_type, load_profile, load_normal_force, &
@@ -63,6 +66,8 @@ module shcontact
       check_position, contact_options_type, prepared_profiles_type, check_contact_options, &
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
       patch_geometry_type, geometry_sample_type
+   public :: wheelset_state_type, check_wheelset_state, pure_rolling_pitch_rate, &
+      yawed_wheel_profile, contact_lead, contact_point_type, rigid_creepages
    public :: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, hertz_from_approach, &
       hertz_from_semiaxes, normal_options_type, new_normal_options, check_normal_options, &
       normal_method_name, reduction_name, normal_contact_type, prepare_normal_contact, &

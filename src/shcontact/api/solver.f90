@@ -55,7 +55,7 @@ module shcontact_api_solver
    private
 
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
-   public :: contact_fields_type, load_profile, wheelset_state_type
+   public :: contact_fields_type, load_profile
    public :: load_normal_force, load_vertical_force, load_approach, load_mode_name
    public :: max_patches, patch_value_count, result_value_count, patch_values, result_values
 
