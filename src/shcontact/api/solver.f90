@@ -29,7 +29,7 @@ module shcontact_api_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
-      stat_no_contact, stat_usage
+      stat_no_contact, stat_usage, stat_numerical
    use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
@@ -74,6 +74,10 @@ module shcontact_api_solver
    integer, parameter :: patch_value_count = 17
    !> Length of the flat result value list ([[result_values]]).
    integer, parameter :: result_value_count = 25
+   !> The total vertical force of a kinematic call matches the load to this relative tolerance,
+   !> within at most max_vertical_iterations normal solutions.
+   real(wp), parameter :: vertical_rtol = 1.0e-7_wp
+   integer, parameter :: max_vertical_iterations = 30
 
    !> The load of one solve.
    type :: contact_load_type
@@ -183,6 +187,8 @@ module shcontact_api_solver
       type(creepage_type) :: creepage(max_patches)
       !> Longitudinal position of each patch's reference point (mm, track frame).
       real(wp) :: x_track(max_patches) = 0.0_wp
+      !> Normal-problem vertical load over the total vertical load of the last kinematic call.
+      real(wp) :: vertical_ratio = 1.0_wp
    contains
       !> Create the solver from profiles, or from profile names (`builtin:NAME` or files).
       generic :: init => init_profiles, init_names
@@ -364,8 +370,9 @@ contains
       type(tangential_options_type) :: options
       type(creepage_type) :: creepage
       type(contact_point_type) :: point
-      real(wp) :: speed
-      integer :: k
+      type(contact_load_type) :: normal_load
+      real(wp) :: speed, carried
+      integer :: k, it
 
       if (.not. self%ready) then
          call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
@@ -379,22 +386,50 @@ contains
       local = side_state(state, self%side)
       call update_geometry(self, state%y_ws, state%roll, local%yaw, error)
       if (allocated(error)) return
-      call update_normal(self, load, error)
-      if (allocated(error)) return
-
       options = self%tangential_options
       options%fields = present(fields)
       options%spin_model = spin_additive
-      do k = 1, self%n_loaded
-         associate (g => self%patches%patch(k))
-            point = contact_point_type(axle=g%y_wheel + axle_offset(self%track), radius=g%r0, &
-               gamma=g%gamma0)
-         end associate
-         call rigid_creepages(local, point, creepage, speed, error)
+      ! A vertical load is the total vertical force on the wheel, tangential forces included
+      ! (as CONTACT's FZ): the normal problem's share is corrected until the track-frame total
+      ! matches, starting from the last call's ratio.
+      normal_load = load
+      if (load%mode == load_vertical_force) normal_load%value = load%value*self%vertical_ratio
+      do it = 1, max_vertical_iterations
+         call update_normal(self, normal_load, error)
          if (allocated(error)) return
-         call solve_patch(self, k, creepage, options, error)
-         if (allocated(error)) return
+         do k = 1, self%n_loaded
+            associate (g => self%patches%patch(k))
+               point = contact_point_type(axle=g%y_wheel + axle_offset(self%track), &
+                  radius=g%r0, gamma=g%gamma0)
+            end associate
+            call rigid_creepages(local, point, creepage, speed, error)
+            if (allocated(error)) return
+            call solve_patch(self, k, creepage, options, error)
+            if (allocated(error)) return
+         end do
+         if (load%mode /= load_vertical_force) exit
+         carried = 0.0_wp
+         do k = 1, self%n_loaded
+            if (self%normal(k)%load > 0.0_wp) carried = carried - self%tangential(k)%fz_track
+         end do
+         if (abs(carried - load%value) <= vertical_rtol*load%value) exit
+         if (.not. (carried > 0.0_wp)) then
+            call fatal_error(error, 'vertical load '//str_real(load%value)//' N: the contact '// &
+               'carries '//str_real(carried)//' N vertically (tangential forces lift the '// &
+               'wheel); expected a positive vertical force', stat_numerical)
+            return
+         end if
+         normal_load%value = normal_load%value*load%value/carried
       end do
+      if (load%mode == load_vertical_force) then
+         if (abs(carried - load%value) > 1.0e3_wp*vertical_rtol*load%value) then
+            call fatal_error(error, 'vertical load matching with tangential forces did not '// &
+               'converge: '//str_real(carried)//' N instead of '//str_real(load%value)//' N', &
+               stat_numerical)
+            return
+         end if
+         self%vertical_ratio = normal_load%value/load%value
+      end if
       call summarise(self, result)
       if (present(fields)) call copy_fields(self, fields)
    end subroutine solve_kinematic

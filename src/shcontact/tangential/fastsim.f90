@@ -127,6 +127,10 @@ contains
          ws%phi_geo(i) = 0.0_wp
          ws%dphi_geo(i) = 0.0_wp
          ws%rho(i) = 0.0_wp
+         ! One contact angle for the whole ellipse: any split of the load gives its forces.
+         ws%strip_normal(i) = load/real(n_strips, wp)
+         ws%sin_gamma(i) = sin(ws%gamma0)
+         ws%cos_gamma(i) = cos(ws%gamma0)
          ! Strip load of the Hertz pressure: N_i = (π/2) p₀ k_i a_i dy.
          ws%parabolic_load_ratio = ws%parabolic_load_ratio + k*0.5_wp*pi*p0*k*ai*dy
       end do

@@ -126,6 +126,9 @@ contains
          call strip_spin_terms(patch%gamma(i), sin0, cos0, r0, ws%phi_geo(s), ws%dphi_geo(s), &
             ws%cos_ratio(s))
          ws%rho(s) = patch%delta_r(i)/r0 - ws%phi_geo0*y
+         ws%strip_normal(s) = strip_load
+         ws%sin_gamma(s) = sin(patch%gamma(i))
+         ws%cos_gamma(s) = cos(patch%gamma(i))
 
          ws%load = ws%load + strip_load
          ws%parabolic_load_ratio = ws%parabolic_load_ratio + k*strip_load

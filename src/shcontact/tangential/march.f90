@@ -80,6 +80,9 @@ module shcontact_tangential_march
       real(wp), allocatable :: weight(:)
       !> cos γ₀/cos γ_s, φ_geo,s, φ_geo,s − φ_geo,0 (rad/mm), ρ_s = δr_s/r₀ − φ_geo,0 y_s.
       real(wp), allocatable :: cos_ratio(:), phi_geo(:), dphi_geo(:), rho(:)
+      !> Normal force N_s (N) and sin γ_s, cos γ_s of each strip's own contact angle: the strip's
+      !> forces act along its own normal and tangent, which gives the track-frame forces.
+      real(wp), allocatable :: strip_normal(:), sin_gamma(:), cos_gamma(:)
       !> Strips without load (reported as exterior).
       integer, allocatable :: inactive(:)
       !> Per loaded strip, for the creepages being solved: increments of p_x, p_y per unit
@@ -121,6 +124,9 @@ contains
       call reserve(ws%phi_geo, n_strips)
       call reserve(ws%dphi_geo, n_strips)
       call reserve(ws%rho, n_strips)
+      call reserve(ws%strip_normal, n_strips)
+      call reserve(ws%sin_gamma, n_strips)
+      call reserve(ws%cos_gamma, n_strips)
       call reserve(ws%cx, n_strips)
       call reserve(ws%cy, n_strips)
       call reserve(ws%cphi, n_strips)
@@ -187,7 +193,8 @@ contains
       !> Set for an unprepared workspace, non-finite creepages, or a singular scaled spin model.
       type(error_type), allocatable, intent(out) :: error
       real(wp), dimension(max_block) :: sx, sy, sxy, cmax, n_adh
-      real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu
+      real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu, fy_s, fy_track, &
+         fz_track
       integer :: b0, s, l, m, nx, n_blocks, block
 
       if (ws%n_active < 1) then
@@ -210,6 +217,8 @@ contains
       fx = 0.0_wp
       fy = 0.0_wp
       mz = 0.0_wp
+      fy_track = 0.0_wp
+      fz_track = 0.0_wp
       area = 0.0_wp
       area_adh = 0.0_wp
       coulomb2 = 0.0_wp
@@ -223,7 +232,10 @@ contains
             s = b0 + l - 1
             strip_area = 2.0_wp*ws%a(s)/real(nx, wp)*ws%dy
             fx = fx + strip_area*sx(l)
-            fy = fy + strip_area*sy(l)
+            fy_s = strip_area*sy(l)
+            fy = fy + fy_s
+            fy_track = fy_track + fy_s*ws%cos_gamma(s) + ws%strip_normal(s)*ws%sin_gamma(s)
+            fz_track = fz_track + fy_s*ws%sin_gamma(s) - ws%strip_normal(s)*ws%cos_gamma(s)
             mz = mz + strip_area*(ws%a(s)*sxy(l) - (ws%y_offset + ws%y(s))*sx(l))
             area = area + 2.0_wp*ws%a(s)
             area_adh = area_adh + 2.0_wp*ws%a(s)*n_adh(l)/real(nx, wp)
@@ -242,8 +254,8 @@ contains
       result%coulomb_ratio = sqrt(coulomb2)
       result%adhesion_fraction = area_adh/area
       result%parabolic_load_ratio = ws%parabolic_load_ratio
-      result%fy_track = fy*cos(ws%gamma0) + ws%load*sin(ws%gamma0)
-      result%fz_track = fy*sin(ws%gamma0) - ws%load*cos(ws%gamma0)
+      result%fy_track = fy_track
+      result%fz_track = fz_track
       result%dy = ws%dy
    end subroutine solve_prepared
 

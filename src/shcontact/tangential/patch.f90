@@ -33,8 +33,11 @@ module shcontact_tangential_patch
       !> force of the pure parabolic bound over μF_n (1 on a Hertz ellipse).
       real(wp) :: parabolic_load_ratio = 0.0_wp
       !> Forces on the wheel in the track frame (x rolling, y lateral towards the field side,
-      !> z down, CONTACT's track frame), from F_y and F_n rotated by the reference contact angle
-      !> γ₀ (N): fy_track = F_y cos γ₀ + F_n sin γ₀, fz_track = F_y sin γ₀ − F_n cos γ₀.
+      !> z down, CONTACT's track frame), each strip's lateral force F_y,i and normal force N_i
+      !> turned by the strip's own contact angle γ_i (N): fy_track = Σ F_y,i cos γ_i + N_i sin γ_i,
+      !> fz_track = Σ F_y,i sin γ_i − N_i cos γ_i (γ_i = γ₀ on a Hertz ellipse). The strips of a
+      !> curved patch push along their own normals, so the totals do not jump when the reference
+      !> point moves across the patch.
       real(wp) :: fy_track = 0.0_wp, fz_track = 0.0_wp
       !> Element centres (mm): x(j, i) and the strip centres y(i).
       real(wp), allocatable :: x(:, :)

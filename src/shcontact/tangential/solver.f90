@@ -7,7 +7,10 @@
 !> (−sin γ_k, cos γ_k)). The wheel receives F_x, F_y along the tangent axes and the normal force
 !> F_n against the normal, so in the track frame (forces on the wheel, z down):
 !>
-!>     F_y,track = F_y cos γ_k + F_n sin γ_k,   F_z,track = F_y sin γ_k − F_n cos γ_k.
+!>     F_y,track = F_y cos γ_k + F_n sin γ_k,   F_z,track = F_y sin γ_k − F_n cos γ_k,
+!>
+!> summed strip by strip with each strip's own contact angle γ_i in FASTSIM_SH (a curved patch
+!> pushes along the normals of its strips; shcontact_tangential_patch).
 !>
 !> A right-wheel flange contact (γ ≈ −1.2 rad) thus pushes the wheel towards the track centre
 !> (F_y,track < 0) and up (F_z,track < 0).
