@@ -1,0 +1,353 @@
+!> Tests of the kinematic call (issue 12): creepages from the wheelset's rigid-body motion against
+!> closed forms, the yawed wheel's contact locus, left–right mirror symmetry, continuity of the
+!> forces where the geometric contact point jumps, the vertical force balance and the positions
+!> where the load match failed before.
+module test_kinematics
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_geometry_track, only: side_left, side_right
+   use shcontact_geometry_kinematics, only: wheelset_state_type, contact_lead, &
+      pure_rolling_pitch_rate
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      load_vertical_force, load_normal_force
+   implicit none
+   private
+
+   public :: collect_kinematics
+
+   !> Nominal radius (mm), speed (mm/s) and vertical wheel load (N) of the tests.
+   real(wp), parameter :: r_nom = 460.0_wp, speed = 30000.0_wp, f_z = 64700.0_wp
+
+contains
+
+   !> The tests of this suite.
+   subroutine collect_kinematics(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('pure_rolling_closed_form', test_pure_rolling), &
+         new_unittest('yaw_lateral_creepage', test_yaw_creepage), &
+         new_unittest('contact_lead_of_yaw', test_contact_lead), &
+         new_unittest('tread_creepages_in_solver', test_solver_creepages), &
+         new_unittest('left_wheel_mirrors_right', test_mirror), &
+         new_unittest('vertical_force_balance', test_vertical_balance), &
+         new_unittest('continuous_where_point_jumps', test_continuity), &
+         new_unittest('former_failures_solve', test_former_failures), &
+         new_unittest('bad_state_rejected', test_bad_state)]
+   end subroutine collect_kinematics
+
+   !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
+   pure type(wheelset_state_type) function rolling(y_ws, yaw, xi) result(state)
+      real(wp), intent(in) :: y_ws, yaw, xi
+      state = wheelset_state_type(y_ws=y_ws, yaw=yaw, v_forward=speed, &
+         pitch_rate=pure_rolling_pitch_rate(speed, r_nom)*(1.0_wp + xi))
+   end function rolling
+
+   !> Pure rolling without yaw: ν_x = 2(1 − r/r_nom)/(1 + r/r_nom), ν_y = 0,
+   !> φ = 2 sin γ/(r_nom + r) (the geometric spin with CONTACT's rolling speed).
+   subroutine test_pure_rolling(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(creepage_type) :: c
+      type(lib_error), allocatable :: err
+      real(wp) :: v_r, q
+      real(wp), parameter :: radius = 467.3_wp, gamma = -0.31_wp
+
+      call rigid_creepages(rolling(0.0_wp, 0.0_wp, 0.0_wp), &
+         contact_point_type(axle=745.0_wp, radius=radius, gamma=gamma), c, v_r, err)
+      call check(error, .not. allocated(err), 'rigid_creepages failed')
+      if (allocated(error)) return
+      q = radius/r_nom
+      call check(error, c%nu_x, 2.0_wp*(1.0_wp - q)/(1.0_wp + q), thr=1.0e-14_wp)
+      if (allocated(error)) return
+      call check(error, abs(c%nu_y) < 1.0e-15_wp, 'no lateral creepage without yaw')
+      if (allocated(error)) return
+      call check(error, c%phi, 2.0_wp*sin(gamma)/(r_nom + radius), thr=1.0e-15_wp)
+      if (allocated(error)) return
+      call check(error, v_r, 0.5_wp*speed*(1.0_wp + q), rel=.true., thr=1.0e-14_wp)
+   end subroutine test_pure_rolling
+
+   !> A yaw angle ψ gives ν_y = −ψ/cos γ (with the lateral velocity v_y/V cos γ added) to
+   !> first order, on the tread and on the flange.
+   subroutine test_yaw_creepage(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(creepage_type) :: c
+      type(lib_error), allocatable :: err
+      type(wheelset_state_type) :: state
+      real(wp) :: v_r, gammas(3) = [-0.03_wp, -0.6_wp, -1.2_wp]
+      real(wp), parameter :: yaw = 0.004_wp, v_y = 12.0_wp
+      integer :: i
+
+      do i = 1, size(gammas)
+         state = rolling(0.0_wp, yaw, 0.0_wp)
+         state%v_lateral = v_y
+         call rigid_creepages(state, contact_point_type(axle=750.0_wp, radius=r_nom, &
+            gamma=gammas(i)), c, v_r, err)
+         call check(error, .not. allocated(err), 'rigid_creepages failed')
+         if (allocated(error)) return
+         call check(error, c%nu_y, -yaw/cos(gammas(i)) + v_y/speed*cos(gammas(i)), &
+            thr=2.0e-3_wp*yaw/cos(gammas(i)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_yaw_creepage
+
+   !> The lead of a yawed wheel's contact point: −L sin ψ − r tan γ sin ψ to first order in ψ
+   !> (CONTACT's kinematic sample has x = −2.938 mm at L = 750.4, γ = −0.0346, ψ = 4 mrad).
+   subroutine test_contact_lead(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: yaw = 0.004_wp
+      real(wp) :: gammas(3) = [-0.0346_wp, -0.6_wp, -1.2_wp], x
+      integer :: i
+
+      do i = 1, size(gammas)
+         x = contact_lead(750.4_wp, r_nom, gammas(i), yaw)
+         call check(error, x, -750.4_wp*yaw - r_nom*tan(gammas(i))*yaw, &
+            thr=1.0e-3_wp*(1.0_wp + abs(r_nom*tan(gammas(i))*yaw)))
+         if (allocated(error)) return
+      end do
+      call check(error, contact_lead(750.4_wp, r_nom, -0.0346_wp, yaw), -2.938_wp, thr=2.0e-3_wp)
+      if (allocated(error)) return
+      call check(error, contact_lead(750.4_wp, r_nom, -0.5_wp, 0.0_wp), 0.0_wp, thr=1.0e-15_wp)
+   end subroutine test_contact_lead
+
+   !> Through the solver: each patch's creepages are the closed forms at its own reference point
+   !> (r₀, γ₀ as found by the contact search), without and with yaw.
+   subroutine test_solver_creepages(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: q, y_ws(3) = [0.0_wp, 4.733_wp, 8.0_wp]
+      integer :: i, k
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do i = 1, size(y_ws)
+         call wheel%solve_kinematic(rolling(y_ws(i), 0.0_wp, 0.0_wp), &
+            contact_load_type(load_vertical_force, f_z), result, err)
+         call check(error, .not. allocated(err), 'solve_kinematic failed')
+         if (allocated(error)) return
+         do k = 1, result%n_loaded
+            if (.not. (result%patch(k)%fn > 0.0_wp)) cycle
+            q = result%patch(k)%r0/r_nom
+            call check(error, result%patch(k)%nu_x, 2.0_wp*(1.0_wp - q)/(1.0_wp + q), &
+               thr=1.0e-12_wp)
+            if (allocated(error)) return
+            call check(error, result%patch(k)%phi, &
+               2.0_wp*sin(result%patch(k)%gamma0)/(r_nom + result%patch(k)%r0), thr=1.0e-12_wp)
+            if (allocated(error)) return
+            call check(error, result%patch(k)%x_track, 0.0_wp, thr=1.0e-12_wp)
+            if (allocated(error)) return
+         end do
+      end do
+      ! Yawed: the lateral creepage of the main patch follows the yaw angle.
+      call wheel%solve_kinematic(rolling(4.733_wp, 0.004_wp, 0.0_wp), &
+         contact_load_type(load_vertical_force, f_z), result, err)
+      call check(error, .not. allocated(err), 'yawed solve_kinematic failed')
+      if (allocated(error)) return
+      call check(error, result%main%nu_y, -0.004_wp/cos(result%main%gamma0), thr=2.0e-5_wp)
+      if (allocated(error)) return
+      call check(error, result%main%x_track < -2.0_wp, 'a yawed right wheel lies behind the '// &
+         'axle centre plane')
+   end subroutine test_solver_creepages
+
+   !> The left wheel in the mirrored state gives the right wheel's forces: F_x, F_z equal,
+   !> F_y of opposite sign, the same patch in mirror image.
+   subroutine test_mirror(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: right, left
+      type(contact_result_type) :: r, l
+      type(lib_error), allocatable :: err
+      type(wheelset_state_type) :: state, mirrored
+
+      call right%init('builtin:S1002', 'builtin:UIC60', err, side=side_right)
+      call check(error, .not. allocated(err), 'init right failed')
+      if (allocated(error)) return
+      call left%init('builtin:S1002', 'builtin:UIC60', err, side=side_left)
+      call check(error, .not. allocated(err), 'init left failed')
+      if (allocated(error)) return
+      state = rolling(3.1_wp, 0.006_wp, 0.4e-3_wp)
+      state%v_lateral = 25.0_wp
+      state%yaw_rate = 0.01_wp
+      mirrored = state
+      mirrored%y_ws = -state%y_ws
+      mirrored%yaw = -state%yaw
+      mirrored%v_lateral = -state%v_lateral
+      mirrored%yaw_rate = -state%yaw_rate
+      call right%solve_kinematic(state, contact_load_type(load_vertical_force, f_z), r, err)
+      call check(error, .not. allocated(err), 'right solve failed')
+      if (allocated(error)) return
+      call left%solve_kinematic(mirrored, contact_load_type(load_vertical_force, f_z), l, err)
+      call check(error, .not. allocated(err), 'left solve failed')
+      if (allocated(error)) return
+      call check(error, l%track%fx, r%track%fx, rel=.true., thr=1.0e-12_wp)
+      if (allocated(error)) return
+      call check(error, l%track%fy, -r%track%fy, rel=.true., thr=1.0e-12_wp)
+      if (allocated(error)) return
+      call check(error, l%track%fz, r%track%fz, rel=.true., thr=1.0e-12_wp)
+      if (allocated(error)) return
+      call check(error, l%main%y_track, -r%main%y_track, rel=.true., thr=1.0e-12_wp)
+      if (allocated(error)) return
+      call check(error, l%main%x_track, r%main%x_track, thr=1.0e-12_wp)
+   end subroutine test_mirror
+
+   !> A vertical load is the total vertical force on the wheel, tangential forces included:
+   !> −ΣF_z,track = F_z, on the tread, at two patches and on the flange with yaw.
+   subroutine test_vertical_balance(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: y_ws(4) = [0.0_wp, 4.733_wp, 8.0_wp, 8.0_wp], yaw(4) = [0.0_wp, 0.004_wp, &
+         0.0_wp, 0.01_wp]
+      integer :: i
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do i = 1, size(y_ws)
+         call wheel%solve_kinematic(rolling(y_ws(i), yaw(i), 1.0e-3_wp), &
+            contact_load_type(load_vertical_force, f_z), result, err)
+         call check(error, .not. allocated(err), 'solve_kinematic failed')
+         if (allocated(error)) return
+         call check(error, -result%track%fz, f_z, rel=.true., thr=1.0e-6_wp)
+         if (allocated(error)) return
+         ! On the flange (γ ≈ −1.2) the normal force is about F_z/cos γ, far above F_z.
+         if (i == 3) call check(error, result%track%fn > 2.0_wp*f_z, &
+            'flange contact carries F_n >> F_z')
+         if (allocated(error)) return
+      end do
+   end subroutine test_vertical_balance
+
+   !> Where the geometric contact point jumps across the patch (t_y ≈ 0.2145 mm on S1002/UIC60)
+   !> the creepages at the reference point jump, but the rigid slip field does not: the forces
+   !> from kinematics change between t_y = 0.20 and 0.22 mm by no more than their smooth trend.
+   !> The prescribed-creepage mode (same creepages at whichever point is the reference) shows
+   !> the jump, so the test can tell the two apart.
+   subroutine test_continuity(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      integer, parameter :: n = 41
+      real(wp) :: fx(n), fy(n), fy_tr(n), nu_x(n), fx_fixed(2), jump, trend
+      integer :: i
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do i = 1, n
+         call wheel%solve_kinematic(rolling(0.20_wp + 0.02_wp*(i - 1)/(n - 1), 0.0_wp, &
+            0.3e-3_wp), contact_load_type(load_vertical_force, f_z), result, err)
+         call check(error, .not. allocated(err), 'solve_kinematic failed')
+         if (allocated(error)) return
+         fx(i) = result%track%fx/(0.3_wp*result%track%fn)
+         fy(i) = result%main%fy_norm
+         fy_tr(i) = result%track%fy/(0.3_wp*result%track%fn)
+         nu_x(i) = result%main%nu_x
+      end do
+      ! The reference point does jump in this interval (the creepage there jumps by ~1e-3).
+      call check(error, maxval(abs(nu_x(2:) - nu_x(:n - 1))) > 5.0e-4_wp, &
+         'expected the geometric contact point to jump between t_y = 0.20 and 0.22 mm')
+      if (allocated(error)) return
+      trend = abs(fx(n) - fx(1))/(n - 1)
+      jump = maxval(abs(fx(2:) - fx(:n - 1)))
+      call check(error, jump <= 3.0_wp*trend + 2.0e-3_wp, 'f_x jumps')
+      if (allocated(error)) return
+      jump = maxval(abs(fy(2:) - fy(:n - 1)))
+      call check(error, jump <= 3.0_wp*abs(fy(n) - fy(1))/(n - 1) + 2.0e-3_wp, 'f_y jumps')
+      if (allocated(error)) return
+      jump = maxval(abs(fy_tr(2:) - fy_tr(:n - 1)))
+      call check(error, jump <= 3.0_wp*abs(fy_tr(n) - fy_tr(1))/(n - 1) + 2.0e-3_wp, &
+         'track F_y jumps')
+      if (allocated(error)) return
+      ! Prescribed creepages at the reference point: f_x jumps there.
+      call wheel%solve(0.20_wp, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
+         creepage_type(-0.3e-3_wp, 0.0_wp, 0.0_wp), result, err)
+      fx_fixed(1) = result%main%fx_norm
+      call wheel%solve(0.22_wp, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
+         creepage_type(-0.3e-3_wp, 0.0_wp, 0.0_wp), result, err)
+      fx_fixed(2) = result%main%fx_norm
+      call check(error, .not. allocated(err), 'prescribed-creepage solve failed')
+      if (allocated(error)) return
+      call check(error, abs(fx(n) - fx(1)) < 0.1_wp*abs(fx_fixed(2) - fx_fixed(1)) .or. &
+         abs(fx_fixed(2) - fx_fixed(1)) < 0.02_wp, 'kinematic forces should vary far less '// &
+         'than the prescribed-creepage ones across the jump')
+   end subroutine test_continuity
+
+   !> Positions where the normal load match failed before (issue 12): t_y = 3.87 and 3.88 mm
+   !> with a normal force, 5.98 mm with a vertical load; here from kinematics, without and
+   !> with yaw.
+   subroutine test_former_failures(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: y_ws(4) = [3.87_wp, 3.88_wp, 5.98_wp, 6.65_wp], yaws(3) = [0.0_wp, 0.01_wp, &
+         -0.01_wp]
+      integer :: i, j
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do i = 1, size(y_ws)
+         do j = 1, size(yaws)
+            call wheel%solve_kinematic(rolling(y_ws(i), yaws(j), 0.0_wp), &
+               contact_load_type(load_vertical_force, f_z), result, err)
+            if (allocated(err)) then
+               call test_failed(error, 'kinematic call failed at a former failure position: '// &
+                  err%message)
+               return
+            end if
+            call check(error, -result%track%fz, f_z, rel=.true., thr=1.0e-6_wp)
+            if (allocated(error)) return
+         end do
+         call wheel%solve_kinematic(rolling(y_ws(i), 0.0_wp, 0.0_wp), &
+            contact_load_type(load_normal_force, f_z), result, err)
+         if (allocated(err)) then
+            call test_failed(error, 'normal-force kinematic call failed: '//err%message)
+            return
+         end if
+         call check(error, result%patch(1)%fn, f_z, rel=.true., thr=1.0e-6_wp)
+         if (allocated(error)) return
+      end do
+   end subroutine test_former_failures
+
+   !> NaN, a wheel not rolling forward and an implausible yaw are rejected with a message; the
+   !> solver stays usable.
+   subroutine test_bad_state(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      type(wheelset_state_type) :: state
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      state = rolling(1.0_wp, 0.0_wp, 0.0_wp)
+      state%v_forward = 0.0_wp
+      call wheel%solve_kinematic(state, contact_load_type(load_vertical_force, f_z), result, err)
+      call check(error, allocated(err), 'v_forward = 0 accepted')
+      if (allocated(error)) return
+      call check(error, index(err%message, 'v_forward') > 0, err%message)
+      if (allocated(error)) return
+      state = rolling(1.0_wp, 0.5_wp, 0.0_wp)
+      call wheel%solve_kinematic(state, contact_load_type(load_vertical_force, f_z), result, err)
+      call check(error, allocated(err), 'yaw = 0.5 rad accepted')
+      if (allocated(error)) return
+      call check(error, index(err%message, 'yaw') > 0, err%message)
+      if (allocated(error)) return
+      state = rolling(1.0_wp, 0.0_wp, 0.0_wp)
+      state%pitch_rate = -state%pitch_rate
+      call wheel%solve_kinematic(state, contact_load_type(load_vertical_force, f_z), result, err)
+      call check(error, allocated(err), 'backward pitch rate accepted')
+      if (allocated(error)) return
+      call wheel%solve_kinematic(rolling(1.0_wp, 0.0_wp, 0.0_wp), &
+         contact_load_type(load_vertical_force, f_z), result, err)
+      call check(error, .not. allocated(err), 'the solver is not usable after an error')
+   end subroutine test_bad_state
+
+end module test_kinematics
