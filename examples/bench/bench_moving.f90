@@ -1,0 +1,103 @@
+!> Benchmark items of a wheel in motion (issue 12): the kinematic call of the solver object at a
+!> fixed wheelset position and along a hunting trajectory whose lateral shift and yaw change at
+!> every call, and the scan of every 0.01 mm position that counts failed calls.
+module bench_moving
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use shcontact, only: wp, error_type, contact_solver_type, contact_load_type, &
+      contact_result_type, wheelset_state_type, load_vertical_force, pure_rolling_pitch_rate, &
+      normal_options_type, tangential_options_type
+   use bench_timing, only: kernel_type
+   implicit none
+   private
+
+   public :: kinematic_kernel, hunting_states, scan_positions
+
+   !> Vehicle speed (mm/s), nominal radius (mm) and vertical wheel load (N) of the items.
+   real(wp), parameter :: speed = 30000.0_wp, r_nom = 460.0_wp, wheel_load = 64700.0_wp
+
+   !> One kinematic call per run(k): state k of the list (cyclically), or always state 1.
+   type, extends(kernel_type) :: kinematic_kernel
+      type(contact_solver_type) :: solver
+      type(wheelset_state_type), allocatable :: states(:)
+      logical :: moving = .true.
+      integer :: failures = 0
+      real(wp) :: checksum = 0.0_wp
+   contains
+      procedure :: run => run_kinematic
+   end type kinematic_kernel
+
+contains
+
+   !> Call k: the next state of the trajectory (or the fixed one).
+   subroutine run_kinematic(self, k)
+      class(kinematic_kernel), intent(inout) :: self
+      integer, intent(in) :: k
+      type(contact_result_type) :: result
+      type(error_type), allocatable :: error
+      integer :: i
+
+      i = 1
+      if (self%moving) i = modulo(k - 1, size(self%states)) + 1
+      call self%solver%solve_kinematic(self%states(i), &
+         contact_load_type(load_vertical_force, wheel_load), result, error)
+      if (allocated(error)) then
+         self%failures = self%failures + 1
+         self%failed = .true.
+         self%message = error%message
+         return
+      end if
+      self%checksum = self%checksum + result%track%fy
+   end subroutine run_kinematic
+
+   !> A hunting trajectory sampled at time step dt: t_y = A sin(ωt), yaw = −Ψ cos(ωt) with the
+   !> kinematic wavelength's phase lag, for a set of amplitudes A from 0.01 to 8 mm (Ψ up to
+   !> 10 mrad), the velocities consistent with the motion (v_y = dt_y/dt, yaw rate) and a
+   !> small longitudinal creep. Consecutive calls never repeat a position.
+   pure function hunting_states(n) result(states)
+      integer, intent(in) :: n
+      type(wheelset_state_type) :: states(n)
+      real(wp), parameter :: amplitudes(5) = [0.01_wp, 0.1_wp, 1.0_wp, 4.0_wp, 8.0_wp]
+      real(wp), parameter :: two_pi = 6.283185307179586_wp, dt = 1.0e-3_wp, freq = 2.5_wp
+      real(wp) :: t, a, psi, w
+      integer :: i, j
+
+      w = two_pi*freq
+      do i = 1, n
+         j = modulo((i - 1)*size(amplitudes)/n, size(amplitudes)) + 1
+         a = amplitudes(j)
+         psi = min(0.01_wp, 1.25e-3_wp*a)
+         t = (i - 1)*dt
+         states(i) = wheelset_state_type(y_ws=a*sin(w*t), yaw=-psi*cos(w*t), &
+            v_forward=speed, v_lateral=a*w*cos(w*t), yaw_rate=psi*w*sin(w*t), &
+            pitch_rate=pure_rolling_pitch_rate(speed, r_nom)*(1.0_wp + 2.0e-4_wp))
+      end do
+   end function hunting_states
+
+   !> Solve every position t_y = −10 … 10 mm in steps of 0.01 mm at the given yaw angles
+   !> (pure rolling, vertical load) and report the failed calls with their messages.
+   subroutine scan_positions(solver, yaws, failures)
+      type(contact_solver_type), intent(inout) :: solver
+      real(wp), intent(in) :: yaws(:)
+      integer, intent(out) :: failures
+      type(contact_result_type) :: result
+      type(error_type), allocatable :: error
+      integer :: i, j
+
+      failures = 0
+      do j = 1, size(yaws)
+         do i = -1000, 1000
+            call solver%solve_kinematic(wheelset_state_type(y_ws=0.01_wp*i, yaw=yaws(j), &
+               v_forward=speed, pitch_rate=pure_rolling_pitch_rate(speed, r_nom)), &
+               contact_load_type(load_vertical_force, wheel_load), result, error)
+            if (allocated(error)) then
+               failures = failures + 1
+               write (output_unit, '(2x,a,f7.2,a,f7.4,a,a)') 'FAILED t_y = ', 0.01_wp*i, &
+                  ' mm, yaw = ', yaws(j), ' rad: ', error%message
+            end if
+         end do
+         write (output_unit, '(2x,a,f7.4,a,i0)') 'scan t_y = -10 ... 10 mm step 0.01 mm, '// &
+            'yaw = ', yaws(j), ' rad: failed calls so far ', failures
+      end do
+   end subroutine scan_positions
+
+end module bench_moving
