@@ -43,7 +43,7 @@ module shcontact_geometry_contact
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
       source_name => profile_label
    use shcontact_geometry_rigid, only: rigid_map_type, translation, to_frame
-   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta
+   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta, seek_eta
    use shcontact_geometry_search, only: polyline_envelope, gap_minima
    use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
       check_position, rail_placement, wheel_placement, tape_circle_position, str => real_text
@@ -79,6 +79,10 @@ module shcontact_geometry_contact
       real(wp) :: sample_step = 0.05_wp
       !> A(y) with the fixed reference normal, cos γ₀/(2 r_w(y)), instead of the local cos γ(y).
       logical :: a_reference_normal = .false.
+      !> Search with the original (slow) algorithms: every table point and every common-normal
+      !> step solved from scratch by bracketing. For tests of the fast search, which gives the
+      !> same patches and tables to round-off.
+      logical :: reference_search = .false.
    end type contact_options_type
 
    !> Profiles ready for the contact search at any wheelset position.
@@ -679,7 +683,8 @@ contains
       wmap = wheel_map%then(frame)
       w = frame_point(prepared%wheel, wmap, pair%s_w, 1, pair%k_w)
       dir = merge(1, -1, w%deta >= 0.0_wp)
-      call locate_eta(prepared%wheel, wmap, 0.0_wp, dir, pair%s_w, pair%k_w, ok)
+      w%deta = dir*w%deta
+      call next_crossing(prepared, prepared%wheel, wmap, 0.0_wp, dir, w, pair%s_w, pair%k_w, ok)
       if (.not. ok) return
       w = frame_point(prepared%wheel, wmap, pair%s_w, dir, pair%k_w)
       ok = w%deta > min_deta
@@ -888,9 +893,10 @@ contains
       cut = .false.
       n_rows = 0
       n_basin = 0
+      r = r0; w = w0
       do j = 1, size(rows, 2)
-         call locate_eta(prepared%rail, rmap, j*step, dir_r, s_r, k_r, ok_r)
-         call locate_eta(prepared%wheel, wmap, j*step, dir_w, s_w, k_w, ok_w)
+         call next_crossing(prepared, prepared%rail, rmap, j*step, dir_r, r, s_r, k_r, ok_r)
+         call next_crossing(prepared, prepared%wheel, wmap, j*step, dir_w, w, s_w, k_w, ok_w)
          if (.not. (ok_r .and. ok_w)) exit
          r = frame_point(prepared%rail, rmap, s_r, dir_r, k_r)
          w = frame_point(prepared%wheel, wmap, s_w, dir_w, k_w)
@@ -911,6 +917,25 @@ contains
       s_basin = r0%s
       if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
+
+   !> The next point of a walk along a profile in a frame: where η = eta, from the walk's last
+   !> point `last` (arc length s, interval k on entry).
+   pure subroutine next_crossing(prepared, spline, map, eta, dir, last, s, k, found)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(profile_spline_type), intent(in) :: spline
+      type(rigid_map_type), intent(in) :: map
+      real(wp), intent(in) :: eta
+      integer, intent(in) :: dir
+      type(frame_point_type), intent(in) :: last
+      real(wp), intent(inout) :: s
+      integer, intent(inout) :: k
+      logical, intent(out) :: found
+      if (prepared%options%reference_search) then
+         call locate_eta(spline, map, eta, dir, s, k, found)
+      else
+         call seek_eta(spline, map, eta, dir, last%eta, last%deta, s, k, found)
+      end if
+   end subroutine next_crossing
 
    !> Sample a spline at all knots and between them at spacing ≤ step.
    pure subroutine sample_spline(spline, step, s, y, z)
