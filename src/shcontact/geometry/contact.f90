@@ -43,7 +43,7 @@ module shcontact_geometry_contact
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
       source_name => profile_label
    use shcontact_geometry_rigid, only: rigid_map_type, translation, to_frame
-   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta, seek_eta
+   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta, walk_to_eta
    use shcontact_geometry_search, only: polyline_envelope, gap_minima
    use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
       check_position, rail_placement, wheel_placement, tape_circle_position, str => real_text
@@ -684,9 +684,10 @@ contains
       w = frame_point(prepared%wheel, wmap, pair%s_w, 1, pair%k_w)
       dir = merge(1, -1, w%deta >= 0.0_wp)
       w%deta = dir*w%deta
-      call next_crossing(prepared, prepared%wheel, wmap, 0.0_wp, dir, w, pair%s_w, pair%k_w, ok)
+      call next_point(prepared, prepared%wheel, wmap, 0.0_wp, dir, w, ok)
       if (.not. ok) return
-      w = frame_point(prepared%wheel, wmap, pair%s_w, dir, pair%k_w)
+      pair%s_w = w%s
+      pair%k_w = w%k
       ok = w%deta > min_deta
       if (.not. ok) return
       pair%gap = -w%zeta
@@ -884,22 +885,20 @@ contains
       integer, intent(out) :: n_rows, n_basin
       real(wp), intent(out) :: s_basin
       type(frame_point_type) :: r, w
-      real(wp) :: s_r, s_w, top
-      integer :: k_r, k_w, j, j_top
+      real(wp) :: top
+      integer :: j, j_top
       logical :: ok_r, ok_w, cut
 
-      s_r = r0%s; s_w = w0%s; k_r = r0%k; k_w = w0%k
       top = 0.0_wp; j_top = 0
       cut = .false.
       n_rows = 0
       n_basin = 0
       r = r0; w = w0
       do j = 1, size(rows, 2)
-         call next_crossing(prepared, prepared%rail, rmap, j*step, dir_r, r, s_r, k_r, ok_r)
-         call next_crossing(prepared, prepared%wheel, wmap, j*step, dir_w, w, s_w, k_w, ok_w)
-         if (.not. (ok_r .and. ok_w)) exit
-         r = frame_point(prepared%rail, rmap, s_r, dir_r, k_r)
-         w = frame_point(prepared%wheel, wmap, s_w, dir_w, k_w)
+         call next_point(prepared, prepared%rail, rmap, j*step, dir_r, r, ok_r)
+         if (.not. ok_r) exit
+         call next_point(prepared, prepared%wheel, wmap, j*step, dir_w, w, ok_w)
+         if (.not. ok_w) exit
          if (r%deta <= min_deta .or. w%deta <= min_deta) exit
          rows(:, j) = strip_row(prepared, r, w, theta, gap0)
          n_rows = j
@@ -918,24 +917,31 @@ contains
       if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
 
-   !> The next point of a walk along a profile in a frame: where η = eta, from the walk's last
-   !> point `last` (arc length s, interval k on entry).
-   pure subroutine next_crossing(prepared, spline, map, eta, dir, last, s, k, found)
+   !> The next point of a walk along a profile in a frame, where η = eta: from the walk's last
+   !> point ([[walk_to_eta]]), or solved from scratch ([[locate_eta]]) for the reference search.
+   pure subroutine next_point(prepared, spline, map, eta, dir, point, found)
       type(prepared_profiles_type), intent(in) :: prepared
       type(profile_spline_type), intent(in) :: spline
       type(rigid_map_type), intent(in) :: map
       real(wp), intent(in) :: eta
       integer, intent(in) :: dir
-      type(frame_point_type), intent(in) :: last
-      real(wp), intent(inout) :: s
-      integer, intent(inout) :: k
+      !> The last point on entry, the new one on return (unchanged when not found).
+      type(frame_point_type), intent(inout) :: point
       logical, intent(out) :: found
+      type(frame_point_type) :: next
+      real(wp) :: s
+      integer :: k
+
       if (prepared%options%reference_search) then
+         s = point%s
+         k = point%k
          call locate_eta(spline, map, eta, dir, s, k, found)
+         if (found) point = frame_point(spline, map, s, dir, k)
       else
-         call seek_eta(spline, map, eta, dir, last%eta, last%deta, s, k, found)
+         call walk_to_eta(spline, map, eta, dir, point, next, found)
+         if (found) point = next
       end if
-   end subroutine next_crossing
+   end subroutine next_point
 
    !> Sample a spline at all knots and between them at spacing ≤ step.
    pure subroutine sample_spline(spline, step, s, y, z)
