@@ -101,6 +101,10 @@ module shcontact_geometry_contact
       real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
       !> Dense samples of the rail, side frame (mm).
       real(wp), allocatable :: rail_s(:), rail_y(:), rail_z(:)
+      !> The rail's envelope on the sampling grid that starts at its leftmost sample, the grid of
+      !> every position where the wheel overlaps the whole rail head (see [[polyline_envelope]]).
+      real(wp), allocatable :: rail_env(:), rail_env_s(:)
+      logical, allocatable :: rail_env_covered(:)
    end type prepared_profiles_type
 
    !> The patches of one wheel position in storage the caller keeps from search to search
@@ -207,6 +211,7 @@ contains
       logical :: found
       type(spline_point_type) :: p
       real(wp), allocatable :: u(:), v(:)
+      integer :: n
 
       call check_track(track, error)
       if (allocated(error)) return
@@ -241,6 +246,11 @@ contains
       call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
       allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
       call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)
+      n = sampling_grid_size(prepared)
+      allocate (prepared%rail_env(n), prepared%rail_env_s(n), prepared%rail_env_covered(n))
+      call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, &
+         minval(prepared%rail_y), options%sample_step, .false., prepared%rail_env, &
+         prepared%rail_env_s, prepared%rail_env_covered)
    end subroutine prepare_profiles
 
    !> Find the contact patches for one wheel position, from raw profiles (smoothing included).
@@ -503,14 +513,23 @@ contains
       integer, intent(inout) :: n_pairs
       real(wp), intent(out) :: shift
       type(error_type), allocatable, intent(out) :: error
-      integer :: count, j, i
+      integer :: count, j, i, m
       real(wp) :: h, slope
       logical :: interior
 
       h = prepared%options%sample_step
       shift = 0.0_wp
-      call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
-         .false., rz, rs, rc)
+      m = size(rz)
+      if (y0 == minval(prepared%rail_y) .and. m <= size(prepared%rail_env) .and. &
+         .not. prepared%options%reference_search) then
+         ! The grid of the rail's own envelope, computed once (the same values).
+         rz = prepared%rail_env(1:m)
+         rs = prepared%rail_env_s(1:m)
+         rc = prepared%rail_env_covered(1:m)
+      else
+         call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
+            .false., rz, rs, rc)
+      end if
       call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
       rc = rc .and. wc
       gap = 0.0_wp
@@ -554,8 +573,7 @@ contains
       if (allocated(work%minima)) then
          if (size(work%minima) >= m) return
       end if
-      n_grid = max(m, int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
-         prepared%options%sample_step) + 1)
+      n_grid = max(m, sampling_grid_size(prepared))
       call reserve_vector(work%rail_env, n_grid)
       call reserve_vector(work%rail_env_s, n_grid)
       call reserve_vector(work%wheel_env, n_grid)
@@ -565,6 +583,14 @@ contains
          work%minima)
       allocate (work%rail_covered(n_grid), work%wheel_covered(n_grid), work%minima(n_grid))
    end subroutine reserve_search
+
+   !> Points of a sampling grid over the rail's whole width (the overlap with the wheel is never
+   !> wider).
+   pure integer function sampling_grid_size(prepared)
+      type(prepared_profiles_type), intent(in) :: prepared
+      sampling_grid_size = int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
+         prepared%options%sample_step) + 1
+   end function sampling_grid_size
 
    !> Make `a` hold at least n values (its content is not kept when it grows). It grows by half
    !> at least, so that a scan over positions with ever longer tables reallocates rarely.

@@ -208,7 +208,7 @@ contains
       kc = 0
       do it = 1, max_newton
          if (x < spline%s(1) .or. x > spline%s(n)) return
-         k = spline%interval(x, k)
+         if (.not. (x >= spline%s(k) .and. x < spline%s(k + 1))) k = spline%interval(x, k)
          if (k /= kc) then
             c = ay*spline%cy(:, k) + az*spline%cz(:, k)
             c(1) = c(1) - target
