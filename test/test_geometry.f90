@@ -14,7 +14,7 @@ module test_geometry
       rail_placement
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
-      contact_patches_type, extract_patch
+      contact_patches_type, extract_patch, prepare_wheel
    use shcontact_geometry_patch, only: patch_geometry_type
    implicit none
    private
@@ -61,7 +61,10 @@ contains
          new_unittest('manchester_two_patches_ty5', test_manchester_two_patches), &
          new_unittest('manchester_scan_0_to_10', test_manchester_scan), &
          new_unittest('builtin_profiles_as_manchester', test_builtin_as_manchester), &
-         new_unittest('reused_patch_storage', test_reused_storage) &
+         new_unittest('reused_patch_storage', test_reused_storage), &
+         new_unittest('fast_search_equals_reference_builtin', test_fast_builtin), &
+         new_unittest('fast_search_equals_reference_manchester', test_fast_manchester), &
+         new_unittest('prepare_wheel_equals_prepare_profiles', test_prepare_wheel) &
          ]
    end subroutine collect_geometry
 
@@ -768,11 +771,14 @@ contains
    !> S1002 (MBench_S1002_v3.prw) on UIC60 1:40 (MBench_UIC60_v3.prr, already canted) with the
    !> benchmark's track (physics.md §5.2), read and cleaned as the program does; skipped when
    !> ../shared is absent.
-   subroutine manchester(prep, error)
+   subroutine manchester(prep, error, options)
       type(prepared_profiles_type), intent(out) :: prep
       type(error_type), allocatable, intent(out) :: error
+      !> Contact options (default: the defaults).
+      type(contact_options_type), intent(in), optional :: options
       type(profile_type) :: wheel, rail
       type(track_type) :: track
+      type(contact_options_type) :: opts
       type(lib_error), allocatable :: err
       logical :: there
 
@@ -786,8 +792,8 @@ contains
       if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
       if (.not. allocated(err)) call clean_profile(rail, err)
       track%rail_canted = .true.
-      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track, contact_options_type(), &
-         prep, err)
+      if (present(options)) opts = options
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track, opts, prep, err)
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine manchester
 
@@ -1118,5 +1124,148 @@ contains
          end do
       end function same_bits
    end subroutine test_reused_storage
+
+   ! ------------------------------------------------- fast search against the reference search
+
+   !> The fast search (Newton walk, cached rail envelope) finds the patches of the original
+   !> bracketing search (`reference_search`) with the same tables to 1e-9 (mm, rad; relative
+   !> for the curvatures and the radius): built-in S1002 on UIC60 1:40, t_y = −10 … 10 mm.
+   subroutine test_fast_builtin(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: fast, reference
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), fast, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(reference_search=.true.), reference, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check_fast_scan(fast, reference, error)
+   end subroutine test_fast_builtin
+
+   !> As [[test_fast_builtin]] for the Manchester files (MBench_S1002_v3 on MBench_UIC60_v3).
+   subroutine test_fast_manchester(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: fast, reference
+
+      call manchester(fast, error)
+      if (allocated(error)) return
+      call manchester(reference, error, contact_options_type(reference_search=.true.))
+      if (allocated(error)) return
+      call check_fast_scan(fast, reference, error)
+   end subroutine test_fast_manchester
+
+   !> Fast and reference search at t_y = −10 + 0.37 k mm (k = 0 … 54), right wheel, and a few
+   !> positions of the left wheel with roll: the same outcome (error status), the same number of
+   !> patches and table points, and every value within 1e-9.
+   subroutine check_fast_scan(fast, reference, error)
+      type(prepared_profiles_type), intent(in) :: fast, reference
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: tol = 1.0e-9_wp
+      type(contact_patches_type) :: a, b
+      type(wheelset_position_type) :: position
+      type(lib_error), allocatable :: err_a, err_b
+      integer :: i, k, n, found
+      character(len=40) :: where
+
+      found = 0
+      do i = 0, 60
+         if (i <= 54) then
+            position = wheelset_position_type(y_ws=-10.0_wp + 0.37_wp*i)
+         else
+            position = wheelset_position_type(side=side_left, y_ws=-6.0_wp + 2.3_wp*(i - 55), &
+               roll=1.0e-3_wp*(i - 57))
+         end if
+         write (where, '(a,f8.3,a,i0)') ' at t_y = ', position%y_ws, ', side ', position%side
+         call find_contact_patches(fast, position, a, err_a)
+         call find_contact_patches(reference, position, b, err_b)
+         call check(error, allocated(err_a) .eqv. allocated(err_b), &
+            message='fast and reference search disagree on success'//trim(where))
+         if (allocated(error)) return
+         if (allocated(err_a)) then
+            call check(error, err_a%stat, err_b%stat, message='error status'//trim(where))
+            if (allocated(error)) return
+            cycle
+         end if
+         found = found + 1
+         call check(error, a%count, b%count, message='number of patches'//trim(where))
+         if (allocated(error)) return
+         do k = 1, a%count
+            n = a%points(k)
+            call check(error, n, b%points(k), message='table points'//trim(where))
+            if (allocated(error)) return
+            associate (p => a%patch(k), q => b%patch(k))
+               call check(error, maxval(abs([p%y_track - q%y_track, p%z_track - q%z_track, &
+                  p%y_rail - q%y_rail, p%y_wheel - q%y_wheel, p%gamma0 - q%gamma0, &
+                  p%gap0 - q%gap0, p%basin_lower - q%basin_lower, &
+                  p%basin_upper - q%basin_upper, (p%r0 - q%r0)/q%r0])) <= tol, &
+                  message='reference point, angle, radius or basin'//trim(where))
+               if (allocated(error)) return
+               call check(error, maxval(abs(p%y(1:n) - q%y(1:n))) <= tol .and. &
+                  maxval(abs(p%gap(1:n) - q%gap(1:n))) <= tol .and. &
+                  maxval(abs(p%gamma(1:n) - q%gamma(1:n))) <= tol .and. &
+                  maxval(abs(p%r_wheel(1:n) - q%r_wheel(1:n))/q%r_wheel(1:n)) <= tol .and. &
+                  maxval(abs(p%curv_a(1:n) - q%curv_a(1:n))/q%curv_a(1:n)) <= tol .and. &
+                  maxval(abs(p%curv_b(1:n) - q%curv_b(1:n))/q%curv_b(1:n)) <= tol, &
+                  message='strip tables differ'//trim(where))
+               if (allocated(error)) return
+            end associate
+         end do
+      end do
+      call check(error, found >= 50, message='expected contact at most positions')
+   end subroutine check_fast_scan
+
+   !> prepare_wheel on profiles prepared with another wheel gives the profiles that
+   !> prepare_profiles gives for the new wheel: the same patches, bit for bit.
+   subroutine test_prepare_wheel(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: swapped, direct
+      type(patch_geometry_type), allocatable :: p(:), q(:)
+      type(profile_type) :: wheel, other, rail
+      type(lib_error), allocatable :: err
+      integer :: i, k
+      logical :: there
+
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) then
+         call skip_test(error, profiles_dir//' is absent')
+         return
+      end if
+      call read_profile(profiles_dir//'MBench_S1002_v3.prw', other, err)
+      if (.not. allocated(err)) call clean_profile(other, err)
+      if (.not. allocated(err)) call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), swapped, err)
+      if (.not. allocated(err)) call prepare_wheel(other, swapped%track, swapped%options, &
+         swapped, err)
+      if (.not. allocated(err)) call prepare_profiles(other, rail, track_type(), &
+         contact_options_type(), direct, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do i = 1, 3
+         call find_contact_patches(swapped, wheelset_position_type(y_ws=3.0_wp*(i - 2)), p, err)
+         if (.not. allocated(err)) call find_contact_patches(direct, &
+            wheelset_position_type(y_ws=3.0_wp*(i - 2)), q, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, size(p), size(q), message='number of patches')
+         if (allocated(error)) return
+         do k = 1, size(p)
+            call check(error, size(p(k)%gap) == size(q(k)%gap) .and. &
+               all(p(k)%gap == q(k)%gap) .and. all(p(k)%r_wheel == q(k)%r_wheel) .and. &
+               p(k)%y_track == q(k)%y_track .and. p(k)%r0 == q(k)%r0, &
+               message='prepare_wheel: tables differ from prepare_profiles')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_prepare_wheel
 
 end module test_geometry

@@ -3,7 +3,7 @@
 !>
 !> Two steps, so that a scan over many wheel positions smooths the profiles only once:
 !>
-!> 1. [[prepare_profiles]]: fit the smoothing splines (§5.5), place the rail (§5.2), find the
+!> 1. [[prepare_profiles]] (module [[shcontact_geometry_prepared]]): fit the smoothing splines (§5.5), place the rail (§5.2), find the
 !>    tape-circle height of the wheel profile (at flange_back_position + tape_circle_offset) and
 !>    sample both profiles densely.
 !> 2. [[find_contact_patches]] for one wheelset position, into fresh tables or into a
@@ -19,6 +19,10 @@
 !>      contact angle γ(y) and rolling radius r_w(y), out to `table_gap`: over the basin of the
 !>      minimum and on past a maximum into a neighbouring basin (patches merge under load; the
 !>      basin limits are kept in `basin_lower`, `basin_upper`).
+!>
+!> The common-normal refinement and the walk along both profiles that fills the table rows live
+!> in [[shcontact_geometry_pair]]; with `reference_search` they use the original bracketing
+!> solves (a slow reference for tests), otherwise Newton steps from the previous point.
 !>
 !> Conventions (binding, see doc/geometry.md):
 !> * Every quantity of a patch is given in its side frame (y towards the field side, z down), the
@@ -37,67 +41,26 @@
 !>   analytic from the splines, clamped to ≥ b_min.
 module shcontact_geometry_contact
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
-      stat_io, stat_numerical, stat_no_contact
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
+      stat_numerical, stat_no_contact
    use shcontact_profile_points, only: profile_type
-   use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
-      source_name => profile_label
    use shcontact_geometry_rigid, only: rigid_map_type, translation, to_frame
-   use shcontact_geometry_curve, only: frame_point_type, frame_point, locate_eta
+   use shcontact_geometry_curve, only: frame_point_type, frame_point
    use shcontact_geometry_search, only: polyline_envelope, gap_minima
-   use shcontact_geometry_track, only: track_type, wheelset_position_type, check_track, &
-      check_position, rail_placement, wheel_placement, tape_circle_position, str => real_text
+   use shcontact_geometry_track, only: track_type, wheelset_position_type, check_position, &
+      wheel_placement, str => real_text
    use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_prepared, only: contact_options_type, prepared_profiles_type, &
+      check_contact_options, prepare_profiles, prepare_wheel, sampling_grid_size
+   use shcontact_geometry_pair, only: normal_pair_type, refine_all, select_candidates, follow, &
+      strip_row, row_count, max_candidates
    implicit none
    private
 
    public :: contact_options_type, prepared_profiles_type, contact_patches_type
-   public :: check_contact_options, prepare_profiles, find_contact_patches, extract_patch
+   public :: check_contact_options, prepare_profiles, prepare_wheel, find_contact_patches
+   public :: extract_patch
    public :: positioned_profiles, write_geometry_table, max_candidates
-
-   !> Largest number of candidates followed at one position (and of patches found).
-   integer, parameter :: max_candidates = 16
-
-   !> Options of the contact search and the strip tables.
-   type :: contact_options_type
-      !> Smoothing length of the wheel and the rail profile (mm, physics.md §5.5); 0
-      !> interpolates (analytic profiles), 1–3 mm suits measured ones.
-      real(wp) :: l_filt_wheel = 0.0_wp
-      real(wp) :: l_filt_rail = 0.0_wp
-      !> Spacing h of the strip tables (mm).
-      real(wp) :: table_step = 0.025_wp
-      !> The tables stop where the gap exceeds this (mm), or earlier at a maximum of the gap.
-      real(wp) :: table_gap = 2.0_wp
-      !> Smallest lateral relative curvature B (1/mm); concave gap curvature is clamped to it.
-      real(wp) :: b_min = 1.0e-4_wp
-      !> Candidates whose gap exceeds the smallest one by more than this are ignored (mm).
-      real(wp) :: max_gap = 1.0_wp
-      !> Two minima separated by a maximum less than this above the shallower one are one
-      !> patch (mm).
-      real(wp) :: merge_gap = 0.005_wp
-      !> Spacing of the dense sampling used to find the candidates (mm).
-      real(wp) :: sample_step = 0.05_wp
-      !> A(y) with the fixed reference normal, cos γ₀/(2 r_w(y)), instead of the local cos γ(y).
-      logical :: a_reference_normal = .false.
-   end type contact_options_type
-
-   !> Profiles ready for the contact search at any wheelset position.
-   type :: prepared_profiles_type
-      !> Track and wheelset dimensions.
-      type(track_type) :: track
-      !> Options.
-      type(contact_options_type) :: options
-      !> Smoothed profiles, in their own coordinates.
-      type(profile_spline_type) :: wheel, rail
-      !> Rail profile coordinates → side frame.
-      type(rigid_map_type) :: rail_map
-      !> Wheel profile y and z of the tape circle (mm).
-      real(wp) :: y_tape = 0.0_wp, z_tape = 0.0_wp
-      !> Dense samples of the wheel, profile coordinates (mm).
-      real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
-      !> Dense samples of the rail, side frame (mm).
-      real(wp), allocatable :: rail_s(:), rail_y(:), rail_z(:)
-   end type prepared_profiles_type
 
    !> The patches of one wheel position in storage the caller keeps from search to search
    !> ([[find_contact_patches]] with this type), so that a search allocates nothing once the
@@ -132,112 +95,10 @@ module shcontact_geometry_contact
       module procedure find_patches_reuse
    end interface find_contact_patches
 
-   !> A rail point, the wheel point on its normal, and the distance between them.
-   type :: normal_pair_type
-      !> Arc lengths and spline intervals on the rail and the wheel.
-      real(wp) :: s_r = 0.0_wp, s_w = 0.0_wp
-      integer :: k_r = 1, k_w = 1
-      !> Rail point in the side frame (mm) and the angle of the rail tangent there (rad).
-      real(wp) :: y = 0.0_wp, z = 0.0_wp, theta = 0.0_wp
-      !> Distance from the rail to the wheel along the rail normal (mm; < 0: interpenetration).
-      real(wp) :: gap = 0.0_wp
-      !> d(gap)/ds_r and its approximate derivative.
-      real(wp) :: dgap = 0.0_wp, d2gap = 0.0_wp
-   end type normal_pair_type
-
-   !> Convergence of the common-normal search (mm).
-   real(wp), parameter :: s_tol = 1.0e-10_wp
    !> Height adjustment stops when the smallest gap is below this (mm).
    real(wp), parameter :: gap_tol = 1.0e-10_wp
-   !> A profile is followed in a frame while |dη/ds| exceeds this (steeper: it turns back).
-   real(wp), parameter :: min_deta = 0.05_wp
-   !> Rows of the work tables: g − gap0, g'', γ, r_w, rail arc length.
-   integer, parameter :: row_count = 5
 
 contains
-
-   !> Reject options out of their meaningful range.
-   pure subroutine check_contact_options(options, error)
-      !> The options.
-      type(contact_options_type), intent(in) :: options
-      !> Set on an invalid value, naming it.
-      type(error_type), allocatable, intent(out) :: error
-
-      if (.not. (options%l_filt_wheel >= 0.0_wp .and. options%l_filt_rail >= 0.0_wp)) then
-         call fatal_error(error, 'l_filt_wheel = '//str(options%l_filt_wheel)// &
-            ', l_filt_rail = '//str(options%l_filt_rail)//' mm: expected lengths >= 0')
-      else if (.not. (options%table_step >= 1.0e-4_wp .and. options%table_step <= 1.0_wp)) then
-         call fatal_error(error, 'table_step = '//str(options%table_step)// &
-            ' mm: expected 1e-4 to 1 mm (0.02-0.05 recommended)')
-      else if (.not. (options%sample_step >= 1.0e-3_wp .and. options%sample_step <= 1.0_wp)) then
-         call fatal_error(error, 'sample_step = '//str(options%sample_step)// &
-            ' mm: expected 1e-3 to 1 mm')
-      else if (.not. (options%table_gap > 0.0_wp .and. options%table_gap <= 100.0_wp)) then
-         call fatal_error(error, 'table_gap = '//str(options%table_gap)// &
-            ' mm: expected a positive gap of a few mm')
-      else if (.not. (options%b_min > 0.0_wp .and. options%b_min < 1.0_wp)) then
-         call fatal_error(error, 'b_min = '//str(options%b_min)// &
-            ' 1/mm: expected a small positive curvature (1e-4)')
-      else if (.not. (options%max_gap >= 0.0_wp .and. options%max_gap <= 100.0_wp)) then
-         call fatal_error(error, 'max_gap = '//str(options%max_gap)//' mm: expected 0 to 100 mm')
-      else if (.not. (options%merge_gap >= 0.0_wp .and. options%merge_gap <= 1.0_wp)) then
-         call fatal_error(error, 'merge_gap = '//str(options%merge_gap)// &
-            ' mm: expected 0 to 1 mm')
-      end if
-   end subroutine check_contact_options
-
-   !> Smooth the profiles, place the rail and sample both profiles, once for all wheel
-   !> positions.
-   subroutine prepare_profiles(wheel, rail, track, options, prepared, error)
-      !> Wheel and rail profiles (right-side canonical form, physics.md §5.1).
-      type(profile_type), intent(in) :: wheel, rail
-      !> Track and wheelset dimensions.
-      type(track_type), intent(in) :: track
-      !> Options.
-      type(contact_options_type), intent(in) :: options
-      !> The result.
-      type(prepared_profiles_type), intent(out) :: prepared
-      !> Set on invalid input.
-      type(error_type), allocatable, intent(out) :: error
-      real(wp) :: s0
-      logical :: found
-      type(spline_point_type) :: p
-      real(wp), allocatable :: u(:), v(:)
-
-      call check_track(track, error)
-      if (allocated(error)) return
-      call check_contact_options(options, error)
-      if (allocated(error)) return
-      prepared%track = track
-      prepared%options = options
-      call prepared%wheel%fit(wheel, options%l_filt_wheel, error)
-      if (allocated(error)) return
-      call prepared%rail%fit(rail, options%l_filt_rail, error)
-      if (allocated(error)) return
-      call rail_placement(track, prepared%rail, prepared%rail_map, error)
-      if (allocated(error)) then
-         call prefix_error(error, source_name(rail))
-         return
-      end if
-      prepared%y_tape = tape_circle_position(track)
-      call prepared%wheel%locate_y(prepared%y_tape, s0, found)
-      if (.not. found) then
-         call fatal_error(error, source_name(wheel)//': the wheel profile does not cross its '// &
-            'tape circle y = '//str(prepared%y_tape)//' mm (flange_back_position '// &
-            str(track%flange_back_position)//' + tape_circle_offset '// &
-            str(track%tape_circle_offset)//' mm); expected the flange back at y = -70 mm for '// &
-            'an origin on the tape circle (S1002), at y = 0 for a MiniProf wheel', &
-            stat_invalid_input)
-         return
-      end if
-      p = prepared%wheel%eval(s0)
-      prepared%z_tape = p%z
-      call sample_spline(prepared%wheel, options%sample_step, prepared%wheel_s, &
-         prepared%wheel_y, prepared%wheel_z)
-      call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
-      allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
-      call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)
-   end subroutine prepare_profiles
 
    !> Find the contact patches for one wheel position, from raw profiles (smoothing included).
    subroutine find_patches_raw(wheel, rail, track, position, options, patches, error)
@@ -499,14 +360,23 @@ contains
       integer, intent(inout) :: n_pairs
       real(wp), intent(out) :: shift
       type(error_type), allocatable, intent(out) :: error
-      integer :: count, j, i
+      integer :: count, j, i, m
       real(wp) :: h, slope
       logical :: interior
 
       h = prepared%options%sample_step
       shift = 0.0_wp
-      call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
-         .false., rz, rs, rc)
+      m = size(rz)
+      if (y0 == minval(prepared%rail_y) .and. m <= size(prepared%rail_env) .and. &
+         .not. prepared%options%reference_search) then
+         ! The grid of the rail's own envelope, computed once (the same values).
+         rz = prepared%rail_env(1:m)
+         rs = prepared%rail_env_s(1:m)
+         rc = prepared%rail_env_covered(1:m)
+      else
+         call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
+            .false., rz, rs, rc)
+      end if
       call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
       rc = rc .and. wc
       gap = 0.0_wp
@@ -550,8 +420,7 @@ contains
       if (allocated(work%minima)) then
          if (size(work%minima) >= m) return
       end if
-      n_grid = max(m, int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
-         prepared%options%sample_step) + 1)
+      n_grid = max(m, sampling_grid_size(prepared))
       call reserve_vector(work%rail_env, n_grid)
       call reserve_vector(work%rail_env_s, n_grid)
       call reserve_vector(work%wheel_env, n_grid)
@@ -599,163 +468,6 @@ contains
       call reserve_vector(patch%gamma, n)
       call reserve_vector(patch%r_wheel, n)
    end subroutine reserve_patch
-
-   !> Refine every candidate; drop those that fail, and duplicates (same rail point).
-   pure subroutine refine_all(prepared, wheel_map, pairs, n_pairs)
-      type(prepared_profiles_type), intent(in) :: prepared
-      type(rigid_map_type), intent(in) :: wheel_map
-      type(normal_pair_type), intent(inout) :: pairs(:)
-      integer, intent(inout) :: n_pairs
-      logical :: ok(max_candidates)
-      integer :: i, j, n
-
-      do i = 1, n_pairs
-         call refine_pair(prepared, wheel_map, pairs(i), ok(i))
-         do j = 1, i - 1
-            if (ok(i) .and. ok(j)) then
-               if (abs(pairs(i)%s_r - pairs(j)%s_r) < 1.0e-3_wp) ok(i) = .false.
-            end if
-         end do
-      end do
-      n = 0
-      do i = 1, n_pairs
-         if (.not. ok(i)) cycle
-         n = n + 1
-         pairs(n) = pairs(i)
-      end do
-      n_pairs = n
-   end subroutine refine_all
-
-   !> Keep the candidates within max_gap of the deepest, deepest first.
-   pure subroutine select_candidates(options, pairs, n_pairs)
-      type(contact_options_type), intent(in) :: options
-      type(normal_pair_type), intent(inout) :: pairs(:)
-      integer, intent(inout) :: n_pairs
-      type(normal_pair_type) :: tmp
-      real(wp) :: gmin
-      integer :: i, j, n
-
-      gmin = minval(pairs(1:n_pairs)%gap)
-      n = 0
-      do i = 1, n_pairs
-         if (pairs(i)%gap - gmin > options%max_gap) cycle
-         n = n + 1
-         pairs(n) = pairs(i)
-      end do
-      n_pairs = n
-      do i = 2, n_pairs
-         tmp = pairs(i)
-         j = i - 1
-         do while (j >= 1)
-            if (pairs(j)%gap <= tmp%gap) exit
-            pairs(j + 1) = pairs(j)
-            j = j - 1
-         end do
-         pairs(j + 1) = tmp
-      end do
-   end subroutine select_candidates
-
-   !> The distance from the rail point at s_r to the wheel along the rail normal, and its
-   !> derivative d(gap)/ds_r = −(1 + κ_r·gap)·ζ_w' (ζ_w' the wheel's slope in the frame of the
-   !> rail tangent): zero where the two profiles have a common normal.
-   pure subroutine normal_pair(prepared, wheel_map, pair, ok)
-      type(prepared_profiles_type), intent(in) :: prepared
-      type(rigid_map_type), intent(in) :: wheel_map
-      type(normal_pair_type), intent(inout) :: pair
-      logical, intent(out) :: ok
-      type(spline_point_type) :: q
-      type(rigid_map_type) :: frame, wmap
-      type(frame_point_type) :: w
-      real(wp) :: ty, tz, kappa
-      integer :: dir
-
-      pair%k_r = prepared%rail%interval(pair%s_r, pair%k_r)
-      q = prepared%rail%eval(pair%s_r, pair%k_r)
-      call prepared%rail_map%point(q%y, q%z, pair%y, pair%z)
-      call prepared%rail_map%vector(q%dy, q%dz, ty, tz)
-      pair%theta = atan2(tz, ty)
-      kappa = (q%dy*q%d2z - q%dz*q%d2y)/hypot(q%dy, q%dz)**3
-      frame = to_frame(pair%theta, pair%y, pair%z)
-      wmap = wheel_map%then(frame)
-      w = frame_point(prepared%wheel, wmap, pair%s_w, 1, pair%k_w)
-      dir = merge(1, -1, w%deta >= 0.0_wp)
-      call locate_eta(prepared%wheel, wmap, 0.0_wp, dir, pair%s_w, pair%k_w, ok)
-      if (.not. ok) return
-      w = frame_point(prepared%wheel, wmap, pair%s_w, dir, pair%k_w)
-      ok = w%deta > min_deta
-      if (.not. ok) return
-      pair%gap = -w%zeta
-      pair%dgap = -(1.0_wp + kappa*pair%gap)*w%slope
-      ! The rail's graph curvature in its own tangent frame is κ_r.
-      pair%d2gap = kappa - w%curv
-   end subroutine normal_pair
-
-   !> The common-normal point near a start: a zero of d(gap)/ds_r where the gap has a minimum,
-   !> bracketed by stepping downhill, then safeguarded Newton steps with bisection.
-   pure subroutine refine_pair(prepared, wheel_map, pair, ok)
-      type(prepared_profiles_type), intent(in) :: prepared
-      type(rigid_map_type), intent(in) :: wheel_map
-      type(normal_pair_type), intent(inout) :: pair
-      logical, intent(out) :: ok
-      type(normal_pair_type) :: lo, hi, trial
-      real(wp) :: step, s_min, s_max, s_new
-      integer :: it, dir
-
-      s_min = prepared%rail%s(1)
-      s_max = prepared%rail%s(prepared%rail%size())
-      call normal_pair(prepared, wheel_map, pair, ok)
-      if (.not. ok) return
-      if (abs(pair%dgap) < tiny(1.0_wp)) return
-      ! Bracket: walk downhill until the slope of the gap changes sign.
-      dir = merge(1, -1, pair%dgap < 0.0_wp)
-      step = 0.02_wp
-      if (pair%d2gap > 0.0_wp) step = min(1.0_wp, max(1.0e-7_wp, 2.0_wp*abs(pair%dgap)/pair%d2gap))
-      lo = pair
-      do it = 1, 200
-         trial = lo
-         trial%s_r = min(s_max, max(s_min, lo%s_r + dir*step))
-         if (abs(trial%s_r - lo%s_r) < s_tol) then
-            ! The end of the rail profile: no minimum on this side.
-            ok = .false.
-            return
-         end if
-         call normal_pair(prepared, wheel_map, trial, ok)
-         if (.not. ok) return
-         if ((trial%dgap > 0.0_wp) .eqv. (dir > 0)) exit
-         lo = trial
-         step = min(2.0_wp, 1.6_wp*step)
-      end do
-      if (.not. ((trial%dgap > 0.0_wp) .eqv. (dir > 0))) then
-         ok = .false.
-         return
-      end if
-      ! lo: slope of the gap pointing downhill towards hi.
-      hi = trial
-      pair = trial
-      do it = 1, 100
-         if (abs(hi%s_r - lo%s_r) <= s_tol) exit
-         s_new = 0.5_wp*(lo%s_r + hi%s_r)
-         if (pair%d2gap > 0.0_wp) then
-            if (abs(pair%dgap) < pair%d2gap*abs(hi%s_r - lo%s_r)) then
-               s_new = pair%s_r - pair%dgap/pair%d2gap
-               if ((s_new - lo%s_r)*(s_new - hi%s_r) >= 0.0_wp) s_new = 0.5_wp*(lo%s_r + hi%s_r)
-            end if
-         end if
-         trial = pair
-         trial%s_r = s_new
-         call normal_pair(prepared, wheel_map, trial, ok)
-         if (.not. ok) return
-         step = abs(trial%s_r - pair%s_r)
-         pair = trial
-         if (step <= s_tol) exit
-         if ((pair%dgap > 0.0_wp) .eqv. (hi%dgap > 0.0_wp)) then
-            hi = pair
-         else
-            lo = pair
-         end if
-      end do
-      ok = .true.
-   end subroutine refine_pair
 
    !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
    !> followed outwards in steps h up to table_gap (physics.md §5.4), into patch k of `patches`.
@@ -848,94 +560,6 @@ contains
       patch%gamma(i) = row(3)
       patch%r_wheel(i) = row(4)
    end subroutine put_row
-
-   !> One row of the tables from the rail and wheel points of a strip.
-   pure function strip_row(prepared, r, w, theta, gap0) result(row)
-      type(prepared_profiles_type), intent(in) :: prepared
-      type(frame_point_type), intent(in) :: r, w
-      real(wp), intent(in) :: theta, gap0
-      real(wp) :: row(row_count)
-      row(1) = (r%zeta - w%zeta) - gap0
-      row(2) = r%curv - w%curv
-      ! Local contact angle: the wheel surface's angle in the side frame (see module header).
-      row(3) = theta + atan(w%slope)
-      row(4) = prepared%track%nominal_radius + w%v - prepared%z_tape
-      row(5) = r%s
-   end function strip_row
-
-   !> Follow both profiles from the reference point in steps `step` of η, until the gap exceeds
-   !> table_gap or a profile ends or turns back. The patch's own basin ends at the first maximum
-   !> behind which the gap falls by more than merge_gap (a neighbouring minimum): `n_basin` rows
-   !> and the rail arc length `s_basin` there. The table runs on past it into the neighbour's
-   !> basin, so that the patch can grow into its neighbour under load.
-   pure subroutine follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, rows, &
-         n_rows, n_basin, s_basin)
-      type(prepared_profiles_type), intent(in) :: prepared
-      type(rigid_map_type), intent(in) :: rmap, wmap
-      type(frame_point_type), intent(in) :: r0, w0
-      integer, intent(in) :: dir_r, dir_w
-      real(wp), intent(in) :: theta, gap0, step
-      real(wp), intent(out) :: rows(:, :)
-      integer, intent(out) :: n_rows, n_basin
-      real(wp), intent(out) :: s_basin
-      type(frame_point_type) :: r, w
-      real(wp) :: s_r, s_w, top
-      integer :: k_r, k_w, j, j_top
-      logical :: ok_r, ok_w, cut
-
-      s_r = r0%s; s_w = w0%s; k_r = r0%k; k_w = w0%k
-      top = 0.0_wp; j_top = 0
-      cut = .false.
-      n_rows = 0
-      n_basin = 0
-      do j = 1, size(rows, 2)
-         call locate_eta(prepared%rail, rmap, j*step, dir_r, s_r, k_r, ok_r)
-         call locate_eta(prepared%wheel, wmap, j*step, dir_w, s_w, k_w, ok_w)
-         if (.not. (ok_r .and. ok_w)) exit
-         r = frame_point(prepared%rail, rmap, s_r, dir_r, k_r)
-         w = frame_point(prepared%wheel, wmap, s_w, dir_w, k_w)
-         if (r%deta <= min_deta .or. w%deta <= min_deta) exit
-         rows(:, j) = strip_row(prepared, r, w, theta, gap0)
-         n_rows = j
-         if (.not. cut) then
-            if (rows(1, j) >= top) then
-               top = rows(1, j); j_top = j
-            else if (rows(1, j) < top - prepared%options%merge_gap) then
-               cut = .true.
-               n_basin = j_top
-            end if
-         end if
-         if (rows(1, j) > prepared%options%table_gap) exit
-      end do
-      if (.not. cut) n_basin = n_rows
-      s_basin = r0%s
-      if (n_basin > 0) s_basin = rows(5, n_basin)
-   end subroutine follow
-
-   !> Sample a spline at all knots and between them at spacing ≤ step.
-   pure subroutine sample_spline(spline, step, s, y, z)
-      type(profile_spline_type), intent(in) :: spline
-      real(wp), intent(in) :: step
-      real(wp), allocatable, intent(out) :: s(:), y(:), z(:)
-      type(spline_point_type) :: p
-      integer :: k, i, m, n, nsub(spline%size() - 1)
-
-      n = spline%size()
-      nsub = max(1, ceiling((spline%s(2:n) - spline%s(1:n - 1))/step))
-      m = sum(nsub) + 1
-      allocate (s(m), y(m), z(m))
-      m = 0
-      do k = 1, n - 1
-         do i = 0, nsub(k) - 1
-            m = m + 1
-            s(m) = spline%s(k) + i*(spline%s(k + 1) - spline%s(k))/nsub(k)
-            p = spline%eval(s(m), k)
-            y(m) = p%y; z(m) = p%z
-         end do
-      end do
-      p = spline%eval(spline%s(n))
-      s(m + 1) = p%s; y(m + 1) = p%y; z(m + 1) = p%z
-   end subroutine sample_spline
 
    !> Write the strip tables of all patches to a text file: a header naming the columns and
    !> units, then per patch a comment line with its reference data and one line per table point
