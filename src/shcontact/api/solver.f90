@@ -37,7 +37,8 @@ module shcontact_api_solver
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
-      contact_patches_type, prepare_profiles, find_contact_patches, extract_patch, max_candidates
+      contact_patches_type, prepare_profiles, find_contact_patches, extract_patch, max_candidates, &
+      prepare_wheel
    use shcontact_normal_options, only: normal_options_type, check_normal_options
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
       solve_approach, solve_vertical_load
@@ -551,12 +552,13 @@ contains
       type(contact_options_type) :: options
 
       if (self%has_yawed .and. same(yaw, self%yawed_angle)) return
+      if (.not. self%has_yawed) self%yawed = self%prepared
       self%has_yawed = .false.
       call yawed_wheel_profile(self%wheel, self%prepared%wheel, self%track, &
          self%prepared%z_tape, yaw, locus)
       options = self%contact_options
       options%l_filt_wheel = 0.0_wp
-      call prepare_profiles(locus, self%rail, self%track, options, self%yawed, error)
+      call prepare_wheel(locus, self%track, options, self%yawed, error)
       if (allocated(error)) then
          call prefix_error(error, 'yawed wheel (yaw '//str_real(yaw)//' rad)')
          return
