@@ -21,11 +21,17 @@
 !>
 !> The patch compared with CONTACT's single patch is our most loaded one; all our patches enter
 !> the track totals.
+!>
+!> **Diagnostic.** solve_kinematic carries the rigid slip to the strips with the 'additive' spin
+!> model; CONTACT's module 1 applies a uniform rigid slip on a planar patch. For the cases without
+!> yaw (whose geometry `solve` reproduces exactly) each case is solved a second time with `solve`,
+!> the same creepages at the same point and the 'uniform' spin model (the library default for
+!> prescribed creepages): f_x, f_y "uniform" in the tables.
 module validate_kinematic
    use, intrinsic :: iso_fortran_env, only: output_unit
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, track_type, &
       material_type, contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force, wheelset_state_type
+      load_vertical_force, wheelset_state_type, creepage_type
    use validate_csv, only: csv_table_type, read_csv, column, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
    implicit none
@@ -72,6 +78,9 @@ module validate_kinematic
       real(wp) :: fn_other = 0.0_wp, y_other = 0.0_wp
       !> f = F/(μF_n) on the rail, ours and CONTACT's.
       real(wp) :: fx = 0.0_wp, fy = 0.0_wp, fx_ref = 0.0_wp, fy_ref = 0.0_wp
+      !> Diagnostic (module text): ours with the 'uniform' spin model, cases without yaw.
+      logical :: has_uniform = .false.
+      real(wp) :: fx_uniform = 0.0_wp, fy_uniform = 0.0_wp
       !> Totals on the rail in the track frame (N), ours and CONTACT's.
       real(wp) :: fx_tr = 0.0_wp, fy_tr = 0.0_wp, fz_tr = 0.0_wp
       real(wp) :: fx_tr_ref = 0.0_wp, fy_tr_ref = 0.0_wp, fz_tr_ref = 0.0_wp
@@ -216,6 +225,15 @@ contains
       c%fn_ref_normal_only = vertical_load/cos(c%delta_ref)
       if (v(3) == 0.0_wp) c%r_ref = (2.0_wp + c%nux_ref)/(2.0_wp - c%nux_ref)*v(1)/abs(v(4))
       call take_ours(result, abs(v(4))/v(1), c)
+      if (c%yaw /= 0.0_wp) return
+      associate (p => result%main)
+         call solver%solve(c%y_ws, 0.0_wp, contact_load_type(load_vertical_force, &
+            vertical_load), creepage_type(p%nu_x, p%nu_y, p%phi), result, error)
+      end associate
+      if (allocated(error)) return
+      c%has_uniform = .true.
+      c%fx_uniform = -result%main%fx_norm
+      c%fy_uniform = -result%main%fy_norm
    end subroutine solve_case
 
    !> Our main patch and totals, in CONTACT's signs, and the creepage transfer (module text).
@@ -347,7 +365,8 @@ contains
          'z_ref_mm,gamma_ours_rad,delta_ref_rad,x_g_mm,y_g_mm,nux_ours,nux_ours_transferred,'// &
          'nux_ref,nuy_ours,nuy_ours_transferred,nuy_ref,phi_ours_per_mm,'// &
          'phi_ours_transferred_per_mm,phi_ref_per_mm,r_ours_mm,r_ref_mm,fn_ours_N,fn_ref_N,'// &
-         'fn_rel_err,fn_ref_normal_only_N,fn_other_patches_N,y_other_patch_mm,fx_ours,fx_ref,fy_ours,fy_ref,dfx,dfy,'// &
+         'fn_rel_err,fn_ref_normal_only_N,fn_other_patches_N,y_other_patch_mm,'// &
+         'fx_ours_uniform,fy_ours_uniform,fx_ours,fx_ref,fy_ours,fy_ref,dfx,dfy,'// &
          'fx_tr_ours_N,fx_tr_ref_N,fy_tr_ours_N,fy_tr_ref_N,fz_tr_ours_N,fz_tr_ref_N', error)
       if (allocated(error)) return
       do i = 1, size(cases)
@@ -362,7 +381,7 @@ contains
                c%y_ours, c%y_ref, c%z_ours, c%z_ref, c%gamma_ours, c%delta_ref, c%x_g, c%y_g, &
                c%nux, c%nux_t, c%nux_ref, c%nuy, c%nuy_t, c%nuy_ref, c%phi, c%phi_t, &
                c%phi_ref, c%r_ours, c%r_ref, c%fn, c%fn_ref, (c%fn - c%fn_ref)/c%fn_ref, &
-               c%fn_ref_normal_only, c%fn_other, c%y_other, c%fx, c%fx_ref, c%fy, c%fy_ref, &
+               c%fn_ref_normal_only, c%fn_other, c%y_other, c%fx_uniform, c%fy_uniform, c%fx, c%fx_ref, c%fy, c%fy_ref, &
                c%fx - c%fx_ref, c%fy - c%fy_ref, c%fx_tr, c%fx_tr_ref, c%fy_tr, c%fy_tr_ref, &
                c%fz_tr, c%fz_tr_ref], text=[character(len=8) :: c%name, 'ok'])
          end associate
@@ -451,9 +470,11 @@ contains
       end do
       write (unit, '(a)') '', 'Contact point, normal force and forces (ours / CONTACT; '// &
          'y in track coordinates, x = lead along the track; totals on the rail, kN). "patches" '// &
-         'counts our loaded patches; the others carry F_n,other at y_other.', '', &
-         '| case | patches (F_n,other kN @ y_other) | y (mm) | x (mm) | δ (°) | F_n (kN) | f_x | f_y | Δf_x, Δf_y | '// &
-         'F_x,tr | F_y,tr | F_z,tr |', '|---|---|---|---|---|---|---|---|---|---|---|---|'
+         'counts our loaded patches; the others carry F_n,other at y_other. "uniform": ours '// &
+         'with the uniform spin model (cases without yaw, module text).', '', &
+         '| case | patches (F_n,other kN @ y_other) | y (mm) | x (mm) | δ (°) | F_n (kN) | '// &
+         'f_x | f_y | Δf_x, Δf_y | uniform: Δf_x, Δf_y | F_x,tr | F_y,tr | F_z,tr |', &
+         '|---|---|---|---|---|---|---|---|---|---|---|---|---|'
       do i = 1, size(cases)
          associate (c => cases(i))
             if (.not. c%ok) cycle
@@ -464,7 +485,7 @@ contains
                ftext(1.0e-3_wp*c%fn_ref, 1)//' | '//ftext(c%fx, 3)//' / '// &
                ftext(c%fx_ref, 3)//' | '//ftext(c%fy, 3)//' / '//ftext(c%fy_ref, 3)//' | '// &
                ftext(c%fx - c%fx_ref, 3, signed=.true.)//', '// &
-               ftext(c%fy - c%fy_ref, 3, signed=.true.)//' | '// &
+               ftext(c%fy - c%fy_ref, 3, signed=.true.)//' | '//uniform_text(c)//' | '// &
                ftext(1.0e-3_wp*c%fx_tr, 2)//' / '//ftext(1.0e-3_wp*c%fx_tr_ref, 2)//' | '// &
                ftext(1.0e-3_wp*c%fy_tr, 2)//' / '//ftext(1.0e-3_wp*c%fy_tr_ref, 2)//' | '// &
                ftext(1.0e-3_wp*c%fz_tr, 2)//' / '//ftext(1.0e-3_wp*c%fz_tr_ref, 2)//' |'
@@ -472,6 +493,15 @@ contains
       end do
       close (unit)
    end subroutine write_markdown
+
+   !> Δf_x, Δf_y of the uniform-spin diagnostic, or a dash.
+   function uniform_text(c) result(text)
+      type(kinematic_case_type), intent(in) :: c
+      character(len=:), allocatable :: text
+      text = '–'
+      if (c%has_uniform) text = ftext(c%fx_uniform - c%fx_ref, 3, signed=.true.)//', '// &
+         ftext(c%fy_uniform - c%fy_ref, 3, signed=.true.)
+   end function uniform_text
 
    !> Our loaded patches, and the others' load and position when there are several.
    function patches_text(c) result(text)
