@@ -7,7 +7,8 @@
 !> doc/validation/ (all relative to the worktree root), DIR = REFERENCE/kinematic_sample/. Runs
 !> our cases matching the reference (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa,
 !> ν = 0.27, μ = 0.3; README §2) and writes the CSV tables that doc/validation.md quotes and
-!> scripts/validation_figures.py draws; then the kinematic sample (validate_kinematic). With
+!> scripts/validation_figures.py draws; the DOE on every shared patch (validate_patches); then
+!> the kinematic sample (validate_kinematic). With
 !> --kinematic only the kinematic sample is run. When the reference data or the profiles are
 !> absent it says so and ends normally (exit 0).
 program validate
@@ -20,6 +21,7 @@ program validate
       write_strips, manchester_rows
    use validate_report, only: recommended_type, run_tangential
    use validate_kinematic, only: run_kinematic
+   use validate_patches, only: run_patches
    implicit none
 
    character(len=:), allocatable :: ref_root, profiles_dir, out_dir, ref_dir
@@ -70,6 +72,7 @@ program validate
       error)
    if (.not. allocated(error)) call run_tangential(ref_dir, out_dir, geometry, material, rec, &
       error)
+   if (.not. allocated(error)) call run_patches(ref_root, prepared, out_dir, error)
    if (allocated(error)) then
       write (error_unit, '(a)') 'shcontact-validate: '//error%message
       error stop 1
