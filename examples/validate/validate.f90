@@ -1,4 +1,4 @@
-!> shcontact-validate: the validation against the exact theory (issues 4, 5, 7, 12).
+!> shcontact-validate: the validation against the exact theory (issues 4, 5, 7, 12, 13).
 !>
 !>     fpm run --example shcontact-validate --profile release [-- REFERENCE PROFILES OUTPUT]
 !>     fpm run --example shcontact-validate --profile release -- --kinematic [DIR PROFILES OUTPUT]
@@ -8,8 +8,7 @@
 !> our cases matching the reference (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa,
 !> ν = 0.27, μ = 0.3; README §2) and writes the CSV tables that doc/validation.md quotes and
 !> scripts/validation_figures.py draws; the DOE on every shared patch (validate_patches); then
-!> the kinematic sample (validate_kinematic). With
-!> --kinematic only the kinematic sample is run. When the reference data or the profiles are
+!> the kinematic sample (validate_kinematic). With --kinematic only the kinematic sample is run. When the reference data or the profiles are
 !> absent it says so and ends normally (exit 0).
 program validate
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
