@@ -28,12 +28,17 @@ module test_validation
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
+      contact_result_type, load_vertical_force
    implicit none
    private
    public :: collect_validation
 
    character(len=*), parameter :: profiles_dir = '../shared/profiles/'
    character(len=*), parameter :: reference_dir = '../shared/reference/ty0_literal/'
+   character(len=*), parameter :: kinematic_file = &
+      '../shared/reference/kinematic_sample/kinematic_sample.csv'
    !> The reference case (README §2).
    real(wp), parameter :: normal_force = 64700.0_wp
 
@@ -44,7 +49,9 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('normal_patch_vs_exact', test_normal), &
-         new_unittest('doe_10x10x10_vs_exact', test_doe) &
+         new_unittest('doe_10x10x10_vs_exact', test_doe), &
+         new_unittest('kinematic_sample_vs_exact', test_kinematic), &
+         new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8) &
          ]
    end subroutine collect_validation
 
@@ -129,6 +136,157 @@ contains
       call check(error, -result%fy_norm, -0.2869_wp, thr=0.1_wp, message='headline f_y')
    end subroutine test_doe
 
+   !> solve_kinematic on CONTACT's kinematic sample (doc/validation.md §6; CONTACT's failed case
+   !> c0003 has no `ok` and is not read). Keeps the statistics quoted there true within ±0.002
+   !> (f) and ±0.005 (F_n ratio), and checks the creepages: ours carried from our geometric point
+   !> to CONTACT's weighted centre (rigid slip, φ̄ the mean of the spin at both points, module
+   !> validate_kinematic) against CONTACT's. Tolerances: on the tread (|δ| < 0.5 rad) 0.02 ‰ in
+   !> ξ and η, 2 % of the 1 ‰ kinematic steps and five times the largest residual found (0.004 ‰,
+   !> which is the size of CONTACT's printed digits and of the curved-surface transfer);
+   !> 0.001 1/m in φ (0.4 % of the smallest tread spin). On the flange (δ ≈ −69°) η within
+   !> 0.02 ‰ and φ within 0.005 1/m (0.25 %), ξ within 1 ‰: there our rolling radius is
+   !> 0.4 mm larger than CONTACT's (0.9 ‰ in ξ, doc/validation.md §6.3), an open difference this
+   !> test bounds but does not hide.
+   subroutine test_kinematic(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=12), parameter :: names(18) = [character(len=12) :: 'y_ws_mm', 'yaw_rad', &
+         'vs_mm_s', 'vy_mm_s', 'vyaw_rad_s', 'vpitch_rad_s', 'xcp_tr_mm', 'ycp_tr_mm', &
+         'zcp_tr_mm', 'delta_rad', 'cksi', 'ceta', 'cphi_per_mm', 'fn_N', 'fx_norm', &
+         'fs_norm', 'npatch', 'patch']
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(track_type) :: track
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: rows(:, :), ex(:), ey(:), en(:)
+      real(wp) :: phi_t, y_g, x_g, nux_t, nuy_t, tol_xi
+      integer :: i, n
+      logical :: there
+
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (there) inquire (file=kinematic_file, exist=there)
+      if (.not. there) then
+         call skip_test(error, '../shared (profiles or kinematic sample) is absent')
+         return
+      end if
+      call read_columns(kinematic_file, names, rows, error, row_tag='ok')
+      if (allocated(error)) return
+      n = size(rows, 1)
+      call check(error, n, 35, message='kinematic sample: cases CONTACT solved')
+      if (allocated(error)) return
+      track%rail_canted = .true.
+      call solver%init(profiles_dir//'MBench_S1002_v3.prw', profiles_dir// &
+         'MBench_UIC60_v3.prr', err, track=track, material=material_type( &
+         shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp))
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      allocate (ex(n), ey(n), en(n))
+      do i = 1, n
+         associate (r => rows(i, :))
+            call solver%solve_kinematic(wheelset_state_type(y_ws=r(1), yaw=r(2), &
+               v_forward=r(3), v_lateral=r(4), yaw_rate=r(5), pitch_rate=r(6)), &
+               contact_load_type(load_vertical_force, normal_force), result, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message)
+               return
+            end if
+            associate (p => result%main)
+               ! CONTACT's sign: rail side, both the forces and the creepages flip.
+               ex(i) = abs(-p%fx_norm - r(15))
+               ey(i) = abs(-p%fy_norm - r(16))
+               en(i) = abs(p%fn - r(14))/r(14)
+               phi_t = -p%phi - (sin(r(10)) - sin(p%gamma0))*abs(r(6))/r(3)
+               y_g = (p%y_track - r(8))*cos(r(10)) + (p%z_track - r(9))*sin(r(10))
+               x_g = p%x_track - r(7)
+               nux_t = -p%nu_x + 0.5_wp*(-p%phi + phi_t)*y_g
+               nuy_t = -p%nu_y - 0.5_wp*(-p%phi + phi_t)*x_g
+            end associate
+            tol_xi = merge(2.0e-5_wp, 1.0e-3_wp, abs(r(10)) < 0.5_wp)
+            call check(error, nux_t, r(11), thr=tol_xi, message='transferred xi')
+            if (allocated(error)) return
+            call check(error, nuy_t, r(12), thr=2.0e-5_wp, message='transferred eta')
+            if (allocated(error)) return
+            call check(error, phi_t, r(13), thr=merge(1.0e-6_wp, 5.0e-6_wp, &
+               abs(r(10)) < 0.5_wp), message='transferred phi (rad/mm)')
+            if (allocated(error)) return
+         end associate
+      end do
+      ! doc/validation.md Table 9, "all".
+      call check(error, maxval(ex), 0.068_wp, thr=0.002_wp, message='max |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, percentile(ex, 0.8_wp), 0.062_wp, thr=0.002_wp, &
+         message='P80 |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, maxval(ey), 0.045_wp, thr=0.002_wp, message='max |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp), 0.030_wp, thr=0.002_wp, &
+         message='P80 |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, maxval(en), 0.293_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
+      if (allocated(error)) return
+      call check(error, percentile(en, 0.8_wp), 0.109_wp, thr=0.005_wp, &
+         message='P80 |Delta F_n|/F_n')
+   end subroutine test_kinematic
+
+   !> Issue 13: the defaults on the second shared patch, ty5p8_literal (Y_WS = 5.8 mm, δ = −19.9°,
+   !> CONTACT's reference point at y_track = 726.047 mm), against its exact 20³ DOE: the numbers
+   !> quoted in doc/validation.md Table 10 within ±0.002 (max 0.034 / 0.033, P80 |Δf_y| 0.010),
+   !> and the targets max |Δf| ≤ 0.1, P80 |Δf_y| ≤ 0.04.
+   subroutine test_doe_ty5p8(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: doe = '../shared/reference/ty5p8_literal/'// &
+         'doe_20x20x20_exact_nonhertz.csv'
+      type(normal_patch_type) :: patch
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: cases(:, :), ex(:), ey(:)
+      integer :: i, n
+      logical :: there
+
+      inquire (file=doe, exist=there)
+      if (.not. there) then
+         call skip_test(error, doe//' is absent')
+         return
+      end if
+      call reference_patch(patch, error, y_ws=5.8_wp, y_ref=726.0468_wp)
+      if (allocated(error)) return
+      call read_columns(doe, [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'fx', 'fy'], &
+         cases, error)
+      if (allocated(error)) return
+      call recommended_options(options)
+      call prepare_fastsim_sh(ws, patch, material_type(), options, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      n = size(cases, 1)
+      allocate (ex(n), ey(n))
+      do i = 1, n
+         call solve_prepared(ws, creepage_type(-cases(i, 1), -cases(i, 2), &
+            -1.0e-3_wp*cases(i, 3)), result, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message)
+            return
+         end if
+         ex(i) = abs(-result%fx_norm - cases(i, 4))
+         ey(i) = abs(-result%fy_norm - cases(i, 5))
+      end do
+      call check(error, n, 8000, message='ty5p8 DOE cases read')
+      if (allocated(error)) return
+      call check(error, maxval(ex), 0.034_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, maxval(ey), 0.033_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp), 0.010_wp, thr=0.002_wp, &
+         message='ty5p8 DOE P80 |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, max(maxval(ex), maxval(ey)) <= 0.1_wp .and. &
+         percentile(ey, 0.8_wp) <= 0.04_wp, message='ty5p8 DOE: targets missed')
+   end subroutine test_doe_ty5p8
+
    ! ------------------------------------------------------------------ helpers
 
    !> The recommended tangential settings (doc/validation.md), explicitly: W1, uniform spin,
@@ -146,9 +304,12 @@ contains
    !> The normal solution of the reference case: Manchester profiles, Y_WS = 0, semi-Hertz with
    !> the local-Hertz reduction, 100 strips, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27 (the
    !> material_type defaults). Skips when the shared data is absent.
-   subroutine reference_patch(patch, error)
+   subroutine reference_patch(patch, error, y_ws, y_ref)
       type(normal_patch_type), intent(out) :: patch
       type(error_type), allocatable, intent(out) :: error
+      !> Y_WS (default 0) and CONTACT's reference point (track y): the patch nearest it is taken
+      !> (default: the deepest).
+      real(wp), intent(in), optional :: y_ws, y_ref
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(patch_geometry_type), allocatable :: geometry(:)
@@ -156,6 +317,8 @@ contains
       type(normal_contact_type) :: contact
       type(lib_error), allocatable :: err
       logical :: there
+      real(wp) :: shift
+      integer :: k, best
 
       inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
       if (there) inquire (file=reference_dir//'doe_10x10x10_exact_nonhertz.csv', exist=there)
@@ -168,11 +331,19 @@ contains
       if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
       if (.not. allocated(err)) call clean_profile(rail, err)
       track%rail_canted = .true.
+      shift = 0.0_wp
+      if (present(y_ws)) shift = y_ws
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
-         wheelset_position_type(y_ws=0.0_wp), contact_options_type(), geometry, err)
+         wheelset_position_type(y_ws=shift), contact_options_type(), geometry, err)
+      best = 1
+      if (.not. allocated(err) .and. present(y_ref)) then
+         do k = 2, size(geometry)
+            if (abs(geometry(k)%y_track - y_ref) < abs(geometry(best)%y_track - y_ref)) best = k
+         end do
+      end if
       if (.not. allocated(err)) call new_normal_options(options, err, method='semi-hertz', &
          reduction='local-hertz', n_strips=100)
-      if (.not. allocated(err)) call prepare_normal_contact(contact, geometry(1), options, &
+      if (.not. allocated(err)) call prepare_normal_contact(contact, geometry(best), options, &
          material_type(), err)
       if (.not. allocated(err)) call solve_load(contact, normal_force, patch, err)
       if (allocated(err)) call test_failed(error, err%message)

@@ -1,12 +1,15 @@
-!> shcontact-validate: the validation against the exact theory (issues 4, 5, 7).
+!> shcontact-validate: the validation against the exact theory (issues 4, 5, 7, 12, 13).
 !>
 !>     fpm run --example shcontact-validate --profile release [-- REFERENCE PROFILES OUTPUT]
+!>     fpm run --example shcontact-validate --profile release -- --kinematic [DIR PROFILES OUTPUT]
 !>
 !> Defaults: REFERENCE = ../shared/reference/, PROFILES = ../shared/profiles/, OUTPUT =
-!> doc/validation/ (all relative to the worktree root). Runs our cases matching the reference
-!> (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27, μ = 0.3; README §2) and
-!> writes the CSV tables that doc/validation.md quotes and scripts/validation_figures.py draws.
-!> When the reference data or the profiles are absent it says so and ends normally (exit 0).
+!> doc/validation/ (all relative to the worktree root), DIR = REFERENCE/kinematic_sample/. Runs
+!> our cases matching the reference (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa,
+!> ν = 0.27, μ = 0.3; README §2) and writes the CSV tables that doc/validation.md quotes and
+!> scripts/validation_figures.py draws; the DOE on every shared patch (validate_patches); then
+!> the kinematic sample (validate_kinematic). With --kinematic only the kinematic sample is run. When the reference data or the profiles are
+!> absent it says so and ends normally (exit 0).
 program validate
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact, only: wp, error_type, material_type, prepared_profiles_type, &
@@ -16,6 +19,8 @@ program validate
    use validate_normal, only: patch_summary_type, summarise_patch, reference_patch_summary, &
       write_strips, manchester_rows
    use validate_report, only: recommended_type, run_tangential
+   use validate_kinematic, only: run_kinematic
+   use validate_patches, only: run_patches
    implicit none
 
    character(len=:), allocatable :: ref_root, profiles_dir, out_dir, ref_dir
@@ -25,9 +30,13 @@ program validate
    type(recommended_type) :: rec
    type(error_type), allocatable :: error
    real(wp) :: y_geo
-   logical :: there
+   logical :: there, kinematic_only
 
-   call arguments(ref_root, profiles_dir, out_dir)
+   call arguments(ref_root, profiles_dir, out_dir, kinematic_only)
+   if (kinematic_only) then
+      call kinematic_sample(ref_root, profiles_dir, out_dir)
+      stop
+   end if
    ref_dir = ref_root//'ty0_literal/'
    inquire (file=ref_dir//'summary.csv', exist=there)
    if (.not. there) then
@@ -62,20 +71,53 @@ program validate
       error)
    if (.not. allocated(error)) call run_tangential(ref_dir, out_dir, geometry, material, rec, &
       error)
+   if (.not. allocated(error)) call run_patches(ref_root, prepared, out_dir, error)
    if (allocated(error)) then
       write (error_unit, '(a)') 'shcontact-validate: '//error%message
       error stop 1
    end if
    write (output_unit, '(a)') 'shcontact-validate: tables written to '//out_dir
+   call kinematic_sample(ref_root//'kinematic_sample/', profiles_dir, out_dir)
 
 contains
 
-   !> Optional positional arguments REFERENCE PROFILES OUTPUT (directories).
-   subroutine arguments(ref_root, profiles_dir, out_dir)
+   !> Optional arguments: --help; --kinematic; then REFERENCE PROFILES OUTPUT (directories; with
+   !> --kinematic the first is the kinematic sample's directory).
+   subroutine arguments(ref_root, profiles_dir, out_dir, kinematic_only)
       character(len=:), allocatable, intent(out) :: ref_root, profiles_dir, out_dir
-      ref_root = directory_argument(1, '../shared/reference/')
-      profiles_dir = directory_argument(2, '../shared/profiles/')
-      out_dir = directory_argument(3, 'doc/validation/')
+      logical, intent(out) :: kinematic_only
+      character(len=64) :: first
+      integer :: shift
+
+      first = ''
+      if (command_argument_count() >= 1) call get_command_argument(1, first)
+      if (first == '--help' .or. first == '-h') then
+         write (output_unit, '(a)') &
+            'usage: shcontact-validate [REFERENCE [PROFILES [OUTPUT]]]', &
+            '       shcontact-validate --kinematic [DIR [PROFILES [OUTPUT]]]', &
+            '', &
+            'Compares shcontact with the exact theory (CONTACT) and writes the tables of', &
+            'doc/validation.md. Without an option: every comparison, the kinematic sample', &
+            'last. --kinematic: only solve_kinematic against the kinematic sample', &
+            '(kinematic_cases.csv, kinematic_summary.csv, kinematic.md).', &
+            'Defaults: REFERENCE ../shared/reference/, PROFILES ../shared/profiles/,', &
+            'OUTPUT doc/validation/, DIR ../shared/reference/kinematic_sample/.'
+         stop
+      end if
+      kinematic_only = first == '--kinematic'
+      if (first(1:1) == '-' .and. .not. kinematic_only) then
+         write (error_unit, '(a)') 'shcontact-validate: unknown option "'//trim(first)// &
+            '" (see --help)'
+         error stop 2
+      end if
+      shift = merge(1, 0, kinematic_only)
+      if (kinematic_only) then
+         ref_root = directory_argument(1 + shift, '../shared/reference/kinematic_sample/')
+      else
+         ref_root = directory_argument(1, '../shared/reference/')
+      end if
+      profiles_dir = directory_argument(2 + shift, '../shared/profiles/')
+      out_dir = directory_argument(3 + shift, 'doc/validation/')
    end subroutine arguments
 
    !> Argument i as a directory with a trailing '/', or the default.
@@ -90,6 +132,26 @@ contains
       dir = trim(buf)
       if (dir(len(dir):len(dir)) /= '/') dir = dir//'/'
    end function directory_argument
+
+   !> The kinematic sample (issue 12), or a note when it is absent.
+   subroutine kinematic_sample(sample_dir, profiles_dir, out_dir)
+      character(len=*), intent(in) :: sample_dir, profiles_dir, out_dir
+      type(error_type), allocatable :: error
+      logical :: there
+      inquire (file=sample_dir//'kinematic_sample.csv', exist=there)
+      if (there) inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) then
+         write (output_unit, '(a)') 'shcontact-validate: the kinematic sample '//sample_dir// &
+            'kinematic_sample.csv or the profiles are absent; skipped.'
+         return
+      end if
+      call run_kinematic(sample_dir, profiles_dir, out_dir, error)
+      if (allocated(error)) then
+         write (error_unit, '(a)') 'shcontact-validate: '//error%message
+         error stop 1
+      end if
+      write (output_unit, '(a)') 'shcontact-validate: kinematic tables written to '//out_dir
+   end subroutine kinematic_sample
 
    !> CONTACT's y of the geometric contact point in its local coordinates (summary.csv y_geo).
    subroutine reference_y_geo(ref_dir, y_geo, error)

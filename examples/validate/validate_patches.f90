@@ -1,0 +1,207 @@
+!> The prescribed-creepage DOE on every shared patch (issue 13): for each patch folder of
+!> ../shared/reference/ (ty0_literal, ty5p8_literal) our patch at the same Y_WS (the one nearest
+!> CONTACT's reference point), loaded with F_n = 64.7 kN, and the exact-theory DOE of that folder
+!> (10³ for ty0, 20³ for ty5p8) solved by the library defaults and the main alternatives, one
+!> setting changed at a time. Writes patches_doe.csv and patches_doe.md.
+!>
+!> The creepages are prescribed at the geometric contact point, as in §3 (module 3); the sign
+!> mapping is that of validate_tangential.
+module validate_patches
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, material_type, &
+      prepared_profiles_type, patch_geometry_type, normal_patch_type, find_contact_patches, &
+      wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
+   use shcontact_tangential_options, only: parse_spin_flexibility
+   use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
+   use validate_case, only: solve_normal
+   use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
+      error_stats
+   implicit none
+   private
+
+   public :: run_patches, patch_names, n_configs, config_labels
+
+   !> The shared patch folders.
+   character(len=*), parameter :: patch_names(2) = [character(len=13) :: 'ty0_literal', &
+      'ty5p8_literal']
+   !> Configurations: the defaults first, then one setting changed at a time.
+   integer, parameter :: n_configs = 8
+   character(len=*), parameter :: config_labels(n_configs) = [character(len=40) :: &
+      'defaults (W1, uniform, longitudinal)', 'bound ellipsoidal', 'bound parabolic', &
+      'bound weighted-slip (W2)', 'bound clipped (W3)', 'spin flexibility spin', &
+      'spin model additive', 'normal reduction constant']
+   character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
+      'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted']
+   character(len=*), parameter :: c_flex(n_configs) = [character(len=12) :: 'longitudinal', &
+      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'spin', 'longitudinal', &
+      'longitudinal']
+   character(len=*), parameter :: c_spin(n_configs) = [character(len=8) :: 'uniform', &
+      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform']
+   character(len=*), parameter :: c_reduction(n_configs) = [character(len=11) :: &
+      'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', &
+      'local-hertz', 'local-hertz', 'constant']
+
+contains
+
+   !> Every patch × configuration; writes patches_doe.csv and patches_doe.md.
+   subroutine run_patches(ref_root, prepared, out_dir, error)
+      !> ../shared/reference/ (with a trailing '/').
+      character(len=*), intent(in) :: ref_root
+      !> The prepared Manchester profiles (validate_case%load_manchester).
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Output directory.
+      character(len=*), intent(in) :: out_dir
+      !> Set when a file cannot be read or written.
+      type(error_type), allocatable, intent(out) :: error
+      type(error_stats_type) :: ex(n_configs, size(patch_names)), ey(n_configs, size(patch_names))
+      character(len=24) :: doe_names(size(patch_names))
+      integer :: n_cases(size(patch_names))
+      type(csv_writer_type) :: out
+      integer :: ip, ic
+
+      do ip = 1, size(patch_names)
+         call run_patch(ref_root//trim(patch_names(ip))//'/', prepared, ex(:, ip), ey(:, ip), &
+            doe_names(ip), n_cases(ip), error)
+         if (allocated(error)) return
+      end do
+      call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
+         'spin_flexibility,reduction,n_cases,dfx_max,dfx_p80,dfx_mean,dfy_max,dfy_p80,dfy_mean', &
+         error)
+      if (allocated(error)) return
+      do ip = 1, size(patch_names)
+         do ic = 1, n_configs
+            call out%row([real(n_cases(ip), wp), ex(ic, ip)%max, ex(ic, ip)%p80, &
+               ex(ic, ip)%mean, ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean], &
+               text=[character(len=40) :: patch_names(ip), doe_names(ip), config_labels(ic), &
+               c_bound(ic), c_spin(ic), c_flex(ic), c_reduction(ic)], digits=4)
+         end do
+      end do
+      call out%close()
+      call write_markdown(out_dir//'patches_doe.md', ex, ey, doe_names, error)
+      if (allocated(error)) return
+      write (output_unit, '(a)') 'shcontact-validate: DOE on every patch written to '// &
+         out_dir//'patches_doe.csv, patches_doe.md'
+   end subroutine run_patches
+
+   !> One patch: geometry, normal solution per reduction, the DOE per configuration.
+   subroutine run_patch(ref_dir, prepared, ex, ey, doe_name, n, error)
+      character(len=*), intent(in) :: ref_dir
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(error_stats_type), intent(out) :: ex(n_configs), ey(n_configs)
+      character(len=24), intent(out) :: doe_name
+      integer, intent(out) :: n
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_table_type) :: summary
+      type(patch_geometry_type) :: geometry
+      type(normal_patch_type) :: patch
+      type(case_set_type) :: set
+      type(tangential_options_type) :: options
+      real(wp), allocatable :: fx(:), fy(:)
+      real(wp) :: y_ws, y_ref
+      logical :: there
+      integer :: ic
+
+      call read_csv(ref_dir//'summary.csv', summary, error)
+      if (allocated(error)) return
+      call summary_value(summary, 'y_ws', y_ws, error)
+      if (allocated(error)) return
+      call summary_value(summary, 'ycp_tr', y_ref, error)
+      if (allocated(error)) return
+      call nearest_patch(prepared, y_ws, y_ref, geometry, error)
+      if (allocated(error)) return
+      doe_name = 'doe_10x10x10'
+      inquire (file=ref_dir//trim(doe_name)//'_exact_nonhertz.csv', exist=there)
+      if (.not. there) doe_name = 'doe_20x20x20'
+      call read_case_set(ref_dir//trim(doe_name)//'_exact_nonhertz.csv', doe_name, set, error)
+      if (allocated(error)) return
+      n = size(set%fx)
+      do ic = 1, n_configs
+         if (ic == 1 .or. c_reduction(ic) /= c_reduction(max(1, ic - 1))) then
+            call solve_normal(geometry, material(), 'semi-hertz', c_reduction(ic), 100, &
+               64700.0_wp, patch, error)
+            if (allocated(error)) return
+         end if
+         call options_of(ic, options, error)
+         if (allocated(error)) return
+         call solve_set(patch, material(), options, set, fx, fy, error)
+         if (allocated(error)) return
+         ex(ic) = error_stats(abs(fx - set%fx))
+         ey(ic) = error_stats(abs(fy - set%fy))
+      end do
+   end subroutine run_patch
+
+   !> README §2: G = 82670 MPa, ν = 0.27, μ = 0.3.
+   pure type(material_type) function material()
+      material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
+   end function material
+
+   !> Our patch at y_ws whose reference point is nearest CONTACT's (track y).
+   subroutine nearest_patch(prepared, y_ws, y_ref, geometry, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      real(wp), intent(in) :: y_ws, y_ref
+      type(patch_geometry_type), intent(out) :: geometry
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type), allocatable :: patches(:)
+      integer :: k, best
+
+      call find_contact_patches(prepared, wheelset_position_type(y_ws=y_ws), patches, error)
+      if (allocated(error)) return
+      if (size(patches) < 1) then
+         call fatal_error(error, 'no contact patch at the reference''s Y_WS', stat_invalid_input)
+         return
+      end if
+      best = 1
+      do k = 2, size(patches)
+         if (abs(patches(k)%y_track - y_ref) < abs(patches(best)%y_track - y_ref)) best = k
+      end do
+      geometry = patches(best)
+   end subroutine nearest_patch
+
+   !> The tangential options of configuration ic (fields off).
+   subroutine options_of(ic, options, error)
+      integer, intent(in) :: ic
+      type(tangential_options_type), intent(out) :: options
+      type(error_type), allocatable, intent(out) :: error
+      call parse_bound(trim(c_bound(ic)), options%bound, error)
+      if (.not. allocated(error)) call parse_spin_model(trim(c_spin(ic)), options%spin_model, &
+         error)
+      if (.not. allocated(error)) call parse_spin_flexibility(trim(c_flex(ic)), &
+         options%spin_flexibility, error)
+      options%n_elements = 50
+      options%fields = .false.
+   end subroutine options_of
+
+   !> patches_doe.md: one row per configuration, max / P80 per patch.
+   subroutine write_markdown(path, ex, ey, doe_names, error)
+      character(len=*), intent(in) :: path
+      type(error_stats_type), intent(in) :: ex(:, :), ey(:, :)
+      character(len=*), intent(in) :: doe_names(:)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=256) :: msg, line
+      integer :: unit, stat, ic, ip
+
+      open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=msg)
+      if (stat /= 0) then
+         call fatal_error(error, path//': cannot write ('//trim(msg)//')')
+         return
+      end if
+      write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
+         'release` (patches_doe.csv) -->', '', &
+         'max \|Δf_x\| / max \|Δf_y\| ; P80 \|Δf_x\| / P80 \|Δf_y\| against the exact theory', ''
+      line = '| configuration |'
+      do ip = 1, size(patch_names)
+         line = trim(line)//' '//trim(patch_names(ip))//' ('//trim(doe_names(ip))//') |'
+      end do
+      write (unit, '(a)') trim(line), '|---|'//repeat('---|', size(patch_names))
+      do ic = 1, n_configs
+         line = '| '//trim(config_labels(ic))//' |'
+         do ip = 1, size(patch_names)
+            write (line, '(a,4(f5.3,a))') trim(line)//' ', ex(ic, ip)%max, ' / ', &
+               ey(ic, ip)%max, ' ; ', ex(ic, ip)%p80, ' / ', ey(ic, ip)%p80, ' |'
+         end do
+         write (unit, '(a)') trim(line)
+      end do
+      close (unit)
+   end subroutine write_markdown
+
+end module validate_patches
