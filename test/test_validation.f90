@@ -213,19 +213,19 @@ contains
          end associate
       end do
       ! doc/validation.md Table 9, "all".
-      call check(error, maxval(ex), 0.068_wp, thr=0.002_wp, message='max |Delta f_x|')
+      call check(error, maxval(ex), 0.058_wp, thr=0.002_wp, message='max |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp), 0.062_wp, thr=0.002_wp, &
+      call check(error, percentile(ex, 0.8_wp), 0.054_wp, thr=0.002_wp, &
          message='P80 |Delta f_x|')
       if (allocated(error)) return
       call check(error, maxval(ey), 0.045_wp, thr=0.002_wp, message='max |Delta f_y|')
       if (allocated(error)) return
-      call check(error, percentile(ey, 0.8_wp), 0.030_wp, thr=0.002_wp, &
+      call check(error, percentile(ey, 0.8_wp), 0.027_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
       if (allocated(error)) return
-      call check(error, maxval(en), 0.293_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
+      call check(error, maxval(en), 0.107_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
       if (allocated(error)) return
-      call check(error, percentile(en, 0.8_wp), 0.109_wp, thr=0.005_wp, &
+      call check(error, percentile(en, 0.8_wp), 0.099_wp, thr=0.005_wp, &
          message='P80 |Delta F_n|/F_n')
    end subroutine test_kinematic
 
