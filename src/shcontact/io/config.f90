@@ -2,8 +2,11 @@
 !> validation into a typed configuration, and the resolved configuration printed as a namelist.
 !>
 !> A case file holds any of the groups `&profiles &track &position &kinematics &material &load
-!> &creepage &normal &tangential &output &sweep`, each optional and partial; whatever is not given keeps
-!> its default (the seed's headline case). Every assignment is read on its own, through a
+!> &creepage &normal &tangential &output &sweep`, each optional and partial; whatever is not
+!> given keeps its default (the seed's headline case). `&kinematics mode = 'on'` switches from
+!> prescribed creepages (`&creepage`) to creepages from the wheelset motion; that mode's own
+!> rules (no `&creepage`, spin model 'additive', vertical load by default) are applied by
+!> [[validate_config]]. Every assignment is read on its own, through a
 !> one-assignment namelist on an internal file, so that an error names the file, the line, the
 !> group, the variable, the value found and what is allowed. The same path serves the overrides
 !> of the command line. After all assignments, [[validate_config]] checks ranges and choices once;
