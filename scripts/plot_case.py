@@ -18,6 +18,7 @@ Needs h5py, numpy and matplotlib: `scripts/setup --plot` installs them.
 """
 import argparse
 import os
+import re
 import sys
 
 import h5py
@@ -30,15 +31,20 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 #: Swept inputs a /summary table can have, in the program's loop order.
-SWEEP_AXES = ["t_y", "roll", "normal_force", "approach", "vertical_force", "friction",
-              "bound", "spin_model", "nu_x", "nu_y", "phi"]
+SWEEP_AXES = ["t_y", "roll", "yaw", "normal_force", "approach", "vertical_force", "friction",
+              "bound", "spin_model", "v_forward", "v_lateral", "v_vertical", "roll_rate",
+              "yaw_rate", "pitch_rate", "nu_x", "nu_y", "phi"]
+#: In a kinematic run (&kinematics mode = 'on') nu_x, nu_y, phi are results, and the wheelset
+#: inputs are columns whether swept or not.
+KINEMATIC_RESULTS = ("nu_x", "nu_y", "phi")
 #: How to show a swept input: (label, scale).
 AXIS_DISPLAY = {
     "nu_x": (r"$\nu_x$ [‰]", 1e3), "nu_y": (r"$\nu_y$ [‰]", 1e3),
     "phi": (r"$\varphi$ [1/m]", 1e3), "t_y": (r"$t_y$ [mm]", 1.0),
     "roll": ("roll [rad]", 1.0), "normal_force": ("N [kN]", 1e-3),
     "vertical_force": ("$F_z$ [kN]", 1e-3), "approach": (r"$\delta$ [mm]", 1.0),
-    "friction": (r"$\mu$", 1.0),
+    "friction": (r"$\mu$", 1.0), "yaw": (r"yaw $\psi$ [mrad]", 1e3),
+    "v_forward": ("V [m/s]", 1e-3), "v_lateral": ("$v_y$ [m/s]", 1e-3),
 }
 
 
@@ -227,7 +233,12 @@ def plot_creep(f, title, out):
     combination of the choice inputs (bound, spin model); other swept real inputs of a grid
     at their first value."""
     s = f["summary"]
-    swept = [a for a in SWEEP_AXES if a in s]
+    namelist = text(f["input/namelist"][()])
+    if re.search(r"&kinematics\s+mode\s*=\s*'on'", namelist):
+        swept = [a for a in SWEEP_AXES if a in s and a not in KINEMATIC_RESULTS
+                 and len(np.unique(s[a][...])) > 1]
+    else:
+        swept = [a for a in SWEEP_AXES if a in s]
     real_axes = [a for a in swept if a not in ("bound", "spin_model")]
     if not real_axes or len(s["case"]) < 2:
         return False

@@ -10,12 +10,38 @@
 module test_app
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_io_files, only: file_exists, process_id
+   use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      load_normal_force, load_vertical_force
+   use shcontact_io_results, only: read_result_summary, case_group_name
+   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_read, h5_exists, &
+      h5_read_attribute
+   use shcontact_case_result, only: case_summary_type
    implicit none
    private
    public :: collect_app
 
    !> The sweep used by the determinism, shard and resume tests: 3 × 2 × 2 = 12 cases,
    !> all fields, checkpoint blocks of 3 cases, coarse grids to keep it fast.
+   !> A kinematic case: the wheelset of examples/kinematic.nml (t_y = 4.733 mm, yaw 4 mrad,
+   !> 30 m/s, pure rolling, 64.7 kN wheel load shared by the patches; two patches).
+   character(len=*), parameter :: kinematic_case(*) = [character(len=72) :: &
+      '&position t_y = 4.733 /', &
+      "&kinematics mode = 'on', yaw = 0.004, v_forward = 30000.0 /", &
+      "&load mode = 'vertical', vertical_force = 64700.0 /"]
+
+   !> A kinematic sweep: t_y = 0, 4.733, 8 mm (tread, two patches, flange) × yaw 0, 4 mrad,
+   !> all fields, checkpoint blocks of 2 cases, coarse grids.
+   character(len=*), parameter :: kinematic_sweep_case(*) = [character(len=72) :: &
+      "&kinematics mode = 'on', v_forward = 30000.0 /", &
+      '&sweep t_y = 0.0, 4.733, 8.0, yaw = 0.0, 0.004 /', &
+      "&output fields = 'all', checkpoint_cases = 2, compression = 1 /", &
+      '&normal n_strips = 40 /', &
+      '&tangential n_elements = 20 /']
+
    character(len=*), parameter :: sweep_case(*) = [character(len=72) :: &
       '! 12-case sweep of the app tests', &
       '&sweep', &
@@ -41,7 +67,10 @@ contains
          new_unittest('some_cases_fail', test_partial_failure), &
          new_unittest('bad_input', test_bad_input), &
          new_unittest('usage_errors', test_usage), &
-         new_unittest('profiles_and_geometry_commands', test_other_commands) &
+         new_unittest('profiles_and_geometry_commands', test_other_commands), &
+         new_unittest('prescribed_default_unchanged', test_prescribed_unchanged), &
+         new_unittest('kinematic_case_equals_library', test_kinematic_case), &
+         new_unittest('kinematic_sweep', test_kinematic_sweep) &
          ]
    end subroutine collect_app
 
@@ -548,5 +577,251 @@ contains
       call check(error, stat, 1, message='profiles without --write')
       call shell('rm -rf '//dir)
    end subroutine test_other_commands
+
+   ! ------------------------------------------------------------------------------------------
+   ! Kinematic mode (&kinematics) and the track-frame totals
+   ! ------------------------------------------------------------------------------------------
+
+   !> Bitwise equality of two lists of reals.
+   pure logical function same_bits(a, b)
+      real(wp), intent(in) :: a(:), b(:)
+      same_bits = size(a) == size(b)
+      if (same_bits) same_bits = all(transfer(a, 0_i8, size(a)) == transfer(b, 0_i8, size(b)))
+   end function same_bits
+
+   !> The summaries of a result file.
+   subroutine read_summaries(error, file, summaries)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: file
+      type(case_summary_type), allocatable, intent(out) :: summaries(:)
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: text, messages(:)
+      integer, allocatable :: indices(:), failed(:)
+      integer :: n
+      call read_result_summary(file, text, n, indices, summaries, failed, messages, lerr)
+      if (allocated(lerr)) call test_failed(error, 'reading '//file//': '//lerr%message)
+   end subroutine read_summaries
+
+   !> A scalar of a result file (the value 0 after an error).
+   real(wp) function scalar(error, file, path) result(value)
+      type(error_type), allocatable, intent(inout) :: error
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(lib_error), allocatable :: lerr
+      call h5_read(file, path, value, lerr)
+      if (allocated(lerr) .and. .not. allocated(error)) call test_failed(error, lerr%message)
+   end function scalar
+
+   !> The program's default case (prescribed creepages) gives what the library's `solve` gives,
+   !> bit for bit, including the new track-frame totals; it has no kinematic columns.
+   subroutine test_prescribed_unchanged(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      type(case_summary_type), allocatable :: s(:)
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: lerr
+      type(h5_file_type) :: file
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('prescribed')
+      stat = run_program(dir, 'run -q -o d.h5')
+      call check(error, stat, 0, message='default case: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call read_summaries(error, dir//'/d.h5', s)
+      if (allocated(error)) return
+      call solver%init('builtin:S1002', 'builtin:UIC60', lerr)
+      if (.not. allocated(lerr)) call solver%solve(4.733_wp, 0.0_wp, &
+         contact_load_type(load_normal_force, 64.7e3_wp), &
+         creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp), r, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'library: '//lerr%message)
+         return
+      end if
+      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_loaded .and. &
+         s(1)%main_patch == r%main_patch, message='status and patches')
+      if (allocated(error)) return
+      call check(error, same_bits([s(1)%fn_total, s(1)%fx_total, s(1)%fy_total, s(1)%fz_total, &
+         s(1)%fn, s(1)%fx, s(1)%fy, s(1)%mz, s(1)%fx_norm, s(1)%fy_norm, s(1)%approach, &
+         s(1)%area, s(1)%p_max, s(1)%gamma0, s(1)%r0, s(1)%y_track], [r%track%fn, r%track%fx, &
+         r%track%fy, r%track%fz, r%main%fn, r%main%fx, r%main%fy, r%main%mz, r%main%fx_norm, &
+         r%main%fy_norm, r%main%approach, r%main%area, r%main%p_max, r%main%gamma0, r%main%r0, &
+         r%main%y_track]), message='the default case differs from the library solve')
+      if (allocated(error)) return
+      call h5_open(file, dir//'/d.h5', lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, h5_exists(file, 'summary/fz_total') .and. .not. &
+         (h5_exists(file, 'summary/nu_x') .or. h5_exists(file, 'summary/x_track') .or. &
+         h5_exists(file, 'summary/yaw')), message='totals in /summary, no kinematic columns')
+      call h5_close(file)
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_prescribed_unchanged
+
+   !> A kinematic case through the program equals the library's `solve_kinematic` to the last
+   !> bit: the summary (totals, main patch, creepages, lead) and every patch in /cases.
+   subroutine test_kinematic_case(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, patch
+      type(case_summary_type), allocatable :: s(:)
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(wheelset_state_type) :: state
+      type(lib_error), allocatable :: lerr
+      type(h5_file_type) :: file
+      integer :: stat, k
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('kinematic')
+      call write_lines(dir//'/k.nml', kinematic_case)
+      stat = run_program(dir, 'run k.nml -q -o k.h5')
+      call check(error, stat, 0, message='kinematic case: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call read_summaries(error, dir//'/k.h5', s)
+      if (allocated(error)) return
+
+      ! The library, from its own defaults (those of the program's case files).
+      state = wheelset_state_type(y_ws=4.733_wp, yaw=0.004_wp, v_forward=30000.0_wp, &
+         pitch_rate=pure_rolling_pitch_rate(30000.0_wp, 460.0_wp))
+      call solver%init('builtin:S1002', 'builtin:UIC60', lerr)
+      if (.not. allocated(lerr)) call solver%solve_kinematic(state, &
+         contact_load_type(load_vertical_force, 64.7e3_wp), r, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'library: '//lerr%message)
+         return
+      end if
+      call check(error, r%n_loaded, 2, message='the case has two loaded patches')
+      if (allocated(error)) return
+      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_loaded .and. &
+         s(1)%main_patch == r%main_patch, message='status and patches')
+      if (allocated(error)) return
+      call check(error, same_bits([s(1)%fn_total, s(1)%fx_total, s(1)%fy_total, s(1)%fz_total], &
+         [r%track%fn, r%track%fx, r%track%fy, r%track%fz]), &
+         message='track-frame totals differ from solve_kinematic')
+      if (allocated(error)) return
+      call check(error, same_bits([s(1)%fn, s(1)%fx, s(1)%fy, s(1)%mz, s(1)%fx_norm, &
+         s(1)%fy_norm, s(1)%coulomb_ratio, s(1)%adhesion_fraction, s(1)%approach, s(1)%area, &
+         s(1)%p_max, s(1)%gamma0, s(1)%r0, s(1)%y_track, s(1)%x_track, s(1)%nu_x, s(1)%nu_y, &
+         s(1)%phi], [r%main%fn, r%main%fx, r%main%fy, r%main%mz, r%main%fx_norm, &
+         r%main%fy_norm, r%main%coulomb_ratio, r%main%adhesion_fraction, r%main%approach, &
+         r%main%area, r%main%p_max, r%main%gamma0, r%main%r0, r%main%y_track, r%main%x_track, &
+         r%main%nu_x, r%main%nu_y, r%main%phi]), &
+         message='the main patch differs from solve_kinematic')
+      if (allocated(error)) return
+
+      ! Every patch of the single case's fields.
+      call h5_open(file, dir//'/k.h5', lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      do k = 1, r%n_loaded
+         patch = case_group_name(1, 1)//'/patch_'//char(iachar('0') + k)
+         associate (p => r%patch(k))
+            call check(error, same_bits([scalar(error, file, patch//'/normal/load'), &
+               scalar(error, file, patch//'/tangential/fx'), &
+               scalar(error, file, patch//'/tangential/fy'), &
+               scalar(error, file, patch//'/tangential/fy_track'), &
+               scalar(error, file, patch//'/tangential/fz_track'), &
+               scalar(error, file, patch//'/tangential/nu_x'), &
+               scalar(error, file, patch//'/tangential/nu_y'), &
+               scalar(error, file, patch//'/tangential/phi'), &
+               scalar(error, file, patch//'/tangential/x_track')], &
+               [p%fn, p%fx, p%fy, p%fy_track, p%fz_track, p%nu_x, p%nu_y, p%phi, p%x_track]), &
+               message=patch//' differs from solve_kinematic')
+         end associate
+         if (allocated(error)) exit
+      end do
+      call h5_close(file)
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_kinematic_case
+
+   !> A kinematic sweep t_y × yaw: every case solved, identical files with 1 and 2 threads,
+   !> the wheelset inputs in /summary with units, and the track-frame totals equal to the sums
+   !> over the patches stored in /cases.
+   subroutine test_kinematic_sweep(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, group, patch, units, header
+      type(case_summary_type), allocatable :: s(:)
+      type(lib_error), allocatable :: lerr
+      type(h5_file_type) :: file
+      real(wp) :: total(4), fn
+      integer :: stat, i, k
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('kinematic_sweep')
+      call shell('mkdir -p '//dir//'/one '//dir//'/two')
+      call write_lines(dir//'/ks.nml', kinematic_sweep_case)
+      stat = run_program(dir//'/one', 'run ../ks.nml -q -o out.h5 --format csv', &
+         'OMP_NUM_THREADS=1')
+      call check(error, stat, 0, message='1 thread: '//file_text(dir//'/one/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir//'/two', 'run ../ks.nml -q -o out.h5 --format csv', &
+         'OMP_NUM_THREADS=2')
+      call check(error, stat, 0, message='2 threads: '//file_text(dir//'/two/err.txt'))
+      if (allocated(error)) return
+      call check_same_content(error, dir//'/one/out.h5', dir//'/two/out.h5', &
+         'kinematic sweep with 1 and 2 threads')
+      if (allocated(error)) return
+      header = file_text(dir//'/one/out.txt')
+      call expect_in(error, header, 'case,status,n_patches,t_y,roll,yaw,v_forward,v_lateral,'// &
+         'v_vertical,roll_rate,yaw_rate,pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
+         'csv header of a kinematic sweep')
+      if (allocated(error)) return
+      call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,message', 'csv header')
+      if (allocated(error)) return
+
+      call read_summaries(error, dir//'/one/out.h5', s)
+      if (allocated(error)) return
+      call check(error, size(s), 6, message='3 x 2 cases')
+      if (allocated(error)) return
+      call check(error, all(s%stat == 0), message='every case solved')
+      if (allocated(error)) return
+      call check(error, any(s%n_patches > 1), message='a case with two patches')
+      if (allocated(error)) return
+      call h5_open(file, dir//'/one/out.h5', lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call h5_read_attribute(file, 'summary/yaw', 'units', units, lerr)
+      if (.not. allocated(lerr)) call check(error, units, 'rad', message='units of yaw')
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(file, 'summary/v_forward', 'units', units, lerr)
+         if (.not. allocated(lerr)) call check(error, units, 'mm/s', message='units of v_forward')
+      end if
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(file, 'summary/fz_total', 'units', units, lerr)
+         if (.not. allocated(lerr)) call check(error, units, 'N', message='units of fz_total')
+      end if
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(file, 'summary/phi', 'units', units, lerr)
+         if (.not. allocated(lerr)) call check(error, units, 'rad/mm', message='units of phi')
+      end if
+      if (allocated(lerr)) call test_failed(error, lerr%message)
+      do i = 1, size(s)
+         if (allocated(error)) exit
+         group = case_group_name(i, size(s))
+         total = 0.0_wp
+         do k = 1, s(i)%n_patches
+            patch = group//'/patch_'//char(iachar('0') + k)
+            fn = scalar(error, file, patch//'/normal/load')
+            if (.not. (fn > 0.0_wp)) cycle
+            total(1) = total(1) + scalar(error, file, patch//'/tangential/fx')
+            total(2) = total(2) + scalar(error, file, patch//'/tangential/fy_track')
+            total(3) = total(3) + scalar(error, file, patch//'/tangential/fz_track')
+            total(4) = total(4) + fn
+         end do
+         if (allocated(error)) exit
+         call check(error, same_bits(total, [s(i)%fx_total, s(i)%fy_total, s(i)%fz_total, &
+            s(i)%fn_total]), message=group//': /summary totals differ from the sums over '// &
+            'the patches')
+      end do
+      call h5_close(file)
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_kinematic_sweep
 
 end module test_app

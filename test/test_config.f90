@@ -6,7 +6,8 @@ module test_config
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io
    use shcontact_io_config, only: case_config_type, case_point_type, load_config, &
-      read_config_text, config_namelist, axis_geometry, axis_load
+      read_config_text, config_namelist, axis_geometry, axis_load, n_sweep_axes, &
+      sweep_axis_names
    use shcontact_io_text, only: format_real
    use shcontact_io_files, only: delete_file, process_id
    implicit none
@@ -34,7 +35,10 @@ contains
          new_unittest('sweep_list_and_errors', test_sweep_list), &
          new_unittest('shared_stages', test_shares_with), &
          new_unittest('namelist_round_trip', test_round_trip), &
-         new_unittest('format_real_round_trip', test_format_real) &
+         new_unittest('format_real_round_trip', test_format_real), &
+         new_unittest('kinematics_parsing', test_kinematics), &
+         new_unittest('kinematics_errors', test_kinematics_errors), &
+         new_unittest('kinematics_round_trip', test_kinematics_round_trip) &
          ]
    end subroutine collect_config
 
@@ -423,5 +427,158 @@ contains
       if (allocated(error)) return
       call check(error, format_real(2.74e-5_wp) == '2.74e-5', message=format_real(2.74e-5_wp))
    end subroutine test_format_real
+
+   !> `&kinematics`: values, units, the pure-rolling pitch rate and the defaults that kinematic
+   !> mode changes (vertical load, 'additive' spin model).
+   subroutine test_kinematics(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(case_point_type) :: p
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: name
+      integer :: ia
+
+      call load_config('', no_overrides, c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, .not. c%is_kinematic() .and. c%load%mode == 'force' .and. &
+         c%tangential%spin_model == 'uniform', message='kinematics off by default, unchanged '// &
+         'defaults of the prescribed-creepage mode')
+      if (allocated(error)) return
+      do ia = 1, n_sweep_axes
+         if (c%reports_input(ia)) call test_failed(error, 'input '// &
+            trim(sweep_axis_names(ia))//' reported without a sweep')
+         if (allocated(error)) return
+      end do
+
+      name = scratch_file('kinematics', [character(len=80) :: &
+         '&position t_y = 4.733 /', &
+         '&kinematics', &
+         "  mode = 'on', yaw = 0.004, v_forward = 30000.0, v_lateral = 100.0", &
+         '  v_vertical = -5.0, roll_rate = 0.01, yaw_rate = -0.02', &
+         '/', &
+         '&sweep v_forward = 10000, 20000 /'])
+      call load_config(name, no_overrides, c, lerr)
+      if (delete_file(name)) continue
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, c%is_kinematic(), message='mode on')
+      if (allocated(error)) return
+      call check(error, c%load%mode == 'vertical', message='kinematic mode loads the wheel '// &
+         "vertically unless &load mode is given: '"//trim(c%load%mode)//"'")
+      if (allocated(error)) return
+      call check(error, c%tangential%spin_model == 'additive', message='additive spin model')
+      if (allocated(error)) return
+      call check(error, .not. c%kinematics%pitch_rate_given, message='pitch rate not given')
+      if (allocated(error)) return
+      p = c%case_point(2)
+      call check(error, p%yaw == 0.004_wp .and. p%v_forward == 20000.0_wp .and. &
+         p%v_lateral == 100.0_wp .and. p%v_vertical == -5.0_wp .and. p%roll_rate == 0.01_wp &
+         .and. p%yaw_rate == -0.02_wp .and. p%t_y == 4.733_wp, message='case inputs')
+      if (allocated(error)) return
+      call check(error, p%pitch_rate == -20000.0_wp/460.0_wp, &
+         message='pure rolling at the case speed: -v_forward/nominal_radius')
+      if (allocated(error)) return
+      do ia = 1, n_sweep_axes
+         if (trim(sweep_axis_names(ia)) == 'v_lateral') exit
+      end do
+      call check(error, c%reports_input(ia), message='a kinematic run reports its wheelset inputs')
+      if (allocated(error)) return
+
+      ! A pitch rate given is used as it is; the load mode given is kept.
+      call load_config('', [character(len=40) :: 'kinematics%mode=on', &
+         'kinematics%pitch_rate=-60', 'load%mode=force'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      p = c%case_point(1)
+      call check(error, p%pitch_rate == -60.0_wp .and. c%load%mode == 'force' .and. &
+         p%v_forward == 30000.0_wp, message='given pitch rate and load mode; V = 30 m/s default')
+   end subroutine test_kinematics
+
+   !> Range and consistency errors of `&kinematics`, each naming the file, the line, the
+   !> variable, the value and what is expected (with units).
+   subroutine test_kinematics_errors(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, 'k_yaw', [character(len=40) :: "&kinematics mode = 'on',", &
+         '  yaw = 0.2 /'], [character(len=80) :: 'k_yaw.nml:2', '&kinematics yaw = 0.2', &
+         'out of range; expected -0.1 <= yaw <= 0.1 rad'], stat_invalid_input)
+      if (allocated(error)) return
+      call expect_error(error, 'k_speed', [character(len=60) :: &
+         "&kinematics mode = 'on', v_forward = -5 /"], [character(len=80) :: 'k_speed.nml:1', &
+         '&kinematics v_forward = -5.0', 'expected 0.0 < v_forward <= 200000.0 mm/s'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_pitch', [character(len=40) :: '&kinematics', &
+         "  mode = 'on'", '  pitch_rate = 65.2', '/'], [character(len=80) :: 'k_pitch.nml:3', &
+         '&kinematics pitch_rate = 65.2', 'expected -2000.0 <= pitch_rate < 0.0 rad/s'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_rate', [character(len=40) :: '&kinematics yaw_rate = 20 /'], &
+         [character(len=80) :: '&kinematics yaw_rate = 20.0', '-10.0 <= yaw_rate <= 10.0 rad/s'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_vlat', [character(len=40) :: '&kinematics v_lateral = 2e4 /'], &
+         [character(len=80) :: '-10000.0 <= v_lateral <= 10000.0 mm/s'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_mode', [character(len=40) :: "&kinematics mode = 'yes' /"], &
+         [character(len=80) :: "&kinematics mode = 'yes' is not allowed", "'off', 'on'"])
+      if (allocated(error)) return
+      call expect_error(error, 'k_unit', [character(len=40) :: "&kinematics speed = 3e4 /"], &
+         [character(len=80) :: 'unknown variable "speed"', 'v_forward'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_creep', [character(len=40) :: "&kinematics mode = 'on' /", &
+         '&creepage nu_x = 1e-3 /'], [character(len=100) :: 'k_creep.nml:2', &
+         "&creepage nu_x is given, but &kinematics mode = 'on'", 'remove &creepage'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_spin', [character(len=40) :: "&kinematics mode = 'on' /", &
+         "&tangential spin_model = 'uniform' /"], [character(len=80) :: 'k_spin.nml:2', &
+         "spin_model = 'additive'"])
+      if (allocated(error)) return
+      call expect_error(error, 'k_sweep_off', [character(len=40) :: '&sweep yaw = 0, 0.004 /'], &
+         [character(len=80) :: 'k_sweep_off.nml:1', '&sweep yaw is given', &
+         "&kinematics mode = 'off'"])
+      if (allocated(error)) return
+      call expect_error(error, 'k_sweep_nu', [character(len=40) :: "&kinematics mode = 'on' /", &
+         '&sweep nu_y = 0, 1e-3 /'], [character(len=80) :: 'k_sweep_nu.nml:2', &
+         '&sweep nu_y is given', 'wheelset inputs'])
+      if (allocated(error)) return
+      call expect_error(error, 'k_sweep_range', [character(len=40) :: &
+         "&kinematics mode = 'on' /", '&sweep pitch_rate = -60, 0 /'], [character(len=80) :: &
+         '&sweep pitch_rate(2) = 0.0', 'pitch_rate < 0.0 rad/s'])
+   end subroutine test_kinematics_errors
+
+   !> The printed namelist of a kinematic run (no &creepage, the pitch rate left to pure rolling)
+   !> reads back to itself.
+   subroutine test_kinematics_round_trip(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c, d
+      type(case_point_type) :: p
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: text
+      call load_config('', [character(len=60) :: 'kinematics%mode=on', 'kinematics%yaw=0.004', &
+         'sweep%t_y=0,4.733,8', 'sweep%v_forward=1e4,3e4'], c, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      text = config_namelist(c)
+      call check(error, index(text, '&creepage') == 0 .or. index(text, '! &creepage') > 0, &
+         message='&creepage is left out in kinematic mode')
+      if (allocated(error)) return
+      call read_config_text(text, 'printed', d, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'printed namelist does not read back: '//lerr%message// &
+            new_line('a')//text)
+         return
+      end if
+      call check(error, config_namelist(d) == text, message='printed namelist is a fixed point')
+      if (allocated(error)) return
+      p = d%case_point(6)
+      call check(error, d%n_cases() == 6 .and. .not. d%kinematics%pitch_rate_given .and. &
+         p%pitch_rate == -3.0e4_wp/460.0_wp, message='sweep and pure rolling')
+   end subroutine test_kinematics_round_trip
 
 end module test_config

@@ -201,6 +201,8 @@ module shcontact_api_solver
       procedure :: solve
       !> Solve one wheel from the wheelset's position and velocities.
       procedure :: solve_kinematic
+      !> The contact patches of a wheelset state (the geometry of solve_kinematic alone).
+      procedure :: locate_kinematic
       !> Change the elastic constants and the friction coefficient.
       procedure :: set_material
       !> Change the normal and/or the tangential options.
@@ -437,6 +439,40 @@ contains
       call summarise(self, result)
       if (present(fields)) call copy_fields(self, fields)
    end subroutine solve_kinematic
+
+   !> The candidate contact patches of a wheelset state, deepest first: the contact search of
+   !> [[solve_kinematic]] (yawed wheel's contact locus, true rolling radii) without solving
+   !> anything, e.g. to report the geometry of a run. Only the position and the yaw are used.
+   subroutine locate_kinematic(self, state, geometry, error)
+      !> The solver, from [[init]].
+      class(contact_solver_type), intent(inout) :: self
+      !> Wheelset position (and velocities), track frame.
+      type(wheelset_state_type), intent(in) :: state
+      !> Every candidate patch found.
+      type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
+      !> Set for bad input or when no patch is found.
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_state_type) :: local
+      integer :: k
+
+      if (.not. self%ready) then
+         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
+            'its error)', stat_usage)
+         return
+      end if
+      call check_wheelset_state(state, error)
+      if (allocated(error)) return
+      call check_call(state%y_ws, state%roll, contact_load_type(load_normal_force, 1.0_wp), &
+         creepage_type(), error)
+      if (allocated(error)) return
+      local = side_state(state, self%side)
+      call update_geometry(self, state%y_ws, state%roll, local%yaw, error)
+      if (allocated(error)) return
+      allocate (geometry(self%patches%count))
+      do k = 1, self%patches%count
+         call extract_patch(self%patches, k, geometry(k))
+      end do
+   end subroutine locate_kinematic
 
    !> The tangential problem of loaded patch k for its creepages.
    subroutine solve_patch(self, k, creepage, options, error)

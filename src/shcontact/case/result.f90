@@ -10,22 +10,26 @@ module shcontact_case_result
 
    public :: case_summary_type, case_result_type, summary_columns, n_summary_columns
    public :: summary_value, set_summary_value, case_not_run, failure_type
+   public :: summary_column_used
 
    !> Status of a case that has not been solved yet.
    integer, parameter :: case_not_run = -1
 
    !> The numbers of one case that go into the `/summary` table (forces on the wheel,
-   !> physics.md decision 2). With several patches, `fn` is their total normal force and the
-   !> other values are those of the main patch (the one carrying the largest normal force).
+   !> physics.md decision 2). The totals are summed over the loaded patches; the other values
+   !> are those of the main patch (the one carrying the largest normal force).
    type :: case_summary_type
       !> 0 when solved; otherwise the error status ([[case_not_run]] before it runs).
       integer :: stat = case_not_run
-      !> Number of contact patches.
+      !> Number of loaded contact patches.
       integer :: n_patches = 0
       !> Index of the main patch.
       integer :: main_patch = 0
       !> Total normal force of all patches (N).
       real(wp) :: fn_total = 0.0_wp
+      !> Total forces in the track frame (N): ΣF_x (longitudinal), ΣF_y,track (lateral, towards
+      !> the field side), ΣF_z,track (vertical, down).
+      real(wp) :: fx_total = 0.0_wp, fy_total = 0.0_wp, fz_total = 0.0_wp
       !> Main patch: normal force (N), tangential forces (N), spin moment (N·mm).
       real(wp) :: fn = 0.0_wp, fx = 0.0_wp, fy = 0.0_wp, mz = 0.0_wp
       !> Main patch: normalised forces F/(μ F_n).
@@ -38,16 +42,25 @@ module shcontact_case_result
       !> Main patch: contact angle γ₀ (rad), rolling radius r₀ (mm), lateral track position of
       !> the reference point (mm).
       real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp, y_track = 0.0_wp
+      !> Kinematic cases, main patch: longitudinal position of the reference point (mm, track
+      !> frame, + forward: the lead of a yawed wheelset) and the creepages of the wheelset
+      !> motion there (ν_x, ν_y; φ in rad/mm).
+      real(wp) :: x_track = 0.0_wp, nu_x = 0.0_wp, nu_y = 0.0_wp, phi = 0.0_wp
    end type case_summary_type
 
    !> Names and units of the real summary columns, in file order.
-   integer, parameter :: n_summary_columns = 15
+   integer, parameter :: n_summary_columns = 22
    character(len=*), parameter :: summary_columns(2, n_summary_columns) = reshape( &
       [character(len=17) :: &
-      'fn_total', 'N', 'fn', 'N', 'fx', 'N', 'fy', 'N', 'mz', 'N mm', 'fx_norm', '1', &
+      'fn_total', 'N', 'fx_total', 'N', 'fy_total', 'N', 'fz_total', 'N', &
+      'fn', 'N', 'fx', 'N', 'fy', 'N', 'mz', 'N mm', 'fx_norm', '1', &
       'fy_norm', '1', 'coulomb_ratio', '1', 'adhesion_fraction', '1', 'delta', 'mm', &
-      'area', 'mm^2', 'p_max', 'MPa', 'gamma0', 'rad', 'r0', 'mm', 'y_track', 'mm'], &
+      'area', 'mm^2', 'p_max', 'MPa', 'gamma0', 'rad', 'r0', 'mm', 'y_track', 'mm', &
+      'x_track', 'mm', 'nu_x', '1', 'nu_y', '1', 'phi', 'rad/mm'], &
       [2, n_summary_columns])
+   !> The columns that only kinematic runs have (prescribed creepages are inputs).
+   logical, parameter :: summary_column_kinematic(n_summary_columns) = &
+      [spread(.false., 1, n_summary_columns - 4), spread(.true., 1, 4)]
 
    !> Everything one case produced.
    type :: case_result_type
@@ -59,6 +72,10 @@ module shcontact_case_result
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: normal(:)
       type(tangential_patch_type), allocatable :: tangential(:)
+      !> Kinematic cases (kept with the fields): per patch the creepages of the wheelset motion
+      !> at its reference point (ν_x, ν_y, φ in rad/mm) and the reference point's longitudinal
+      !> position x_track (mm).
+      real(wp), allocatable :: nu_x(:), nu_y(:), phi(:), x_track(:)
    end type case_result_type
 
    !> A failed case and why.
@@ -71,6 +88,15 @@ module shcontact_case_result
 
 contains
 
+   !> True when real summary column `k` belongs to a run (kinematic or not).
+   pure logical function summary_column_used(k, kinematic)
+      !> Column number.
+      integer, intent(in) :: k
+      !> The run is kinematic.
+      logical, intent(in) :: kinematic
+      summary_column_used = kinematic .or. .not. summary_column_kinematic(k)
+   end function summary_column_used
+
    !> The value of real summary column `k` (numbering of [[summary_columns]]).
    pure real(wp) function summary_value(s, k)
       !> The summary.
@@ -79,20 +105,27 @@ contains
       integer, intent(in) :: k
       select case (k)
       case (1); summary_value = s%fn_total
-      case (2); summary_value = s%fn
-      case (3); summary_value = s%fx
-      case (4); summary_value = s%fy
-      case (5); summary_value = s%mz
-      case (6); summary_value = s%fx_norm
-      case (7); summary_value = s%fy_norm
-      case (8); summary_value = s%coulomb_ratio
-      case (9); summary_value = s%adhesion_fraction
-      case (10); summary_value = s%approach
-      case (11); summary_value = s%area
-      case (12); summary_value = s%p_max
-      case (13); summary_value = s%gamma0
-      case (14); summary_value = s%r0
-      case default; summary_value = s%y_track
+      case (2); summary_value = s%fx_total
+      case (3); summary_value = s%fy_total
+      case (4); summary_value = s%fz_total
+      case (5); summary_value = s%fn
+      case (6); summary_value = s%fx
+      case (7); summary_value = s%fy
+      case (8); summary_value = s%mz
+      case (9); summary_value = s%fx_norm
+      case (10); summary_value = s%fy_norm
+      case (11); summary_value = s%coulomb_ratio
+      case (12); summary_value = s%adhesion_fraction
+      case (13); summary_value = s%approach
+      case (14); summary_value = s%area
+      case (15); summary_value = s%p_max
+      case (16); summary_value = s%gamma0
+      case (17); summary_value = s%r0
+      case (18); summary_value = s%y_track
+      case (19); summary_value = s%x_track
+      case (20); summary_value = s%nu_x
+      case (21); summary_value = s%nu_y
+      case default; summary_value = s%phi
       end select
    end function summary_value
 
@@ -106,20 +139,27 @@ contains
       real(wp), intent(in) :: value
       select case (k)
       case (1); s%fn_total = value
-      case (2); s%fn = value
-      case (3); s%fx = value
-      case (4); s%fy = value
-      case (5); s%mz = value
-      case (6); s%fx_norm = value
-      case (7); s%fy_norm = value
-      case (8); s%coulomb_ratio = value
-      case (9); s%adhesion_fraction = value
-      case (10); s%approach = value
-      case (11); s%area = value
-      case (12); s%p_max = value
-      case (13); s%gamma0 = value
-      case (14); s%r0 = value
-      case default; s%y_track = value
+      case (2); s%fx_total = value
+      case (3); s%fy_total = value
+      case (4); s%fz_total = value
+      case (5); s%fn = value
+      case (6); s%fx = value
+      case (7); s%fy = value
+      case (8); s%mz = value
+      case (9); s%fx_norm = value
+      case (10); s%fy_norm = value
+      case (11); s%coulomb_ratio = value
+      case (12); s%adhesion_fraction = value
+      case (13); s%approach = value
+      case (14); s%area = value
+      case (15); s%p_max = value
+      case (16); s%gamma0 = value
+      case (17); s%r0 = value
+      case (18); s%y_track = value
+      case (19); s%x_track = value
+      case (20); s%nu_x = value
+      case (21); s%nu_y = value
+      case default; s%phi = value
       end select
    end subroutine set_summary_value
 

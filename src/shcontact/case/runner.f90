@@ -6,6 +6,13 @@
 !> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
 !> tangential problem once per case ([[solve_case]]). None of these procedures print or touch
 !> global state, so cases can be solved by several threads at once.
+!>
+!> **Kinematic cases** (`&kinematics mode = 'on'`) are solved by the library's solver object
+!> ([[solve_kinematic_case]] → `contact_solver_type%solve_kinematic`), so that the program gives
+!> exactly what a vehicle code calling the library gets: the yawed contact search, the
+!> creepages of the wheelset motion at each patch and the 'additive' spin model live there
+!> only. Each thread holds its own copy of the prototype solver prepared by [[prepare_run]]; the
+!> solver reuses the geometry and the normal solution of consecutive cases that share them.
 module shcontact_case_runner
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
@@ -30,11 +37,15 @@ module shcontact_case_runner
    use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
       spin_model_choices
    use shcontact_case_result, only: case_result_type, case_summary_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      contact_fields_type, load_normal_force, load_vertical_force, load_approach
    implicit none
    private
 
    public :: run_setup_type, stage_type, prepare_run, solve_geometry, solve_stage
    public :: solve_case, march_workspace_type, tangential_patch_type
+   public :: solve_kinematic_case, kinematic_state, contact_solver_type
 
    !> What every case of a run shares.
    type :: run_setup_type
@@ -54,6 +65,10 @@ module shcontact_case_runner
       !> Solver codes of the bound and spin-model names (parsed once, looked up per case).
       integer :: bound_codes(size(bound_choices)) = 0
       integer :: spin_model_codes(size(spin_model_choices)) = 0
+      !> Kinematic mode: cases are solved by copies of `solver`, prepared with the run's
+      !> profiles, track, material and options (bound and friction come with each case).
+      logical :: kinematic = .false.
+      type(contact_solver_type) :: solver
    end type run_setup_type
 
    !> Geometry and normal solution of one (t_y, roll, load), shared by the cases that have them.
@@ -128,7 +143,124 @@ contains
          call parse_spin_model(trim(spin_model_choices(k)), setup%spin_model_codes(k), error)
          if (allocated(error)) return
       end do
+      setup%kinematic = config%is_kinematic()
+      if (setup%kinematic) then
+         call setup%solver%init(setup%wheel, setup%rail, error, track=track, &
+            material=setup%material, side=setup%position%side, contact_options=options, &
+            normal_options=setup%normal, tangential_options=setup%tangential)
+      end if
    end subroutine prepare_run
+
+   !> The wheelset state of a kinematic case (track frame; the pitch rate already resolved by
+   !> the configuration).
+   pure function kinematic_state(point) result(state)
+      !> The case inputs.
+      type(case_point_type), intent(in) :: point
+      type(wheelset_state_type) :: state
+      state = wheelset_state_type(y_ws=point%t_y, yaw=point%yaw, roll=point%roll, &
+         v_forward=point%v_forward, v_lateral=point%v_lateral, v_vertical=point%v_vertical, &
+         roll_rate=point%roll_rate, yaw_rate=point%yaw_rate, pitch_rate=point%pitch_rate)
+   end function kinematic_state
+
+   !> One kinematic case through the library's solver object (`solve_kinematic`): the geometry
+   !> of the yawed wheelset, the normal problem for the load, and every loaded patch with the
+   !> creepages of the wheelset motion at its reference point. `fields` keeps the per-patch
+   !> solutions and creepages in the result.
+   subroutine solve_kinematic_case(setup, point, solver, result, fields)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (position, velocities, load, friction, bound).
+      type(case_point_type), intent(in) :: point
+      !> The thread's solver (a copy of setup%solver), reused from case to case.
+      type(contact_solver_type), intent(inout) :: solver
+      !> The result (summary%stat > 0 on failure, with a message).
+      type(case_result_type), intent(out) :: result
+      !> Keep the solutions in the result.
+      logical, intent(in) :: fields
+      type(error_type), allocatable :: error
+      type(material_type) :: material
+      type(tangential_options_type) :: options
+      type(contact_load_type) :: load
+      type(contact_result_type) :: contact
+      type(contact_fields_type), allocatable :: copies
+      integer :: k, n
+
+      material = setup%material
+      material%friction = point%friction
+      call solver%set_material(material, error)
+      if (.not. allocated(error)) then
+         options = setup%tangential
+         do k = 1, size(bound_choices)
+            if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
+         end do
+         call solver%set_options(error, tangential=options)
+      end if
+      if (.not. allocated(error)) then
+         select case (setup%load_mode)
+         case ('force')
+            load = contact_load_type(load_normal_force, point%normal_force)
+         case ('approach')
+            load = contact_load_type(load_approach, point%approach)
+         case default
+            load = contact_load_type(load_vertical_force, point%vertical_force)
+         end select
+         if (fields) then
+            allocate (copies)
+            call solver%solve_kinematic(kinematic_state(point), load, contact, error, copies)
+         else
+            call solver%solve_kinematic(kinematic_state(point), load, contact, error)
+         end if
+      end if
+      if (allocated(error)) then
+         result%summary%stat = error%stat
+         result%message = error%message
+         return
+      end if
+      call summarise_contact(contact, result%summary)
+      if (fields) then
+         n = contact%n_loaded
+         result%geometry = copies%geometry(1:n)
+         result%normal = copies%normal(1:n)
+         result%tangential = copies%tangential(1:n)
+         result%nu_x = contact%patch(1:n)%nu_x
+         result%nu_y = contact%patch(1:n)%nu_y
+         result%phi = contact%patch(1:n)%phi
+         result%x_track = contact%patch(1:n)%x_track
+      end if
+   end subroutine solve_kinematic_case
+
+   !> Summary numbers of a solver result: the track-frame totals and the main patch.
+   pure subroutine summarise_contact(contact, s)
+      type(contact_result_type), intent(in) :: contact
+      type(case_summary_type), intent(inout) :: s
+      s%stat = 0
+      s%n_patches = contact%n_loaded
+      s%main_patch = contact%main_patch
+      s%fn_total = contact%track%fn
+      s%fx_total = contact%track%fx
+      s%fy_total = contact%track%fy
+      s%fz_total = contact%track%fz
+      associate (m => contact%main)
+         s%fn = m%fn
+         s%fx = m%fx
+         s%fy = m%fy
+         s%mz = m%mz
+         s%fx_norm = m%fx_norm
+         s%fy_norm = m%fy_norm
+         s%coulomb_ratio = m%coulomb_ratio
+         s%adhesion_fraction = m%adhesion_fraction
+         s%approach = m%approach
+         s%area = m%area
+         s%p_max = m%p_max
+         s%gamma0 = m%gamma0
+         s%r0 = m%r0
+         s%y_track = m%y_track
+         s%x_track = m%x_track
+         s%nu_x = m%nu_x
+         s%nu_y = m%nu_y
+         s%phi = m%phi
+      end associate
+   end subroutine summarise_contact
 
    !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
 
@@ -284,6 +416,16 @@ contains
       s%fn_total = 0.0_wp
       do k = 1, size(stage%normal)
          s%fn_total = s%fn_total + stage%normal(k)%load
+      end do
+      ! Track-frame totals over the loaded patches, summed as the library's solver does.
+      s%fx_total = 0.0_wp
+      s%fy_total = 0.0_wp
+      s%fz_total = 0.0_wp
+      do k = 1, size(stage%normal)
+         if (.not. (stage%normal(k)%load > 0.0_wp)) cycle
+         s%fx_total = s%fx_total + tangential(k)%fx
+         s%fy_total = s%fy_total + tangential(k)%fy_track
+         s%fz_total = s%fz_total + tangential(k)%fz_track
       end do
       s%fn = stage%normal(m)%load
       s%fx = tangential(m)%fx

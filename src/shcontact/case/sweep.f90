@@ -5,7 +5,9 @@
 !>   its index: the results are bitwise identical for any number of threads and any block size.
 !> * **Shared stages.** Geometry is computed once per distinct (t_y, roll) and the normal
 !>   solution once per distinct (t_y, roll, load) of a block; a sweep over creepages, friction,
-!>   bound or spin model solves the tangential problem only.
+!>   bound or spin model solves the tangential problem only. Kinematic cases are solved by one
+!>   library solver object per thread, which reuses the geometry and normal solution of
+!>   consecutive cases that share them (shcontact_case_runner).
 !> * **Checkpoints.** Next to the output OUT.h5 a directory OUT.h5.partial/ receives one
 !>   complete result file per finished block (written under a temporary name, renamed when
 !>   complete) and a list of them, `blocks.txt`. A run that is killed keeps every finished
@@ -33,7 +35,8 @@ module shcontact_case_sweep
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
       case_not_run
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
-      solve_stage, solve_case, march_workspace_type, tangential_patch_type
+      solve_stage, solve_case, march_workspace_type, tangential_patch_type, &
+      solve_kinematic_case, kinematic_state, contact_solver_type
    implicit none
    private
 
@@ -92,9 +95,10 @@ module shcontact_case_sweep
       type(patch_geometry_type), allocatable :: patches(:)
    end type geometry_set_type
 
-   !> Per-thread tangential solutions.
+   !> Per-thread tangential solutions (and solver object of a kinematic run).
    type :: thread_solutions_type
       type(tangential_patch_type), allocatable :: patches(:)
+      type(contact_solver_type) :: solver
    end type thread_solutions_type
 
 contains
@@ -204,9 +208,14 @@ contains
       if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
          str_int(options%n_shards)
       info%profiles = [setup%wheel, setup%rail]
-      common_geometry = .not. (config%sweep%axes(1)%active .or. config%sweep%axes(2)%active)
+      common_geometry = .not. config%geometry_swept()
       if (common_geometry) then
-         call solve_geometry(setup, config%case_point(outcome%first), common%patches, error)
+         if (setup%kinematic) then
+            call setup%solver%locate_kinematic(kinematic_state(config%case_point(outcome%first)), &
+               common%patches, error)
+         else
+            call solve_geometry(setup, config%case_point(outcome%first), common%patches, error)
+         end if
          if (allocated(error)) return
          info%geometry = common%patches
       end if
@@ -228,6 +237,11 @@ contains
          outcome%summaries%stat == case_not_run)
       n_done = (outcome%last - outcome%first + 1) - size(todo)
       allocate (workspaces(outcome%n_threads), solutions(outcome%n_threads))
+      if (setup%kinematic) then
+         do i = 1, outcome%n_threads
+            solutions(i)%solver = setup%solver
+         end do
+      end if
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
@@ -321,6 +335,27 @@ contains
       logical :: has_progress
 
       nb = size(cases)
+      done = done_before
+      has_progress = associated(options%progress)
+      if (setup%kinematic) then
+         ! Each case through its thread's solver object (shcontact_case_runner).
+         !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+         !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
+         !$omp has_progress, nb) private(i, me, report)
+         do i = 1, nb
+            me = 1
+            !$ me = omp_get_thread_num() + 1
+            call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
+               results(i), fields)
+            !$omp atomic capture
+            done = done + 1
+            report = done
+            !$omp end atomic
+            if (has_progress .and. me == 1) call options%progress(report, total, .false.)
+         end do
+         !$omp end parallel do
+         return
+      end if
       allocate (stage_of(nb))
       ! Distinct (t_y, roll, load) of the block, each named by its first case of the run.
       load_keys = [(config%shares_with(cases(i), axis_load), i=1, nb)]
@@ -362,8 +397,6 @@ contains
       end do
       !$omp end parallel do
 
-      done = done_before
-      has_progress = associated(options%progress)
       !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
       !$omp shared(cases, stages, stage_of, results, workspaces, solutions, setup, config, &
       !$omp fields, options, done, total, has_progress, nb) private(i, me, report)

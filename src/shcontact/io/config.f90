@@ -1,9 +1,12 @@
 !> The case configuration: Fortran namelist case files, `group%var=value` overrides, defaults,
 !> validation into a typed configuration, and the resolved configuration printed as a namelist.
 !>
-!> A case file holds any of the groups `&profiles &track &position &material &load &creepage
-!> &normal &tangential &output &sweep`, each optional and partial; whatever is not given keeps
-!> its default (the seed's headline case). Every assignment is read on its own, through a
+!> A case file holds any of the groups `&profiles &track &position &kinematics &material &load
+!> &creepage &normal &tangential &output &sweep`, each optional and partial; whatever is not
+!> given keeps its default (the seed's headline case). `&kinematics mode = 'on'` switches from
+!> prescribed creepages (`&creepage`) to creepages from the wheelset motion; that mode's own
+!> rules (no `&creepage`, spin model 'additive', vertical load by default) are applied by
+!> [[validate_config]]. Every assignment is read on its own, through a
 !> one-assignment namelist on an internal file, so that an error names the file, the line, the
 !> group, the variable, the value found and what is allowed. The same path serves the overrides
 !> of the command line. After all assignments, [[validate_config]] checks ranges and choices once;
@@ -16,6 +19,7 @@ module shcontact_io_config
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_io_text, only: format_real, quote_string, strip_quotes
    use shcontact_io_files, only: directory_part, join_path
+   use shcontact_geometry_kinematics, only: max_yaw, pure_rolling_pitch_rate
    implicit none
    private
 
@@ -24,6 +28,7 @@ module shcontact_io_config
    public :: config_namelist
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
    public :: path_len, name_len, max_sweep_values, bound_choices, spin_model_choices
+   public :: case_point_value, is_kinematic_input
 
    !> Length of file-name variables.
    integer, parameter :: path_len = 512
@@ -42,13 +47,20 @@ module shcontact_io_config
 
    !> Sweepable quantities, in loop order (outermost first): geometry, then load, then the
    !> tangential inputs, so that consecutive cases share geometry and normal solution.
-   integer, parameter :: n_sweep_axes = 11
+   !> The wheelset velocities (`&kinematics`) are swept only in kinematic mode, the creepages
+   !> (`&creepage`) only in prescribed-creepage mode.
+   integer, parameter :: n_sweep_axes = 18
    character(len=*), parameter :: sweep_axis_names(n_sweep_axes) = [character(len=16) :: &
-      't_y', 'roll', 'normal_force', 'approach', 'vertical_force', 'friction', 'bound', &
-      'spin_model', 'nu_x', 'nu_y', 'phi']
+      't_y', 'roll', 'yaw', 'normal_force', 'approach', 'vertical_force', 'friction', 'bound', &
+      'spin_model', 'v_forward', 'v_lateral', 'v_vertical', 'roll_rate', 'yaw_rate', &
+      'pitch_rate', 'nu_x', 'nu_y', 'phi']
    !> Which stage an axis changes: 1 geometry, 2 normal load, 3 tangential only.
    integer, parameter :: axis_geometry = 1, axis_load = 2, axis_tangential = 3
-   integer, parameter :: axis_stage(n_sweep_axes) = [1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3]
+   integer, parameter :: axis_stage(n_sweep_axes) = [1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, &
+      3, 3, 3, 3, 3]
+   !> The wheelset inputs of a kinematic case (position and velocities), in axis order.
+   character(len=*), parameter :: kinematic_inputs(9) = [character(len=10) :: 't_y', 'roll', &
+      'yaw', 'v_forward', 'v_lateral', 'v_vertical', 'roll_rate', 'yaw_rate', 'pitch_rate']
 
    !> Where a variable lives and what it is (messages, printing, documentation).
    type :: variable_info_type
@@ -89,6 +101,20 @@ module shcontact_io_config
       variable_info_type('position', 't_y', k_real, 'mm', &
       "lateral wheelset shift (CONTACT's Y_WS), + moves the wheel to the field side"), &
       variable_info_type('position', 'roll', k_real, 'rad', 'wheelset roll angle'), &
+      variable_info_type('kinematics', 'mode', k_string, '', &
+      "'off' (prescribed &creepage) or 'on' (creepages from the wheelset motion)"), &
+      variable_info_type('kinematics', 'yaw', k_real, 'rad', &
+      "wheelset yaw angle (CONTACT's YAW_WS), + turns the front towards +y"), &
+      variable_info_type('kinematics', 'v_forward', k_real, 'mm/s', &
+      "forward speed of the wheelset centre V (CONTACT's VS)"), &
+      variable_info_type('kinematics', 'v_lateral', k_real, 'mm/s', &
+      'lateral velocity of the wheelset centre, + towards the right field side'), &
+      variable_info_type('kinematics', 'v_vertical', k_real, 'mm/s', &
+      'vertical velocity of the wheelset centre, + downwards'), &
+      variable_info_type('kinematics', 'roll_rate', k_real, 'rad/s', 'wheelset roll rate'), &
+      variable_info_type('kinematics', 'yaw_rate', k_real, 'rad/s', 'wheelset yaw rate'), &
+      variable_info_type('kinematics', 'pitch_rate', k_real, 'rad/s', &
+      'angular velocity about the axle, < 0 rolling forward (default -v_forward/nominal_radius)'), &
       variable_info_type('material', 'shear_modulus', k_real, 'MPa', &
       'shear modulus G of wheel and rail'), &
       variable_info_type('material', 'poisson', k_real, '1', "Poisson's ratio nu"), &
@@ -138,6 +164,9 @@ module shcontact_io_config
       variable_info_type('sweep', 'roll', k_real_list, 'rad', 'values of position%roll'), &
       variable_info_type('sweep', 'roll_points', k_int, '', &
       'roll = first, last with this many points'), &
+      variable_info_type('sweep', 'yaw', k_real_list, 'rad', 'values of kinematics%yaw'), &
+      variable_info_type('sweep', 'yaw_points', k_int, '', &
+      'yaw = first, last with this many points'), &
       variable_info_type('sweep', 'normal_force', k_real_list, 'N', &
       'values of load%normal_force'), &
       variable_info_type('sweep', 'normal_force_points', k_int, '', &
@@ -155,6 +184,30 @@ module shcontact_io_config
       variable_info_type('sweep', 'bound', k_string_list, '', 'values of tangential%bound'), &
       variable_info_type('sweep', 'spin_model', k_string_list, '', &
       'values of tangential%spin_model'), &
+      variable_info_type('sweep', 'v_forward', k_real_list, 'mm/s', &
+      'values of kinematics%v_forward'), &
+      variable_info_type('sweep', 'v_forward_points', k_int, '', &
+      'v_forward = first, last with this many points'), &
+      variable_info_type('sweep', 'v_lateral', k_real_list, 'mm/s', &
+      'values of kinematics%v_lateral'), &
+      variable_info_type('sweep', 'v_lateral_points', k_int, '', &
+      'v_lateral = first, last with this many points'), &
+      variable_info_type('sweep', 'v_vertical', k_real_list, 'mm/s', &
+      'values of kinematics%v_vertical'), &
+      variable_info_type('sweep', 'v_vertical_points', k_int, '', &
+      'v_vertical = first, last with this many points'), &
+      variable_info_type('sweep', 'roll_rate', k_real_list, 'rad/s', &
+      'values of kinematics%roll_rate'), &
+      variable_info_type('sweep', 'roll_rate_points', k_int, '', &
+      'roll_rate = first, last with this many points'), &
+      variable_info_type('sweep', 'yaw_rate', k_real_list, 'rad/s', &
+      'values of kinematics%yaw_rate'), &
+      variable_info_type('sweep', 'yaw_rate_points', k_int, '', &
+      'yaw_rate = first, last with this many points'), &
+      variable_info_type('sweep', 'pitch_rate', k_real_list, 'rad/s', &
+      'values of kinematics%pitch_rate'), &
+      variable_info_type('sweep', 'pitch_rate_points', k_int, '', &
+      'pitch_rate = first, last with this many points'), &
       variable_info_type('sweep', 'nu_x', k_real_list, '1', 'values of creepage%nu_x'), &
       variable_info_type('sweep', 'nu_x_points', k_int, '', &
       'nu_x = first, last with this many points'), &
@@ -167,7 +220,8 @@ module shcontact_io_config
       ]
 
    character(len=*), parameter :: group_names(*) = [character(len=12) :: 'profiles', 'track', &
-      'position', 'material', 'load', 'creepage', 'normal', 'tangential', 'output', 'sweep']
+      'position', 'kinematics', 'material', 'load', 'creepage', 'normal', 'tangential', &
+      'output', 'sweep']
 
    !> Allowed values of the choice variables.
    character(len=*), parameter :: formats(*) = [character(len=8) :: 'auto', 'plain', 'simpack', &
@@ -193,6 +247,7 @@ module shcontact_io_config
       'geometry', 'strips', 'pressure', 'traction', 'state', 'slip']
    character(len=*), parameter :: precisions(*) = [character(len=6) :: 'double', 'single']
    character(len=*), parameter :: sweep_modes(*) = [character(len=4) :: 'grid', 'list']
+   character(len=*), parameter :: kinematics_modes(*) = [character(len=3) :: 'off', 'on']
 
    !> Sentinel of unset sweep-list entries.
    real(wp), parameter :: unset = huge(1.0_wp)
@@ -235,6 +290,28 @@ module shcontact_io_config
       !> Roll angle (rad).
       real(wp) :: roll = 0.0_wp
    end type position_config_type
+
+   !> `&kinematics`: the wheelset's motion (CONTACT's module 1, physics.md decision 14). With
+   !> mode 'on' the creepages of every patch come from the rigid-body motion of the wheelset
+   !> (the library's `solve_kinematic`) instead of `&creepage`; the lateral shift and the roll
+   !> are those of `&position`. Track frame: x forward, y towards the right field side, z down.
+   type :: kinematics_config_type
+      !> 'off' (prescribed creepages, `&creepage`) or 'on'.
+      character(len=name_len) :: mode = 'off'
+      !> Yaw angle ψ (rad), CONTACT's YAW_WS.
+      real(wp) :: yaw = 0.0_wp
+      !> Forward speed of the wheelset centre V (mm/s, > 0): 30 m/s.
+      real(wp) :: v_forward = 30000.0_wp
+      !> Lateral and vertical velocity of the wheelset centre (mm/s).
+      real(wp) :: v_lateral = 0.0_wp, v_vertical = 0.0_wp
+      !> Roll and yaw rate (rad/s).
+      real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp
+      !> Angular velocity about the axle (rad/s, < 0 rolling forward); used only when given
+      !> (`pitch_rate_given`), else pure rolling −V/R₀ of each case's V.
+      real(wp) :: pitch_rate = 0.0_wp
+      !> True when `pitch_rate` was set (case file or override); set by [[validate_config]].
+      logical :: pitch_rate_given = .false.
+   end type kinematics_config_type
 
    !> `&load`: how the normal problem is loaded.
    type :: load_config_type
@@ -318,6 +395,7 @@ module shcontact_io_config
       type(profiles_config_type) :: profiles
       type(track_config_type) :: track
       type(position_config_type) :: position
+      type(kinematics_config_type) :: kinematics
       type(material_type) :: material
       type(load_config_type) :: load
       type(creepage_config_type) :: creepage
@@ -336,14 +414,26 @@ module shcontact_io_config
       procedure :: wants_field
       !> Index of the first case of the run that has the same geometry (or normal solution).
       procedure :: shares_with
+      !> True in kinematic mode (`&kinematics mode = 'on'`).
+      procedure :: is_kinematic
+      !> True when a sweep changes the contact geometry (t_y, roll or yaw) from case to case.
+      procedure :: geometry_swept
+      !> True when input axis `ia` is reported per case: swept, or a wheelset input of a
+      !> kinematic run.
+      procedure :: reports_input
    end type case_config_type
 
    !> The inputs of one case that a sweep may vary.
    type :: case_point_type
       real(wp) :: t_y = 0.0_wp, roll = 0.0_wp
+      !> Wheelset yaw (rad), velocities (mm/s) and rates (rad/s) of a kinematic case; the pitch
+      !> rate is resolved (pure rolling when not given).
+      real(wp) :: yaw = 0.0_wp
       real(wp) :: normal_force = 0.0_wp, approach = 0.0_wp, vertical_force = 0.0_wp
       real(wp) :: friction = 0.0_wp
       character(len=name_len) :: bound = '', spin_model = ''
+      real(wp) :: v_forward = 0.0_wp, v_lateral = 0.0_wp, v_vertical = 0.0_wp
+      real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp, pitch_rate = 0.0_wp
       real(wp) :: nu_x = 0.0_wp, nu_y = 0.0_wp, phi = 0.0_wp
    end type case_point_type
 
@@ -963,6 +1053,8 @@ contains
          call read_track(config%track, text, stat, msg)
       case ('position')
          call read_position(config%position, text, stat, msg)
+      case ('kinematics')
+         call read_kinematics(config%kinematics, text, stat, msg)
       case ('material')
          call read_material(config%material, text, stat, msg)
       case ('load')
@@ -1194,6 +1286,25 @@ contains
       g%t_y = t_y; g%roll = roll
    end subroutine read_position
 
+   subroutine read_kinematics(g, text, stat, msg)
+      type(kinematics_config_type), intent(inout) :: g
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: msg
+      character(len=name_len) :: mode
+      real(wp) :: yaw, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate
+      namelist /kinematics/ mode, yaw, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, &
+         pitch_rate
+      mode = g%mode; yaw = g%yaw; v_forward = g%v_forward; v_lateral = g%v_lateral
+      v_vertical = g%v_vertical; roll_rate = g%roll_rate; yaw_rate = g%yaw_rate
+      pitch_rate = g%pitch_rate
+      read (text, nml=kinematics, iostat=stat, iomsg=msg)
+      if (stat /= 0) return
+      g%mode = to_lower(mode); g%yaw = yaw; g%v_forward = v_forward; g%v_lateral = v_lateral
+      g%v_vertical = v_vertical; g%roll_rate = roll_rate; g%yaw_rate = yaw_rate
+      g%pitch_rate = pitch_rate
+   end subroutine read_kinematics
+
    subroutine read_material(g, text, stat, msg)
       type(material_type), intent(inout) :: g
       character(len=*), intent(in) :: text
@@ -1300,79 +1411,76 @@ contains
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: msg
       character(len=name_len) :: mode
-      real(wp), allocatable, dimension(:) :: t_y, roll, normal_force, approach, &
-         vertical_force, friction, nu_x, nu_y, phi
-      integer :: t_y_points, roll_points, normal_force_points, approach_points, &
-         vertical_force_points, friction_points, nu_x_points, nu_y_points, phi_points
+      real(wp), allocatable, dimension(:) :: t_y, roll, yaw, normal_force, approach, &
+         vertical_force, friction, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, &
+         pitch_rate, nu_x, nu_y, phi
+      integer :: t_y_points, roll_points, yaw_points, normal_force_points, approach_points, &
+         vertical_force_points, friction_points, v_forward_points, v_lateral_points, &
+         v_vertical_points, roll_rate_points, yaw_rate_points, pitch_rate_points, nu_x_points, &
+         nu_y_points, phi_points
       character(len=name_len) :: bound(max_label_values), spin_model(max_label_values)
-      integer :: ia
-      namelist /sweep/ mode, t_y, t_y_points, roll, roll_points, normal_force, &
-         normal_force_points, approach, approach_points, vertical_force, &
-         vertical_force_points, friction, friction_points, bound, spin_model, nu_x, &
-         nu_x_points, nu_y, nu_y_points, phi, phi_points
+      integer :: ia, points(n_sweep_axes)
+      namelist /sweep/ mode, t_y, t_y_points, roll, roll_points, yaw, yaw_points, &
+         normal_force, normal_force_points, approach, approach_points, vertical_force, &
+         vertical_force_points, friction, friction_points, bound, spin_model, v_forward, &
+         v_forward_points, v_lateral, v_lateral_points, v_vertical, v_vertical_points, &
+         roll_rate, roll_rate_points, yaw_rate, yaw_rate_points, pitch_rate, pitch_rate_points, &
+         nu_x, nu_x_points, nu_y, nu_y_points, phi, phi_points
 
       ! Only the variable being assigned is read; it gets room for every value and starts
       ! unset, so a list replaces the whole list.
       mode = g%mode
-      call prepare(t_y, 't_y'); call prepare(roll, 'roll')
+      call prepare(t_y, 't_y'); call prepare(roll, 'roll'); call prepare(yaw, 'yaw')
       call prepare(normal_force, 'normal_force'); call prepare(approach, 'approach')
       call prepare(vertical_force, 'vertical_force'); call prepare(friction, 'friction')
+      call prepare(v_forward, 'v_forward'); call prepare(v_lateral, 'v_lateral')
+      call prepare(v_vertical, 'v_vertical'); call prepare(roll_rate, 'roll_rate')
+      call prepare(yaw_rate, 'yaw_rate'); call prepare(pitch_rate, 'pitch_rate')
       call prepare(nu_x, 'nu_x'); call prepare(nu_y, 'nu_y'); call prepare(phi, 'phi')
       bound = ''; spin_model = ''
-      t_y_points = 0; roll_points = 0; normal_force_points = 0; approach_points = 0
-      vertical_force_points = 0; friction_points = 0; nu_x_points = 0; nu_y_points = 0
+      t_y_points = 0; roll_points = 0; yaw_points = 0; normal_force_points = 0
+      approach_points = 0; vertical_force_points = 0; friction_points = 0
+      v_forward_points = 0; v_lateral_points = 0; v_vertical_points = 0; roll_rate_points = 0
+      yaw_rate_points = 0; pitch_rate_points = 0; nu_x_points = 0; nu_y_points = 0
       phi_points = 0
       read (text, nml=sweep, iostat=stat, iomsg=msg)
       if (stat /= 0) return
 
-      select case (name)
-      case ('mode')
+      ! The `_points` values in axis order (label axes have none).
+      points = [t_y_points, roll_points, yaw_points, normal_force_points, approach_points, &
+         vertical_force_points, friction_points, 0, 0, v_forward_points, v_lateral_points, &
+         v_vertical_points, roll_rate_points, yaw_rate_points, pitch_rate_points, nu_x_points, &
+         nu_y_points, phi_points]
+      if (name == 'mode') then
          g%mode = to_lower(mode)
-      case ('bound')
+      else if (name == 'bound') then
          call store_labels(g%axes(axis_index('bound')), bound)
-      case ('spin_model')
+      else if (name == 'spin_model') then
          call store_labels(g%axes(axis_index('spin_model')), spin_model)
-      case ('t_y_points')
-         g%axes(axis_index('t_y'))%points = t_y_points
-      case ('roll_points')
-         g%axes(axis_index('roll'))%points = roll_points
-      case ('normal_force_points')
-         g%axes(axis_index('normal_force'))%points = normal_force_points
-      case ('approach_points')
-         g%axes(axis_index('approach'))%points = approach_points
-      case ('vertical_force_points')
-         g%axes(axis_index('vertical_force'))%points = vertical_force_points
-      case ('friction_points')
-         g%axes(axis_index('friction'))%points = friction_points
-      case ('nu_x_points')
-         g%axes(axis_index('nu_x'))%points = nu_x_points
-      case ('nu_y_points')
-         g%axes(axis_index('nu_y'))%points = nu_y_points
-      case ('phi_points')
-         g%axes(axis_index('phi'))%points = phi_points
-      case default
+      else if (index(name, '_points') > 0) then
+         ia = axis_index(name(1:index(name, '_points') - 1))
+         g%axes(ia)%points = points(ia)
+      else
          ia = axis_index(name)
          select case (name)
-         case ('t_y')
-            call store_values(g%axes(ia), t_y, stat, msg)
-         case ('roll')
-            call store_values(g%axes(ia), roll, stat, msg)
-         case ('normal_force')
-            call store_values(g%axes(ia), normal_force, stat, msg)
-         case ('approach')
-            call store_values(g%axes(ia), approach, stat, msg)
-         case ('vertical_force')
-            call store_values(g%axes(ia), vertical_force, stat, msg)
-         case ('friction')
-            call store_values(g%axes(ia), friction, stat, msg)
-         case ('nu_x')
-            call store_values(g%axes(ia), nu_x, stat, msg)
-         case ('nu_y')
-            call store_values(g%axes(ia), nu_y, stat, msg)
-         case ('phi')
-            call store_values(g%axes(ia), phi, stat, msg)
+         case ('t_y'); call store_values(g%axes(ia), t_y, stat, msg)
+         case ('roll'); call store_values(g%axes(ia), roll, stat, msg)
+         case ('yaw'); call store_values(g%axes(ia), yaw, stat, msg)
+         case ('normal_force'); call store_values(g%axes(ia), normal_force, stat, msg)
+         case ('approach'); call store_values(g%axes(ia), approach, stat, msg)
+         case ('vertical_force'); call store_values(g%axes(ia), vertical_force, stat, msg)
+         case ('friction'); call store_values(g%axes(ia), friction, stat, msg)
+         case ('v_forward'); call store_values(g%axes(ia), v_forward, stat, msg)
+         case ('v_lateral'); call store_values(g%axes(ia), v_lateral, stat, msg)
+         case ('v_vertical'); call store_values(g%axes(ia), v_vertical, stat, msg)
+         case ('roll_rate'); call store_values(g%axes(ia), roll_rate, stat, msg)
+         case ('yaw_rate'); call store_values(g%axes(ia), yaw_rate, stat, msg)
+         case ('pitch_rate'); call store_values(g%axes(ia), pitch_rate, stat, msg)
+         case ('nu_x'); call store_values(g%axes(ia), nu_x, stat, msg)
+         case ('nu_y'); call store_values(g%axes(ia), nu_y, stat, msg)
+         case ('phi'); call store_values(g%axes(ia), phi, stat, msg)
          end select
-      end select
+      end if
 
    contains
 
@@ -1481,6 +1589,8 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'position', 'roll', c%position%roll, error)
          if (allocated(error)) return
+         call check_kinematics(c, error)
+         if (allocated(error)) return
          call check_real_var(c, 'material', 'shear_modulus', c%material%shear_modulus, error)
          if (allocated(error)) return
          call check_real_var(c, 'material', 'poisson', c%material%poisson, error)
@@ -1536,9 +1646,68 @@ contains
          end if
          call check_output(c, error)
          if (allocated(error)) return
+         call resolve_kinematic_mode(c, error)
+         if (allocated(error)) return
          call check_sweep(c, error)
       end associate
    end subroutine validate_config
+
+   !> The `&kinematics` values in their ranges; whether the pitch rate was given.
+   subroutine check_kinematics(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      associate (k => config%kinematics)
+         call check_choice(config, 'kinematics', 'mode', k%mode, kinematics_modes, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'yaw', k%yaw, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_forward', k%v_forward, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_lateral', k%v_lateral, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_vertical', k%v_vertical, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'roll_rate', k%roll_rate, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'yaw_rate', k%yaw_rate, error)
+         if (allocated(error)) return
+         k%pitch_rate_given = origin(config, 'kinematics%pitch_rate') /= 'default'
+         if (k%pitch_rate_given) call check_real_var(config, 'kinematics', 'pitch_rate', &
+            k%pitch_rate, error)
+      end associate
+   end subroutine check_kinematics
+
+   !> Kinematic mode takes the creepages from the wheelset motion: `&creepage` must not be
+   !> given (it would be silently ignored), the spin model is 'additive' (that of the library's
+   !> `solve_kinematic`, which carries the rigid slip to each strip) and the load defaults to
+   !> the vertical wheel load shared by all patches.
+   subroutine resolve_kinematic_mode(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: creepages(3) = [character(len=4) :: 'nu_x', 'nu_y', 'phi']
+      character(len=:), allocatable :: where
+      integer :: i
+
+      if (.not. config%is_kinematic()) return
+      do i = 1, size(creepages)
+         where = origin(config, 'creepage%'//trim(creepages(i)))
+         if (where == 'default') cycle
+         call fatal_error(error, where//': &creepage '//trim(creepages(i))//' is given, but '// &
+            "&kinematics mode = 'on' computes the creepages of every patch from the wheelset "// &
+            "motion; remove &creepage, or set &kinematics mode = 'off' to prescribe them")
+         return
+      end do
+      where = origin(config, 'tangential%spin_model')
+      if (where /= 'default' .and. config%tangential%spin_model /= 'additive') then
+         call fatal_error(error, where//": &tangential spin_model = '"// &
+            trim(config%tangential%spin_model)//"': &kinematics mode = 'on' needs "// &
+            "spin_model = 'additive' (the rigid slip carried to each strip, as the library's "// &
+            "solve_kinematic); remove it or set 'additive'")
+         return
+      end if
+      config%tangential%spin_model = 'additive'
+      if (origin(config, 'load%mode') == 'default') config%load%mode = 'vertical'
+   end subroutine resolve_kinematic_mode
 
    !> Allowed range of each real variable (also used for its sweep values).
    pure subroutine real_limits(name, lo, hi, lo_open, hi_open)
@@ -1584,6 +1753,18 @@ contains
          lo = -0.1_wp; hi = 0.1_wp
       case ('epsilon')
          lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
+      case ('yaw')
+         lo = -max_yaw; hi = max_yaw
+      case ('v_forward')
+         ! Creepages are velocities divided by the rolling speed: V > 0 (720 km/h at most).
+         lo = 0.0_wp; hi = 2.0e5_wp; lo_open = .true.
+      case ('v_lateral', 'v_vertical')
+         lo = -1.0e4_wp; hi = 1.0e4_wp
+      case ('roll_rate', 'yaw_rate')
+         lo = -10.0_wp; hi = 10.0_wp
+      case ('pitch_rate')
+         ! Rolling forward turns the wheel backwards about the axle: −V/r.
+         lo = -2000.0_wp; hi = 0.0_wp; hi_open = .true.
       case default
          lo = -huge(1.0_wp); hi = huge(1.0_wp)
       end select
@@ -1784,6 +1965,20 @@ contains
                end do
             end if
             if (.not. axis%active) cycle
+            if (config%is_kinematic() .and. any(name == ['nu_x      ', 'nu_y      ', &
+                'phi       ', 'spin_model'])) then
+               call fatal_error(error, where//': &sweep '//name//" is given, but &kinematics "// &
+                  "mode = 'on' takes the creepages from the wheelset motion (spin model "// &
+                  "'additive'); sweep the wheelset inputs (t_y, roll, yaw, v_forward, ...) instead")
+               return
+            end if
+            if (.not. config%is_kinematic() .and. is_kinematic_input(name) .and. &
+                name /= 't_y' .and. name /= 'roll') then
+               call fatal_error(error, where//': &sweep '//name//" is given, but &kinematics "// &
+                  "mode = 'off' (prescribed creepages); set &kinematics mode = 'on' to solve "// &
+                  'from the wheelset motion')
+               return
+            end if
             if (axis_stage(ia) == axis_load .and. .not. load_axis_matches(name, &
                 config%load%mode)) then
                call fatal_error(error, where//': &sweep '//name//' is given but &load mode = '// &
@@ -1890,40 +2085,123 @@ contains
       end do
    end subroutine axis_indices
 
-   !> The varying inputs of case `icase`: base values, replaced by the swept ones.
+   !> The varying inputs of case `icase`: base values, replaced by the swept ones. The pitch
+   !> rate, when not given, is that of pure rolling at the case's forward speed.
    pure function case_point(self, icase) result(p)
       class(case_config_type), intent(in) :: self
       !> Case index, 1 ≤ icase ≤ n_cases.
       integer, intent(in) :: icase
       type(case_point_type) :: p
-      integer :: idx(n_sweep_axes)
+      integer :: idx(n_sweep_axes), ia
 
       p%t_y = self%position%t_y
       p%roll = self%position%roll
+      p%yaw = self%kinematics%yaw
       p%normal_force = self%load%normal_force
       p%approach = self%load%approach
       p%vertical_force = self%load%vertical_force
       p%friction = self%material%friction
       p%bound = self%tangential%bound
       p%spin_model = self%tangential%spin_model
+      p%v_forward = self%kinematics%v_forward
+      p%v_lateral = self%kinematics%v_lateral
+      p%v_vertical = self%kinematics%v_vertical
+      p%roll_rate = self%kinematics%roll_rate
+      p%yaw_rate = self%kinematics%yaw_rate
+      p%pitch_rate = self%kinematics%pitch_rate
       p%nu_x = self%creepage%nu_x
       p%nu_y = self%creepage%nu_y
       p%phi = self%creepage%phi
       call axis_indices(self, icase, idx)
-      associate (ax => self%sweep%axes)
-         if (idx(1) > 0) p%t_y = ax(1)%value(idx(1))
-         if (idx(2) > 0) p%roll = ax(2)%value(idx(2))
-         if (idx(3) > 0) p%normal_force = ax(3)%value(idx(3))
-         if (idx(4) > 0) p%approach = ax(4)%value(idx(4))
-         if (idx(5) > 0) p%vertical_force = ax(5)%value(idx(5))
-         if (idx(6) > 0) p%friction = ax(6)%value(idx(6))
-         if (idx(7) > 0) p%bound = ax(7)%labels(idx(7))
-         if (idx(8) > 0) p%spin_model = ax(8)%labels(idx(8))
-         if (idx(9) > 0) p%nu_x = ax(9)%value(idx(9))
-         if (idx(10) > 0) p%nu_y = ax(10)%value(idx(10))
-         if (idx(11) > 0) p%phi = ax(11)%value(idx(11))
-      end associate
+      do ia = 1, n_sweep_axes
+         if (idx(ia) == 0) cycle
+         associate (axis => self%sweep%axes(ia))
+            select case (trim(sweep_axis_names(ia)))
+            case ('t_y'); p%t_y = axis%value(idx(ia))
+            case ('roll'); p%roll = axis%value(idx(ia))
+            case ('yaw'); p%yaw = axis%value(idx(ia))
+            case ('normal_force'); p%normal_force = axis%value(idx(ia))
+            case ('approach'); p%approach = axis%value(idx(ia))
+            case ('vertical_force'); p%vertical_force = axis%value(idx(ia))
+            case ('friction'); p%friction = axis%value(idx(ia))
+            case ('bound'); p%bound = axis%labels(idx(ia))
+            case ('spin_model'); p%spin_model = axis%labels(idx(ia))
+            case ('v_forward'); p%v_forward = axis%value(idx(ia))
+            case ('v_lateral'); p%v_lateral = axis%value(idx(ia))
+            case ('v_vertical'); p%v_vertical = axis%value(idx(ia))
+            case ('roll_rate'); p%roll_rate = axis%value(idx(ia))
+            case ('yaw_rate'); p%yaw_rate = axis%value(idx(ia))
+            case ('pitch_rate'); p%pitch_rate = axis%value(idx(ia))
+            case ('nu_x'); p%nu_x = axis%value(idx(ia))
+            case ('nu_y'); p%nu_y = axis%value(idx(ia))
+            case ('phi'); p%phi = axis%value(idx(ia))
+            end select
+         end associate
+      end do
+      if (.not. (self%kinematics%pitch_rate_given .or. &
+                 self%sweep%axes(axis_index('pitch_rate'))%active)) &
+         p%pitch_rate = pure_rolling_pitch_rate(p%v_forward, self%track%nominal_radius)
    end function case_point
+
+   !> The value of real input axis `ia` (numbering of [[sweep_axis_names]]) of a case; 0 for
+   !> the choice axes (bound, spin_model).
+   pure real(wp) function case_point_value(p, ia) result(x)
+      !> The inputs of the case.
+      type(case_point_type), intent(in) :: p
+      !> Axis index.
+      integer, intent(in) :: ia
+      select case (trim(sweep_axis_names(ia)))
+      case ('t_y'); x = p%t_y
+      case ('roll'); x = p%roll
+      case ('yaw'); x = p%yaw
+      case ('normal_force'); x = p%normal_force
+      case ('approach'); x = p%approach
+      case ('vertical_force'); x = p%vertical_force
+      case ('friction'); x = p%friction
+      case ('v_forward'); x = p%v_forward
+      case ('v_lateral'); x = p%v_lateral
+      case ('v_vertical'); x = p%v_vertical
+      case ('roll_rate'); x = p%roll_rate
+      case ('yaw_rate'); x = p%yaw_rate
+      case ('pitch_rate'); x = p%pitch_rate
+      case ('nu_x'); x = p%nu_x
+      case ('nu_y'); x = p%nu_y
+      case ('phi'); x = p%phi
+      case default; x = 0.0_wp
+      end select
+   end function case_point_value
+
+   !> True for the wheelset inputs of a kinematic case: t_y, roll, yaw, the velocities and
+   !> the rates.
+   pure logical function is_kinematic_input(name)
+      !> An input (sweep axis) name.
+      character(len=*), intent(in) :: name
+      is_kinematic_input = any(kinematic_inputs == name)
+   end function is_kinematic_input
+
+   pure logical function is_kinematic(self)
+      class(case_config_type), intent(in) :: self
+      is_kinematic = self%kinematics%mode == 'on'
+   end function is_kinematic
+
+   pure logical function geometry_swept(self)
+      class(case_config_type), intent(in) :: self
+      integer :: ia
+      geometry_swept = .false.
+      do ia = 1, n_sweep_axes
+         if (axis_stage(ia) == axis_geometry) geometry_swept = geometry_swept .or. &
+            self%sweep%axes(ia)%active
+      end do
+   end function geometry_swept
+
+   pure logical function reports_input(self, ia)
+      class(case_config_type), intent(in) :: self
+      !> Axis index.
+      integer, intent(in) :: ia
+      reports_input = self%sweep%axes(ia)%active
+      if (self%is_kinematic()) reports_input = reports_input .or. &
+         is_kinematic_input(trim(sweep_axis_names(ia)))
+   end function reports_input
 
    !> The smallest case index whose inputs up to `stage` (axis_geometry: t_y and roll;
    !> axis_load: also the load) equal those of case `icase`, so that its geometry (or normal
@@ -1982,7 +2260,9 @@ contains
    ! ------------------------------------------------------------------------------------------
 
    !> The resolved configuration as namelist text (every variable, one per line, with its
-   !> units as a comment); reading it back gives the same configuration.
+   !> units as a comment); reading it back gives the same configuration. In kinematic mode the
+   !> unused `&creepage` group is left out, and a pitch rate that was not given stays a comment
+   !> (pure rolling follows each case's forward speed).
    function config_namelist(config) result(text)
       !> A validated configuration.
       type(case_config_type), intent(in) :: config
@@ -1997,6 +2277,20 @@ contains
       previous = ''
       do i = 1, size(variables)
          v = variables(i)
+         if (config%is_kinematic() .and. v%group == 'creepage') then
+            if (len_trim(previous) > 0) then
+               text = text//'/'//nl//"! &creepage: not used, &kinematics mode = 'on' "// &
+                  'computes the creepages'//nl
+               previous = ''
+            end if
+            cycle
+         end if
+         if (v%group == 'kinematics' .and. v%name == 'pitch_rate' .and. &
+             .not. config%kinematics%pitch_rate_given) then
+            text = text//'  ! pitch_rate not given: pure rolling, -v_forward/nominal_radius '// &
+               '[rad/s]'//nl
+            cycle
+         end if
          if (v%group /= previous) then
             if (len_trim(previous) > 0) text = text//'/'//nl
             text = text//'&'//trim(v%group)//nl
@@ -2030,6 +2324,17 @@ contains
             select case (name)
             case ('t_y'); value = format_real(config%position%t_y)
             case ('roll'); value = format_real(config%position%roll)
+            end select
+         case ('kinematics')
+            select case (name)
+            case ('mode'); value = quote_string(config%kinematics%mode)
+            case ('yaw'); value = format_real(config%kinematics%yaw)
+            case ('v_forward'); value = format_real(config%kinematics%v_forward)
+            case ('v_lateral'); value = format_real(config%kinematics%v_lateral)
+            case ('v_vertical'); value = format_real(config%kinematics%v_vertical)
+            case ('roll_rate'); value = format_real(config%kinematics%roll_rate)
+            case ('yaw_rate'); value = format_real(config%kinematics%yaw_rate)
+            case ('pitch_rate'); value = format_real(config%kinematics%pitch_rate)
             end select
          case ('material')
             select case (name)

@@ -58,7 +58,8 @@ module shcontact_io_hdf5
 
    !> Read a dataset into an allocatable array or a text.
    interface h5_read
-      module procedure :: read_real_1d, read_real_2d, read_int_1d, read_text_0d, read_text_1d
+      module procedure :: read_real_0d, read_real_1d, read_real_2d, read_int_1d, read_text_0d, &
+         read_text_1d
    end interface h5_read
 
    !> Read a scalar attribute.
@@ -727,6 +728,26 @@ contains
       call h5sclose_f(space, s)
       call h5dclose_f(dset, s)
    end function h5_dataset_size
+
+   subroutine read_real_0d(file, path, value, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path (a scalar dataset).
+      character(len=*), intent(in) :: path
+      !> The value.
+      real(wp), intent(out) :: value
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
+      integer :: stat, s
+      value = 0.0_wp
+      call open_dataset(file, path, 0, dset, dims, error)
+      if (allocated(error)) return
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, value, dims, stat)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+   end subroutine read_real_0d
 
    subroutine read_real_1d(file, path, values, error)
       !> The file.

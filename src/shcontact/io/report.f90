@@ -5,10 +5,10 @@ module shcontact_io_report
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
    use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
-      sweep_axis_names
+      sweep_axis_names, case_point_value
    use shcontact_io_text, only: format_real, json_string
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
-      summary_value
+      summary_value, summary_column_used
    implicit none
    private
 
@@ -20,6 +20,11 @@ module shcontact_io_report
    !> Columns shown in the text table of a sweep (besides the swept inputs).
    character(len=*), parameter :: text_columns(7) = [character(len=17) :: 'fn', 'fx', 'fy', &
       'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction']
+   !> The same for a kinematic run: the track-frame totals, and the main patch's creepages and
+   !> lead.
+   character(len=*), parameter :: kinematic_text_columns(9) = [character(len=17) :: &
+      'n_patches', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', 'phi', &
+      'x_track']
 
 contains
 
@@ -35,10 +40,11 @@ contains
       case ('csv')
          line = 'case,status,n_patches'
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//','//trim(sweep_axis_names(ia))
+            if (config%reports_input(ia)) line = line//','//trim(sweep_axis_names(ia))
          end do
          do k = 1, n_summary_columns
-            line = line//','//trim(summary_columns(1, k))
+            if (summary_column_used(k, config%is_kinematic())) &
+               line = line//','//trim(summary_columns(1, k))
          end do
          line = line//',message'
       case ('text')
@@ -48,9 +54,15 @@ contains
          do ia = 1, n_sweep_axes
             if (config%sweep%axes(ia)%active) line = line//pad(trim(sweep_axis_names(ia)), 14)
          end do
-         do k = 1, size(text_columns)
-            line = line//pad(trim(text_columns(k)), 14)
-         end do
+         if (config%is_kinematic()) then
+            do k = 1, size(kinematic_text_columns)
+               line = line//pad(trim(kinematic_text_columns(k)), 14)
+            end do
+         else
+            do k = 1, size(text_columns)
+               line = line//pad(trim(text_columns(k)), 14)
+            end do
+         end if
          line = trim(line)
       case default
          line = ''
@@ -80,9 +92,10 @@ contains
       case ('csv')
          line = str_int(icase)//','//str_int(summary%stat)//','//str_int(summary%n_patches)
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//','//input_text(p, ia, .false.)
+            if (config%reports_input(ia)) line = line//','//input_text(p, ia, .false.)
          end do
          do k = 1, n_summary_columns
+            if (.not. summary_column_used(k, config%is_kinematic())) cycle
             value = ''
             if (ok) value = format_real(summary_value(summary, k))
             line = line//','//value
@@ -93,11 +106,12 @@ contains
          line = '{"case":'//str_int(icase)//',"status":'//str_int(summary%stat)// &
             ',"n_patches":'//str_int(summary%n_patches)
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//',"'//trim(sweep_axis_names(ia))// &
+            if (config%reports_input(ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
                '":'//input_text(p, ia, .true.)
          end do
          if (ok) then
             do k = 1, n_summary_columns
+               if (.not. summary_column_used(k, config%is_kinematic())) cycle
                line = line//',"'//trim(summary_columns(1, k))//'":'// &
                   format_real(summary_value(summary, k))
             end do
@@ -110,7 +124,13 @@ contains
             if (config%sweep%axes(ia)%active) line = line//pad(input_text(p, ia, .false., &
                short=.true.), 14)
          end do
-         if (ok) then
+         if (ok .and. config%is_kinematic()) then
+            line = line//pad(str_int(summary%n_patches), 14)
+            do k = 2, size(kinematic_text_columns)
+               line = line//pad(short_real(summary_value(summary, &
+                  column_index(kinematic_text_columns(k)))), 14)
+            end do
+         else if (ok) then
             do k = 1, size(text_columns)
                line = line//pad(short_real(summary_value(summary, column_index(text_columns(k)))), &
                   14)
@@ -128,14 +148,27 @@ contains
       type(case_config_type), intent(in) :: config
       !> The summary of the case.
       type(case_summary_type), intent(in) :: summary
-      character(len=:), allocatable :: text
+ character(len=:), allocatable :: text, inputs
       character(len=1), parameter :: nl = new_line('a')
+      type(case_point_type) :: p
       associate (s => summary)
+         if (config%is_kinematic()) then
+            p = config%case_point(1)
+            inputs = 'wheelset   t_y = '//format_real(p%t_y)//' mm, roll = '// &
+               format_real(p%roll)//' rad, yaw = '//format_real(p%yaw)//' rad; V = '// &
+               short_real(p%v_forward)//' mm/s, pitch rate = '//short_real(p%pitch_rate)// &
+               ' rad/s'//velocity_text(p)//nl// &
+               'creepages  nu_x = '//short_real(s%nu_x)//', nu_y = '//short_real(s%nu_y)// &
+               ', phi = '//short_real(s%phi)//' rad/mm at the main patch (from the wheelset '// &
+               'motion), lead x = '//short_real(s%x_track)//' mm; mu = '// &
+               format_real(config%material%friction)//nl
+         else
+            inputs = 'creepages  nu_x = '//format_real(config%creepage%nu_x)//', nu_y = '// &
+               format_real(config%creepage%nu_y)//', phi = '//format_real(config%creepage%phi)// &
+               ' rad/mm; mu = '//format_real(config%material%friction)//nl
+         end if
          text = 'wheel '//trim(config%profiles%wheel)//' on rail '//trim(config%profiles%rail)// &
-            ', t_y = '//format_real(config%position%t_y)//' mm'//nl// &
-            'creepages  nu_x = '//format_real(config%creepage%nu_x)//', nu_y = '// &
-            format_real(config%creepage%nu_y)//', phi = '//format_real(config%creepage%phi)// &
-            ' rad/mm; mu = '//format_real(config%material%friction)//nl// &
+            ', t_y = '//format_real(config%position%t_y)//' mm'//nl//inputs// &
             'contact    '//str_int(s%n_patches)//' patch(es); main patch: gamma0 = '// &
             short_real(s%gamma0)//' rad, r0 = '//short_real(s%r0)//' mm, y_track = '// &
             short_real(s%y_track)//' mm'//nl// &
@@ -146,9 +179,25 @@ contains
             short_real(s%mz)//' N mm (forces on the wheel)'//nl// &
             '           fx = '//short_real(s%fx_norm)//', fy = '//short_real(s%fy_norm)// &
             ' (F/(mu Fn)); adhesion fraction '//short_real(s%adhesion_fraction)// &
-            ', Coulomb ratio '//short_real(s%coulomb_ratio)
+            ', Coulomb ratio '//short_real(s%coulomb_ratio)//nl// &
+            'total      Fx = '//short_real(s%fx_total)//' N, Fy = '//short_real(s%fy_total)// &
+            ' N, Fz = '//short_real(s%fz_total)//' N, Fn = '//short_real(s%fn_total)// &
+            ' N (all patches, on the wheel, track frame: y to the field side, z down)'
       end associate
    end function report_case_text
+
+   !> ", v_y = ..." for the velocities and rates that are not zero.
+   function velocity_text(p) result(text)
+      type(case_point_type), intent(in) :: p
+      character(len=:), allocatable :: text
+      text = ''
+      if (p%v_lateral /= 0.0_wp) text = text//', v_lateral = '//short_real(p%v_lateral)//' mm/s'
+      if (p%v_vertical /= 0.0_wp) text = text//', v_vertical = '//short_real(p%v_vertical)// &
+         ' mm/s'
+      if (p%roll_rate /= 0.0_wp) text = text//', roll rate = '//short_real(p%roll_rate)// &
+         ' rad/s'
+      if (p%yaw_rate /= 0.0_wp) text = text//', yaw rate = '//short_real(p%yaw_rate)//' rad/s'
+   end function velocity_text
 
    !> A swept input of a case as text (quoted for JSON when it is a choice).
    function input_text(p, ia, json, short) result(text)
@@ -168,15 +217,8 @@ contains
          text = trim(p%spin_model)
          if (json) text = json_string(text)
          return
-      case ('t_y'); x = p%t_y
-      case ('roll'); x = p%roll
-      case ('normal_force'); x = p%normal_force
-      case ('approach'); x = p%approach
-      case ('vertical_force'); x = p%vertical_force
-      case ('friction'); x = p%friction
-      case ('nu_x'); x = p%nu_x
-      case ('nu_y'); x = p%nu_y
-      case default; x = p%phi
+      case default
+         x = case_point_value(p, ia)
       end select
       if (present(short)) then
          if (short) then

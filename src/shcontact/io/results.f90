@@ -10,7 +10,9 @@
 !>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`
 !>     /geometry/patch_K/... the patch geometry tables, when every case shares them
 !>     /summary/...          one row per case: case, status, n_patches, main_patch, a column
-!>                           per swept input, a column per result (forces, normalised forces...)
+!>                           per swept input (and per wheelset input of a kinematic run), a
+!>                           column per result (totals in the track frame, the main patch's
+!>                           forces, normalised forces...; its creepages in a kinematic run)
 !>     /failures/case, message           the cases that failed, and why
 !>     /cases/NNNNNN/patch_K/{geometry,normal,tangential}/...   per-case fields, when asked
 !>
@@ -27,14 +29,14 @@ module shcontact_io_results
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, &
       state_adhesion, state_slip
    use shcontact_io_config, only: case_config_type, read_config_text, n_sweep_axes, &
-      sweep_axis_names, axis_geometry, case_point_type
+      sweep_axis_names, axis_geometry, case_point_type, case_point_value
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
-      n_summary_columns, summary_value, set_summary_value, case_not_run
+      n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used
    implicit none
    private
 
@@ -250,22 +252,14 @@ contains
       if (allocated(error)) return
       allocate (column(size(indices)), labels(size(indices)))
       do ia = 1, n_sweep_axes
-         if (.not. config%sweep%axes(ia)%active) cycle
+         if (.not. config%reports_input(ia)) cycle
          name = trim(sweep_axis_names(ia))
          do i = 1, size(indices)
             p = config%case_point(indices(i))
             select case (name)
-            case ('t_y'); column(i) = p%t_y
-            case ('roll'); column(i) = p%roll
-            case ('normal_force'); column(i) = p%normal_force
-            case ('approach'); column(i) = p%approach
-            case ('vertical_force'); column(i) = p%vertical_force
-            case ('friction'); column(i) = p%friction
             case ('bound'); labels(i) = p%bound
             case ('spin_model'); labels(i) = p%spin_model
-            case ('nu_x'); column(i) = p%nu_x
-            case ('nu_y'); column(i) = p%nu_y
-            case ('phi'); column(i) = p%phi
+            case default; column(i) = case_point_value(p, ia)
             end select
          end do
          if (config%sweep%axes(ia)%is_label) then
@@ -276,6 +270,7 @@ contains
          if (allocated(error)) return
       end do
       do k = 1, n_summary_columns
+         if (.not. summary_column_used(k, config%is_kinematic())) cycle
          do i = 1, size(summaries)
             column(i) = summary_value(summaries(i), k)
          end do
@@ -290,8 +285,10 @@ contains
       character(len=:), allocatable :: units
       select case (name)
       case ('t_y', 'approach'); units = 'mm'
-      case ('roll'); units = 'rad'
+      case ('roll', 'yaw'); units = 'rad'
       case ('normal_force', 'vertical_force'); units = 'N'
+      case ('v_forward', 'v_lateral', 'v_vertical'); units = 'mm/s'
+      case ('roll_rate', 'yaw_rate', 'pitch_rate'); units = 'rad/s'
       case ('phi'); units = 'rad/mm'
       case default; units = '1'
       end select
@@ -362,13 +359,24 @@ contains
                error)
             if (allocated(error)) return
          end if
+         if (allocated(result%nu_x)) then
+            ! Kinematic case: the creepages of the wheelset motion at this patch.
+            call h5_write(file, patch//'/tangential/nu_x', result%nu_x(k), '1', error)
+            if (.not. allocated(error)) call h5_write(file, patch//'/tangential/nu_y', &
+               result%nu_y(k), '1', error)
+            if (.not. allocated(error)) call h5_write(file, patch//'/tangential/phi', &
+               result%phi(k), 'rad/mm', error)
+            if (.not. allocated(error)) call h5_write(file, patch//'/tangential/x_track', &
+               result%x_track(k), 'mm', error)
+            if (allocated(error)) return
+         end if
       end do
    end subroutine write_case
 
    !> True when a sweep changes the geometry from case to case.
    pure logical function geometry_varies(config)
       type(case_config_type), intent(in) :: config
-      geometry_varies = config%sweep%axes(1)%active .or. config%sweep%axes(2)%active
+      geometry_varies = config%geometry_swept()
    end function geometry_varies
 
    subroutine write_normal(file, config, path, n, error)
@@ -427,6 +435,8 @@ contains
          '1', error)
       if (.not. allocated(error)) call h5_write(file, path//'/adhesion_fraction', &
          t%adhesion_fraction, '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fy_track', t%fy_track, 'N', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/fz_track', t%fz_track, 'N', error)
       if (allocated(error) .or. .not. allocated(t%x)) return
       if (.not. (config%wants_field('pressure') .or. config%wants_field('traction') .or. &
                  config%wants_field('state') .or. config%wants_field('slip'))) return
@@ -521,6 +531,8 @@ contains
       if (.not. allocated(error)) summaries%main_patch = ints
       do k = 1, n_summary_columns
          if (allocated(error)) exit
+         ! The kinematic columns are only in the files of kinematic runs.
+         if (.not. h5_exists(file, 'summary/'//trim(summary_columns(1, k)))) cycle
          call h5_read(file, 'summary/'//trim(summary_columns(1, k)), column, error)
          if (allocated(error)) exit
          do i = 1, size(summaries)
