@@ -35,7 +35,8 @@ contains
          new_unittest('vertical_force_balance', test_vertical_balance), &
          new_unittest('continuous_where_point_jumps', test_continuity), &
          new_unittest('former_failures_solve', test_former_failures), &
-         new_unittest('bad_state_rejected', test_bad_state)]
+         new_unittest('bad_state_rejected', test_bad_state), &
+         new_unittest('independent_of_earlier_calls', test_history)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -349,5 +350,30 @@ contains
          contact_load_type(load_vertical_force, f_z), result, err)
       call check(error, .not. allocated(err), 'the solver is not usable after an error')
    end subroutine test_bad_state
+
+   !> A call gives the same bits whatever the object solved before (threaded and resumed sweeps
+   !> rely on it): state A after B equals A on a fresh object.
+   subroutine test_history(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: used, fresh
+      type(contact_result_type) :: a1, a2
+      type(lib_error), allocatable :: err
+
+      call used%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call fresh%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      call used%solve_kinematic(rolling(8.0_wp, 0.004_wp, 1.0e-3_wp), &
+         contact_load_type(load_vertical_force, f_z), a1, err)
+      call used%solve_kinematic(rolling(2.0_wp, -0.002_wp, 0.5e-3_wp), &
+         contact_load_type(load_vertical_force, f_z), a1, err)
+      call fresh%solve_kinematic(rolling(2.0_wp, -0.002_wp, 0.5e-3_wp), &
+         contact_load_type(load_vertical_force, f_z), a2, err)
+      call check(error, .not. allocated(err), 'solve_kinematic failed')
+      if (allocated(error)) return
+      call check(error, all([a1%track%fx, a1%track%fy, a1%track%fz, a1%track%fn] == &
+         [a2%track%fx, a2%track%fy, a2%track%fz, a2%track%fn]), &
+         'the result depends on the earlier calls')
+   end subroutine test_history
 
 end module test_kinematics

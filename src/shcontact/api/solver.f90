@@ -191,8 +191,6 @@ module shcontact_api_solver
       type(creepage_type) :: creepage(max_patches)
       !> Longitudinal position of each patch's reference point (mm, track frame).
       real(wp) :: x_track(max_patches) = 0.0_wp
-      !> Normal-problem vertical load over the total vertical load of the last kinematic call.
-      real(wp) :: vertical_ratio = 1.0_wp
    contains
       !> Create the solver from profiles, or from profile names (`builtin:NAME` or files).
       generic :: init => init_profiles, init_names
@@ -377,7 +375,7 @@ contains
       type(creepage_type) :: creepage
       type(contact_point_type) :: point
       type(contact_load_type) :: normal_load
-      real(wp) :: speed, carried
+      real(wp) :: speed, carried, q, q_prev, c_prev
       integer :: k, it
 
       if (.not. self%ready) then
@@ -396,10 +394,13 @@ contains
       options%fields = present(fields)
       options%spin_model = spin_additive
       ! A vertical load is the total vertical force on the wheel, tangential forces included
-      ! (as CONTACT's FZ): the normal problem's share is corrected until the track-frame total
-      ! matches, starting from the last call's ratio.
+      ! (as CONTACT's FZ): the normal problem's share q is corrected until the track-frame total
+      ! C(q) matches, by a secant iteration from q = F_z (always from there, so that a call does
+      ! not depend on the calls before it).
       normal_load = load
-      if (load%mode == load_vertical_force) normal_load%value = load%value*self%vertical_ratio
+      q_prev = 0.0_wp
+      c_prev = 0.0_wp
+      carried = 0.0_wp
       do it = 1, max_vertical_iterations
          call update_normal(self, normal_load, error)
          if (allocated(error)) return
@@ -425,7 +426,15 @@ contains
                'wheel); expected a positive vertical force', stat_numerical)
             return
          end if
-         normal_load%value = normal_load%value*load%value/carried
+         q = normal_load%value*load%value/carried
+         if (it > 1 .and. (carried - c_prev)*(normal_load%value - q_prev) > 0.0_wp) then
+            q = normal_load%value + (load%value - carried)*(normal_load%value - q_prev)/ &
+               (carried - c_prev)
+            if (.not. (q > 0.0_wp)) q = normal_load%value*load%value/carried
+         end if
+         q_prev = normal_load%value
+         c_prev = carried
+         normal_load%value = q
       end do
       if (load%mode == load_vertical_force) then
          if (abs(carried - load%value) > 1.0e3_wp*vertical_rtol*load%value) then
@@ -434,7 +443,6 @@ contains
                stat_numerical)
             return
          end if
-         self%vertical_ratio = normal_load%value/load%value
       end if
       call summarise(self, result)
       if (present(fields)) call copy_fields(self, fields)
