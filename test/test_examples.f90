@@ -53,6 +53,7 @@ contains
          new_unittest('c_example', test_c), &
          new_unittest('python_ctypes_example', test_python), &
          new_unittest('interfaces_agree', test_agree), &
+         new_unittest('doc_api_numbers', test_doc_numbers), &
          new_unittest('no_allocation_in_solve', test_allocations), &
          new_unittest('vehicle_wheelset_short_run', test_vehicle) &
          ]
@@ -124,6 +125,46 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_agree
+
+   !> The numbers doc/api.md quotes (indented `key value` lines, 8 digits) are those the F77
+   !> example prints.
+   subroutine test_doc_numbers(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: doc = 'doc/api.md'
+      real(wp) :: printed(size(keys)), x
+      logical :: quoted(size(keys))
+      character(len=512) :: line
+      character(len=32) :: name
+      integer :: unit, stat, i
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (.not. exists(output('f77'))) then
+         call skip_test(error, 'no F77 example output (run the suite, not this test)')
+         return
+      end if
+      call read_values(output('f77'), printed, error)
+      if (allocated(error)) return
+      quoted = .false.
+      open (newunit=unit, file=doc, status='old', action='read')
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (line(1:4) /= '    ' .or. line(5:5) == ' ') cycle
+         read (line, *, iostat=stat) name, x
+         if (stat /= 0) cycle
+         do i = 1, size(keys)
+            if (name /= keys(i)) cycle
+            quoted(i) = .true.
+            call check(error, x, printed(i), rel=.true., thr=1.0e-7_wp, &
+               message=doc//': '//trim(line)//' differs from the example')
+         end do
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      if (allocated(error)) return
+      call check(error, all(quoted), message=doc//': a quoted example number is missing')
+   end subroutine test_doc_numbers
 
    !> shcontact_solve allocates nothing at a repeated wheel position (new loads, load modes and
    !> creepages), nor when the wheel moves among positions whose tables fit the workspaces
