@@ -115,6 +115,9 @@ C        Contact forces at the current state, both wheels.
                   WRITE (*, '(A,F10.5,A,I2,A,I3,2A)') '# t =', T,
      &               ' s wheel', ISIDE(IW), ': status', ISTAT, ': ',
      &               MSG(1:LEN_TRIM(MSG))
+                  WRITE (*, '(A,4(1X,1PE24.16))') '#   y_ws (mm), yaw,'
+     &               // ' v_lateral (mm/s), yaw rate:', Y*1.0D3, PSI,
+     &               VY*1.0D3, R
                END IF
 C              Keep the forces of the last step.
             END IF
