@@ -35,7 +35,10 @@ extern "C" {
 #define SHCONTACT_LOAD_VERTICAL_FORCE 2 /* vertical wheel load (N) shared by all patches */
 #define SHCONTACT_LOAD_APPROACH 3       /* approach (mm) of the deepest patch */
 
-/* Values of one patch (shcontact_patch; also the first values of a result), 0-based. */
+/* Values of one patch (shcontact_patch; also the first values of a result), 0-based (the
+ * Fortran include file shcontact.fi has the same, 1-based). Side frame: for a left wheel the
+ * lateral values (F_y, M_z, F_y track, gamma0, nu_y, phi, SUM_FY) are those of its mirror image;
+ * multiply by the side (-1) for the track frame. Y_TRACK is the true track coordinate. */
 #define SHCONTACT_FX 0             /* F_x (N), rolling direction */
 #define SHCONTACT_FY 1             /* F_y (N), lateral, contact plane */
 #define SHCONTACT_MZ 2             /* spin moment M_z about the reference point (N mm) */
@@ -65,6 +68,15 @@ extern "C" {
 #define SHCONTACT_SUM_FN 23
 #define SHCONTACT_DZ 24            /* rigid vertical approach of the wheel (mm), vertical load */
 #define SHCONTACT_RESULT_SIZE 25
+
+/* Values of a kinematic result (shcontact_solve_kinematic, shcontact_patch_kinematic): the
+ * result layout, then the patch's creepages and the longitudinal position of its contact point.
+ * shcontact_patch_kinematic puts the patch's values at 0-16 and 25-28, the result's at 17-24. */
+#define SHCONTACT_NU_X 25          /* longitudinal creepage, wheel relative to rail */
+#define SHCONTACT_NU_Y 26          /* lateral creepage */
+#define SHCONTACT_PHI 27           /* spin creepage (rad/mm) */
+#define SHCONTACT_X_TRACK 28       /* contact point, longitudinal track coordinate (mm, forward) */
+#define SHCONTACT_KIN_SIZE 29
 
 /* An opaque contact (one wheel on its rail). */
 typedef struct shcontact_contact shcontact_contact;
@@ -105,6 +117,21 @@ int shcontact_solve(shcontact_contact *handle, double t_y, double roll, int load
 
 /* values[SHCONTACT_PATCH_SIZE] of patch `patch` (1-based) of the last solve. */
 int shcontact_patch(shcontact_contact *handle, int patch, double *values);
+
+/* Solve one wheel from the wheelset's position and velocities (CONTACT module 1 meaning; track
+ * frame x forward, y to the right, z down): lateral shift y_ws (mm), yaw and roll (rad), the
+ * velocity of the wheelset centre v_forward (> 0), v_lateral, v_vertical (mm/s), roll_rate,
+ * yaw_rate and pitch_rate (rad/s; pitch_rate < 0 rolling forward, pure rolling -v_forward/R0).
+ * Every patch gets the creepages of the rigid-body motion at its own contact point. load_mode
+ * SHCONTACT_LOAD_VERTICAL_FORCE is what a vehicle code wants. values[SHCONTACT_KIN_SIZE]
+ * receives the result (zeros on failure). */
+int shcontact_solve_kinematic(shcontact_contact *handle, double y_ws, double yaw, double roll,
+                              double v_forward, double v_lateral, double v_vertical,
+                              double roll_rate, double yaw_rate, double pitch_rate, int load_mode,
+                              double load, double *values);
+
+/* values[SHCONTACT_KIN_SIZE] of patch `patch` (1-based) of the last solve, kinematic layout. */
+int shcontact_patch_kinematic(shcontact_contact *handle, int patch, double *values);
 
 /* Status of the last call on handle; its message is copied to buffer (NUL-terminated, cut to
  * length - 1 characters, empty after a success). A NULL handle gives SHCONTACT_USAGE. */

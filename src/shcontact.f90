@@ -50,8 +50,9 @@ module shcontact
    ! api
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       patch_result_type, contact_fields_type, load_profile, load_normal_force, &
-      load_vertical_force, load_approach, load_mode_name, max_patches, patch_value_count, &
-      result_value_count, patch_values, result_values
+      load_vertical_force, load_approach, load_mode_name, max_patches
+   use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
+      patch_values, result_values, kinematic_values
    implicit none
    private
 
@@ -80,7 +81,7 @@ module shcontact
       state_adhesion, state_slip
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type, &
       contact_fields_type, load_profile, load_normal_force, load_vertical_force, load_approach, &
-      load_mode_name, max_patches, patch_value_count, result_value_count, patch_values, &
-      result_values
+      load_mode_name, max_patches, patch_value_count, result_value_count, kinematic_value_count, &
+      patch_values, result_values, kinematic_values
 
 end module shcontact

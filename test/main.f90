@@ -31,6 +31,7 @@ program tester
    use test_app, only: collect_app
    use test_api, only: collect_api
    use test_kinematics, only: collect_kinematics
+   use test_api_kinematic, only: collect_api_kinematic
    use test_examples, only: collect_examples
    use test_validation, only: collect_validation
    use test_performance_invariants, only: collect_performance_invariants
@@ -63,6 +64,7 @@ program tester
       new_testsuite('app', collect_app), &
       new_testsuite('api', collect_api), &
       new_testsuite('kinematics', collect_kinematics), &
+      new_testsuite('api_kinematic', collect_api_kinematic), &
       new_testsuite('examples', collect_examples), &
       new_testsuite('validation', collect_validation), &
       new_testsuite('performance_invariants', collect_performance_invariants) &

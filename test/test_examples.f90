@@ -9,10 +9,14 @@
 !> The archive is the newest build/*/shcontact/libshcontact.a (the one `fpm test` just built),
 !> or $SHCONTACT_ARCHIVE. Missing tools (bash, gfortran, gcc, pkg-config, python3) skip a test.
 module test_examples
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp, i8
    use shcontact_api_solver, only: contact_result_type
+   use shcontact_api_values, only: kinematic_value_count, kinematic_values, value_sum_fx, &
+      value_sum_fy, value_sum_fz, value_fn, value_nu_x, value_nu_y, value_phi, value_x_track
    use test_api, only: headline_result, headline_t_y
+   use test_api_kinematic, only: kinematic_case_result
    implicit none
    private
 
@@ -23,9 +27,13 @@ module test_examples
    character(len=*), parameter :: prefix = scratch//'/prefix'
    character(len=*), parameter :: pkg_config = 'PKG_CONFIG_PATH='//prefix// &
       '/lib/pkgconfig pkg-config'
-   !> Keys printed by every example, in the same order.
-   character(len=*), parameter :: keys(9) = [character(len=9) :: 'fx', 'fy', 'mz', 'fn', &
-      'fx_norm', 'fy_norm', 'gamma0', 'n_patches', 'sum_fz']
+   !> Keys printed by every example: the headline case, then the kinematic call.
+   character(len=*), parameter :: keys(17) = [character(len=11) :: 'fx', 'fy', 'mz', 'fn', &
+      'fx_norm', 'fy_norm', 'gamma0', 'n_patches', 'sum_fz', 'kin_sum_fx', 'kin_sum_fy', &
+      'kin_sum_fz', 'kin_fn', 'kin_nu_x', 'kin_nu_y', 'kin_phi', 'kin_x_track']
+   !> Where the kinematic keys' numbers are in the kinematic layout.
+   integer, parameter :: kin_index(8) = [value_sum_fx, value_sum_fy, value_sum_fz, value_fn, &
+      value_nu_x, value_nu_y, value_phi, value_x_track]
    !> Round-off between this tester and the installed library, which may come from a build with
    !> other optimisation flags (the same build agrees to the last bit).
    real(wp), parameter :: round_off = 1.0e-9_wp
@@ -45,7 +53,9 @@ contains
          new_unittest('c_example', test_c), &
          new_unittest('python_ctypes_example', test_python), &
          new_unittest('interfaces_agree', test_agree), &
-         new_unittest('no_allocation_in_solve', test_allocations) &
+         new_unittest('doc_api_numbers', test_doc_numbers), &
+         new_unittest('no_allocation_in_solve', test_allocations), &
+         new_unittest('vehicle_wheelset_short_run', test_vehicle) &
          ]
    end subroutine collect_examples
 
@@ -116,6 +126,46 @@ contains
       end do
    end subroutine test_agree
 
+   !> The numbers doc/api.md quotes (indented `key value` lines, 8 digits) are those the F77
+   !> example prints.
+   subroutine test_doc_numbers(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: doc = 'doc/api.md'
+      real(wp) :: printed(size(keys)), x
+      logical :: quoted(size(keys))
+      character(len=512) :: line
+      character(len=32) :: name
+      integer :: unit, stat, i
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (.not. exists(output('f77'))) then
+         call skip_test(error, 'no F77 example output (run the suite, not this test)')
+         return
+      end if
+      call read_values(output('f77'), printed, error)
+      if (allocated(error)) return
+      quoted = .false.
+      open (newunit=unit, file=doc, status='old', action='read')
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (line(1:4) /= '    ' .or. line(5:5) == ' ') cycle
+         read (line, *, iostat=stat) name, x
+         if (stat /= 0) cycle
+         do i = 1, size(keys)
+            if (name /= keys(i)) cycle
+            quoted(i) = .true.
+            call check(error, x, printed(i), rel=.true., thr=1.0e-7_wp, &
+               message=doc//': '//trim(line)//' differs from the example')
+         end do
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      if (allocated(error)) return
+      call check(error, all(quoted), message=doc//': a quoted example number is missing')
+   end subroutine test_doc_numbers
+
    !> shcontact_solve allocates nothing at a repeated wheel position (new loads, load modes and
    !> creepages), nor when the wheel moves among positions whose tables fit the workspaces
    !> (t_y = 0, 1, 2, 4.733 mm after a warm-up over them, both load modes). The count at new
@@ -155,6 +205,90 @@ contains
          'positions already visited')
    end subroutine test_allocations
 
+   !> The vehicle example (examples/vehicle/wheelset.f, fixed-form Fortran 77 through
+   !> SHC_SOLVE_KIN) built against the installed library and run for 0.05 s from a 3 mm offset:
+   !> no failed contact call, finite forces, each wheel carrying about its 64.7 kN, a lateral
+   !> contact force that opposes the offset at the start, and the wheelset moving back towards
+   !> the track centre.
+   subroutine test_vehicle(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: csv = scratch//'/vehicle.csv'
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: failed
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      call check(error, run('gfortran examples/vehicle/wheelset.f $('//pkg_config// &
+         ' --cflags --libs shcontact) -o '//scratch//'/wheelset 2> '//output('vehicle_build')), &
+         0, message='building examples/vehicle/wheelset.f failed: see '// &
+         output('vehicle_build'))
+      if (allocated(error)) return
+      call check(error, run(scratch//'/wheelset --duration 0.05 --dt 2.5e-4 --every 1 --csv '// &
+         csv//' > '//output('vehicle')), 0, message='the vehicle example failed: see '// &
+         output('vehicle'))
+      if (allocated(error)) return
+      failed = value_of(output('vehicle'), 'failed_calls')
+      call check(error, failed, 0.0_wp, message='failed contact calls')
+      if (allocated(error)) return
+      call check(error, value_of(output('vehicle'), 'contact_calls'), 402.0_wp, &
+         message='contact calls: 2 wheels x 201 steps')
+      if (allocated(error)) return
+      call read_csv(csv, 15, rows, error)
+      if (allocated(error)) return
+      call check(error, size(rows, 2), 201, message='CSV rows')
+      if (allocated(error)) return
+      call check(error, all(ieee_is_finite(rows)), message='non-finite value in '//csv)
+      if (allocated(error)) return
+      ! Columns: t, y, yaw, vy, yaw rate, fx fy fz np right, fx fy fz np left, fy total, mz.
+      call check(error, all(abs(abs(rows([8, 12], :)) - 64.7e3_wp) < 0.05_wp*64.7e3_wp), &
+         message='vertical wheel force far from 64.7 kN')
+      if (allocated(error)) return
+      call check(error, rows(2, 1) > 0.0_wp .and. rows(14, 1) < 0.0_wp, &
+         message='the lateral contact force does not oppose the initial offset')
+      if (allocated(error)) return
+      call check(error, rows(2, size(rows, 2)) < 0.5_wp*rows(2, 1), &
+         message='the wheelset does not move back towards the centre')
+   end subroutine test_vehicle
+
+   !> A CSV file with a header line and n numeric columns, as rows(n, lines).
+   subroutine read_csv(file, n, rows, error)
+      character(len=*), intent(in) :: file
+      integer, intent(in) :: n
+      real(wp), allocatable, intent(out) :: rows(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: row(n)
+      real(wp), allocatable :: grown(:, :)
+      integer :: unit, stat, m
+      character(len=1024) :: line
+
+      allocate (rows(n, 256))
+      m = 0
+      open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+      if (stat /= 0) then
+         call test_failed(error, file//': cannot open')
+         return
+      end if
+      read (unit, '(a)', iostat=stat) line
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         read (line, *, iostat=stat) row
+         if (stat /= 0) then
+            call test_failed(error, file//': bad line: '//trim(line))
+            exit
+         end if
+         m = m + 1
+         if (m > size(rows, 2)) then
+            allocate (grown(n, 2*size(rows, 2)))
+            grown(:, 1:m - 1) = rows(:, 1:m - 1)
+            call move_alloc(grown, rows)
+         end if
+         rows(:, m) = row
+      end do
+      close (unit)
+      rows = rows(:, 1:m)
+   end subroutine read_csv
+
    ! --- helpers ---------------------------------------------------------------------------------
 
    !> Build (unless `build` is empty) and run one example, then compare its numbers with the
@@ -163,7 +297,8 @@ contains
       character(len=*), intent(in) :: tool, build, command, name
       type(error_type), allocatable, intent(out) :: error
       type(contact_result_type) :: expected
-      real(wp) :: values(size(keys))
+      real(wp) :: values(size(keys)), kinematic(kinematic_value_count)
+      integer :: i
 
       call ensure_installed(error)
       if (allocated(error)) return
@@ -204,8 +339,17 @@ contains
       if (allocated(error)) return
       call check(error, value_of(output(name), 't_y'), headline_t_y, thr=1.0e-12_wp)
       if (allocated(error)) return
+      call kinematic_case_result(expected, error)
+      if (allocated(error)) return
+      call kinematic_values(expected, kinematic)
+      do i = 1, size(kin_index)
+         call check(error, values(9 + i), kinematic(kin_index(i)), rel=.true., thr=round_off, &
+            message=name//' example: '//trim(keys(9 + i)))
+         if (allocated(error)) return
+      end do
       call check_bad_call(output(name), [character(len=21) :: 'status_invalid_handle', &
-         'status_negative_load', 'status_nan_creepage'], [1, 2, 2], error)
+         'status_negative_load', 'status_nan_creepage', 'status_kin_zero_speed'], &
+         [1, 2, 2, 2], error)
    end subroutine example_test
 
    !> Each bad-call line: `name status message` with the expected status and a message.

@@ -1,9 +1,12 @@
 /*
- * shcontact from C: the headline case through the C API (include/shcontact.h), then three bad
- * calls that must come back with a status and a message.
+ * shcontact from C through the C API (include/shcontact.h): a kinematic call as a vehicle code
+ * makes it, the headline case with prescribed creepages, then four bad calls that must come back
+ * with a status and a message.
  *
  * S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm, G = 82670 MPa, nu = 0.27,
- * mu = 0.3, normal force 64.7 kN, creepages 0.58e-3, 0.061e-3, spin 2.74e-4 1/mm, FASTSIM_SH.
+ * mu = 0.3, FASTSIM_SH. Kinematic call: wheelset at y_ws = 4.733 mm, yaw 4 mrad, 40 m/s, pure
+ * rolling on R0, vertical wheel load 64.7 kN. Headline case: normal force 64.7 kN, creepages
+ * 0.58e-3, 0.061e-3, spin 2.74e-4 1/mm.
  *
  * Build:  cc headline.c $(pkg-config --cflags --libs shcontact) -o headline
  * Run:    ./headline [t_y]      (lateral wheelset shift in mm, default 4.733)
@@ -36,7 +39,10 @@ int main(int argc, char **argv)
     const double t_y = argc > 1 ? atof(argv[1]) : 4.733;
     const double roll = 0.0, normal_force = 64.7e3;
     const double nu_x = 0.58e-3, nu_y = 0.061e-3, phi = 2.74e-4;
-    double v[SHCONTACT_RESULT_SIZE];
+    /* The wheelset of the kinematic call (mm, rad, mm/s, rad/s, N). */
+    const double y_ws = 4.733, yaw = 4.0e-3, speed = 40.0e3, pitch_rate = -speed / 460.0;
+    const double wheel_load = 64.7e3;
+    double v[SHCONTACT_RESULT_SIZE], k[SHCONTACT_KIN_SIZE];
     shcontact_contact *contact = NULL;
     int status;
 
@@ -46,6 +52,22 @@ int main(int argc, char **argv)
         return fail(contact, "shcontact_set_material");
     if (shcontact_set_option(contact, "tangential%method", "fastsim-sh") != 0)
         return fail(contact, "shcontact_set_option");
+
+    /* The kinematic call: position, velocities, vertical wheel load. */
+    if (shcontact_solve_kinematic(contact, y_ws, yaw, 0.0, speed, 0.0, 0.0, 0.0, 0.0, pitch_rate,
+                                  SHCONTACT_LOAD_VERTICAL_FORCE, wheel_load, k) != 0)
+        return fail(contact, "shcontact_solve_kinematic");
+    printf("# kinematic call, C interface\n");
+    printf("kin_sum_fx %.17e\n", k[SHCONTACT_SUM_FX]);
+    printf("kin_sum_fy %.17e\n", k[SHCONTACT_SUM_FY]);
+    printf("kin_sum_fz %.17e\n", k[SHCONTACT_SUM_FZ]);
+    printf("kin_fn %.17e\n", k[SHCONTACT_FN]);
+    printf("kin_nu_x %.17e\n", k[SHCONTACT_NU_X]);
+    printf("kin_nu_y %.17e\n", k[SHCONTACT_NU_Y]);
+    printf("kin_phi %.17e\n", k[SHCONTACT_PHI]);
+    printf("kin_x_track %.17e\n", k[SHCONTACT_X_TRACK]);
+
+    /* The headline case: position, normal force, creepages. */
     if (shcontact_solve(contact, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, nu_x, nu_y,
                         phi, v) != 0)
         return fail(contact, "shcontact_solve");
@@ -62,7 +84,8 @@ int main(int argc, char **argv)
     printf("n_patches %.17e\n", v[SHCONTACT_N_PATCHES]);
     printf("sum_fz %.17e\n", v[SHCONTACT_SUM_FZ]);
 
-    /* Bad calls: an invalid (NULL) handle, a negative load, a NaN creepage. */
+    /* Bad calls: an invalid (NULL) handle, a negative load, a NaN creepage, a wheelset that does
+     * not move forward. */
     status = shcontact_solve(NULL, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, nu_x,
                              nu_y, phi, v);
     report_bad_call("status_invalid_handle", NULL, status);
@@ -72,6 +95,9 @@ int main(int argc, char **argv)
     status = shcontact_solve(contact, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, NAN,
                              nu_y, phi, v);
     report_bad_call("status_nan_creepage", contact, status);
+    status = shcontact_solve_kinematic(contact, y_ws, yaw, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, pitch_rate,
+                                       SHCONTACT_LOAD_VERTICAL_FORCE, wheel_load, k);
+    report_bad_call("status_kin_zero_speed", contact, status);
 
     shcontact_destroy(contact);
     return 0;

@@ -1,67 +1,98 @@
-C     shcontact from fixed-form Fortran 77: the headline case through the
-C     legacy entry points shc_* (doc/api.md), then three bad calls that
-C     must come back with a status and a message.
+C     shcontact from fixed-form Fortran 77 through the legacy entry
+C     points SHC_* (doc/api.md) and the include file shcontact.fi: a
+C     kinematic call as a vehicle code makes it, the headline case with
+C     prescribed creepages, then four bad calls that must come back with
+C     a status and a message.
 C
 C     S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm,
-C     G = 82670 MPa, nu = 0.27, mu = 0.3, normal force 64.7 kN, creepages
-C     0.58e-3, 0.061e-3, spin 2.74e-4 1/mm, FASTSIM_SH (the defaults).
+C     G = 82670 MPa, nu = 0.27, mu = 0.3, FASTSIM_SH (the defaults).
+C     Kinematic call: wheelset at Y_WS = 4.733 mm, yaw 4 mrad, 40 m/s,
+C     pure rolling on R0, vertical wheel load 64.7 kN. Headline case:
+C     normal force 64.7 kN, creepages 0.58e-3, 0.061e-3, 2.74e-4 1/mm.
 C
 C     Build:  gfortran headline.f $(pkg-config --cflags --libs shcontact)
 C
       PROGRAM HEADLN
       IMPLICIT NONE
+      INCLUDE 'shcontact.fi'
       DOUBLE PRECISION TY, ROLL, FN, CKSI, CETA, CPHI
 C     Lateral wheelset shift Y_WS (mm): the app's default (physics.md
 C     decision 13).
       PARAMETER (TY = 4.733D0, ROLL = 0.0D0, FN = 64.7D3)
       PARAMETER (CKSI = 0.58D-3, CETA = 0.061D-3, CPHI = 2.74D-4)
-C     Load mode 1: normal force on the deepest patch.
-      INTEGER IFORCE
-      PARAMETER (IFORCE = 1)
-      DOUBLE PRECISION VALUES(25), G, POISS, FRIC, CNAN
+C     The wheelset of the kinematic call (mm, rad, mm/s, rad/s, N).
+      DOUBLE PRECISION YWS, YAW, VS, VPITCH, FZ
+      PARAMETER (YWS = 4.733D0, YAW = 4.0D-3, VS = 40.0D3)
+      PARAMETER (VPITCH = -VS/460.0D0, FZ = 64.7D3)
+      DOUBLE PRECISION VALUES(SHC_RESULT_SIZE), G, POISS, FRIC, CNAN
+      DOUBLE PRECISION VKIN(SHC_KIN_SIZE)
       INTEGER IH, ISTAT
       CHARACTER*200 MSG
       CHARACTER*3 STRNAN
       DATA STRNAN /'NaN'/
 C
       CALL SHC_CREATE(IH, 'builtin:S1002', 'builtin:UIC60', 1, ISTAT)
-      IF (ISTAT .NE. 0) GOTO 900
+      IF (ISTAT .NE. SHC_OK) GOTO 900
       G = 82670.0D0
       POISS = 0.27D0
       FRIC = 0.3D0
       CALL SHC_SET_MATERIAL(IH, G, POISS, FRIC, ISTAT)
-      IF (ISTAT .NE. 0) GOTO 900
+      IF (ISTAT .NE. SHC_OK) GOTO 900
       CALL SHC_SET_OPTION(IH, 'tangential%method', 'fastsim-sh', ISTAT)
-      IF (ISTAT .NE. 0) GOTO 900
-      CALL SHC_SOLVE(IH, TY, ROLL, IFORCE, FN, CKSI, CETA, CPHI,
-     &               VALUES, ISTAT)
-      IF (ISTAT .NE. 0) GOTO 900
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+C
+C     The kinematic call: position, velocities, vertical wheel load.
+C     Arguments: Y_WS, YAW, ROLL, VS, VY, VZ, VROLL, VYAW, VPITCH.
+      CALL SHC_SOLVE_KIN(IH, YWS, YAW, 0.0D0, VS, 0.0D0, 0.0D0,
+     &                   0.0D0, 0.0D0, VPITCH,
+     &                   SHC_LOAD_VERTICAL_FORCE, FZ, VKIN, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      WRITE (*, '(A)') '# kinematic call, legacy Fortran 77 interface'
+      WRITE (*, 100) 'kin_sum_fx', VKIN(SHC_SUM_FX)
+      WRITE (*, 100) 'kin_sum_fy', VKIN(SHC_SUM_FY)
+      WRITE (*, 100) 'kin_sum_fz', VKIN(SHC_SUM_FZ)
+      WRITE (*, 100) 'kin_fn', VKIN(SHC_FN)
+      WRITE (*, 100) 'kin_nu_x', VKIN(SHC_NU_X)
+      WRITE (*, 100) 'kin_nu_y', VKIN(SHC_NU_Y)
+      WRITE (*, 100) 'kin_phi', VKIN(SHC_PHI)
+      WRITE (*, 100) 'kin_x_track', VKIN(SHC_X_TRACK)
+C
+C     The headline case: position, normal force, creepages.
+      CALL SHC_SOLVE(IH, TY, ROLL, SHC_LOAD_NORMAL_FORCE, FN, CKSI,
+     &               CETA, CPHI, VALUES, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
       WRITE (*, '(A)') '# headline case, legacy Fortran 77 interface'
       WRITE (*, 100) 't_y', TY
-      WRITE (*, 100) 'fx', VALUES(1)
-      WRITE (*, 100) 'fy', VALUES(2)
-      WRITE (*, 100) 'mz', VALUES(3)
-      WRITE (*, 100) 'fn', VALUES(4)
-      WRITE (*, 100) 'fx_norm', VALUES(5)
-      WRITE (*, 100) 'fy_norm', VALUES(6)
-      WRITE (*, 100) 'gamma0', VALUES(12)
-      WRITE (*, 100) 'n_patches', VALUES(18)
-      WRITE (*, 100) 'sum_fz', VALUES(23)
+      WRITE (*, 100) 'fx', VALUES(SHC_FX)
+      WRITE (*, 100) 'fy', VALUES(SHC_FY)
+      WRITE (*, 100) 'mz', VALUES(SHC_MZ)
+      WRITE (*, 100) 'fn', VALUES(SHC_FN)
+      WRITE (*, 100) 'fx_norm', VALUES(SHC_FX_NORM)
+      WRITE (*, 100) 'fy_norm', VALUES(SHC_FY_NORM)
+      WRITE (*, 100) 'gamma0', VALUES(SHC_GAMMA0)
+      WRITE (*, 100) 'n_patches', VALUES(SHC_N_PATCHES)
+      WRITE (*, 100) 'sum_fz', VALUES(SHC_SUM_FZ)
 C
-C     Bad calls: an invalid handle, a negative load, a NaN creepage.
-      CALL SHC_SOLVE(IH + 999, TY, ROLL, IFORCE, FN, CKSI, CETA, CPHI,
-     &               VALUES, ISTAT)
+C     Bad calls: an invalid handle, a negative load, a NaN creepage,
+C     a wheelset that does not move forward.
+      CALL SHC_SOLVE(IH + 999, TY, ROLL, SHC_LOAD_NORMAL_FORCE, FN,
+     &               CKSI, CETA, CPHI, VALUES, ISTAT)
       CALL SHC_ERRMSG(IH + 999, MSG)
       WRITE (*, 200) 'status_invalid_handle', ISTAT, MSG
-      CALL SHC_SOLVE(IH, TY, ROLL, IFORCE, -FN, CKSI, CETA, CPHI,
-     &               VALUES, ISTAT)
+      CALL SHC_SOLVE(IH, TY, ROLL, SHC_LOAD_NORMAL_FORCE, -FN, CKSI,
+     &               CETA, CPHI, VALUES, ISTAT)
       CALL SHC_ERRMSG(IH, MSG)
       WRITE (*, 200) 'status_negative_load', ISTAT, MSG
       READ (STRNAN, *) CNAN
-      CALL SHC_SOLVE(IH, TY, ROLL, IFORCE, FN, CNAN, CETA, CPHI,
-     &               VALUES, ISTAT)
+      CALL SHC_SOLVE(IH, TY, ROLL, SHC_LOAD_NORMAL_FORCE, FN, CNAN,
+     &               CETA, CPHI, VALUES, ISTAT)
       CALL SHC_ERRMSG(IH, MSG)
       WRITE (*, 200) 'status_nan_creepage', ISTAT, MSG
+      CALL SHC_SOLVE_KIN(IH, YWS, YAW, 0.0D0, 0.0D0, 0.0D0, 0.0D0,
+     &                   0.0D0, 0.0D0, VPITCH,
+     &                   SHC_LOAD_VERTICAL_FORCE, FZ, VKIN, ISTAT)
+      CALL SHC_ERRMSG(IH, MSG)
+      WRITE (*, 200) 'status_kin_zero_speed', ISTAT, MSG
 C
       CALL SHC_DESTROY(IH, ISTAT)
       STOP

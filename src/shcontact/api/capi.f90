@@ -11,17 +11,18 @@ module shcontact_api_capi
       c_null_char, c_loc, c_f_pointer, c_associated, c_size_t
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: stat_usage
-   use shcontact_api_solver, only: patch_value_count, result_value_count
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
-      context_set_track, context_set_option, context_solve, context_patch, context_message, &
-      context_fail
+      context_set_track, context_set_option, context_solve, context_solve_kinematic, &
+      context_patch, context_patch_kinematic, context_message, context_fail
    use shcontact_version_info, only: shcontact_version
    implicit none
    private
 
    public :: shcontact_create, shcontact_destroy, shcontact_set_material, shcontact_set_track, &
-      shcontact_set_option, shcontact_solve, shcontact_patch, shcontact_last_error, &
-      shcontact_version_string
+      shcontact_set_option, shcontact_solve, shcontact_solve_kinematic, shcontact_patch, &
+      shcontact_patch_kinematic, shcontact_last_error, shcontact_version_string
 
    interface
       !> The C library's strlen.
@@ -154,6 +155,52 @@ contains
       stat = context_solve(ctx, real(t_y, wp), real(roll, wp), int(load_mode), real(load, wp), &
          real(nu_x, wp), real(nu_y, wp), real(phi, wp), values)
    end function shcontact_solve
+
+   !> Solve one wheel from the wheelset's position and velocities (CONTACT module 1 meaning):
+   !> lateral shift y_ws (mm), yaw and roll (rad), velocities of the wheelset centre (mm/s;
+   !> v_forward > 0), roll, yaw and pitch rate (rad/s; pitch_rate < 0 rolling forward), load mode
+   !> and value. values receives SHCONTACT_KIN_SIZE numbers (zeros on failure).
+   integer(c_int) function shcontact_solve_kinematic(handle, y_ws, yaw, roll, v_forward, &
+         v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate, load_mode, load, values) &
+         result(stat) bind(C, name='shcontact_solve_kinematic')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Position (mm, rad).
+      real(c_double), value :: y_ws, yaw, roll
+      !> Velocities (mm/s) and rates (rad/s).
+      real(c_double), value :: v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate
+      !> Load mode and value.
+      integer(c_int), value :: load_mode
+      real(c_double), value :: load
+      !> The result (kinematic_value_count values).
+      real(c_double), intent(out) :: values(kinematic_value_count)
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_solve_kinematic(ctx, wheelset_state_type(y_ws=real(y_ws, wp), &
+         yaw=real(yaw, wp), roll=real(roll, wp), v_forward=real(v_forward, wp), &
+         v_lateral=real(v_lateral, wp), v_vertical=real(v_vertical, wp), &
+         roll_rate=real(roll_rate, wp), yaw_rate=real(yaw_rate, wp), &
+         pitch_rate=real(pitch_rate, wp)), int(load_mode), real(load, wp), values)
+   end function shcontact_solve_kinematic
+
+   !> The SHCONTACT_KIN_SIZE values of patch `patch` (1-based) of the last solve: the patch in
+   !> the kinematic layout (its values, creepages and x lead; the result's counts and totals).
+   integer(c_int) function shcontact_patch_kinematic(handle, patch, values) result(stat) &
+         bind(C, name='shcontact_patch_kinematic')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Patch index, 1 to the number of patches.
+      integer(c_int), value :: patch
+      !> The values.
+      real(c_double), intent(out) :: values(kinematic_value_count)
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_patch_kinematic(ctx, int(patch), values)
+   end function shcontact_patch_kinematic
 
    !> The SHCONTACT_PATCH_SIZE values of patch `patch` (1-based) of the last solve.
    integer(c_int) function shcontact_patch(handle, patch, values) result(stat) &

@@ -15,14 +15,18 @@ module shcontact_api_context
    use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
       parse_spin_model
    use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
-      max_patches, patch_value_count, result_value_count, patch_values, result_values
+      max_patches
+   use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
+      patch_values, result_values, kinematic_values
    implicit none
    private
 
    public :: contact_context_type, option_keys
    public :: context_create, context_set_material, context_set_track, context_set_option, &
-      context_solve, context_patch, context_message, context_fail
+      context_solve, context_solve_kinematic, context_patch, context_patch_kinematic, &
+      context_message, context_fail
 
    !> Longest message kept (longer ones are cut).
    integer, parameter :: message_capacity = 1024
@@ -195,6 +199,34 @@ contains
       stat = record(ctx, error)
    end function context_solve
 
+   !> Solve one wheel from the wheelset's position and velocities and return the flat result in
+   !> the kinematic layout ([[kinematic_values]]).
+   integer function context_solve_kinematic(ctx, state, load_mode, load, values) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Wheelset position and velocities (track frame; mm, mm/s, rad, rad/s).
+      type(wheelset_state_type), intent(in) :: state
+      !> 1: normal force (N), 2: vertical force (N), 3: approach (mm).
+      integer, intent(in) :: load_mode
+      !> The force or approach.
+      real(wp), intent(in) :: load
+      !> The flat result (kinematic_value_count values; zero on failure).
+      real(wp), intent(out) :: values(kinematic_value_count)
+      type(error_type), allocatable :: error
+
+      values = 0.0_wp
+      ctx%has_result = .false.
+      if (usable(ctx, error)) then
+         call ctx%solver%solve_kinematic(state, contact_load_type(load_mode, load), ctx%result, &
+            error)
+         if (.not. allocated(error)) then
+            ctx%has_result = .true.
+            call kinematic_values(ctx%result, values)
+         end if
+      end if
+      stat = record(ctx, error)
+   end function context_solve_kinematic
+
    !> The flat values of patch k of the last solve ([[patch_values]]).
    integer function context_patch(ctx, k, values) result(stat)
       !> The context.
@@ -206,17 +238,41 @@ contains
       type(error_type), allocatable :: error
 
       values = 0.0_wp
+      call check_patch_index(ctx, k, error)
+      if (.not. allocated(error)) call patch_values(ctx%result%patch(k), values)
+      stat = record(ctx, error)
+   end function context_patch
+
+   !> Patch k of the last solve in the kinematic layout ([[kinematic_values]]): its values in
+   !> 1–17 and 26–29 (creepages and x_track), the result's counts and totals in 18–25.
+   integer function context_patch_kinematic(ctx, k, values) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Patch index, 1 to the number of patches of the last result.
+      integer, intent(in) :: k
+      !> The values (kinematic_value_count; zero on failure).
+      real(wp), intent(out) :: values(kinematic_value_count)
+      type(error_type), allocatable :: error
+
+      values = 0.0_wp
+      call check_patch_index(ctx, k, error)
+      if (.not. allocated(error)) call kinematic_values(ctx%result, values, k)
+      stat = record(ctx, error)
+   end function context_patch_kinematic
+
+   !> An error unless the context holds a result with a patch k.
+   subroutine check_patch_index(ctx, k, error)
+      type(contact_context_type), intent(in) :: ctx
+      integer, intent(in) :: k
+      type(error_type), allocatable, intent(out) :: error
       if (.not. ctx%has_result) then
          call fatal_error(error, 'patch values: no result yet (the last solve failed or none '// &
             'was made)', stat_usage)
       else if (k < 1 .or. k > min(ctx%result%n_patches, max_patches)) then
          call fatal_error(error, 'patch '//str_int(k)//': expected 1 to '// &
             str_int(ctx%result%n_patches)//' (the patches of the last solve)', stat_usage)
-      else
-         call patch_values(ctx%result%patch(k), values)
       end if
-      stat = record(ctx, error)
-   end function context_patch
+   end subroutine check_patch_index
 
    !> The message of the last operation ('' after a success).
    pure function context_message(ctx) result(message)

@@ -15,15 +15,18 @@ module shcontact_api_legacy
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: stat_usage
    use shcontact_core_strings, only: str_int
-   use shcontact_api_solver, only: patch_value_count, result_value_count
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
-      context_set_track, context_set_option, context_solve, context_patch, context_message
+      context_set_track, context_set_option, context_solve, context_solve_kinematic, &
+      context_patch, context_patch_kinematic, context_message
    implicit none
    private
 
    public :: max_handles
    public :: legacy_create, legacy_destroy, legacy_set_material, legacy_set_track, &
-      legacy_set_option, legacy_solve, legacy_patch, legacy_message
+      legacy_set_option, legacy_solve, legacy_solve_kinematic, legacy_patch, &
+      legacy_patch_kinematic, legacy_message
 
    !> Capacity of the handle table.
    integer, parameter :: max_handles = 1024
@@ -146,6 +149,46 @@ contains
          cksi, ceta, cphi, values)
    end subroutine legacy_solve
 
+   !> Solve one wheel from the wheelset's position and velocities (CONTACT module 1 meaning);
+   !> values(1:kinematic_value_count) receives the kinematic layout.
+   subroutine legacy_solve_kinematic(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, &
+         imode, fload, values, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Lateral shift (mm), yaw and roll (rad) of the wheelset.
+      real(wp), intent(in) :: yws, yaw, roll
+      !> Forward (> 0), lateral and vertical velocity of the wheelset centre (mm/s).
+      real(wp), intent(in) :: vs, vy, vz
+      !> Roll, yaw and pitch rate (rad/s; vpitch < 0 rolling forward).
+      real(wp), intent(in) :: vroll, vyaw, vpitch
+      !> Load mode: 1 normal force, 2 vertical force, 3 approach.
+      integer, intent(in) :: imode
+      !> Load (N or mm).
+      real(wp), intent(in) :: fload
+      !> The flat result.
+      real(wp), intent(out) :: values(kinematic_value_count)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      values = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_solve_kinematic(slots(ihandle)%ctx, &
+         wheelset_state_type(y_ws=yws, yaw=yaw, roll=roll, v_forward=vs, v_lateral=vy, &
+         v_vertical=vz, roll_rate=vroll, yaw_rate=vyaw, pitch_rate=vpitch), imode, fload, values)
+   end subroutine legacy_solve_kinematic
+
+   !> Patch ipatch of the last solve in the kinematic layout.
+   subroutine legacy_patch_kinematic(ihandle, ipatch, values, istat)
+      !> The handle and the patch index.
+      integer, intent(in) :: ihandle, ipatch
+      !> The values.
+      real(wp), intent(out) :: values(kinematic_value_count)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      values = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_patch_kinematic(slots(ihandle)%ctx, ipatch, values)
+   end subroutine legacy_patch_kinematic
+
    !> The flat values of patch ipatch of the last solve.
    subroutine legacy_patch(ihandle, ipatch, values, istat)
       !> The handle and the patch index.
@@ -255,6 +298,34 @@ subroutine shc_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, 
    integer, intent(out) :: istat
    call legacy_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
 end subroutine shc_solve
+
+!> Solve one wheel from the wheelset's kinematics: lateral shift yws (mm), yaw and roll (rad),
+!> velocities vs (forward, > 0), vy, vz (mm/s), rates vroll, vyaw, vpitch (rad/s, vpitch < 0
+!> rolling forward), load mode imode and value fload; values(29) receives the kinematic layout
+!> (doc/api.md, include/shcontact.fi).
+subroutine shc_solve_kin(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, fload, &
+      values, istat)
+   use shcontact_api_legacy, only: legacy_solve_kinematic
+   implicit none
+   integer, intent(in) :: ihandle
+   double precision, intent(in) :: yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch
+   integer, intent(in) :: imode
+   double precision, intent(in) :: fload
+   double precision, intent(out) :: values(29)
+   integer, intent(out) :: istat
+   call legacy_solve_kinematic(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, &
+      fload, values, istat)
+end subroutine shc_solve_kin
+
+!> The values(29) of patch ipatch of the last solve in the kinematic layout (doc/api.md).
+subroutine shc_patch_kin(ihandle, ipatch, values, istat)
+   use shcontact_api_legacy, only: legacy_patch_kinematic
+   implicit none
+   integer, intent(in) :: ihandle, ipatch
+   double precision, intent(out) :: values(29)
+   integer, intent(out) :: istat
+   call legacy_patch_kinematic(ihandle, ipatch, values, istat)
+end subroutine shc_patch_kin
 
 !> The values(17) of patch ipatch of the last solve (doc/api.md).
 subroutine shc_patch(ihandle, ipatch, values, istat)

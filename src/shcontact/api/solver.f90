@@ -58,7 +58,7 @@ module shcontact_api_solver
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
    public :: contact_fields_type, load_profile
    public :: load_normal_force, load_vertical_force, load_approach, load_mode_name
-   public :: max_patches, patch_value_count, result_value_count, patch_values, result_values
+   public :: max_patches
 
    !> Load mode: normal force N (N) on the first (deepest) patch.
    integer, parameter :: load_normal_force = 1
@@ -71,10 +71,6 @@ module shcontact_api_solver
 
    !> Most patches one contact may have (the contact search follows at most 16 candidates).
    integer, parameter :: max_patches = max_candidates
-   !> Length of the flat per-patch value list ([[patch_values]]).
-   integer, parameter :: patch_value_count = 17
-   !> Length of the flat result value list ([[result_values]]).
-   integer, parameter :: result_value_count = 25
    !> The total vertical force of a kinematic call matches the load to this relative tolerance,
    !> within at most max_vertical_iterations normal solutions.
    real(wp), parameter :: vertical_rtol = 1.0e-7_wp
@@ -995,33 +991,5 @@ contains
          name = 'unknown'
       end if
    end function load_mode_name
-
-   !> A patch as a flat list (the layout of doc/api.md and include/shcontact.h): F_x, F_y, M_z,
-   !> F_n, f_x, f_y, F_y,track, F_z,track, δ, area, p_max, γ₀, r₀, y_track, z_track, Coulomb
-   !> ratio, adhesion fraction.
-   pure subroutine patch_values(patch, values)
-      !> The patch.
-      type(patch_result_type), intent(in) :: patch
-      !> Its values (at least patch_value_count).
-      real(wp), intent(out) :: values(:)
-      values(1:patch_value_count) = [patch%fx, patch%fy, patch%mz, patch%fn, patch%fx_norm, &
-         patch%fy_norm, patch%fy_track, patch%fz_track, patch%approach, patch%area, &
-         patch%p_max, patch%gamma0, patch%r0, patch%y_track, patch%z_track, &
-         patch%coulomb_ratio, patch%adhesion_fraction]
-   end subroutine patch_values
-
-   !> A result as a flat list: the main patch ([[patch_values]], 1–17), then the number of
-   !> patches, of loaded patches, the main patch's index, the track totals ΣF_x, ΣF_y, ΣF_z,
-   !> ΣF_n and the vertical approach Δz (18–25).
-   pure subroutine result_values(result, values)
-      !> The result.
-      type(contact_result_type), intent(in) :: result
-      !> Its values (at least result_value_count).
-      real(wp), intent(out) :: values(:)
-      call patch_values(result%main, values(1:patch_value_count))
-      values(patch_value_count + 1:result_value_count) = [real(result%n_patches, wp), &
-         real(result%n_loaded, wp), real(result%main_patch, wp), result%track%fx, &
-         result%track%fy, result%track%fz, result%track%fn, result%dz]
-   end subroutine result_values
 
 end module shcontact_api_solver
