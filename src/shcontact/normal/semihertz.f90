@@ -21,9 +21,11 @@ module shcontact_normal_semihertz
       ellipse_strips
    public :: reserve_strips, clear_strips
 
-   !> Relative growth of δ over which the strips sweep across table points out of contact
-   !> towards a region farther out that comes into contact ([[outward_cover]]).
-   real(wp), parameter :: cover_ramp = 0.1_wp
+   !> Smallest relative growth of δ over which the strips sweep across table points out of
+   !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
+   !> against the ≈ 2e-4 change of the midpoint error it spreads out, small enough that the
+   !> strips seldom reach past the contact.
+   real(wp), parameter :: cover_ramp = 0.01_wp
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
@@ -162,16 +164,19 @@ contains
    !> beyond a point that does not: touch = g/ε_b is not monotonic where ε_b changes faster than
    !> the gap (a jump of B between profile arcs), nor where the basin holds a second, shallower
    !> minimum. The strips must then reach past the points out of contact, and their interval
-   !> must grow continuously with δ: its jump, when a far region comes into contact, would move
-   !> every strip of the near one and make N(δ) jump by the midpoint rule's error (≈ 1e-4), which
-   !> no root finder can match. So cover is the largest monotonic minorant of touch (its
-   !> running minimum from the far end), except over a point out of contact, where that
-   !> minorant is flat (a region farther out comes into contact first): there cover rises on a
-   !> straight line from where it is cover_ramp below the far region's touch value up to it, and
-   !> the interval sweeps over the flat part while δ grows by that fraction. N(δ) is then
-   !> continuous and, the midpoint error changing by ≈ 1e-4 over a relative Δδ of 0.1,
-   !> increasing. Where touch increases outwards, cover = touch and the interval ends where it
-   !> always did.
+   !> must grow continuously with δ: a jump, when a far region comes into contact, would move
+   !> every strip of the near one and make N(δ) jump by the change of the midpoint rule's error
+   !> (up to ≈ 2e-4 with 100 strips), which no root finder can match.
+   !>
+   !> So cover is the largest monotonic minorant of touch (its running minimum from the far
+   !> end), except over points out of contact, where that minorant is flat (a region farther out,
+   !> at touch value τ, comes into contact first): there cover rises on a straight line, from the
+   !> last point before them with cover ≤ (1 − cover_ramp)τ up to τ, and the strips sweep across
+   !> them (carrying no load there) while δ grows by at least that fraction. N(δ) is then
+   !> continuous and still increasing: the sweep changes ln N by ≈ 2e-4 over Δ ln δ ≥ 0.01, while
+   !> d ln N/d ln δ ≈ 1.5. Where touch increases outwards, cover = touch and the strips end where
+   !> they always did (bit for bit); near a far region the strips may reach past the contact
+   !> (δ within cover_ramp of τ), which costs them a little resolution.
    pure subroutine outward_cover(touch, cover)
       !> touch values from the first-contact point outwards (mm).
       real(wp), intent(in) :: touch(:)
