@@ -12,7 +12,7 @@ module shcontact_normal_semihertz
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
-   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape
+   use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
    implicit none
    private
@@ -89,9 +89,7 @@ contains
       !> Gap to use at the first and the last point used instead of the table's (mm).
       real(wp), intent(in), optional :: gap_first, gap_last
 
-      type(hertz_shape_type) :: shape
-      real(wp) :: last_ratio, ratio
-      integer :: i, j, n, i1, i2
+      integer :: n, i1, i2
 
       i1 = 1
       if (present(first)) i1 = first
@@ -122,30 +120,17 @@ contains
          return
       end if
 
-      ! The shape depends only on A/B: solve it per distinct ratio (runs of equal ratios, to the
-      ! last bit, are common on circular arcs).
-      last_ratio = -1.0_wp
-      do i = 1, n
-         j = i1 - 1 + i
-         ratio = geometry%curv_a(j)/geometry%curv_b(j)
-         if (abs(ratio - last_ratio) > spacing(ratio)) then
-            call hertz_shape(ratio, shape, error)
-            if (allocated(error)) return
-            last_ratio = ratio
-         end if
-         prepared%m(i) = shape%m
-         prepared%n(i) = shape%n
-         prepared%p_factor(i) = sqrt((geometry%curv_a(j) + geometry%curv_b(j))/(shape%ee*shape%kk))
-         if (options%reduction == reduction_constant) then
-            ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
-            prepared%eps_a(i) = options%epsilon
-            prepared%eps_b(i) = options%epsilon
-         else
-            prepared%eps_a(i) = shape%eps_a
-            prepared%eps_b(i) = shape%eps_b
-         end if
-         prepared%touch(i) = prepared%gap(i)/prepared%eps_b(i)
-      end do
+      ! The shape depends only on A/B (decision 5): from the table, no root search.
+      call hertz_strip_shapes(geometry%curv_a(i1:i2), geometry%curv_b(i1:i2), &
+         prepared%eps_a(1:n), prepared%eps_b(1:n), prepared%m(1:n), prepared%n(1:n), &
+         prepared%p_factor(1:n), error)
+      if (allocated(error)) return
+      if (options%reduction == reduction_constant) then
+         ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
+         prepared%eps_a(1:n) = options%epsilon
+         prepared%eps_b(1:n) = options%epsilon
+      end if
+      prepared%touch(1:n) = prepared%gap(1:n)/prepared%eps_b(1:n)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
       associate (i0 => prepared%i_first)
