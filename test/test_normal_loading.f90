@@ -15,7 +15,8 @@ module test_normal_loading
    use shcontact_geometry_track, only: track_type, wheelset_position_type
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles, find_contact_patches
-   use shcontact_normal_hertz, only: hertz_type, hertz_from_load, hertz_from_approach
+   use shcontact_normal_hertz, only: hertz_type, hertz_shape_type, hertz_shape, hertz_from_load, &
+      hertz_from_approach
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_approach, solve_load, solve_vertical_load
    use test_semihertz, only: polynomial_patch
@@ -48,7 +49,8 @@ contains
          new_unittest('table_prefix_and_capacity', test_table_prefix), &
          new_unittest('default_case_ty_scan', test_ty_scan), &
          new_unittest('default_case_known_positions', test_known_positions), &
-         new_unittest('default_case_force_continuous', test_force_continuous) &
+         new_unittest('default_case_force_continuous', test_force_continuous), &
+         new_unittest('tabulated_shapes_solve_as_root_search', test_tabulated_solve) &
          ]
    end subroutine collect_normal_loading
 
@@ -640,5 +642,86 @@ contains
          bits = transfer(x, 0_i8)
       end function bits
    end subroutine test_table_prefix
+
+   !> prepare_normal_contact takes the strips' Hertz shapes from the polynomial table
+   !> (hertz_strip_shapes): on the default case at the default position (t_y = 4.733 mm) and at
+   !> t_y = 3.87 mm every table point's ε_a, ε_b, m, n and pressure factor equal the root
+   !> search's (hertz_shape) to a relative 1e-11, and with the root search's values put in their
+   !> place the force-matched approach, area and peak pressure, and the loads at three
+   !> approaches, agree to a relative 1e-9.
+   subroutine test_tabulated_solve(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: positions(2) = [4.733_wp, 3.87_wp]
+      type(lib_error), allocatable :: err
+      type(prepared_profiles_type) :: prep
+      type(patch_geometry_type), allocatable :: geom(:)
+      type(normal_contact_type) :: fast, exact
+      type(normal_patch_type) :: p_fast, p_exact
+      type(hertz_shape_type) :: shape
+      type(material_type) :: mat
+      integer :: ip, i, j
+
+      call default_profiles(prep, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call find_contact_patches(prep, wheelset_position_type(y_ws=positions(ip)), geom, err)
+         if (.not. allocated(err)) call prepare_normal_contact(fast, geom(1), &
+            normal_options_type(), mat, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         exact = fast
+         associate (g => exact%geometry)
+            do i = 1, g%n_table
+               j = nint((g%y_first + (i - 1)*g%h - geom(1)%y(1))/geom(1)%h) + 1
+               call hertz_shape(geom(1)%curv_a(j)/geom(1)%curv_b(j), shape, err)
+               if (allocated(err)) then
+                  call test_failed(error, err%message); return
+               end if
+               call check(error, g%eps_a(i), shape%eps_a, thr=1.0e-11_wp, rel=.true., &
+                  message='eps_a')
+               if (allocated(error)) return
+               call check(error, g%eps_b(i), shape%eps_b, thr=1.0e-11_wp, rel=.true., &
+                  message='eps_b')
+               if (allocated(error)) return
+               call check(error, g%m(i), shape%m, thr=1.0e-11_wp, rel=.true., message='m')
+               if (allocated(error)) return
+               call check(error, g%n(i), shape%n, thr=1.0e-11_wp, rel=.true., message='n')
+               if (allocated(error)) return
+               g%eps_a(i) = shape%eps_a
+               g%eps_b(i) = shape%eps_b
+               g%m(i) = shape%m
+               g%n(i) = shape%n
+               g%p_factor(i) = sqrt((geom(1)%curv_a(j) + geom(1)%curv_b(j))/(shape%ee*shape%kk))
+               call check(error, fast%geometry%p_factor(i), g%p_factor(i), thr=1.0e-11_wp, &
+                  rel=.true., message='p_factor')
+               if (allocated(error)) return
+            end do
+         end associate
+         call solve_load(fast, scan_load, p_fast, err)
+         if (.not. allocated(err)) call solve_load(exact, scan_load, p_exact, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, p_fast%approach, p_exact%approach, thr=1.0e-9_wp, rel=.true., &
+            message='approach')
+         if (allocated(error)) return
+         call check(error, p_fast%area, p_exact%area, thr=1.0e-9_wp, rel=.true., message='area')
+         if (allocated(error)) return
+         call check(error, p_fast%p_max, p_exact%p_max, thr=1.0e-9_wp, rel=.true., &
+            message='p_max')
+         if (allocated(error)) return
+         do i = 1, 3
+            call solve_approach(fast, 0.04_wp*i, p_fast, err)
+            if (.not. allocated(err)) call solve_approach(exact, 0.04_wp*i, p_exact, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            call check(error, p_fast%load, p_exact%load, thr=1.0e-9_wp, rel=.true., &
+               message='load at a given approach')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_tabulated_solve
 
 end module test_normal_loading

@@ -151,7 +151,9 @@ contains
       real(wp) :: v(shape_functions)
       logical :: inside
 
-      call tabulated_shape(min(ratio, 1.0_wp/ratio), shape_functions, v, inside)
+      ! (An invalid ratio is reported by the root search, before any division.)
+      inside = ratio > 0.0_wp .and. ratio < huge(1.0_wp)
+      if (inside) call tabulated_shape(min(ratio, 1.0_wp/ratio), shape_functions, v, inside)
       if (inside) then
          call shape_from_integrals(v(shape_g), v(shape_k), v(shape_e), v(shape_c_major), &
             v(shape_eps_minor), ratio, shape)
@@ -175,19 +177,24 @@ contains
       !> Set for a non-positive curvature ratio (or a failed root search outside the table).
       type(error_type), allocatable, intent(out) :: error
       type(hertz_shape_type) :: shape
-      real(wp) :: v(shape_strip_functions)
+      real(wp) :: v(shape_strip_functions), rho
       logical :: inside
       integer :: i
 
       do i = 1, size(curv_a)
-         call tabulated_shape(min(curv_a(i), curv_b(i))/max(curv_a(i), curv_b(i)), &
-            shape_strip_functions, v, inside)
+         rho = 0.0_wp
+         if (max(curv_a(i), curv_b(i)) > 0.0_wp) rho = min(curv_a(i), curv_b(i))/ &
+            max(curv_a(i), curv_b(i))
+         call tabulated_shape(rho, shape_strip_functions, v, inside)
          if (inside) then
             call orient(v(shape_g), v(shape_c_major), v(shape_eps_minor), curv_a(i) <= curv_b(i), &
                eps_a(i), eps_b(i), m(i), n(i))
             p_factor(i) = sqrt(curv_a(i) + curv_b(i))*v(shape_inv_sqrt_ek)
          else
-            call hertz_shape(curv_a(i)/curv_b(i), shape, error)
+            call check_positive(curv_a(i), 'curvature A', '1/mm', error)
+            if (.not. allocated(error)) call check_positive(curv_b(i), 'curvature B', '1/mm', &
+               error)
+            if (.not. allocated(error)) call hertz_shape(curv_a(i)/curv_b(i), shape, error)
             if (allocated(error)) return
             eps_a(i) = shape%eps_a
             eps_b(i) = shape%eps_b
