@@ -158,10 +158,15 @@ contains
    !> at touch value τ, comes into contact first): there cover rises on a straight line, from the
    !> last point before them with cover ≤ (1 − cover_ramp)τ up to τ, and the strips sweep across
    !> them (carrying no load there) while δ grows by at least that fraction. N(δ) is then
-   !> continuous and still increasing: the sweep changes ln N by ≈ 2e-4 over Δ ln δ ≥ 0.01, while
-   !> d ln N/d ln δ ≈ 1.5. Where touch increases outwards, cover = touch and the strips end where
-   !> they always did (bit for bit); near a far region the strips may reach past the contact
-   !> (δ within cover_ramp of τ), which costs them a little resolution.
+   !> continuous, so the load match always converges. On the tread it also stays increasing:
+   !> the sweep changes ln N by the change of the midpoint error, ≈ 2e-4, over Δ ln δ ≥ 0.01,
+   !> while d ln N/d ln δ ≈ 1.5. On nearly conformal flange-root contacts the midpoint rule's
+   !> aliasing (strips moving across narrow pressure features) can make N dip by up to ≈ 1e-3
+   !> where the strips sweep fast, as it could before where the contact grew fast; a load in
+   !> such a dip has more than one approach, and the one found is as good as the others.
+   !> Where touch increases outwards, cover = touch and the strips end where they always did
+   !> (bit for bit); near a far region the strips may reach past the contact (δ within
+   !> cover_ramp of τ), which costs them a little resolution.
    pure subroutine outward_cover(touch, cover)
       !> touch values from the first-contact point outwards (mm).
       real(wp), intent(in) :: touch(:)
