@@ -7,7 +7,8 @@ module test_hertz
    use shcontact_core_material, only: material_type
    use shcontact_math_elliptic, only: complete_elliptic
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, &
-      hertz_from_load, hertz_from_approach, hertz_from_semiaxes
+      hertz_shape_fast, hertz_strip_shapes, hertz_from_load, hertz_from_approach, &
+      hertz_from_semiaxes
    implicit none
    private
    public :: collect_hertz
@@ -28,7 +29,10 @@ contains
          new_unittest('identity_over_ratio_range', test_identity_range), &
          new_unittest('near_circle_continuity', test_near_circle), &
          new_unittest('inverse_round_trips', test_round_trips), &
-         new_unittest('invalid_input', test_invalid) &
+         new_unittest('invalid_input', test_invalid), &
+         new_unittest('fast_shape_equals_root_search', test_fast_shape), &
+         new_unittest('strip_shapes_equal_root_search', test_strip_shapes), &
+         new_unittest('fast_shape_invalid_input', test_fast_invalid) &
          ]
    end subroutine collect_hertz
 
@@ -360,5 +364,137 @@ contains
       call hertz_shape(0.0_wp, shape, err)
       call check(error, allocated(err), message='ratio 0 must be an error')
    end subroutine test_invalid
+
+   !> hertz_shape_fast (the polynomial table) gives hertz_shape's (the root search's) shape to a
+   !> relative 1e-11 over ρ ∈ [1e-4, 1e4], on a fine logarithmic grid (not aligned with the
+   !> table's cells), at the cell and octave edges of the table (2^-k (1 + j/4) and their
+   !> neighbours), around the circle, and below the table (ρ < 2^-14: the root search answers,
+   !> bit for bit).
+   subroutine test_fast_shape(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: ratio, edge
+      integer :: i, k, j
+
+      do i = -40000, 40000
+         ratio = 10.0_wp**(i*1.0e-4_wp + 3.7e-6_wp)
+         call compare_shapes(ratio, 1.0e-11_wp, error)
+         if (allocated(error)) return
+      end do
+      do k = 0, 14
+         do j = 0, 3
+            edge = 2.0_wp**(-k)*(1.0_wp + j/4.0_wp)
+            if (edge > 1.0_wp) cycle
+            do i = -1, 1
+               ratio = edge + i*spacing(edge)
+               call compare_shapes(ratio, 1.0e-11_wp, error)
+               if (allocated(error)) return
+               call compare_shapes(1.0_wp/ratio, 1.0e-11_wp, error)
+               if (allocated(error)) return
+            end do
+         end do
+      end do
+      do i = 1, 10
+         ratio = 2.0_wp**(-14)*(1.0_wp - 0.05_wp*i)
+         call compare_shapes(ratio, 0.0_wp, error)
+         if (allocated(error)) return
+         call compare_shapes(1.0_wp/ratio, 0.0_wp, error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_fast_shape
+
+   !> Every component of the two shapes at A/B = ratio agrees to a relative tol.
+   subroutine compare_shapes(ratio, tol, error)
+      real(wp), intent(in) :: ratio, tol
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(hertz_shape_type) :: exact, fast
+      character(len=24) :: at
+
+      call hertz_shape(ratio, exact, err)
+      if (.not. allocated(err)) call hertz_shape_fast(ratio, fast, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      write (at, '(a,es14.7,a)') 'A/B =', ratio, ': '
+      call check(error, fast%ratio, exact%ratio, message=at//'ratio')
+      if (allocated(error)) return
+      call check(error, fast%g, exact%g, thr=tol, rel=.true., message=at//'g')
+      if (allocated(error)) return
+      call check(error, fast%kk, exact%kk, thr=tol, rel=.true., message=at//'K')
+      if (allocated(error)) return
+      call check(error, fast%ee, exact%ee, thr=tol, rel=.true., message=at//'E')
+      if (allocated(error)) return
+      call check(error, fast%eps_a, exact%eps_a, thr=tol, rel=.true., message=at//'eps_a')
+      if (allocated(error)) return
+      call check(error, fast%eps_b, exact%eps_b, thr=tol, rel=.true., message=at//'eps_b')
+      if (allocated(error)) return
+      call check(error, fast%m, exact%m, thr=tol, rel=.true., message=at//'m')
+      if (allocated(error)) return
+      call check(error, fast%n, exact%n, thr=tol, rel=.true., message=at//'n')
+      if (allocated(error)) return
+      call check(error, fast%r, exact%r, thr=tol, rel=.true., message=at//'r')
+   end subroutine compare_shapes
+
+   !> hertz_strip_shapes over a table of curvatures (A/B from 1e-4 to 1e4, and the circle)
+   !> gives the root search's ε_a, ε_b, m, n and √((A+B)/(E K)) to a relative 1e-11.
+   subroutine test_strip_shapes(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 2001
+      type(lib_error), allocatable :: err
+      type(hertz_shape_type) :: exact
+      real(wp) :: curv_a(n), curv_b(n), eps_a(n), eps_b(n), m(n), nn(n), p_factor(n)
+      integer :: i
+
+      do i = 1, n
+         curv_b(i) = 1.0_wp/600.0_wp
+         curv_a(i) = curv_b(i)*10.0_wp**(8.0_wp*(i - 1)/(n - 1) - 4.0_wp)
+      end do
+      ! ρ = 1 (outside the table: the circle of the root search).
+      curv_a(1001) = curv_b(1001)
+      call hertz_strip_shapes(curv_a, curv_b, eps_a, eps_b, m, nn, p_factor, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do i = 1, n
+         call hertz_shape(curv_a(i)/curv_b(i), exact, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, eps_a(i), exact%eps_a, thr=1.0e-11_wp, rel=.true., message='eps_a')
+         if (allocated(error)) return
+         call check(error, eps_b(i), exact%eps_b, thr=1.0e-11_wp, rel=.true., message='eps_b')
+         if (allocated(error)) return
+         call check(error, m(i), exact%m, thr=1.0e-11_wp, rel=.true., message='m')
+         if (allocated(error)) return
+         call check(error, nn(i), exact%n, thr=1.0e-11_wp, rel=.true., message='n')
+         if (allocated(error)) return
+         call check(error, p_factor(i), sqrt((curv_a(i) + curv_b(i))/(exact%ee*exact%kk)), &
+            thr=1.0e-11_wp, rel=.true., message='p_factor')
+         if (allocated(error)) return
+      end do
+   end subroutine test_strip_shapes
+
+   !> The fast shape rejects what the root search rejects (non-positive ratios).
+   subroutine test_fast_invalid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(hertz_shape_type) :: shape
+      real(wp), parameter :: bad(3) = [0.0_wp, -2.0_wp, -1.0e-3_wp]
+      real(wp) :: eps(2, 5)
+      integer :: i
+
+      do i = 1, size(bad)
+         call hertz_shape_fast(bad(i), shape, err)
+         call check(error, allocated(err), message='expected an error')
+         if (allocated(error)) return
+         call check(error, err%stat, stat_invalid_input)
+         if (allocated(error)) return
+      end do
+      call hertz_strip_shapes([1.0e-3_wp, 0.0_wp], [1.0e-3_wp, 0.0_wp], eps(:, 1), eps(:, 2), &
+         eps(:, 3), eps(:, 4), eps(:, 5), err)
+      call check(error, allocated(err), message='strip shapes: expected an error')
+      if (allocated(error)) return
+      call check(error, err%stat, stat_invalid_input)
+   end subroutine test_fast_invalid
 
 end module test_hertz

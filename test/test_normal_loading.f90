@@ -15,7 +15,8 @@ module test_normal_loading
    use shcontact_geometry_track, only: track_type, wheelset_position_type
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles, find_contact_patches
-   use shcontact_normal_hertz, only: hertz_type, hertz_from_load, hertz_from_approach
+   use shcontact_normal_hertz, only: hertz_type, hertz_shape_type, hertz_shape, hertz_from_load, &
+      hertz_from_approach
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_approach, solve_load, solve_vertical_load
    use test_semihertz, only: polynomial_patch
@@ -28,6 +29,8 @@ module test_normal_loading
    !> Flange-root patch: sharper lateral curvature, contact angle −0.9 rad, 0.01 mm gap.
    real(wp), parameter :: flange_a = 0.62_wp/920, flange_b = 1.0_wp/60, flange_gamma = -0.9_wp
    real(wp), parameter :: flange_gap = 0.01_wp
+   !> The seed's load, as a normal force and as a vertical wheel load (N).
+   real(wp), parameter :: scan_load = 64700.0_wp
 
 contains
 
@@ -44,7 +47,10 @@ contains
          new_unittest('workspace_reuse', test_reuse), &
          new_unittest('patch_confined_to_basin', test_confined), &
          new_unittest('table_prefix_and_capacity', test_table_prefix), &
-         new_unittest('default_case_ty_scan', test_ty_scan) &
+         new_unittest('default_case_ty_scan', test_ty_scan), &
+         new_unittest('default_case_known_positions', test_known_positions), &
+         new_unittest('default_case_force_continuous', test_force_continuous), &
+         new_unittest('tabulated_shapes_solve_as_root_search', test_tabulated_solve) &
          ]
    end subroutine collect_normal_loading
 
@@ -373,80 +379,171 @@ contains
          message='upper end at the limit under the larger force')
    end subroutine test_confined
 
-   !> The default case (built-in S1002 on the built-in UIC60 1:40) at t_y = 0…10 mm in steps of
-   !> 0.5 mm solves at every position under N = 64.7 kN on the deepest patch and under
-   !> F_z = 64.7 kN shared by all patches. At t_y = 5 mm the tread and the gauge corner (0.004 mm
-   !> off) both carry, and the tread contact reaches the ridge between them (the two regions
-   !> meet): there each patch stops at its basin limit, so no region is counted twice.
+   !> The default case (built-in S1002 on the built-in UIC60 1:40) at t_y = −10…10 mm in steps
+   !> of 0.25 mm solves at every position under N = 64.7 kN on the deepest patch and under
+   !> F_z = 64.7 kN shared by all patches ([[solve_position]]). At t_y = 5 mm the tread and the
+   !> gauge corner (0.004 mm off) both carry, and the tread contact reaches the ridge between
+   !> them (the two regions meet): there each patch stops at its basin limit, so no region is
+   !> counted twice.
    subroutine test_ty_scan(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: prep
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(patch_geometry_type), allocatable :: geom(:)
+      integer :: i
+
+      call default_profiles(prep, error)
+      if (allocated(error)) return
+      do i = -40, 40
+         call solve_position(prep, 0.25_wp*i, geom, contacts, patches, error)
+         if (allocated(error)) return
+         if (i == 20) then
+            call check(error, size(geom), 2, message='t_y = 5: tread and gauge corner')
+            if (allocated(error)) return
+            call check(error, patches(2)%load > 0.2_wp*scan_load, message='t_y = 5: both carry')
+            if (allocated(error)) return
+            call check(error, patches(1)%y(1) - 0.5_wp*patches(1)%dy, geom(1)%basin_lower, &
+               thr=geom(1)%h, message='t_y = 5: the tread contact reaches the ridge')
+            if (allocated(error)) return
+         end if
+      end do
+   end subroutine test_ty_scan
+
+   !> The positions where the force or the vertical-load match used to fail: touch = g/ε_b of
+   !> the tread patch is not monotonic (ε_b jumps where B does between the S1002 arcs, 3.87 and
+   !> 3.88 mm; a shallower second minimum inside the basin, 5.98, 6.49 and 6.65 mm), and the
+   !> contact interval jumped past the bump. Both loads are matched to 1e-10 in both modes.
+   subroutine test_known_positions(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: positions(*) = [3.87_wp, 3.88_wp, 5.98_wp, 6.49_wp, 6.65_wp]
+      type(prepared_profiles_type) :: prep
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(patch_geometry_type), allocatable :: geom(:)
+      integer :: i
+
+      call default_profiles(prep, error)
+      if (allocated(error)) return
+      do i = 1, size(positions)
+         call solve_position(prep, positions(i), geom, contacts, patches, error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_known_positions
+
+   !> At t_y = 3.87 mm the tread patch's N(δ) is continuous and increasing while its strips
+   !> grow across the points out of contact to the region beyond them (δ ≈ 0.048–0.054 mm),
+   !> and that region carries load before the bump between them does.
+   subroutine test_force_continuous(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(prepared_profiles_type) :: prep
+      type(patch_geometry_type), allocatable :: geom(:)
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(material_type) :: mat
+      real(wp), parameter :: step = 2.5e-5_wp
+      real(wp) :: approach, n_prev
+      integer :: i, j
+      logical :: gap_seen
+
+      call default_profiles(prep, error)
+      if (allocated(error)) return
+      call find_contact_patches(prep, wheelset_position_type(y_ws=3.87_wp), geom, err)
+      if (.not. allocated(err)) call prepare_normal_contact(contact, geom(1), &
+         normal_options_type(), mat, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      n_prev = 0.0_wp
+      gap_seen = .false.
+      do i = 1, 3600
+         approach = i*step
+         call solve_approach(contact, approach, patch, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, patch%load > n_prev, message='N(delta) not increasing')
+         if (allocated(error)) return
+         ! Hertz-like growth: dN/dδ ≈ 3N/(2δ); a jump would exceed it many times.
+         call check(error, patch%load - n_prev < 2.0_wp*1.5_wp*patch%load/approach*step, &
+            message='N(delta) jumps')
+         if (allocated(error)) return
+         n_prev = patch%load
+         ! A strip out of contact between loaded ones on the field side.
+         do j = 2, patch%n_strips - 1
+            if (patch%a(j) > 0.0_wp) cycle
+            gap_seen = gap_seen .or. (any(patch%a(1:j - 1) > 0.0_wp) .and. &
+               any(patch%a(j + 1:) > 0.0_wp))
+         end do
+      end do
+      call check(error, gap_seen, message='no unloaded strip between loaded ones was seen')
+   end subroutine test_force_continuous
+
+   !> The built-in S1002 wheel on the built-in UIC60 rail (1:40), prepared.
+   subroutine default_profiles(prep, error)
+      type(prepared_profiles_type), intent(out) :: prep
       type(error_type), allocatable, intent(out) :: error
       type(lib_error), allocatable :: err
       type(profile_type) :: wheel, rail
-      type(prepared_profiles_type) :: prep
-      type(patch_geometry_type), allocatable :: geom(:)
-      type(normal_options_type) :: options
-      type(normal_contact_type), allocatable :: contacts(:)
-      type(normal_patch_type), allocatable :: patches(:)
-      type(normal_patch_type) :: single
-      type(material_type) :: mat
-      real(wp), parameter :: load = 64700.0_wp
-      character(len=16) :: at
-      real(wp) :: t_y, dz, f_z, y_lo, y_hi
-      integer :: i, k
 
       call builtin_profile('S1002', wheel, err)
       if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
       if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
          contact_options_type(), prep, err)
+      if (allocated(err)) call test_failed(error, err%message)
+   end subroutine default_profiles
+
+   !> The default case at t_y: the patches found, N = 64.7 kN on the deepest one matched to
+   !> 1e-10, and F_z = 64.7 kN shared by all matched to 1e-10 with every loaded patch inside its
+   !> basin. Returns the contacts and the vertical-load patches.
+   subroutine solve_position(prep, t_y, geom, contacts, patches, error)
+      type(prepared_profiles_type), intent(in) :: prep
+      real(wp), intent(in) :: t_y
+      type(patch_geometry_type), allocatable, intent(inout) :: geom(:)
+      type(normal_contact_type), allocatable, intent(inout) :: contacts(:)
+      type(normal_patch_type), allocatable, intent(inout) :: patches(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_patch_type) :: single
+      type(material_type) :: mat
+      character(len=20) :: at
+      real(wp) :: dz, f_z, y_lo, y_hi
+      integer :: k
+
+      write (at, '(a,f6.2,a)') 't_y = ', t_y, ': '
+      call find_contact_patches(prep, wheelset_position_type(y_ws=t_y), geom, err)
       if (allocated(err)) then
-         call test_failed(error, err%message); return
+         call test_failed(error, at//err%message); return
       end if
-      do i = 0, 20
-         t_y = 0.5_wp*i
-         write (at, '(a,f4.1,a)') 't_y = ', t_y, ': '
-         call find_contact_patches(prep, wheelset_position_type(y_ws=t_y), geom, err)
-         if (allocated(err)) then
-            call test_failed(error, at//err%message); return
-         end if
-         if (allocated(contacts)) deallocate (contacts, patches)
-         allocate (contacts(size(geom)), patches(size(geom)))
-         do k = 1, size(geom)
-            call prepare_normal_contact(contacts(k), geom(k), options, mat, err)
-            if (allocated(err)) exit
-         end do
-         if (.not. allocated(err)) call solve_load(contacts(1), load, single, err)
-         if (allocated(err)) then
-            call test_failed(error, at//'force: '//err%message); return
-         end if
-         call check(error, single%load, load, thr=1.0e-10_wp, rel=.true., message=at//'N')
-         if (allocated(error)) return
-         call solve_vertical_load(contacts, load, patches, dz, err)
-         if (allocated(err)) then
-            call test_failed(error, at//'vertical: '//err%message); return
-         end if
-         f_z = 0.0_wp
-         do k = 1, size(geom)
-            f_z = f_z + patches(k)%load*cos(geom(k)%gamma0)
-            if (.not. (patches(k)%load > 0.0_wp)) cycle
-            y_lo = patches(k)%y(1) - 0.5_wp*patches(k)%dy
-            y_hi = patches(k)%y(patches(k)%n_strips) + 0.5_wp*patches(k)%dy
-            call check(error, y_lo > geom(k)%basin_lower - geom(k)%h .and. &
-               y_hi < geom(k)%basin_upper + geom(k)%h, message=at//'contact inside its basin')
-            if (allocated(error)) return
-         end do
-         call check(error, f_z, load, thr=1.0e-10_wp, rel=.true., message=at//'F_z')
-         if (allocated(error)) return
-         if (i == 10) then
-            call check(error, size(geom), 2, message=at//'tread and gauge corner')
-            if (allocated(error)) return
-            call check(error, patches(2)%load > 0.2_wp*load, message=at//'both carry')
-            if (allocated(error)) return
-            call check(error, patches(1)%y(1) - 0.5_wp*patches(1)%dy, geom(1)%basin_lower, &
-               thr=geom(1)%h, message=at//'the tread contact reaches the ridge')
-            if (allocated(error)) return
-         end if
+      if (allocated(contacts)) deallocate (contacts, patches)
+      allocate (contacts(size(geom)), patches(size(geom)))
+      do k = 1, size(geom)
+         call prepare_normal_contact(contacts(k), geom(k), normal_options_type(), mat, err)
+         if (allocated(err)) exit
       end do
-   end subroutine test_ty_scan
+      if (.not. allocated(err)) call solve_load(contacts(1), scan_load, single, err)
+      if (allocated(err)) then
+         call test_failed(error, at//'force: '//err%message); return
+      end if
+      call check(error, single%load, scan_load, thr=1.0e-10_wp, rel=.true., message=at//'N')
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, scan_load, patches, dz, err)
+      if (allocated(err)) then
+         call test_failed(error, at//'vertical: '//err%message); return
+      end if
+      f_z = 0.0_wp
+      do k = 1, size(geom)
+         f_z = f_z + patches(k)%load*cos(geom(k)%gamma0)
+         if (.not. (patches(k)%load > 0.0_wp)) cycle
+         y_lo = patches(k)%y(1) - 0.5_wp*patches(k)%dy
+         y_hi = patches(k)%y(patches(k)%n_strips) + 0.5_wp*patches(k)%dy
+         call check(error, y_lo > geom(k)%basin_lower - geom(k)%h .and. &
+            y_hi < geom(k)%basin_upper + geom(k)%h, message=at//'contact inside its basin')
+         if (allocated(error)) return
+      end do
+      call check(error, f_z, scan_load, thr=1.0e-10_wp, rel=.true., message=at//'F_z')
+   end subroutine solve_position
 
    !> Tables given as the first n_points entries of longer arrays (the contact search's reused
    !> storage) prepare exactly the contact the exact-size tables give, bit for bit, free and
@@ -545,5 +642,86 @@ contains
          bits = transfer(x, 0_i8)
       end function bits
    end subroutine test_table_prefix
+
+   !> prepare_normal_contact takes the strips' Hertz shapes from the polynomial table
+   !> (hertz_strip_shapes): on the default case at the default position (t_y = 4.733 mm) and at
+   !> t_y = 3.87 mm every table point's ε_a, ε_b, m, n and pressure factor equal the root
+   !> search's (hertz_shape) to a relative 1e-11, and with the root search's values put in their
+   !> place the force-matched approach, area and peak pressure, and the loads at three
+   !> approaches, agree to a relative 1e-9.
+   subroutine test_tabulated_solve(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: positions(2) = [4.733_wp, 3.87_wp]
+      type(lib_error), allocatable :: err
+      type(prepared_profiles_type) :: prep
+      type(patch_geometry_type), allocatable :: geom(:)
+      type(normal_contact_type) :: fast, exact
+      type(normal_patch_type) :: p_fast, p_exact
+      type(hertz_shape_type) :: shape
+      type(material_type) :: mat
+      integer :: ip, i, j
+
+      call default_profiles(prep, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call find_contact_patches(prep, wheelset_position_type(y_ws=positions(ip)), geom, err)
+         if (.not. allocated(err)) call prepare_normal_contact(fast, geom(1), &
+            normal_options_type(), mat, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         exact = fast
+         associate (g => exact%geometry)
+            do i = 1, g%n_table
+               j = nint((g%y_first + (i - 1)*g%h - geom(1)%y(1))/geom(1)%h) + 1
+               call hertz_shape(geom(1)%curv_a(j)/geom(1)%curv_b(j), shape, err)
+               if (allocated(err)) then
+                  call test_failed(error, err%message); return
+               end if
+               call check(error, g%eps_a(i), shape%eps_a, thr=1.0e-11_wp, rel=.true., &
+                  message='eps_a')
+               if (allocated(error)) return
+               call check(error, g%eps_b(i), shape%eps_b, thr=1.0e-11_wp, rel=.true., &
+                  message='eps_b')
+               if (allocated(error)) return
+               call check(error, g%m(i), shape%m, thr=1.0e-11_wp, rel=.true., message='m')
+               if (allocated(error)) return
+               call check(error, g%n(i), shape%n, thr=1.0e-11_wp, rel=.true., message='n')
+               if (allocated(error)) return
+               g%eps_a(i) = shape%eps_a
+               g%eps_b(i) = shape%eps_b
+               g%m(i) = shape%m
+               g%n(i) = shape%n
+               g%p_factor(i) = sqrt((geom(1)%curv_a(j) + geom(1)%curv_b(j))/(shape%ee*shape%kk))
+               call check(error, fast%geometry%p_factor(i), g%p_factor(i), thr=1.0e-11_wp, &
+                  rel=.true., message='p_factor')
+               if (allocated(error)) return
+            end do
+         end associate
+         call solve_load(fast, scan_load, p_fast, err)
+         if (.not. allocated(err)) call solve_load(exact, scan_load, p_exact, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, p_fast%approach, p_exact%approach, thr=1.0e-9_wp, rel=.true., &
+            message='approach')
+         if (allocated(error)) return
+         call check(error, p_fast%area, p_exact%area, thr=1.0e-9_wp, rel=.true., message='area')
+         if (allocated(error)) return
+         call check(error, p_fast%p_max, p_exact%p_max, thr=1.0e-9_wp, rel=.true., &
+            message='p_max')
+         if (allocated(error)) return
+         do i = 1, 3
+            call solve_approach(fast, 0.04_wp*i, p_fast, err)
+            if (.not. allocated(err)) call solve_approach(exact, 0.04_wp*i, p_exact, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            call check(error, p_fast%load, p_exact%load, thr=1.0e-9_wp, rel=.true., &
+               message='load at a given approach')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_tabulated_solve
 
 end module test_normal_loading

@@ -1,20 +1,24 @@
 !> Hertz theory of an elliptical contact between identical elastic bodies (physics.md §1.3–1.5).
 !>
-!> The ellipse shape depends only on the curvature ratio A/B; it is solved once by
-!> [[hertz_shape]] (which the strip method calls per geometry point) and then scaled by the
-!> load or the approach in closed form.
+!> The ellipse shape depends only on the curvature ratio A/B; it is solved by [[hertz_shape]]
+!> (a bracketed root search on the shape equation) and then scaled by the load or the approach
+!> in closed form. [[hertz_shape_fast]] gives the same shape from a precomputed table (to
+!> ≈ 1e-12): the strip method needs it at every point of every new geometry.
 module shcontact_normal_hertz
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_material, only: material_type
    use shcontact_math_elliptic, only: complete_elliptic
    use shcontact_math_roots, only: scalar_function_type, find_root
+   use shcontact_normal_hertz_table, only: shape_octaves, shape_cells, shape_degree, &
+      shape_functions, shape_coef, shape_eps_minor, shape_c_major, shape_g, shape_inv_sqrt_ek, &
+      shape_k, shape_e, shape_strip_functions
    implicit none
    private
 
    public :: hertz_shape_type, hertz_type
-   public :: hertz_shape, hertz_from_load, hertz_from_approach, hertz_from_semiaxes
+   public :: hertz_shape, hertz_shape_fast, hertz_strip_shapes, hertz_from_load, hertz_from_approach, hertz_from_semiaxes
 
    !> The shape of a Hertz ellipse: everything that depends only on the ratio A/B.
    type :: hertz_shape_type
@@ -129,6 +133,118 @@ contains
       fx = x*x*dd/bb - self%rho
    end function shape_residual_eval
 
+   !> The Hertz shape at the curvature ratio A/B > 0, as [[hertz_shape]] gives it to a relative
+   !> ≈ 1e-12 (m, n, r, ε_a, ε_b, g, K, E), without a root search: g, K, E, c_major, ε_minor and
+   !> 1/√(EK) are polynomials of degree 8 in ρ = min(A,B)/max(A,B) on 4 cells per binary octave,
+   !> generated once from 40-digit values (scripts/hertz_table.py, shcontact_normal_hertz_table).
+   !> The cell follows from the bits of ρ, so that an evaluation costs a division and a few
+   !> polynomial terms; a `parameter` table needs no initialisation, allocates nothing and is
+   !> safe in any thread. Outside the table (ρ < 2⁻¹⁴, an ellipse more than 400 times longer
+   !> than wide; the circle ρ = 1) the root search answers.
+   subroutine hertz_shape_fast(ratio, shape, error)
+      !> A/B, positive.
+      real(wp), intent(in) :: ratio
+      !> The shape.
+      type(hertz_shape_type), intent(out) :: shape
+      !> Set for a non-positive ratio (or a failed root search outside the table).
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: v(shape_functions)
+      logical :: inside
+
+      ! (An invalid ratio is reported by the root search, before any division.)
+      inside = ratio > 0.0_wp .and. ratio < huge(1.0_wp)
+      if (inside) call tabulated_shape(min(ratio, 1.0_wp/ratio), shape_functions, v, inside)
+      if (inside) then
+         call shape_from_integrals(v(shape_g), v(shape_k), v(shape_e), v(shape_c_major), &
+            v(shape_eps_minor), ratio, shape)
+      else
+         call hertz_shape(ratio, shape, error)
+      end if
+   end subroutine hertz_shape_fast
+
+   !> What the strip method needs of the Hertz shape at every point of a geometry table
+   !> (physics.md §4.3 steps 2, 5 and 7): ε_a, ε_b, m, n and the pressure factor
+   !> √((A+B)/(E(k)K(k))) at the ratios A_i/B_i, as [[hertz_shape_fast]] gives them, in one
+   !> loop: no call and no division but ρ per point, so that the points' independent polynomial
+   !> sums overlap in the processor (≈ 10 ns a point).
+   subroutine hertz_strip_shapes(curv_a, curv_b, eps_a, eps_b, m, n, p_factor, error)
+      !> Curvatures A_i, B_i (1/mm), positive.
+      real(wp), intent(in) :: curv_a(:), curv_b(:)
+      !> ε_a, ε_b, m, n per point (sizes of curv_a at least).
+      real(wp), intent(out) :: eps_a(:), eps_b(:), m(:), n(:)
+      !> √((A+B)/(E K)) per point (1/mm).
+      real(wp), intent(out) :: p_factor(:)
+      !> Set for a non-positive curvature ratio (or a failed root search outside the table).
+      type(error_type), allocatable, intent(out) :: error
+      type(hertz_shape_type) :: shape
+      real(wp) :: v(shape_strip_functions), rho
+      logical :: inside
+      integer :: i
+
+      do i = 1, size(curv_a)
+         rho = 0.0_wp
+         if (max(curv_a(i), curv_b(i)) > 0.0_wp) rho = min(curv_a(i), curv_b(i))/ &
+            max(curv_a(i), curv_b(i))
+         call tabulated_shape(rho, shape_strip_functions, v, inside)
+         if (inside) then
+            call orient(v(shape_g), v(shape_c_major), v(shape_eps_minor), curv_a(i) <= curv_b(i), &
+               eps_a(i), eps_b(i), m(i), n(i))
+            p_factor(i) = sqrt(curv_a(i) + curv_b(i))*v(shape_inv_sqrt_ek)
+         else
+            call check_positive(curv_a(i), 'curvature A', '1/mm', error)
+            if (.not. allocated(error)) call check_positive(curv_b(i), 'curvature B', '1/mm', &
+               error)
+            if (.not. allocated(error)) call hertz_shape(curv_a(i)/curv_b(i), shape, error)
+            if (allocated(error)) return
+            eps_a(i) = shape%eps_a
+            eps_b(i) = shape%eps_b
+            m(i) = shape%m
+            n(i) = shape%n
+            p_factor(i) = sqrt((curv_a(i) + curv_b(i))/(shape%ee*shape%kk))
+         end if
+      end do
+   end subroutine hertz_strip_shapes
+
+   !> The first n_values tabulated functions (shcontact_normal_hertz_table) at ρ ∈ [2⁻¹⁴, 1);
+   !> `inside` is false elsewhere (and for NaN), `values` then unset.
+   pure subroutine tabulated_shape(rho, n_values, values, inside)
+      real(wp), intent(in) :: rho
+      integer, intent(in) :: n_values
+      real(wp), intent(out) :: values(n_values)
+      logical, intent(out) :: inside
+      !> Bits of the significand of an IEEE double, and its exponent bias.
+      integer(i8), parameter :: significand_mask = 2_i8**52 - 1
+      integer, parameter :: exponent_bias = 1023
+      real(wp), parameter :: significand_scale = real(shape_cells, wp)*2.0_wp**(-52)
+      real(wp) :: u, t, t2, t4
+      integer(i8) :: bits
+      integer :: octave, j, cell, f
+
+      inside = rho > 0.0_wp .and. rho < 1.0_wp
+      if (.not. inside) return
+      ! ρ = (1 + s)·2^(−1 − octave) with s ∈ [0, 1) (ρ < 1 is normal, positive): the octave and
+      ! the position in it straight from the bits, as exponent() and fraction() would give them
+      ! through a library call each.
+      bits = transfer(rho, bits)
+      octave = exponent_bias - 1 - int(shiftr(bits, 52))
+      inside = octave < shape_octaves
+      if (.not. inside) return
+      u = real(iand(bits, significand_mask), wp)*significand_scale
+      j = min(int(u), shape_cells - 1)
+      t = 2.0_wp*(u - j) - 1.0_wp
+      cell = octave*shape_cells + j + 1
+      ! Estrin's scheme for degree 8: a dependency chain of 4 steps instead of Horner's 8.
+      t2 = t*t
+      t4 = t2*t2
+      do f = 1, n_values
+         values(f) = ((shape_coef(f, 0, cell) + shape_coef(f, 1, cell)*t) &
+            + (shape_coef(f, 2, cell) + shape_coef(f, 3, cell)*t)*t2) &
+            + ((shape_coef(f, 4, cell) + shape_coef(f, 5, cell)*t) &
+            + (shape_coef(f, 6, cell) + shape_coef(f, 7, cell)*t)*t2)*t4 &
+            + shape_coef(f, 8, cell)*(t4*t4)
+      end do
+   end subroutine tabulated_shape
+
    !> Everything else from g and the orientation (physics.md §1.3 items 3, 6 and §1.4).
    pure subroutine shape_from_g(g, ratio, shape)
       !> minor/major, in (0, 1].
@@ -137,32 +253,55 @@ contains
       real(wp), intent(in) :: ratio
       !> The shape.
       type(hertz_shape_type), intent(out) :: shape
-      real(wp) :: kk, ee, bb, dd, rho, eps_minor, c_major
+      real(wp) :: kk, ee, bb, dd
 
       call complete_elliptic(g*g, kk, ee, bb, dd)
-      rho = min(ratio, 1.0_wp/ratio)
-      ! The minor axis carries ε = B b²/δ (A ≤ B) = E/((1 + ρ)K): §1.3 items 3 and 6 combined.
-      eps_minor = ee/((1.0_wp + rho)*kk)
-      ! §1.4, written for the major axis.
-      c_major = (2.0_wp*ee/(pi*g*g))**(1.0_wp/3.0_wp)
+      ! §1.4 for the major axis; the minor axis carries ε = B b²/δ (A ≤ B) = E/((1 + ρ)K)
+      ! (§1.3 items 3 and 6 combined).
+      call shape_from_integrals(g, kk, ee, (2.0_wp*ee/(pi*g*g))**(1.0_wp/3.0_wp), &
+         ee/((1.0_wp + min(ratio, 1.0_wp/ratio))*kk), ratio, shape)
+   end subroutine shape_from_g
+
+   !> The shape from g, K(k), E(k), the major axis' Hertz coefficient c_major = (2E/(πg²))^{1/3}
+   !> (§1.4), the minor axis' penetration fraction ε_minor = E/((1 + ρ)K) and the orientation.
+   pure subroutine shape_from_integrals(g, kk, ee, c_major, eps_minor, ratio, shape)
+      !> minor/major, in (0, 1].
+      real(wp), intent(in) :: g
+      !> K(k), E(k) at k² = 1 − g².
+      real(wp), intent(in) :: kk, ee
+      !> c_major and ε_minor.
+      real(wp), intent(in) :: c_major, eps_minor
+      !> A/B (only whether it exceeds 1 matters beyond being stored).
+      real(wp), intent(in) :: ratio
+      !> The shape.
+      type(hertz_shape_type), intent(out) :: shape
+
       shape%ratio = ratio
       shape%g = g
       shape%kk = kk
       shape%ee = ee
       shape%r = 2.0_wp*kk/(pi*c_major)
-      if (ratio <= 1.0_wp) then
-         ! A ≤ B: a is the major semi-axis.
-         shape%m = c_major
-         shape%n = c_major*g
-         shape%eps_b = eps_minor
-         shape%eps_a = 1.0_wp - eps_minor
+      call orient(g, c_major, eps_minor, ratio <= 1.0_wp, shape%eps_a, shape%eps_b, shape%m, &
+         shape%n)
+   end subroutine shape_from_integrals
+
+   !> ε_a, ε_b, m, n from the major/minor quantities: a is the major semi-axis iff A ≤ B.
+   pure subroutine orient(g, c_major, eps_minor, a_major, eps_a, eps_b, m, n)
+      real(wp), intent(in) :: g, c_major, eps_minor
+      logical, intent(in) :: a_major
+      real(wp), intent(out) :: eps_a, eps_b, m, n
+      if (a_major) then
+         m = c_major
+         n = c_major*g
+         eps_b = eps_minor
+         eps_a = 1.0_wp - eps_minor
       else
-         shape%m = c_major*g
-         shape%n = c_major
-         shape%eps_a = eps_minor
-         shape%eps_b = 1.0_wp - eps_minor
+         m = c_major*g
+         n = c_major
+         eps_a = eps_minor
+         eps_b = 1.0_wp - eps_minor
       end if
-   end subroutine shape_from_g
+   end subroutine orient
 
    !> Hertz solution for curvatures A, B and a normal force N (physics.md §1.4):
    !> L = [3N/(4E*(A+B))]^{1/3}, a = mL, b = nL, δ = rL²(A+B), p₀ = 3N/(2πab).

@@ -15,7 +15,7 @@ module shcontact_normal_loading
    use shcontact_math_roots, only: scalar_function_type, find_root
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz
-   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
+   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape_fast, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
       semihertz_strips, semihertz_load, ellipse_strips, reserve_strips, clear_strips
@@ -112,7 +112,8 @@ contains
          call prepare_semihertz(geometry, options, contact%geometry, error, last=n_points)
       end if
       if (allocated(error)) return
-      call hertz_shape(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, error)
+      call hertz_shape_fast(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, &
+         error)
    end subroutine prepare_normal_contact
 
    !> The normal solution for a prescribed approach δ of the patch (no iteration).

@@ -12,7 +12,7 @@ module shcontact_normal_semihertz
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
-   use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape
+   use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
    implicit none
    private
@@ -20,6 +20,12 @@ module shcontact_normal_semihertz
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
    public :: reserve_strips, clear_strips
+
+   !> Smallest relative growth of δ over which the strips sweep across table points out of
+   !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
+   !> against the ≈ 2e-4 change of the midpoint error it spreads out, small enough that the
+   !> strips seldom reach past the contact.
+   real(wp), parameter :: cover_ramp = 0.01_wp
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
@@ -48,10 +54,11 @@ module shcontact_normal_semihertz
       real(wp), allocatable :: eps_a(:), eps_b(:)
       !> Approach at which each table point comes into contact, g/ε_b (mm).
       real(wp), allocatable :: touch(:)
-      !> Largest touch value between each point and i_first (inclusive): the contact interval
-      !> for an approach δ is where reach < δ, found by bisection (reach is monotonic on each
-      !> side of i_first) instead of a walk over the table.
-      real(wp), allocatable :: reach(:)
+      !> Approach from which the strips cover each table point ([[outward_cover]]): at most
+      !> touch, monotonic on each side of i_first, so the strips' interval for an approach δ is
+      !> where cover < δ, found by bisection. It holds every point in contact (touch < δ), also
+      !> beyond a point out of contact, and its ends move continuously with δ.
+      real(wp), allocatable :: cover(:)
       !> Local Hertz coefficients m(y), n(y).
       real(wp), allocatable :: m(:), n(:)
       !> Pressure factor √((A+B)/(E(k)K(k))) (1/√mm²): p₀ = E*·factor·√δ (physics.md §4.3
@@ -82,9 +89,7 @@ contains
       !> Gap to use at the first and the last point used instead of the table's (mm).
       real(wp), intent(in), optional :: gap_first, gap_last
 
-      type(hertz_shape_type) :: shape
-      real(wp) :: last_ratio, ratio
-      integer :: i, j, n, i1, i2
+      integer :: n, i1, i2
 
       i1 = 1
       if (present(first)) i1 = first
@@ -115,42 +120,90 @@ contains
          return
       end if
 
-      ! The shape depends only on A/B: solve it per distinct ratio (runs of equal ratios, to the
-      ! last bit, are common on circular arcs).
-      last_ratio = -1.0_wp
-      do i = 1, n
-         j = i1 - 1 + i
-         ratio = geometry%curv_a(j)/geometry%curv_b(j)
-         if (abs(ratio - last_ratio) > spacing(ratio)) then
-            call hertz_shape(ratio, shape, error)
-            if (allocated(error)) return
-            last_ratio = ratio
-         end if
-         prepared%m(i) = shape%m
-         prepared%n(i) = shape%n
-         prepared%p_factor(i) = sqrt((geometry%curv_a(j) + geometry%curv_b(j))/(shape%ee*shape%kk))
-         if (options%reduction == reduction_constant) then
-            ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
-            prepared%eps_a(i) = options%epsilon
-            prepared%eps_b(i) = options%epsilon
-         else
-            prepared%eps_a(i) = shape%eps_a
-            prepared%eps_b(i) = shape%eps_b
-         end if
-         prepared%touch(i) = prepared%gap(i)/prepared%eps_b(i)
-      end do
+      ! The shape depends only on A/B (decision 5): from the table, no root search.
+      call hertz_strip_shapes(geometry%curv_a(i1:i2), geometry%curv_b(i1:i2), &
+         prepared%eps_a(1:n), prepared%eps_b(1:n), prepared%m(1:n), prepared%n(1:n), &
+         prepared%p_factor(1:n), error)
+      if (allocated(error)) return
+      if (options%reduction == reduction_constant) then
+         ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
+         prepared%eps_a(1:n) = options%epsilon
+         prepared%eps_b(1:n) = options%epsilon
+      end if
+      prepared%touch(1:n) = prepared%gap(1:n)/prepared%eps_b(1:n)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
-      prepared%reach(prepared%i_first) = prepared%touch(prepared%i_first)
-      do i = prepared%i_first - 1, 1, -1
-         prepared%reach(i) = max(prepared%reach(i + 1), prepared%touch(i))
-      end do
-      do i = prepared%i_first + 1, n
-         prepared%reach(i) = max(prepared%reach(i - 1), prepared%touch(i))
-      end do
-      ! The interval reaches a table end once δ exceeds every touch value between it and i_first.
-      prepared%approach_max = min(prepared%reach(1), prepared%reach(n))
+      associate (i0 => prepared%i_first)
+         call outward_cover(prepared%touch(i0:1:-1), prepared%cover(i0:1:-1))
+         call outward_cover(prepared%touch(i0:n), prepared%cover(i0:n))
+      end associate
+      ! The strips reach a table end once δ exceeds the touch value there (cover = touch at the
+      ! ends).
+      prepared%approach_max = min(prepared%cover(1), prepared%cover(n))
    end subroutine prepare_semihertz
+
+   !> The approach from which the strips cover each table point, on one side of the
+   !> first-contact point (`touch(1)`, the smallest value) outwards.
+   !>
+   !> Every table point with δ_j = δ − touch_j > 0 carries load (physics.md §4.3 step 3), also
+   !> beyond a point that does not: touch = g/ε_b is not monotonic where ε_b changes faster than
+   !> the gap (a jump of B between profile arcs), nor where the basin holds a second, shallower
+   !> minimum. The strips must then reach past the points out of contact, and their interval
+   !> must grow continuously with δ: a jump, when a far region comes into contact, would move
+   !> every strip of the near one and make N(δ) jump by the change of the midpoint rule's error
+   !> (up to ≈ 2e-4 with 100 strips), which no root finder can match.
+   !>
+   !> So cover is the largest monotonic minorant of touch (its running minimum from the far
+   !> end), except over points out of contact, where that minorant is flat (a region farther out,
+   !> at touch value τ, comes into contact first): there cover rises on a straight line, from the
+   !> last point before them with cover ≤ (1 − cover_ramp)τ up to τ, and the strips sweep across
+   !> them (carrying no load there) while δ grows by at least that fraction. N(δ) is then
+   !> continuous, so the load match always converges. On the tread it also stays increasing:
+   !> the sweep changes ln N by the change of the midpoint error, ≈ 2e-4, over Δ ln δ ≥ 0.01,
+   !> while d ln N/d ln δ ≈ 1.5. On nearly conformal flange-root contacts the midpoint rule's
+   !> aliasing (strips moving across narrow pressure features) can make N dip by up to ≈ 1e-3
+   !> where the strips sweep fast, as it could before where the contact grew fast; a load in
+   !> such a dip has more than one approach, and the one found is as good as the others.
+   !> Where touch increases outwards, cover = touch and the strips end where they always did
+   !> (bit for bit); near a far region the strips may reach past the contact (δ within
+   !> cover_ramp of τ), which costs them a little resolution.
+   pure subroutine outward_cover(touch, cover)
+      !> touch values from the first-contact point outwards (mm).
+      real(wp), intent(in) :: touch(:)
+      !> The cover values (mm): cover ≤ touch, cover(1) = touch(1), nondecreasing, and equal to
+      !> touch at the last point.
+      real(wp), intent(out) :: cover(:)
+      integer :: n, j, j_far, j_ramp, i
+      real(wp) :: far
+
+      n = size(touch)
+      cover(n) = touch(n)
+      do j = n - 1, 1, -1
+         cover(j) = min(touch(j), cover(j + 1))
+      end do
+      j = 2
+      do while (j < n)
+         if (.not. (cover(j) < touch(j))) then
+            j = j + 1
+            cycle
+         end if
+         ! Points j..j_far − 1 are out of contact until δ reaches far = touch(j_far).
+         j_far = j + 1
+         do while (cover(j_far) < touch(j_far))
+            j_far = j_far + 1
+         end do
+         far = cover(j_far)
+         j_ramp = j - 1
+         do while (j_ramp > 1 .and. cover(j_ramp) > (1.0_wp - cover_ramp)*far)
+            j_ramp = j_ramp - 1
+         end do
+         do i = j_ramp + 1, j_far - 1
+            cover(i) = min(cover(i), cover(j_ramp) + (far - cover(j_ramp))* &
+               real(i - j_ramp, wp)/real(j_far - j_ramp, wp))
+         end do
+         j = j_far + 1
+      end do
+   end subroutine outward_cover
 
    !> A(0) and B(0) of the table points i1..i2, interpolated exactly as
    !> patch_geometry_type%sample does on a table holding just those points.
@@ -239,9 +292,10 @@ contains
       end do
    end subroutine check_geometry
 
-   !> The strips of the semi-Hertzian method for approach δ (physics.md §4.3 steps 3–8): the
-   !> contact interval is the part of the table around the first-contact point where
-   !> δ_i = δ − g(y)/ε_b(y) > 0; `n_strips` strips of equal width cover it, so N(δ) is continuous.
+   !> The strips of the semi-Hertzian method for approach δ (physics.md §4.3 steps 3–8):
+   !> `n_strips` strips of equal width cover every table point where δ_i = δ − g(y)/ε_b(y) > 0
+   !> (strips over a point out of contact carry no load), on an interval that grows continuously
+   !> with δ ([[outward_cover]]), so N(δ) is continuous.
    !> Below contact the patch is cleared (zero load) without error. The patch arrays must hold
    !> `n_strips` entries; they are allocated only when that size changes.
    subroutine semihertz_strips(prepared, options, e_star, approach, patch, error)
@@ -326,9 +380,10 @@ contains
       end do
    end subroutine semihertz_load
 
-   !> The contact interval for approach δ, cut into n strips: its start y_lo and the strip width
-   !> dy; `touching` is false below contact. ψ = ε_b(δ − g/ε_b) = δ ε_b − g is linear on each
-   !> cell: the interval ends at its exact crossings of the table model.
+   !> The interval of the strips for approach δ, cut into n strips: its start y_lo and the strip
+   !> width dy; `touching` is false below contact. ψ = ε_b(δ − g/ε_b) = δ ε_b − g is linear on
+   !> each cell: where touch increases outwards the interval ends at its exact crossings of the
+   !> table model ([[end_fraction]]).
    pure subroutine contact_interval(prepared, approach, n, touching, y_lo, dy, error)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
@@ -343,20 +398,35 @@ contains
       dy = 0.0_wp
       touching = approach > prepared%approach_touch
       if (.not. touching) return
-      ! The table points in contact: outwards from the first-contact point while touch < δ.
-      j_lo = first_reached(prepared%reach, prepared%i_first, approach)
-      j_hi = last_reached(prepared%reach, prepared%i_first, prepared%n_table, approach)
+      ! The table points covered: outwards from the first-contact point while cover < δ.
+      j_lo = first_reached(prepared%cover, prepared%i_first, approach)
+      j_hi = last_reached(prepared%cover, prepared%i_first, prepared%n_table, approach)
       ! An interval that ends on the first or last point found it in contact (δ > touch there).
       if (j_lo == 1 .or. j_hi == prepared%n_table) then
          call table_end_error(prepared, approach, error)
          return
       end if
-      y_lo = table_y(prepared, j_lo) - prepared%h*crossing(psi_at(prepared, approach, j_lo), &
-         psi_at(prepared, approach, j_lo - 1))
-      y_hi = table_y(prepared, j_hi) + prepared%h*crossing(psi_at(prepared, approach, j_hi), &
-         psi_at(prepared, approach, j_hi + 1))
+      y_lo = table_y(prepared, j_lo) - prepared%h*end_fraction(prepared, approach, j_lo, j_lo - 1)
+      y_hi = table_y(prepared, j_hi) + prepared%h*end_fraction(prepared, approach, j_hi, j_hi + 1)
       dy = (y_hi - y_lo)/n
    end subroutine contact_interval
+
+   !> Where the strips end in the cell from the covered point j_in (cover < δ) to j_out
+   !> (cover ≥ δ), as a fraction of the cell from j_in: the zero of the linear ψ when both points
+   !> have cover = touch, else the larger of that and the crossing of the linear cover (which
+   !> keeps the end continuous in δ where cover < touch, and still covers the contact).
+   pure real(wp) function end_fraction(prepared, approach, j_in, j_out) result(t)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      integer, intent(in) :: j_in, j_out
+      real(wp) :: c_in, c_out
+
+      t = crossing(psi_at(prepared, approach, j_in), psi_at(prepared, approach, j_out))
+      c_in = prepared%cover(j_in)
+      c_out = prepared%cover(j_out)
+      if (c_in == prepared%touch(j_in) .and. c_out == prepared%touch(j_out)) return
+      t = max(t, min(1.0_wp, (approach - c_in)/(c_out - c_in)))
+   end function end_fraction
 
    !> Steps 4–6 on the strip centred at y (physics.md §4.3): δ_i = max(0, ψ/ε_b),
    !> a_i = √(ε_a δ_i/A_i), p₀,ᵢ = the local Hertz peak at δ_i, N_i = (π/2) p₀,ᵢ a_i δy; also the
@@ -379,24 +449,24 @@ contains
       load = 0.5_wp*pi*p0*a*dy
    end subroutine strip_load
 
-   !> The smallest j ≤ i_first with reach(j) < δ (reach does not increase from 1 to i_first;
-   !> reach(i_first) < δ).
-   pure integer function first_reached(reach, i_first, approach) result(j_lo)
-      real(wp), intent(in) :: reach(:)
+   !> The smallest j ≤ i_first with cover(j) < δ (cover does not increase from 1 to i_first;
+   !> cover(i_first) < δ).
+   pure integer function first_reached(cover, i_first, approach) result(j_lo)
+      real(wp), intent(in) :: cover(:)
       integer, intent(in) :: i_first
       real(wp), intent(in) :: approach
       integer :: lo, hi, mid
 
-      ! Invariant: reach(hi) < δ; reach(lo) ≥ δ unless lo is the first point.
+      ! Invariant: cover(hi) < δ; cover(lo) ≥ δ unless lo is the first point.
       lo = 1
       hi = i_first
-      if (approach > reach(lo)) then
+      if (approach > cover(lo)) then
          j_lo = lo
          return
       end if
       do while (hi - lo > 1)
          mid = (lo + hi)/2
-         if (approach > reach(mid)) then
+         if (approach > cover(mid)) then
             hi = mid
          else
             lo = mid
@@ -405,23 +475,23 @@ contains
       j_lo = hi
    end function first_reached
 
-   !> The largest j ≥ i_first with reach(j) < δ (reach does not decrease from i_first to n).
-   pure integer function last_reached(reach, i_first, n, approach) result(j_hi)
-      real(wp), intent(in) :: reach(:)
+   !> The largest j ≥ i_first with cover(j) < δ (cover does not decrease from i_first to n).
+   pure integer function last_reached(cover, i_first, n, approach) result(j_hi)
+      real(wp), intent(in) :: cover(:)
       integer, intent(in) :: i_first, n
       real(wp), intent(in) :: approach
       integer :: lo, hi, mid
 
-      ! Invariant: reach(lo) < δ; reach(hi) ≥ δ unless hi is the last point.
+      ! Invariant: cover(lo) < δ; cover(hi) ≥ δ unless hi is the last point.
       lo = i_first
       hi = n
-      if (approach > reach(hi)) then
+      if (approach > cover(hi)) then
          j_hi = hi
          return
       end if
       do while (hi - lo > 1)
          mid = (lo + hi)/2
-         if (approach > reach(mid)) then
+         if (approach > cover(mid)) then
             lo = mid
          else
             hi = mid
@@ -563,11 +633,11 @@ contains
          if (size(prepared%gap) >= n) return
          c = max(n, size(prepared%gap) + size(prepared%gap)/2)
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
-            prepared%eps_a, prepared%eps_b, prepared%touch, prepared%reach, prepared%m, &
+            prepared%eps_a, prepared%eps_b, prepared%touch, prepared%cover, prepared%m, &
             prepared%n, prepared%p_factor)
       end if
       allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%r_wheel(c), &
-         prepared%eps_a(c), prepared%eps_b(c), prepared%touch(c), prepared%reach(c), &
+         prepared%eps_a(c), prepared%eps_b(c), prepared%touch(c), prepared%cover(c), &
          prepared%m(c), prepared%n(c), prepared%p_factor(c))
    end subroutine reserve_table
 
