@@ -427,10 +427,11 @@ contains
       call check(error, allocated(err_load), message='the table end was never reached')
    end subroutine test_load_only
 
-   !> The contact interval found by bisection on the running maximum of the touch table is the
-   !> one of the walk outwards from the first-contact point, ending where ψ = ε_b δ − g, linear
-   !> on each cell, crosses zero (physics.md §4.3), also when the gap is not monotonic (a second
-   !> basin at |y| = 6 mm that the interval swallows at larger approaches).
+   !> The strips' interval found by bisection on the cover table is the one of the walk outwards
+   !> from the first-contact point while cover < δ; it holds every table point in contact
+   !> (touch < δ), also when the gap is not monotonic (a second basin at |y| = 6 mm that comes
+   !> into contact before the bump between them), and where cover = touch at both points of its
+   !> end cell it ends where ψ = ε_b δ − g, linear on each cell, crosses zero (physics.md §4.3).
    subroutine test_interval(error)
       type(error_type), allocatable, intent(out) :: error
       type(patch_geometry_type) :: geom
@@ -463,30 +464,45 @@ contains
             call test_failed(error, 'unexpected error: '//err%message); return
          end if
          n_checked = n_checked + 1
-         y_lo = table_y(j_lo) - contact%geometry%h*crossing(psi(j_lo), psi(j_lo - 1))
-         y_hi = table_y(j_hi) + contact%geometry%h*crossing(psi(j_hi), psi(j_hi + 1))
-         call check(error, patch%y(1) - 0.5_wp*patch%dy, y_lo, thr=1.0e-12_wp, &
-            message='start of the interval differs from the walk')
-         if (allocated(error)) return
-         call check(error, patch%y(patch%n_strips) + 0.5_wp*patch%dy, y_hi, thr=1.0e-12_wp, &
-            message='end of the interval differs from the walk')
-         if (allocated(error)) return
+         associate (g => contact%geometry, lo => patch%y(1) - 0.5_wp*patch%dy, &
+               hi => patch%y(patch%n_strips) + 0.5_wp*patch%dy)
+            call check(error, lo <= table_y(j_lo) .and. lo >= table_y(j_lo - 1) .and. &
+               hi >= table_y(j_hi) .and. hi <= table_y(j_hi + 1), &
+               message='interval outside the cells of the walk')
+            if (allocated(error)) return
+            call check(error, all(g%touch(1:j_lo - 1) >= approach) .and. &
+               all(g%touch(j_hi + 1:g%n_table) >= approach), &
+               message='a table point in contact outside the interval')
+            if (allocated(error)) return
+            if (g%cover(j_lo) == g%touch(j_lo) .and. g%cover(j_lo - 1) == g%touch(j_lo - 1)) then
+               y_lo = table_y(j_lo) - g%h*crossing(psi(j_lo), psi(j_lo - 1))
+               call check(error, lo, y_lo, thr=1.0e-12_wp, &
+                  message='start of the interval differs from the walk')
+               if (allocated(error)) return
+            end if
+            if (g%cover(j_hi) == g%touch(j_hi) .and. g%cover(j_hi + 1) == g%touch(j_hi + 1)) then
+               y_hi = table_y(j_hi) + g%h*crossing(psi(j_hi), psi(j_hi + 1))
+               call check(error, hi, y_hi, thr=1.0e-12_wp, &
+                  message='end of the interval differs from the walk')
+               if (allocated(error)) return
+            end if
+         end associate
       end do
       call check(error, n_checked > 40, message='too few approaches inside the table')
    contains
-      !> The contact run of table points by walking outwards (the algorithm replaced).
+      !> The covered run of table points by walking outwards (the algorithm replaced).
       subroutine walk(approach, j_lo, j_hi)
          real(wp), intent(in) :: approach
          integer, intent(out) :: j_lo, j_hi
          associate (g => contact%geometry)
             j_lo = g%i_first
             do while (j_lo > 1)
-               if (approach <= g%touch(j_lo - 1)) exit
+               if (approach <= g%cover(j_lo - 1)) exit
                j_lo = j_lo - 1
             end do
             j_hi = g%i_first
             do while (j_hi < g%n_table)
-               if (approach <= g%touch(j_hi + 1)) exit
+               if (approach <= g%cover(j_hi + 1)) exit
                j_hi = j_hi + 1
             end do
          end associate

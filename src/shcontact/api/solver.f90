@@ -93,9 +93,9 @@ module shcontact_api_solver
       real(wp) :: fn = 0.0_wp
       !> Normalised forces F/(μ F_n).
       real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
-      !> Lateral and vertical force in the track frame (N; y towards the right rail's field side
-      !> for both wheels, z down). The contact-frame F_y above points towards the wheel's own
-      !> field side (the left wheel's is the mirror image).
+      !> Lateral and vertical force in the track frame (N, z down), in the wheel's side frame: y
+      !> towards the wheel's own field side (for the left wheel multiply F_y by −1 to get the
+      !> track frame's y, doc/api.md).
       real(wp) :: fy_track = 0.0_wp, fz_track = 0.0_wp
       !> Approach δ (mm), contact area (mm²), largest strip peak pressure (MPa).
       real(wp) :: approach = 0.0_wp, area = 0.0_wp, p_max = 0.0_wp
@@ -125,8 +125,8 @@ module shcontact_api_solver
       real(wp) :: dz = 0.0_wp
       !> The main patch: patch(main_patch).
       type(patch_result_type) :: main
-      !> Totals over the loaded patches, forces on the wheel in the track frame (N; y towards the
-      !> right rail's field side for both wheels).
+      !> Totals over the loaded patches, forces on the wheel in the track frame (N; side frame:
+      !> the left wheel's F_y is the mirror image, see patch_result_type%fy_track).
       type(track_forces_type) :: track
       !> Every patch; patches beyond n_loaded carry their geometry only.
       type(patch_result_type) :: patch(max_patches)
@@ -677,7 +677,7 @@ contains
             p%mz = t%mz
             p%fx_norm = t%fx_norm
             p%fy_norm = t%fy_norm
-            p%fy_track = self%side*t%fy_track
+            p%fy_track = t%fy_track
             p%fz_track = t%fz_track
             p%coulomb_ratio = t%coulomb_ratio
             p%adhesion_fraction = t%adhesion_fraction
@@ -685,7 +685,7 @@ contains
             p%nu_y = self%creepage(k)%nu_y
             p%phi = self%creepage(k)%phi
             result%track%fx = result%track%fx + t%fx
-            result%track%fy = result%track%fy + self%side*t%fy_track
+            result%track%fy = result%track%fy + t%fy_track
             result%track%fz = result%track%fz + t%fz_track
             result%track%fn = result%track%fn + n%load
          end associate
