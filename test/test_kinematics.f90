@@ -213,7 +213,7 @@ contains
             contact_load_type(load_vertical_force, f_z), result, err)
          call check(error, .not. allocated(err), 'solve_kinematic failed')
          if (allocated(error)) return
-         call check(error, -result%track%fz, f_z, rel=.true., thr=1.0e-6_wp)
+         call check(error, -result%track%fz, f_z, rel=.true., thr=2.0e-5_wp)
          if (allocated(error)) return
          ! On the flange (γ ≈ −1.2) the normal force is about F_z/cos γ, far above F_z.
          if (i == 3) call check(error, result%track%fn > 2.0_wp*f_z, &
@@ -302,7 +302,7 @@ contains
                   err%message)
                return
             end if
-            call check(error, -result%track%fz, f_z, rel=.true., thr=1.0e-6_wp)
+            call check(error, -result%track%fz, f_z, rel=.true., thr=2.0e-5_wp)
             if (allocated(error)) return
          end do
          call wheel%solve_kinematic(rolling(y_ws(i), 0.0_wp, 0.0_wp), &
