@@ -15,6 +15,13 @@ module test_kinematics
       load_vertical_force, load_normal_force
    use shcontact_tangential_options, only: tangential_options_type, spin_additive
    use shcontact_normal_options, only: normal_options_type
+   use shcontact_profile_points, only: profile_type
+   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_geometry_track, only: track_type
+   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
+      prepare_profiles, prepare_wheel
+   use shcontact_geometry_kinematics, only: yawed_wheel_profile
+   use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
    implicit none
    private
 
@@ -39,7 +46,8 @@ contains
          new_unittest('former_failures_solve', test_former_failures), &
          new_unittest('bad_state_rejected', test_bad_state), &
          new_unittest('independent_of_earlier_calls', test_history), &
-         new_unittest('short_tables_equal_full_tables', test_short_tables)]
+         new_unittest('short_tables_equal_full_tables', test_short_tables), &
+         new_unittest('yaw_table_matches_direct_fit', test_yaw_table)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -414,5 +422,49 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_short_tables
+
+   !> The yawed wheel interpolated in ψ² (shcontact_geometry_yaw) against the direct fit of the
+   !> contact locus at yaw angles between the nodes: samples and spline coefficients within
+   !> 2e-8 mm up to 10 mrad, 2e-5 mm up to the table's limit (25 mrad).
+   subroutine test_yaw_table(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail, locus
+      type(prepared_profiles_type) :: unyawed, direct, table_fit
+      type(yaw_table_type) :: table
+      type(lib_error), allocatable :: err
+      real(wp) :: yaws(5) = [0.0013_wp, 0.0037_wp, 0.0081_wp, 0.01_wp, 0.0231_wp], d
+      integer :: i
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), unyawed, err)
+      if (.not. allocated(err)) call build_yaw_table(wheel, unyawed, track_type(), &
+         contact_options_type(), table, err)
+      call check(error, .not. allocated(err), 'preparation failed')
+      if (allocated(error)) return
+      do i = 1, size(yaws)
+         direct = unyawed
+         table_fit = unyawed
+         call yawed_wheel_profile(wheel, unyawed%wheel, track_type(), unyawed%z_tape, yaws(i), &
+            locus)
+         call prepare_wheel(locus, track_type(), contact_options_type(), direct, err)
+         call check(error, .not. allocated(err), 'direct fit failed')
+         if (allocated(error)) return
+         call apply_yaw(table, yaws(i), table_fit)
+         d = max(maxval(abs(direct%wheel_y - table_fit%wheel_y)), &
+            maxval(abs(direct%wheel_z - table_fit%wheel_z)), &
+            maxval(abs(direct%wheel%cz(1, :) - table_fit%wheel%cz(1, :))))
+         call check(error, d <= merge(2.0e-8_wp, 2.0e-5_wp, yaws(i) <= 0.01_wp), &
+            'yaw table differs from the direct fit at yaw '//real_text(yaws(i)))
+         if (allocated(error)) return
+      end do
+   contains
+      pure function real_text(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=24) :: text
+         write (text, '(es12.4)') x
+      end function real_text
+   end subroutine test_yaw_table
 
 end module test_kinematics

@@ -50,6 +50,7 @@ module shcontact_api_solver
    use shcontact_tangential_solver, only: track_forces_type, solve_tangential
    use shcontact_tangential_options, only: spin_additive
    use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
+   use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
       side_state, yawed_wheel_profile, axle_offset, contact_lead, yaw_radius_factor
    implicit none
@@ -170,6 +171,8 @@ module shcontact_api_solver
       !> the wheel replaced by its contact locus (shcontact_geometry_kinematics).
       type(prepared_profiles_type) :: yawed
       logical :: has_yawed = .false.
+      !> Effective wheel profiles at the yaw nodes (built at the first yawed call).
+      type(yaw_table_type) :: yaw_table
       real(wp) :: yawed_angle = 0.0_wp
       !> Geometry of the last position (valid when has_geometry).
       logical :: has_geometry = .false.
@@ -667,8 +670,10 @@ contains
       self%has_geometry = .true.
    end subroutine update_geometry
 
-   !> Prepare the profiles for a yaw angle (side frame): the wheel replaced by its contact locus,
-   !> interpolated (it is made of points of the already smoothed wheel), with the unyawed tape
+   !> Prepare the profiles for a yaw angle (side frame): the wheel replaced by its contact locus
+   !> (shcontact_geometry_kinematics), interpolated in ψ² from the effective profiles prepared
+   !> at a few yaw angles at the first yawed call (shcontact_geometry_yaw; beyond its
+   !> yaw_table_limit prepared directly), with the unyawed tape
    !> circle height, so that the table's rolling radius is r cos θ.
    subroutine prepare_yaw(self, yaw, error)
       type(contact_solver_type), intent(inout) :: self
@@ -680,14 +685,23 @@ contains
       if (self%has_yawed .and. same(yaw, self%yawed_angle)) return
       if (.not. self%has_yawed) self%yawed = self%prepared
       self%has_yawed = .false.
-      call yawed_wheel_profile(self%wheel, self%prepared%wheel, self%track, &
-         self%prepared%z_tape, yaw, locus)
-      options = self%contact_options
-      options%l_filt_wheel = 0.0_wp
-      call prepare_wheel(locus, self%track, options, self%yawed, error)
-      if (allocated(error)) then
-         call prefix_error(error, 'yawed wheel (yaw '//str_real(yaw)//' rad)')
-         return
+      if (abs(yaw) <= yaw_table_limit) then
+         if (.not. self%yaw_table%ready) then
+            call build_yaw_table(self%wheel, self%prepared, self%track, self%contact_options, &
+               self%yaw_table, error)
+            if (allocated(error)) return
+         end if
+         call apply_yaw(self%yaw_table, yaw, self%yawed)
+      else
+         call yawed_wheel_profile(self%wheel, self%prepared%wheel, self%track, &
+            self%prepared%z_tape, yaw, locus)
+         options = self%contact_options
+         options%l_filt_wheel = 0.0_wp
+         call prepare_wheel(locus, self%track, options, self%yawed, error)
+         if (allocated(error)) then
+            call prefix_error(error, 'yawed wheel (yaw '//str_real(yaw)//' rad)')
+            return
+         end if
       end if
       self%yawed%z_tape = self%prepared%z_tape
       self%yawed_angle = yaw
@@ -972,6 +986,7 @@ contains
       self%prepared = prepared
       self%has_geometry = .false.
       self%has_yawed = .false.
+      self%yaw_table%ready = .false.
       call forget_normal(self)
    end subroutine set_track
 
@@ -1055,6 +1070,7 @@ contains
       self%ready = .false.
       self%has_geometry = .false.
       self%has_yawed = .false.
+      self%yaw_table%ready = .false.
       self%has_normal = .false.
       self%n_prepared = 0
       self%n_loaded = 0

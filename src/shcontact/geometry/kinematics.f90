@@ -146,7 +146,8 @@ contains
    !> The effective plane wheel profile of a yawed wheelset (module text): each point of the
    !> wheel profile moved to its contact-locus point, in wheel profile coordinates (y towards the
    !> field side, z down, the wheelset unyawed), so that the plane contact search places and
-   !> rolls it as usual. The slopes come from the fitted spline at the profile's points.
+   !> rolls it as usual. The slopes come from the fitted spline at the profile's points, and the
+   !> effective profile keeps the spline's knots as its parameter.
    !> z_tape stays that of the unyawed wheel, so the table's rolling radius r_nom + z − z_tape
    !> is r cos θ ([[yaw_radius_factor]]).
    pure subroutine yawed_wheel_profile(wheel, spline, track, z_tape, yaw, yawed)
@@ -179,7 +180,9 @@ contains
          yawed%y(i) = axle*cy + r*sin_t*sy - axle_offset(track)
          yawed%z(i) = p%z - r*(1.0_wp - cos_t)
       end do
-      if (allocated(yawed%s)) call yawed%update_arc_length()
+      ! The knots of the unyawed spline: the fitted spline is then linear in the points, so that
+      ! yawed splines can be interpolated between yaw angles (shcontact_geometry_yaw).
+      yawed%s = spline%s
    end subroutine yawed_wheel_profile
 
    !> Longitudinal position (mm, track x, forward) of a contact point of the yawed wheelset:
