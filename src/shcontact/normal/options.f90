@@ -21,7 +21,7 @@ module shcontact_normal_options
    !> penetration ε·δ).
    integer, parameter :: reduction_constant = 2
    !> `reduction = 'coupled'`: the local-Hertz strips, then their load redistributed through the
-   !> half-space coupling between strips (shcontact_normal_coupling; about 1 ms per solve).
+   !> half-space coupling between strips (shcontact_normal_coupling; 5–20 ms per solve).
    integer, parameter :: reduction_coupled = 3
 
    !> Largest number of strips accepted (a guard against typing errors, not a numerical limit).
