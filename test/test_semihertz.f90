@@ -39,6 +39,7 @@ contains
          new_unittest('table_too_short', test_table_too_short), &
          new_unittest('approach_below_contact', test_below_contact), &
          new_unittest('invalid_geometry', test_invalid_geometry), &
+         new_unittest('coupled_is_hertz_on_quadratic_gap', test_coupled_hertz), &
          new_unittest('options_parser', test_options), &
          new_unittest('element_pressure', test_element_pressure) &
          ]
@@ -135,6 +136,43 @@ contains
       end if
       call check(error, patch%load, hz%load, thr=5.0e-3_wp, rel=.true., message='N at delta_H')
    end subroutine test_quadratic_default
+
+   !> `reduction = 'coupled'` (shcontact_normal_coupling) on g = B y²: the Hertz pressure satisfies
+   !> the half-space condition on every strip's centre line, so the coupled strips stay Hertz's:
+   !> the load exactly (it is kept), the approach and p₀ within 2 %, and every strip keeps load.
+   subroutine test_coupled_hertz(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(hertz_type) :: hz
+      type(material_type) :: mat
+
+      call hertz_from_load(seed_a, seed_b, seed_load, mat, hz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call new_normal_options(options, err, reduction='coupled', n_strips=50)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call polynomial_patch(geom, seed_a, seed_b, 10.0_wp, 0.01_wp)
+      call prepare(contact, geom, options, error)
+      if (allocated(error)) return
+      call solve_load(contact, seed_load, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patch%load, seed_load, thr=1.0e-10_wp, rel=.true., message='N kept')
+      if (allocated(error)) return
+      call check(error, patch%approach, hz%approach, thr=2.0e-2_wp, rel=.true., message='delta')
+      if (allocated(error)) return
+      call check(error, patch%p_max, hz%p0, thr=2.0e-2_wp, rel=.true., message='p0')
+      if (allocated(error)) return
+      call check(error, count(patch%strip_load > 0.0_wp), 50, message='loaded strips')
+   end subroutine test_coupled_hertz
 
    !> Refining the strips (20 → 160, even so that no strip sits on the axis) converges to Hertz: the errors of the load at the Hertz
    !> approach, of max a_i and of p_max fall at least by half per doubling (the midpoint rule
@@ -521,7 +559,7 @@ contains
       call new_normal_options(options, err, reduction='kp')
       call check(error, allocated(err), message='unknown reduction must be an error')
       if (allocated(error)) return
-      call check(error, index(err%message, "'local-hertz' or 'constant'") > 0, message=err%message)
+      call check(error, index(err%message, "'local-hertz', 'constant' or 'coupled'") > 0, message=err%message)
       if (allocated(error)) return
       call new_normal_options(options, err, epsilon=1.5_wp)
       call check(error, allocated(err), message='epsilon > 1 must be an error')

@@ -51,7 +51,8 @@ contains
          new_unittest('normal_patch_vs_exact', test_normal), &
          new_unittest('doe_10x10x10_vs_exact', test_doe), &
          new_unittest('kinematic_sample_vs_exact', test_kinematic), &
-         new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8) &
+         new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8), &
+         new_unittest('doe_ty5p8_coupled_vs_exact', test_doe_ty5p8_coupled) &
          ]
    end subroutine collect_validation
 
@@ -235,6 +236,45 @@ contains
    !> and the targets max |Δf| ≤ 0.1, P80 |Δf_y| ≤ 0.04.
    subroutine test_doe_ty5p8(error)
       type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: ex(:), ey(:)
+      call ty5p8_doe_errors('local-hertz', ex, ey, error)
+      if (allocated(error) .or. .not. allocated(ex)) return
+      call check(error, maxval(ex), 0.034_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, maxval(ey), 0.033_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp), 0.010_wp, thr=0.002_wp, &
+         message='ty5p8 DOE P80 |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, max(maxval(ex), maxval(ey)) <= 0.1_wp .and. &
+         percentile(ey, 0.8_wp) <= 0.04_wp, message='ty5p8 DOE: targets missed')
+   end subroutine test_doe_ty5p8
+
+   !> Issue 13: normal `reduction = 'coupled'` on ty5p8_literal, Table 10's row within ±0.002
+   !> (max 0.026 / 0.034, P80 0.006 / 0.015).
+   subroutine test_doe_ty5p8_coupled(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: ex(:), ey(:)
+      call ty5p8_doe_errors('coupled', ex, ey, error)
+      if (allocated(error) .or. .not. allocated(ex)) return
+      call check(error, maxval(ex), 0.026_wp, thr=0.002_wp, message='coupled max |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, maxval(ey), 0.034_wp, thr=0.002_wp, message='coupled max |Delta f_y|')
+      if (allocated(error)) return
+      call check(error, percentile(ex, 0.8_wp), 0.006_wp, thr=0.002_wp, &
+         message='coupled P80 |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp), 0.015_wp, thr=0.002_wp, &
+         message='coupled P80 |Delta f_y|')
+   end subroutine test_doe_ty5p8_coupled
+
+   !> |Δf_x|, |Δf_y| of the recommended tangential settings over the exact ty5p8 20³ DOE, on the
+   !> normal solution with the given reduction; ex unallocated (and the test skipped) without
+   !> the shared data.
+   subroutine ty5p8_doe_errors(reduction, ex, ey, error)
+      character(len=*), intent(in) :: reduction
+      real(wp), allocatable, intent(out) :: ex(:), ey(:)
+      type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: doe = '../shared/reference/ty5p8_literal/'// &
          'doe_20x20x20_exact_nonhertz.csv'
       type(normal_patch_type) :: patch
@@ -242,7 +282,7 @@ contains
       type(march_workspace_type) :: ws
       type(tangential_patch_type) :: result
       type(lib_error), allocatable :: err
-      real(wp), allocatable :: cases(:, :), ex(:), ey(:)
+      real(wp), allocatable :: cases(:, :)
       integer :: i, n
       logical :: there
 
@@ -251,7 +291,7 @@ contains
          call skip_test(error, doe//' is absent')
          return
       end if
-      call reference_patch(patch, error, y_ws=5.8_wp, y_ref=726.0468_wp)
+      call reference_patch(patch, error, y_ws=5.8_wp, y_ref=726.0468_wp, reduction=reduction)
       if (allocated(error)) return
       call read_columns(doe, [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'fx', 'fy'], &
          cases, error)
@@ -263,6 +303,8 @@ contains
          return
       end if
       n = size(cases, 1)
+      call check(error, n, 8000, message='ty5p8 DOE cases read')
+      if (allocated(error)) return
       allocate (ex(n), ey(n))
       do i = 1, n
          call solve_prepared(ws, creepage_type(-cases(i, 1), -cases(i, 2), &
@@ -274,18 +316,7 @@ contains
          ex(i) = abs(-result%fx_norm - cases(i, 4))
          ey(i) = abs(-result%fy_norm - cases(i, 5))
       end do
-      call check(error, n, 8000, message='ty5p8 DOE cases read')
-      if (allocated(error)) return
-      call check(error, maxval(ex), 0.034_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_x|')
-      if (allocated(error)) return
-      call check(error, maxval(ey), 0.033_wp, thr=0.002_wp, message='ty5p8 DOE max |Delta f_y|')
-      if (allocated(error)) return
-      call check(error, percentile(ey, 0.8_wp), 0.010_wp, thr=0.002_wp, &
-         message='ty5p8 DOE P80 |Delta f_y|')
-      if (allocated(error)) return
-      call check(error, max(maxval(ex), maxval(ey)) <= 0.1_wp .and. &
-         percentile(ey, 0.8_wp) <= 0.04_wp, message='ty5p8 DOE: targets missed')
-   end subroutine test_doe_ty5p8
+   end subroutine ty5p8_doe_errors
 
    ! ------------------------------------------------------------------ helpers
 
@@ -304,9 +335,11 @@ contains
    !> The normal solution of the reference case: Manchester profiles, Y_WS = 0, semi-Hertz with
    !> the local-Hertz reduction, 100 strips, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27 (the
    !> material_type defaults). Skips when the shared data is absent.
-   subroutine reference_patch(patch, error, y_ws, y_ref)
+   subroutine reference_patch(patch, error, y_ws, y_ref, reduction)
       type(normal_patch_type), intent(out) :: patch
       type(error_type), allocatable, intent(out) :: error
+      !> Normal reduction (default 'local-hertz').
+      character(len=*), intent(in), optional :: reduction
       !> Y_WS (default 0) and CONTACT's reference point (track y): the patch nearest it is taken
       !> (default: the deepest).
       real(wp), intent(in), optional :: y_ws, y_ref
@@ -341,8 +374,15 @@ contains
             if (abs(geometry(k)%y_track - y_ref) < abs(geometry(best)%y_track - y_ref)) best = k
          end do
       end if
-      if (.not. allocated(err)) call new_normal_options(options, err, method='semi-hertz', &
-         reduction='local-hertz', n_strips=100)
+      if (.not. allocated(err)) then
+         if (present(reduction)) then
+            call new_normal_options(options, err, method='semi-hertz', reduction=reduction, &
+               n_strips=100)
+         else
+            call new_normal_options(options, err, method='semi-hertz', &
+               reduction='local-hertz', n_strips=100)
+         end if
+      end if
       if (.not. allocated(err)) call prepare_normal_contact(contact, geometry(best), options, &
          material_type(), err)
       if (.not. allocated(err)) call solve_load(contact, normal_force, patch, err)

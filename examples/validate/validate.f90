@@ -30,11 +30,20 @@ program validate
    type(recommended_type) :: rec
    type(error_type), allocatable :: error
    real(wp) :: y_geo
-   logical :: there, kinematic_only
+   logical :: there, kinematic_only, patches_only
 
-   call arguments(ref_root, profiles_dir, out_dir, kinematic_only)
+   call arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only)
    if (kinematic_only) then
       call kinematic_sample(ref_root, profiles_dir, out_dir)
+      stop
+   end if
+   if (patches_only) then
+      call load_manchester(profiles_dir, prepared, error)
+      if (.not. allocated(error)) call run_patches(ref_root, prepared, out_dir, error)
+      if (allocated(error)) then
+         write (error_unit, '(a)') 'shcontact-validate: '//error%message
+         error stop 1
+      end if
       stop
    end if
    ref_dir = ref_root//'ty0_literal/'
@@ -81,11 +90,11 @@ program validate
 
 contains
 
-   !> Optional arguments: --help; --kinematic; then REFERENCE PROFILES OUTPUT (directories; with
-   !> --kinematic the first is the kinematic sample's directory).
-   subroutine arguments(ref_root, profiles_dir, out_dir, kinematic_only)
+   !> Optional arguments: --help; --kinematic or --patches; then REFERENCE PROFILES OUTPUT
+   !> (directories; with --kinematic the first is the kinematic sample's directory).
+   subroutine arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only)
       character(len=:), allocatable, intent(out) :: ref_root, profiles_dir, out_dir
-      logical, intent(out) :: kinematic_only
+      logical, intent(out) :: kinematic_only, patches_only
       character(len=64) :: first
       integer :: shift
 
@@ -95,26 +104,29 @@ contains
          write (output_unit, '(a)') &
             'usage: shcontact-validate [REFERENCE [PROFILES [OUTPUT]]]', &
             '       shcontact-validate --kinematic [DIR [PROFILES [OUTPUT]]]', &
+            '       shcontact-validate --patches [REFERENCE [PROFILES [OUTPUT]]]', &
             '', &
             'Compares shcontact with the exact theory (CONTACT) and writes the tables of', &
             'doc/validation.md. Without an option: every comparison, the kinematic sample', &
             'last. --kinematic: only solve_kinematic against the kinematic sample', &
-            '(kinematic_cases.csv, kinematic_summary.csv, kinematic.md).', &
+            '(kinematic_cases.csv, kinematic_summary.csv, kinematic.md). --patches: only', &
+            'the DOE on every shared patch (patches_doe.csv, .md, patches_strips_*.csv).', &
             'Defaults: REFERENCE ../shared/reference/, PROFILES ../shared/profiles/,', &
             'OUTPUT doc/validation/, DIR ../shared/reference/kinematic_sample/.'
          stop
       end if
       kinematic_only = first == '--kinematic'
-      if (first(1:1) == '-' .and. .not. kinematic_only) then
+      patches_only = first == '--patches'
+      if (first(1:1) == '-' .and. .not. (kinematic_only .or. patches_only)) then
          write (error_unit, '(a)') 'shcontact-validate: unknown option "'//trim(first)// &
             '" (see --help)'
          error stop 2
       end if
-      shift = merge(1, 0, kinematic_only)
+      shift = merge(1, 0, kinematic_only .or. patches_only)
       if (kinematic_only) then
          ref_root = directory_argument(1 + shift, '../shared/reference/kinematic_sample/')
       else
-         ref_root = directory_argument(1, '../shared/reference/')
+         ref_root = directory_argument(1 + shift, '../shared/reference/')
       end if
       profiles_dir = directory_argument(2 + shift, '../shared/profiles/')
       out_dir = directory_argument(3 + shift, 'doc/validation/')

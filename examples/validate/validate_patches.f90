@@ -14,6 +14,7 @@ module validate_patches
    use shcontact_tangential_options, only: parse_spin_flexibility
    use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
    use validate_case, only: solve_normal
+   use validate_normal, only: reference_pressure_patch, write_strips
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
       error_stats
    implicit none
@@ -24,22 +25,29 @@ module validate_patches
    !> The shared patch folders.
    character(len=*), parameter :: patch_names(2) = [character(len=13) :: 'ty0_literal', &
       'ty5p8_literal']
-   !> Configurations: the defaults first, then one setting changed at a time.
-   integer, parameter :: n_configs = 8
-   character(len=*), parameter :: config_labels(n_configs) = [character(len=40) :: &
+   !> Configurations: the defaults first, then one setting changed at a time; the last rows run
+   !> FASTSIM_SH on CONTACT's exact pressure (c_pressure = 'contact', validate_normal's
+   !> reference_pressure_patch), which separates the tangential model's error from the normal one.
+   integer, parameter :: n_configs = 11
+   character(len=*), parameter :: config_labels(n_configs) = [character(len=48) :: &
       'defaults (W1, uniform, longitudinal)', 'bound ellipsoidal', 'bound parabolic', &
       'bound weighted-slip (W2)', 'bound clipped (W3)', 'spin flexibility spin', &
-      'spin model additive', 'normal reduction constant']
+      'spin model additive', 'normal reduction constant', &
+      'defaults on CONTACT pressure', 'ellipsoidal on CONTACT pressure', 'normal reduction coupled']
    character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
-      'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted']
+      'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted', &
+      'weighted', 'ellipsoidal', 'weighted']
    character(len=*), parameter :: c_flex(n_configs) = [character(len=12) :: 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'spin', 'longitudinal', &
-      'longitudinal']
+      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal']
    character(len=*), parameter :: c_spin(n_configs) = [character(len=8) :: 'uniform', &
-      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform']
+      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform', 'uniform', &
+      'uniform', 'uniform']
    character(len=*), parameter :: c_reduction(n_configs) = [character(len=11) :: &
       'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', &
-      'local-hertz', 'local-hertz', 'constant']
+      'local-hertz', 'local-hertz', 'constant', 'local-hertz', 'local-hertz', 'coupled']
+   character(len=*), parameter :: c_pressure(n_configs) = [character(len=7) :: 'ours', &
+      'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', 'contact', 'ours']
 
 contains
 
@@ -54,26 +62,30 @@ contains
       !> Set when a file cannot be read or written.
       type(error_type), allocatable, intent(out) :: error
       type(error_stats_type) :: ex(n_configs, size(patch_names)), ey(n_configs, size(patch_names))
+      real(wp) :: bx(n_configs, size(patch_names)), by(n_configs, size(patch_names))
       character(len=24) :: doe_names(size(patch_names))
       integer :: n_cases(size(patch_names))
       type(csv_writer_type) :: out
       integer :: ip, ic
 
       do ip = 1, size(patch_names)
-         call run_patch(ref_root//trim(patch_names(ip))//'/', prepared, ex(:, ip), ey(:, ip), &
-            doe_names(ip), n_cases(ip), error)
+         call run_patch(ref_root//trim(patch_names(ip))//'/', prepared, out_dir// &
+            'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
+            by(:, ip), doe_names(ip), n_cases(ip), error)
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
-         'spin_flexibility,reduction,n_cases,dfx_max,dfx_p80,dfx_mean,dfy_max,dfy_p80,dfy_mean', &
+         'spin_flexibility,reduction,pressure,n_cases,dfx_max,dfx_p80,dfx_mean,dfx_bias,'// &
+         'dfy_max,dfy_p80,dfy_mean,dfy_bias', &
          error)
       if (allocated(error)) return
       do ip = 1, size(patch_names)
          do ic = 1, n_configs
             call out%row([real(n_cases(ip), wp), ex(ic, ip)%max, ex(ic, ip)%p80, &
-               ex(ic, ip)%mean, ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean], &
-               text=[character(len=40) :: patch_names(ip), doe_names(ip), config_labels(ic), &
-               c_bound(ic), c_spin(ic), c_flex(ic), c_reduction(ic)], digits=4)
+               ex(ic, ip)%mean, bx(ic, ip), ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean, &
+               by(ic, ip)], text=[character(len=48) :: patch_names(ip), doe_names(ip), &
+               config_labels(ic), c_bound(ic), c_spin(ic), c_flex(ic), c_reduction(ic), &
+               c_pressure(ic)], digits=4)
          end do
       end do
       call out%close()
@@ -83,21 +95,26 @@ contains
          out_dir//'patches_doe.csv, patches_doe.md'
    end subroutine run_patches
 
-   !> One patch: geometry, normal solution per reduction, the DOE per configuration.
-   subroutine run_patch(ref_dir, prepared, ex, ey, doe_name, n, error)
+   !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
+   !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
+   subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, doe_name, n, error)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
+      character(len=*), intent(in) :: strips_base
       type(error_stats_type), intent(out) :: ex(n_configs), ey(n_configs)
+      !> Mean magnitude bias of f_x and f_y: (f − f_exact) sign(f_exact) averaged, > 0 when our
+      !> forces are too large.
+      real(wp), intent(out) :: bx(n_configs), by(n_configs)
       character(len=24), intent(out) :: doe_name
       integer, intent(out) :: n
       type(error_type), allocatable, intent(out) :: error
       type(csv_table_type) :: summary
       type(patch_geometry_type) :: geometry
-      type(normal_patch_type) :: patch
+      type(normal_patch_type) :: patch, default_patch, contact_patch
       type(case_set_type) :: set
       type(tangential_options_type) :: options
       real(wp), allocatable :: fx(:), fy(:)
-      real(wp) :: y_ws, y_ref
+      real(wp) :: y_ws, y_ref, y_geo
       logical :: there
       integer :: ic
 
@@ -107,6 +124,8 @@ contains
       if (allocated(error)) return
       call summary_value(summary, 'ycp_tr', y_ref, error)
       if (allocated(error)) return
+      call summary_value(summary, 'y_geo', y_geo, error)
+      if (allocated(error)) return
       call nearest_patch(prepared, y_ws, y_ref, geometry, error)
       if (allocated(error)) return
       doe_name = 'doe_10x10x10'
@@ -115,11 +134,29 @@ contains
       call read_case_set(ref_dir//trim(doe_name)//'_exact_nonhertz.csv', doe_name, set, error)
       if (allocated(error)) return
       n = size(set%fx)
+      call solve_normal(geometry, material(), 'semi-hertz', 'local-hertz', 100, 64700.0_wp, &
+         default_patch, error)
+      if (allocated(error)) return
+      call reference_pressure_patch(ref_dir//'grid_module3_exact_nonhertz.csv', y_geo, &
+         default_patch, contact_patch, error)
+      if (allocated(error)) return
+      call write_strips(strips_base//'_ours.csv', default_patch, y_geo, error)
+      if (allocated(error)) return
+      call write_strips(strips_base//'_contact.csv', contact_patch, y_geo, error)
+      if (allocated(error)) return
       do ic = 1, n_configs
-         if (ic == 1 .or. c_reduction(ic) /= c_reduction(max(1, ic - 1))) then
+         if (c_pressure(ic) == 'contact') then
+            patch = contact_patch
+         else if (c_reduction(ic) == 'local-hertz') then
+            patch = default_patch
+         else
             call solve_normal(geometry, material(), 'semi-hertz', c_reduction(ic), 100, &
                64700.0_wp, patch, error)
             if (allocated(error)) return
+            if (c_reduction(ic) == 'coupled') then
+               call write_strips(strips_base//'_coupled.csv', patch, y_geo, error)
+               if (allocated(error)) return
+            end if
          end if
          call options_of(ic, options, error)
          if (allocated(error)) return
@@ -127,6 +164,8 @@ contains
          if (allocated(error)) return
          ex(ic) = error_stats(abs(fx - set%fx))
          ey(ic) = error_stats(abs(fy - set%fy))
+         bx(ic) = sum((fx - set%fx)*sign(1.0_wp, set%fx))/n
+         by(ic) = sum((fy - set%fy)*sign(1.0_wp, set%fy))/n
       end do
    end subroutine run_patch
 

@@ -129,7 +129,8 @@ module shcontact_io_config
       variable_info_type('creepage', 'nu_y', k_real, '1', 'lateral creepage'), &
       variable_info_type('creepage', 'phi', k_real, 'rad/mm', 'spin creepage'), &
       variable_info_type('normal', 'method', k_string, '', "'semi-hertz' or 'hertz'"), &
-      variable_info_type('normal', 'reduction', k_string, '', "'local-hertz' or 'constant'"), &
+      variable_info_type('normal', 'reduction', k_string, '', &
+      "'local-hertz', 'constant' or 'coupled'"), &
       variable_info_type('normal', 'epsilon', k_real, '1', &
       "penetration reduction of reduction = 'constant'"), &
       variable_info_type('normal', 'n_strips', k_int, '', 'number of strips per patch'), &
@@ -232,7 +233,8 @@ module shcontact_io_config
    character(len=*), parameter :: normal_methods(*) = [character(len=10) :: 'semi-hertz', 'hertz']
    character(len=*), parameter :: curvature_modes(*) = [character(len=9) :: 'local', &
       'reference']
-   character(len=*), parameter :: reductions(*) = [character(len=11) :: 'local-hertz', 'constant']
+   character(len=*), parameter :: reductions(*) = [character(len=11) :: 'local-hertz', 'constant', &
+      'coupled']
    character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
       'fastsim']
    !> The traction bounds and spin models (physics.md decisions 9, 10).

@@ -14,7 +14,9 @@ module shcontact_normal_loading
    use shcontact_core_material, only: material_type, check_material
    use shcontact_math_roots, only: scalar_function_type, find_root
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz
+   use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz, &
+      reduction_coupled
+   use shcontact_normal_coupling, only: couple_strips
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape_fast, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
@@ -135,6 +137,7 @@ contains
          return
       end if
       call fill_patch(contact, approach, patch, error)
+      if (.not. allocated(error)) call coupled_if_asked(contact, patch, error)
    end subroutine solve_approach
 
    !> The normal solution for a prescribed normal force N on one patch: δ such that
@@ -179,8 +182,20 @@ contains
          write (buf, '(es12.4,a,es12.4)') patch%load, ' N instead of ', load
          call fatal_error(error, 'normal force matching did not converge: '//trim(buf)//' N', &
             stat_numerical)
+         return
       end if
+      call coupled_if_asked(contact, patch, error)
    end subroutine solve_load
+
+   !> `reduction = 'coupled'`: redistribute the load of the local-Hertz strips through the
+   !> half-space (shcontact_normal_coupling); the load, hence every force balance, is kept.
+   subroutine coupled_if_asked(contact, patch, error)
+      type(normal_contact_type), intent(in) :: contact
+      type(normal_patch_type), intent(inout) :: patch
+      type(error_type), allocatable, intent(out) :: error
+      if (contact%options%reduction /= reduction_coupled .or. patch%is_hertz) return
+      call couple_strips(patch, contact%e_star, error)
+   end subroutine coupled_if_asked
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
    !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
@@ -264,7 +279,12 @@ contains
          write (buf, '(es12.4,a,es12.4)') f%force, ' N instead of ', f_z
          call fatal_error(error, 'vertical load matching did not converge: '//trim(buf)//' N', &
             stat_numerical)
+         return
       end if
+      do k = 1, size(contacts)
+         call coupled_if_asked(contacts(k), patches(k), error)
+         if (allocated(error)) return
+      end do
    end subroutine solve_vertical_load
 
    !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
