@@ -41,7 +41,11 @@ module shcontact_case_sweep
    private
 
    public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
-   public :: shard_range, shard_output_name, checkpoint_directory
+   public :: shard_range, shard_output_name, checkpoint_directory, max_threads
+
+   !> Most OpenMP threads of a run (--threads, OMP_NUM_THREADS): each thread holds its own
+   !> workspaces, and creating many more threads than cores only costs memory.
+   integer, parameter :: max_threads = 1024
 
    abstract interface
       !> Called with the number of finished cases of the shard (resumed ones included): from
@@ -192,6 +196,11 @@ contains
       outcome%n_threads = 1
       !$ outcome%n_threads = omp_get_max_threads()
       if (options%threads > 0) outcome%n_threads = options%threads
+      if (outcome%n_threads > max_threads) then
+         call fatal_error(error, str_int(outcome%n_threads)//' threads asked (--threads or '// &
+            'OMP_NUM_THREADS); at most '//str_int(max_threads)//' are allowed', stat_usage)
+         return
+      end if
       fields = config%wants_field('geometry') .or. config%wants_field('strips') .or. &
          config%wants_field('pressure') .or. config%wants_field('traction') .or. &
          config%wants_field('state') .or. config%wants_field('slip')

@@ -1,10 +1,15 @@
 !> Small text helpers for messages and option parsing.
 module shcontact_core_strings
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    implicit none
    private
 
    public :: to_lower, str_int, str_real
+
+   !> An integer (default or 64-bit) as text without blanks.
+   interface str_int
+      module procedure str_int_default, str_int_long
+   end interface str_int
 
 contains
 
@@ -22,14 +27,24 @@ contains
    end function to_lower
 
    !> An integer as text without blanks.
-   pure function str_int(i) result(text)
+   pure function str_int_default(i) result(text)
       !> The number.
       integer, intent(in) :: i
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') i
       text = trim(buffer)
-   end function str_int
+   end function str_int_default
+
+   !> A 64-bit integer as text without blanks.
+   pure function str_int_long(i) result(text)
+      !> The number.
+      integer(i8), intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(i0)') i
+      text = trim(buffer)
+   end function str_int_long
 
    !> A real in short form for messages: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6,
    !> otherwise 6 significant digits in exponent form.

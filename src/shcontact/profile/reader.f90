@@ -29,6 +29,7 @@ module shcontact_profile_reader
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, stat_usage
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_cleanup, only: is_finite_value, min_profile_points
+   use shcontact_core_textfile, only: text_line => text_line_type, read_text_lines
    implicit none
    private
 
@@ -54,10 +55,6 @@ module shcontact_profile_reader
       'shift.z', 'rotate', 'bound.y.min', 'bound.y.max', 'bound.z.min', 'bound.z.max', &
       'mirror.y', 'mirror.z', 'inversion', 'units.len', 'units.ang', 'units.len.f', &
       'units.ang.f']
-
-   type :: text_line
-      character(len=:), allocatable :: text
-   end type text_line
 
    !> Points as read, in file units, with the line each came from.
    type :: point_list
@@ -128,7 +125,7 @@ contains
       if (allocated(error)) return
       call check_arguments(filename, kind, scale, error)
       if (allocated(error)) return
-      call load_lines(filename, lines, error)
+      call read_text_lines(filename, 'profile file', lines, error)
       if (allocated(error)) return
 
       allocate (points%y(0), points%z(0), points%line(0))
@@ -819,79 +816,6 @@ contains
    ! ---------------------------------------------------------------------------------------------
    ! Lines and numbers
    ! ---------------------------------------------------------------------------------------------
-
-   !> The file as lines (LF, CRLF or CR ends; a UTF-8 byte-order mark dropped).
-   subroutine load_lines(filename, lines, error)
-      character(len=*), intent(in) :: filename
-      type(text_line), allocatable, intent(out) :: lines(:)
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: buffer
-      character(len=256) :: message
-      integer :: unit, stat, nbytes, i, start, n
-
-      open (newunit=unit, file=filename, status='old', action='read', access='stream', &
-         form='unformatted', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, filename//': cannot open the profile file: '//trim(message), &
-            stat_io)
-         return
-      end if
-      inquire (unit=unit, size=nbytes)
-      allocate (character(len=max(nbytes, 0)) :: buffer)
-      stat = 0
-      if (nbytes > 0) read (unit, iostat=stat, iomsg=message) buffer
-      close (unit)
-      if (stat /= 0 .or. nbytes < 0) then
-         if (nbytes < 0) message = 'cannot tell its size'
-         call fatal_error(error, filename//': cannot read the profile file: '//trim(message), &
-            stat_io)
-         return
-      end if
-      if (len(buffer) >= 3) then
-         if (buffer(1:3) == char(239)//char(187)//char(191)) buffer(1:3) = '   '
-      end if
-
-      n = 0
-      do i = 1, len(buffer)
-         if (is_line_end(buffer, i)) n = n + 1
-      end do
-      if (len(buffer) > 0) then
-         if (.not. is_line_end(buffer, len(buffer))) n = n + 1
-      end if
-      allocate (lines(n))
-      n = 0
-      start = 1
-      do i = 1, len(buffer)
-         if (.not. is_line_end(buffer, i)) cycle
-         n = n + 1
-         lines(n)%text = line_text(buffer(start:i))
-         start = i + 1
-      end do
-      if (start <= len(buffer)) lines(n + 1)%text = line_text(buffer(start:))
-   end subroutine load_lines
-
-   !> Whether character i ends a line: a LF, or a CR not followed by a LF.
-   pure logical function is_line_end(buffer, i)
-      character(len=*), intent(in) :: buffer
-      integer, intent(in) :: i
-      is_line_end = buffer(i:i) == achar(10)
-      if (buffer(i:i) == achar(13)) then
-         is_line_end = .true.
-         if (i < len(buffer)) is_line_end = buffer(i + 1:i + 1) /= achar(10)
-      end if
-   end function is_line_end
-
-   !> A line without its end characters, tabs as blanks.
-   pure function line_text(raw) result(text)
-      character(len=*), intent(in) :: raw
-      character(len=:), allocatable :: text
-      integer :: i
-      text = raw
-      do i = 1, len(text)
-         if (text(i:i) == achar(10) .or. text(i:i) == achar(13) .or. text(i:i) == achar(9)) &
-            text(i:i) = ' '
-      end do
-   end function line_text
 
    !> Append the point in columns col_y (lateral) and col_z (vertical) of a data line.
    subroutine read_point(filename, il, text, col_y, col_z, points, error)
