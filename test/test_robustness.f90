@@ -14,6 +14,13 @@ module test_robustness
    private
    public :: collect_robustness
 
+   !> A small sweep in checkpoint blocks of 2 cases.
+   character(len=*), parameter :: small_sweep(*) = [character(len=48) :: &
+      '&sweep phi = 0, 1e-3, phi_points = 8 /', &
+      '&output checkpoint_cases = 2 /', &
+      '&normal n_strips = 40 /', &
+      '&tangential n_elements = 20 /']
+
 contains
 
    subroutine collect_robustness(testsuite)
@@ -25,7 +32,11 @@ contains
          new_unittest('grid_size_limit', test_grid_limit), &
          new_unittest('thread_limit', test_thread_limit), &
          new_unittest('empty_values_refused', test_empty_values), &
-         new_unittest('sweep_errors_name_the_file', test_sweep_origin) &
+         new_unittest('sweep_errors_name_the_file', test_sweep_origin), &
+         new_unittest('checkpoint_never_deletes_foreign_files', test_foreign_checkpoint), &
+         new_unittest('resume_from_another_directory', test_resume_elsewhere), &
+         new_unittest('output_path_checked_before_solving', test_output_path), &
+         new_unittest('merge_refuses_an_input_as_output', test_merge_output) &
          ]
    end subroutine collect_robustness
 
@@ -186,5 +197,129 @@ contains
          'command line --set sweep%phi_points=5: &sweep phi has 0 values')
       call shell('rm -rf '//dir)
    end subroutine test_sweep_origin
+
+   ! ------------------------------------------------------------------------------------------
+   ! Files lost or deleted
+   ! ------------------------------------------------------------------------------------------
+
+   !> A fresh run deleted whatever OUT.h5.partial/blocks.txt listed, even outside the folder.
+   subroutine test_foreign_checkpoint(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_victim')
+      call shell('mkdir -p '//dir//'/x.h5.partial && cd '//dir//' && echo precious > '// &
+         'victim.txt && echo precious > x.h5.partial/mine.txt && printf "victim.txt\n'// &
+         '../victim.txt\n'//dir//'/victim.txt\nmine.txt\n" > x.h5.partial/blocks.txt')
+      stat = run_program(dir, 'run -q -o x.h5 --set sweep%phi=0,1e-3 --set sweep%phi_points=5')
+      call check(error, stat, 0, message='run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/victim.txt') == 'precious'//new_line('a') .and. &
+         file_text(dir//'/x.h5.partial/mine.txt') == 'precious'//new_line('a'), &
+         message='a file listed in blocks.txt was deleted')
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/x.h5'), message='the output is written')
+      call shell('rm -rf '//dir)
+   end subroutine test_foreign_checkpoint
+
+   !> blocks.txt held paths relative to the first run's working directory: a resume from
+   !> another directory recomputed everything. Temporaries of a killed run (block_N.h5.tmp,
+   !> merged.h5.tmp) are removed when the resumed run finishes.
+   subroutine test_resume_elsewhere(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('rob_resume')
+      call shell('mkdir -p '//dir//'/sub '//dir//'/whole')
+      call write_lines(dir//'/sub/sw.nml', small_sweep)
+      stat = run_program(dir//'/whole', 'run -q ../sub/sw.nml -o out.h5')
+      call check(error, stat, 0, message='uninterrupted: '//file_text(dir//'/whole/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir//'/sub', 'run -q sw.nml -o out.h5', &
+         'SHCONTACT_TEST_ABORT_AFTER_BLOCKS=2')
+      call check(error, stat /= 0, message='the interrupted run fails')
+      if (allocated(error)) return
+      ! What a kill while writing a block or the merged file leaves.
+      call shell('touch '//dir//'/sub/out.h5.partial/block_000003.h5.tmp '//dir// &
+         '/sub/out.h5.partial/merged.h5.tmp')
+      stat = run_program(dir, 'run sub/sw.nml -o '//dir//'/sub/out.h5 --resume')
+      call check(error, stat, 0, message='resume from the parent: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '8 of 8 case(s) solved (4 from the '// &
+         'checkpoint)', 'the finished blocks are used')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/sub/out.h5.partial'), &
+         message='the checkpoint directory (and the temporaries) are removed')
+      if (allocated(error)) return
+      call shell('h5dump -d /summary/fy '//dir//'/whole/out.h5 | tail -n +2 > '//dir// &
+         '/a.txt && h5dump -d /summary/fy '//dir//'/sub/out.h5 | tail -n +2 > '//dir// &
+         '/b.txt && cmp -s '//dir//'/a.txt '//dir//'/b.txt', stat)
+      call check(error, stat, 0, message='the resumed forces equal the uninterrupted ones')
+      call shell('rm -rf '//dir)
+   end subroutine test_resume_elsewhere
+
+   !> `-o out.h5` where out.h5 is a directory failed after solving with "cannot rename"; an
+   !> existing file that is not a result file was overwritten.
+   subroutine test_output_path(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_outdir')
+      call shell('mkdir -p '//dir//'/out.h5 && echo mine > '//dir//'/notes.h5')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      call check(error, run_program(dir, 'run sw.nml -o out.h5'), 3, &
+         message='output is a directory: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'cannot write the output "out.h5": '// &
+         'it is a directory', 'output is a directory')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/out.h5.partial') .and. &
+         len(file_text(dir//'/out.txt')) == 0, message='refused before solving')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'run sw.nml -o notes.h5'), 3, &
+         message='foreign output: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the output "notes.h5" exists and '// &
+         'is not a shcontact result file; it is not overwritten', 'foreign output')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/notes.h5') == 'mine'//new_line('a'), &
+         message='the foreign file is untouched')
+      call shell('rm -rf '//dir)
+   end subroutine test_output_path
+
+   !> `shcontact merge doe-shard1of8.h5 doe-shard*of8.h5` returned 0 and overwrote shard 1.
+   subroutine test_merge_output(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_merge')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      stat = run_program(dir, 'run -q sw.nml -o doe.h5 --shard 1/2')
+      if (stat == 0) stat = run_program(dir, 'run -q sw.nml -o doe.h5 --shard 2/2')
+      call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call shell('cp '//dir//'/doe-shard1of2.h5 '//dir//'/copy.h5')
+      call check(error, run_program(dir, 'merge doe-shard1of2.h5 doe-shard*of2.h5'), 1, &
+         message='merge into an input: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the output "doe-shard1of2.h5" is '// &
+         'also an input; give a new name for the merged file', 'merge into an input')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'merge ./doe-shard2of2.h5 doe-shard*of2.h5'), 1, &
+         message='merge into an input by another name')
+      if (allocated(error)) return
+      call shell('cmp -s '//dir//'/doe-shard1of2.h5 '//dir//'/copy.h5', stat)
+      call check(error, stat, 0, message='shard 1 is unchanged')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'merge sw.nml doe-shard*of2.h5'), 3, &
+         message='merge into a foreign file')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'merge all.h5 doe-shard*of2.h5'), 0, &
+         message='merge: '//file_text(dir//'/err.txt'))
+      call shell('rm -rf '//dir)
+   end subroutine test_merge_output
 
 end module test_robustness
