@@ -9,7 +9,7 @@ module test_robustness
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_io_files, only: file_exists
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
-      write_lines, unavailable, expect_in, expect_failure
+      write_lines, unavailable, expect_in, expect_failure, current_directory
    implicit none
    private
    public :: collect_robustness
@@ -20,6 +20,9 @@ module test_robustness
       '&output checkpoint_cases = 2 /', &
       '&normal n_strips = 40 /', &
       '&tangential n_elements = 20 /']
+
+   !> The sample profiles, relative to the project root (where the tests run).
+   character(len=*), parameter :: shared = '../shared/profiles/'
 
 contains
 
@@ -36,13 +39,27 @@ contains
          new_unittest('checkpoint_never_deletes_foreign_files', test_foreign_checkpoint), &
          new_unittest('resume_from_another_directory', test_resume_elsewhere), &
          new_unittest('output_path_checked_before_solving', test_output_path), &
-         new_unittest('merge_refuses_an_input_as_output', test_merge_output) &
+         new_unittest('merge_refuses_an_input_as_output', test_merge_output), &
+         new_unittest('miniprof_wheel_origin', test_miniprof_origin) &
          ]
    end subroutine collect_robustness
 
    ! ------------------------------------------------------------------------------------------
    ! Helpers
    ! ------------------------------------------------------------------------------------------
+
+   !> Absolute path of a sample profile; skips the test (and returns '') when it is absent.
+   function sample_profile(error, name) result(path)
+      type(error_type), allocatable, intent(inout) :: error
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      path = ''
+      if (.not. file_exists(shared//name)) then
+         call skip_test(error, shared//name//' is not available')
+         return
+      end if
+      path = current_directory()//'/'//shared//name
+   end function sample_profile
 
    !> Write raw bytes (printf format) to a file.
    subroutine write_bytes(name, printf_format)
@@ -321,5 +338,42 @@ contains
          message='merge: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_merge_output
+
+   ! ------------------------------------------------------------------------------------------
+   ! Wrong answers given silently
+   ! ------------------------------------------------------------------------------------------
+
+   !> A MiniProf wheel ran with S1002's flange-back position −70 mm (p_max 8290 MPa, γ₀ = +0.091);
+   !> its origin is at the flange back: flange_back_position = 0 (p_max 1789 MPa, γ₀ = −0.067).
+   subroutine test_miniprof_origin(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, whl, text
+      if (unavailable(error, .false.)) return
+      whl = sample_profile(error, 'Car7216_0001r.whl')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_whl')
+      call check(error, run_program(dir, 'run -o w.h5 --set profiles%wheel='//whl// &
+         ' --set profiles%wheel_smoothing=2'), 0, message='MiniProf wheel: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/out.txt')
+      call expect_in(error, text, 'gamma0 = -6.74046E-02 rad', 'contact angle')
+      if (allocated(error)) return
+      call expect_in(error, text, 'p_max = 1788.5 MPa', 'peak pressure')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'run --check --set profiles%wheel='//whl), 0, &
+         message='--check')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), 'flange_back_position = 0.0', &
+         'the resolved namelist shows the origin used')
+      if (allocated(error)) return
+      ! Given explicitly, the value is used as given.
+      call check(error, run_program(dir, 'run --check --set profiles%wheel='//whl// &
+         ' --set track%flange_back_position=-70'), 0, message='--check')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), 'flange_back_position = -70.0', &
+         'an explicit flange_back_position')
+      call shell('rm -rf '//dir)
+   end subroutine test_miniprof_origin
 
 end module test_robustness

@@ -21,6 +21,7 @@ module shcontact_io_config
    use shcontact_io_files, only: directory_part, join_path
    use shcontact_core_textfile, only: text_line_type, read_text_lines
    use shcontact_geometry_kinematics, only: max_yaw, pure_rolling_pitch_rate
+   use shcontact_profile_reader, only: profile_file_format
    implicit none
    private
 
@@ -1581,6 +1582,7 @@ contains
          call check_profile_name(c, 'rail', c%profiles%rail, 'builtin:UIC60', error, &
             also='builtin:UIC60-canted')
          if (allocated(error)) return
+         call resolve_wheel_origin(c)
          call check_real_var(c, 'profiles', 'wheel_smoothing', c%profiles%wheel_smoothing, error)
          if (allocated(error)) return
          call check_real_var(c, 'profiles', 'rail_smoothing', c%profiles%rail_smoothing, error)
@@ -1669,6 +1671,17 @@ contains
          call check_sweep(c, error)
       end associate
    end subroutine validate_config
+
+   !> A MiniProf wheel has its origin at the flange back: unless `&track flange_back_position`
+   !> is given, it is 0 for such a wheel (the default −70 mm is S1002's, whose origin is at the
+   !> tape circle). The resolved namelist shows the value used.
+   subroutine resolve_wheel_origin(config)
+      type(case_config_type), intent(inout) :: config
+      if (origin(config, 'track%flange_back_position') /= 'default') return
+      if (index(to_lower(config%profiles%wheel), 'builtin:') == 1) return
+      if (profile_file_format(trim(config%profiles%wheel), trim(config%profiles%wheel_format)) &
+          == 'miniprof') config%track%flange_back_position = 0.0_wp
+   end subroutine resolve_wheel_origin
 
    !> n_strips × n_elements within [[max_grid_cells]], checked before anything is allocated.
    subroutine check_grid_size(config, error)

@@ -33,7 +33,7 @@ module shcontact_profile_reader
    implicit none
    private
 
-   public :: read_profile, profile_format_names
+   public :: read_profile, profile_format_names, profile_file_format
 
    !> Values of the `format` argument of [[read_profile]] (case-insensitive).
    character(len=*), parameter :: profile_format_names(4) = &
@@ -166,25 +166,40 @@ contains
    ! Arguments, format, kind
    ! ---------------------------------------------------------------------------------------------
 
-   subroutine resolve_format(filename, format, file_format, error)
+   !> The format [[read_profile]] reads `filename` in: 'plain', 'simpack' or 'miniprof' ('' for
+   !> an unknown `format`). Callers use it for conventions that depend on the format (a
+   !> MiniProf wheel has its origin at the flange back).
+   pure function profile_file_format(filename, format) result(name)
+      !> The file.
       character(len=*), intent(in) :: filename
+      !> As the `format` argument of [[read_profile]] (default 'auto').
       character(len=*), intent(in), optional :: format
-      integer, intent(out) :: file_format
-      type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: name
-
       name = 'auto'
       if (present(format)) name = lower(trim(adjustl(format)))
       select case (name)
       case ('auto')
          select case (extension(filename))
          case ('prr', 'prw')
-            file_format = format_simpack
+            name = 'simpack'
          case ('ban', 'whl')
-            file_format = format_miniprof
+            name = 'miniprof'
          case default
-            file_format = format_plain
+            name = 'plain'
          end select
+      case ('plain', 'simpack', 'miniprof')
+      case default
+         name = ''
+      end select
+   end function profile_file_format
+
+   subroutine resolve_format(filename, format, file_format, error)
+      character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: format
+      integer, intent(out) :: file_format
+      type(error_type), allocatable, intent(out) :: error
+
+      select case (profile_file_format(filename, format))
       case ('plain')
          file_format = format_plain
       case ('simpack')
