@@ -40,7 +40,11 @@ contains
          new_unittest('resume_from_another_directory', test_resume_elsewhere), &
          new_unittest('output_path_checked_before_solving', test_output_path), &
          new_unittest('merge_refuses_an_input_as_output', test_merge_output), &
-         new_unittest('miniprof_wheel_origin', test_miniprof_origin) &
+         new_unittest('miniprof_wheel_origin', test_miniprof_origin), &
+         new_unittest('swapped_columns_refused', test_swapped), &
+         new_unittest('single_point_spike_refused', test_spike), &
+         new_unittest('collinear_points_same_forces', test_collinear), &
+         new_unittest('profile_mirror_and_scale_variables', test_mirror_scale) &
          ]
    end subroutine collect_robustness
 
@@ -375,5 +379,115 @@ contains
          'an explicit flange_back_position')
       call shell('rm -rf '//dir)
    end subroutine test_miniprof_origin
+
+   !> Copy the data lines `first`..`last` of a profile file through an awk program (which sees
+   !> each data line and prints what replaces it); other lines are copied unchanged.
+   subroutine transform_points(source, target, first, last, program)
+      character(len=*), intent(in) :: source, target, program
+      integer, intent(in) :: first, last
+      character(len=16) :: a, b
+      write (a, '(i0)') first
+      write (b, '(i0)') last
+      call shell("awk 'NR >= "//trim(a)//' && NR <= '//trim(b)//' { '//program// &
+         "; next } { print }' "//source//' > '//target)
+   end subroutine transform_points
+
+   !> y and z swapped on every line of MBench_UIC60_v3.prr was solved (γ₀ = −0.26, 3.4 GPa).
+   subroutine test_swapped(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, prr
+      if (unavailable(error, .false.)) return
+      prr = sample_profile(error, 'MBench_UIC60_v3.prr')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_swap')
+      call transform_points(prr, dir//'/swapped.prr', 43, 537, 'printf "%s\t%s\n", $2, $1')
+      call expect_failure(error, dir, 'run --set profiles%rail=swapped.prr', 2, &
+         'swapped.prr: the highest point of the rail (y = 38.510726 mm) is not on its '// &
+         'running surface')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), "are the y and z columns swapped, "// &
+         "or the profile turned (&profiles rail_mirror_z = 'yes')?", 'the hint')
+      call shell('rm -rf '//dir)
+   end subroutine test_swapped
+
+   !> An 11 mm single-point spike was accepted.
+   subroutine test_spike(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, prr
+      if (unavailable(error, .false.)) return
+      prr = sample_profile(error, 'MBench_UIC60_v3.prr')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_spike')
+      call transform_points(prr, dir//'/spike.prr', 200, 200, 'printf "%s\t%.7E\n", $1, $2 + 11')
+      call expect_failure(error, dir, 'run --set profiles%rail=spike.prr', 2, &
+         'spike.prr, line 200: a spike: the profile turns back by 178.1')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '10.898304 mm off the line of its '// &
+         'neighbours; remove the point', 'the size of the spike')
+      call shell('rm -rf '//dir)
+   end subroutine test_spike
+
+   !> Points added halfway between the samples of MBench_S1002_v3.prw gave status 5; the same
+   !> profile must give the same answer.
+   subroutine test_collinear(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, prw, a, b
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      prw = sample_profile(error, 'MBench_S1002_v3.prw')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_collinear')
+      call transform_points(prw, dir//'/dense.prw', 44, 442, 'if ($0 !~ /^!/) { if (prev != '// &
+         '"") { split(prev, p, "\t"); printf "%.9E\t%.9E\n", (p[1] + $1)/2, (p[2] + $2)/2 '// &
+         '}; prev = $0 }; print')
+      call shell('test $(grep -c . '//dir//'/dense.prw) -gt 800', stat)
+      call check(error, stat, 0, message='the dense file has the points added')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run -q -o a.h5 --set profiles%wheel='//prw)
+      a = file_text(dir//'/out.txt')
+      call check(error, stat, 0, message='original: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run -q -o b.h5 --set profiles%wheel=dense.prw')
+      b = file_text(dir//'/out.txt')
+      call check(error, stat, 0, message='with collinear points: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! The summary (forces, pressure, contact angle; 5 digits) is the same but for the name.
+      call check(error, a(index(a, new_line('a')):) == b(index(b, new_line('a')):), &
+         message='the forces differ: '//a//' vs '//b)
+      call shell('rm -rf '//dir)
+   end subroutine test_collinear
+
+   !> Reader errors advised "mirror_z" or "the scale factor" that &profiles did not have.
+   subroutine test_mirror_scale(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, prr
+      if (unavailable(error, .false.)) return
+      prr = sample_profile(error, 'MBench_UIC60_v3.prr')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_mirror')
+      ! In metres (and as a plain file): refused with the variable to set, accepted with it.
+      call transform_points(prr, dir//'/metres.txt', 43, 537, 'if (NR % 5 == 3) printf '// &
+         '"%.9E %.9E\n", $1/1000, $2/1000')
+      call shell('grep -v "^[^-0-9]" '//dir//'/metres.txt > '//dir//'/m.txt')
+      call expect_failure(error, dir, 'run --set profiles%rail=m.txt', 2, &
+         'Give the scale factor to mm: &profiles rail_scale = FACTOR')
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'run -q -o s.h5 --set profiles%rail=m.txt --set '// &
+         'profiles%rail_scale=1000 --set track%rail_canted=T'), 0, &
+         message='rail_scale: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! Upside down: the message names &profiles rail_mirror_z; the variable fixes it.
+      call transform_points(prr, dir//'/up.prr', 43, 537, 'printf "%s\t%.7E\n", $1, -$2')
+      call expect_failure(error, dir, 'run --set profiles%rail=up.prr', 2, &
+         "set &profiles rail_mirror_z = 'yes' to flip z")
+      if (allocated(error)) return
+      call check(error, run_program(dir, 'run -q -o u.h5 --set profiles%rail=up.prr --set '// &
+         'profiles%rail_mirror_z=yes --set track%rail_canted=T'), 0, &
+         message='rail_mirror_z: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run --set profiles%rail_mirror_y=maybe', 2, &
+         "&profiles rail_mirror_y = 'maybe' is not allowed; expected one of 'auto', 'yes', 'no'")
+      call shell('rm -rf '//dir)
+   end subroutine test_mirror_scale
 
 end module test_robustness

@@ -94,6 +94,18 @@ module shcontact_io_config
       'smoothing length L_filt of the wheel spline (0 = interpolation)'), &
       variable_info_type('profiles', 'rail_smoothing', k_real, 'mm', &
       'smoothing length L_filt of the rail spline (0 = interpolation)'), &
+      variable_info_type('profiles', 'wheel_mirror_y', k_string, '', &
+      "wheel file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
+      variable_info_type('profiles', 'wheel_mirror_z', k_string, '', &
+      "wheel file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
+      variable_info_type('profiles', 'wheel_scale', k_real, '', &
+      'wheel file: factor from its units to mm (0 = as the file/format says)'), &
+      variable_info_type('profiles', 'rail_mirror_y', k_string, '', &
+      "rail file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
+      variable_info_type('profiles', 'rail_mirror_z', k_string, '', &
+      "rail file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
+      variable_info_type('profiles', 'rail_scale', k_real, '', &
+      'rail file: factor from its units to mm (0 = as the file/format says)'), &
       variable_info_type('track', 'side', k_string, '', "'right' or 'left' wheel and rail"), &
       variable_info_type('track', 'gauge', k_real, 'mm', 'track gauge'), &
       variable_info_type('track', 'gauge_height', k_real, 'mm', &
@@ -234,6 +246,7 @@ module shcontact_io_config
       'output', 'sweep']
 
    !> Allowed values of the choice variables.
+   character(len=*), parameter :: mirror_choices(*) = [character(len=4) :: 'auto', 'yes', 'no']
    character(len=*), parameter :: formats(*) = [character(len=8) :: 'auto', 'plain', 'simpack', &
       'miniprof']
    character(len=*), parameter :: sides(*) = [character(len=5) :: 'right', 'left']
@@ -273,6 +286,12 @@ module shcontact_io_config
       character(len=name_len) :: wheel_format = 'auto', rail_format = 'auto'
       !> Smoothing lengths L_filt (mm); 0 interpolates.
       real(wp) :: wheel_smoothing = 0.0_wp, rail_smoothing = 0.0_wp
+      !> Mirror y or z of a profile file: 'auto' (the file's or format's convention), 'yes',
+      !> 'no' (CONTACT's MIRRORY/MIRRORZ).
+      character(len=name_len) :: wheel_mirror_y = 'auto', wheel_mirror_z = 'auto'
+      character(len=name_len) :: rail_mirror_y = 'auto', rail_mirror_z = 'auto'
+      !> Factor from a profile file's units to mm; 0: the file's or format's (CONTACT's SCALE).
+      real(wp) :: wheel_scale = 0.0_wp, rail_scale = 0.0_wp
    end type profiles_config_type
 
    !> `&track`: track and wheelset dimensions (physics.md §5.2).
@@ -1255,8 +1274,14 @@ contains
       character(len=*), intent(inout) :: msg
       character(len=path_len) :: wheel, rail
       character(len=name_len) :: wheel_format, rail_format
-      real(wp) :: wheel_smoothing, rail_smoothing
-      namelist /profiles/ wheel, rail, wheel_format, rail_format, wheel_smoothing, rail_smoothing
+      real(wp) :: wheel_smoothing, rail_smoothing, wheel_scale, rail_scale
+      character(len=name_len) :: wheel_mirror_y, wheel_mirror_z, rail_mirror_y, rail_mirror_z
+      namelist /profiles/ wheel, rail, wheel_format, rail_format, wheel_smoothing, &
+         rail_smoothing, wheel_mirror_y, wheel_mirror_z, wheel_scale, rail_mirror_y, &
+         rail_mirror_z, rail_scale
+      wheel_mirror_y = g%wheel_mirror_y; wheel_mirror_z = g%wheel_mirror_z
+      rail_mirror_y = g%rail_mirror_y; rail_mirror_z = g%rail_mirror_z
+      wheel_scale = g%wheel_scale; rail_scale = g%rail_scale
       wheel = g%wheel; rail = g%rail
       wheel_format = g%wheel_format; rail_format = g%rail_format
       wheel_smoothing = g%wheel_smoothing; rail_smoothing = g%rail_smoothing
@@ -1265,6 +1290,9 @@ contains
       g%wheel = wheel; g%rail = rail
       g%wheel_format = to_lower(wheel_format); g%rail_format = to_lower(rail_format)
       g%wheel_smoothing = wheel_smoothing; g%rail_smoothing = rail_smoothing
+      g%wheel_mirror_y = to_lower(wheel_mirror_y); g%wheel_mirror_z = to_lower(wheel_mirror_z)
+      g%rail_mirror_y = to_lower(rail_mirror_y); g%rail_mirror_z = to_lower(rail_mirror_z)
+      g%wheel_scale = wheel_scale; g%rail_scale = rail_scale
    end subroutine read_profiles
 
    subroutine read_track(g, text, stat, msg)
@@ -1587,6 +1615,22 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'profiles', 'rail_smoothing', c%profiles%rail_smoothing, error)
          if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_y', c%profiles%wheel_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_z', c%profiles%wheel_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_y', c%profiles%rail_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_z', c%profiles%rail_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'wheel_scale', c%profiles%wheel_scale, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'rail_scale', c%profiles%rail_scale, error)
+         if (allocated(error)) return
          call check_choice(c, 'track', 'side', c%track%side, sides, error)
          if (allocated(error)) return
          call check_real_var(c, 'track', 'gauge', c%track%gauge, error)
@@ -1766,6 +1810,8 @@ contains
       select case (name)
       case ('wheel_smoothing', 'rail_smoothing')
          lo = 0.0_wp; hi = 100.0_wp
+      case ('wheel_scale', 'rail_scale')
+         lo = 0.0_wp; hi = 1.0e6_wp
       case ('gauge')
          lo = 500.0_wp; hi = 2000.0_wp
       case ('gauge_height')
@@ -2355,6 +2401,12 @@ contains
             case ('rail_format'); value = quote_string(config%profiles%rail_format)
             case ('wheel_smoothing'); value = format_real(config%profiles%wheel_smoothing)
             case ('rail_smoothing'); value = format_real(config%profiles%rail_smoothing)
+            case ('wheel_mirror_y'); value = quote_string(config%profiles%wheel_mirror_y)
+            case ('wheel_mirror_z'); value = quote_string(config%profiles%wheel_mirror_z)
+            case ('wheel_scale'); value = format_real(config%profiles%wheel_scale)
+            case ('rail_mirror_y'); value = quote_string(config%profiles%rail_mirror_y)
+            case ('rail_mirror_z'); value = quote_string(config%profiles%rail_mirror_z)
+            case ('rail_scale'); value = format_real(config%profiles%rail_scale)
             end select
          case ('track')
             select case (name)

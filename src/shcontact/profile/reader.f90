@@ -27,7 +27,8 @@ module shcontact_profile_reader
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: lower => to_lower, str_int, str_real
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, stat_usage
-   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
+   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel, &
+      option_hint
    use shcontact_profile_cleanup, only: is_finite_value, min_profile_points
    use shcontact_core_textfile, only: text_line => text_line_type, read_text_lines
    implicit none
@@ -93,7 +94,7 @@ contains
 
    !> Read a wheel or rail profile file into the canonical form (module description).
    subroutine read_profile(filename, profile, error, format, kind, mirror_y, mirror_z, scale, &
-         line_of_point)
+         line_of_point, option_prefix)
       !> The file; also the profile's `source` and the start of every message.
       character(len=*), intent(in) :: filename
       !> The profile: y, z (mm), s, kink (all false), kind, source.
@@ -115,6 +116,9 @@ contains
       real(wp), intent(in), optional :: scale
       !> File line of each returned point, for `clean_profile`'s messages.
       integer, allocatable, intent(out), optional :: line_of_point(:)
+      !> How the caller names mirror_y, mirror_z and scale in messages, e.g. '&profiles wheel_'
+      !> (default: these arguments' names).
+      character(len=*), intent(in), optional :: option_prefix
 
       integer :: file_format, profile_kind
       type(text_line), allocatable :: lines(:)
@@ -150,7 +154,8 @@ contains
       end if
       call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
       if (allocated(error)) return
-      call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, error)
+      call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, &
+         option_prefix, error)
       if (allocated(error)) return
 
       profile%source = filename
@@ -287,8 +292,10 @@ contains
    ! Transformations to the canonical form
    ! ---------------------------------------------------------------------------------------------
 
-   subroutine to_canonical(filename, kind, settings, points, mirror_y, mirror_z, scale, error)
+   subroutine to_canonical(filename, kind, settings, points, mirror_y, mirror_z, scale, &
+         prefix, error)
       character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: prefix
       integer, intent(in) :: kind
       type(file_settings), intent(in) :: settings
       type(point_list), intent(inout) :: points
@@ -320,8 +327,9 @@ contains
             end if
             call fatal_error(error, filename//', lines '//str_int(points%line(1))//'–'// &
                str_int(points%line(n))//': the '//kind_name(kind)//' profile looks upside '// &
-               'down (with z downward, '//shape//'); pass mirror_z = .true. to flip z, or '// &
-               'mirror_z = .false. to keep it', stat_invalid_input)
+               'down (with z downward, '//shape//'); set '//option_hint(prefix, 'mirror_z', &
+               'yes')//' to flip z, or '//option_hint(prefix, 'mirror_z', 'no')// &
+               ' to keep it', stat_invalid_input)
             return
          end if
       end if
@@ -337,7 +345,7 @@ contains
       end if
 
       if (kind == profile_kind_wheel .and. .not. present(mirror_y)) then
-         call check_flange_side(filename, points, error)
+         call check_flange_side(filename, points, prefix, error)
       end if
    end subroutine to_canonical
 
@@ -359,8 +367,9 @@ contains
    end function vertical_sense
 
    !> A right wheel's flange (its lowest point, largest z) lies on the track-centre side.
-   subroutine check_flange_side(filename, points, error)
+   subroutine check_flange_side(filename, points, prefix, error)
       character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: prefix
       type(point_list), intent(in) :: points
       type(error_type), allocatable, intent(out) :: error
       integer :: n, i
@@ -372,8 +381,9 @@ contains
       call fatal_error(error, filename//', line '//str_int(points%line(i))//': the wheel''s '// &
          'lowest point (the flange) is at y = '//str_real(points%y(i))//' mm, on the field '// &
          'side of the profile''s middle y = '//str_real(middle)//' mm; a right-side profile has '// &
-         'its flange towards the track centre (negative y): pass mirror_y to flip y, or '// &
-         'mirror_y = .false. to keep it', stat_invalid_input)
+         'its flange towards the track centre (negative y): set '//option_hint(prefix, &
+         'mirror_y', 'yes')//' to flip y, or '//option_hint(prefix, 'mirror_y', 'no')// &
+         ' to keep it', stat_invalid_input)
    end subroutine check_flange_side
 
    pure subroutine reverse_points(points)
