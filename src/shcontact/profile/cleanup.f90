@@ -14,13 +14,14 @@
 !> 5. total arc length within [[min_arc_length]] … [[max_arc_length]] mm (catches m or µm);
 !> 6. zig-zag pairs: two consecutive direction changes both larger than [[zigzag_angle]]
 !>    (5π/6) are a stitching error; the two points are replaced by their mean;
-!> 6b. collinear points: a point within [[collinear_distance]] of the chord of its
-!>    neighbours is dropped (never two in a row), so that points added between the samples
-!>    give the same profile;
 !> 7. no loops: no two non-adjacent segments may cross or touch;
 !> 8. kinks: a direction change above [[kink_angle]] (π/6) with no other change above
 !>    [[kink_quiet_angle]] (π/30) within [[kink_window]] (2 mm) of the point is a true corner,
 !>    flagged in `profile%kink` so that smoothing splits there.
+!>
+!> [[drop_collinear]] (run on profiles from files, after these steps) drops a point within
+!> [[collinear_distance]] of the chord of its neighbours (never two in a row), so that points
+!> added between the samples give the same profile.
 !>
 !> Every rejection names the profile's source, the file line (when `line_of_point` is given)
 !> or the point number, and the reason.
@@ -34,7 +35,7 @@ module shcontact_profile_cleanup
    implicit none
    private
 
-   public :: clean_profile, is_finite_value
+   public :: clean_profile, drop_collinear, is_finite_value
    public :: min_profile_points, duplicate_distance, min_arc_length, max_arc_length
    public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window, collinear_distance
 
@@ -107,7 +108,6 @@ contains
       call check_arc_length(profile, lines, option_prefix, error)
       if (allocated(error)) return
       call merge_zigzags(profile, lines)
-      call drop_collinear(profile, lines)
       call check_count(profile, lines, error)
       if (allocated(error)) return
       call check_loops(profile, lines, error)
@@ -250,9 +250,12 @@ contains
    !> Drop points that lie on the chord of their neighbours (within [[collinear_distance]]),
    !> never two in a row: points added between the samples of a profile do not change it, but
    !> an interpolating spline through them would bend between them (issue 14). One pass; a
-   !> straight stretch keeps every other point.
+   !> straight stretch keeps every other point. For profiles read from files, after
+   !> [[clean_profile]] (kink flags are kept with their points).
    subroutine drop_collinear(profile, lines)
+      !> A cleaned profile.
       type(profile_type), intent(inout) :: profile
+      !> File line of each point, kept in step.
       integer, allocatable, intent(inout) :: lines(:)
       logical, allocatable :: keep(:)
       real(wp) :: c(2), p(2), t
@@ -276,7 +279,8 @@ contains
       if (all(keep)) return
       profile%y = pack(profile%y, keep)
       profile%z = pack(profile%z, keep)
-      lines = pack(lines, keep)
+      if (allocated(profile%kink)) profile%kink = pack(profile%kink, keep)
+      if (allocated(lines)) lines = pack(lines, keep)
       call profile%update_arc_length()
    end subroutine drop_collinear
 

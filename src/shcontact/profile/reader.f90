@@ -753,7 +753,10 @@ contains
 
    !> MiniProf: a header of `Key=Value` or free-text lines ends at the first blank line (or at
    !> the first line of two or more numbers), then one point per line. Lines starting with `"`,
-   !> `#`, `!` or `%` are comments (MiniProf comments points out with `"`). Header keys used:
+   !> `#`, `!` or `%` are comments (MiniProf comments points out with `"`), and so is the rest of
+   !> a line from such a character on (`-0.036 1.2   " zig-zag pattern`). An old-style line of
+   !> header numbers followed by its label (`32.58 37.11 14.71` then `(Sd/Sh/qR)`) belongs to
+   !> the header. Header keys used:
    !> `ColumnDef` (which columns hold X and Y, e.g. `X,Y,A,C`), `XOffset`, `YOffset` (mm, added
    !> to the columns); all other keys are instrument metadata and ignored.
    subroutine parse_miniprof(filename, lines, points, settings, error)
@@ -780,8 +783,10 @@ contains
             cycle
          end if
          if (scan(text(1:1), '"#!%') == 1) cycle
+         ! A comment after a point: `-0.0986 -22.06   " zig-zag pattern`, `... % dent`.
+         if (scan(text, '"#!%') > 0) text = trim(text(:scan(text, '"#!%') - 1))
          if (in_header) then
-            if (.not. numeric_line(text)) then
+            if (.not. numeric_line(text) .or. header_numbers(lines, il)) then
                seen_header = .true.
                call read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
                if (allocated(error)) return
@@ -803,6 +808,23 @@ contains
       settings%mirror_y_if_rail = .true.
       settings%detect_z = .true.
    end subroutine parse_miniprof
+
+   !> An old-style MiniProf header line of numbers (`32.58 37.11 14.71`, flange height,
+   !> thickness, qR) that is followed by its label line (`(Sd/Sh/qR)`) rather than by points.
+   logical function header_numbers(lines, il)
+      type(text_line), intent(in) :: lines(:)
+      integer, intent(in) :: il
+      character(len=:), allocatable :: next
+      integer :: j
+      header_numbers = .false.
+      do j = il + 1, size(lines)
+         next = trim(adjustl(lines(j)%text))
+         if (len(next) == 0) return
+         if (scan(next(1:1), '"#!%') == 1) cycle
+         header_numbers = .not. numeric_line(next) .and. index(next, '=') == 0
+         return
+      end do
+   end function header_numbers
 
    subroutine read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
       character(len=*), intent(in) :: filename, text

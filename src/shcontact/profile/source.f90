@@ -11,7 +11,7 @@ module shcontact_profile_source
    use shcontact_core_strings, only: to_lower
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_reader, only: read_profile
-   use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_cleanup, only: clean_profile, drop_collinear
    use shcontact_profile_builtin, only: builtin_profile
    implicit none
    private
@@ -55,6 +55,7 @@ contains
       if (allocated(error)) return
       call clean_profile(profile, error, lines, option_prefix=option_prefix)
       if (allocated(error)) return
+      call drop_collinear(profile, lines)
       call check_plausible(profile, error, lines, option_prefix=option_prefix)
    end subroutine load_profile
 
