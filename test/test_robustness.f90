@@ -21,6 +21,26 @@ module test_robustness
       '&normal n_strips = 40 /', &
       '&tangential n_elements = 20 /']
 
+   !> The case the fuzz test mutates: every group, coarse grids (fast runs).
+   character(len=*), parameter :: fuzz_case(*) = [character(len=60) :: &
+      '! fuzz base case', &
+      "&profiles rail = 'rail.txt', rail_smoothing = 0.5 /", &
+      '&track gauge = 1435.0, inclination = 0.025 /', &
+      '&position t_y = 4.733 /', &
+      '&material friction = 0.3, poisson = 0.28 /', &
+      "&load mode = 'force', normal_force = 64700.0 /", &
+      '&creepage nu_x = 5.8e-4, nu_y = 6.1e-5, phi = 2.74e-4 /', &
+      '&normal n_strips = 20 /', &
+      "&tangential n_elements = 10, bound = 'weighted' /", &
+      "&output fields = 'none', checkpoint_cases = 2 /", &
+      '&sweep nu_x = 0.0, 1.0e-3 /']
+   !> Fuzz runs of each kind, and the wall-clock bound of the whole fuzz test (s).
+   integer, parameter :: fuzz_runs = 150
+   real, parameter :: fuzz_seconds = 60.0
+   !> Bytes a mutation inserts: structure characters, line ends, quotes, a UTF-8 lead byte.
+   character(len=*), parameter :: fuzz_bytes = '&/=,%''"!# 0123456789.eE+-'// &
+      achar(13)//achar(10)//achar(9)//achar(0)//char(195)//'xyz'
+
    !> The sample profiles, relative to the project root (where the tests run).
    character(len=*), parameter :: shared = '../shared/profiles/'
 
@@ -44,7 +64,9 @@ contains
          new_unittest('swapped_columns_refused', test_swapped), &
          new_unittest('single_point_spike_refused', test_spike), &
          new_unittest('collinear_points_same_forces', test_collinear), &
-         new_unittest('profile_mirror_and_scale_variables', test_mirror_scale) &
+         new_unittest('profile_mirror_and_scale_variables', test_mirror_scale), &
+         new_unittest('miniprof_comments_and_old_header', test_miniprof_variants), &
+         new_unittest('fuzz_case_and_profile_files', test_fuzz) &
          ]
    end subroutine collect_robustness
 
@@ -489,5 +511,217 @@ contains
          "&profiles rail_mirror_y = 'maybe' is not allowed; expected one of 'auto', 'yes', 'no'")
       call shell('rm -rf '//dir)
    end subroutine test_mirror_scale
+
+   ! ------------------------------------------------------------------------------------------
+   ! Readers
+   ! ------------------------------------------------------------------------------------------
+
+   !> Real MiniProf files were refused: a comment after a point, and an old-style header line
+   !> of numbers (`32.58 37.11 14.71`) before its label `(Sd/Sh/qR)`. They read as the file
+   !> without them.
+   subroutine test_miniprof_variants(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, whl, a, b
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      whl = sample_profile(error, 'Car7216_0001r.whl')
+      if (allocated(error)) return
+      dir = scratch_directory('rob_miniprof')
+      call shell("sed -e '8s/^"" //' -e '20s/$/   "" zig-zag pattern/' -e '30s/$/ % dent/' "// &
+         whl//' > '//dir//'/old.whl')
+      call shell('grep -q "^32.58 37.11 14.71" '//dir//'/old.whl && grep -q "% dent" '//dir// &
+         '/old.whl', stat)
+      call check(error, stat, 0, message='the variant file')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run -o a.h5 --set profiles%wheel_smoothing=2 --set '// &
+         'profiles%wheel='//whl)
+      a = file_text(dir//'/out.txt')
+      call check(error, stat, 0, message='original: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run -o b.h5 --set profiles%wheel_smoothing=2 --set '// &
+         'profiles%wheel=old.whl')
+      b = file_text(dir//'/out.txt')
+      call check(error, stat, 0, message='variant: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, a(index(a, new_line('a')):) == b(index(b, new_line('a')):), &
+         message='the variant gives another contact: '//a//' vs '//b)
+      call shell('rm -rf '//dir)
+   end subroutine test_miniprof_variants
+
+   ! ------------------------------------------------------------------------------------------
+   ! Fuzz
+   ! ------------------------------------------------------------------------------------------
+
+   !> Seeded mutations of a case file and of a rail profile file, each run through the
+   !> program: the exit status is a documented one, a failure names the file and has no
+   !> backtrace, and no checkpoint, temporary or (after a failure) output is left.
+   subroutine test_fuzz(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, base_case, base_rail, text
+      integer :: seed, i, stat
+      integer(kind=8) :: t0, t1, rate
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_fuzz')
+      stat = run_program(dir, 'profiles --write builtin')
+      call check(error, stat, 0, message='profiles --write')
+      if (allocated(error)) return
+      ! Every 10th point of the built-in rail: a short file, quick to read.
+      call shell("awk '/^#/ || NR % 10 == 0' "//dir//'/builtin/UIC60.txt > '//dir// &
+         '/base_rail.txt && cp '//dir//'/base_rail.txt '//dir//'/rail.txt')
+      call write_lines(dir//'/base.nml', fuzz_case)
+      base_case = file_text(dir//'/base.nml')
+      base_rail = file_text(dir//'/base_rail.txt')
+      call check(error, run_program(dir, 'run base.nml -q -o out.h5'), 0, &
+         message='the base case: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call shell('rm -f '//dir//'/out.h5')
+      seed = 20260514
+      call system_clock(t0, rate)
+      do i = 1, fuzz_runs
+         text = mutated(base_case, seed)
+         call write_bytes_file(dir//'/case.nml', text)
+         call write_bytes_file(dir//'/rail.txt', base_rail)
+         ! A mutated case may name another profile file: the message names that one.
+         call check_fuzz_run(error, dir, 'run case.nml -q -o out.h5', 'case.nml', text, &
+            also='rail')
+         if (allocated(error)) exit
+         call write_bytes_file(dir//'/rail.txt', mutated(base_rail, seed))
+         call check_fuzz_run(error, dir, 'run base.nml -q -o out.h5', 'rail.txt', &
+            file_text(dir//'/rail.txt'))
+         if (allocated(error)) exit
+         call system_clock(t1)
+         if (real(t1 - t0)/real(rate) > fuzz_seconds) exit
+      end do
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_fuzz
+
+   !> One fuzz run and its checks (test_fuzz).
+   subroutine check_fuzz_run(error, dir, args, name, input, also)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: dir, args, name, input
+      !> Another name a message may give instead.
+      character(len=*), intent(in), optional :: also
+      logical :: named
+      character(len=:), allocatable :: err, listing
+      integer :: stat, left
+      stat = run_program(dir, args)
+      err = file_text(dir//'/err.txt')
+      if (stat < 0 .or. stat > 6) then
+         call test_failed(error, 'exit status '//trim(str(stat))//' is not documented; '// &
+            'stderr: '//err//'; input:'//new_line('a')//input)
+         return
+      end if
+      call expect_clean_stderr(error, dir, name)
+      if (allocated(error)) then
+         error%message = error%message//'; input:'//new_line('a')//input
+         return
+      end if
+      named = index(err, name) > 0
+      if (present(also)) named = named .or. index(err, also) > 0
+      if (stat >= 1 .and. stat <= 3 .and. .not. named) then
+         call test_failed(error, 'status '//trim(str(stat))//': the message does not name '// &
+            name//': '//err//'; input:'//new_line('a')//input)
+         return
+      end if
+      ! No checkpoint or temporary ever; no output after a failure of the whole run.
+      if (stat == 0 .or. stat == 4) then
+         call shell('cd '//dir//' && ls -d *.partial *.tmp* 2>/dev/null | wc -l > n.txt')
+      else
+         call shell('cd '//dir//' && ls -d *.h5* 2>/dev/null | wc -l > n.txt')
+      end if
+      listing = file_text(dir//'/n.txt')
+      read (listing, *, iostat=stat) left
+      if (stat == 0 .and. left > 0) then
+         call test_failed(error, 'files left behind by "'//args//'": '//err// &
+            '; input:'//new_line('a')//input)
+         return
+      end if
+      call shell('cd '//dir//' && rm -rf *.h5 *.h5.* out.txt err.txt')
+   end subroutine check_fuzz_run
+
+   pure function str(i) result(text)
+      integer, intent(in) :: i
+      character(len=12) :: text
+      write (text, '(i0)') i
+   end function str
+
+   !> Next value of a 31-bit linear congruential generator (reproducible on every compiler).
+   integer function next_random(seed, n) result(k)
+      integer, intent(inout) :: seed
+      !> The value is in 1..n.
+      integer, intent(in) :: n
+      seed = int(mod(1103515245_8*int(seed, 8) + 12345_8, 2147483648_8))
+      k = 1 + int(mod(int(seed, 8)/65536_8, int(n, 8)))
+   end function next_random
+
+   !> The text with 1 to 3 random mutations: delete, insert or replace a byte, duplicate,
+   !> delete or swap a line, replace a number by an extreme one, truncate.
+   function mutated(text, seed) result(m)
+      character(len=*), intent(in) :: text
+      integer, intent(inout) :: seed
+      character(len=:), allocatable :: m, line
+      character(len=*), parameter :: extremes(6) = [character(len=8) :: '1e308', '-1e308', &
+         'nan', '-0', '99999999', '1d-320']
+      integer :: k, at, a, b, e
+      m = text
+      do k = 1, next_random(seed, 3)
+         if (len(m) < 2) exit
+         at = next_random(seed, len(m))
+         select case (next_random(seed, 8))
+         case (1)
+            m = m(:at - 1)//m(at + 1:)
+         case (2)
+            a = next_random(seed, len(fuzz_bytes))
+            m = m(:at - 1)//fuzz_bytes(a:a)//m(at:)
+         case (3)
+            a = next_random(seed, len(fuzz_bytes))
+            m(at:at) = fuzz_bytes(a:a)
+         case (4, 5)
+            ! A whole line: duplicate (4) or delete (5).
+            a = index(m(:at), new_line('a'), back=.true.) + 1
+            b = index(m(at:), new_line('a'))
+            b = merge(len(m), at + b - 1, b == 0)
+            line = m(a:b)
+            if (next_random(seed, 2) == 1) then
+               m = m(:b)//line//m(b + 1:)
+            else
+               m = m(:a - 1)//m(b + 1:)
+            end if
+         case (6)
+            ! A number (a digit run) replaced by an extreme value.
+            a = scan(m(at:), '0123456789')
+            if (a == 0) cycle
+            a = at + a - 1
+            e = verify(m(a:), '0123456789.eE+-')
+            e = merge(len(m), a + e - 2, e == 0)
+            m = m(:a - 1)//trim(extremes(next_random(seed, size(extremes))))//m(e + 1:)
+         case (7)
+            m = m(:at)
+         case default
+            ! Swap the two halves of a line at a blank (y and z of a profile line).
+            a = index(m(:at), new_line('a'), back=.true.) + 1
+            b = index(m(at:), new_line('a'))
+            if (b == 0) cycle
+            b = at + b - 2
+            if (b <= a) cycle
+            line = adjustl(m(a:b))
+            e = index(trim(line), ' ', back=.true.)
+            if (e == 0) cycle
+            line = trim(adjustl(line(e + 1:)))//' '//trim(line(:e - 1))
+            m = m(:a - 1)//line//m(b + 1:)
+         end select
+      end do
+   end function mutated
+
+   !> Write a text byte for byte (any bytes, no line end added).
+   subroutine write_bytes_file(name, text)
+      character(len=*), intent(in) :: name, text
+      integer :: unit
+      open (newunit=unit, file=name, access='stream', form='unformatted', status='replace', &
+         action='write')
+      write (unit) text
+      close (unit)
+   end subroutine write_bytes_file
 
 end module test_robustness

@@ -4,7 +4,7 @@ module shcontact_core_strings
    implicit none
    private
 
-   public :: to_lower, str_int, str_real
+   public :: to_lower, str_int, str_real, visible
 
    !> An integer (default or 64-bit) as text without blanks.
    interface str_int
@@ -67,5 +67,25 @@ contains
          text = trim(adjustl(buffer))
       end if
    end function str_real
+
+   !> Text with control characters (other than line feed and tab) shown as `<0xNN>`, so that
+   !> a message quoting a stray byte of an input file shows it.
+   pure function visible(text) result(shown)
+      !> The text (UTF-8 passes through).
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: shown
+      character(len=*), parameter :: hex = '0123456789ABCDEF'
+      integer :: i, code
+      shown = ''
+      do i = 1, len(text)
+         code = iachar(text(i:i))
+         if ((code < 32 .and. code /= 10 .and. code /= 9) .or. code == 127) then
+            shown = shown//'<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
+               mod(code, 16) + 1)//'>'
+         else
+            shown = shown//text(i:i)
+         end if
+      end do
+   end function visible
 
 end module shcontact_core_strings
