@@ -66,7 +66,8 @@ contains
          new_unittest('collinear_points_same_forces', test_collinear), &
          new_unittest('profile_mirror_and_scale_variables', test_mirror_scale), &
          new_unittest('miniprof_comments_and_old_header', test_miniprof_variants), &
-         new_unittest('fuzz_case_and_profile_files', test_fuzz) &
+         new_unittest('fuzz_case_and_profile_files', test_fuzz), &
+         new_unittest('valgrind_clean_failure_messages', test_valgrind) &
          ]
    end subroutine collect_robustness
 
@@ -547,6 +548,28 @@ contains
          message='the variant gives another contact: '//a//' vs '//b)
       call shell('rm -rf '//dir)
    end subroutine test_miniprof_variants
+
+   !> Under valgrind, a sweep with a failed case read uninitialised memory (len_trim in the
+   !> failure table of the merged file). Skips without valgrind.
+   subroutine test_valgrind(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      call shell('valgrind --version > /dev/null 2>&1', stat)
+      if (stat /= 0) then
+         call skip_test(error, 'valgrind is not installed')
+         return
+      end if
+      dir = scratch_directory('rob_valgrind')
+      call shell('cd '//dir//' && valgrind -q --error-exitcode=99 '//program_path()// &
+         ' run -q -o f.h5 --set load%mode=approach --set sweep%approach=0.05,5 --set '// &
+         'normal%n_strips=20 --set tangential%n_elements=10 > out.txt 2> err.txt', stat)
+      call check(error, stat, 4, message='valgrind (99: a memory error): '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_valgrind
 
    ! ------------------------------------------------------------------------------------------
    ! Fuzz

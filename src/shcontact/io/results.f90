@@ -37,7 +37,7 @@ module shcontact_io_results
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: string_type
+   use shcontact_io_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used
    implicit none
@@ -584,6 +584,7 @@ contains
       type(run_info_type) :: info
       type(h5_file_type) :: out, src
       integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest
+      type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
       logical :: partial
 
@@ -633,7 +634,10 @@ contains
          do i = 1, size(messages)
             longest = max(longest, len_trim(messages(i)))
          end do
-         if (size(failed) > 0) call append_messages(all_messages, messages, n_fail)
+         do i = 1, size(failed)
+            call failure_messages%push(trim(messages(i)))
+         end do
+         n_fail = n_fail + size(failed)
       end do
       if (.not. partial .and. any(source == 0)) then
          icase = findloc(source, 0, dim=1)
@@ -664,9 +668,15 @@ contains
          call h5_copy(src, 'geometry', out, 'geometry', error)
       call h5_close(src)
       if (.not. allocated(error)) call write_summary(out, config, order, all(order), error)
+      ! Built here at its final length (growing a deferred-length array across calls left its
+      ! length undefined under gfortran; valgrind saw len_trim read uninitialised memory).
+      allocate (character(len=longest) :: all_messages(n_fail))
+      do i = 1, n_fail
+         all_messages(i) = failure_messages%items(i)%text
+      end do
       if (.not. allocated(error) .and. n_fail > 0) then
-         call sort_failures(all_failed(1:n_fail), all_messages(1:n_fail))
-         call write_failure_table(out, all_failed(1:n_fail), all_messages(1:n_fail), error)
+         call sort_failures(all_failed(1:n_fail), all_messages)
+         call write_failure_table(out, all_failed(1:n_fail), all_messages, error)
       end if
       ! Per-case groups, in case order, reading each input file while its cases come.
       open_index = 0
@@ -738,23 +748,6 @@ contains
       yes = .not. allocated(error)
       call h5_close(file)
    end function is_result_file
-
-   subroutine append_messages(all, messages, n)
-      character(len=:), allocatable, intent(inout) :: all(:)
-      character(len=*), intent(in) :: messages(:)
-      integer, intent(inout) :: n
-      character(len=:), allocatable :: tmp(:)
-      integer :: l, i
-      l = len(messages)
-      if (allocated(all)) l = max(l, len(all))
-      allocate (character(len=l) :: tmp(n + size(messages)))
-      do i = 1, n
-         tmp(i) = all(i)
-      end do
-      tmp(n + 1:) = messages
-      n = n + size(messages)
-      call move_alloc(tmp, all)
-   end subroutine append_messages
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)
