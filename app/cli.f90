@@ -3,6 +3,7 @@ module shcontact_app_cli
    use shcontact_core_error, only: error_type, fatal_error, stat_usage
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
+   use shcontact_case_sweep, only: max_threads
    implicit none
    private
 
@@ -130,6 +131,9 @@ contains
          case ('--threads')
             call option_value(i, arg, value, has_value, error)
             if (.not. allocated(error)) call read_count(value, '--threads', cli%threads, error)
+            if (.not. allocated(error) .and. cli%threads > max_threads) call fatal_error(error, &
+               '--threads '//value//': at most '//str_int(max_threads)//' threads are allowed', &
+               stat_usage)
          case ('--shard')
             call option_value(i, arg, value, has_value, error)
             if (.not. allocated(error)) call read_shard(value, cli%shard, cli%n_shards, error)
@@ -216,13 +220,16 @@ contains
       character(len=:), allocatable, intent(inout) :: value
       logical, intent(in) :: has_value
       type(error_type), allocatable, intent(out) :: error
-      if (has_value) return
-      if (i + 1 > command_argument_count()) then
-         call fatal_error(error, name//' needs a value', stat_usage)
-         return
+      if (.not. has_value) then
+         if (i + 1 > command_argument_count()) then
+            call fatal_error(error, name//' needs a value', stat_usage)
+            return
+         end if
+         i = i + 1
+         value = argument(i)
       end if
-      i = i + 1
-      value = argument(i)
+      if (len_trim(value) == 0) call fatal_error(error, name//' needs a value, not an '// &
+         'empty text', stat_usage)
    end subroutine option_value
 
    subroutine read_count(text, name, value, error)

@@ -5,7 +5,7 @@ module shcontact_app_commands
    use, intrinsic :: iso_c_binding, only: c_int
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, visible
    use shcontact_io_text, only: string_type
    use shcontact_io_config, only: case_config_type, load_config, config_namelist
    use shcontact_io_results, only: merge_result_files
@@ -47,7 +47,7 @@ contains
    integer function report_error(error) result(status)
       !> The error.
       type(error_type), intent(in) :: error
-      write (error_unit, '(a)') 'shcontact: error: '//error%message
+      write (error_unit, '(a)') 'shcontact: error: '//visible(error%message)
       status = error%stat
    end function report_error
 

@@ -35,6 +35,7 @@ program tester
    use test_examples, only: collect_examples
    use test_validation, only: collect_validation
    use test_performance_invariants, only: collect_performance_invariants
+   use test_robustness, only: collect_robustness
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -67,7 +68,8 @@ program tester
       new_testsuite('api_kinematic', collect_api_kinematic), &
       new_testsuite('examples', collect_examples), &
       new_testsuite('validation', collect_validation), &
-      new_testsuite('performance_invariants', collect_performance_invariants) &
+      new_testsuite('performance_invariants', collect_performance_invariants), &
+      new_testsuite('robustness', collect_robustness) &
       ]
 
    call read_selection(suite_name, test_name)

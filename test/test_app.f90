@@ -23,6 +23,9 @@ module test_app
    implicit none
    private
    public :: collect_app
+   ! Helpers shared with the robustness suite (test_robustness).
+   public :: program_path, scratch_directory, shell, run_program, file_text, write_lines, &
+      unavailable, expect_in, expect_failure, current_directory
 
    !> The sweep used by the determinism, shard and resume tests: 3 × 2 × 2 = 12 cases,
    !> all fields, checkpoint blocks of 3 cases, coarse grids to keep it fast.

@@ -85,6 +85,25 @@ module shcontact_case_runner
 
 contains
 
+   !> A profile of the case: `&profiles` names, format, mirrors ('auto' leaves them to the
+   !> file and its format) and scale (0 likewise).
+   subroutine load_case_profile(spec, kind, format, mirror_y, mirror_z, scale, prefix, &
+         profile, error)
+      character(len=*), intent(in) :: spec, format, mirror_y, mirror_z, prefix
+      integer, intent(in) :: kind
+      real(wp), intent(in) :: scale
+      type(profile_type), intent(out) :: profile
+      type(error_type), allocatable, intent(out) :: error
+      ! Unallocated, they are absent arguments of load_profile.
+      logical, allocatable :: flip_y, flip_z
+      real(wp), allocatable :: factor
+      if (trim(mirror_y) /= 'auto') flip_y = trim(mirror_y) == 'yes'
+      if (trim(mirror_z) /= 'auto') flip_z = trim(mirror_z) == 'yes'
+      if (scale > 0.0_wp) factor = scale
+      call load_profile(spec, kind, profile, error, format, mirror_y=flip_y, mirror_z=flip_z, &
+         scale=factor, option_prefix=prefix)
+   end subroutine load_case_profile
+
    !> Read the profiles and prepare everything the cases share.
    subroutine prepare_run(config, setup, error)
       !> The validated configuration.
@@ -97,11 +116,15 @@ contains
       type(contact_options_type) :: options
       integer :: k
 
-      call load_profile(config%profiles%wheel, profile_kind_wheel, &
-         setup%wheel, error, config%profiles%wheel_format)
+      call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
+         config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
+         config%profiles%wheel_mirror_z, config%profiles%wheel_scale, '&profiles wheel_', &
+         setup%wheel, error)
       if (allocated(error)) return
-      call load_profile(config%profiles%rail, profile_kind_rail, &
-         setup%rail, error, config%profiles%rail_format)
+      call load_case_profile(config%profiles%rail, profile_kind_rail, &
+         config%profiles%rail_format, config%profiles%rail_mirror_y, &
+         config%profiles%rail_mirror_z, config%profiles%rail_scale, '&profiles rail_', &
+         setup%rail, error)
       if (allocated(error)) return
 
       track%gauge = config%track%gauge

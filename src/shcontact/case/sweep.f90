@@ -26,9 +26,10 @@ module shcontact_case_sweep
    use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
    use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
-      read_result_summary
+      read_result_summary, check_output_file
+   use shcontact_core_textfile, only: is_directory, text_line_type, read_text_lines
    use shcontact_io_files, only: make_directory, remove_directory, delete_file, file_exists, &
-      rename_file
+      rename_file, canonical_path
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
@@ -41,7 +42,11 @@ module shcontact_case_sweep
    private
 
    public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
-   public :: shard_range, shard_output_name, checkpoint_directory
+   public :: shard_range, shard_output_name, checkpoint_directory, max_threads
+
+   !> Most OpenMP threads of a run (--threads, OMP_NUM_THREADS): each thread holds its own
+   !> workspaces, and creating many more threads than cores only costs memory.
+   integer, parameter :: max_threads = 1024
 
    abstract interface
       !> Called with the number of finished cases of the shard (resumed ones included): from
@@ -83,8 +88,17 @@ module shcontact_case_sweep
       integer :: n_resumed = 0, n_threads = 1
    end type sweep_outcome_type
 
-   !> Name of the checkpoint list inside the checkpoint directory.
+   !> Name of the checkpoint list inside the checkpoint directory. It lists the block files by
+   !> their names in the directory (block_NNNNNN.h5), so that a run can be resumed from any
+   !> working directory; entries of any other form are ignored, never opened or deleted.
    character(len=*), parameter :: manifest_name = 'blocks.txt'
+   !> Temporary name of the merged output inside the checkpoint directory (a kill during the
+   !> final assembly leaves it there, where the next run removes it).
+   character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
+   !> The configuration of the run that made the checkpoint (see [[checkpoint_key]]).
+   character(len=*), parameter :: key_name = 'configuration.txt'
+   !> Suffix of a block file being written.
+   character(len=*), parameter :: temp_suffix = '.tmp'
    !> Automatic block size: aim at this many seconds per block.
    real(wp), parameter :: block_seconds = 5.0_wp
 
@@ -192,11 +206,23 @@ contains
       outcome%n_threads = 1
       !$ outcome%n_threads = omp_get_max_threads()
       if (options%threads > 0) outcome%n_threads = options%threads
+      if (outcome%n_threads > max_threads) then
+         call fatal_error(error, str_int(outcome%n_threads)//' threads asked (--threads or '// &
+            'OMP_NUM_THREADS); at most '//str_int(max_threads)//' are allowed', stat_usage)
+         return
+      end if
       fields = config%wants_field('geometry') .or. config%wants_field('strips') .or. &
          config%wants_field('pressure') .or. config%wants_field('traction') .or. &
          config%wants_field('state') .or. config%wants_field('slip')
 
       ! Everything that can fail before any file is touched.
+      call check_output_file(outcome%output, error)
+      if (allocated(error)) return
+      if (file_exists(dir) .and. .not. is_directory(dir)) then
+         call fatal_error(error, 'cannot write the output "'//outcome%output//'": "'//dir// &
+            '" (its checkpoint directory) exists and is not a directory', stat_io)
+         return
+      end if
       call prepare_run(config, setup, error)
       if (allocated(error)) return
       info%namelist = config_namelist(config)
@@ -226,11 +252,16 @@ contains
          return
       end if
       if (options%resume) then
-         call read_checkpoint(dir, info%namelist, n, outcome, blocks, error)
+         ! The blocks of a resumed run carry the namelist of the run that started it (which may
+         ! differ in the output name or the spelling of the profile paths).
+         call read_checkpoint(dir, checkpoint_key(config), info%namelist, n, outcome, blocks, &
+            error)
          if (allocated(error)) return
       else
          call clear_checkpoint(dir, keep_directory=.true.)
          blocks%n = 0
+         call write_text_file(dir//'/'//key_name, checkpoint_key(config), error)
+         if (allocated(error)) return
       end if
 
       todo = pack([(i, i=outcome%first, outcome%last)], &
@@ -279,7 +310,8 @@ contains
          return
       end if
       call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
-         info%date, error, allow_partial=options%n_shards > 1, shard=info%shard)
+         info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
+         temp_name=dir//'/'//merged_temp_name)
       if (allocated(error)) return
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine run_sweep
@@ -462,10 +494,13 @@ contains
       type(case_result_type), intent(in) :: results(:)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: name
-      character(len=12) :: buf
-      write (buf, '(i6.6)') blocks%n + 1
-      name = dir//'/block_'//trim(buf)//'.h5'
-      call write_result_file(name, info, config, cases, results, error)
+      integer :: number
+      ! After the last listed block (a resumed list may miss some numbers).
+      number = 1
+      if (blocks%n > 0) number = block_number(base_name(blocks%items(blocks%n)%text)) + 1
+      name = dir//'/'//block_name(number)
+      call write_result_file(name, info, config, cases, results, error, &
+         temp_name=name//temp_suffix)
       if (allocated(error)) return
       call blocks%push(name)
       call write_manifest(dir, blocks, error)
@@ -479,43 +514,77 @@ contains
       integer :: unit, stat, i
       character(len=:), allocatable :: name
       name = dir//'/'//manifest_name
-      open (newunit=unit, file=name//'.tmp', status='replace', action='write', iostat=stat)
+      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', iostat=stat)
       if (stat /= 0) then
          call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
          return
       end if
       do i = 1, blocks%n
-         write (unit, '(a)', iostat=stat) blocks%items(i)%text
+         write (unit, '(a)', iostat=stat) base_name(blocks%items(i)%text)
       end do
       close (unit)
       if (stat /= 0) then
          call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
          return
       end if
-      call rename_file(name//'.tmp', name, error)
+      call rename_file(name//temp_suffix, name, error)
    end subroutine write_manifest
 
-   !> The block files listed in the checkpoint directory.
+   !> The block files listed in the checkpoint directory, as paths inside it. Only entries
+   !> named like a block file count (an older list's `OUT.h5.partial/block_N.h5` gives
+   !> `block_N.h5` in `dir`); anything else in the list is ignored.
    subroutine read_manifest(dir, blocks)
       character(len=*), intent(in) :: dir
       type(string_list_type), intent(out) :: blocks
-      integer :: unit, stat
-      character(len=4096) :: line
+      type(text_line_type), allocatable :: lines(:)
+      type(error_type), allocatable :: error
+      character(len=:), allocatable :: name
+      integer :: i
       blocks%n = 0
-      open (newunit=unit, file=dir//'/'//manifest_name, status='old', action='read', &
-         iostat=stat)
-      if (stat /= 0) return
-      do
-         read (unit, '(a)', iostat=stat) line
-         if (stat /= 0) exit
-         if (len_trim(line) > 0) call blocks%push(trim(line))
+      if (.not. file_exists(dir//'/'//manifest_name)) return
+      call read_text_lines(dir//'/'//manifest_name, 'checkpoint list', lines, error)
+      if (allocated(error)) return
+      do i = 1, size(lines)
+         name = base_name(trim(adjustl(lines(i)%text)))
+         if (block_number(name) > 0) call blocks%push(dir//'/'//name)
       end do
-      close (unit)
    end subroutine read_manifest
 
+   !> block_NNNNNN.h5 (six digits or more).
+   pure function block_name(number) result(name)
+      integer, intent(in) :: number
+      character(len=:), allocatable :: name
+      character(len=12) :: buf
+      write (buf, '(i6.6)') number
+      name = 'block_'//trim(buf)//'.h5'
+   end function block_name
+
+   !> The number of a block file name, 0 when the name is not one.
+   pure integer function block_number(name) result(number)
+      character(len=*), intent(in) :: name
+      integer :: n, stat
+      number = 0
+      n = len(name)
+      if (n < 15) return
+      if (name(1:6) /= 'block_' .or. name(n - 2:n) /= '.h5') return
+      if (verify(name(7:n - 3), '0123456789') /= 0 .or. n - 9 > 9) return
+      read (name(7:n - 3), *, iostat=stat) number
+      if (stat /= 0) number = 0
+      if (name /= block_name(number)) number = 0
+   end function block_number
+
+   !> The name after the last '/'.
+   pure function base_name(path) result(name)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: name
+      name = path(index(path, '/', back=.true.) + 1:)
+   end function base_name
+
    !> Take the finished cases from the checkpoint of an interrupted run of this configuration.
-   subroutine read_checkpoint(dir, namelist, n_cases, outcome, blocks, error)
-      character(len=*), intent(in) :: dir, namelist
+   subroutine read_checkpoint(dir, key, namelist, n_cases, outcome, blocks, error)
+      character(len=*), intent(in) :: dir, key
+      !> This run's namelist; on return that of the checkpoint's blocks.
+      character(len=:), allocatable, intent(inout) :: namelist
       integer, intent(in) :: n_cases
       type(sweep_outcome_type), intent(inout) :: outcome
       type(string_list_type), intent(out) :: blocks
@@ -525,9 +594,20 @@ contains
       integer, allocatable :: indices(:), failed(:)
       type(case_summary_type), allocatable :: summaries(:)
       integer :: b, i, n, j
+      logical :: has_key
+      character(len=:), allocatable :: original
 
       call read_manifest(dir, listed)
       blocks%n = 0
+      ! A checkpoint of this version names its configuration independently of the working
+      ! directory; an older one only by the namelist of its blocks.
+      has_key = file_exists(dir//'/'//key_name)
+      if (has_key) then
+         if (read_text_file(dir//'/'//key_name) /= key) then
+            call another_configuration(dir, error)
+            return
+         end if
+      end if
       do b = 1, listed%n
          if (.not. file_exists(listed%items(b)%text)) cycle
          call read_result_summary(listed%items(b)%text, text, n, indices, summaries, failed, &
@@ -536,10 +616,14 @@ contains
             call prefix_error(error, 'cannot resume from the checkpoint in "'//dir//'"')
             return
          end if
-         if (text /= namelist .or. n /= n_cases) then
-            call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made '// &
-               'with another configuration; run without --resume to start again', &
-               stat_invalid_input)
+         if ((.not. has_key .and. text /= namelist) .or. n /= n_cases) then
+            call another_configuration(dir, error)
+            return
+         end if
+         if (blocks%n == 0) then
+            original = text
+         else if (text /= original) then
+            call another_configuration(dir, error)
             return
          end if
          do i = 1, size(indices)
@@ -552,7 +636,66 @@ contains
          end do
          call blocks%push(listed%items(b)%text)
       end do
+      if (blocks%n > 0) namelist = original
    end subroutine read_checkpoint
+
+   subroutine another_configuration(dir, error)
+      character(len=*), intent(in) :: dir
+      type(error_type), allocatable, intent(out) :: error
+      call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made with '// &
+         'another configuration; run without --resume to start again', stat_invalid_input)
+   end subroutine another_configuration
+
+   !> The configuration as the checkpoint knows it: the resolved namelist without the output
+   !> name and with the profile files as absolute paths, so that a run resumed from another
+   !> working directory (or with an absolute -o) is recognised.
+   function checkpoint_key(config) result(key)
+      type(case_config_type), intent(in) :: config
+      character(len=:), allocatable :: key
+      type(case_config_type) :: c
+      c = config
+      c%output%file = '-'
+      if (index(c%profiles%wheel, 'builtin:') /= 1) c%profiles%wheel = &
+         canonical_path(trim(c%profiles%wheel))
+      if (index(c%profiles%rail, 'builtin:') /= 1) c%profiles%rail = &
+         canonical_path(trim(c%profiles%rail))
+      key = config_namelist(c)
+   end function checkpoint_key
+
+   !> Write a text file whole (through a temporary name).
+   subroutine write_text_file(name, text, error)
+      character(len=*), intent(in) :: name, text
+      type(error_type), allocatable, intent(out) :: error
+      integer :: unit, stat
+      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', &
+         access='stream', form='unformatted', iostat=stat)
+      if (stat == 0) write (unit, iostat=stat) text
+      if (stat == 0) close (unit, iostat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot write "'//name//'"', stat_io)
+         return
+      end if
+      call rename_file(name//temp_suffix, name, error)
+   end subroutine write_text_file
+
+   !> A text file whole ('' when it cannot be read).
+   function read_text_file(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: unit, stat, n
+      text = ''
+      open (newunit=unit, file=name, status='old', action='read', access='stream', &
+         form='unformatted', iostat=stat)
+      if (stat /= 0) return
+      inquire (unit=unit, size=n)
+      if (n > 0) then
+         deallocate (text)
+         allocate (character(len=n) :: text)
+         read (unit, iostat=stat) text
+         if (stat /= 0) text = ''
+      end if
+      close (unit)
+   end function read_text_file
 
    function trim_text(text) result(t)
       character(len=*), intent(in) :: text
@@ -560,16 +703,31 @@ contains
       t = trim(text)
    end function trim_text
 
-   !> Remove the block files, the list and (unless kept) the directory of a checkpoint.
+   !> Remove the block files, their temporaries, the list and (unless kept) the directory of a
+   !> checkpoint. Only names shcontact gives inside `dir` are removed: block_N.h5 and
+   !> block_N.h5.tmp (N = 1, 2, ... while one exists, and every listed N), the list, the
+   !> merged temporary. A directory holding anything else is left in place.
    subroutine clear_checkpoint(dir, keep_directory)
       character(len=*), intent(in) :: dir
       logical, intent(in) :: keep_directory
       type(string_list_type) :: blocks
-      integer :: i
+      integer :: i, last
       call read_manifest(dir, blocks)
+      last = 0
       do i = 1, blocks%n
-         if (delete_file(blocks%items(i)%text)) continue
+         last = max(last, block_number(base_name(blocks%items(i)%text)))
       end do
+      i = 1
+      do while (i <= last .or. file_exists(dir//'/'//block_name(i)) .or. &
+                file_exists(dir//'/'//block_name(i)//temp_suffix))
+         if (delete_file(dir//'/'//block_name(i))) continue
+         if (delete_file(dir//'/'//block_name(i)//temp_suffix)) continue
+         i = i + 1
+      end do
+      if (delete_file(dir//'/'//merged_temp_name)) continue
+      if (delete_file(dir//'/'//key_name)) continue
+      if (delete_file(dir//'/'//key_name//temp_suffix)) continue
+      if (delete_file(dir//'/'//manifest_name//temp_suffix)) continue
       if (delete_file(dir//'/'//manifest_name)) continue
       if (.not. keep_directory) then
          if (remove_directory(dir)) continue

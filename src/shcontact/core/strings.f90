@@ -1,10 +1,15 @@
 !> Small text helpers for messages and option parsing.
 module shcontact_core_strings
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    implicit none
    private
 
-   public :: to_lower, str_int, str_real
+   public :: to_lower, str_int, str_real, visible
+
+   !> An integer (default or 64-bit) as text without blanks.
+   interface str_int
+      module procedure str_int_default, str_int_long
+   end interface str_int
 
 contains
 
@@ -22,14 +27,24 @@ contains
    end function to_lower
 
    !> An integer as text without blanks.
-   pure function str_int(i) result(text)
+   pure function str_int_default(i) result(text)
       !> The number.
       integer, intent(in) :: i
       character(len=:), allocatable :: text
       character(len=24) :: buffer
       write (buffer, '(i0)') i
       text = trim(buffer)
-   end function str_int
+   end function str_int_default
+
+   !> A 64-bit integer as text without blanks.
+   pure function str_int_long(i) result(text)
+      !> The number.
+      integer(i8), intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      write (buffer, '(i0)') i
+      text = trim(buffer)
+   end function str_int_long
 
    !> A real in short form for messages: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6,
    !> otherwise 6 significant digits in exponent form.
@@ -52,5 +67,25 @@ contains
          text = trim(adjustl(buffer))
       end if
    end function str_real
+
+   !> Text with control characters (other than line feed and tab) shown as `<0xNN>`, so that
+   !> a message quoting a stray byte of an input file shows it.
+   pure function visible(text) result(shown)
+      !> The text (UTF-8 passes through).
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: shown
+      character(len=*), parameter :: hex = '0123456789ABCDEF'
+      integer :: i, code
+      shown = ''
+      do i = 1, len(text)
+         code = iachar(text(i:i))
+         if ((code < 32 .and. code /= 10 .and. code /= 9) .or. code == 127) then
+            shown = shown//'<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
+               mod(code, 16) + 1)//'>'
+         else
+            shown = shown//text(i:i)
+         end if
+      end do
+   end function visible
 
 end module shcontact_core_strings

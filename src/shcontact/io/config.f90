@@ -13,13 +13,15 @@
 !> downstream code trusts the result.
 module shcontact_io_config
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use shcontact_core_kinds, only: wp
+   use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_io_text, only: format_real, quote_string, strip_quotes
    use shcontact_io_files, only: directory_part, join_path
+   use shcontact_core_textfile, only: text_line_type, read_text_lines
    use shcontact_geometry_kinematics, only: max_yaw, pure_rolling_pitch_rate
+   use shcontact_profile_reader, only: profile_file_format
    implicit none
    private
 
@@ -29,6 +31,7 @@ module shcontact_io_config
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
    public :: path_len, name_len, max_sweep_values, bound_choices, spin_model_choices
    public :: case_point_value, is_kinematic_input
+   public :: max_cases, max_grid_cells
 
    !> Length of file-name variables.
    integer, parameter :: path_len = 512
@@ -40,6 +43,13 @@ module shcontact_io_config
    integer, parameter :: max_label_values = 16
    !> Most entries of `output%fields`.
    integer, parameter :: max_fields = 16
+   !> Most cases of one run (a sweep grid).
+   integer, parameter :: max_cases = 100000000
+   !> Most cells of one patch grid, &normal n_strips × &tangential n_elements: every thread
+   !> holds a few arrays of this size per patch (doc/app.md, "Limits").
+   integer, parameter :: max_grid_cells = 1000000
+   !> Longest line of a case file.
+   integer, parameter :: max_line_length = 4095
 
    ! Kinds of namelist variables.
    integer, parameter :: k_real = 1, k_int = 2, k_string = 3, k_logical = 4, k_real_list = 5, &
@@ -84,6 +94,18 @@ module shcontact_io_config
       'smoothing length L_filt of the wheel spline (0 = interpolation)'), &
       variable_info_type('profiles', 'rail_smoothing', k_real, 'mm', &
       'smoothing length L_filt of the rail spline (0 = interpolation)'), &
+      variable_info_type('profiles', 'wheel_mirror_y', k_string, '', &
+      "wheel file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
+      variable_info_type('profiles', 'wheel_mirror_z', k_string, '', &
+      "wheel file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
+      variable_info_type('profiles', 'wheel_scale', k_real, '', &
+      'wheel file: factor from its units to mm (0 = as the file/format says)'), &
+      variable_info_type('profiles', 'rail_mirror_y', k_string, '', &
+      "rail file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
+      variable_info_type('profiles', 'rail_mirror_z', k_string, '', &
+      "rail file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
+      variable_info_type('profiles', 'rail_scale', k_real, '', &
+      'rail file: factor from its units to mm (0 = as the file/format says)'), &
       variable_info_type('track', 'side', k_string, '', "'right' or 'left' wheel and rail"), &
       variable_info_type('track', 'gauge', k_real, 'mm', 'track gauge'), &
       variable_info_type('track', 'gauge_height', k_real, 'mm', &
@@ -225,6 +247,7 @@ module shcontact_io_config
       'output', 'sweep']
 
    !> Allowed values of the choice variables.
+   character(len=*), parameter :: mirror_choices(*) = [character(len=4) :: 'auto', 'yes', 'no']
    character(len=*), parameter :: formats(*) = [character(len=8) :: 'auto', 'plain', 'simpack', &
       'miniprof']
    character(len=*), parameter :: sides(*) = [character(len=5) :: 'right', 'left']
@@ -265,6 +288,12 @@ module shcontact_io_config
       character(len=name_len) :: wheel_format = 'auto', rail_format = 'auto'
       !> Smoothing lengths L_filt (mm); 0 interpolates.
       real(wp) :: wheel_smoothing = 0.0_wp, rail_smoothing = 0.0_wp
+      !> Mirror y or z of a profile file: 'auto' (the file's or format's convention), 'yes',
+      !> 'no' (CONTACT's MIRRORY/MIRRORZ).
+      character(len=name_len) :: wheel_mirror_y = 'auto', wheel_mirror_z = 'auto'
+      character(len=name_len) :: rail_mirror_y = 'auto', rail_mirror_z = 'auto'
+      !> Factor from a profile file's units to mm; 0: the file's or format's (CONTACT's SCALE).
+      real(wp) :: wheel_scale = 0.0_wp, rail_scale = 0.0_wp
    end type profiles_config_type
 
    !> `&track`: track and wheelset dimensions (physics.md §5.2).
@@ -407,6 +436,9 @@ module shcontact_io_config
       type(sweep_config_type) :: sweep
       !> Where each assigned variable was set.
       type(origin_type), allocatable :: origins(:)
+      !> The case file ('' for the built-in default case), for messages about the case as a
+      !> whole.
+      character(len=:), allocatable :: case_file
    contains
       !> Number of cases of the run (1 without a sweep).
       procedure :: n_cases
@@ -494,6 +526,7 @@ contains
       type(assignment_list_type) :: list
       integer :: i
 
+      config%case_file = filename
       call read_lines(filename, lines, error)
       if (allocated(error)) return
       call parse_namelist(lines, filename, list, error)
@@ -567,6 +600,11 @@ contains
       a%group = to_lower(trim(adjustl(text(1:ipct - 1))))
       a%name = to_lower(trim(adjustl(text(ipct + 1:ieq - 1))))
       a%value = trim(adjustl(text(ieq + 1:)))
+      if (len(a%value) == 0) then
+         call fatal_error(error, a%where//': no value after "="; give one, e.g. '// &
+            trim(text)//'VALUE (quote an empty text: '//trim(text)//"'')")
+         return
+      end if
       if (.not. any(group_names == a%group)) then
          call fatal_error(error, a%where//': unknown group "'//a%group//'"; the groups are '// &
             join_words(group_names, '', ''))
@@ -589,47 +627,29 @@ contains
    ! Reading a namelist file into assignments
    ! ------------------------------------------------------------------------------------------
 
-   !> All lines of a text file.
+   !> All lines of a case file (line ends and byte-order mark as shcontact_core_textfile).
    subroutine read_lines(filename, lines, error)
       character(len=*), intent(in) :: filename
       character(len=:), allocatable, intent(out) :: lines(:)
       type(error_type), allocatable, intent(out) :: error
-      integer :: unit, stat, n, longest, length
-      character(len=256) :: msg
-      character(len=4096) :: buf
+      type(text_line_type), allocatable :: text(:)
+      integer :: i, longest
 
-      open (newunit=unit, file=filename, status='old', action='read', iostat=stat, iomsg=msg)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot open the case file "'//filename//'": '//trim(msg), &
-            stat_io)
-         return
-      end if
-      n = 0
+      call read_text_lines(filename, 'case file', text, error)
+      if (allocated(error)) return
       longest = 1
-      do
-         read (unit, '(a)', iostat=stat, size=length, advance='no') buf
-         if (is_iostat_end(stat)) exit
-         if (stat /= 0 .and. .not. is_iostat_eor(stat)) then
-            call fatal_error(error, 'cannot read the case file "'//filename//'" at line '// &
-               str_int(n + 1), stat_io)
-            close (unit)
+      do i = 1, size(text)
+         if (len(text(i)%text) > max_line_length) then
+            call fatal_error(error, filename//':'//str_int(i)//': line longer than '// &
+               str_int(max_line_length)//' characters')
             return
          end if
-         if (length >= len(buf)) then
-            call fatal_error(error, filename//':'//str_int(n + 1)//': line longer than '// &
-               str_int(len(buf) - 1)//' characters')
-            close (unit)
-            return
-         end if
-         n = n + 1
-         longest = max(longest, length)
+         longest = max(longest, len(text(i)%text))
       end do
-      rewind (unit)
-      allocate (character(len=longest) :: lines(n))
-      do n = 1, size(lines)
-         read (unit, '(a)') lines(n)
+      allocate (character(len=longest) :: lines(size(text)))
+      do i = 1, size(text)
+         lines(i) = text(i)%text
       end do
-      close (unit)
    end subroutine read_lines
 
    !> Split namelist text into group assignments, checking the structure (groups opened with
@@ -1217,6 +1237,22 @@ contains
       end do
    end function origin
 
+   !> Where the sweep was set: the last `&sweep` assignment, else the case file, else the
+   !> command line (never 'default': a sweep is always someone's input).
+   pure function sweep_origin(config) result(where)
+      type(case_config_type), intent(in) :: config
+      character(len=:), allocatable :: where
+      integer :: i
+      where = 'command line'
+      if (allocated(config%case_file)) then
+         if (len(config%case_file) > 0) where = config%case_file
+      end if
+      if (.not. allocated(config%origins)) return
+      do i = 1, size(config%origins)
+         if (index(config%origins(i)%key, 'sweep%') == 1) where = config%origins(i)%where
+      end do
+   end function sweep_origin
+
    !> Relative profile file names are taken from the directory of the case file.
    subroutine resolve_profile_path(profiles, name, base_dir)
       type(profiles_config_type), intent(inout) :: profiles
@@ -1240,8 +1276,14 @@ contains
       character(len=*), intent(inout) :: msg
       character(len=path_len) :: wheel, rail
       character(len=name_len) :: wheel_format, rail_format
-      real(wp) :: wheel_smoothing, rail_smoothing
-      namelist /profiles/ wheel, rail, wheel_format, rail_format, wheel_smoothing, rail_smoothing
+      real(wp) :: wheel_smoothing, rail_smoothing, wheel_scale, rail_scale
+      character(len=name_len) :: wheel_mirror_y, wheel_mirror_z, rail_mirror_y, rail_mirror_z
+      namelist /profiles/ wheel, rail, wheel_format, rail_format, wheel_smoothing, &
+         rail_smoothing, wheel_mirror_y, wheel_mirror_z, wheel_scale, rail_mirror_y, &
+         rail_mirror_z, rail_scale
+      wheel_mirror_y = g%wheel_mirror_y; wheel_mirror_z = g%wheel_mirror_z
+      rail_mirror_y = g%rail_mirror_y; rail_mirror_z = g%rail_mirror_z
+      wheel_scale = g%wheel_scale; rail_scale = g%rail_scale
       wheel = g%wheel; rail = g%rail
       wheel_format = g%wheel_format; rail_format = g%rail_format
       wheel_smoothing = g%wheel_smoothing; rail_smoothing = g%rail_smoothing
@@ -1250,6 +1292,9 @@ contains
       g%wheel = wheel; g%rail = rail
       g%wheel_format = to_lower(wheel_format); g%rail_format = to_lower(rail_format)
       g%wheel_smoothing = wheel_smoothing; g%rail_smoothing = rail_smoothing
+      g%wheel_mirror_y = to_lower(wheel_mirror_y); g%wheel_mirror_z = to_lower(wheel_mirror_z)
+      g%rail_mirror_y = to_lower(rail_mirror_y); g%rail_mirror_z = to_lower(rail_mirror_z)
+      g%wheel_scale = wheel_scale; g%rail_scale = rail_scale
    end subroutine read_profiles
 
    subroutine read_track(g, text, stat, msg)
@@ -1567,9 +1612,26 @@ contains
          call check_profile_name(c, 'rail', c%profiles%rail, 'builtin:UIC60', error, &
             also='builtin:UIC60-canted')
          if (allocated(error)) return
+         call resolve_wheel_origin(c)
          call check_real_var(c, 'profiles', 'wheel_smoothing', c%profiles%wheel_smoothing, error)
          if (allocated(error)) return
          call check_real_var(c, 'profiles', 'rail_smoothing', c%profiles%rail_smoothing, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_y', c%profiles%wheel_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_z', c%profiles%wheel_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_y', c%profiles%rail_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_z', c%profiles%rail_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'wheel_scale', c%profiles%wheel_scale, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'rail_scale', c%profiles%rail_scale, error)
          if (allocated(error)) return
          call check_choice(c, 'track', 'side', c%track%side, sides, error)
          if (allocated(error)) return
@@ -1640,6 +1702,8 @@ contains
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
             error)
          if (allocated(error)) return
+         call check_grid_size(c, error)
+         if (allocated(error)) return
          if (c%tangential%method == 'fastsim' .and. c%normal%method /= 'hertz') then
             call fatal_error(error, origin(c, 'tangential%method')//": &tangential method = "// &
                "'fastsim' works on the Hertz ellipse of the reference point: set &normal "// &
@@ -1653,6 +1717,33 @@ contains
          call check_sweep(c, error)
       end associate
    end subroutine validate_config
+
+   !> A MiniProf wheel has its origin at the flange back: unless `&track flange_back_position`
+   !> is given, it is 0 for such a wheel (the default −70 mm is S1002's, whose origin is at the
+   !> tape circle). The resolved namelist shows the value used.
+   subroutine resolve_wheel_origin(config)
+      type(case_config_type), intent(inout) :: config
+      if (origin(config, 'track%flange_back_position') /= 'default') return
+      if (index(to_lower(config%profiles%wheel), 'builtin:') == 1) return
+      if (profile_file_format(trim(config%profiles%wheel), trim(config%profiles%wheel_format)) &
+          == 'miniprof') config%track%flange_back_position = 0.0_wp
+   end subroutine resolve_wheel_origin
+
+   !> n_strips × n_elements within [[max_grid_cells]], checked before anything is allocated.
+   subroutine check_grid_size(config, error)
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      integer(i8) :: cells
+      character(len=:), allocatable :: where
+      cells = int(config%normal%n_strips, i8)*int(config%tangential%n_elements, i8)
+      if (cells <= max_grid_cells) return
+      where = origin(config, 'tangential%n_elements')
+      if (where == 'default') where = origin(config, 'normal%n_strips')
+      call fatal_error(error, where//': &normal n_strips × &tangential n_elements = '// &
+         str_int(config%normal%n_strips)//' × '//str_int(config%tangential%n_elements)// &
+         ' = '//str_int(cells)//' grid cells per patch; at most '//str_int(max_grid_cells)// &
+         ' are allowed (memory grows with it on every thread)')
+   end subroutine check_grid_size
 
    !> The `&kinematics` values in their ranges; whether the pitch rate was given.
    subroutine check_kinematics(config, error)
@@ -1721,6 +1812,8 @@ contains
       select case (name)
       case ('wheel_smoothing', 'rail_smoothing')
          lo = 0.0_wp; hi = 100.0_wp
+      case ('wheel_scale', 'rail_scale')
+         lo = 0.0_wp; hi = 1.0e6_wp
       case ('gauge')
          lo = 500.0_wp; hi = 2000.0_wp
       case ('gauge_height')
@@ -1931,6 +2024,8 @@ contains
          associate (axis => config%sweep%axes(ia))
             name = trim(sweep_axis_names(ia))
             where = origin(config, 'sweep%'//name)
+            if (where == 'default') where = origin(config, 'sweep%'//name//'_points')
+            if (where == 'default') where = sweep_origin(config)
             axis%active = .false.
             if (axis%is_label) then
                axis%active = size(axis%labels) > 0
@@ -1999,9 +2094,9 @@ contains
             end if
          end associate
       end do
-      if (config%n_cases() > 100000000) then
-         call fatal_error(error, origin(config, 'sweep%mode')//': the sweep has more than '// &
-            '1e8 cases; split it')
+      if (config%n_cases() > max_cases) then
+         call fatal_error(error, sweep_origin(config)//': the sweep has more than '// &
+            str_int(max_cases)//' cases; split it into several runs')
       end if
    end subroutine check_sweep
 
@@ -2308,6 +2403,12 @@ contains
             case ('rail_format'); value = quote_string(config%profiles%rail_format)
             case ('wheel_smoothing'); value = format_real(config%profiles%wheel_smoothing)
             case ('rail_smoothing'); value = format_real(config%profiles%rail_smoothing)
+            case ('wheel_mirror_y'); value = quote_string(config%profiles%wheel_mirror_y)
+            case ('wheel_mirror_z'); value = quote_string(config%profiles%wheel_mirror_z)
+            case ('wheel_scale'); value = format_real(config%profiles%wheel_scale)
+            case ('rail_mirror_y'); value = quote_string(config%profiles%rail_mirror_y)
+            case ('rail_mirror_z'); value = quote_string(config%profiles%rail_mirror_z)
+            case ('rail_scale'); value = format_real(config%profiles%rail_scale)
             end select
          case ('track')
             select case (name)

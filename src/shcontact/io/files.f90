@@ -3,13 +3,14 @@
 !> Output files are written under a temporary name and renamed when complete; checkpoints live
 !> in a directory next to the output. POSIX `rename` replaces the target atomically.
 module shcontact_io_files
-   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, &
+      c_associated, c_f_pointer, c_size_t
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    implicit none
    private
 
    public :: rename_file, delete_file, make_directory, remove_directory, file_exists
-   public :: directory_part, join_path, is_absolute, process_id
+   public :: directory_part, join_path, is_absolute, process_id, canonical_path
 
    interface
       function c_rename(from, to) bind(c, name='rename') result(stat)
@@ -28,6 +29,21 @@ module shcontact_io_files
          integer(c_int), value :: mode
          integer(c_int) :: stat
       end function c_mkdir
+      function c_realpath(path, resolved) bind(c, name='realpath') result(p)
+         import :: c_char, c_ptr
+         character(kind=c_char), intent(in) :: path(*)
+         type(c_ptr), value :: resolved
+         type(c_ptr) :: p
+      end function c_realpath
+      subroutine c_free(p) bind(c, name='free')
+         import :: c_ptr
+         type(c_ptr), value :: p
+      end subroutine c_free
+      function c_strlen(p) bind(c, name='strlen') result(n)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: p
+         integer(c_size_t) :: n
+      end function c_strlen
       function c_getpid() bind(c, name='getpid') result(pid)
          import :: c_int
          integer(c_int) :: pid
@@ -129,6 +145,29 @@ contains
       is_absolute = .false.
       if (len(p) > 0) is_absolute = p(1:1) == '/'
    end function is_absolute
+
+   !> The absolute path without symbolic links, `.` or `..` (POSIX realpath); the path itself
+   !> when it cannot be resolved (e.g. it does not exist). Two names of one file give the same
+   !> canonical path.
+   function canonical_path(path) result(canonical)
+      !> The path.
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: canonical
+      type(c_ptr) :: p
+      character(kind=c_char), pointer :: chars(:)
+      integer :: n, i
+      canonical = path
+      p = c_realpath(path//c_null_char, c_null_ptr)
+      if (.not. c_associated(p)) return
+      n = int(c_strlen(p))
+      call c_f_pointer(p, chars, [n])
+      deallocate (canonical)
+      allocate (character(len=n) :: canonical)
+      do i = 1, n
+         canonical(i:i) = chars(i)
+      end do
+      call c_free(p)
+   end function canonical_path
 
    !> The process id (for unique temporary names).
    function process_id() result(pid)

@@ -88,8 +88,9 @@ contains
       call h5eset_auto_f(0, stat)
    end subroutine start_library
 
-   !> Create `name` for writing; the data go to `name.tmp<pid>` until [[h5_commit]].
-   subroutine h5_create(file, name, error, compression, single)
+   !> Create `name` for writing; the data go to `name.tmp<pid>` (or `temp_name`) until
+   !> [[h5_commit]].
+   subroutine h5_create(file, name, error, compression, single, temp_name)
       !> The new file.
       type(h5_file_type), intent(out) :: file
       !> Final file name.
@@ -100,12 +101,16 @@ contains
       integer, intent(in), optional :: compression
       !> Store compressed real datasets as 32-bit floats.
       logical, intent(in), optional :: single
+      !> Temporary name to write to (in the same file system as `name`); a name the caller can
+      !> find again to clean up after a kill, e.g. inside a checkpoint directory.
+      character(len=*), intent(in), optional :: temp_name
       integer :: stat
 
       call start_library(error)
       if (allocated(error)) return
       file%name = name
       file%temp_name = name//'.tmp'//str_int(process_id())
+      if (present(temp_name)) file%temp_name = temp_name
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
       call h5fcreate_f(file%temp_name, H5F_ACC_TRUNC_F, file%id, stat)
@@ -827,6 +832,7 @@ contains
       call h5dget_type_f(dset, str, s)
       call h5tget_size_f(str, n, s)
       allocate (character(len=n) :: text)
+      text = repeat(achar(0), n)
       call h5dread_f(dset, str, text, dims(1:0), stat)
       call h5tclose_f(str, s)
       call h5dclose_f(dset, s)
@@ -855,6 +861,7 @@ contains
       call h5dget_type_f(dset, str, s)
       call h5tget_size_f(str, n, s)
       allocate (character(len=n) :: texts(dims(1)))
+      texts = repeat(achar(0), n)
       call h5dread_f(dset, str, texts, dims, stat)
       call h5tclose_f(str, s)
       call h5dclose_f(dset, s)

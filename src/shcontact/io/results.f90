@@ -21,7 +21,10 @@
 !> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
 module shcontact_io_results
    use shcontact_core_kinds, only: wp, i1
-   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
+      stat_usage
+   use shcontact_core_textfile, only: is_directory
+   use shcontact_io_files, only: file_exists, canonical_path
    use shcontact_version_info, only: shcontact_version
    use shcontact_profile_points, only: profile_type
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -34,13 +37,14 @@ module shcontact_io_results
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: string_type
+   use shcontact_io_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used
    implicit none
    private
 
    public :: run_info_type, write_result_file, merge_result_files, read_result_summary
+   public :: check_output_file
    public :: case_group_name, units_text, sign_convention_text
 
    !> The units system, stored as a root attribute (physics.md decision 1).
@@ -89,7 +93,7 @@ contains
 
    !> Write one result file holding the cases `results` (case numbers `indices`), under a
    !> temporary name renamed when complete.
-   subroutine write_result_file(name, info, config, indices, results, error)
+   subroutine write_result_file(name, info, config, indices, results, error, temp_name)
       !> File name.
       character(len=*), intent(in) :: name
       !> Run information (header, profiles, common geometry).
@@ -102,12 +106,14 @@ contains
       type(case_result_type), intent(in) :: results(:)
       !> Set on failure; no file is left under `name` then.
       type(error_type), allocatable, intent(out) :: error
+      !> Temporary name (default `name.tmp<pid>`).
+      character(len=*), intent(in), optional :: temp_name
       type(h5_file_type) :: file
       type(case_summary_type), allocatable :: summaries(:)
       integer :: i
 
       call h5_create(file, name, error, compression=config%output%compression, &
-         single=config%output%precision == 'single')
+         single=config%output%precision == 'single', temp_name=temp_name)
       if (allocated(error)) return
       call write_header(file, info, size(indices), error)
       summaries = results%summary
@@ -555,7 +561,7 @@ contains
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
    subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
-                                 shard)
+                                 shard, temp_name)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
@@ -568,6 +574,8 @@ contains
       logical, intent(in), optional :: allow_partial
       !> 'I/N' when the merged file is one shard of a run.
       character(len=*), intent(in), optional :: shard
+      !> Temporary name of the merged file (default `output.tmp<pid>`).
+      character(len=*), intent(in), optional :: temp_name
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
@@ -576,6 +584,7 @@ contains
       type(run_info_type) :: info
       type(h5_file_type) :: out, src
       integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest
+      type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
       logical :: partial
 
@@ -585,6 +594,8 @@ contains
          call fatal_error(error, 'merge: no input files', stat_invalid_input)
          return
       end if
+      call check_output_file(output, error, inputs)
+      if (allocated(error)) return
       n_first = 0
       n_fail = 0
       longest = 1
@@ -623,7 +634,10 @@ contains
          do i = 1, size(messages)
             longest = max(longest, len_trim(messages(i)))
          end do
-         if (size(failed) > 0) call append_messages(all_messages, messages, n_fail)
+         do i = 1, size(failed)
+            call failure_messages%push(trim(messages(i)))
+         end do
+         n_fail = n_fail + size(failed)
       end do
       if (.not. partial .and. any(source == 0)) then
          icase = findloc(source, 0, dim=1)
@@ -645,7 +659,7 @@ contains
       info%shard = ''
       if (present(shard)) info%shard = shard
       call h5_create(out, output, error, compression=config%output%compression, &
-         single=config%output%precision == 'single')
+         single=config%output%precision == 'single', temp_name=temp_name)
       if (allocated(error)) return
       call h5_open(src, inputs(1)%text, error)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
@@ -654,9 +668,15 @@ contains
          call h5_copy(src, 'geometry', out, 'geometry', error)
       call h5_close(src)
       if (.not. allocated(error)) call write_summary(out, config, order, all(order), error)
+      ! Built here at its final length (growing a deferred-length array across calls left its
+      ! length undefined under gfortran; valgrind saw len_trim read uninitialised memory).
+      allocate (character(len=longest) :: all_messages(n_fail))
+      do i = 1, n_fail
+         all_messages(i) = failure_messages%items(i)%text
+      end do
       if (.not. allocated(error) .and. n_fail > 0) then
-         call sort_failures(all_failed(1:n_fail), all_messages(1:n_fail))
-         call write_failure_table(out, all_failed(1:n_fail), all_messages(1:n_fail), error)
+         call sort_failures(all_failed(1:n_fail), all_messages)
+         call write_failure_table(out, all_failed(1:n_fail), all_messages, error)
       end if
       ! Per-case groups, in case order, reading each input file while its cases come.
       open_index = 0
@@ -680,22 +700,54 @@ contains
       call h5_commit(out, error)
    end subroutine merge_result_files
 
-   subroutine append_messages(all, messages, n)
-      character(len=:), allocatable, intent(inout) :: all(:)
-      character(len=*), intent(in) :: messages(:)
-      integer, intent(inout) :: n
-      character(len=:), allocatable :: tmp(:)
-      integer :: l, i
-      l = len(messages)
-      if (allocated(all)) l = max(l, len(all))
-      allocate (character(len=l) :: tmp(n + size(messages)))
-      do i = 1, n
-         tmp(i) = all(i)
-      end do
-      tmp(n + 1:) = messages
-      n = n + size(messages)
-      call move_alloc(tmp, all)
-   end subroutine append_messages
+   !> An output name that may be written: not a directory, not one of `inputs`, and not an
+   !> existing file other than a shcontact result file (which a new run replaces). Nothing that
+   !> is not ours is overwritten.
+   subroutine check_output_file(output, error, inputs)
+      !> The output file.
+      character(len=*), intent(in) :: output
+      !> stat_io (directory, foreign file) or stat_usage (also an input), naming the file.
+      type(error_type), allocatable, intent(out) :: error
+      !> Files read to make the output.
+      type(string_type), intent(in), optional :: inputs(:)
+      character(len=:), allocatable :: target
+      integer :: f
+      if (is_directory(output)) then
+         call fatal_error(error, 'cannot write the output "'//output//'": it is a directory', &
+            stat_io)
+         return
+      end if
+      if (.not. file_exists(output)) return
+      target = canonical_path(output)
+      if (present(inputs)) then
+         do f = 1, size(inputs)
+            if (canonical_path(inputs(f)%text) == target) then
+               call fatal_error(error, 'the output "'//output//'" is also an input; give '// &
+                  'a new name for the merged file', stat_usage)
+               return
+            end if
+         end do
+      end if
+      if (.not. is_result_file(output)) then
+         call fatal_error(error, 'the output "'//output//'" exists and is not a shcontact '// &
+            'result file; it is not overwritten (remove it or choose another name)', stat_io)
+      end if
+   end subroutine check_output_file
+
+   !> True for an HDF5 file written by shcontact.
+   function is_result_file(name) result(yes)
+      character(len=*), intent(in) :: name
+      logical :: yes
+      type(h5_file_type) :: file
+      type(error_type), allocatable :: error
+      character(len=:), allocatable :: software
+      yes = .false.
+      call h5_open(file, name, error)
+      if (allocated(error)) return
+      call h5_read_attribute(file, '/', 'software', software, error)
+      yes = .not. allocated(error)
+      call h5_close(file)
+   end function is_result_file
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)

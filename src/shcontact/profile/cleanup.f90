@@ -19,6 +19,10 @@
 !>    [[kink_quiet_angle]] (π/30) within [[kink_window]] (2 mm) of the point is a true corner,
 !>    flagged in `profile%kink` so that smoothing splits there.
 !>
+!> [[drop_collinear]] (run on profiles from files, after these steps) drops a point within
+!> [[collinear_distance]] of the chord of its neighbours (never two in a row), so that points
+!> added between the samples give the same profile.
+!>
 !> Every rejection names the profile's source, the file line (when `line_of_point` is given)
 !> or the point number, and the reason.
 module shcontact_profile_cleanup
@@ -27,18 +31,20 @@ module shcontact_profile_cleanup
    use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_constants, only: pi, two_pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, option_hint
    implicit none
    private
 
-   public :: clean_profile, is_finite_value
+   public :: clean_profile, drop_collinear, is_finite_value
    public :: min_profile_points, duplicate_distance, min_arc_length, max_arc_length
-   public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window
+   public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window, collinear_distance
 
    !> Fewest points a profile may have.
    integer, parameter :: min_profile_points = 4
    !> Consecutive points closer than this are duplicates (mm).
    real(wp), parameter :: duplicate_distance = 1.0e-6_wp
+   !> A point closer than this (mm) to the chord of its neighbours is dropped.
+   real(wp), parameter :: collinear_distance = 1.0e-5_wp
    !> Shortest total arc length accepted (mm); CONTACT's bound.
    real(wp), parameter :: min_arc_length = 5.0_wp
    !> Longest total arc length accepted (mm); CONTACT's bound.
@@ -55,13 +61,15 @@ module shcontact_profile_cleanup
 contains
 
    !> Check and repair a profile in place (see the module description for the steps).
-   subroutine clean_profile(profile, error, line_of_point)
+   subroutine clean_profile(profile, error, line_of_point, option_prefix)
       !> The profile; zig-zag pairs merged, `s` recomputed, `kink` set.
       type(profile_type), intent(inout) :: profile
       !> The first check that failed (stat_invalid_input; stat_usage for a bad `line_of_point`).
       type(error_type), allocatable, intent(out) :: error
       !> File line of each point (0 = unknown), kept in step with the points when pairs merge.
       integer, allocatable, intent(inout), optional :: line_of_point(:)
+      !> How the caller names the scale option in messages (as read_profile).
+      character(len=*), intent(in), optional :: option_prefix
 
       integer, allocatable :: lines(:)
       integer :: n, nz
@@ -97,7 +105,7 @@ contains
       call check_order(profile, lines, error)
       if (allocated(error)) return
       call profile%update_arc_length()
-      call check_arc_length(profile, lines, error)
+      call check_arc_length(profile, lines, option_prefix, error)
       if (allocated(error)) return
       call merge_zigzags(profile, lines)
       call check_count(profile, lines, error)
@@ -181,9 +189,10 @@ contains
          str_real(profile%y(1))//', y(n) = '//str_real(profile%y(n)), stat_invalid_input)
    end subroutine check_order
 
-   subroutine check_arc_length(profile, lines, error)
+   subroutine check_arc_length(profile, lines, prefix, error)
       type(profile_type), intent(in) :: profile
       integer, intent(in) :: lines(:)
+      character(len=*), intent(in), optional :: prefix
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: total
       integer :: n
@@ -193,7 +202,8 @@ contains
       call fatal_error(error, location(profile, lines, 1)//' to '//line_word(lines, n)// &
          ': total arc length '//str_real(total)//' mm is outside '//str_real(min_arc_length)// &
          '–'//str_real(max_arc_length)//' mm; are the coordinates in another length unit '// &
-         '(m, inch, µm)? Give the scale factor to mm', stat_invalid_input)
+         '(m, inch, µm)? Give the scale factor to mm: '//option_hint(prefix, 'scale', 'FACTOR'), &
+         stat_invalid_input)
    end subroutine check_arc_length
 
    !> Replace each zig-zag pair — points i and i+1 where the direction turns by more than
@@ -236,6 +246,43 @@ contains
       lines = new_lines(:m)
       call profile%update_arc_length()
    end subroutine merge_zigzags
+
+   !> Drop points that lie on the chord of their neighbours (within [[collinear_distance]]),
+   !> never two in a row: points added between the samples of a profile do not change it, but
+   !> an interpolating spline through them would bend between them (issue 14). One pass; a
+   !> straight stretch keeps every other point. For profiles read from files, after
+   !> [[clean_profile]] (kink flags are kept with their points).
+   subroutine drop_collinear(profile, lines)
+      !> A cleaned profile.
+      type(profile_type), intent(inout) :: profile
+      !> File line of each point, kept in step.
+      integer, allocatable, intent(inout) :: lines(:)
+      logical, allocatable :: keep(:)
+      real(wp) :: c(2), p(2), t
+      integer :: i, n
+      n = profile%size()
+      allocate (keep(n), source=.true.)
+      i = 2
+      do while (i <= n - 1)
+         c = [profile%y(i + 1) - profile%y(i - 1), profile%z(i + 1) - profile%z(i - 1)]
+         p = [profile%y(i) - profile%y(i - 1), profile%z(i) - profile%z(i - 1)]
+         t = dot_product(p, c)/dot_product(c, c)
+         if (t > 0.0_wp .and. t < 1.0_wp) then
+            if (norm2(p - t*c) < collinear_distance) then
+               keep(i) = .false.
+               i = i + 2
+               cycle
+            end if
+         end if
+         i = i + 1
+      end do
+      if (all(keep)) return
+      profile%y = pack(profile%y, keep)
+      profile%z = pack(profile%z, keep)
+      if (allocated(profile%kink)) profile%kink = pack(profile%kink, keep)
+      if (allocated(lines)) lines = pack(lines, keep)
+      call profile%update_arc_length()
+   end subroutine drop_collinear
 
    !> Reject crossing or touching non-adjacent segments. Brute force with a bounding-box
    !> filter: profiles have a few thousand points and this runs once per profile.

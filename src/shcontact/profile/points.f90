@@ -4,7 +4,7 @@ module shcontact_profile_points
    implicit none
    private
 
-   public :: profile_type, profile_kind_rail, profile_kind_wheel
+   public :: profile_type, profile_kind_rail, profile_kind_wheel, option_hint
 
    !> The profile is a rail profile.
    integer, parameter :: profile_kind_rail = 0
@@ -61,5 +61,33 @@ contains
          self%s(i) = self%s(i - 1) + hypot(self%y(i) - self%y(i - 1), self%z(i) - self%z(i - 1))
       end do
    end subroutine update_arc_length
+
+   !> How to set a reading option in a message: the library's argument (`mirror_z = .true.`)
+   !> or, with `prefix` (e.g. '&profiles wheel_'), the caller's variable
+   !> (`&profiles wheel_mirror_z = 'yes'`). `value` is 'yes', 'no' or, for the scale, a
+   !> placeholder such as 'FACTOR'.
+   pure function option_hint(prefix, name, value) result(text)
+      !> The caller's prefix ('' or absent: the library's arguments).
+      character(len=*), intent(in), optional :: prefix
+      !> 'mirror_y', 'mirror_z' or 'scale'.
+      character(len=*), intent(in) :: name
+      !> The value to suggest.
+      character(len=*), intent(in) :: value
+      character(len=:), allocatable :: text
+      logical :: library
+      library = .not. present(prefix)
+      if (.not. library) library = len_trim(prefix) == 0
+      if (library) then
+         select case (value)
+         case ('yes'); text = name//' = .true.'
+         case ('no'); text = name//' = .false.'
+         case default; text = name//' = '//value
+         end select
+      else if (name == 'scale') then
+         text = trim(prefix)//name//' = '//value
+      else
+         text = trim(prefix)//name//" = '"//value//"'"
+      end if
+   end function option_hint
 
 end module shcontact_profile_points

@@ -27,12 +27,14 @@ module shcontact_profile_reader
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: lower => to_lower, str_int, str_real
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, stat_usage
-   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
+   use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel, &
+      option_hint
    use shcontact_profile_cleanup, only: is_finite_value, min_profile_points
+   use shcontact_core_textfile, only: text_line => text_line_type, read_text_lines
    implicit none
    private
 
-   public :: read_profile, profile_format_names
+   public :: read_profile, profile_format_names, profile_file_format
 
    !> Values of the `format` argument of [[read_profile]] (case-insensitive).
    character(len=*), parameter :: profile_format_names(4) = &
@@ -54,10 +56,6 @@ module shcontact_profile_reader
       'shift.z', 'rotate', 'bound.y.min', 'bound.y.max', 'bound.z.min', 'bound.z.max', &
       'mirror.y', 'mirror.z', 'inversion', 'units.len', 'units.ang', 'units.len.f', &
       'units.ang.f']
-
-   type :: text_line
-      character(len=:), allocatable :: text
-   end type text_line
 
    !> Points as read, in file units, with the line each came from.
    type :: point_list
@@ -96,7 +94,7 @@ contains
 
    !> Read a wheel or rail profile file into the canonical form (module description).
    subroutine read_profile(filename, profile, error, format, kind, mirror_y, mirror_z, scale, &
-         line_of_point)
+         line_of_point, option_prefix)
       !> The file; also the profile's `source` and the start of every message.
       character(len=*), intent(in) :: filename
       !> The profile: y, z (mm), s, kink (all false), kind, source.
@@ -118,6 +116,9 @@ contains
       real(wp), intent(in), optional :: scale
       !> File line of each returned point, for `clean_profile`'s messages.
       integer, allocatable, intent(out), optional :: line_of_point(:)
+      !> How the caller names mirror_y, mirror_z and scale in messages, e.g. '&profiles wheel_'
+      !> (default: these arguments' names).
+      character(len=*), intent(in), optional :: option_prefix
 
       integer :: file_format, profile_kind
       type(text_line), allocatable :: lines(:)
@@ -128,7 +129,7 @@ contains
       if (allocated(error)) return
       call check_arguments(filename, kind, scale, error)
       if (allocated(error)) return
-      call load_lines(filename, lines, error)
+      call read_text_lines(filename, 'profile file', lines, error)
       if (allocated(error)) return
 
       allocate (points%y(0), points%z(0), points%line(0))
@@ -153,7 +154,8 @@ contains
       end if
       call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
       if (allocated(error)) return
-      call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, error)
+      call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, &
+         option_prefix, error)
       if (allocated(error)) return
 
       profile%source = filename
@@ -169,25 +171,40 @@ contains
    ! Arguments, format, kind
    ! ---------------------------------------------------------------------------------------------
 
-   subroutine resolve_format(filename, format, file_format, error)
+   !> The format [[read_profile]] reads `filename` in: 'plain', 'simpack' or 'miniprof' ('' for
+   !> an unknown `format`). Callers use it for conventions that depend on the format (a
+   !> MiniProf wheel has its origin at the flange back).
+   pure function profile_file_format(filename, format) result(name)
+      !> The file.
       character(len=*), intent(in) :: filename
+      !> As the `format` argument of [[read_profile]] (default 'auto').
       character(len=*), intent(in), optional :: format
-      integer, intent(out) :: file_format
-      type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: name
-
       name = 'auto'
       if (present(format)) name = lower(trim(adjustl(format)))
       select case (name)
       case ('auto')
          select case (extension(filename))
          case ('prr', 'prw')
-            file_format = format_simpack
+            name = 'simpack'
          case ('ban', 'whl')
-            file_format = format_miniprof
+            name = 'miniprof'
          case default
-            file_format = format_plain
+            name = 'plain'
          end select
+      case ('plain', 'simpack', 'miniprof')
+      case default
+         name = ''
+      end select
+   end function profile_file_format
+
+   subroutine resolve_format(filename, format, file_format, error)
+      character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: format
+      integer, intent(out) :: file_format
+      type(error_type), allocatable, intent(out) :: error
+
+      select case (profile_file_format(filename, format))
       case ('plain')
          file_format = format_plain
       case ('simpack')
@@ -275,8 +292,10 @@ contains
    ! Transformations to the canonical form
    ! ---------------------------------------------------------------------------------------------
 
-   subroutine to_canonical(filename, kind, settings, points, mirror_y, mirror_z, scale, error)
+   subroutine to_canonical(filename, kind, settings, points, mirror_y, mirror_z, scale, &
+         prefix, error)
       character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: prefix
       integer, intent(in) :: kind
       type(file_settings), intent(in) :: settings
       type(point_list), intent(inout) :: points
@@ -308,8 +327,9 @@ contains
             end if
             call fatal_error(error, filename//', lines '//str_int(points%line(1))//'–'// &
                str_int(points%line(n))//': the '//kind_name(kind)//' profile looks upside '// &
-               'down (with z downward, '//shape//'); pass mirror_z = .true. to flip z, or '// &
-               'mirror_z = .false. to keep it', stat_invalid_input)
+               'down (with z downward, '//shape//'); set '//option_hint(prefix, 'mirror_z', &
+               'yes')//' to flip z, or '//option_hint(prefix, 'mirror_z', 'no')// &
+               ' to keep it', stat_invalid_input)
             return
          end if
       end if
@@ -325,7 +345,7 @@ contains
       end if
 
       if (kind == profile_kind_wheel .and. .not. present(mirror_y)) then
-         call check_flange_side(filename, points, error)
+         call check_flange_side(filename, points, prefix, error)
       end if
    end subroutine to_canonical
 
@@ -347,8 +367,9 @@ contains
    end function vertical_sense
 
    !> A right wheel's flange (its lowest point, largest z) lies on the track-centre side.
-   subroutine check_flange_side(filename, points, error)
+   subroutine check_flange_side(filename, points, prefix, error)
       character(len=*), intent(in) :: filename
+      character(len=*), intent(in), optional :: prefix
       type(point_list), intent(in) :: points
       type(error_type), allocatable, intent(out) :: error
       integer :: n, i
@@ -360,8 +381,9 @@ contains
       call fatal_error(error, filename//', line '//str_int(points%line(i))//': the wheel''s '// &
          'lowest point (the flange) is at y = '//str_real(points%y(i))//' mm, on the field '// &
          'side of the profile''s middle y = '//str_real(middle)//' mm; a right-side profile has '// &
-         'its flange towards the track centre (negative y): pass mirror_y to flip y, or '// &
-         'mirror_y = .false. to keep it', stat_invalid_input)
+         'its flange towards the track centre (negative y): set '//option_hint(prefix, &
+         'mirror_y', 'yes')//' to flip y, or '//option_hint(prefix, 'mirror_y', 'no')// &
+         ' to keep it', stat_invalid_input)
    end subroutine check_flange_side
 
    pure subroutine reverse_points(points)
@@ -731,7 +753,10 @@ contains
 
    !> MiniProf: a header of `Key=Value` or free-text lines ends at the first blank line (or at
    !> the first line of two or more numbers), then one point per line. Lines starting with `"`,
-   !> `#`, `!` or `%` are comments (MiniProf comments points out with `"`). Header keys used:
+   !> `#`, `!` or `%` are comments (MiniProf comments points out with `"`), and so is the rest of
+   !> a line from such a character on (`-0.036 1.2   " zig-zag pattern`). An old-style line of
+   !> header numbers followed by its label (`32.58 37.11 14.71` then `(Sd/Sh/qR)`) belongs to
+   !> the header. Header keys used:
    !> `ColumnDef` (which columns hold X and Y, e.g. `X,Y,A,C`), `XOffset`, `YOffset` (mm, added
    !> to the columns); all other keys are instrument metadata and ignored.
    subroutine parse_miniprof(filename, lines, points, settings, error)
@@ -758,8 +783,10 @@ contains
             cycle
          end if
          if (scan(text(1:1), '"#!%') == 1) cycle
+         ! A comment after a point: `-0.0986 -22.06   " zig-zag pattern`, `... % dent`.
+         if (scan(text, '"#!%') > 0) text = trim(text(:scan(text, '"#!%') - 1))
          if (in_header) then
-            if (.not. numeric_line(text)) then
+            if (.not. numeric_line(text) .or. header_numbers(lines, il)) then
                seen_header = .true.
                call read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
                if (allocated(error)) return
@@ -781,6 +808,23 @@ contains
       settings%mirror_y_if_rail = .true.
       settings%detect_z = .true.
    end subroutine parse_miniprof
+
+   !> An old-style MiniProf header line of numbers (`32.58 37.11 14.71`, flange height,
+   !> thickness, qR) that is followed by its label line (`(Sd/Sh/qR)`) rather than by points.
+   logical function header_numbers(lines, il)
+      type(text_line), intent(in) :: lines(:)
+      integer, intent(in) :: il
+      character(len=:), allocatable :: next
+      integer :: j
+      header_numbers = .false.
+      do j = il + 1, size(lines)
+         next = trim(adjustl(lines(j)%text))
+         if (len(next) == 0) return
+         if (scan(next(1:1), '"#!%') == 1) cycle
+         header_numbers = .not. numeric_line(next) .and. index(next, '=') == 0
+         return
+      end do
+   end function header_numbers
 
    subroutine read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
       character(len=*), intent(in) :: filename, text
@@ -819,79 +863,6 @@ contains
    ! ---------------------------------------------------------------------------------------------
    ! Lines and numbers
    ! ---------------------------------------------------------------------------------------------
-
-   !> The file as lines (LF, CRLF or CR ends; a UTF-8 byte-order mark dropped).
-   subroutine load_lines(filename, lines, error)
-      character(len=*), intent(in) :: filename
-      type(text_line), allocatable, intent(out) :: lines(:)
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: buffer
-      character(len=256) :: message
-      integer :: unit, stat, nbytes, i, start, n
-
-      open (newunit=unit, file=filename, status='old', action='read', access='stream', &
-         form='unformatted', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, filename//': cannot open the profile file: '//trim(message), &
-            stat_io)
-         return
-      end if
-      inquire (unit=unit, size=nbytes)
-      allocate (character(len=max(nbytes, 0)) :: buffer)
-      stat = 0
-      if (nbytes > 0) read (unit, iostat=stat, iomsg=message) buffer
-      close (unit)
-      if (stat /= 0 .or. nbytes < 0) then
-         if (nbytes < 0) message = 'cannot tell its size'
-         call fatal_error(error, filename//': cannot read the profile file: '//trim(message), &
-            stat_io)
-         return
-      end if
-      if (len(buffer) >= 3) then
-         if (buffer(1:3) == char(239)//char(187)//char(191)) buffer(1:3) = '   '
-      end if
-
-      n = 0
-      do i = 1, len(buffer)
-         if (is_line_end(buffer, i)) n = n + 1
-      end do
-      if (len(buffer) > 0) then
-         if (.not. is_line_end(buffer, len(buffer))) n = n + 1
-      end if
-      allocate (lines(n))
-      n = 0
-      start = 1
-      do i = 1, len(buffer)
-         if (.not. is_line_end(buffer, i)) cycle
-         n = n + 1
-         lines(n)%text = line_text(buffer(start:i))
-         start = i + 1
-      end do
-      if (start <= len(buffer)) lines(n + 1)%text = line_text(buffer(start:))
-   end subroutine load_lines
-
-   !> Whether character i ends a line: a LF, or a CR not followed by a LF.
-   pure logical function is_line_end(buffer, i)
-      character(len=*), intent(in) :: buffer
-      integer, intent(in) :: i
-      is_line_end = buffer(i:i) == achar(10)
-      if (buffer(i:i) == achar(13)) then
-         is_line_end = .true.
-         if (i < len(buffer)) is_line_end = buffer(i + 1:i + 1) /= achar(10)
-      end if
-   end function is_line_end
-
-   !> A line without its end characters, tabs as blanks.
-   pure function line_text(raw) result(text)
-      character(len=*), intent(in) :: raw
-      character(len=:), allocatable :: text
-      integer :: i
-      text = raw
-      do i = 1, len(text)
-         if (text(i:i) == achar(10) .or. text(i:i) == achar(13) .or. text(i:i) == achar(9)) &
-            text(i:i) = ' '
-      end do
-   end function line_text
 
    !> Append the point in columns col_y (lateral) and col_z (vertical) of a data line.
    subroutine read_point(filename, il, text, col_y, col_z, points, error)
