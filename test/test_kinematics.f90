@@ -3,7 +3,7 @@
 !> forces where the geometric contact point jumps, the vertical force balance and the positions
 !> where the load match failed before.
 module test_kinematics
-   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_geometry_track, only: side_left, side_right
@@ -47,7 +47,8 @@ contains
          new_unittest('bad_state_rejected', test_bad_state), &
          new_unittest('independent_of_earlier_calls', test_history), &
          new_unittest('short_tables_equal_full_tables', test_short_tables), &
-         new_unittest('yaw_table_matches_direct_fit', test_yaw_table)]
+         new_unittest('yaw_table_matches_direct_fit', test_yaw_table), &
+         new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -466,5 +467,47 @@ contains
          write (text, '(es12.4)') x
       end function real_text
    end subroutine test_yaw_table
+
+   !> A MiniProf wheel file through the solver object: without a track, its flange back is at 0
+   !> (its origin), as with the explicit track; the S1002 default −70 mm gives another contact.
+   !> Skipped without ../shared/profiles.
+   subroutine test_miniprof_origin(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: wheel_file = '../shared/profiles/Car7216_0001r.whl'
+      type(contact_solver_type) :: auto, explicit, s1002_origin
+      type(contact_result_type) :: a, e, w
+      type(lib_error), allocatable :: err
+      type(contact_options_type) :: smoothing
+      logical :: there
+
+      inquire (file=wheel_file, exist=there)
+      if (.not. there) then
+         call skip_test(error, wheel_file//' is absent')
+         return
+      end if
+      smoothing%l_filt_wheel = 2.0_wp
+      call auto%init(wheel_file, 'builtin:UIC60', err, contact_options=smoothing)
+      if (.not. allocated(err)) call explicit%init(wheel_file, 'builtin:UIC60', err, &
+         contact_options=smoothing, track=track_type(flange_back_position=0.0_wp))
+      if (.not. allocated(err)) call s1002_origin%init(wheel_file, 'builtin:UIC60', err, &
+         contact_options=smoothing, track=track_type(flange_back_position=-70.0_wp))
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      call auto%solve_kinematic(rolling(0.0_wp, 0.0_wp, 0.0_wp), &
+         contact_load_type(load_vertical_force, f_z), a, err)
+      if (.not. allocated(err)) call explicit%solve_kinematic(rolling(0.0_wp, 0.0_wp, 0.0_wp), &
+         contact_load_type(load_vertical_force, f_z), e, err)
+      call check(error, .not. allocated(err), 'solve failed')
+      if (allocated(error)) return
+      call check(error, all([a%track%fx, a%track%fy, a%track%fz, a%main%p_max] == &
+         [e%track%fx, e%track%fy, e%track%fz, e%main%p_max]), &
+         'a MiniProf wheel without a track differs from flange_back_position = 0')
+      if (allocated(error)) return
+      call s1002_origin%solve_kinematic(rolling(0.0_wp, 0.0_wp, 0.0_wp), &
+         contact_load_type(load_vertical_force, f_z), w, err)
+      if (allocated(err)) return
+      call check(error, abs(w%main%gamma0 - a%main%gamma0) > 1.0e-3_wp, &
+         'the origin should change the contact')
+   end subroutine test_miniprof_origin
 
 end module test_kinematics
