@@ -53,9 +53,12 @@ module shcontact
       load_vertical_force, load_approach, load_mode_name, max_patches
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
+   use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
+      wheel_left
    implicit none
    private
 
+   public :: wheelset_solver_type, wheelset_result_type, wheel_right, wheel_left
    public :: wp, error_type, fatal_error
    public :: stat_invalid_input, stat_io, stat_numerical, stat_no_contact, stat_usage
    public :: shcontact_version

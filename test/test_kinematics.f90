@@ -22,6 +22,8 @@ module test_kinematics
       prepare_profiles, prepare_wheel
    use shcontact_geometry_kinematics, only: yawed_wheel_profile
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
+   use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
+      wheel_left
    implicit none
    private
 
@@ -48,7 +50,8 @@ contains
          new_unittest('independent_of_earlier_calls', test_history), &
          new_unittest('short_tables_equal_full_tables', test_short_tables), &
          new_unittest('yaw_table_matches_direct_fit', test_yaw_table), &
-         new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin)]
+         new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin), &
+         new_unittest('wheelset_both_wheels', test_wheelset)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -509,5 +512,46 @@ contains
       call check(error, abs(w%main%gamma0 - a%main%gamma0) > 1.0e-3_wp, &
          'the origin should change the contact')
    end subroutine test_miniprof_origin
+
+   !> Both wheels in one call: the totals are the sums of the wheels in the true track frame; a
+   !> centred, unyawed wheelset rolling purely has no lateral force and no yaw moment (mirror
+   !> symmetry), a shifted one a restoring lateral force (gravitational stiffness), and a
+   !> longitudinal creep with a lateral shift a yaw moment from the rolling-radius difference.
+   subroutine test_wheelset(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_solver_type) :: wheelset
+      type(wheelset_result_type) :: r
+      type(lib_error), allocatable :: err
+      type(contact_load_type) :: load
+
+      load = contact_load_type(load_vertical_force, f_z)
+      call wheelset%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      call wheelset%solve(rolling(0.0_wp, 0.0_wp, 0.0_wp), load, load, r, err)
+      call check(error, .not. allocated(err), 'centred wheelset failed')
+      if (allocated(error)) return
+      call check(error, r%fz, -2.0_wp*f_z, rel=.true., thr=2.0e-5_wp)
+      if (allocated(error)) return
+      call check(error, abs(r%fy) < 1.0e-9_wp*f_z .and. abs(r%mz) < 1.0e-6_wp*f_z, &
+         'a centred wheelset is symmetric')
+      if (allocated(error)) return
+      call check(error, r%fx, r%wheel(wheel_right)%track%fx + r%wheel(wheel_left)%track%fx, &
+         thr=1.0e-9_wp)
+      if (allocated(error)) return
+      call wheelset%solve(rolling(3.0_wp, 0.0_wp, 0.0_wp), load, load, r, err)
+      call check(error, .not. allocated(err), 'shifted wheelset failed')
+      if (allocated(error)) return
+      call check(error, r%fy, r%wheel(wheel_right)%track%fy - r%wheel(wheel_left)%track%fy, &
+         thr=1.0e-9_wp)
+      if (allocated(error)) return
+      call check(error, r%fy < 0.0_wp, 'a wheelset shifted to the right is pushed back')
+      if (allocated(error)) return
+      ! Shifted right, the right wheel rolls on a larger radius: its surface slips backwards
+      ! over the rail, so F_x pushes it forwards; the left wheel's pushes backwards. The moment
+      ! about z (x towards y) is negative: it steers the wheelset back to the centre.
+      call check(error, r%mz < -1.0e6_wp, 'a wheelset shifted right must be steered back '// &
+         '(M_z < 0, some kN·m)')
+   end subroutine test_wheelset
 
 end module test_kinematics

@@ -1,0 +1,129 @@
+!> Both wheels of a wheelset in one call (issue 12): the vehicle code's view of the contact, one
+!> wheelset state in, the forces on each wheel and on the wheelset out.
+!>
+!> A [[wheelset_solver_type]] holds two [[contact_solver_type]] objects, the right wheel
+!> (side_right) and the left one (side_left), created from the same profiles; [[solve]] runs the
+!> kinematic call of each with the same wheelset state (each wheel's object mirrors it for the
+!> left wheel, shcontact_geometry_kinematics) and its own load, then adds the forces in the true
+!> track frame (x forward, y towards the right rail's field side, z down; forces on the
+!> wheelset) and their moment about the vertical axis through the wheelset centre. The results
+!> of each wheel stay in that wheel's side frame, as everywhere in the library (doc/api.md).
+module shcontact_api_wheelset
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, prefix_error
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_track, only: track_type, side_right, side_left
+   use shcontact_geometry_contact, only: contact_options_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type
+   implicit none
+   private
+
+   public :: wheelset_solver_type, wheelset_result_type, wheel_right, wheel_left
+
+   !> Index of the right and the left wheel in the arrays of this module.
+   integer, parameter :: wheel_right = 1, wheel_left = 2
+
+   !> The result of one wheelset call.
+   type :: wheelset_result_type
+      !> Each wheel's result (its own side frame): wheel(wheel_right), wheel(wheel_left).
+      type(contact_result_type) :: wheel(2)
+      !> Total force on the wheelset, true track frame (N): longitudinal, lateral (towards the
+      !> right rail's field side) and vertical (z down; about −(both wheel loads)).
+      real(wp) :: fx = 0.0_wp, fy = 0.0_wp, fz = 0.0_wp
+      !> Moment of the contact forces F_x, F_y about the vertical axis through the wheelset
+      !> centre (N·mm, about +z, i.e. turning x towards y), from each patch's position
+      !> (x_track, y_track − y_ws); the patches' spin moments are not included.
+      real(wp) :: mz = 0.0_wp
+   end type wheelset_result_type
+
+   !> The two wheels of one wheelset.
+   type :: wheelset_solver_type
+      private
+      type(contact_solver_type) :: wheel(2)
+   contains
+      !> Create both wheels from profile names (`builtin:NAME` or files).
+      procedure :: init
+      !> Solve both wheels for one wheelset state.
+      procedure :: solve
+   end type wheelset_solver_type
+
+contains
+
+   !> Create the right and the left wheel from the same profiles and data (see
+   !> contact_solver_type%init).
+   subroutine init(self, wheel, rail, error, track, material, contact_options, normal_options, &
+         tangential_options)
+      !> The wheelset (any earlier content is replaced).
+      class(wheelset_solver_type), intent(inout) :: self
+      !> Wheel and rail profile (right-side canonical form; the left wheel is the mirror image).
+      character(len=*), intent(in) :: wheel, rail
+      !> Set when a wheel cannot be created; the message names it.
+      type(error_type), allocatable, intent(out) :: error
+      !> As contact_solver_type%init.
+      type(track_type), intent(in), optional :: track
+      type(material_type), intent(in), optional :: material
+      type(contact_options_type), intent(in), optional :: contact_options
+      type(normal_options_type), intent(in), optional :: normal_options
+      type(tangential_options_type), intent(in), optional :: tangential_options
+      integer :: k
+      integer, parameter :: sides(2) = [side_right, side_left]
+      character(len=5), parameter :: names(2) = ['right', 'left ']
+
+      do k = 1, 2
+         call self%wheel(k)%init(wheel, rail, error, track=track, material=material, &
+            side=sides(k), contact_options=contact_options, normal_options=normal_options, &
+            tangential_options=tangential_options)
+         if (allocated(error)) then
+            call prefix_error(error, trim(names(k))//' wheel')
+            return
+         end if
+      end do
+   end subroutine init
+
+   !> Solve both wheels for the wheelset state (track frame) and add up the forces.
+   subroutine solve(self, state, load_right, load_left, result, error)
+      !> The wheelset, from [[init]].
+      class(wheelset_solver_type), intent(inout) :: self
+      !> Wheelset position and velocities (track frame).
+      type(wheelset_state_type), intent(in) :: state
+      !> The load of each wheel (load_vertical_force: its total vertical force).
+      type(contact_load_type), intent(in) :: load_right, load_left
+      !> Both wheels and the totals.
+      type(wheelset_result_type), intent(out) :: result
+      !> Set when a wheel's call fails; the message names the wheel.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, p
+      real(wp) :: side, fy
+      character(len=5), parameter :: names(2) = ['right', 'left ']
+
+      do k = 1, 2
+         if (k == wheel_right) then
+            call self%wheel(k)%solve_kinematic(state, load_right, result%wheel(k), error)
+         else
+            call self%wheel(k)%solve_kinematic(state, load_left, result%wheel(k), error)
+         end if
+         if (allocated(error)) then
+            call prefix_error(error, trim(names(k))//' wheel')
+            return
+         end if
+      end do
+      do k = 1, 2
+         side = merge(1.0_wp, -1.0_wp, k == wheel_right)
+         associate (w => result%wheel(k))
+            result%fx = result%fx + w%track%fx
+            result%fy = result%fy + side*w%track%fy
+            result%fz = result%fz + w%track%fz
+            do p = 1, w%n_loaded
+               if (.not. (w%patch(p)%fn > 0.0_wp)) cycle
+               fy = side*w%patch(p)%fy_track
+               result%mz = result%mz + w%patch(p)%x_track*fy &
+                  - (w%patch(p)%y_track - state%y_ws)*w%patch(p)%fx
+            end do
+         end associate
+      end do
+   end subroutine solve
+
+end module shcontact_api_wheelset
