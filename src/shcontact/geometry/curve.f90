@@ -18,6 +18,8 @@ module shcontact_geometry_curve
    !> [[walk_to_eta]] stops after a Newton step this small (mm): the error of the next one would be
    !> below 1e-14 mm for any profile the walk follows (|dη/ds| > 0.05, curvature < 10/mm).
    real(wp), parameter :: newton_tol = 1.0e-8_wp
+   !> Spline intervals a walk prepares at a time ([[frame_walk_type]]).
+   integer, parameter :: batch = 16
 
    !> A profile point in a frame, with the profile's local shape as a graph ζ(η).
    type :: frame_point_type
@@ -46,18 +48,22 @@ module shcontact_geometry_curve
       real(wp) :: ay = 1.0_wp, az = 0.0_wp, ey = 0.0_wp, by = 0.0_wp, bz = 1.0_wp, ez = 0.0_wp
       !> +1 when η grows with s; the sign of the step; the sense of the walk in s (dir·sigma).
       integer :: dir = 1, sigma = 1, sd = 1
-      !> Current interval (0: none, the walk falls back to [[walk_to_eta]]).
-      integer :: k = 0
-      !> Whether g = sigma·η is strictly increasing along the walk over the whole interval
-      !> (dir·η' > 0 at both ends and at the extremum of η'), so that a crossing is unique.
-      logical :: regular = .false.
-      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included.
-      real(wp) :: p(4) = 0.0_wp, q(4) = 0.0_wp
-      !> Interval length; t at the interval's near end (in the walk's sense); g at both ends.
-      real(wp) :: len = 0.0_wp, t_near = 0.0_wp, g_near = 0.0_wp, g_far = 0.0_wp
+      !> Current interval (0: none, the walk falls back to [[walk_to_eta]]), its place in the
+      !> batch below and the batch's size.
+      integer :: k = 0, idx = 0, count = 0
+      !> A batch of consecutive intervals in the walk's sense, prepared together (independent
+      !> of each other, so that they overlap in the CPU instead of delaying the points):
+      !> whether g = sigma·η is strictly increasing along the walk over the whole interval
+      !> (dir·η' > 0 at both ends and at the extremum of η'), so that a crossing is unique;
+      logical :: regular(batch) = .false.
+      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included;
+      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp
+      !> the interval length, t at its near end (in the walk's sense), g at both ends;
+      real(wp), dimension(batch) :: len = 0.0_wp, t_near = 0.0_wp, g_near = 0.0_wp, &
+         g_far = 0.0_wp
       !> 1/(g_far − g_near) and the inverse Hermite cubic τ(u) = u (a1 + u (a2 + u a3)),
       !> τ = sd·(t − t_near), u = (g − g_near)/(g_far − g_near).
-      real(wp) :: inv_span = 0.0_wp, a1 = 0.0_wp, a2 = 0.0_wp, a3 = 0.0_wp
+      real(wp), dimension(batch) :: inv_span = 0.0_wp, a1 = 0.0_wp, a2 = 0.0_wp, a3 = 0.0_wp
       !> The walk's last point (for the fallback; only s, k, eta, deta and d2eta are kept up to
       !> date on the fast path).
       type(frame_point_type) :: last
@@ -90,51 +96,62 @@ contains
       call enter_interval(spline, walk, start%k)
    end subroutine start_walk
 
-   !> Make interval k the walk's current one (its projected cubics and inverse interpolant).
+   !> Make interval k the walk's current one, preparing it and the next ones in the walk's
+   !> sense (their projected cubics and inverse interpolants).
    pure subroutine enter_interval(spline, walk, k)
       type(profile_spline_type), intent(in) :: spline
       type(frame_walk_type), intent(inout) :: walk
       integer, intent(in) :: k
-      real(wp) :: t_far, d_near, d_far, span, m0, m1, t_ext
-      real(wp) :: dp_ext
+      real(wp) :: t_near, t_far, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
+      integer :: b, kb
+      logical :: regular
 
       walk%k = k
-      walk%len = spline%s(k + 1) - spline%s(k)
-      walk%p = walk%ay*spline%cy(:, k) + walk%az*spline%cz(:, k)
-      walk%p(1) = walk%p(1) + walk%ey
-      walk%q = walk%by*spline%cy(:, k) + walk%bz*spline%cz(:, k)
-      walk%q(1) = walk%q(1) + walk%ez
+      walk%idx = 1
       if (walk%sd > 0) then
-         walk%t_near = 0.0_wp; t_far = walk%len
+         walk%count = min(batch, size(spline%s) - k)
       else
-         walk%t_near = walk%len; t_far = 0.0_wp
+         walk%count = min(batch, k)
       end if
-      associate (p => walk%p)
-         walk%g_near = walk%sigma*(p(1) + walk%t_near*(p(2) + walk%t_near*(p(3) + &
-            walk%t_near*p(4))))
-         walk%g_far = walk%sigma*(p(1) + t_far*(p(2) + t_far*(p(3) + t_far*p(4))))
-         ! dg/dτ = dir·η'(t) along the walk.
-         d_near = walk%dir*(p(2) + walk%t_near*(2.0_wp*p(3) + 3.0_wp*walk%t_near*p(4)))
-         d_far = walk%dir*(p(2) + t_far*(2.0_wp*p(3) + 3.0_wp*t_far*p(4)))
-         walk%regular = d_near > 0.0_wp .and. d_far > 0.0_wp .and. walk%g_far > walk%g_near
-         ! η' is quadratic in t: its extremum inside the interval must keep the sign too.
-         if (walk%regular .and. p(4) /= 0.0_wp) then
-            t_ext = -p(3)/(3.0_wp*p(4))
-            if (t_ext > 0.0_wp .and. t_ext < walk%len) then
-               dp_ext = walk%dir*(p(2) + t_ext*(2.0_wp*p(3) + 3.0_wp*t_ext*p(4)))
-               walk%regular = dp_ext > 0.0_wp
+      do b = 1, walk%count
+         kb = k + (b - 1)*walk%sd
+         len = spline%s(kb + 1) - spline%s(kb)
+         walk%len(b) = len
+         walk%p(:, b) = walk%ay*spline%cy(:, kb) + walk%az*spline%cz(:, kb)
+         walk%p(1, b) = walk%p(1, b) + walk%ey
+         walk%q(:, b) = walk%by*spline%cy(:, kb) + walk%bz*spline%cz(:, kb)
+         walk%q(1, b) = walk%q(1, b) + walk%ez
+         t_near = merge(0.0_wp, len, walk%sd > 0)
+         t_far = len - t_near
+         walk%t_near(b) = t_near
+         associate (p => walk%p(:, b))
+            walk%g_near(b) = walk%sigma*(p(1) + t_near*(p(2) + t_near*(p(3) + t_near*p(4))))
+            walk%g_far(b) = walk%sigma*(p(1) + t_far*(p(2) + t_far*(p(3) + t_far*p(4))))
+            ! dg/dτ = dir·η'(t) along the walk.
+            d_near = walk%dir*(p(2) + t_near*(2.0_wp*p(3) + 3.0_wp*t_near*p(4)))
+            d_far = walk%dir*(p(2) + t_far*(2.0_wp*p(3) + 3.0_wp*t_far*p(4)))
+            regular = d_near > 0.0_wp .and. d_far > 0.0_wp .and. &
+               walk%g_far(b) > walk%g_near(b)
+            ! η' is quadratic in t: its extremum inside the interval must keep the sign too.
+            if (regular .and. p(4) /= 0.0_wp) then
+               t_ext = -p(3)/(3.0_wp*p(4))
+               if (t_ext > 0.0_wp .and. t_ext < len) then
+                  dp_ext = walk%dir*(p(2) + t_ext*(2.0_wp*p(3) + 3.0_wp*t_ext*p(4)))
+                  regular = dp_ext > 0.0_wp
+               end if
             end if
-         end if
-      end associate
-      if (.not. walk%regular) return
-      span = walk%g_far - walk%g_near
-      walk%inv_span = 1.0_wp/span
-      ! Hermite interpolation of τ(g): τ = 0, len at the ends, dτ/dg = 1/d_near, 1/d_far.
-      m0 = span/d_near
-      m1 = span/d_far
-      walk%a1 = m0
-      walk%a2 = 3.0_wp*walk%len - 2.0_wp*m0 - m1
-      walk%a3 = -2.0_wp*walk%len + m0 + m1
+         end associate
+         walk%regular(b) = regular
+         if (.not. regular) cycle
+         span = walk%g_far(b) - walk%g_near(b)
+         walk%inv_span(b) = 1.0_wp/span
+         ! Hermite interpolation of τ(g): τ = 0, len at the ends, dτ/dg = 1/d_near, 1/d_far.
+         m0 = span/d_near
+         m1 = span/d_far
+         walk%a1(b) = m0
+         walk%a2(b) = 3.0_wp*len - 2.0_wp*m0 - m1
+         walk%a3(b) = -2.0_wp*len + m0 + m1
+      end do
    end subroutine enter_interval
 
    !> Continue a walk ([[start_walk]]) over the table points η_j = j·step, j = j0 + 1 … j0 + m:
@@ -164,7 +181,7 @@ contains
       integer, intent(out) :: n
       type(frame_point_type) :: pnt
       real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, zq, inv, e
-      integer :: i, it, kn, last_k, attempt
+      integer :: i, it, kn, last_k, attempt, b
       logical :: ok, found
 
       n = 0
@@ -174,19 +191,25 @@ contains
          g = walk%sigma*eta
          ok = .false.
          do while (walk%k /= 0)
-            if (.not. walk%regular) exit
-            if (g <= walk%g_far) then
+            b = walk%idx
+            if (.not. walk%regular(b)) exit
+            if (g <= walk%g_far(b)) then
                ok = .true.
                exit
             end if
             kn = walk%k + walk%sd
             if (kn < 1 .or. kn > last_k) exit
-            call enter_interval(spline, walk, kn)
+            if (b < walk%count) then
+               walk%k = kn
+               walk%idx = b + 1
+            else
+               call enter_interval(spline, walk, kn)
+            end if
          end do
          if (ok) then
-            associate (p => walk%p, q => walk%q, cz => spline%cz(:, walk%k))
-               u = (g - walk%g_near)*walk%inv_span
-               t = walk%t_near + walk%sd*(u*(walk%a1 + u*(walk%a2 + u*walk%a3)))
+            associate (p => walk%p(:, b), q => walk%q(:, b), cz => spline%cz(:, walk%k))
+               u = (g - walk%g_near(b))*walk%inv_span(b)
+               t = walk%t_near(b) + walk%sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
                ! Everything at the start t, then one Newton step dt: the cubics at t + dt follow
                ! exactly from their derivatives at t, and 1/η'(t + dt) to second order in the
                ! relative change of η' (below 1e-6 where dt is this small), so that the point
@@ -212,7 +235,7 @@ contains
                   end do
                end do
                t1 = t + dt
-               ok = abs(dt) <= newton_tol .and. t1 >= 0.0_wp .and. t1 <= walk%len
+               ok = abs(dt) <= newton_tol .and. t1 >= 0.0_wp .and. t1 <= walk%len(b)
                if (ok) then
                   e = dt*(d2f + 3.0_wp*p(4)*dt)
                   df = df + e
