@@ -296,7 +296,8 @@ contains
 
    !> [[follow]] point after point, each point from the last one by [[next_point]] (the
    !> reference search).
-   pure subroutine follow_pointwise(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, rows, &
+   pure subroutine follow_pointwise(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, &
+         step, rows, &
          n_rows, n_basin, s_basin)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: rmap, wmap
