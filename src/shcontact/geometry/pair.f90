@@ -3,9 +3,12 @@
 !> rows of the strip tables.
 !>
 !> Both follow a profile from a known point to the next one at a given frame coordinate η.
-!> The table walk takes Newton steps from the previous point ([[walk_to_eta]]); with the option
-!> `reference_search` it solves every point from scratch by bracketing ([[locate_eta]]), the
-!> original and slower algorithm kept as a reference for tests (the two agree to ~1e-14 mm).
+!> The table walk goes through the spline intervals in batches ([[walk_points]]): every table
+!> point gets its own start from an inverse interpolant of its interval and one Newton step on
+!> the interval's cubic, with [[walk_to_eta]] (Newton from the previous point) wherever an
+!> interval is not strictly monotone in η. With the option `reference_search` it solves every
+!> point from scratch by bracketing ([[locate_eta]]), the original and slower algorithm kept as
+!> a reference for tests (the walks agree to ~1e-13 mm).
 !> The common-normal refinement always solves from scratch: its bisection decides on the sign of
 !> d(gap)/ds near zero, so round-off differences would move the reference point within its
 !> tolerance (1e-10 mm) and the curvature tables by up to 1e-8 relative; solved the same way, the
