@@ -9,7 +9,9 @@ module test_geometry
    use shcontact_profile_reader, only: read_profile
    use shcontact_profile_cleanup, only: clean_profile
    use shcontact_profile_builtin, only: builtin_profile
-   use shcontact_geometry_rigid, only: rigid_map_type
+   use shcontact_geometry_rigid, only: rigid_map_type, to_frame
+   use shcontact_geometry_curve, only: frame_point_type, frame_point, walk_to_eta, &
+      frame_walk_type, start_walk, walk_points
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_left, &
       rail_placement
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
@@ -64,7 +66,9 @@ contains
          new_unittest('reused_patch_storage', test_reused_storage), &
          new_unittest('fast_search_equals_reference_builtin', test_fast_builtin), &
          new_unittest('fast_search_equals_reference_manchester', test_fast_manchester), &
-         new_unittest('prepare_wheel_equals_prepare_profiles', test_prepare_wheel) &
+         new_unittest('prepare_wheel_equals_prepare_profiles', test_prepare_wheel), &
+         new_unittest('walk_points_equals_pointwise_walk', test_walk_points), &
+         new_unittest('fast_search_equals_reference_fine_scan', test_fast_fine_scan) &
          ]
    end subroutine collect_geometry
 
@@ -1163,23 +1167,33 @@ contains
    !> Fast and reference search at t_y = −10 + 0.37 k mm (k = 0 … 54), right wheel, and a few
    !> positions of the left wheel with roll: the same outcome (error status), the same number of
    !> patches and table points, and every value within 1e-9.
-   subroutine check_fast_scan(fast, reference, error)
+   subroutine check_fast_scan(fast, reference, error, first, step, count)
       type(prepared_profiles_type), intent(in) :: fast, reference
       type(error_type), allocatable, intent(out) :: error
-      real(wp), parameter :: tol = 1.0e-9_wp
+      !> Right-wheel positions t_y = first + step·k, k = 0 … count − 1 (default −10, 0.37, 55),
+      !> then the left-wheel positions.
+      real(wp), intent(in), optional :: first, step
+      integer, intent(in), optional :: count
+      real(wp), parameter :: tol = 1.0e-9_wp, ref_tol = 1.0e-10_wp
+      real(wp) :: y_first, y_step
+      integer :: n_right
       type(contact_patches_type) :: a, b
       type(wheelset_position_type) :: position
       type(lib_error), allocatable :: err_a, err_b
       integer :: i, k, n, found
       character(len=40) :: where
 
+      y_first = -10.0_wp; y_step = 0.37_wp; n_right = 55
+      if (present(first)) y_first = first
+      if (present(step)) y_step = step
+      if (present(count)) n_right = count
       found = 0
-      do i = 0, 60
-         if (i <= 54) then
-            position = wheelset_position_type(y_ws=-10.0_wp + 0.37_wp*i)
+      do i = 0, n_right + 5
+         if (i < n_right) then
+            position = wheelset_position_type(y_ws=y_first + y_step*i)
          else
-            position = wheelset_position_type(side=side_left, y_ws=-6.0_wp + 2.3_wp*(i - 55), &
-               roll=1.0e-3_wp*(i - 57))
+            position = wheelset_position_type(side=side_left, y_ws=-6.0_wp + 2.3_wp*(i - n_right), &
+               roll=1.0e-3_wp*(i - n_right - 2))
          end if
          write (where, '(a,f8.3,a,i0)') ' at t_y = ', position%y_ws, ', side ', position%side
          call find_contact_patches(fast, position, a, err_a)
@@ -1201,6 +1215,10 @@ contains
             if (allocated(error)) return
             associate (p => a%patch(k), q => b%patch(k))
                call check(error, maxval(abs([p%y_track - q%y_track, p%z_track - q%z_track, &
+                  p%y_rail - q%y_rail, p%y_wheel - q%y_wheel])) <= ref_tol, &
+                  message='reference point'//trim(where))
+               if (allocated(error)) return
+               call check(error, maxval(abs([p%y_track - q%y_track, p%z_track - q%z_track, &
                   p%y_rail - q%y_rail, p%y_wheel - q%y_wheel, p%gamma0 - q%gamma0, &
                   p%gap0 - q%gap0, p%basin_lower - q%basin_lower, &
                   p%basin_upper - q%basin_upper, (p%r0 - q%r0)/q%r0])) <= tol, &
@@ -1217,7 +1235,8 @@ contains
             end associate
          end do
       end do
-      call check(error, found >= 50, message='expected contact at most positions')
+      call check(error, found >= min(50, n_right - 5), &
+         message='expected contact at most positions')
    end subroutine check_fast_scan
 
    !> prepare_wheel on profiles prepared with another wheel gives the profiles that
@@ -1267,5 +1286,136 @@ contains
          end do
       end do
    end subroutine test_prepare_wheel
+
+   ! ------------------------------------------------------ the table walk, point against chunk
+
+   !> walk_points (per-interval start, Newton on the projected cubic, in chunks) gives the points
+   !> of the point-by-point walk_to_eta (the former fast walk) to 1e-12 mm (slope and curvature
+   !> to 1e-11 of their largest value: near the steep ends the curvature reaches ~500/mm, where
+   !> round-off alone is ~1e-10/mm) and ends at the same
+   !> point: the built-in S1002 and UIC60 splines in frames turned by −1.2 … 1.2 rad about
+   !> points across the profile, walked both ways until the profile turns back (dη/ds ≤ 0.05)
+   !> or ends, in chunks of uneven size; on the steep ends the walk takes its fallback.
+   subroutine test_walk_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: min_deta = 0.05_wp, h = 0.025_wp, tol = 1.0e-12_wp, &
+         rel_tol = 1.0e-11_wp
+      integer, parameter :: n_max = 8000
+      type(prepared_profiles_type) :: prep
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      type(rigid_map_type) :: map
+      type(frame_point_type) :: p0, p, q
+      type(frame_walk_type) :: walk
+      type(profile_spline_type) :: spline
+      real(wp) :: zeta(n_max), slope(n_max), curv(n_max), v(n_max), s(n_max), step, s0, theta
+      integer :: prof, ia, is, sgn, dir, n, n_ref, j0, m, got, j, turned
+      logical :: found
+      character(len=120) :: where
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), prep, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      turned = 0
+      do prof = 1, 2
+         if (prof == 1) then
+            spline = prep%wheel
+         else
+            spline = prep%rail
+         end if
+         block
+            do ia = -4, 4
+               theta = 0.3_wp*ia
+               do is = 1, 9
+                  s0 = spline%s(1) + 0.1_wp*is*spline%length()
+                  p0 = frame_point(spline, rigid_map_type(), s0, 1)
+                  map = to_frame(theta, p0%u, p0%v)
+                  p0 = frame_point(spline, map, s0, 1)
+                  dir = merge(1, -1, p0%deta >= 0.0_wp)
+                  p0 = frame_point(spline, map, s0, dir)
+                  if (.not. p0%deta > min_deta) cycle
+                  do sgn = -1, 1, 2
+                     step = sgn*h
+                     write (where, '(a,i0,a,f5.2,a,f8.3,a,i0)') ' (profile ', prof, &
+                        ', theta ', theta, ', s0 ', s0, ', step sign ', sgn
+                     ! Reference: point after point.
+                     p = p0
+                     n_ref = 0
+                     do j = 1, n_max
+                        call walk_to_eta(spline, map, j*step, dir, p, q, found)
+                        if (.not. found) exit
+                        p = q
+                        if (.not. p%deta > min_deta) exit
+                        n_ref = j
+                        zeta(j) = p%zeta; slope(j) = p%slope; curv(j) = p%curv
+                        v(j) = p%v; s(j) = p%s
+                     end do
+                     if (n_ref < n_max .and. found) turned = turned + 1
+                     ! The chunked walk, chunks of 1, 2, … 7 points and then 40.
+                     call start_walk(spline, map, p0, dir, step, walk)
+                     j0 = 0
+                     n = 0
+                     do
+                        m = min(merge(40, j0/16 + 1, j0 > 200), n_max - j0)
+                        if (m <= 0) exit
+                        block
+                           real(wp), dimension(m) :: z1, s1, c1, v1, a1
+                           call walk_points(spline, map, walk, step, j0, m, min_deta, z1, &
+                              s1, c1, v1, a1, got)
+                           if (got > 0) then
+                              write (where(72:), '(a,5es8.1)') ':', &
+                                 maxval(abs(z1(1:got) - zeta(j0 + 1:j0 + got))), &
+                                 maxval(abs(s1(1:got) - slope(j0 + 1:j0 + got))), &
+                                 maxval(abs(c1(1:got) - curv(j0 + 1:j0 + got))), &
+                                 maxval(abs(curv(j0 + 1:j0 + got))), &
+                                 maxval(abs(a1(1:got) - s(j0 + 1:j0 + got)))
+                              call check(error, maxval(abs(z1(1:got) - zeta(j0 + 1:j0 + got))) &
+                                 <= tol .and. maxval(abs(s1(1:got) - slope(j0 + 1:j0 + got))) &
+                                 <= rel_tol*max(1.0_wp, maxval(abs(slope(j0 + 1:j0 + got)))) &
+                                 .and. maxval(abs(c1(1:got) - curv(j0 + 1:j0 + got))) <= &
+                                 rel_tol*max(1.0_wp, maxval(abs(curv(j0 + 1:j0 + got)))) .and. &
+                                 maxval(abs(v1(1:got) - v(j0 + 1:j0 + got))) <= tol .and. &
+                                 maxval(abs(a1(1:got) - s(j0 + 1:j0 + got))) <= tol, &
+                                 message='walk_points differs from walk_to_eta'//trim(where))
+                              if (allocated(error)) return
+                           end if
+                        end block
+                        n = j0 + got
+                        if (got < m) exit
+                        j0 = j0 + m
+                     end do
+                     call check(error, n, n_ref, message='walk_points ends elsewhere'//trim(where))
+                     if (allocated(error)) return
+                  end do
+               end do
+            end do
+         end block
+      end do
+      call check(error, turned >= 50, message='expected walks that end where the profile turns')
+   end subroutine test_walk_points
+
+   !> Fast against reference search on a finer grid than [[test_fast_builtin]]: built-in S1002 on
+   !> UIC60, t_y = −10 … 10 mm in steps of 0.13 mm (positions between the other test's).
+   subroutine test_fast_fine_scan(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(prepared_profiles_type) :: fast, reference
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), fast, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(reference_search=.true.), reference, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check_fast_scan(fast, reference, error, first=-9.935_wp, step=0.13_wp, count=153)
+   end subroutine test_fast_fine_scan
 
 end module test_geometry

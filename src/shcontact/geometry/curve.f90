@@ -11,12 +11,15 @@ module shcontact_geometry_curve
    private
 
    public :: frame_point_type, frame_point, locate_eta, walk_to_eta
+   public :: frame_walk_type, start_walk, walk_points
 
    !> Newton steps of [[walk_to_eta]] before it falls back to [[locate_eta]].
    integer, parameter :: max_newton = 8
    !> [[walk_to_eta]] stops after a Newton step this small (mm): the error of the next one would be
    !> below 1e-14 mm for any profile the walk follows (|dη/ds| > 0.05, curvature < 10/mm).
    real(wp), parameter :: newton_tol = 1.0e-8_wp
+   !> Spline intervals a walk prepares at a time ([[frame_walk_type]]).
+   integer, parameter :: batch = 16
 
    !> A profile point in a frame, with the profile's local shape as a graph ζ(η).
    type :: frame_point_type
@@ -36,7 +39,239 @@ module shcontact_geometry_curve
       real(wp) :: d2eta = 0.0_wp
    end type frame_point_type
 
+   !> A walk along one profile in a frame at the table points η_j = j·step ([[walk_points]]),
+   !> one spline interval at a time: the interval's cubics projected on the frame axes, and an
+   !> inverse cubic Hermite interpolant of s(η) over it that gives every table point its own
+   !> starting value (no chain from point to point, so consecutive points overlap in the CPU).
+   type :: frame_walk_type
+      !> The frame map as projections: η = ay·y + az·z + ey, ζ = by·y + bz·z + ez.
+      real(wp) :: ay = 1.0_wp, az = 0.0_wp, ey = 0.0_wp, by = 0.0_wp, bz = 1.0_wp, ez = 0.0_wp
+      !> +1 when η grows with s; the sign of the step; the sense of the walk in s (dir·sigma).
+      integer :: dir = 1, sigma = 1, sd = 1
+      !> Current interval (0: none, the walk falls back to [[walk_to_eta]]), its place in the
+      !> batch below and the batch's size.
+      integer :: k = 0, idx = 0, count = 0
+      !> A batch of consecutive intervals in the walk's sense, prepared together (independent
+      !> of each other, so that they overlap in the CPU instead of delaying the points):
+      !> whether g = sigma·η is strictly increasing along the walk over the whole interval
+      !> (dir·η' > 0 at both ends and at the extremum of η'), so that a crossing is unique;
+      logical :: regular(batch) = .false.
+      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included;
+      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp
+      !> the interval length, t at its near end (in the walk's sense), g at both ends;
+      real(wp), dimension(batch) :: len = 0.0_wp, t_near = 0.0_wp, g_near = 0.0_wp, &
+         g_far = 0.0_wp
+      !> 1/(g_far − g_near) and the inverse Hermite cubic τ(u) = u (a1 + u (a2 + u a3)),
+      !> τ = sd·(t − t_near), u = (g − g_near)/(g_far − g_near).
+      real(wp), dimension(batch) :: inv_span = 0.0_wp, a1 = 0.0_wp, a2 = 0.0_wp, a3 = 0.0_wp
+      !> The walk's last point (for the fallback; only s, k, eta, deta and d2eta are kept up to
+      !> date on the fast path).
+      type(frame_point_type) :: last
+   end type frame_walk_type
+
 contains
+
+   !> Start a walk along `spline` (seen through `map`) from the point `start` (from
+   !> [[frame_point]] with the same `dir`), at the table points η_j = j·step.
+   pure subroutine start_walk(spline, map, start, dir, step, walk)
+      !> The profile.
+      type(profile_spline_type), intent(in) :: spline
+      !> Profile coordinates to frame coordinates.
+      type(rigid_map_type), intent(in) :: map
+      !> The walk's first point (η = 0).
+      type(frame_point_type), intent(in) :: start
+      !> +1 when η grows with s near `start`, −1 when it falls.
+      integer, intent(in) :: dir
+      !> Table step (mm, signed: the walk goes towards −η when negative).
+      real(wp), intent(in) :: step
+      !> The walk's state.
+      type(frame_walk_type), intent(out) :: walk
+
+      walk%ay = map%c; walk%az = -map%s; walk%ey = map%dy
+      walk%by = map%s; walk%bz = map%c; walk%ez = map%dz
+      walk%dir = dir
+      walk%sigma = merge(1, -1, step >= 0.0_wp)
+      walk%sd = dir*walk%sigma
+      walk%last = start
+      call enter_interval(spline, walk, start%k)
+   end subroutine start_walk
+
+   !> Make interval k the walk's current one, preparing it and the next ones in the walk's
+   !> sense (their projected cubics and inverse interpolants).
+   pure subroutine enter_interval(spline, walk, k)
+      type(profile_spline_type), intent(in) :: spline
+      type(frame_walk_type), intent(inout) :: walk
+      integer, intent(in) :: k
+      real(wp) :: t_near, t_far, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
+      integer :: b, kb
+      logical :: regular
+
+      walk%k = k
+      walk%idx = 1
+      if (walk%sd > 0) then
+         walk%count = min(batch, size(spline%s) - k)
+      else
+         walk%count = min(batch, k)
+      end if
+      do b = 1, walk%count
+         kb = k + (b - 1)*walk%sd
+         len = spline%s(kb + 1) - spline%s(kb)
+         walk%len(b) = len
+         walk%p(:, b) = walk%ay*spline%cy(:, kb) + walk%az*spline%cz(:, kb)
+         walk%p(1, b) = walk%p(1, b) + walk%ey
+         walk%q(:, b) = walk%by*spline%cy(:, kb) + walk%bz*spline%cz(:, kb)
+         walk%q(1, b) = walk%q(1, b) + walk%ez
+         t_near = merge(0.0_wp, len, walk%sd > 0)
+         t_far = len - t_near
+         walk%t_near(b) = t_near
+         associate (p => walk%p(:, b))
+            walk%g_near(b) = walk%sigma*(p(1) + t_near*(p(2) + t_near*(p(3) + t_near*p(4))))
+            walk%g_far(b) = walk%sigma*(p(1) + t_far*(p(2) + t_far*(p(3) + t_far*p(4))))
+            ! dg/dτ = dir·η'(t) along the walk.
+            d_near = walk%dir*(p(2) + t_near*(2.0_wp*p(3) + 3.0_wp*t_near*p(4)))
+            d_far = walk%dir*(p(2) + t_far*(2.0_wp*p(3) + 3.0_wp*t_far*p(4)))
+            regular = d_near > 0.0_wp .and. d_far > 0.0_wp .and. &
+               walk%g_far(b) > walk%g_near(b)
+            ! η' is quadratic in t: its extremum inside the interval must keep the sign too.
+            if (regular .and. p(4) /= 0.0_wp) then
+               t_ext = -p(3)/(3.0_wp*p(4))
+               if (t_ext > 0.0_wp .and. t_ext < len) then
+                  dp_ext = walk%dir*(p(2) + t_ext*(2.0_wp*p(3) + 3.0_wp*t_ext*p(4)))
+                  regular = dp_ext > 0.0_wp
+               end if
+            end if
+         end associate
+         walk%regular(b) = regular
+         if (.not. regular) cycle
+         span = walk%g_far(b) - walk%g_near(b)
+         walk%inv_span(b) = 1.0_wp/span
+         ! Hermite interpolation of τ(g): τ = 0, len at the ends, dτ/dg = 1/d_near, 1/d_far.
+         m0 = span/d_near
+         m1 = span/d_far
+         walk%a1(b) = m0
+         walk%a2(b) = 3.0_wp*len - 2.0_wp*m0 - m1
+         walk%a3(b) = -2.0_wp*len + m0 + m1
+      end do
+   end subroutine enter_interval
+
+   !> Continue a walk ([[start_walk]]) over the table points η_j = j·step, j = j0 + 1 … j0 + m:
+   !> the frame height ζ, slope dζ/dη, curvature d²ζ/dη², the profile's own z (v) and the arc
+   !> length s at each, as [[walk_to_eta]] would give them point after point (to ~1e-14 mm).
+   !> `n` is the number of points found with dη/ds (in the walk's sense) > `min_deta`; the walk
+   !> ends at the first point where the profile ends or turns back. On a strictly monotone
+   !> interval every point is solved from the interval's inverse interpolant by Newton steps on
+   !> the projected cubic; anywhere else the point comes from [[walk_to_eta]].
+   pure subroutine walk_points(spline, map, walk, step, j0, m, min_deta, zeta, slope, curv, v, &
+         s, n)
+      !> The profile.
+      type(profile_spline_type), intent(in) :: spline
+      !> Profile coordinates to frame coordinates (as for [[start_walk]]).
+      type(rigid_map_type), intent(in) :: map
+      !> The walk's state, updated.
+      type(frame_walk_type), intent(inout) :: walk
+      !> Table step (mm, as for [[start_walk]]).
+      real(wp), intent(in) :: step
+      !> Index of the last table point done, and the number of points to do.
+      integer, intent(in) :: j0, m
+      !> The walk ends where dη/ds ≤ this.
+      real(wp), intent(in) :: min_deta
+      !> Frame height (mm), dζ/dη, d²ζ/dη² (1/mm), profile z (mm) and arc length (mm).
+      real(wp), intent(out) :: zeta(:), slope(:), curv(:), v(:), s(:)
+      !> Number of points found.
+      integer, intent(out) :: n
+      type(frame_point_type) :: pnt
+      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, zq, inv, e
+      integer :: i, it, kn, last_k, attempt, b
+      logical :: ok, found
+
+      n = 0
+      last_k = size(spline%s) - 1
+      do i = 1, m
+         eta = (j0 + i)*step
+         g = walk%sigma*eta
+         ok = .false.
+         do while (walk%k /= 0)
+            b = walk%idx
+            if (.not. walk%regular(b)) exit
+            if (g <= walk%g_far(b)) then
+               ok = .true.
+               exit
+            end if
+            kn = walk%k + walk%sd
+            if (kn < 1 .or. kn > last_k) exit
+            if (b < walk%count) then
+               walk%k = kn
+               walk%idx = b + 1
+            else
+               call enter_interval(spline, walk, kn)
+            end if
+         end do
+         if (ok) then
+            associate (p => walk%p(:, b), q => walk%q(:, b), cz => spline%cz(:, walk%k))
+               u = (g - walk%g_near(b))*walk%inv_span(b)
+               t = walk%t_near(b) + walk%sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
+               ! Everything at the start t, then one Newton step dt: the cubics at t + dt follow
+               ! exactly from their derivatives at t, and 1/η'(t + dt) to second order in the
+               ! relative change of η' (below 1e-6 where dt is this small), so that the point
+               ! costs one division on its critical path instead of three.
+               do attempt = 1, 2
+                  f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+                  df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
+                  d2f = 2.0_wp*p(3) + 6.0_wp*t*p(4)
+                  dq = q(2) + t*(2.0_wp*q(3) + 3.0_wp*t*q(4))
+                  d2q = 2.0_wp*q(3) + 6.0_wp*t*q(4)
+                  zq = q(1) + t*(q(2) + t*(q(3) + t*q(4)))
+                  inv = 1.0_wp/df
+                  dt = -f*inv
+                  if (abs(dt) <= newton_tol .or. attempt == 2) exit
+                  ! A poor start (rare): Newton to convergence, then the point from there.
+                  t = t + dt
+                  do it = 2, max_newton
+                     f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+                     df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
+                     dt = f/df
+                     t = t - dt
+                     if (abs(dt) <= newton_tol) exit
+                  end do
+               end do
+               t1 = t + dt
+               ok = abs(dt) <= newton_tol .and. t1 >= 0.0_wp .and. t1 <= walk%len(b)
+               if (ok) then
+                  e = dt*(d2f + 3.0_wp*p(4)*dt)
+                  df = df + e
+                  e = e*inv
+                  inv = inv*(1.0_wp - e*(1.0_wp - e))
+                  d2f = d2f + 6.0_wp*p(4)*dt
+                  zeta(i) = zq + dt*(dq + dt*(0.5_wp*d2q + q(4)*dt))
+                  dq = dq + dt*(d2q + 3.0_wp*q(4)*dt)
+                  d2q = d2q + 6.0_wp*q(4)*dt
+                  slope(i) = dq*inv
+                  curv(i) = (d2q*df - dq*d2f)*inv**3
+                  v(i) = cz(1) + t1*(cz(2) + t1*(cz(3) + t1*cz(4)))
+                  s(i) = spline%s(walk%k) + t1
+                  walk%last%s = s(i)
+                  walk%last%k = walk%k
+                  walk%last%eta = eta
+                  walk%last%deta = walk%dir*df
+                  walk%last%d2eta = d2f
+               end if
+            end associate
+         end if
+         if (.not. ok) then
+            call walk_to_eta(spline, map, eta, walk%dir, walk%last, pnt, found)
+            if (.not. found) return
+            walk%last = pnt
+            zeta(i) = pnt%zeta
+            slope(i) = pnt%slope
+            curv(i) = pnt%curv
+            v(i) = pnt%v
+            s(i) = pnt%s
+            call enter_interval(spline, walk, pnt%k)
+         end if
+         if (.not. walk%last%deta > min_deta) return
+         n = i
+      end do
+   end subroutine walk_points
 
    !> The point of `spline` at arc length s, mapped by `map`; `dir` = ±1 is the sense in which
    !> s runs along +η (the slope and curvature of the graph do not depend on it; `deta` does).
