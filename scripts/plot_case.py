@@ -1,17 +1,26 @@
 #!/usr/bin/env python3
-"""Plot a shcontact result file (HDF5): the figures of the seed paper for one case or a sweep.
+"""Plot a shcontact result file (HDF5): the figures of the seed paper for one case or a sweep,
+and comparisons of two runs.
 
     python3 scripts/plot_case.py OUT.h5 [--case N] [--patch K] [--outdir DIR] [--prefix NAME]
+        [--x AXIS] [--fix AXIS=VALUE ...] [--curves AXIS] [--abs] [--compare OTHER.h5]
 
 Writes, when the file holds what they need:
 
     NAME_pressure.png   normal pressure on the patch and the strip table (seed Fig. 4)
-    NAME_traction.png   tangential tractions on the wheel as arrows, adhesion and slip areas
-                        and the stick/slip boundary (seed Fig. 5)
+    NAME_traction.png   tangential tractions on the wheel as arrows (with a scale key), adhesion
+                        and slip areas and the stick/slip boundary (seed Fig. 5)
     NAME_geometry.png   gap and lateral relative curvature B(y) of the patch (seed Fig. 3)
-    NAME_creep.png      normalised creep forces |f_x|, |f_y| against the swept input, one curve
-                        per traction bound / spin model (seed Figs 6-7)
+    NAME_creep.png      normalised creep forces f_x, f_y (signed; --abs for |f|) against a
+                        swept input (--x, default the innermost), one curve per bound / spin
+                        model or per value of --curves; every other swept input held at the
+                        value --fix gives (nearest swept value; default its first value)
+    NAME_vs_OTHER_forces.png     with --compare: F_x, F_y, M_z of the cases of both files
+                                 against each other (seed Fig. 8)
+    NAME_vs_OTHER_error_cdf.png  with --compare: distribution (CDF) of the differences of the
+                                 normalised forces over the cases (seed Fig. 9)
 
+The field figures name the case's position, creepages, load and traction bound in their titles.
 NAME defaults to the file name without .h5. The field figures need a case stored with its
 fields (the default for a single case; `&output fields = 'all'` in a sweep).
 Needs h5py, numpy and matplotlib: `scripts/setup --plot` installs them.
@@ -53,6 +62,86 @@ def text(value):
     if isinstance(value, (bytes, np.bytes_)):
         return value.decode("utf-8", "replace")
     return str(value)
+
+
+def namelist_values(namelist):
+    """{name: value text} of the stored namelist (`&group`, `name = value  ! comment`)."""
+    values, group = {}, ""
+    for line in namelist.splitlines():
+        line = line.split("!", 1)[0]
+        if line.lstrip().startswith("&"):
+            group = line.strip()[1:].split()[0].lower() if line.strip()[1:] else ""
+        elif "=" in line:
+            key, value = line.split("=", 1)
+            values[f"{group}%{key.strip().lower()}"] = value.strip().strip("'")
+            values.setdefault(key.strip().lower(), value.strip().strip("'"))
+    return values
+
+
+def case_inputs(f, icase):
+    """{input: value} of case `icase`: the swept inputs from its /summary row, the others from
+    the stored namelist."""
+    values = namelist_values(text(f["input/namelist"][()]))
+    inputs = {}
+    for key in ("t_y", "yaw", "nu_x", "nu_y", "phi", "normal_force", "vertical_force",
+                "approach", "friction", "bound", "spin_model"):
+        if key in values:
+            inputs[key] = values[key]
+    inputs["load_mode"] = values.get("load%mode", "")
+    s = f.get("summary")
+    if s is not None and "case" in s:
+        rows = np.nonzero(s["case"][...] == icase)[0]
+        if rows.size:
+            for key in SWEEP_AXES:
+                if key in s:
+                    v = s[key][rows[0]]
+                    inputs[key] = text(v) if isinstance(v, (bytes, np.bytes_)) else float(v)
+    return inputs
+
+
+def number(value):
+    """A namelist or summary value as a float (nan when it is not a number)."""
+    try:
+        return float(str(value).replace("d", "e").replace("D", "e"))
+    except ValueError:
+        return float("nan")
+
+
+def case_title(f, icase, base):
+    """Title of a field figure: file, case, position, load, creepages, traction bound."""
+    c = case_inputs(f, icase)
+    parts = [f"{base}, case {icase}"]
+    if "t_y" in c:
+        parts.append(f"$t_y$ = {number(c['t_y']):g} mm")
+    load = c.get("load_mode", "")
+    if load == "force" and "normal_force" in c:
+        parts.append(f"N = {number(c['normal_force']) / 1e3:g} kN")
+    elif load == "vertical" and "vertical_force" in c:
+        parts.append(f"$F_z$ = {number(c['vertical_force']) / 1e3:g} kN")
+    elif load == "approach" and "approach" in c:
+        parts.append(rf"$\delta$ = {number(c['approach']):g} mm")
+    line2 = []
+    for key, label, scale in (("nu_x", r"$\nu_x$", 1.0), ("nu_y", r"$\nu_y$", 1.0),
+                              ("phi", r"$\varphi$", 1.0)):
+        if key in c:
+            line2.append(f"{label} = {number(c[key]) * scale:.3g}" +
+                         (" rad/mm" if key == "phi" else ""))
+    if "bound" in c:
+        line2.append(f"bound {c['bound']}")
+    if "spin_model" in c:
+        line2.append(f"spin model {c['spin_model']}")
+    return ", ".join(parts) + "\n" + ", ".join(line2)
+
+
+def nice_number(value):
+    """1, 2 or 5 times a power of ten, at most `value`."""
+    if value <= 0:
+        return 1.0
+    exp = np.floor(np.log10(value))
+    for m in (5.0, 2.0, 1.0):
+        if m * 10 ** exp <= value:
+            return m * 10 ** exp
+    return 10 ** exp
 
 
 def element_rectangles(x, y, dx, dy):
@@ -151,9 +240,13 @@ def plot_traction(group, patch, title, out):
     mask = state[sel] > 0
     mag = np.hypot(px, py)
     scale = mag.max() / (2.0 * max(dx.max() * sj, dy * si)) if mag.max() > 0 else 1.0
-    ax.quiver(x[sel][mask], np.repeat(y[:, None], nx, axis=1)[sel][mask], px[sel][mask],
-              py[sel][mask], angles="xy", scale_units="xy", scale=scale, width=0.0025,
-              color="k")
+    arrows = ax.quiver(x[sel][mask], np.repeat(y[:, None], nx, axis=1)[sel][mask],
+                       px[sel][mask], py[sel][mask], angles="xy", scale_units="xy", scale=scale,
+                       width=0.0025, color="k")
+    # Scale key: an arrow of a round traction near the largest one.
+    key = nice_number(0.8 * mag.max()) if mag.max() > 0 else 1.0
+    ax.quiverkey(arrows, 0.12, 1.02, key, f"{key:g} MPa", labelpos="E", coordinates="axes",
+                 fontproperties={"size": 9})
     xb = stick_slip_boundary(x, state, dx)
     ax.plot(xb, y, color="C3", lw=2, label="stick/slip boundary")
     ax.autoscale_view()
@@ -163,7 +256,7 @@ def plot_traction(group, patch, title, out):
     forces = (f"$F_x$ = {tan['fx'][()]:.0f} N, $F_y$ = {tan['fy'][()]:.0f} N, "
               f"$f_x$ = {tan['fx_norm'][()]:.3f}, $f_y$ = {tan['fy_norm'][()]:.3f}, "
               f"adhesion {100 * tan['adhesion_fraction'][()]:.0f} %")
-    ax.set_title("tangential tractions on the wheel\n" + forces, fontsize=10)
+    ax.set_title("tangential tractions on the wheel\n" + forces, fontsize=10, pad=22)
     ax.legend(handles=[Patch(color="#cfe3f7", label="adhesion"),
                        Patch(color="#f9d9b8", label="slip"),
                        plt.Line2D([], [], color="C3", lw=2, label="stick/slip boundary")],
@@ -228,57 +321,182 @@ def tangential_label(namelist):
     return ", ".join(v for v in (values.get("method"), values.get("bound")) if v)
 
 
-def plot_creep(f, title, out):
-    """Seed Figs 6-7: |f_x| and |f_y| against the innermost swept real input; one curve per
-    combination of the choice inputs (bound, spin model); other swept real inputs of a grid
-    at their first value."""
+def swept_axes(f):
+    """The swept inputs of a /summary table (in a kinematic run, the wheelset inputs that
+    vary)."""
     s = f["summary"]
     namelist = text(f["input/namelist"][()])
     if re.search(r"&kinematics\s+mode\s*=\s*'on'", namelist):
-        swept = [a for a in SWEEP_AXES if a in s and a not in KINEMATIC_RESULTS
-                 and len(np.unique(s[a][...])) > 1]
-    else:
-        swept = [a for a in SWEEP_AXES if a in s]
+        return [a for a in SWEEP_AXES if a in s and a not in KINEMATIC_RESULTS
+                and len(np.unique(s[a][...])) > 1]
+    return [a for a in SWEEP_AXES if a in s]
+
+
+def parse_fixes(fixes):
+    """{axis: value} from ['nu_y=1e-3', ...]."""
+    out = {}
+    for item in fixes or []:
+        if "=" not in item:
+            sys.exit(f"plot_case: --fix takes AXIS=VALUE, not '{item}'")
+        key, value = item.split("=", 1)
+        out[key.strip()] = value.strip()
+    return out
+
+
+def plot_creep(f, title, out, xname=None, fixes=None, curves=None, magnitude=False):
+    """Seed Figs 6-7: f_x and f_y against a swept real input; one curve per combination of the
+    choice inputs (bound, spin model) or per value of `curves`; the other swept inputs of a
+    grid held at the values of `fixes` (nearest swept value) or at their first value."""
+    s = f["summary"]
+    swept = swept_axes(f)
     real_axes = [a for a in swept if a not in ("bound", "spin_model")]
     if not real_axes or len(s["case"]) < 2:
         return False
+    fixes = parse_fixes(fixes)
+    for a in list(fixes) + [xname, curves]:
+        if a is not None and a not in swept:
+            sys.exit(f"plot_case: '{a}' is not a swept input of this file "
+                     f"(swept: {', '.join(swept)})")
     ok = s["status"][...] == 0
-    xname = real_axes[-1]
+    xname = xname or real_axes[-1]
     list_mode = "mode = 'list'" in text(f["input/namelist"][()])
     keep = ok.copy()
-    others, together = [], []
-    for a in real_axes[:-1]:
-        if list_mode:
+    held, together = [], []
+    for a in real_axes:
+        if a in (xname, curves):
+            continue
+        v = s[a][...]
+        if list_mode and a not in fixes:
             together.append(a)  # the i-th values go together
-        else:
-            v = s[a][...]
-            keep &= v == v[0]
-            others.append(f"{a} = {v[0]:g}")
-    labels = [a for a in swept if a in ("bound", "spin_model")]
-    default_label = tangential_label(text(f["input/namelist"][()]))
-    keys = [tuple(text(s[a][i]) for a in labels) for i in range(len(ok))]
+            continue
+        values = np.unique(v)
+        target = number(fixes[a]) if a in fixes else v[0]
+        pick = values[np.argmin(np.abs(values - target))]
+        keep &= v == pick
+        label, scale = AXIS_DISPLAY.get(a, (a, 1.0))
+        held.append(f"{label} = {pick * scale:.4g}")
+    for a in ("bound", "spin_model"):
+        if a in fixes:
+            keep &= np.array([text(t) == fixes[a] for t in s[a][...]])
+            held.append(f"{a} {fixes[a]}")
+    labels = [a for a in swept if a in ("bound", "spin_model") and a not in fixes]
+    if curves is not None:
+        cv = s[curves][...]
+        values = np.unique(cv[keep])
+        if len(values) > 8:  # at most 8 curves, evenly spread
+            values = values[np.round(np.linspace(0, len(values) - 1, 8)).astype(int)]
+        clabel, cscale = AXIS_DISPLAY.get(curves, (curves, 1.0))
+        groups = [(f"{clabel} = {v * cscale:.3g}", keep & (cv == v)) for v in values]
+    else:
+        keys = [tuple(text(s[a][i]) for a in labels) for i in range(len(ok))]
+        default_label = tangential_label(text(f["input/namelist"][()]))
+        groups = [(", ".join(key) if key else default_label,
+                   keep & np.array([k == key for k in keys])) for key in sorted(set(keys))]
     label, scale = AXIS_DISPLAY.get(xname, (xname, 1.0))
     if together:
         label = " = ".join([AXIS_DISPLAY.get(a, (a, 1))[0] for a in together] + [label])
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), sharex=True)
-    for key in sorted(set(keys)):
-        rows = keep & np.array([k == key for k in keys])
+    for name, rows in groups:
         if not rows.any():
             continue
         xv = s[xname][...][rows] * scale
         order = np.argsort(xv)
-        name = ", ".join(key) if key else default_label
-        axes[0].plot(xv[order], np.abs(s["fx_norm"][...][rows])[order], "o-", ms=3, label=name)
-        axes[1].plot(xv[order], np.abs(s["fy_norm"][...][rows])[order], "o-", ms=3, label=name)
+        for ax, comp in zip(axes, ("fx_norm", "fy_norm")):
+            yv = s[comp][...][rows]
+            ax.plot(xv[order], (np.abs(yv) if magnitude else yv)[order], "o-", ms=3,
+                    label=name)
     for ax, comp in zip(axes, ("x", "y")):
         ax.set_xlabel(label)
-        ax.set_ylabel(rf"$|f_{comp}| = |F_{comp}|/(\mu F_n)$")
+        if magnitude:
+            ax.set_ylabel(rf"$|f_{comp}| = |F_{comp}|/(\mu F_n)$")
+            ax.set_ylim(bottom=0)
+        else:
+            ax.set_ylabel(rf"$f_{comp} = F_{comp}/(\mu F_n)$ (on the wheel)")
+            ax.axhline(0.0, color="0.5", lw=0.8)
         ax.grid(alpha=0.3)
-        ax.set_ylim(bottom=0)
-        ax.legend(fontsize=9)
-    if others:
-        title += " (" + ", ".join(others) + ")"
+        ax.legend(fontsize=8)
+    # The inputs that are not swept, so the figure says what it shows.
+    values = namelist_values(text(f["input/namelist"][()]))
+    if not re.search(r"&kinematics\s+mode\s*=\s*'on'", text(f["input/namelist"][()])):
+        for a in ("t_y", "nu_x", "nu_y", "phi"):
+            if a not in swept and a in values:
+                alabel, ascale = AXIS_DISPLAY.get(a, (a, 1.0))
+                held.append(f"{alabel} = {number(values[a]) * ascale:.4g}")
+    if held:
+        title += "\n" + ", ".join(held)
     fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def common_cases(f, g):
+    """Rows of the solved cases both files hold: (rows in f, rows in g)."""
+    cf, cg = f["summary/case"][...], g["summary/case"][...]
+    both = np.intersect1d(cf[f["summary/status"][...] == 0], cg[g["summary/status"][...] == 0])
+    return np.searchsorted(cf, both), np.searchsorted(cg, both)
+
+
+def plot_compare_forces(f, g, names, out):
+    """Seed Fig. 8: F_x, F_y, M_z of the cases of two files against each other."""
+    rf, rg = common_cases(f, g)
+    if rf.size == 0:
+        return False
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.8))
+    for ax, (key, label, scale) in zip(axes, (("fx", "$F_x$ [kN]", 1e-3),
+                                              ("fy", "$F_y$ [kN]", 1e-3),
+                                              ("mz", "$M_z$ [N m]", 1e-3))):
+        a = f["summary/" + key][...][rf] * scale
+        b = g["summary/" + key][...][rg] * scale
+        ax.plot(b, a, ".", ms=2, alpha=0.5, color="C0")
+        lo, hi = min(a.min(), b.min()), max(a.max(), b.max())
+        ax.plot([lo, hi], [lo, hi], color="C3", lw=1, label="equal")
+        ax.set_xlabel(f"{label}, {names[1]}")
+        ax.set_ylabel(f"{label}, {names[0]}")
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, loc="upper left")
+    fig.suptitle(f"{names[0]} against {names[1]}: {rf.size} cases (forces on the wheel)")
+    fig.tight_layout()
+    fig.savefig(out, dpi=130)
+    plt.close(fig)
+    return True
+
+
+def plot_error_cdf(f, g, names, out):
+    """Seed Fig. 9: distribution over the cases of the differences between two files: of the
+    normalised forces (|delta f_x|, |delta f_y|, in units of mu F_n) and the relative
+    difference of the resultant |f|."""
+    rf, rg = common_cases(f, g)
+    if rf.size == 0:
+        return False
+    fx_a, fy_a = f["summary/fx_norm"][...][rf], f["summary/fy_norm"][...][rf]
+    fx_b, fy_b = g["summary/fx_norm"][...][rg], g["summary/fy_norm"][...][rg]
+    res_a, res_b = np.hypot(fx_a, fy_a), np.hypot(fx_b, fy_b)
+    loaded = res_b > 1e-3
+    series = ((r"$|\Delta f_x|$", np.abs(fx_a - fx_b)), (r"$|\Delta f_y|$", np.abs(fy_a - fy_b)),
+              (r"$|\Delta |f||\,/\,|f|$ (cases with $|f| > 10^{-3}$)",
+               np.abs(res_a - res_b)[loaded] / res_b[loaded]))
+    fig, ax = plt.subplots(figsize=(8, 5))
+    floor = 1e-12
+    for label, err in series:
+        e = np.sort(np.maximum(err, floor))
+        p = np.arange(1, e.size + 1) / e.size
+        ax.step(e, p, where="post",
+                label=f"{label}: median {np.median(err):.2g}, 95 % {np.percentile(err, 95):.2g}, "
+                      f"max {err.max():.2g}")
+    ax.set_xscale("log")
+    # From just below the smallest differences that are not zero (equal cases sit at the left).
+    positive = np.concatenate([err[err > floor] for _, err in series])
+    if positive.size:
+        ax.set_xlim(left=10 ** np.floor(np.log10(np.percentile(positive, 0.5))))
+    ax.set_xlabel(f"difference, {names[0]} against {names[1]} (cases with none at the left)")
+    ax.set_ylabel("fraction of cases with a smaller difference")
+    ax.set_ylim(0, 1.02)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="upper left")
+    ax.set_title(f"{names[0]} against {names[1]}: {rf.size} cases")
     fig.tight_layout()
     fig.savefig(out, dpi=130)
     plt.close(fig)
@@ -293,6 +511,16 @@ def main():
     parser.add_argument("--patch", type=int, default=1, help="contact patch (default 1)")
     parser.add_argument("--outdir", default=".", help="directory for the PNGs")
     parser.add_argument("--prefix", help="file name prefix (default: the file name)")
+    parser.add_argument("--x", dest="xaxis", help="swept input on the x-axis of the creep "
+                        "figure (default: the innermost)")
+    parser.add_argument("--fix", action="append", metavar="AXIS=VALUE",
+                        help="hold a swept input at (the swept value nearest to) VALUE in the "
+                        "creep figure; repeatable (default: its first value)")
+    parser.add_argument("--curves", metavar="AXIS", help="one creep curve per value of this "
+                        "swept input (at most 8)")
+    parser.add_argument("--abs", action="store_true", help="plot |f_x|, |f_y| (seed style)")
+    parser.add_argument("--compare", metavar="OTHER.h5", help="also compare the forces of the "
+                        "cases with those of another result file")
     args = parser.parse_args()
     prefix = args.prefix or os.path.splitext(os.path.basename(args.file))[0]
     os.makedirs(args.outdir, exist_ok=True)
@@ -303,7 +531,7 @@ def main():
         group = pick_case(f, args.case)
         title = os.path.basename(args.file)
         if group is not None:
-            title_case = f"{title}, case {int(group.name.split('/')[-1])}"
+            title_case = case_title(f, int(group.name.split("/")[-1]), title)
             for kind, plot in (("pressure", plot_pressure), ("traction", plot_traction)):
                 out = os.path.join(args.outdir, f"{prefix}_{kind}.png")
                 if plot(group, args.patch, title_case, out):
@@ -312,8 +540,19 @@ def main():
         if plot_geometry(f, group, args.patch, title, out):
             written.append(out)
         out = os.path.join(args.outdir, f"{prefix}_creep.png")
-        if "summary" in f and plot_creep(f, title, out):
+        if "summary" in f and plot_creep(f, title, out, args.xaxis, args.fix, args.curves,
+                                         args.abs):
             written.append(out)
+        if args.compare:
+            other = os.path.splitext(os.path.basename(args.compare))[0]
+            names = (os.path.basename(args.file), os.path.basename(args.compare))
+            with h5py.File(args.compare, "r") as g:
+                out = os.path.join(args.outdir, f"{prefix}_vs_{other}_forces.png")
+                if plot_compare_forces(f, g, names, out):
+                    written.append(out)
+                out = os.path.join(args.outdir, f"{prefix}_vs_{other}_error_cdf.png")
+                if plot_error_cdf(f, g, names, out):
+                    written.append(out)
     for name in written:
         print(name)
     if not written:

@@ -6,8 +6,15 @@
 !> library) and with the solver object of this tester to round-off, and every bad call must
 !> return its status. A C driver also counts the heap allocations of shcontact_solve.
 !>
+!> The installed package is also used as a user's project would (issue 15): a modern Fortran
+!> program through pkg-config, the CMake project examples/cmake (find_package(shcontact), target
+!> shcontact::shcontact), the Makefile project examples/makefile, and the fpm project
+!> examples/fpm_dependency (shcontact as a path dependency) built by fpm itself.
+!>
 !> The archive is the newest build/*/shcontact/libshcontact.a (the one `fpm test` just built),
-!> or $SHCONTACT_ARCHIVE. Missing tools (bash, gfortran, gcc, pkg-config, python3) skip a test.
+!> or $SHCONTACT_ARCHIVE; the modules those of the newest build/*/shcontact.mod, or
+!> $SHCONTACT_MODULES. Missing tools (bash, gfortran, gcc, pkg-config, python3, cmake, make,
+!> fpm) skip a test.
 module test_examples
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
@@ -49,6 +56,10 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('install_prefix', test_install), &
+         new_unittest('fortran_api_example', test_fortran_api), &
+         new_unittest('cmake_project', test_cmake), &
+         new_unittest('makefile_project', test_makefile), &
+         new_unittest('fpm_dependency_example', test_fpm_dependency), &
          new_unittest('legacy_f77_example', test_f77), &
          new_unittest('c_example', test_c), &
          new_unittest('python_ctypes_example', test_python), &
@@ -59,7 +70,8 @@ contains
          ]
    end subroutine collect_examples
 
-   !> The scratch install has the shared library, the header and a working pkg-config file.
+   !> The scratch install has the shared library, the header, the library's modules (and only
+   !> them) in include/shcontact, a working pkg-config file and the CMake package files.
    subroutine test_install(error)
       type(error_type), allocatable, intent(out) :: error
       call ensure_installed(error)
@@ -71,7 +83,137 @@ contains
       if (allocated(error)) return
       call check(error, run(pkg_config//' --exists shcontact') == 0, &
          message='pkg-config does not find shcontact.pc')
+      if (allocated(error)) return
+      call check(error, exists(prefix//'/include/shcontact/shcontact.mod') .and. &
+         exists(prefix//'/include/shcontact/shcontact_api_solver.mod'), &
+         message='library modules missing in '//prefix//'/include/shcontact')
+      if (allocated(error)) return
+      ! No module of the app, the benchmark or the validation program; none flat in include/.
+      call check(error, run('ls '//prefix//'/include/*.mod') /= 0 .and. &
+         run('ls '//prefix//'/include/shcontact/ | grep -E "^(shcontact_app|bench_|'// &
+         'validate_)"') /= 0, message='modules other than the library''s installed in '//prefix)
+      if (allocated(error)) return
+      call check(error, exists(prefix//'/lib/cmake/shcontact/shcontactConfig.cmake') .and. &
+         exists(prefix//'/lib/cmake/shcontact/shcontactConfigVersion.cmake'), &
+         message='CMake package files missing in '//prefix//'/lib/cmake/shcontact')
    end subroutine test_install
+
+   !> examples/fortran_api/headline.f90 (`use shcontact`) built with pkg-config's flags.
+   subroutine test_fortran_api(error)
+      type(error_type), allocatable, intent(out) :: error
+      call ensure_installed(error)
+      if (allocated(error)) return
+      call check(error, run('gfortran examples/fortran_api/headline.f90 $('//pkg_config// &
+         ' --cflags --libs shcontact) -o '//scratch//'/fortran_headline 2> '// &
+         output('fortran_build')), 0, message='building examples/fortran_api/headline.f90 '// &
+         'failed: see '//output('fortran_build'))
+      if (allocated(error)) return
+      call run_headline(scratch//'/fortran_headline', 'fortran', error)
+   end subroutine test_fortran_api
+
+   !> The CMake project examples/cmake (modern Fortran, C and F77 programs linked to the
+   !> imported target shcontact::shcontact) configured against the scratch prefix.
+   subroutine test_cmake(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: dir = scratch//'/cmake'
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (run('command -v cmake') /= 0) then
+         call skip_test(error, 'cmake not found (apt-get install cmake)')
+         return
+      end if
+      call check(error, run('rm -rf '//dir//' && cmake -S examples/cmake -B '//dir// &
+         ' -DCMAKE_PREFIX_PATH=$(pwd)/'//prefix//' > '//output('cmake_configure')//' 2>&1'), 0, &
+         message='cmake could not configure examples/cmake: see '//output('cmake_configure'))
+      if (allocated(error)) return
+      call check(error, run('cmake --build '//dir//' > '//output('cmake_build')//' 2>&1'), 0, &
+         message='cmake --build failed: see '//output('cmake_build'))
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_fortran', 'cmake_fortran', error)
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_c', 'cmake_c', error)
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_f77', 'cmake_f77', error)
+   end subroutine test_cmake
+
+   !> The Makefile project examples/makefile, with the scratch prefix's pkg-config file.
+   subroutine test_makefile(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: dir = scratch//'/make'
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (run('command -v make') /= 0) then
+         call skip_test(error, 'make not found')
+         return
+      end if
+      call check(error, run('rm -rf '//dir//' && PKG_CONFIG_PATH=$(pwd)/'//prefix// &
+         '/lib/pkgconfig make -C examples/makefile OUT=$(pwd)/'//dir//' > '// &
+         output('make_build')//' 2>&1'), 0, message='make failed: see '//output('make_build'))
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_fortran', 'make_fortran', error)
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_c', 'make_c', error)
+      if (allocated(error)) return
+      call run_headline(dir//'/headline_f77', 'make_f77', error)
+   end subroutine test_makefile
+
+   !> examples/fpm_dependency built and run by fpm: a copy under the scratch directory whose
+   !> path dependency points back at this repository.
+   subroutine test_fpm_dependency(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: dir = scratch//'/fpm_dependency'
+      if (run('command -v fpm') /= 0) then
+         call skip_test(error, 'fpm not found')
+         return
+      end if
+      call check(error, run('grep -q ''^shcontact.path = "../.."'' examples/fpm_dependency/'// &
+         'fpm.toml') == 0, message='examples/fpm_dependency/fpm.toml: shcontact.path is not '// &
+         '"../.."')
+      if (allocated(error)) return
+      call check(error, run('mkdir -p '//scratch//' && rm -rf '//dir//' && mkdir '//dir// &
+         ' && cp -r examples/fpm_dependency/fpm.toml examples/fpm_dependency/app '//dir// &
+         ' && sed -i ''s|^shcontact.path = "../.."|shcontact.path = "../../.."|'' '//dir// &
+         '/fpm.toml'), 0, message='cannot copy examples/fpm_dependency to '//dir)
+      if (allocated(error)) return
+      call check(error, run('cd '//dir//' && fpm build > ../fpm_dependency_build.out 2>&1'), 0, &
+         message='fpm build of examples/fpm_dependency failed: see '// &
+         output('fpm_dependency_build'))
+      if (allocated(error)) return
+      call run_headline('cd '//dir//' && fpm run --', 'fpm_dependency', error)
+   end subroutine test_fpm_dependency
+
+   !> Run a headline program and compare its forces with the solver object of this tester.
+   subroutine run_headline(command, name, error)
+      character(len=*), intent(in) :: command, name
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_result_type) :: expected
+      character(len=2), parameter :: force_keys(4) = ['fx', 'fy', 'mz', 'fn']
+      real(wp) :: found(4)
+      integer :: i
+
+      call check(error, run('( '//command//' ) > '//output(name)), 0, &
+         message='the '//name//' program failed: see '//output(name))
+      if (allocated(error)) return
+      call headline_result(expected, error)
+      if (allocated(error)) return
+      do i = 1, 4
+         found(i) = value_of(output(name), force_keys(i))
+      end do
+      call check(error, all(found < huge(1.0_wp)), message=output(name)//': fx, fy, mz or fn '// &
+         'missing')
+      if (allocated(error)) return
+      call check(error, found(1), expected%main%fx, rel=.true., thr=round_off, &
+         message=name//': fx')
+      if (allocated(error)) return
+      call check(error, found(2), expected%main%fy, rel=.true., thr=round_off, &
+         message=name//': fy')
+      if (allocated(error)) return
+      call check(error, found(3), expected%main%mz, rel=.true., thr=round_off, &
+         message=name//': mz')
+      if (allocated(error)) return
+      call check(error, found(4), expected%main%fn, rel=.true., thr=round_off, &
+         message=name//': fn')
+   end subroutine run_headline
 
    !> The fixed-form Fortran 77 example.
    subroutine test_f77(error)
@@ -424,15 +566,16 @@ contains
    subroutine ensure_installed(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: find_archive = 'a=${SHCONTACT_ARCHIVE:-$(ls -t '// &
-         'build/*/shcontact/libshcontact.a 2>/dev/null | head -1)}; [ -n "$a" ] && '
+         'build/*/shcontact/libshcontact.a 2>/dev/null | head -1)}; [ -n "$a" ] && '// &
+         'm=${SHCONTACT_MODULES:-$(dirname $(ls -t build/*/shcontact.mod | head -1))}; '
 
       if (install_state == 0) then
          install_state = 3
          if (run('command -v gfortran && command -v pkg-config') == 0) then
             install_state = 2
             if (run('rm -rf '//scratch//' && mkdir -p '//scratch//' && '//find_archive// &
-               'scripts/install --archive "$a" --prefix '//prefix//' 2> '//scratch// &
-               '/install.log') == 0) install_state = 1
+               'scripts/install --archive "$a" --modules "$m" --prefix '//prefix//' 2> '// &
+               scratch//'/install.log') == 0) install_state = 1
          end if
       end if
       select case (install_state)

@@ -1,6 +1,9 @@
 !> Tests of the HDF5 layer: datasets and attributes read back exactly, units on every dataset,
 !> files appear under their final name only when complete, failures leave nothing behind, and
-!> result files of one run merge into the file of an unsplit run.
+!> result files of one run merge into the file of an unsplit run; a merged file describes its
+!> datasets (long_name), ties the tables to their coordinates (dimension scales), records its
+!> provenance and gets an XDMF sidecar that matches it (and that ParaView opens, when pvbatch is
+!> installed).
 module test_hdf5io
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp, i1
@@ -12,6 +15,7 @@ module test_hdf5io
    use shcontact_io_config, only: case_config_type, load_config, config_namelist
    use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
       read_result_summary
+   use shcontact_io_xdmf, only: xdmf_name
    use shcontact_case_result, only: case_result_type, case_summary_type
    use shcontact_tangential_patch, only: state_adhesion, state_slip
    implicit none
@@ -29,6 +33,8 @@ contains
          new_unittest('unwritable_output', test_unwritable), &
          new_unittest('copy_between_files', test_copy), &
          new_unittest('result_files_merge', test_merge), &
+         new_unittest('descriptions_scales_provenance', test_described), &
+         new_unittest('xdmf_sidecar_matches_file', test_xdmf), &
          new_unittest('merge_rejects_mismatch', test_merge_errors) &
          ]
    end subroutine collect_hdf5io
@@ -334,7 +340,154 @@ contains
       if (delete_file(part1)) continue
       if (delete_file(part2)) continue
       if (delete_file(merged)) continue
+      if (delete_file(xdmf_name(merged))) continue
    end subroutine test_merge
+
+   !> A merged result file (per-case groups copied between files): every dataset has a
+   !> `long_name`, the summary columns and the element fields have their dimension scales
+   !> (summary/case, the strip centres y), the root records the provenance.
+   subroutine test_described(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: merged
+      call merged_run('described', merged, error)
+      if (allocated(error)) return
+      call check_described(merged, error)
+      if (delete_file(merged)) continue
+      if (delete_file(xdmf_name(merged))) continue
+   end subroutine test_described
+
+   subroutine check_described(merged, error)
+      character(len=*), intent(in) :: merged
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: tan = 'cases/000005/patch_1/tangential/'
+      character(len=*), parameter :: described(5) = [character(len=40) :: 'summary/fx', &
+         'summary/nu_x', tan//'px', tan//'state', 'input/namelist']
+      character(len=*), parameter :: root(5) = [character(len=16) :: 'git_revision', &
+         'compiler', 'compiler_options', 'host', 'version']
+      type(h5_file_type) :: f
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: text
+      integer :: i, threads
+
+      call h5_open(f, merged, lerr)
+      call fail_on(error, lerr, 'open')
+      if (allocated(error)) return
+      do i = 1, size(described)
+         call h5_read_attribute(f, trim(described(i)), 'long_name', text, lerr)
+         if (allocated(lerr)) exit
+         call check(error, len(text) > 10, message=trim(described(i))//': empty long_name')
+         if (allocated(error)) exit
+      end do
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(f, tan//'y', 'CLASS', text, lerr)
+         if (.not. allocated(lerr)) call check(error, text, 'DIMENSION_SCALE', &
+            message=tan//'y is not a dimension scale')
+      end if
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(f, 'summary/case', 'CLASS', text, lerr)
+         if (.not. allocated(lerr)) call check(error, text, 'DIMENSION_SCALE', &
+            message='summary/case is not a dimension scale')
+      end if
+      do i = 1, size(root)
+         if (allocated(lerr) .or. allocated(error)) exit
+         call h5_read_attribute(f, '/', trim(root(i)), text, lerr)
+         if (.not. allocated(lerr)) call check(error, len(text) > 0, &
+            message='root attribute '//trim(root(i))//' is empty')
+      end do
+      if (.not. allocated(lerr) .and. .not. allocated(error)) then
+         call h5_read_attribute(f, '/', 'threads', threads, lerr)
+         if (.not. allocated(lerr)) call check(error, threads >= 1, message='threads')
+      end if
+      call h5_close(f)
+      call fail_on(error, lerr, 'attribute')
+      if (allocated(error)) return
+      ! The references of the dimension scales, checked by h5py when it is there.
+      if (have_python_h5py()) call check(error, run_quiet('python3 scripts/check_xdmf.py '// &
+         '--attributes '//xdmf_name(merged)), 0, message='scripts/check_xdmf.py --attributes '// &
+         xdmf_name(merged)//' reports a problem')
+   end subroutine check_described
+
+   !> The XDMF sidecar of a merged file: written under its final name only (no temporary
+   !> left), every DataItem refers to a dataset of the HDF5 file with the declared shape and
+   !> type (scripts/check_xdmf.py, with h5py) and ParaView opens it (with pvbatch).
+   subroutine test_xdmf(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: merged, xmf, text
+      integer :: unit, stat, n_grid
+      character(len=512) :: line
+
+      call merged_run('xdmf', merged, error)
+      if (allocated(error)) return
+      xmf = xdmf_name(merged)
+      call check(error, file_exists(xmf), message='no sidecar '//xmf)
+      if (allocated(error)) return
+      call check(error, run_quiet('ls '//xmf//'.tmp*'), 2, message='temporary sidecar left')
+      if (allocated(error)) return
+      ! Five cases with fields (case 4 failed), one patch each.
+      n_grid = 0
+      text = ''
+      open (newunit=unit, file=xmf, status='old', action='read')
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (index(line, 'TopologyType="2DSMesh" Dimensions="1 2"') > 0) n_grid = n_grid + 1
+         if (index(line, '/cases/000004/') > 0) text = trim(line)
+      end do
+      close (unit)
+      call check(error, n_grid, 5, message='patch grids in '//xmf)
+      if (allocated(error)) return
+      call check(error, len(text), 0, message='failed case 4 in the sidecar: '//text)
+      if (allocated(error)) return
+      if (have_python_h5py()) then
+         call check(error, run_quiet('python3 scripts/check_xdmf.py '//xmf), 0, &
+            message='scripts/check_xdmf.py '//xmf//' reports a problem')
+         if (allocated(error)) return
+      end if
+      if (run_quiet('command -v pvbatch') == 0) then
+         call check(error, run_quiet('pvbatch scripts/check_xdmf.py --paraview '//xmf), 0, &
+            message='ParaView (pvbatch) cannot open '//xmf)
+         if (allocated(error)) return
+      end if
+      if (delete_file(merged)) continue
+      if (delete_file(xmf)) continue
+   end subroutine test_xdmf
+
+   !> The synthetic run written in two parts and merged into `merged` (as the app does).
+   subroutine merged_run(tag, merged, error)
+      character(len=*), intent(in) :: tag
+      character(len=:), allocatable, intent(out) :: merged
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: config
+      type(run_info_type) :: info
+      type(case_result_type) :: results(6)
+      type(lib_error), allocatable :: lerr
+      character(len=:), allocatable :: part1, part2
+      call synthetic_run(config, info, results)
+      part1 = scratch(tag//'_part1')
+      part2 = scratch(tag//'_part2')
+      merged = scratch(tag//'_merged')
+      call write_result_file(part1, info, config, [1, 2, 3], results(1:3), lerr)
+      if (.not. allocated(lerr)) call write_result_file(part2, info, config, [4, 5, 6], &
+         results(4:6), lerr)
+      if (.not. allocated(lerr)) call merge_result_files(merged, [string_type(part1), &
+         string_type(part2)], 'test', info%date, lerr, threads=3)
+      if (delete_file(part1)) continue
+      if (delete_file(part2)) continue
+      call fail_on(error, lerr, 'write and merge')
+   end subroutine merged_run
+
+   !> True when python3 can import h5py (else the Python checks are left out).
+   logical function have_python_h5py()
+      have_python_h5py = run_quiet('python3 -c "import h5py, numpy"') == 0
+   end function have_python_h5py
+
+   !> Exit status of a shell command, its output discarded.
+   integer function run_quiet(command) result(stat)
+      character(len=*), intent(in) :: command
+      integer :: cmdstat
+      call execute_command_line(command//' > /dev/null 2>&1', exitstat=stat, cmdstat=cmdstat)
+      if (cmdstat /= 0) stat = -1
+   end function run_quiet
 
    subroutine test_merge_errors(error)
       type(error_type), allocatable, intent(out) :: error

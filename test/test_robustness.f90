@@ -297,9 +297,10 @@ contains
       call check(error, .not. file_exists(dir//'/sub/out.h5.partial'), &
          message='the checkpoint directory (and the temporaries) are removed')
       if (allocated(error)) return
-      call shell('h5dump -d /summary/fy '//dir//'/whole/out.h5 | tail -n +2 > '//dir// &
-         '/a.txt && h5dump -d /summary/fy '//dir//'/sub/out.h5 | tail -n +2 > '//dir// &
-         '/b.txt && cmp -s '//dir//'/a.txt '//dir//'/b.txt', stat)
+      ! The data only (-o: the attributes hold references that differ from file to file).
+      call shell('h5dump -y -d /summary/fy -o '//dir//'/a.txt '//dir//'/whole/out.h5 > '// &
+         '/dev/null && h5dump -y -d /summary/fy -o '//dir//'/b.txt '//dir//'/sub/out.h5 > '// &
+         '/dev/null && test -s '//dir//'/a.txt && cmp -s '//dir//'/a.txt '//dir//'/b.txt', stat)
       call check(error, stat, 0, message='the resumed forces equal the uninterrupted ones')
       call shell('rm -rf '//dir)
    end subroutine test_resume_elsewhere

@@ -1,13 +1,15 @@
 !> HDF5 behind one module: files written under a temporary name and renamed when complete,
-!> datasets with a `units` attribute, optional deflate compression, every handle closed on every
-!> path, errors as values (the HDF5 library's own error printing is switched off).
+!> datasets with a `units` attribute (and a `long_name` when the file was created with a
+!> description function), dimension scales (H5DS), optional deflate compression, every handle
+!> closed on every path, errors as values (the HDF5 library's own error printing is switched
+!> off).
 !>
 !> Paths are slash-separated from the root (`cases/000001/patch_1/normal/a`); missing
 !> intermediate groups are created. Object modification times are not recorded, so the same
 !> content written in the same order gives the same bytes. Fortran arrays keep their memory
 !> order: a Fortran (n1, n2) array is seen by C and h5py as shape (n2, n1).
 module shcontact_io_hdf5
-   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
+   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_int, c_char, c_null_char
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
       h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
       H5P_DATASET_CREATE_F, H5P_LINK_CREATE_F, H5P_GROUP_CREATE_F, h5pset_chunk_f, &
@@ -19,7 +21,7 @@ module shcontact_io_hdf5
       H5T_NATIVE_INTEGER, H5T_STD_I8LE, H5T_STD_I32LE, H5T_IEEE_F64LE, h5kind_to_type, &
       H5_INTEGER_KIND, h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, &
       h5aexists_by_name_f, h5aget_type_f, h5gcreate_f, h5gclose_f, h5ocopy_f, h5lexists_f, &
-      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE
+      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE, h5tget_class_f, H5T_FLOAT_F, h5adelete_f
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    use shcontact_io_files, only: rename_file, delete_file, process_id
@@ -30,6 +32,44 @@ module shcontact_io_hdf5
    public :: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, h5_close
    public :: h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists
    public :: h5_read, h5_read_attribute, h5_dataset_size
+   public :: h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_dataset_info, h5_delete_attribute
+   public :: description_function
+
+   ! HDF5's high-level dimension-scale functions, called in C directly: fpm 0.12's hdf5
+   ! metapackage links the high-level libraries but does not know their Fortran module h5ds.
+   interface
+      !> H5DSset_scale: make a dataset a dimension scale.
+      function c_h5ds_set_scale(dsid, dimname) result(status) bind(C, name='H5DSset_scale')
+         import :: hid_t, c_char, c_int
+         integer(hid_t), value, intent(in) :: dsid
+         character(kind=c_char), intent(in) :: dimname(*)
+         integer(c_int) :: status
+      end function c_h5ds_set_scale
+      !> H5DSattach_scale: attach a scale to dimension idx (C order) of a dataset.
+      function c_h5ds_attach_scale(did, dsid, idx) result(status) &
+         bind(C, name='H5DSattach_scale')
+         import :: hid_t, c_int
+         integer(hid_t), value, intent(in) :: did, dsid
+         integer(c_int), value, intent(in) :: idx
+         integer(c_int) :: status
+      end function c_h5ds_attach_scale
+      !> H5DSset_label: label dimension idx (C order) of a dataset.
+      function c_h5ds_set_label(did, idx, label) result(status) bind(C, name='H5DSset_label')
+         import :: hid_t, c_char, c_int
+         integer(hid_t), value, intent(in) :: did
+         integer(c_int), value, intent(in) :: idx
+         character(kind=c_char), intent(in) :: label(*)
+         integer(c_int) :: status
+      end function c_h5ds_set_label
+   end interface
+
+   abstract interface
+      !> The `long_name` of the dataset at `path` ('' for none).
+      pure subroutine description_function(path, text)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable, intent(out) :: text
+      end subroutine description_function
+   end interface
 
    !> An open HDF5 file.
    type :: h5_file_type
@@ -43,12 +83,15 @@ module shcontact_io_hdf5
       integer :: compression = 0
       !> Store real datasets written with `compress = .true.` as 32-bit floats.
       logical :: single = .false.
+      !> Gives every dataset written its `long_name` attribute, when associated.
+      procedure(description_function), pointer, nopass :: describe => null()
    end type h5_file_type
 
-   !> Write a dataset (real, integer, int8 or text; scalar, 1-D or 2-D) with its units.
+   !> Write a dataset (real: scalar to 3-D; integer, int8 or text; scalar, 1-D or 2-D) with its
+   !> units.
    interface h5_write
-      module procedure :: write_real_0d, write_real_1d, write_real_2d, write_int_0d, &
-         write_int_1d, write_int8_2d, write_text_0d, write_text_1d
+      module procedure :: write_real_0d, write_real_1d, write_real_2d, write_real_3d, &
+         write_int_0d, write_int_1d, write_int8_2d, write_text_0d, write_text_1d
    end interface h5_write
 
    !> Write a scalar attribute (text, real or integer) on a group or dataset.
@@ -90,7 +133,7 @@ contains
 
    !> Create `name` for writing; the data go to `name.tmp<pid>` (or `temp_name`) until
    !> [[h5_commit]].
-   subroutine h5_create(file, name, error, compression, single, temp_name)
+   subroutine h5_create(file, name, error, compression, single, temp_name, describe)
       !> The new file.
       type(h5_file_type), intent(out) :: file
       !> Final file name.
@@ -104,10 +147,13 @@ contains
       !> Temporary name to write to (in the same file system as `name`); a name the caller can
       !> find again to clean up after a kill, e.g. inside a checkpoint directory.
       character(len=*), intent(in), optional :: temp_name
+      !> The description of each dataset, written as its `long_name` attribute.
+      procedure(description_function), optional :: describe
       integer :: stat
 
       call start_library(error)
       if (allocated(error)) return
+      if (present(describe)) file%describe => describe
       file%name = name
       file%temp_name = name//'.tmp'//str_int(process_id())
       if (present(temp_name)) file%temp_name = temp_name
@@ -241,7 +287,8 @@ contains
       end do
    end function h5_exists
 
-   !> Copy an object (a group with everything under it, or a dataset) between files.
+   !> Copy an object (a group with everything under it, or a dataset) between files. Object
+   !> references (dimension scales) do not survive a copy to another file: attach them again.
    subroutine h5_copy(source, path, target, target_path, error)
       !> File to copy from.
       type(h5_file_type), intent(in) :: source
@@ -323,6 +370,7 @@ contains
       integer, intent(in) :: stat
       character(len=*), intent(in) :: units
       type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
       integer :: s
       if (stat /= 0) then
          call h5dclose_f(dset, s)
@@ -330,6 +378,10 @@ contains
          return
       end if
       call put_text_attribute(dset, 'units', units, s)
+      if (s == 0 .and. associated(file%describe)) then
+         call file%describe(path, text)
+         call put_description(dset, text, s)
+      end if
       call h5dclose_f(dset, s)
       if (s /= 0) call fail(error, file, path, 'cannot write the units of the dataset')
    end subroutine finish_dataset
@@ -405,6 +457,32 @@ contains
       call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
       call finish_dataset(file, path, dset, stat, units, error)
    end subroutine write_real_2d
+
+   subroutine write_real_3d(file, path, values, units, error, compress)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The values (seen as shape (n3, n2, n1) from C and h5py).
+      real(wp), intent(in) :: values(:, :, :)
+      !> Their units ('1' for dimensionless).
+      character(len=*), intent(in) :: units
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      !> Apply the file's compression and precision settings (a per-element field).
+      logical, intent(in), optional :: compress
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(3)
+      integer :: stat
+      logical :: pack
+      pack = .false.
+      if (present(compress)) pack = compress
+      dims = shape(values, kind=hsize_t)
+      call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
+      if (allocated(error)) return
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call finish_dataset(file, path, dset, stat, units, error)
+   end subroutine write_real_3d
 
    subroutine write_int_0d(file, path, value, units, error)
       !> The file.
@@ -587,6 +665,184 @@ contains
       call h5tclose_f(str, s)
       call h5sclose_f(space, s)
    end subroutine put_text_attribute
+
+   !> Write the `long_name` attribute (nothing for an empty description).
+   subroutine put_description(obj, text, stat)
+      integer(hid_t), intent(in) :: obj
+      character(len=*), intent(in) :: text
+      integer, intent(out) :: stat
+      stat = 0
+      if (len(text) > 0) call put_text_attribute(obj, 'long_name', text, stat)
+   end subroutine put_description
+
+   ! ------------------------------------------------------------------------------------------
+   ! Dimension scales (HDF5 high-level library, H5DS)
+   ! ------------------------------------------------------------------------------------------
+
+   !> Make the dataset at `path` a dimension scale named `name`.
+   subroutine h5_set_scale(file, path, name, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path (a 1-D dataset).
+      character(len=*), intent(in) :: path
+      !> Name of the dimension it measures.
+      character(len=*), intent(in) :: name
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer :: stat, s
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot open the dataset')
+         return
+      end if
+      stat = int(c_h5ds_set_scale(dset, c_text(name)))
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot make it a dimension scale')
+   end subroutine h5_set_scale
+
+   !> Attach the dimension scale at `scale_path` to dimension `dim` of the dataset at `path`.
+   subroutine h5_attach_scale(file, path, scale_path, dim, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Path of a dataset made a scale by [[h5_set_scale]].
+      character(len=*), intent(in) :: scale_path
+      !> Dimension of the Fortran array written (1 is the fastest; C and h5py see it last).
+      integer, intent(in) :: dim
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, scale
+      integer :: stat, s
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot open the dataset')
+         return
+      end if
+      call h5dopen_f(file%id, scale_path, scale, stat)
+      if (stat == 0) then
+         stat = int(c_h5ds_attach_scale(dset, scale, c_dimension(dset, dim)))
+         call h5dclose_f(scale, s)
+      end if
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot attach the dimension scale '// &
+         scale_path)
+   end subroutine h5_attach_scale
+
+   !> Label dimension `dim` (Fortran order, as in [[h5_attach_scale]]) of a dataset.
+   subroutine h5_set_dim_label(file, path, dim, label, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Dimension of the Fortran array written.
+      integer, intent(in) :: dim
+      !> The label.
+      character(len=*), intent(in) :: label
+      !> Set on failure.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset
+      integer :: stat, s
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot open the dataset')
+         return
+      end if
+      stat = int(c_h5ds_set_label(dset, c_dimension(dset, dim), c_text(label)))
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot label dimension '//str_int(dim))
+   end subroutine h5_set_dim_label
+
+   !> The C index (0-based, slowest first) of dimension `dim` (Fortran order) of a dataset.
+   integer(c_int) function c_dimension(dset, dim)
+      integer(hid_t), intent(in) :: dset
+      integer, intent(in) :: dim
+      integer(hid_t) :: space
+      integer :: rank, s
+      call h5dget_space_f(dset, space, s)
+      call h5sget_simple_extent_ndims_f(space, rank, s)
+      call h5sclose_f(space, s)
+      c_dimension = int(rank - dim, c_int)
+   end function c_dimension
+
+   !> A NUL-terminated copy of a text, for C.
+   pure function c_text(text) result(c)
+      character(len=*), intent(in) :: text
+      character(kind=c_char) :: c(len(text) + 1)
+      integer :: i
+      do i = 1, len(text)
+         c(i) = text(i:i)
+      end do
+      c(len(text) + 1) = c_null_char
+   end function c_text
+
+   !> Shape (Fortran order), element size in bytes and kind (float or not) of a dataset.
+   subroutine h5_dataset_info(file, path, dims, type_size, is_float, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Its extent, as the Fortran array it was written from (empty for a scalar).
+      integer, allocatable, intent(out) :: dims(:)
+      !> Bytes per element.
+      integer, intent(out) :: type_size
+      !> True for a floating-point dataset.
+      logical, intent(out) :: is_float
+      !> Set when it does not exist or cannot be read.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, space, dtype
+      integer(hsize_t) :: d(8), maxd(8)
+      integer(size_t) :: n
+      integer :: stat, s, ndims, class
+      type_size = 0
+      is_float = .false.
+      allocate (dims(0))
+      if (.not. h5_exists(file, path)) then
+         call fail(error, file, path, 'no such dataset')
+         return
+      end if
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) then
+         call fail(error, file, path, 'cannot open the dataset')
+         return
+      end if
+      call h5dget_space_f(dset, space, s)
+      call h5sget_simple_extent_ndims_f(space, ndims, s)
+      ndims = min(max(ndims, 0), size(d))
+      if (ndims > 0) call h5sget_simple_extent_dims_f(space, d(1:ndims), maxd(1:ndims), s)
+      dims = int(d(1:ndims))
+      call h5sclose_f(space, s)
+      call h5dget_type_f(dset, dtype, s)
+      call h5tget_size_f(dtype, n, s)
+      call h5tget_class_f(dtype, class, s)
+      type_size = int(n)
+      is_float = class == H5T_FLOAT_F
+      call h5tclose_f(dtype, s)
+      call h5dclose_f(dset, s)
+   end subroutine h5_dataset_info
+
+   !> Delete an attribute of an object, when it has one.
+   subroutine h5_delete_attribute(file, path, name, error)
+      !> The file.
+      type(h5_file_type), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Set when it exists and cannot be deleted.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj
+      logical :: exists
+      integer :: stat, s
+      call h5aexists_by_name_f(file%id, path, name, exists, stat)
+      if (stat /= 0 .or. .not. exists) return
+      call open_object(file, path, obj, error)
+      if (allocated(error)) return
+      call h5adelete_f(obj, name, stat)
+      call h5oclose_f(obj, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot delete the attribute '//name)
+   end subroutine h5_delete_attribute
 
    !> Open the object at `path` ('/' for the root).
    subroutine open_object(file, path, obj, error)

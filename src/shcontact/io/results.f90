@@ -16,7 +16,16 @@
 !>     /failures/case, message           the cases that failed, and why
 !>     /cases/NNNNNN/patch_K/{geometry,normal,tangential}/...   per-case fields, when asked
 !>
-!> Every dataset has a `units` attribute ('1' for dimensionless numbers, '' for text). A merge
+!> Every dataset has a `units` attribute ('1' for dimensionless numbers, '' for text) and a
+!> `long_name` saying what it is (shcontact_io_descriptions). Dimension scales (HDF5 H5DS) tie
+!> the tables to their coordinate: the summary columns to `summary/case`, the strip tables to
+!> their `y`, the element fields (pn, px, py, slip, state, x, xy) to the strip centres `y`
+!> along their strip dimension; their element dimension is labelled, and their `coordinates`
+!> attribute names x (2-D) and y. `xy` holds the element centres (x, y) interleaved, the mesh
+!> of the XDMF sidecar. The root also records provenance:
+!> git_revision, compiler, compiler_options, host, threads (shcontact_io_provenance).
+!> The final file of a run (a merge) gets an XDMF sidecar NAME.xmf (shcontact_io_xdmf) when it
+!> holds element fields, so ParaView opens them directly. A merge
 !> of the files of one run is identical, dataset for dataset, to the file of an uninterrupted,
 !> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
 module shcontact_io_results
@@ -35,7 +44,11 @@ module shcontact_io_results
       sweep_axis_names, axis_geometry, case_point_type, case_point_value
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
-      h5_read_attribute
+      h5_read_attribute, h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_delete_attribute
+   use shcontact_io_descriptions, only: describe_dataset
+   use shcontact_io_provenance, only: git_revision, build_compiler, build_flags, host_name, &
+      available_threads
+   use shcontact_io_xdmf, only: write_xdmf_sidecar
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
@@ -58,6 +71,15 @@ module shcontact_io_results
       'the rail). Tractions and forces act on the wheel (F_x = -G c^2 c11 nu_x in linear '// &
       'theory). CONTACT reports the rail side of both: both signs flip.'
 
+   !> Tables of a patch geometry group, of the normal strips and element fields: the datasets
+   !> their group's `y` is the dimension scale of.
+   character(len=*), parameter :: geometry_tables(5) = [character(len=8) :: 'gap', 'curv_a', &
+      'curv_b', 'gamma', 'r_wheel']
+   character(len=*), parameter :: strip_tables(10) = [character(len=10) :: 'a', 'k', 'p0', &
+      'strip_load', 'm', 'n', 'eps_a', 'gamma', 'delta_r', 'r_wheel']
+   character(len=*), parameter :: element_fields(6) = [character(len=5) :: 'x', 'pn', 'px', &
+      'py', 'slip', 'state']
+
    !> What every result file of a run carries besides the cases.
    type :: run_info_type
       !> The resolved configuration as namelist text.
@@ -72,6 +94,8 @@ module shcontact_io_results
       type(profile_type), allocatable :: profiles(:)
       !> The patch geometry, when every case shares it.
       type(patch_geometry_type), allocatable :: geometry(:)
+      !> OpenMP threads of the run (0: those available when the file is written).
+      integer :: threads = 0
    end type run_info_type
 
 contains
@@ -113,7 +137,8 @@ contains
       integer :: i
 
       call h5_create(file, name, error, compression=config%output%compression, &
-         single=config%output%precision == 'single', temp_name=temp_name)
+         single=config%output%precision == 'single', temp_name=temp_name, &
+         describe=describe_dataset)
       if (allocated(error)) return
       call write_header(file, info, size(indices), error)
       summaries = results%summary
@@ -181,7 +206,80 @@ contains
          if (len(info%shard) > 0 .and. .not. allocated(error)) &
             call h5_write_attribute(file, '/', 'shard', info%shard, error)
       end if
+      if (.not. allocated(error)) call write_provenance(file, info, error)
    end subroutine write_root_attributes
+
+   !> Where the file comes from: sources, compiler and flags, host, threads.
+   subroutine write_provenance(file, info, error)
+      type(h5_file_type), intent(in) :: file
+      type(run_info_type), intent(in) :: info
+      type(error_type), allocatable, intent(out) :: error
+      integer :: threads
+      threads = info%threads
+      if (threads <= 0) threads = available_threads()
+      call h5_write_attribute(file, '/', 'git_revision', git_revision(), error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'compiler', &
+         build_compiler(), error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'compiler_options', &
+         build_flags(), error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'host', host_name(), error)
+      if (.not. allocated(error)) call h5_write_attribute(file, '/', 'threads', threads, error)
+   end subroutine write_provenance
+
+   !> Make `group/scale` a dimension scale and attach it to dimension `dim` of those datasets
+   !> of `names` that exist in the group.
+   subroutine attach_scale(file, group, scale, dimension_name, names, dim, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: group, scale, dimension_name
+      character(len=*), intent(in) :: names(:)
+      integer, intent(in) :: dim
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scale_attributes(3) = [character(len=14) :: &
+         'REFERENCE_LIST', 'CLASS', 'NAME']
+      integer :: i
+      if (.not. h5_exists(file, group//'/'//scale)) return
+      ! A group copied from another file keeps its attributes but not the objects their
+      ! references point to: start afresh.
+      do i = 1, size(scale_attributes)
+         call h5_delete_attribute(file, group//'/'//scale, trim(scale_attributes(i)), error)
+         if (allocated(error)) return
+      end do
+      call h5_set_scale(file, group//'/'//scale, dimension_name, error)
+      do i = 1, size(names)
+         if (allocated(error)) return
+         if (.not. h5_exists(file, group//'/'//trim(names(i)))) cycle
+         call h5_delete_attribute(file, group//'/'//trim(names(i)), 'DIMENSION_LIST', error)
+         if (.not. allocated(error)) call h5_attach_scale(file, group//'/'//trim(names(i)), &
+            group//'/'//scale, dim, error)
+      end do
+   end subroutine attach_scale
+
+   !> The dimension scales of a patch group (`.../patch_K` with geometry, normal, tangential),
+   !> or of a common geometry group (`geometry/patch_K`): again after a copy between files.
+   subroutine attach_patch_scales(file, patch, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: patch
+      type(error_type), allocatable, intent(out) :: error
+      call attach_scale(file, patch, 'y', 'y (lateral, from the reference point)', &
+         geometry_tables, 1, error)
+      if (.not. allocated(error)) call attach_scale(file, patch//'/geometry', 'y', &
+         'y (lateral, from the reference point)', geometry_tables, 1, error)
+      if (.not. allocated(error)) call attach_scale(file, patch//'/normal', 'y', &
+         'y (strip centre)', strip_tables, 1, error)
+      if (.not. allocated(error)) call attach_field_scales(file, patch//'/tangential', error)
+   end subroutine attach_patch_scales
+
+   !> Scales of the element fields of a tangential group: y on the strip dimension.
+   subroutine attach_field_scales(file, path, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. h5_exists(file, path//'/xy')) return
+      call attach_scale(file, path, 'y', 'strip (y, lateral)', element_fields, 2, error)
+      if (allocated(error)) return
+      call h5_delete_attribute(file, path//'/xy', 'DIMENSION_LIST', error)
+      if (.not. allocated(error)) call h5_attach_scale(file, path//'/xy', path//'/y', 3, error)
+   end subroutine attach_field_scales
 
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
    subroutine write_profile(file, path, profile, error)
@@ -232,6 +330,8 @@ contains
       if (.not. allocated(error)) call h5_write(file, path//'/gamma0', g%gamma0, 'rad', error)
       if (.not. allocated(error)) call h5_write(file, path//'/r0', g%r0, 'mm', error)
       if (.not. allocated(error)) call h5_write(file, path//'/gap0', g%gap0, 'mm', error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'y', 'y (lateral, from the '// &
+         'reference point)', geometry_tables, 1, error)
    end subroutine write_geometry
 
    !> The /summary table: one row per case of the file.
@@ -284,6 +384,8 @@ contains
             trim(summary_columns(2, k)), error)
          if (allocated(error)) return
       end do
+      call attach_scale(file, 'summary', 'case', 'case', [character(len=17) :: 'status', &
+         'n_patches', 'main_patch', sweep_axis_names, summary_columns(1, :)], 1, error)
    end subroutine write_summary
 
    pure function axis_units(name) result(units)
@@ -332,6 +434,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call h5_write(file, 'failures/case', cases, '1', error)
       if (.not. allocated(error)) call h5_write(file, 'failures/message', messages, error)
+      if (.not. allocated(error)) call attach_scale(file, 'failures', 'case', 'case', &
+         ['message'], 1, error)
    end subroutine write_failure_table
 
    !> The per-case group: the fields the configuration asks for, per patch.
@@ -423,6 +527,8 @@ contains
          error)
       if (.not. allocated(error)) call h5_write(file, path//'/r_wheel', n%r_wheel(1:m), 'mm', &
          error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'y', 'y (strip centre)', &
+         strip_tables, 1, error)
    end subroutine write_normal
 
    subroutine write_tangential(file, config, path, t, error)
@@ -477,8 +583,44 @@ contains
             int(state_adhesion), error)
          if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'slip', &
             int(state_slip), error)
+         if (allocated(error)) return
       end if
+      call write_field_grid(file, path, t, error)
    end subroutine write_tangential
+
+   !> The element grid of the fields: `xy`, the element centres (x, y) interleaved (the mesh
+   !> geometry of the XDMF sidecar: ParaView's XDMF reader wants the coordinates of a point
+   !> together), y as the dimension scale of the strip dimension of every field, the element
+   !> dimension labelled, and a `coordinates` attribute (x, y) on every field.
+   subroutine write_field_grid(file, path, t, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(tangential_patch_type), intent(in) :: t
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: fields(6) = [character(len=5) :: 'x', 'pn', 'px', 'py', &
+         'slip', 'state']
+      real(wp), allocatable :: xy(:, :, :)
+      integer :: i
+      allocate (xy(2, size(t%x, 1), size(t%x, 2)))
+      xy(1, :, :) = t%x
+      xy(2, :, :) = spread(t%y, 1, size(t%x, 1))
+      call h5_write(file, path//'/xy', xy, 'mm', error, compress=.true.)
+      if (.not. allocated(error)) call attach_field_scales(file, path, error)
+      if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 1, 'x, y', error)
+      if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 2, &
+         'element (j from the leading edge)', error)
+      if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 3, 'strip (y)', error)
+      do i = 1, size(fields)
+         if (allocated(error)) return
+         if (.not. h5_exists(file, path//'/'//trim(fields(i)))) cycle
+         call h5_set_dim_label(file, path//'/'//trim(fields(i)), 1, &
+            'element (j from the leading edge)', error)
+         if (.not. allocated(error)) call h5_set_dim_label(file, path//'/'//trim(fields(i)), &
+            2, 'strip (y)', error)
+         if (.not. allocated(error) .and. i > 1) call h5_write_attribute(file, &
+            path//'/'//trim(fields(i)), 'coordinates', 'x y', error)
+      end do
+   end subroutine write_field_grid
 
    ! ------------------------------------------------------------------------------------------
    ! Reading and merging
@@ -561,7 +703,7 @@ contains
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
    subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
-                                 shard, temp_name)
+                                 shard, temp_name, threads)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
@@ -576,6 +718,8 @@ contains
       character(len=*), intent(in), optional :: shard
       !> Temporary name of the merged file (default `output.tmp<pid>`).
       character(len=*), intent(in), optional :: temp_name
+      !> OpenMP threads of the run, recorded in the file (default: those available now).
+      integer, intent(in), optional :: threads
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
@@ -583,9 +727,10 @@ contains
       type(case_config_type) :: config
       type(run_info_type) :: info
       type(h5_file_type) :: out, src
-      integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest
+      integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest, k
       type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
+      type(string_type), allocatable :: groups(:)
       logical :: partial
 
       partial = .false.
@@ -658,14 +803,22 @@ contains
       info%n_cases = n_first
       info%shard = ''
       if (present(shard)) info%shard = shard
+      if (present(threads)) info%threads = threads
       call h5_create(out, output, error, compression=config%output%compression, &
-         single=config%output%precision == 'single', temp_name=temp_name)
+         single=config%output%precision == 'single', temp_name=temp_name, &
+         describe=describe_dataset)
       if (allocated(error)) return
       call h5_open(src, inputs(1)%text, error)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
       if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
-      if (.not. allocated(error) .and. h5_exists(src, 'geometry')) &
+      if (.not. allocated(error) .and. h5_exists(src, 'geometry')) then
          call h5_copy(src, 'geometry', out, 'geometry', error)
+         k = 1
+         do while (.not. allocated(error) .and. h5_exists(out, 'geometry/patch_'//str_int(k)))
+            call attach_patch_scales(out, 'geometry/patch_'//str_int(k), error)
+            k = k + 1
+         end do
+      end if
       call h5_close(src)
       if (.not. allocated(error)) call write_summary(out, config, order, all(order), error)
       ! Built here at its final length (growing a deferred-length array across calls left its
@@ -689,8 +842,16 @@ contains
             call h5_open(src, inputs(open_index)%text, error)
             if (allocated(error)) exit
          end if
-         if (h5_exists(src, case_group_name(icase, n_first))) call h5_copy(src, &
-            case_group_name(icase, n_first), out, case_group_name(icase, n_first), error)
+         if (.not. h5_exists(src, case_group_name(icase, n_first))) cycle
+         call h5_copy(src, case_group_name(icase, n_first), out, &
+            case_group_name(icase, n_first), error)
+         k = 1
+         do while (.not. allocated(error) .and. h5_exists(out, case_group_name(icase, n_first) &
+                                                          //'/patch_'//str_int(k)))
+            call attach_patch_scales(out, case_group_name(icase, n_first)//'/patch_'// &
+               str_int(k), error)
+            k = k + 1
+         end do
       end do
       call h5_close(src)
       if (allocated(error)) then
@@ -698,6 +859,12 @@ contains
          return
       end if
       call h5_commit(out, error)
+      if (allocated(error)) return
+      allocate (groups(size(order)))
+      do i = 1, size(order)
+         groups(i)%text = case_group_name(order(i), n_first)
+      end do
+      call write_xdmf_sidecar(output, order, groups, error)
    end subroutine merge_result_files
 
    !> An output name that may be written: not a directory, not one of `inputs`, and not an
