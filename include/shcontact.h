@@ -34,6 +34,7 @@ extern "C" {
 #define SHCONTACT_LOAD_NORMAL_FORCE 1   /* normal force N (N) on the deepest patch */
 #define SHCONTACT_LOAD_VERTICAL_FORCE 2 /* vertical wheel load (N) shared by all patches */
 #define SHCONTACT_LOAD_APPROACH 3       /* approach (mm) of the deepest patch */
+#define SHCONTACT_LOAD_VERTICAL_POSITION 4 /* vertical approach of the wheel (mm), all patches */
 
 /* Values of one patch (shcontact_patch; also the first values of a result), 0-based (the
  * Fortran include file shcontact.fi has the same, 1-based). Side frame: for a left wheel the

@@ -14,7 +14,7 @@ module test_api_kinematic
    use shcontact_geometry_track, only: side_right, side_left
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      load_normal_force, load_vertical_force, load_approach
+      load_normal_force, load_vertical_force, load_approach, load_vertical_position
    use shcontact_api_values, only: kinematic_value_count, kinematic_values, patch_value_count, &
       result_value_count, value_fx, value_fy, value_mz, value_fn, value_fx_norm, &
       value_fy_norm, value_fy_track, value_fz_track, value_approach, value_area, value_p_max, &
@@ -374,20 +374,23 @@ contains
       end do
       call check(error, all([SHC_NU_X, SHC_NU_Y, SHC_PHI, SHC_X_TRACK] == [value_nu_x, &
          value_nu_y, value_phi, value_x_track]), message='shcontact.fi kinematic indices')
+      if (allocated(error)) return
+      call check(error, SHC_LOAD_VERTICAL_POSITION, load_vertical_position, &
+         message='shcontact.fi SHC_LOAD_VERTICAL_POSITION')
    end subroutine test_include_file
 
    !> include/shcontact.h read as text: each #define equals the library's constant (indices
    !> 0-based), and every define is checked.
    subroutine test_c_header(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), parameter :: names(42) = [character(len=24) :: 'OK', 'USAGE', &
+      character(len=24), parameter :: names(43) = [character(len=24) :: 'OK', 'USAGE', &
          'INVALID_INPUT', 'IO', 'NUMERICAL', 'NO_CONTACT', 'RIGHT', 'LEFT', &
          'LOAD_NORMAL_FORCE', 'LOAD_VERTICAL_FORCE', 'LOAD_APPROACH', 'FX', 'FY', 'MZ', 'FN', &
          'FX_NORM', 'FY_NORM', 'FY_TRACK', 'FZ_TRACK', 'APPROACH', 'AREA', 'P_MAX', 'GAMMA0', &
          'R0', 'Y_TRACK', 'Z_TRACK', 'COULOMB', 'ADHESION', 'PATCH_SIZE', 'N_PATCHES', &
          'N_LOADED', 'MAIN_PATCH', 'SUM_FX', 'SUM_FY', 'SUM_FZ', 'SUM_FN', 'DZ', 'RESULT_SIZE', &
-         'NU_X', 'NU_Y', 'PHI', 'X_TRACK']
-      integer :: expected(43), found(43), unit, stat, i, value, n_defines
+         'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION']
+      integer :: expected(44), found(44), unit, stat, i, value, n_defines
       character(len=256) :: line
       character(len=64) :: word, name
 
@@ -400,7 +403,7 @@ contains
          value_n_patches - 1, value_n_loaded - 1, value_main_patch - 1, value_sum_fx - 1, &
          value_sum_fy - 1, value_sum_fz - 1, value_sum_fn - 1, value_dz - 1, &
          result_value_count, value_nu_x - 1, value_nu_y - 1, value_phi - 1, value_x_track - 1, &
-         kinematic_value_count]
+         load_vertical_position, kinematic_value_count]
       found = huge(1)
       n_defines = 0
       open (newunit=unit, file='include/shcontact.h', status='old', action='read', iostat=stat)
@@ -421,7 +424,7 @@ contains
          n_defines = n_defines + 1
          name = name(len('SHCONTACT_') + 1:)
          if (trim(name) == 'KIN_SIZE') then
-            found(43) = value
+            found(44) = value
             cycle
          end if
          do i = 1, size(names)

@@ -12,7 +12,7 @@ module test_kinematics
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force, load_normal_force
+      load_vertical_force, load_normal_force, load_vertical_position
    use shcontact_tangential_options, only: tangential_options_type, spin_additive
    use shcontact_normal_options, only: normal_options_type
    use shcontact_profile_points, only: profile_type
@@ -51,7 +51,8 @@ contains
          new_unittest('short_tables_equal_full_tables', test_short_tables), &
          new_unittest('yaw_table_matches_direct_fit', test_yaw_table), &
          new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin), &
-         new_unittest('wheelset_both_wheels', test_wheelset)]
+         new_unittest('wheelset_both_wheels', test_wheelset), &
+         new_unittest('vertical_position_load', test_vertical_position)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -553,5 +554,44 @@ contains
       call check(error, r%mz < -1.0e6_wp, 'a wheelset shifted right must be steered back '// &
          '(M_z < 0, some kN·m)')
    end subroutine test_wheelset
+
+   !> A prescribed vertical position Δz gives back the patch loads of the vertical force whose
+   !> solution has that Δz (two patches at t_y = 4.733 mm); a negative Δz is refused.
+   subroutine test_vertical_position(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel
+      type(contact_result_type) :: by_force, by_position
+      type(lib_error), allocatable :: err
+      integer :: k
+
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      call wheel%solve(4.733_wp, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
+         creepage_type(1.0e-3_wp, 0.0_wp, 0.0_wp), by_force, err)
+      if (.not. allocated(err)) call wheel%solve(4.733_wp, 0.0_wp, contact_load_type( &
+         load_vertical_position, by_force%dz), creepage_type(1.0e-3_wp, 0.0_wp, 0.0_wp), &
+         by_position, err)
+      call check(error, .not. allocated(err), 'solve failed')
+      if (allocated(error)) return
+      call check(error, by_position%n_loaded, by_force%n_loaded)
+      if (allocated(error)) return
+      call check(error, by_force%n_loaded >= 2, 'two patches share the position here')
+      if (allocated(error)) return
+      do k = 1, by_force%n_loaded
+         call check(error, by_position%patch(k)%fn, by_force%patch(k)%fn, rel=.true., &
+            thr=1.0e-8_wp)
+         if (allocated(error)) return
+      end do
+      call wheel%solve_kinematic(rolling(4.733_wp, 0.002_wp, 0.0_wp), contact_load_type( &
+         load_vertical_position, 0.05_wp), by_position, err)
+      call check(error, .not. allocated(err), 'kinematic call with a vertical position failed')
+      if (allocated(error)) return
+      call check(error, by_position%track%fn > 0.0_wp, 'a positive approach carries a load')
+      if (allocated(error)) return
+      call wheel%solve_kinematic(rolling(4.733_wp, 0.0_wp, 0.0_wp), contact_load_type( &
+         load_vertical_position, -0.01_wp), by_position, err)
+      call check(error, allocated(err), 'a negative vertical position was accepted')
+   end subroutine test_vertical_position
 
 end module test_kinematics

@@ -42,7 +42,7 @@ module shcontact_api_solver
       prepare_wheel
    use shcontact_normal_options, only: normal_options_type, check_normal_options
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load
+      solve_approach, solve_vertical_load, solve_vertical_approach
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
@@ -59,7 +59,8 @@ module shcontact_api_solver
 
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
    public :: contact_fields_type, load_profile
-   public :: load_normal_force, load_vertical_force, load_approach, load_mode_name
+   public :: load_normal_force, load_vertical_force, load_approach, load_vertical_position, &
+      load_mode_name
    public :: max_patches
 
    !> Load mode: normal force N (N) on the first (deepest) patch.
@@ -68,8 +69,11 @@ module shcontact_api_solver
    integer, parameter :: load_vertical_force = 2
    !> Load mode: approach δ (mm) of the first patch.
    integer, parameter :: load_approach = 3
-   character(len=*), parameter :: load_mode_names(3) = [character(len=14) :: 'normal force', &
-      'vertical force', 'approach']
+   !> Load mode: vertical position, the rigid vertical approach Δz (mm) of the wheel from first
+   !> contact, shared by all patches (physics.md §4.6).
+   integer, parameter :: load_vertical_position = 4
+   character(len=*), parameter :: load_mode_names(4) = [character(len=17) :: 'normal force', &
+      'vertical force', 'approach', 'vertical position']
 
    !> Most patches one contact may have (the contact search follows at most 16 candidates).
    integer, parameter :: max_patches = max_candidates
@@ -600,7 +604,8 @@ contains
       end if
       if (load%mode < 1 .or. load%mode > size(load_mode_names)) then
          call fatal_error(error, 'load mode = '//str_int(load%mode)//': expected 1 (normal '// &
-            'force), 2 (vertical force) or 3 (approach)', stat_invalid_input)
+            'force), 2 (vertical force), 3 (approach) or 4 (vertical position)', &
+            stat_invalid_input)
          return
       end if
       if (.not. ieee_is_finite(load%value)) then
@@ -608,7 +613,14 @@ contains
             ': expected a finite number, found NaN or Inf', stat_invalid_input)
          return
       end if
-      if (load%mode /= load_approach .and. .not. (load%value > 0.0_wp)) then
+      if (load%mode == load_vertical_position) then
+         if (.not. (load%value >= 0.0_wp)) then
+            call fatal_error(error, 'vertical position = '//str_real(load%value)// &
+               ' mm: expected a downward displacement >= 0 from first contact', &
+               stat_invalid_input)
+            return
+         end if
+      else if (load%mode /= load_approach .and. .not. (load%value > 0.0_wp)) then
          call fatal_error(error, trim(load_mode_names(load%mode))//' = '// &
             str_real(load%value)//' N: expected a positive force', stat_invalid_input)
          return
@@ -727,13 +739,15 @@ contains
       type(contact_solver_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load
       type(error_type), allocatable, intent(out) :: error
+      real(wp) :: vertical
       integer :: k, n
 
       if (self%has_normal .and. load%mode == self%load%mode .and. &
          same(load%value, self%load%value)) return
       self%has_normal = .false.
       n = 1
-      if (load%mode == load_vertical_force) n = self%patches%count
+      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position) &
+         n = self%patches%count
       do k = self%n_prepared + 1, n
          call prepare_normal_contact(self%contacts(k), self%patches%patch(k), &
             self%normal_options, self%material, error, n_points=self%patches%points(k))
@@ -749,6 +763,10 @@ contains
          call solve_load(self%contacts(1), load%value, self%normal(1), error)
       case (load_approach)
          call solve_approach(self%contacts(1), load%value, self%normal(1), error)
+      case (load_vertical_position)
+         call solve_vertical_approach(self%contacts(1:n), load%value, self%normal(1:n), &
+            vertical, error)
+         self%dz = load%value
       case default
          call solve_vertical_load(self%contacts(1:n), load%value, self%normal(1:n), self%dz, &
             error)

@@ -26,7 +26,7 @@ module shcontact_normal_loading
    private
 
    public :: normal_contact_type, prepare_normal_contact
-   public :: solve_approach, solve_load, solve_vertical_load
+   public :: solve_approach, solve_load, solve_vertical_load, solve_vertical_approach
 
    !> Relative accuracy of the force matching (the issue asks for 1e-10).
    real(wp), parameter :: load_rtol = 1.0e-10_wp
@@ -286,6 +286,53 @@ contains
          if (allocated(error)) return
       end do
    end subroutine solve_vertical_load
+
+   !> Several patches at a prescribed rigid vertical approach Δz of the wheel (a vertical
+   !> position, physics.md §4.6): δ_k = Δz cos γ_k − g₀,k, Δz measured from the height where the
+   !> smallest gap is zero (the `dz` of [[solve_vertical_load]]). Patches that do not touch come
+   !> back cleared; `f_z` = Σ_k N_k cos γ_k is the vertical load the position implies.
+   subroutine solve_vertical_approach(contacts, dz, patches, f_z, error)
+      !> The prepared patches.
+      type(normal_contact_type), intent(in), target :: contacts(:)
+      !> Vertical approach Δz (mm, ≥ 0).
+      real(wp), intent(in) :: dz
+      !> The solutions, one per patch (same size as contacts).
+      type(normal_patch_type), intent(inout), target :: patches(:)
+      !> Σ_k N_k cos γ_k (N).
+      real(wp), intent(out) :: f_z
+      !> Set for bad input or an approach the tables cannot carry.
+      type(error_type), allocatable, intent(out) :: error
+      type(vertical_residual) :: f
+      real(wp) :: residual
+      integer :: k
+      character(len=64) :: buf
+
+      f_z = 0.0_wp
+      if (size(contacts) < 1 .or. size(patches) /= size(contacts)) then
+         call fatal_error(error, 'vertical approach: expected at least one patch and one '// &
+            'solution per patch', stat_usage)
+         return
+      end if
+      if (.not. (dz >= 0.0_wp)) then
+         write (buf, '(es12.4)') dz
+         call fatal_error(error, 'vertical approach = '//trim(adjustl(buf))// &
+            ' mm: expected a downward displacement >= 0 from first contact', stat_invalid_input)
+         return
+      end if
+      f%contacts => contacts
+      f%patches => patches
+      f%fill = .true.
+      residual = f%eval(dz)
+      if (allocated(f%error)) then
+         call move_alloc(f%error, error)
+         return
+      end if
+      f_z = f%force
+      do k = 1, size(contacts)
+         call coupled_if_asked(contacts(k), patches(k), error)
+         if (allocated(error)) return
+      end do
+   end subroutine solve_vertical_approach
 
    !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
    !> "Neighbouring patches under load"): past a basin limit the table runs into a neighbouring
