@@ -18,7 +18,7 @@ module test_cli
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_io_files, only: file_exists
    use test_app, only: scratch_directory, shell, run_program, file_text, write_lines, &
-      unavailable, expect_in
+      unavailable, expect_in, program_path
    implicit none
    private
    public :: collect_cli
@@ -47,6 +47,7 @@ contains
          new_unittest('options_of_other_commands', test_foreign_options), &
          new_unittest('slurm_variables_ignored_without_shard', test_slurm_ignored), &
          new_unittest('shard_slurm', test_shard_slurm), &
+         new_unittest('slurm_example_script', test_slurm_script), &
          new_unittest('progress_lines_in_a_batch_log', test_progress_lines), &
          new_unittest('quiet_and_format_none', test_quiet), &
          new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
@@ -266,6 +267,53 @@ contains
       call check(error, stat, 0, message='no output from a refused shard')
       call shell('rm -rf '//dir)
    end subroutine test_shard_slurm
+
+   !> examples/slurm_doe.sh as Slurm runs it: eight tasks with their array variables, then the
+   !> merge of its comment; the merged file holds the 8000 cases. Logs hold errors only (-q).
+   subroutine test_slurm_script(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, text, messages(:)
+      type(case_summary_type), allocatable :: s(:)
+      integer, allocatable :: indices(:), failed(:)
+      type(lib_error), allocatable :: lerr
+      integer :: stat, n, task
+      character(len=2) :: id
+      if (unavailable(error, .false.)) return
+      if (.not. file_exists('examples/slurm_doe.sh')) then
+         call skip_test(error, 'examples/slurm_doe.sh is not in the working directory')
+         return
+      end if
+      dir = scratch_directory('cli_slurm_script')
+      call shell('mkdir -p '//dir//'/bin '//dir//'/examples && cp examples/slurm_doe.sh '// &
+         'examples/doe_8000.nml '//dir//'/examples/ && ln -s '//program_path()//' '//dir// &
+         '/bin/shcontact')
+      do task = 1, 8
+         write (id, '(i0)') task
+         call shell('cd '//dir//' && env PATH='//dir//'/bin:"$PATH" SLURM_ARRAY_TASK_ID='// &
+            trim(id)//' SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=8 '// &
+            'SLURM_CPUS_PER_TASK=2 bash examples/slurm_doe.sh > task'//trim(id)//'.log 2>&1', &
+            stat)
+         call check(error, stat, 0, message='task '//trim(id)//': '// &
+            file_text(dir//'/task'//trim(id)//'.log'))
+         if (allocated(error)) return
+      end do
+      call shell('cd '//dir//' && test -z "$(cat task*.log)"', stat)
+      call check(error, stat, 0, message='the task logs hold errors only')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && PATH='//dir//'/bin:"$PATH" && '// &
+         'shcontact merge build/doe_8000.h5 build/doe_8000-shard*of8.h5 2> merge.log', stat)
+      call check(error, stat, 0, message='merge: '//file_text(dir//'/merge.log'))
+      if (allocated(error)) return
+      call read_result_summary(dir//'/build/doe_8000.h5', text, n, indices, s, failed, &
+         messages, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, size(indices) == 8000 .and. all(s%stat == 0), &
+         message='the merged file holds the 8000 solved cases')
+      call shell('rm -rf '//dir)
+   end subroutine test_slurm_script
 
    !> With stderr in a file: progress lines with cases done, percentage, rate and ETA, the
    !> last one at 100 %; none with -q; none for a single case.
