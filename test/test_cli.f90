@@ -497,6 +497,7 @@ contains
    subroutine test_profiles_file(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, out, err
+      integer :: stat
       if (unavailable(error, .false.)) return
       dir = scratch_directory('cli_profiles')
       call run_expect(error, dir, 'profiles --write built-in', 0, out, err)
@@ -521,6 +522,14 @@ contains
       if (allocated(error)) return
       call run_expect(error, dir, 'run -q -o w.h5 --set profiles%wheel=clean.txt', 0, out, err)
       if (allocated(error)) return
+      ! The script makes its PNG where gnuplot is installed.
+      call shell('command -v gnuplot > /dev/null 2>&1', stat)
+      if (stat == 0) then
+         call shell('cd '//dir//' && gnuplot s1002.gp > gnuplot.txt 2>&1 && test -s s1002.png', &
+            stat)
+         call check(error, stat, 0, message='gnuplot s1002.gp: '//file_text(dir//'/gnuplot.txt'))
+         if (allocated(error)) return
+      end if
       ! The rail, and -q.
       call run_expect(error, dir, 'profiles -q built-in/UIC60.txt -o rail.txt', 0, out, err)
       if (allocated(error)) return

@@ -27,11 +27,11 @@ module shcontact_io_report
    !> Columns shown in the text table of a sweep (besides the swept inputs).
    character(len=*), parameter :: text_columns(7) = [character(len=17) :: 'fn', 'fx', 'fy', &
       'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction']
-   !> The same for a kinematic run: the track-frame totals, and the main patch's creepages and
-   !> lead.
+   !> The same for a kinematic run: the patches found and loaded, the track-frame totals, and
+   !> the main patch's creepages and lead.
    character(len=*), parameter :: kinematic_text_columns(10) = [character(len=17) :: &
-      'n_patches', 'n_loaded', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', 'phi', &
-      'x_track']
+      'n_patches', 'n_loaded', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', &
+      'phi', 'x_track']
    !> Units of the inputs, indexed as [[sweep_axis_names]] ('' for the choices).
    character(len=*), parameter :: input_units(n_sweep_axes) = [character(len=6) :: 'mm', &
       'rad', 'rad', 'N', 'mm', 'N', '1', '', '', 'mm/s', 'mm/s', 'mm/s', 'rad/s', 'rad/s', &
