@@ -1,5 +1,6 @@
 !> The command line of the shcontact program: commands, options, usage text.
 module shcontact_app_cli
+   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
@@ -7,12 +8,14 @@ module shcontact_app_cli
    implicit none
    private
 
-   public :: cli_type, parse_command_line, usage_text
+   public :: cli_type, parse_command_line
 
    !> What the command line asks for.
    type :: cli_type
       !> 'run', 'merge', 'profiles', 'geometry', 'help' or 'version'.
       character(len=:), allocatable :: command
+      !> `COMMAND --help` (or `help COMMAND`): the help of that command.
+      logical :: help = .false.
       !> Case file ('' for the built-in default case).
       character(len=:), allocatable :: case_file
       !> -o/--output ('' when not given).
@@ -23,52 +26,30 @@ module shcontact_app_cli
       type(string_list_type) :: inputs
       !> profiles: --write DIR.
       character(len=:), allocatable :: write_dir
-      !> Summary format: 'text', 'csv' or 'json'.
+      !> profiles: the profile file to check ('' when not given), --plot SCRIPT ('' when not
+      !> given), --kind ('' = from the file), --file-format.
+      character(len=:), allocatable :: profile_file, plot_file, kind, file_format
+      !> profiles: --mirror-y, --mirror-z ('yes', 'no'; '' = as the file or format says).
+      character(len=:), allocatable :: mirror_y, mirror_z
+      !> profiles: --scale (0: as the file says).
+      real(wp) :: scale = 0.0_wp
+      !> Summary format: 'text', 'csv', 'json' or 'none'.
       character(len=:), allocatable :: format
+      !> --format was given (-q then keeps the summary on stdout).
+      logical :: format_given = .false.
+      !> --csv-units: a units line under the CSV header.
+      logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
       integer :: shard = 0, n_shards = 0
+      !> --shard slurm: I/N from the Slurm job-array variables.
+      logical :: shard_slurm = .false.
    end type cli_type
 
 contains
-
-   !> The usage text of `shcontact --help`.
-   function usage_text() result(text)
-      character(len=:), allocatable :: text
-      character(len=1), parameter :: nl = new_line('a')
-      text = &
-         'Usage:'//nl// &
-         '  shcontact run [CASE.nml] [options]    solve the case (default: the built-in '// &
-         'headline case)'//nl// &
-         '  shcontact merge OUT.h5 SHARD.h5...    merge the shard files of one run'//nl// &
-         '  shcontact profiles --write DIR        write the built-in profiles as 2-column files'// &
-         nl// &
-         '  shcontact geometry [CASE.nml] [-o FILE] [--set ...]'//nl// &
-         '                                        write the strip geometry table of the case'// &
-         nl// &
-         '  shcontact --help | --version'//nl//nl// &
-         'Options of run:'//nl// &
-         '  -o, --output FILE        HDF5 output file (= --set output%file=FILE)'//nl// &
-         '  --set GROUP%VAR=VALUE    override a namelist variable (repeatable; lists as '// &
-         'v1,v2,...)'//nl// &
-         '  --check                  validate, print the resolved namelist, solve nothing'//nl// &
-         '  --format text|csv|json   summary on stdout: readable, CSV, or JSON lines'//nl// &
-         '  -q, --quiet              no progress or notes on stderr (errors only)'//nl// &
-         '  -v, --verbose            more notes on stderr'//nl// &
-         '  --threads N              OpenMP threads (default: OMP_NUM_THREADS or all cores)'// &
-         nl// &
-         '  --shard I/N              solve the I-th of N slices of a sweep into '// &
-         'OUT-shardIofN.h5'//nl// &
-         '                           (default from SLURM_ARRAY_TASK_ID/_MIN/_COUNT)'//nl// &
-         '  --resume                 complete an interrupted run from its checkpoint '// &
-         'OUT.h5.partial/'//nl//nl// &
-         'Exit status: 0 ok, 1 usage error, 2 invalid input, 3 I/O failure, 4 some sweep '// &
-         'cases failed,'//nl// &
-         '             5 numerical failure, 6 no contact (profiles do not touch)'
-   end function usage_text
 
    !> Parse the command line.
    subroutine parse_command_line(cli, error)
@@ -83,6 +64,12 @@ contains
       cli%case_file = ''
       cli%output = ''
       cli%write_dir = ''
+      cli%profile_file = ''
+      cli%plot_file = ''
+      cli%kind = ''
+      cli%mirror_y = ''
+      cli%mirror_z = ''
+      cli%file_format = 'auto'
       cli%format = 'text'
       n = command_argument_count()
       if (n == 0) then
@@ -93,26 +80,42 @@ contains
       select case (arg)
       case ('-h', '--help', 'help')
          cli%command = 'help'
+         ! `shcontact help run`: the help of run.
+         if (n >= 2) then
+            arg = argument(2)
+            if (is_command(arg)) then
+               cli%command = arg
+               cli%help = .true.
+            end if
+         end if
          return
       case ('-V', '--version', 'version')
          cli%command = 'version'
          return
-      case ('run', 'merge', 'profiles', 'geometry')
-         cli%command = arg
       case default
-         call fatal_error(error, 'unknown command "'//arg//'"; expected run, merge, '// &
-            'profiles, geometry, --help or --version', stat_usage)
-         return
+         if (.not. is_command(arg)) then
+            call fatal_error(error, 'unknown command "'//arg//'"; expected run, merge, '// &
+               'profiles, geometry, --help or --version', stat_usage)
+            return
+         end if
+         cli%command = arg
       end select
 
       i = 2
       do while (i <= n)
          arg = argument(i)
          call split_option(arg, value, has_value)
-         select case (arg)
-         case ('-h', '--help')
-            cli%command = 'help'
+         if (arg == '-h' .or. arg == '--help') then
+            cli%help = .true.
             return
+         end if
+         if (arg(1:1) == '-' .and. len(arg) > 1) then
+            if (.not. accepts(cli%command, arg)) then
+               call fatal_error(error, unknown_option(cli%command, arg), stat_usage)
+               return
+            end if
+         end if
+         select case (arg)
          case ('-o', '--output')
             call option_value(i, arg, value, has_value, error)
             cli%output = value
@@ -122,12 +125,15 @@ contains
          case ('--format')
             call option_value(i, arg, value, has_value, error)
             if (.not. allocated(error)) then
-               if (value /= 'text' .and. value /= 'csv' .and. value /= 'json') then
-                  call fatal_error(error, '--format '//value//': expected text, csv or json', &
-                     stat_usage)
+               if (all(value /= [character(len=4) :: 'text', 'csv', 'json', 'none'])) then
+                  call fatal_error(error, '--format '//value//': expected text, csv, json or '// &
+                     'none', stat_usage)
                end if
                cli%format = value
+               cli%format_given = .true.
             end if
+         case ('--csv-units')
+            cli%csv_units = .true.
          case ('--threads')
             call option_value(i, arg, value, has_value, error)
             if (.not. allocated(error)) call read_count(value, '--threads', cli%threads, error)
@@ -136,10 +142,47 @@ contains
                stat_usage)
          case ('--shard')
             call option_value(i, arg, value, has_value, error)
-            if (.not. allocated(error)) call read_shard(value, cli%shard, cli%n_shards, error)
+            if (allocated(error)) then
+            else if (value == 'slurm') then
+               cli%shard_slurm = .true.
+               cli%shard = 0
+               cli%n_shards = 0
+            else
+               cli%shard_slurm = .false.
+               call read_shard(value, cli%shard, cli%n_shards, error)
+            end if
          case ('--write')
             call option_value(i, arg, value, has_value, error)
             cli%write_dir = value
+         case ('--plot')
+            call option_value(i, arg, value, has_value, error)
+            cli%plot_file = value
+         case ('--kind')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) then
+               if (value /= 'wheel' .and. value /= 'rail') call fatal_error(error, &
+                  '--kind '//value//': expected wheel or rail', stat_usage)
+               cli%kind = value
+            end if
+         case ('--mirror-y', '--mirror-z')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) then
+               if (value /= 'yes' .and. value /= 'no') call fatal_error(error, &
+                  arg//' '//value//': expected yes or no', stat_usage)
+               if (arg == '--mirror-y') cli%mirror_y = value
+               if (arg == '--mirror-z') cli%mirror_z = value
+            end if
+         case ('--file-format')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) then
+               if (all(value /= [character(len=8) :: 'auto', 'plain', 'simpack', 'miniprof'])) &
+                  call fatal_error(error, '--file-format '//value//': expected auto, plain, '// &
+                  'simpack or miniprof', stat_usage)
+               cli%file_format = value
+            end if
+         case ('--scale')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) call read_positive(value, '--scale', cli%scale, error)
          case ('--check')
             cli%check = .true.
          case ('--resume')
@@ -149,18 +192,7 @@ contains
          case ('-v', '--verbose')
             cli%verbose = .true.
          case default
-            if (arg(1:1) == '-' .and. len(arg) > 1) then
-               call fatal_error(error, 'unknown option "'//arg//'" for '//cli%command// &
-                  '; see shcontact --help', stat_usage)
-            else if (cli%command == 'merge') then
-               call cli%inputs%push(arg)
-            else if (len(cli%case_file) == 0 .and. (cli%command == 'run' .or. &
-                     cli%command == 'geometry')) then
-               cli%case_file = arg
-            else
-               call fatal_error(error, 'unexpected argument "'//arg//'" for '//cli%command// &
-                  '; see shcontact --help', stat_usage)
-            end if
+            call operand(cli, arg, error)
          end select
          if (allocated(error)) return
          i = i + 1
@@ -168,7 +200,83 @@ contains
       call check_combination(cli, error)
    end subroutine parse_command_line
 
-   !> Options that belong to other commands, missing operands.
+   pure logical function is_command(name)
+      character(len=*), intent(in) :: name
+      is_command = any(name == [character(len=8) :: 'run', 'merge', 'profiles', 'geometry'])
+   end function is_command
+
+   !> Whether `command` has the option `name` (a known option of another command is refused
+   !> with a message naming the command it belongs to).
+   pure logical function accepts(command, name)
+      character(len=*), intent(in) :: command, name
+      select case (name)
+      case ('-q', '--quiet', '-v', '--verbose')
+         accepts = .true.
+      case ('-o', '--output')
+         accepts = command /= 'merge'
+      case ('--set')
+         accepts = command == 'run' .or. command == 'geometry'
+      case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
+         accepts = command == 'run'
+      case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &
+            '--mirror-z')
+         accepts = command == 'profiles'
+      case default
+         accepts = .false.
+      end select
+   end function accepts
+
+   function unknown_option(command, name) result(message)
+      character(len=*), intent(in) :: command, name
+      character(len=:), allocatable :: message
+      character(len=*), parameter :: commands(4) = [character(len=8) :: 'run', 'merge', &
+         'profiles', 'geometry']
+      integer :: k
+      do k = 1, size(commands)
+         if (accepts(trim(commands(k)), name)) then
+            message = 'option "'//name//'" belongs to '//owners(name)//', not to '//command// &
+               '; see shcontact '//command//' --help'
+            return
+         end if
+      end do
+      message = 'unknown option "'//name//'" for '//command//'; see shcontact '//command// &
+         ' --help'
+   end function unknown_option
+
+   !> The commands that have an option, as text ("run", "run and geometry").
+   function owners(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: commands(4) = [character(len=8) :: 'run', 'merge', &
+         'profiles', 'geometry']
+      integer :: k
+      text = ''
+      do k = 1, size(commands)
+         if (.not. accepts(trim(commands(k)), name)) cycle
+         if (len(text) > 0) text = text//' and '
+         text = text//trim(commands(k))
+      end do
+   end function owners
+
+   !> A word that is not an option: the case file, a merge input, the profile file.
+   subroutine operand(cli, arg, error)
+      type(cli_type), intent(inout) :: cli
+      character(len=*), intent(in) :: arg
+      type(error_type), allocatable, intent(out) :: error
+      if (cli%command == 'merge') then
+         call cli%inputs%push(arg)
+      else if (len(cli%case_file) == 0 .and. (cli%command == 'run' .or. &
+               cli%command == 'geometry')) then
+         cli%case_file = arg
+      else if (len(cli%profile_file) == 0 .and. cli%command == 'profiles') then
+         cli%profile_file = arg
+      else
+         call fatal_error(error, 'unexpected argument "'//arg//'" for '//cli%command// &
+            '; see shcontact '//cli%command//' --help', stat_usage)
+      end if
+   end subroutine operand
+
+   !> Missing operands and options that exclude each other.
    subroutine check_combination(cli, error)
       type(cli_type), intent(inout) :: cli
       type(error_type), allocatable, intent(out) :: error
@@ -179,11 +287,20 @@ contains
                'file: shcontact merge OUT.h5 SHARD.h5...', stat_usage)
          end if
       case ('profiles')
-         if (len(cli%write_dir) == 0) call fatal_error(error, 'profiles needs --write DIR', &
-            stat_usage)
+         if (len(cli%write_dir) == 0 .eqv. len(cli%profile_file) == 0) then
+            call fatal_error(error, 'profiles needs a profile file or --write DIR (not both): '// &
+               'shcontact profiles FILE [-o OUT] | shcontact profiles --write DIR', stat_usage)
+         else if (len(cli%write_dir) > 0 .and. (len(cli%output) > 0 .or. &
+                  len(cli%plot_file) > 0 .or. len(cli%kind) > 0 .or. cli%scale > 0.0_wp .or. &
+                  cli%file_format /= 'auto' .or. len(cli%mirror_y) > 0 .or. &
+                  len(cli%mirror_z) > 0)) then
+            call fatal_error(error, '-o, --plot, --kind, --file-format, --scale and '// &
+               '--mirror-y/z are options of "profiles FILE", not of "profiles --write DIR"', &
+               stat_usage)
+         end if
       case ('run')
-         if (len(cli%write_dir) > 0) call fatal_error(error, '--write belongs to the '// &
-            'profiles command', stat_usage)
+         if (cli%csv_units .and. cli%format /= 'csv') call fatal_error(error, &
+            '--csv-units needs --format csv', stat_usage)
       end select
    end subroutine check_combination
 
@@ -244,6 +361,20 @@ contains
       end if
    end subroutine read_count
 
+   !> A positive finite real.
+   subroutine read_positive(text, name, value, error)
+      character(len=*), intent(in) :: text, name
+      real(wp), intent(out) :: value
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      read (text, *, iostat=stat) value
+      if (stat /= 0 .or. scan(text, ',/ ') > 0) value = -1.0_wp
+      if (.not. (value > 0.0_wp .and. value <= huge(value))) then
+         value = 0.0_wp
+         call fatal_error(error, name//' '//text//': expected a positive number', stat_usage)
+      end if
+   end subroutine read_positive
+
    !> `I/N` with 1 ≤ I ≤ N.
    subroutine read_shard(text, shard, n_shards, error)
       character(len=*), intent(in) :: text
@@ -260,7 +391,7 @@ contains
       if (slash <= 1 .or. allocated(error) .or. shard > n_shards) then
          if (allocated(error)) deallocate (error)
          call fatal_error(error, '--shard '//text//': expected I/N with 1 <= I <= N, e.g. '// &
-            '--shard 2/'//str_int(max(2, n_shards)), stat_usage)
+            '--shard 2/'//str_int(max(2, n_shards))//', or slurm', stat_usage)
       end if
    end subroutine read_shard
 

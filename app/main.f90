@@ -4,9 +4,10 @@
 program shcontact_main
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact, only: shcontact_version, error_type
-   use shcontact_app_cli, only: cli_type, parse_command_line, usage_text
-   use shcontact_app_commands, only: run_command, merge_command, profiles_command, &
-      geometry_command, report_error
+   use shcontact_app_cli, only: cli_type, parse_command_line
+   use shcontact_app_help, only: usage_text, command_help
+   use shcontact_app_commands, only: run_command, merge_command, geometry_command, report_error
+   use shcontact_app_profiles, only: profiles_command
    implicit none
    type(cli_type) :: cli
    type(error_type), allocatable :: error
@@ -17,6 +18,10 @@ program shcontact_main
       status = report_error(error)
       write (error_unit, '(a)') usage_text()
       stop status, quiet = .true.
+   end if
+   if (cli%help) then
+      write (output_unit, '(a)') command_help(cli%command)
+      stop 0, quiet = .true.
    end if
    select case (cli%command)
    case ('help')

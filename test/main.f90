@@ -29,6 +29,7 @@ program tester
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
    use test_app, only: collect_app
+   use test_cli, only: collect_cli
    use test_api, only: collect_api
    use test_kinematics, only: collect_kinematics
    use test_api_kinematic, only: collect_api_kinematic
@@ -63,6 +64,7 @@ program tester
       new_testsuite('config', collect_config), &
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app), &
+      new_testsuite('cli', collect_cli), &
       new_testsuite('api', collect_api), &
       new_testsuite('kinematics', collect_kinematics), &
       new_testsuite('api_kinematic', collect_api_kinematic), &

@@ -219,7 +219,8 @@ contains
       call check(error, app%summary%stat, 0, message='the app runner failed')
       if (allocated(error)) return
       call check(error, app%summary%main_patch == result%main_patch .and. &
-         app%summary%n_patches == result%n_loaded, message='patch counts differ from the app')
+         app%summary%n_patches == result%n_patches .and. app%summary%n_loaded == &
+         result%n_loaded, message='patch counts differ from the app')
       if (allocated(error)) return
       call check(error, bitwise_equal([app%summary%fx, app%summary%fy, app%summary%mz, &
          app%summary%fn, app%summary%fx_norm, app%summary%fy_norm, app%summary%coulomb_ratio, &

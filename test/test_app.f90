@@ -325,7 +325,8 @@ contains
       call check(error, stat, 0, message='csv: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       text = file_text(dir//'/out.txt')
-      call expect_in(error, text, 'case,status,n_patches,bound,nu_x,phi,fn_total', 'csv header')
+      call expect_in(error, text, 'case,status,n_patches,n_loaded,t_y,roll,normal_force,'// &
+         'friction,bound,spin_model,nu_x,nu_y,phi,fn_total', 'csv header')
       if (allocated(error)) return
       call shell('test $(wc -l < '//dir//'/out.txt) -eq 13', stat)
       call check(error, stat, 0, message='a header and one csv line per case')
@@ -375,9 +376,9 @@ contains
       call check(error, stat, 0, message='unsharded: '//file_text(dir//'/whole/err.txt'))
       if (allocated(error)) return
       stat = run_program(dir, 'run sweep.nml -q -o out.h5 --shard 1/3')
-      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5', &
+      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5 --shard slurm', &
          'SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=3')
-      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5', &
+      if (stat == 0) stat = run_program(dir, 'run sweep.nml -q -o out.h5 --shard=slurm', &
          'SLURM_ARRAY_TASK_ID=2 SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_COUNT=3')
       call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
@@ -642,8 +643,9 @@ contains
          call test_failed(error, 'library: '//lerr%message)
          return
       end if
-      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_loaded .and. &
-         s(1)%main_patch == r%main_patch, message='status and patches')
+      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_patches .and. &
+         s(1)%n_loaded == r%n_loaded .and. s(1)%main_patch == r%main_patch, &
+         message='status and patches')
       if (allocated(error)) return
       call check(error, same_bits([s(1)%fn_total, s(1)%fx_total, s(1)%fy_total, s(1)%fz_total, &
          s(1)%fn, s(1)%fx, s(1)%fy, s(1)%mz, s(1)%fx_norm, s(1)%fy_norm, s(1)%approach, &
@@ -698,8 +700,9 @@ contains
       end if
       call check(error, r%n_loaded, 2, message='the case has two loaded patches')
       if (allocated(error)) return
-      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_loaded .and. &
-         s(1)%main_patch == r%main_patch, message='status and patches')
+      call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_patches .and. &
+         s(1)%n_loaded == r%n_loaded .and. s(1)%main_patch == r%main_patch, &
+         message='status and patches')
       if (allocated(error)) return
       call check(error, same_bits([s(1)%fn_total, s(1)%fx_total, s(1)%fy_total, s(1)%fz_total], &
          [r%track%fn, r%track%fx, r%track%fy, r%track%fz]), &
@@ -770,8 +773,9 @@ contains
          'kinematic sweep with 1 and 2 threads')
       if (allocated(error)) return
       header = file_text(dir//'/one/out.txt')
-      call expect_in(error, header, 'case,status,n_patches,t_y,roll,yaw,v_forward,v_lateral,'// &
-         'v_vertical,roll_rate,yaw_rate,pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
+      call expect_in(error, header, 'case,status,n_patches,n_loaded,t_y,roll,yaw,'// &
+         'vertical_force,friction,bound,v_forward,v_lateral,v_vertical,roll_rate,yaw_rate,'// &
+         'pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
          'csv header of a kinematic sweep')
       if (allocated(error)) return
       call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,message', 'csv header')
@@ -783,7 +787,7 @@ contains
       if (allocated(error)) return
       call check(error, all(s%stat == 0), message='every case solved')
       if (allocated(error)) return
-      call check(error, any(s%n_patches > 1), message='a case with two patches')
+      call check(error, any(s%n_loaded > 1), message='a case with two loaded patches')
       if (allocated(error)) return
       call h5_open(file, dir//'/one/out.h5', lerr)
       if (allocated(lerr)) then
@@ -809,7 +813,7 @@ contains
          if (allocated(error)) exit
          group = case_group_name(i, size(s))
          total = 0.0_wp
-         do k = 1, s(i)%n_patches
+         do k = 1, s(i)%n_loaded
             patch = group//'/patch_'//char(iachar('0') + k)
             fn = scalar(error, file, patch//'/normal/load')
             if (.not. (fn > 0.0_wp)) cycle

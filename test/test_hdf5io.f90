@@ -266,6 +266,7 @@ contains
       do i = 1, 6
          results(i)%summary%stat = 0
          results(i)%summary%n_patches = 1
+         results(i)%summary%n_loaded = 1
          results(i)%summary%main_patch = 1
          results(i)%summary%fx = -100.0_wp*i
          results(i)%summary%fy_norm = 0.01_wp*i
@@ -282,6 +283,7 @@ contains
       end do
       results(4)%summary%stat = 6
       results(4)%summary%n_patches = 0
+      results(4)%summary%n_loaded = 0
       results(4)%message = 'the profiles do not touch'
    end subroutine synthetic_run
 

@@ -467,11 +467,11 @@ contains
       call shell('test $(grep -c . '//dir//'/dense.prw) -gt 800', stat)
       call check(error, stat, 0, message='the dense file has the points added')
       if (allocated(error)) return
-      stat = run_program(dir, 'run -q -o a.h5 --set profiles%wheel='//prw)
+      stat = run_program(dir, 'run -q --format text -o a.h5 --set profiles%wheel='//prw)
       a = file_text(dir//'/out.txt')
       call check(error, stat, 0, message='original: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
-      stat = run_program(dir, 'run -q -o b.h5 --set profiles%wheel=dense.prw')
+      stat = run_program(dir, 'run -q --format text -o b.h5 --set profiles%wheel=dense.prw')
       b = file_text(dir//'/out.txt')
       call check(error, stat, 0, message='with collinear points: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return

@@ -21,8 +21,12 @@ module shcontact_case_result
    type :: case_summary_type
       !> 0 when solved; otherwise the error status ([[case_not_run]] before it runs).
       integer :: stat = case_not_run
-      !> Number of loaded contact patches.
+      !> Number of contact patches found by the contact search (/geometry/patch_1..n_patches).
       integer :: n_patches = 0
+      !> Number of patches the load is applied to and solved (1..n_loaded; /cases/.../patch_K):
+      !> 1 for `&load mode = 'force'` or `'approach'` (the deepest patch), n_patches for
+      !> 'vertical'.
+      integer :: n_loaded = 0
       !> Index of the main patch.
       integer :: main_patch = 0
       !> Total normal force of all patches (N).

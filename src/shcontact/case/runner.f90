@@ -257,7 +257,8 @@ contains
       type(contact_result_type), intent(in) :: contact
       type(case_summary_type), intent(inout) :: s
       s%stat = 0
-      s%n_patches = contact%n_loaded
+      s%n_patches = contact%n_patches
+      s%n_loaded = contact%n_loaded
       s%main_patch = contact%main_patch
       s%fn_total = contact%track%fn
       s%fx_total = contact%track%fx
@@ -430,7 +431,8 @@ contains
       type(case_summary_type), intent(inout) :: s
       integer :: m, k
       s%stat = 0
-      s%n_patches = size(stage%normal)
+      s%n_patches = size(stage%geometry)
+      s%n_loaded = size(stage%normal)
       m = 1
       do k = 2, size(stage%normal)
          if (stage%normal(k)%load > stage%normal(m)%load) m = k

@@ -49,9 +49,10 @@ module shcontact_case_sweep
    integer, parameter :: max_threads = 1024
 
    abstract interface
-      !> Called with the number of finished cases of the shard (resumed ones included): from
-      !> one thread while cases are solved (committed = .false.), and after each checkpoint
-      !> block is written (committed = .true.).
+      !> Called with the number of finished cases of the shard (resumed ones included): once
+      !> before any case is solved (the cases resumed from a checkpoint), from one thread while
+      !> cases are solved (committed = .false.), and after each checkpoint block is written
+      !> (committed = .true.).
       subroutine progress_interface(done, total, committed)
          !> Cases finished and cases in the shard.
          integer, intent(in) :: done, total
@@ -267,6 +268,9 @@ contains
       todo = pack([(i, i=outcome%first, outcome%last)], &
          outcome%summaries%stat == case_not_run)
       n_done = (outcome%last - outcome%first + 1) - size(todo)
+      ! The first report: the cases taken from a checkpoint (the caller's rate leaves them out).
+      if (associated(options%progress)) call options%progress(n_done, &
+         outcome%last - outcome%first + 1, .false.)
       allocate (workspaces(outcome%n_threads), solutions(outcome%n_threads))
       if (setup%kinematic) then
          do i = 1, outcome%n_threads

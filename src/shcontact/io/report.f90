@@ -1,30 +1,41 @@
 !> The results summary as text: a readable block or table (`text`), one CSV line per case
-!> (`csv`, with a header line), or one JSON object per line (`json`, JSON Lines). The library
-!> builds the lines; the program prints them.
+!> (`csv`, with a header line and optionally a units line), or one JSON object per line
+!> (`json`, JSON Lines). The library builds the lines; the program prints them.
+!>
+!> CSV and JSON lines carry every input of the case that the mode uses, swept or not (t_y, roll,
+!> the load of the load mode, friction, bound, and the creepages and spin model, or in
+!> kinematic mode the wheelset inputs), so that lines of separate runs (a shell loop over
+!> `--set`) line up under one header and say what they are.
 module shcontact_io_report
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
    use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
-      sweep_axis_names, case_point_value
+      sweep_axis_names, case_point_value, is_kinematic_input
    use shcontact_io_text, only: format_real, json_string
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used
    implicit none
    private
 
-   public :: report_formats, report_header, report_line, report_case_text
+   public :: report_formats, report_header, report_line, report_case_text, report_units
+   public :: reports_case_input
 
    !> Accepted values of the format.
-   character(len=*), parameter :: report_formats(3) = [character(len=4) :: 'text', 'csv', 'json']
+   character(len=*), parameter :: report_formats(4) = [character(len=4) :: 'text', 'csv', &
+      'json', 'none']
 
    !> Columns shown in the text table of a sweep (besides the swept inputs).
    character(len=*), parameter :: text_columns(7) = [character(len=17) :: 'fn', 'fx', 'fy', &
       'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction']
-   !> The same for a kinematic run: the track-frame totals, and the main patch's creepages and
-   !> lead.
-   character(len=*), parameter :: kinematic_text_columns(9) = [character(len=17) :: &
-      'n_patches', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', 'phi', &
-      'x_track']
+   !> The same for a kinematic run: the patches found and loaded, the track-frame totals, and
+   !> the main patch's creepages and lead.
+   character(len=*), parameter :: kinematic_text_columns(10) = [character(len=17) :: &
+      'n_patches', 'n_loaded', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', &
+      'phi', 'x_track']
+   !> Units of the inputs, indexed as [[sweep_axis_names]] ('' for the choices).
+   character(len=*), parameter :: input_units(n_sweep_axes) = [character(len=6) :: 'mm', &
+      'rad', 'rad', 'N', 'mm', 'N', '1', '', '', 'mm/s', 'mm/s', 'mm/s', 'rad/s', 'rad/s', &
+      'rad/s', '1', '1', 'rad/mm']
 
 contains
 
@@ -38,9 +49,9 @@ contains
       integer :: ia, k
       select case (format)
       case ('csv')
-         line = 'case,status,n_patches'
+         line = 'case,status,n_patches,n_loaded'
          do ia = 1, n_sweep_axes
-            if (config%reports_input(ia)) line = line//','//trim(sweep_axis_names(ia))
+            if (reports_case_input(config, ia)) line = line//','//trim(sweep_axis_names(ia))
          end do
          do k = 1, n_summary_columns
             if (summary_column_used(k, config%is_kinematic())) &
@@ -69,6 +80,51 @@ contains
       end select
    end function report_header
 
+   !> The units line that may follow the CSV header: the unit of each column ('1' for
+   !> dimensionless numbers, counts and codes, empty for the choices and the message).
+   function report_units(config) result(line)
+      !> The configuration (which columns there are).
+      type(case_config_type), intent(in) :: config
+      character(len=:), allocatable :: line
+      integer :: ia, k
+      line = '1,1,1,1'
+      do ia = 1, n_sweep_axes
+         if (reports_case_input(config, ia)) line = line//','//trim(input_units(ia))
+      end do
+      do k = 1, n_summary_columns
+         if (summary_column_used(k, config%is_kinematic())) &
+            line = line//','//trim(summary_columns(2, k))
+      end do
+      line = line//','
+   end function report_units
+
+   !> Whether the CSV and JSON lines carry input `ia` (numbering of [[sweep_axis_names]]):
+   !> every input the mode uses, swept or not, and the load of the load mode only.
+   pure logical function reports_case_input(config, ia)
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> Input index.
+      integer, intent(in) :: ia
+      character(len=:), allocatable :: name
+      name = trim(sweep_axis_names(ia))
+      reports_case_input = config%reports_input(ia)
+      if (reports_case_input) return
+      select case (name)
+      case ('t_y', 'roll', 'friction', 'bound')
+         reports_case_input = .true.
+      case ('normal_force')
+         reports_case_input = config%load%mode == 'force'
+      case ('approach')
+         reports_case_input = config%load%mode == 'approach'
+      case ('vertical_force')
+         reports_case_input = config%load%mode == 'vertical'
+      case ('spin_model', 'nu_x', 'nu_y', 'phi')
+         reports_case_input = .not. config%is_kinematic()
+      case default
+         reports_case_input = config%is_kinematic() .and. is_kinematic_input(name)
+      end select
+   end function reports_case_input
+
    !> One line for case `icase`.
    function report_line(config, icase, summary, format, message) result(line)
       !> The configuration.
@@ -90,9 +146,10 @@ contains
       ok = summary%stat == 0
       select case (format)
       case ('csv')
-         line = str_int(icase)//','//str_int(summary%stat)//','//str_int(summary%n_patches)
+         line = str_int(icase)//','//str_int(summary%stat)//','// &
+            str_int(summary%n_patches)//','//str_int(summary%n_loaded)
          do ia = 1, n_sweep_axes
-            if (config%reports_input(ia)) line = line//','//input_text(p, ia, .false.)
+            if (reports_case_input(config, ia)) line = line//','//input_text(p, ia, .false.)
          end do
          do k = 1, n_summary_columns
             if (.not. summary_column_used(k, config%is_kinematic())) cycle
@@ -104,9 +161,10 @@ contains
          if (present(message)) line = line//csv_quoted(message)
       case ('json')
          line = '{"case":'//str_int(icase)//',"status":'//str_int(summary%stat)// &
-            ',"n_patches":'//str_int(summary%n_patches)
+            ',"n_patches":'//str_int(summary%n_patches)//',"n_loaded":'// &
+            str_int(summary%n_loaded)
          do ia = 1, n_sweep_axes
-            if (config%reports_input(ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
+            if (reports_case_input(config, ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
                '":'//input_text(p, ia, .true.)
          end do
          if (ok) then
@@ -125,8 +183,8 @@ contains
                short=.true.), 14)
          end do
          if (ok .and. config%is_kinematic()) then
-            line = line//pad(str_int(summary%n_patches), 14)
-            do k = 2, size(kinematic_text_columns)
+            line = line//pad(str_int(summary%n_patches), 14)//pad(str_int(summary%n_loaded), 14)
+            do k = 3, size(kinematic_text_columns)
                line = line//pad(short_real(summary_value(summary, &
                   column_index(kinematic_text_columns(k)))), 14)
             end do
@@ -169,7 +227,8 @@ contains
          end if
          text = 'wheel '//trim(config%profiles%wheel)//' on rail '//trim(config%profiles%rail)// &
             ', t_y = '//format_real(config%position%t_y)//' mm'//nl//inputs// &
-            'contact    '//str_int(s%n_patches)//' patch(es); main patch: gamma0 = '// &
+            'contact    '//str_int(s%n_patches)//' patch(es) found, '//str_int(s%n_loaded)// &
+            ' loaded; main patch '//str_int(s%main_patch)//': gamma0 = '// &
             short_real(s%gamma0)//' rad, r0 = '//short_real(s%r0)//' mm, y_track = '// &
             short_real(s%y_track)//' mm'//nl// &
             'normal     Fn = '//short_real(s%fn)//' N, approach = '//short_real(s%approach)// &

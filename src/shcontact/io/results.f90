@@ -9,7 +9,8 @@
 !>     /input/namelist       the resolved configuration (namelist text)
 !>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`
 !>     /geometry/patch_K/... the patch geometry tables, when every case shares them
-!>     /summary/...          one row per case: case, status, n_patches, main_patch, a column
+!>     /summary/...          one row per case: case, status, n_patches (found), n_loaded
+!>                           (solved; /cases/.../patch_1..n_loaded), main_patch, a column
 !>                           per swept input (and per wheelset input of a kinematic run), a
 !>                           column per result (totals in the track frame, the main patch's
 !>                           forces, normalised forces...; its creepages in a kinematic run)
@@ -353,6 +354,8 @@ contains
       if (.not. allocated(error)) call h5_write(file, 'summary/status', ints, '1', error)
       ints = summaries%n_patches
       if (.not. allocated(error)) call h5_write(file, 'summary/n_patches', ints, '1', error)
+      ints = summaries%n_loaded
+      if (.not. allocated(error)) call h5_write(file, 'summary/n_loaded', ints, '1', error)
       ints = summaries%main_patch
       if (.not. allocated(error)) call h5_write(file, 'summary/main_patch', ints, '1', error)
       if (allocated(error)) return
@@ -453,7 +456,7 @@ contains
          config%wants_field('pressure') .or. config%wants_field('traction') .or. &
          config%wants_field('state') .or. config%wants_field('slip')
       if (.not. any_field .or. result%summary%stat /= 0) return
-      do k = 1, result%summary%n_patches
+      do k = 1, result%summary%n_loaded
          patch = group//'/patch_'//str_int(k)
          if (config%wants_field('geometry') .and. geometry_varies(config) .and. &
              allocated(result%geometry)) then
@@ -674,6 +677,13 @@ contains
       end if
       if (.not. allocated(error)) then
          summaries%n_patches = ints
+         ! Files of versions before n_loaded counted the loaded patches in n_patches.
+         summaries%n_loaded = ints
+         if (h5_exists(file, 'summary/n_loaded')) call h5_read(file, 'summary/n_loaded', ints, &
+            error)
+      end if
+      if (.not. allocated(error)) then
+         summaries%n_loaded = ints
          call h5_read(file, 'summary/main_patch', ints, error)
       end if
       if (.not. allocated(error)) summaries%main_patch = ints

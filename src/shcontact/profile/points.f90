@@ -65,7 +65,8 @@ contains
    !> How to set a reading option in a message: the library's argument (`mirror_z = .true.`)
    !> or, with `prefix` (e.g. '&profiles wheel_'), the caller's variable
    !> (`&profiles wheel_mirror_z = 'yes'`). `value` is 'yes', 'no' or, for the scale, a
-   !> placeholder such as 'FACTOR'.
+   !> placeholder such as 'FACTOR'. The prefix '--' names command-line options
+   !> (`--mirror-z yes`, `--scale FACTOR`).
    pure function option_hint(prefix, name, value) result(text)
       !> The caller's prefix ('' or absent: the library's arguments).
       character(len=*), intent(in), optional :: prefix
@@ -83,11 +84,24 @@ contains
          case ('no'); text = name//' = .false.'
          case default; text = name//' = '//value
          end select
+      else if (trim(prefix) == '--') then
+         text = '--'//dashed(name)//' '//value
       else if (name == 'scale') then
          text = trim(prefix)//name//' = '//value
       else
          text = trim(prefix)//name//" = '"//value//"'"
       end if
    end function option_hint
+
+   !> mirror_z → mirror-z.
+   pure function dashed(name) result(text)
+      character(len=*), intent(in) :: name
+      character(len=len(name)) :: text
+      integer :: i
+      text = name
+      do i = 1, len(text)
+         if (text(i:i) == '_') text(i:i) = '-'
+      end do
+   end function dashed
 
 end module shcontact_profile_points

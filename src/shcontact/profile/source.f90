@@ -26,8 +26,9 @@ contains
          option_prefix)
       !> `builtin:NAME` or a file name.
       character(len=*), intent(in) :: spec
-      !> profile_kind_wheel or profile_kind_rail (for file formats that need it).
-      integer, intent(in) :: kind
+      !> profile_kind_wheel or profile_kind_rail; absent: as the file or its extension says
+      !> (an error when neither does).
+      integer, intent(in), optional :: kind
       !> The profile.
       type(profile_type), intent(out) :: profile
       !> Set for a missing, unreadable or malformed profile, or an unknown built-in name.

@@ -1,0 +1,81 @@
+!> What the program takes from its environment: the Slurm job-array variables (only when asked
+!> with `--shard slurm`) and integer variables in general.
+module shcontact_app_environment
+   use shcontact_core_error, only: error_type, fatal_error, stat_usage
+   use shcontact_core_strings, only: str_int
+   implicit none
+   private
+
+   public :: slurm_shard, in_slurm_array, integer_variable
+
+contains
+
+   !> The shard of this task of a Slurm job array: SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN + 1
+   !> (MIN defaults to 1) of SLURM_ARRAY_TASK_COUNT. A usage error outside a job array or for a
+   !> task outside 1..COUNT (a job array with gaps or a step).
+   subroutine slurm_shard(shard, n_shards, error)
+      !> This task's shard and the number of shards.
+      integer, intent(out) :: shard, n_shards
+      !> stat_usage when the variables do not give a shard.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: id, first, count
+      logical :: ok_id, ok_count, ok_first
+      shard = 1
+      n_shards = 1
+      call integer_variable('SLURM_ARRAY_TASK_COUNT', count, ok_count)
+      call integer_variable('SLURM_ARRAY_TASK_ID', id, ok_id)
+      if (.not. (ok_count .and. ok_id)) then
+         call fatal_error(error, '--shard slurm: SLURM_ARRAY_TASK_ID and '// &
+            'SLURM_ARRAY_TASK_COUNT are not set (or not integers); --shard slurm is for the '// &
+            'tasks of a Slurm job array (sbatch --array=1-N), elsewhere give --shard I/N', &
+            stat_usage)
+         return
+      end if
+      call integer_variable('SLURM_ARRAY_TASK_MIN', first, ok_first)
+      if (.not. ok_first) first = 1
+      shard = id - first + 1
+      n_shards = count
+      if (count < 1 .or. shard < 1 .or. shard > n_shards) then
+         call fatal_error(error, '--shard slurm: SLURM_ARRAY_TASK_ID = '//str_int(id)// &
+            ' (SLURM_ARRAY_TASK_MIN = '//str_int(first)//') does not give a shard of '// &
+            str_int(count)//' (use a contiguous job array, e.g. --array=1-'// &
+            str_int(max(count, 1))//', or give --shard I/N)', stat_usage)
+      end if
+   end subroutine slurm_shard
+
+   !> The task of a Slurm job array this process runs in ('' outside a job array).
+   function in_slurm_array() result(text)
+      character(len=:), allocatable :: text
+      integer :: id, count
+      logical :: ok_id, ok_count
+      call integer_variable('SLURM_ARRAY_TASK_ID', id, ok_id)
+      call integer_variable('SLURM_ARRAY_TASK_COUNT', count, ok_count)
+      text = ''
+      if (ok_id) text = 'task '//str_int(id)
+      if (ok_id .and. ok_count) text = text//' of '//str_int(count)
+   end function in_slurm_array
+
+   !> An integer environment variable (ok = .false. when unset, empty or not an integer).
+   subroutine integer_variable(name, value, ok)
+      !> The variable.
+      character(len=*), intent(in) :: name
+      !> Its value (0 when not ok).
+      integer, intent(out) :: value
+      !> Set and an integer.
+      logical, intent(out) :: ok
+      character(len=32) :: buf
+      integer :: length, stat
+      value = 0
+      call get_environment_variable(name, buf, length, stat)
+      ok = stat == 0 .and. length > 0 .and. length <= len(buf)
+      if (.not. ok) return
+      if (verify(trim(adjustl(buf(1:length))), '+-0123456789') /= 0) then
+         ok = .false.
+         return
+      end if
+      read (buf(1:length), *, iostat=stat) value
+      ok = stat == 0
+      if (.not. ok) value = 0
+   end subroutine integer_variable
+
+end module shcontact_app_environment

@@ -1,0 +1,215 @@
+!> `shcontact profiles`: check, clean and export a measured profile (`profiles FILE [-o OUT]
+!> [--plot SCRIPT.gp]`), or write the built-in profiles (`profiles --write DIR`).
+!>
+!> A profile file goes through the library's `load_profile`, exactly as a case reads it (reader,
+!> clean-up, plausibility checks), so a file this command accepts is a file a case accepts, and
+!> its messages are the ones a run would give.
+module shcontact_app_profiles
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, stat_io
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_files, only: make_directory
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
+   use shcontact_profile_reader, only: read_profile, profile_file_format
+   use shcontact_profile_source, only: load_profile
+   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
+   use shcontact_app_cli, only: cli_type
+   use shcontact_app_commands, only: report_error
+   implicit none
+   private
+
+   public :: profiles_command
+
+contains
+
+   !> `shcontact profiles FILE [-o OUT] [--plot SCRIPT]` or `shcontact profiles --write DIR`.
+   integer function profiles_command(cli) result(status)
+      !> The command line.
+      type(cli_type), intent(in) :: cli
+      type(error_type), allocatable :: error
+      type(profile_type) :: read, cleaned
+      status = 0
+      if (len(cli%write_dir) > 0) then
+         call make_directory(cli%write_dir, error)
+         if (.not. allocated(error)) call write_builtin_profiles(cli%write_dir, error)
+         if (allocated(error)) then
+            status = report_error(error)
+            return
+         end if
+         if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: built-in profiles '// &
+            'written to '//cli%write_dir
+         return
+      end if
+
+      call load_file(cli, read, cleaned, error)
+      if (.not. allocated(error) .and. len(cli%output) > 0) &
+         call write_profile_plain(cleaned, cli%output, error)
+      if (.not. allocated(error) .and. len(cli%plot_file) > 0) &
+         call write_gnuplot_script(cli%plot_file, read, cleaned, error)
+      if (allocated(error)) then
+         status = report_error(error)
+         return
+      end if
+      if (.not. cli%quiet) write (output_unit, '(a)') profile_summary(cli, read, cleaned)
+   end function profiles_command
+
+   !> The points as read (canonical form, not cleaned) and the profile a case would use.
+   subroutine load_file(cli, read, cleaned, error)
+      type(cli_type), intent(in) :: cli
+      type(profile_type), intent(out) :: read, cleaned
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: kind
+      real(wp), allocatable :: scale
+      logical, allocatable :: mirror_y, mirror_z
+      ! Unallocated, they are absent arguments: the file (or its extension) decides.
+      if (cli%kind == 'wheel') kind = profile_kind_wheel
+      if (cli%kind == 'rail') kind = profile_kind_rail
+      if (cli%scale > 0.0_wp) scale = cli%scale
+      if (len(cli%mirror_y) > 0) mirror_y = cli%mirror_y == 'yes'
+      if (len(cli%mirror_z) > 0) mirror_z = cli%mirror_z == 'yes'
+      call load_profile(cli%profile_file, kind, cleaned, error, cli%file_format, &
+         mirror_y=mirror_y, mirror_z=mirror_z, scale=scale, option_prefix='--')
+      if (allocated(error)) return
+      call read_profile(cli%profile_file, read, error, format=cli%file_format, kind=kind, &
+         mirror_y=mirror_y, mirror_z=mirror_z, scale=scale, option_prefix='--')
+   end subroutine load_file
+
+   !> What was read and what the clean-up made of it.
+   function profile_summary(cli, read, cleaned) result(text)
+      type(cli_type), intent(in) :: cli
+      type(profile_type), intent(in) :: read, cleaned
+      character(len=:), allocatable :: text, units
+      character(len=1), parameter :: nl = new_line('a')
+      integer :: n
+      if (cli%scale > 0.0_wp) then
+         units = 'mm (file lengths x '//mm(cli%scale)//', --scale)'
+      else if (profile_file_format(cli%profile_file, cli%file_format) == 'simpack') then
+         units = 'mm (file lengths scaled by its units.len.f; mm when it has none)'
+      else
+         units = 'mm (as in the file; --scale F converts other units)'
+      end if
+      n = read%size() - cleaned%size()
+      text = 'profile    '//cli%profile_file//': '//kind_name(cleaned%kind)//', format '// &
+         profile_file_format(cli%profile_file, cli%file_format)//nl// &
+         'points     '//str_int(read%size())//' read, '//str_int(cleaned%size())// &
+         ' after clean-up ('//str_int(n)//' merged or dropped: duplicates, zigzags, '// &
+         'collinear points)'//nl// &
+         'y          '//mm(minval(cleaned%y))//' to '//mm(maxval(cleaned%y))// &
+         ' mm (right side, towards the field side)'//nl// &
+         'z          '//mm(minval(cleaned%z))//' to '//mm(maxval(cleaned%z))// &
+         ' mm (downward)'//nl// &
+         'arc length '//mm(cleaned%s(cleaned%size()))//' mm'//nl// &
+         'units      '//units//nl// &
+         'checks     passed (point order, duplicates, loops, arc length, spikes, running '// &
+         'surface)'
+      if (len(cli%output) > 0) text = text//nl//'written    '//cli%output// &
+         ' (y z in mm, z down; a case reads it as '//kind_name(cleaned%kind)//' = '''// &
+         cli%output//''')'
+      if (len(cli%plot_file) > 0) text = text//nl//'plot       '//cli%plot_file// &
+         ' (gnuplot '//cli%plot_file//' writes '//png_name(cli%plot_file)//')'
+   end function profile_summary
+
+   pure function kind_name(kind) result(text)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: text
+      text = 'rail'
+      if (kind == profile_kind_wheel) text = 'wheel'
+   end function kind_name
+
+   !> A length with three decimals.
+   pure function mm(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=32) :: buf
+      write (buf, '(f0.3)') x
+      text = trim(adjustl(buf))
+      if (text(1:1) == '.') text = '0'//text
+      if (text(1:2) == '-.') text = '-0'//text(2:)
+   end function mm
+
+   !> SCRIPT.gp → SCRIPT.png.
+   pure function png_name(script) result(name)
+      character(len=*), intent(in) :: script
+      character(len=:), allocatable :: name
+      integer :: dot
+      dot = index(script, '.', back=.true.)
+      if (dot > index(script, '/', back=.true.) + 1) then
+         name = script(1:dot - 1)//'.png'
+      else
+         name = script//'.png'
+      end if
+   end function png_name
+
+   !> A gnuplot script holding both point lists (no data files beside it): the points read as
+   !> dots, the cleaned profile as a line, z downward, equal axes.
+   subroutine write_gnuplot_script(script, read, cleaned, error)
+      character(len=*), intent(in) :: script
+      type(profile_type), intent(in) :: read, cleaned
+      type(error_type), allocatable, intent(out) :: error
+      character(len=256) :: message
+      integer :: unit, stat
+      open (newunit=unit, file=script, status='replace', action='write', iostat=stat, &
+         iomsg=message)
+      if (stat /= 0) then
+         call fatal_error(error, script//': cannot create the file: '//trim(message), stat_io)
+         return
+      end if
+      write (unit, '(a)', iostat=stat, iomsg=message) &
+         '# Written by shcontact profiles: gnuplot '//script//' writes '//png_name(script), &
+         'if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {', &
+         '    set terminal pngcairo size 1200,600', &
+         '} else {', &
+         '    set terminal png size 1200,600', &
+         '}', &
+         "set output '"//png_name(script)//"'", &
+         "set title '"//kind_name(cleaned%kind)//' profile '//gnuplot_quoted(cleaned%source)// &
+         "'", &
+         "set xlabel 'y (mm, towards the field side)'", &
+         "set ylabel 'z (mm, downward)'", &
+         'set yrange [*:*] reverse', &
+         'set size ratio -1', &
+         'set grid', &
+         'set key bottom right'
+      if (stat == 0) call write_points(unit, '$read', read, stat, message)
+      if (stat == 0) call write_points(unit, '$cleaned', cleaned, stat, message)
+      if (stat == 0) write (unit, '(a)', iostat=stat, iomsg=message) &
+         "plot $read with points pt 7 ps 0.5 title 'points read ("//str_int(read%size())// &
+         ")', \", &
+         "     $cleaned with lines lw 2 title 'cleaned ("//str_int(cleaned%size())//")'"
+      if (stat /= 0) then
+         close (unit)
+         call fatal_error(error, script//': cannot write the file: '//trim(message), stat_io)
+         return
+      end if
+      close (unit)
+   end subroutine write_gnuplot_script
+
+   subroutine write_points(unit, name, profile, stat, message)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: name
+      type(profile_type), intent(in) :: profile
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: message
+      integer :: i
+      write (unit, '(a)', iostat=stat, iomsg=message) name//' << EOD'
+      do i = 1, profile%size()
+         if (stat /= 0) return
+         write (unit, '(2es23.14e3)', iostat=stat, iomsg=message) profile%y(i), profile%z(i)
+      end do
+      if (stat == 0) write (unit, '(a)', iostat=stat, iomsg=message) 'EOD'
+   end subroutine write_points
+
+   !> A text for a single-quoted gnuplot string (quotes doubled).
+   pure function gnuplot_quoted(text) result(q)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: q
+      integer :: i
+      q = ''
+      do i = 1, len(text)
+         if (text(i:i) == "'") q = q//"'"
+         q = q//text(i:i)
+      end do
+   end function gnuplot_quoted
+
+end module shcontact_app_profiles

@@ -1,0 +1,579 @@
+!> Tests of the command line as batch and shell users meet it (issue 15): per-command help,
+!> the Slurm job-array variables (ignored unless `--shard slurm`), progress lines in a batch
+!> log, `-q` and `--format none`, the inputs and units of the CSV/JSON lines, the patch counts
+!> (found and loaded) in every output, `profiles FILE`, and documentation commands that write
+!> nowhere near the repository.
+!>
+!> The program is run as in the suite `app` (test_app's helpers): stdout and stderr go to files,
+!> so stderr is not a terminal, as in a batch log.
+module test_cli
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_case_result, only: case_summary_type
+   use shcontact_io_results, only: read_result_summary
+   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists
+   use shcontact_core_kinds, only: wp
+   use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
+      load_normal_force
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_io_files, only: file_exists
+   use test_app, only: scratch_directory, shell, run_program, file_text, write_lines, &
+      unavailable, expect_in, program_path
+   implicit none
+   private
+   public :: collect_cli
+
+   !> A 12-case sweep, checkpoint blocks of 3, coarse grids (as test_app's).
+   character(len=*), parameter :: sweep_case(*) = [character(len=72) :: &
+      '&sweep', &
+      "  bound = 'weighted', 'clipped'", &
+      '  nu_x = 0.0, 1.0e-3, 2.0e-3', &
+      '  phi = 0.0, 1.0e-3', &
+      '/', &
+      "&output checkpoint_cases = 3, compression = 1 /", &
+      '&normal n_strips = 40 /', &
+      '&tangential n_elements = 20 /']
+
+   !> The Slurm variables of task 3 of an 8-task array --array=1-8.
+   character(len=*), parameter :: slurm_task_3_of_8 = 'SLURM_ARRAY_TASK_ID=3 '// &
+      'SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=8 SLURM_ARRAY_JOB_ID=4242'
+
+contains
+
+   subroutine collect_cli(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('per_command_help', test_help), &
+         new_unittest('options_of_other_commands', test_foreign_options), &
+         new_unittest('slurm_variables_ignored_without_shard', test_slurm_ignored), &
+         new_unittest('shard_slurm', test_shard_slurm), &
+         new_unittest('slurm_example_script', test_slurm_script), &
+         new_unittest('progress_lines_in_a_batch_log', test_progress_lines), &
+         new_unittest('quiet_and_format_none', test_quiet), &
+         new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
+         new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
+         new_unittest('patches_found_and_loaded', test_patch_counts), &
+         new_unittest('profiles_file', test_profiles_file), &
+         new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
+         ]
+   end subroutine collect_cli
+
+   !> Number of lines of a text.
+   pure integer function count_lines(text) result(n)
+      character(len=*), intent(in) :: text
+      integer :: i
+      n = 0
+      do i = 1, len(text)
+         if (text(i:i) == new_line('a')) n = n + 1
+      end do
+   end function count_lines
+
+   !> Line `k` of a text ('' when it has fewer lines).
+   function line_of(text, k) result(line)
+      character(len=*), intent(in) :: text
+      integer, intent(in) :: k
+      character(len=:), allocatable :: line
+      integer :: i, start, found
+      start = 1
+      found = 0
+      line = ''
+      do i = 1, len(text)
+         if (text(i:i) /= new_line('a')) cycle
+         found = found + 1
+         if (found == k) then
+            line = text(start:i - 1)
+            return
+         end if
+         start = i + 1
+      end do
+   end function line_of
+
+   subroutine expect_not_in(error, text, fragment, what)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: text, fragment, what
+      if (index(text, fragment) > 0) call test_failed(error, what//': did not expect "'// &
+         fragment//'" in: '//text)
+   end subroutine expect_not_in
+
+   !> Run, expect the status, and return stdout and stderr.
+   subroutine run_expect(error, dir, args, status, out, err, env)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: dir, args
+      integer, intent(in) :: status
+      character(len=:), allocatable, intent(out) :: out, err
+      character(len=*), intent(in), optional :: env
+      integer :: stat
+      stat = run_program(dir, args, env)
+      out = file_text(dir//'/out.txt')
+      err = file_text(dir//'/err.txt')
+      call check(error, stat, status, message='shcontact '//args//': exit status; stderr: '// &
+         err)
+   end subroutine run_expect
+
+   ! ------------------------------------------------------------------------------------------
+
+   !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0.
+   subroutine test_help(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: commands(4) = [character(len=8) :: 'run', 'merge', &
+         'profiles', 'geometry']
+      character(len=*), parameter :: own_option(4) = [character(len=13) :: '--shard slurm', &
+         'SHARD.h5', '--plot', 'geometry.txt']
+      character(len=:), allocatable :: dir, out, err, general
+      integer :: k
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_help')
+      call run_expect(error, dir, '--help', 0, general, err)
+      if (allocated(error)) return
+      do k = 1, size(commands)
+         call run_expect(error, dir, trim(commands(k))//' --help', 0, out, err)
+         if (allocated(error)) return
+         call expect_in(error, out, 'Usage: shcontact '//trim(commands(k)), trim(commands(k))// &
+            ' --help')
+         if (allocated(error)) return
+         call expect_in(error, out, trim(own_option(k)), trim(commands(k))//' --help')
+         if (allocated(error)) return
+         call expect_in(error, out, 'Exit status', trim(commands(k))//' --help')
+         if (allocated(error)) return
+         call check(error, out /= general, message=trim(commands(k))//' --help prints the '// &
+            'general help')
+         if (allocated(error)) return
+         call check(error, len(err) == 0, message=trim(commands(k))//' --help: stderr '//err)
+         if (allocated(error)) return
+         ! Help wins over everything else on the line, even a bad option after it.
+         call run_expect(error, dir, trim(commands(k))//' -q -h --frobnicate', 0, err, err)
+         if (allocated(error)) return
+         call run_expect(error, dir, 'help '//trim(commands(k)), 0, err, general)
+         if (allocated(error)) return
+         call check(error, err == out, message='help '//trim(commands(k))//' differs from '// &
+            trim(commands(k))//' --help')
+         if (allocated(error)) return
+         call run_expect(error, dir, '--help', 0, general, err)
+         if (allocated(error)) return
+      end do
+      call expect_in(error, general, 'shcontact COMMAND --help', 'the general help points there')
+      call shell('rm -rf '//dir)
+   end subroutine test_help
+
+   !> An option of another command is a usage error that names its command.
+   subroutine test_foreign_options(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_foreign')
+      call run_expect(error, dir, 'merge a.h5 b.h5 --set x%y=1', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'option "--set" belongs to run and geometry, not to merge', &
+         'merge --set')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --plot p.gp', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'belongs to profiles', 'run --plot')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'geometry --format csv', 1, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --csv-units', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, '--csv-units needs --format csv', 'run --csv-units')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --format yaml', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'expected text, csv, json or none', 'run --format yaml')
+      call shell('rm -rf '//dir)
+   end subroutine test_foreign_options
+
+   !> Inside a job array, a run without --shard solves every case (the "one case file per
+   !> array task" pattern), with a note on stderr that -q silences.
+   subroutine test_slurm_ignored(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_slurm_ignored')
+      call run_expect(error, dir, 'run -o one.h5', 0, out, err, env=slurm_task_3_of_8)
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/one.h5'), message='one.h5 written')
+      if (allocated(error)) return
+      call expect_in(error, out, 'Fn = 64700', 'the summary of the case')
+      if (allocated(error)) return
+      call expect_in(error, err, 'Slurm job-array task 3 of 8: solving every case', &
+         'the note on stderr')
+      if (allocated(error)) return
+      call expect_in(error, err, '1 of 1 case(s) solved', 'the closing note')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q -o one.h5', 0, out, err, env=slurm_task_3_of_8)
+      if (allocated(error)) return
+      call check(error, len(err) == 0 .and. len(out) == 0, message='-q in a job array: '// &
+         'nothing on stdout or stderr; got '//out//err)
+      if (allocated(error)) return
+      ! A sweep is not sliced either: every case, no shard file.
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      call run_expect(error, dir, 'run sweep.nml -q --format csv -o sweep.h5', 0, out, err, &
+         env=slurm_task_3_of_8)
+      if (allocated(error)) return
+      call check(error, count_lines(out), 13, message='a header and 12 cases')
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/sweep.h5') .and. &
+         .not. file_exists(dir//'/sweep-shard3of8.h5'), message='the whole sweep in sweep.h5')
+      call shell('rm -rf '//dir)
+   end subroutine test_slurm_ignored
+
+   !> --shard slurm takes the slice from the variables; errors outside an array, for a task
+   !> outside the array and for more shards than cases; --shard I/N wins over the variables.
+   subroutine test_shard_slurm(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      character(len=*), parameter :: task_3_of_4 = 'SLURM_ARRAY_TASK_ID=12 '// &
+         'SLURM_ARRAY_TASK_MIN=10 SLURM_ARRAY_TASK_COUNT=4'
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_shard_slurm')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      call run_expect(error, dir, 'run sweep.nml --shard slurm --format csv -o s.h5', 0, out, &
+         err, env=task_3_of_4)
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/s-shard3of4.h5'), message='s-shard3of4.h5 written')
+      if (allocated(error)) return
+      ! Cases 7 to 9 of 12.
+      call check(error, count_lines(out), 4, message='a header and 3 cases: '//out)
+      if (allocated(error)) return
+      call check(error, index(line_of(out, 2), '7,0,') == 1 .and. &
+         index(line_of(out, 4), '9,0,') == 1, message='cases 7 to 9: '//out)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run sweep.nml --shard 1/2 -q -o t.h5', 0, out, err, &
+         env=task_3_of_4)
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/t-shard1of2.h5'), message='--shard I/N wins')
+      if (allocated(error)) return
+      ! One case, eight tasks: the error of the issue, now only when asked for.
+      call run_expect(error, dir, 'run --shard slurm -o one.h5', 1, out, err, &
+         env=slurm_task_3_of_8)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shard 3/8 of a run of 1 cases is empty', '--shard slurm')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --shard slurm -o one.h5', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT are not set', &
+         '--shard slurm outside a job array')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run sweep.nml --shard slurm -o s.h5', 1, out, err, &
+         env='SLURM_ARRAY_TASK_ID=9 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=4')
+      if (allocated(error)) return
+      call expect_in(error, err, 'does not give a shard of 4', 'a task outside the array')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run sweep.nml --shard slurm -o s.h5', 1, out, err, &
+         env='SLURM_ARRAY_TASK_ID=x3 SLURM_ARRAY_TASK_COUNT=4')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && test -z "$(ls -d one* 2>/dev/null)"', stat)
+      call check(error, stat, 0, message='no output from a refused shard')
+      call shell('rm -rf '//dir)
+   end subroutine test_shard_slurm
+
+   !> examples/slurm_doe.sh as Slurm runs it: eight tasks with their array variables, then the
+   !> merge of its comment; the merged file holds the 8000 cases. Logs hold errors only (-q).
+   subroutine test_slurm_script(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, text, messages(:)
+      type(case_summary_type), allocatable :: s(:)
+      integer, allocatable :: indices(:), failed(:)
+      type(lib_error), allocatable :: lerr
+      integer :: stat, n, task
+      character(len=2) :: id
+      if (unavailable(error, .false.)) return
+      if (.not. file_exists('examples/slurm_doe.sh')) then
+         call skip_test(error, 'examples/slurm_doe.sh is not in the working directory')
+         return
+      end if
+      dir = scratch_directory('cli_slurm_script')
+      call shell('mkdir -p '//dir//'/bin '//dir//'/examples && cp examples/slurm_doe.sh '// &
+         'examples/doe_8000.nml '//dir//'/examples/ && ln -s '//program_path()//' '//dir// &
+         '/bin/shcontact')
+      do task = 1, 8
+         write (id, '(i0)') task
+         call shell('cd '//dir//' && env PATH='//dir//'/bin:"$PATH" SLURM_ARRAY_TASK_ID='// &
+            trim(id)//' SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=8 '// &
+            'SLURM_CPUS_PER_TASK=2 bash examples/slurm_doe.sh > task'//trim(id)//'.log 2>&1', &
+            stat)
+         call check(error, stat, 0, message='task '//trim(id)//': '// &
+            file_text(dir//'/task'//trim(id)//'.log'))
+         if (allocated(error)) return
+      end do
+      call shell('cd '//dir//' && test -z "$(cat task*.log)"', stat)
+      call check(error, stat, 0, message='the task logs hold errors only')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && PATH='//dir//'/bin:"$PATH" && '// &
+         'shcontact merge build/doe_8000.h5 build/doe_8000-shard*of8.h5 2> merge.log', stat)
+      call check(error, stat, 0, message='merge: '//file_text(dir//'/merge.log'))
+      if (allocated(error)) return
+      call read_result_summary(dir//'/build/doe_8000.h5', text, n, indices, s, failed, &
+         messages, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, size(indices) == 8000 .and. all(s%stat == 0), &
+         message='the merged file holds the 8000 solved cases')
+      call shell('rm -rf '//dir)
+   end subroutine test_slurm_script
+
+   !> With stderr in a file: progress lines with cases done, percentage, rate and ETA, the
+   !> last one at 100 %; none with -q; none for a single case.
+   subroutine test_progress_lines(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_progress')
+      call write_lines(dir//'/sweep.nml', sweep_case)
+      call run_expect(error, dir, 'run sweep.nml --format none -o s.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: progress: 12 of 12 cases (100 %), ', 'last line')
+      if (allocated(error)) return
+      ! Checkpoint blocks of 3: at least 3, 6, 9 and 12 cases are reported.
+      call shell('test $(grep -c "^shcontact: progress: [0-9]* of 12 cases ([0-9]* %), '// &
+         '[0-9.]* cases/s, elapsed [0-9.]* s, ETA [0-9.]* s$" '//dir//'/err.txt) -ge 4', stat)
+      call check(error, stat, 0, message='progress lines (cases, %, rate, ETA): '//err)
+      if (allocated(error)) return
+      call expect_not_in(error, err, achar(13), 'no carriage returns (a bar) in a log')
+      if (allocated(error)) return
+      call check(error, len(out) == 0, message='--format none: stdout '//out)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run sweep.nml -q -o s.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(err) == 0, message='-q: no progress lines: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -o one.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_not_in(error, err, 'progress:', 'a single case')
+      call shell('rm -rf '//dir)
+   end subroutine test_progress_lines
+
+   !> -q: nothing on stdout unless --format is given; --format none: nothing on stdout.
+   subroutine test_quiet(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_quiet')
+      call run_expect(error, dir, 'run -q -o q.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(out) == 0 .and. len(err) == 0, message='-q: '//out//err)
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/q.h5'), message='-q still writes the file')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --format none -o q.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(out) == 0, message='--format none: '//out)
+      if (allocated(error)) return
+      call expect_in(error, err, 'results in q.h5', '--format none keeps the notes')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format json -o q.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, count_lines(out) == 1 .and. len(err) == 0, &
+         message='-q --format json: one line on stdout, nothing on stderr: '//out//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format text -o q.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, 'Fn = 64700', '-q --format text')
+      call shell('rm -rf '//dir)
+   end subroutine test_quiet
+
+   !> A single case's CSV and JSON lines carry its inputs; --csv-units adds a units line under
+   !> the header with one field per column.
+   subroutine test_inputs_and_units(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, header, units, row
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_inputs')
+      call run_expect(error, dir, 'run -q --format csv --csv-units --set creepage%nu_y=-1e-3 '// &
+         '--set position%t_y=4.5 -o c.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, count_lines(out), 3, message='header, units, one case: '//out)
+      if (allocated(error)) return
+      header = line_of(out, 1)
+      units = line_of(out, 2)
+      row = line_of(out, 3)
+      call expect_in(error, header, 'case,status,n_patches,n_loaded,t_y,roll,normal_force,'// &
+         'friction,bound,spin_model,nu_x,nu_y,phi,fn_total,', 'csv header')
+      if (allocated(error)) return
+      call expect_in(error, units, '1,1,1,1,mm,rad,N,1,,,1,1,rad/mm,N,', 'units line')
+      if (allocated(error)) return
+      call expect_in(error, row, ',4.5,0.0,64700.0,0.3,weighted,uniform,0.00058,-0.001,'// &
+         '0.000274,', 'the inputs of the case')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && test $(awk -F, "{print NF}" out.txt | sort -u | wc -l) '// &
+         '-eq 1', stat)
+      call check(error, stat, 0, message='header, units and row have as many fields: '//out)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format json --set creepage%nu_y=-1e-3 -o c.h5', 0, &
+         out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, '"t_y":4.733,"roll":0.0,"normal_force":64700.0,'// &
+         '"friction":0.3,"bound":"weighted","spin_model":"uniform","nu_x":0.00058,'// &
+         '"nu_y":-0.001,"phi":0.000274,', 'json inputs')
+      call shell('rm -rf '//dir)
+   end subroutine test_inputs_and_units
+
+   !> A kinematic case's lines carry the wheelset inputs, the load and the friction.
+   subroutine test_kinematic_inputs(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_kin_inputs')
+      call run_expect(error, dir, "run -q --format csv --csv-units --set kinematics%mode=on "// &
+         '--set kinematics%yaw=0.004 -o k.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, line_of(out, 1), 'case,status,n_patches,n_loaded,t_y,roll,yaw,'// &
+         'vertical_force,friction,bound,v_forward,v_lateral,v_vertical,roll_rate,yaw_rate,'// &
+         'pitch_rate,fn_total,', 'kinematic csv header')
+      if (allocated(error)) return
+      call expect_in(error, line_of(out, 2), '1,1,1,1,mm,rad,rad,N,1,,mm/s,mm/s,mm/s,rad/s,'// &
+         'rad/s,rad/s,N,', 'kinematic units')
+      if (allocated(error)) return
+      call expect_in(error, line_of(out, 3), '1,0,2,2,4.733,0.0,0.004,64700.0,0.3,weighted,'// &
+         '30000.0,', 'kinematic inputs (two patches, both loaded)')
+      call shell('rm -rf '//dir)
+   end subroutine test_kinematic_inputs
+
+   !> The default case: two patches found, one loaded by the normal force; the same counts in
+   !> the text, the CSV line, /summary and the library's result, /geometry/patch_2 beside
+   !> /cases/000001/patch_1 only.
+   subroutine test_patch_counts(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, text, messages(:)
+      type(case_summary_type), allocatable :: s(:)
+      integer, allocatable :: indices(:), failed(:)
+      type(lib_error), allocatable :: lerr
+      type(h5_file_type) :: file
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      integer :: n
+      logical :: geometry_2, fields_2, fields_1
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_patches')
+      call run_expect(error, dir, 'run -o p.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, 'contact    2 patch(es) found, 1 loaded; main patch 1', 'text')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format csv -o p.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(line_of(out, 2), '1,0,2,1,') == 1, message='csv: '//out)
+      if (allocated(error)) return
+      call read_result_summary(dir//'/p.h5', text, n, indices, s, failed, messages, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, s(1)%n_patches == 2 .and. s(1)%n_loaded == 1, &
+         message='/summary/n_patches = 2 and /summary/n_loaded = 1')
+      if (allocated(error)) return
+      call h5_open(file, dir//'/p.h5', lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      geometry_2 = h5_exists(file, 'geometry/patch_2')
+      fields_1 = h5_exists(file, 'cases/000001/patch_1')
+      fields_2 = h5_exists(file, 'cases/000001/patch_2')
+      call h5_close(file)
+      call check(error, geometry_2 .and. fields_1 .and. .not. fields_2, &
+         message='/geometry/patch_1..n_patches, /cases/000001/patch_1..n_loaded')
+      if (allocated(error)) return
+      ! The library's names mean the same.
+      call solver%init('builtin:S1002', 'builtin:UIC60', lerr)
+      if (.not. allocated(lerr)) call solver%solve(4.733_wp, 0.0_wp, &
+         contact_load_type(load_normal_force, 64.7e3_wp), &
+         creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp), r, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, lerr%message)
+         return
+      end if
+      call check(error, r%n_patches == s(1)%n_patches .and. r%n_loaded == s(1)%n_loaded, &
+         message='library and program count the patches alike')
+      call shell('rm -rf '//dir)
+   end subroutine test_patch_counts
+
+   !> `profiles FILE`: summary, cleaned export readable as a case input, gnuplot script;
+   !> errors for bad files and bad combinations.
+   subroutine test_profiles_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_profiles')
+      call run_expect(error, dir, 'profiles --write built-in', 0, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles built-in/S1002.txt -o clean.txt --plot s1002.gp', &
+         0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, 'built-in/S1002.txt: wheel, format plain', 'summary: kind')
+      if (allocated(error)) return
+      call expect_in(error, out, 'after clean-up', 'summary: points')
+      if (allocated(error)) return
+      call expect_in(error, out, 'y          -70.000 to 60.000 mm', 'summary: range')
+      if (allocated(error)) return
+      call expect_in(error, out, 'units      mm', 'summary: units')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/clean.txt'), '# kind = wheel', 'exported profile')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/s1002.gp'), '$cleaned << EOD', 'gnuplot script')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/s1002.gp'), "set output 's1002.png'", &
+         'gnuplot script output')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q -o w.h5 --set profiles%wheel=clean.txt', 0, out, err)
+      if (allocated(error)) return
+      ! The script makes its PNG where gnuplot is installed.
+      call shell('command -v gnuplot > /dev/null 2>&1', stat)
+      if (stat == 0) then
+         call shell('cd '//dir//' && gnuplot s1002.gp > gnuplot.txt 2>&1 && test -s s1002.png', &
+            stat)
+         call check(error, stat, 0, message='gnuplot s1002.gp: '//file_text(dir//'/gnuplot.txt'))
+         if (allocated(error)) return
+      end if
+      ! The rail, and -q.
+      call run_expect(error, dir, 'profiles -q built-in/UIC60.txt -o rail.txt', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(out) == 0 .and. file_exists(dir//'/rail.txt'), message='-q: '//out)
+      if (allocated(error)) return
+      ! Errors: the kind contradicts the file (2), a file with too few points (2), a missing
+      ! file (3), no operand or both forms (1).
+      call run_expect(error, dir, 'profiles built-in/S1002.txt --kind rail', 2, out, err)
+      if (allocated(error)) return
+      call write_lines(dir//'/tiny.txt', [character(len=13) :: '# kind = rail', '0 0', '1 0', &
+         '2 0'])
+      call run_expect(error, dir, 'profiles tiny.txt -o tiny_out.txt', 2, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'tiny.txt, line 4', 'the line of the problem')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/tiny_out.txt'), message='nothing written')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles missing.txt', 3, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles', 1, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles built-in/S1002.txt --write x', 1, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles --write x --plot p.gp', 1, out, err)
+      call shell('rm -rf '//dir)
+   end subroutine test_profiles_file
+
+   !> The README's and doc/app.md's `fpm run ... -- run` commands name an output under build/
+   !> or /tmp (never the default shcontact.h5 in the repository root), and .gitignore keeps
+   !> result files out of git.
+   subroutine test_doc_outputs(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      if (.not. file_exists('README.md') .or. .not. file_exists('doc/app.md')) then
+         call skip_test(error, 'README.md and doc/app.md are not in the working directory')
+         return
+      end if
+      call shell('grep -h "fpm run .*-- run" README.md doc/app.md | grep -v -- "--check" | '// &
+         'grep -v -e " -o build/" -e " -o /tmp/" > /dev/null', stat)
+      call check(error, stat, 1, message='a README.md or doc/app.md command `fpm run ... -- '// &
+         'run` without -o build/... or -o /tmp/...')
+      if (allocated(error)) return
+      call shell('grep -q "^\*\.h5$" .gitignore', stat)
+      call check(error, stat, 0, message='.gitignore ignores *.h5')
+   end subroutine test_doc_outputs
+
+end module test_cli
