@@ -71,7 +71,8 @@ contains
       case ('case'); text = 'case number (1-based, in the order of the sweep)'
       case ('status'); text = 'status of the case: 0 solved, > 0 failed (see /failures), '// &
          '-1 not run'
-      case ('n_patches'); text = 'number of contact patches that carry load'
+      case ('n_patches'); text = 'number of contact patches found by the contact search'
+      case ('n_loaded'); text = 'number of contact patches solved (carrying load)'
       case ('main_patch'); text = 'index of the most loaded patch (its group patch_K)'
       ! Swept inputs.
       case ('t_y'); text = 'input: lateral wheelset shift Y_WS'

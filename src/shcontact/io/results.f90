@@ -388,7 +388,7 @@ contains
          if (allocated(error)) return
       end do
       call attach_scale(file, 'summary', 'case', 'case', [character(len=17) :: 'status', &
-         'n_patches', 'main_patch', sweep_axis_names, summary_columns(1, :)], 1, error)
+         'n_patches', 'n_loaded', 'main_patch', sweep_axis_names, summary_columns(1, :)], 1, error)
    end subroutine write_summary
 
    pure function axis_units(name) result(units)
