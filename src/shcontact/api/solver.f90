@@ -348,11 +348,8 @@ contains
       type(tangential_options_type) :: options
       integer :: k
 
-      if (.not. self%ready) then
-         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
-            'its error)', stat_usage)
-         return
-      end if
+      call check_ready(self, error)
+      if (allocated(error)) return
       call check_call(t_y, roll, load, creepage, error)
       if (allocated(error)) return
       call update_geometry(self, t_y, roll, 0.0_wp, error)
@@ -395,11 +392,8 @@ contains
       type(wheelset_state_type) :: local
       type(tangential_options_type) :: options
 
-      if (.not. self%ready) then
-         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
-            'its error)', stat_usage)
-         return
-      end if
+      call check_ready(self, error)
+      if (allocated(error)) return
       call check_wheelset_state(state, error)
       if (allocated(error)) return
       call check_call(state%y_ws, state%roll, load, creepage_type(), error)
@@ -436,11 +430,8 @@ contains
       type(wheelset_state_type) :: local
       integer :: k
 
-      if (.not. self%ready) then
-         call fatal_error(error, 'contact solver: not initialised (call init first, and check '// &
-            'its error)', stat_usage)
-         return
-      end if
+      call check_ready(self, error)
+      if (allocated(error)) return
       call check_wheelset_state(state, error)
       if (allocated(error)) return
       call check_call(state%y_ws, state%roll, contact_load_type(load_normal_force, 1.0_wp), &
@@ -588,6 +579,14 @@ contains
       end if
       self%creepage(k) = creepage
    end subroutine solve_patch
+
+   !> An error unless [[init]] has succeeded.
+   pure subroutine check_ready(self, error)
+      type(contact_solver_type), intent(in) :: self
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. self%ready) call fatal_error(error, 'contact solver: not initialised (call '// &
+         'init first, and check its error)', stat_usage)
+   end subroutine check_ready
 
    !> Reject non-finite positions and creepages and impossible loads before anything computes
    !> with them (the checks use ieee_is_finite, so NaN raises no floating-point exception).
