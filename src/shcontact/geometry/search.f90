@@ -11,7 +11,7 @@ module shcontact_geometry_search
    implicit none
    private
 
-   public :: polyline_envelope, gap_minima
+   public :: polyline_envelope, envelope_segments, gap_minima
 
 contains
 
@@ -30,14 +30,36 @@ contains
       real(wp), intent(out) :: env(:), env_s(:)
       !> Whether any segment crosses the grid line.
       logical, intent(out) :: covered(:)
+
+      covered = .false.
+      env = 0.0_wp
+      env_s = 0.0_wp
+      call envelope_segments(y, z, s, 1, size(y) - 1, y0, h, lowest, env, env_s, covered)
+   end subroutine polyline_envelope
+
+   !> Add the segments i → i + 1, i = i1 … i2, of a polyline to an envelope of
+   !> [[polyline_envelope]] (in this order: a polyline's segments taken in increasing runs give
+   !> the envelope of [[polyline_envelope]] bit for bit, as long as the segments left out cross
+   !> no grid line).
+   pure subroutine envelope_segments(y, z, s, i1, i2, y0, h, lowest, env, env_s, covered)
+      !> Polyline points (mm) and their arc lengths on the profile (mm); only points i1 … i2 + 1
+      !> are read.
+      real(wp), intent(in) :: y(:), z(:), s(:)
+      !> First and last segment.
+      integer, intent(in) :: i1, i2
+      !> First grid line and spacing (mm).
+      real(wp), intent(in) :: y0, h
+      !> Keep the largest z (true) or the smallest (false).
+      logical, intent(in) :: lowest
+      !> Envelope height and the arc length where it is attained, updated.
+      real(wp), intent(inout) :: env(:), env_s(:)
+      !> Whether any segment crosses the grid line, updated.
+      logical, intent(inout) :: covered(:)
       integer :: i, j, j1, j2, m
       real(wp) :: lo, hi, t, zj
 
       m = size(env)
-      covered = .false.
-      env = 0.0_wp
-      env_s = 0.0_wp
-      do i = 1, size(y) - 1
+      do i = i1, i2
          ! A vertical segment crosses no grid line that its neighbours do not.
          if (abs(y(i + 1) - y(i)) <= tiny(1.0_wp)) cycle
          lo = min(y(i), y(i + 1)); hi = max(y(i), y(i + 1))
@@ -54,7 +76,7 @@ contains
             env_s(j) = s(i) + t*(s(i + 1) - s(i))
          end do
       end do
-   end subroutine polyline_envelope
+   end subroutine envelope_segments
 
    !> Indices of the separate local minima of a sampled gap, deepest first. A minimum counts
    !> only inside a run of valid points (not at its ends), and only if every path from it to a
