@@ -646,23 +646,17 @@ contains
       call reserve_patch(patches%patch(k), n)
       patches%points(k) = n
       associate (patch => patches%patch(k))
-         call put_row(patch, i0, i0, h, prepared%options%b_min, &
-            strip_row(prepared, r0, w0, pair%theta, gap0))
-         do i = 1, n_right
-            call put_row(patch, i0 + i, i0, h, prepared%options%b_min, patches%right(:, i))
-         end do
-         do i = 1, n_left
-            call put_row(patch, i0 - i, i0, h, prepared%options%b_min, patches%left(:, i))
-         end do
+         call put_rows(1, reshape(strip_row(prepared, r0, w0, pair%theta, gap0), &
+            [row_count, 1]), i0, i0, 1, h, prepared%options%b_min, patch%y, patch%gap, &
+            patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+         call put_rows(n_right, patches%right, i0, i0 + 1, 1, h, prepared%options%b_min, &
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+         call put_rows(n_left, patches%left, i0, i0 - 1, -1, h, prepared%options%b_min, &
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
          patch%h = h
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
          patch%gap(i0) = 0.0_wp
-         if (prepared%options%a_reference_normal) then
-            patch%curv_a(1:n) = cos(pair%theta)/(2.0_wp*patch%r_wheel(1:n))
-         else
-            patch%curv_a(1:n) = cos(patch%gamma(1:n))/(2.0_wp*patch%r_wheel(1:n))
-         end if
          patch%y_track = side*pair%y
          patch%z_track = pair%z
          patch%y_rail = r0%u
@@ -678,18 +672,27 @@ contains
       end associate
    end subroutine build_table
 
-   !> Table point i of a patch (reference point i0) from a row of [[strip_row]]: the gap
-   !> (≥ 0), B = g''/2 clamped to b_min, γ and r_w.
-   pure subroutine put_row(patch, i, i0, h, b_min, row)
-      type(patch_geometry_type), intent(inout) :: patch
-      integer, intent(in) :: i, i0
-      real(wp), intent(in) :: h, b_min, row(row_count)
-      patch%y(i) = (i - i0)*h
-      patch%gap(i) = max(row(1), 0.0_wp)
-      patch%curv_b(i) = max(0.5_wp*row(2), b_min)
-      patch%gamma(i) = row(3)
-      patch%r_wheel(i) = row(4)
-   end subroutine put_row
+   !> Table points i1, i1 + sense, … of a patch (reference point i0) from n rows of
+   !> [[strip_row]] or [[follow]]: y, the gap (≥ 0), B = g''/2 clamped to b_min, γ, r_w and A.
+   pure subroutine put_rows(n, rows, i0, i1, sense, h, b_min, y, gap, curv_a, curv_b, gamma, &
+         r_wheel)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: rows(row_count, *)
+      integer, intent(in) :: i0, i1, sense
+      real(wp), intent(in) :: h, b_min
+      real(wp), intent(inout) :: y(*), gap(*), curv_a(*), curv_b(*), gamma(*), r_wheel(*)
+      integer :: j, i
+
+      do j = 1, n
+         i = i1 + sense*(j - 1)
+         y(i) = (i - i0)*h
+         gap(i) = max(rows(1, j), 0.0_wp)
+         curv_b(i) = max(0.5_wp*rows(2, j), b_min)
+         gamma(i) = rows(3, j)
+         r_wheel(i) = rows(4, j)
+         curv_a(i) = rows(6, j)
+      end do
+   end subroutine put_rows
 
    !> Write the strip tables of all patches to a text file: a header naming the columns and
    !> units, then per patch a comment line with its reference data and one line per table point

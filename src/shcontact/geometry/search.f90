@@ -56,15 +56,20 @@ contains
       !> Whether any segment crosses the grid line, updated.
       logical, intent(inout) :: covered(:)
       integer :: i, j, j1, j2, m
-      real(wp) :: lo, hi, t, zj
+      real(wp) :: g0, g1, t, zj
 
       m = size(env)
+      if (i2 < i1) return
+      ! Grid coordinates (y − y0)/h of the points, one division per point: the same values as
+      ! (min(y_i, y_i+1) − y0)/h, since both operations are monotone.
+      g1 = (y(i1) - y0)/h
       do i = i1, i2
+         g0 = g1
+         g1 = (y(i + 1) - y0)/h
          ! A vertical segment crosses no grid line that its neighbours do not.
          if (abs(y(i + 1) - y(i)) <= tiny(1.0_wp)) cycle
-         lo = min(y(i), y(i + 1)); hi = max(y(i), y(i + 1))
-         j1 = max(1, ceiling((lo - y0)/h) + 1)
-         j2 = min(m, floor((hi - y0)/h) + 1)
+         j1 = max(1, ceiling(min(g0, g1)) + 1)
+         j2 = min(m, floor(max(g0, g1)) + 1)
          do j = j1, j2
             t = (y0 + (j - 1)*h - y(i))/(y(i + 1) - y(i))
             zj = z(i) + t*(z(i + 1) - z(i))
@@ -97,28 +102,49 @@ contains
       integer, intent(out) :: count
       !> Whether the global minimum is an interior local minimum.
       logical, intent(out) :: global_interior
-      integer :: j, n, jmin, i, best
+      integer :: j, n, i, best, n_local
       real(wp) :: gmin
+      logical :: any_valid
 
       n = size(gap)
-      count = 0
-      minima = 0
-      jmin = 0
+      ! One pass: the smallest valid gap, and the interior local minima (in `minima`, in order).
+      any_valid = .false.
       gmin = 0.0_wp
-      do j = 1, n
-         if (.not. valid(j)) cycle
-         if (jmin == 0) then
-            jmin = j; gmin = gap(j)
-         else if (gap(j) < gmin) then
-            jmin = j; gmin = gap(j)
+      n_local = 0
+      if (n >= 1) then
+         if (valid(1)) then
+            any_valid = .true.
+            gmin = gap(1)
          end if
-      end do
-      global_interior = .false.
+      end if
       do j = 2, n - 1
-         if (.not. (valid(j - 1) .and. valid(j) .and. valid(j + 1))) cycle
+         if (.not. valid(j)) cycle
+         if (.not. any_valid) then
+            any_valid = .true.
+            gmin = gap(j)
+         else if (gap(j) < gmin) then
+            gmin = gap(j)
+         end if
          if (.not. (gap(j) <= gap(j - 1) .and. gap(j) < gap(j + 1))) cycle
+         if (.not. (valid(j - 1) .and. valid(j + 1))) cycle
+         n_local = n_local + 1
+         minima(n_local) = j
+      end do
+      if (n >= 2) then
+         if (valid(n)) then
+            if (.not. any_valid) then
+               gmin = gap(n)
+            else if (gap(n) < gmin) then
+               gmin = gap(n)
+            end if
+         end if
+      end if
+      ! Keep those behind a separating maximum higher than merge_gap.
+      count = 0
+      global_interior = .false.
+      do i = 1, n_local
+         j = minima(i)
          if (saddle_height(j) - gap(j) < merge_gap) cycle
-         if (count == size(minima)) exit
          count = count + 1
          minima(count) = j
          if (gap(j) <= gmin) global_interior = .true.
