@@ -18,6 +18,8 @@ module test_geometry
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
       contact_patches_type, extract_patch, prepare_wheel
    use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_prepared, only: sample_block
+   use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
    implicit none
    private
    public :: collect_geometry
@@ -68,7 +70,9 @@ contains
          new_unittest('fast_search_equals_reference_manchester', test_fast_manchester), &
          new_unittest('prepare_wheel_equals_prepare_profiles', test_prepare_wheel), &
          new_unittest('walk_points_equals_pointwise_walk', test_walk_points), &
-         new_unittest('fast_search_equals_reference_fine_scan', test_fast_fine_scan) &
+         new_unittest('fast_search_equals_reference_fine_scan', test_fast_fine_scan), &
+         new_unittest('fast_search_equals_reference_yawed', test_fast_yawed), &
+         new_unittest('fast_search_equals_reference_rolled', test_fast_rolled) &
          ]
    end subroutine collect_geometry
 
@@ -1417,5 +1421,104 @@ contains
       end if
       call check_fast_scan(fast, reference, error, first=-9.935_wp, step=0.13_wp, count=153)
    end subroutine test_fast_fine_scan
+
+   !> The fast search on yawed wheels (spline coefficients, samples and the bounds of the blocks
+   !> of samples interpolated by apply_yaw) against the reference search, which places and
+   !> envelopes every wheel sample: built-in S1002 on UIC60 at yaw angles up to the table's limit,
+   !> t_y = −9.3 … 9.6 mm. Every block's bounds hold its samples.
+   subroutine test_fast_yawed(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: yaws(*) = [-0.025_wp, -0.0101_wp, 0.0031_wp, 0.0125_wp, 0.02_wp]
+      type(prepared_profiles_type) :: prep, fast, reference
+      type(yaw_table_type) :: table
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      integer :: j, b, i1, i2
+      logical :: inside
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(), prep, err)
+      if (.not. allocated(err)) call build_yaw_table(wheel, prep, track_type(), &
+         contact_options_type(), table, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      fast = prep
+      do j = 1, size(yaws)
+         call apply_yaw(table, yaws(j), fast)
+         inside = .true.
+         do b = 1, size(fast%wheel_box, 2)
+            i1 = (b - 1)*sample_block + 1
+            i2 = min(size(fast%wheel_y), b*sample_block)
+            inside = inside .and. all(fast%wheel_y(i1:i2) >= fast%wheel_box(1, b)) .and. &
+               all(fast%wheel_y(i1:i2) <= fast%wheel_box(2, b)) .and. &
+               all(fast%wheel_z(i1:i2) >= fast%wheel_box(3, b)) .and. &
+               all(fast%wheel_z(i1:i2) <= fast%wheel_box(4, b))
+         end do
+         call check(error, inside, message='a yawed wheel sample lies outside its block bounds')
+         if (allocated(error)) return
+         reference = fast
+         reference%options%reference_search = .true.
+         call check_fast_scan(fast, reference, error, first=-9.3_wp, step=1.49_wp, count=14)
+         if (allocated(error)) return
+      end do
+   end subroutine test_fast_yawed
+
+   !> The fast search against the reference search with the wheelset rolled (the block bounds
+   !> of the wheel samples turned with it), right and left wheel, short tables.
+   subroutine test_fast_rolled(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: rolls(*) = [-0.05_wp, -0.004_wp, 0.0025_wp, 0.03_wp]
+      type(prepared_profiles_type) :: fast, reference
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err_a, err_b
+      type(contact_patches_type) :: a, b
+      type(wheelset_position_type) :: position
+      integer :: i, j, k, side, n, found
+
+      call builtin_profile('S1002', wheel, err_a)
+      if (.not. allocated(err_a)) call builtin_profile('UIC60', rail, err_a)
+      if (.not. allocated(err_a)) call prepare_profiles(wheel, rail, track_type(), &
+         contact_options_type(table_gap=0.5_wp), fast, err_a)
+      if (allocated(err_a)) then
+         call test_failed(error, err_a%message); return
+      end if
+      reference = fast
+      reference%options%reference_search = .true.
+      found = 0
+      do j = 1, size(rolls)
+         do side = -1, 1, 2
+            do i = -4, 4
+               position = wheelset_position_type(side=side, y_ws=2.1_wp*i, roll=rolls(j))
+               call find_contact_patches(fast, position, a, err_a)
+               call find_contact_patches(reference, position, b, err_b)
+               call check(error, allocated(err_a) .eqv. allocated(err_b), &
+                  message='fast and reference search disagree on success (rolled)')
+               if (allocated(error)) return
+               if (allocated(err_a)) cycle
+               found = found + 1
+               call check(error, a%count, b%count, message='number of patches (rolled)')
+               if (allocated(error)) return
+               do k = 1, a%count
+                  n = a%points(k)
+                  call check(error, n, b%points(k), message='table points (rolled)')
+                  if (allocated(error)) return
+                  associate (p => a%patch(k), q => b%patch(k))
+                     call check(error, abs(p%y_track - q%y_track) <= 1.0e-10_wp .and. &
+                        abs(p%gamma0 - q%gamma0) <= 1.0e-9_wp .and. &
+                        maxval(abs(p%gap(1:n) - q%gap(1:n))) <= 1.0e-9_wp .and. &
+                        maxval(abs(p%curv_a(1:n) - q%curv_a(1:n))/q%curv_a(1:n)) <= 1.0e-9_wp &
+                        .and. maxval(abs(p%curv_b(1:n) - q%curv_b(1:n))/q%curv_b(1:n)) <= &
+                        1.0e-9_wp, message='rolled wheel: fast and reference patches differ')
+                     if (allocated(error)) return
+                  end associate
+               end do
+            end do
+         end do
+      end do
+      call check(error, found >= 50, message='expected contact at most rolled positions')
+   end subroutine test_fast_rolled
 
 end module test_geometry

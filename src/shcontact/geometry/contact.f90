@@ -46,12 +46,13 @@ module shcontact_geometry_contact
    use shcontact_profile_points, only: profile_type
    use shcontact_geometry_rigid, only: rigid_map_type, translation, to_frame
    use shcontact_geometry_curve, only: frame_point_type, frame_point
-   use shcontact_geometry_search, only: polyline_envelope, gap_minima
+   use shcontact_geometry_search, only: polyline_envelope, envelope_segments, gap_minima
    use shcontact_geometry_track, only: track_type, wheelset_position_type, check_position, &
       wheel_placement, str => real_text
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_prepared, only: contact_options_type, prepared_profiles_type, &
-      check_contact_options, prepare_profiles, prepare_wheel, sampling_grid_size
+      check_contact_options, prepare_profiles, prepare_wheel, sampling_grid_size, sample_block, &
+      box_pad
    use shcontact_geometry_pair, only: normal_pair_type, refine_all, select_candidates, follow, &
       strip_row, row_count, max_candidates
    implicit none
@@ -83,6 +84,10 @@ module shcontact_geometry_contact
          wheel_env_s(:), gap(:)
       logical, allocatable, private :: rail_covered(:), wheel_covered(:)
       integer, allocatable, private :: minima(:)
+      !> Lateral bounds of the placed blocks of wheel samples, and the runs of wheel segments
+      !> that can lie over the rail (first and last segment).
+      real(wp), allocatable, private :: block_lo(:), block_hi(:)
+      integer, allocatable, private :: runs(:, :)
       !> Rows of the strip tables on either side of the reference point.
       real(wp), allocatable, private :: left(:, :), right(:, :)
    end type contact_patches_type
@@ -311,7 +316,9 @@ contains
    !> Sample the vertical gap between the rail and the wheel (before any vertical shift), find
    !> its separate minima and turn them into starting points of the refinement. `shift` is the
    !> vertical move (down) that makes the sampled gap's minimum zero. The samples live in the
-   !> work arrays of `work` ([[reserve_search]]).
+   !> work arrays of `work` ([[reserve_search]]). Only the blocks of wheel samples that can lie
+   !> over the rail are placed ([[wheel_extent]], [[wheel_runs]]); the reference search places
+   !> them all. Both give the same envelope, bit for bit.
    pure subroutine sampled_candidates(prepared, wheel_map, work, pairs, n_pairs, shift, error)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
@@ -320,70 +327,187 @@ contains
       integer, intent(out) :: n_pairs
       real(wp), intent(out) :: shift
       type(error_type), allocatable, intent(out) :: error
-      integer :: m, n_w
-      real(wp) :: h, y0, y1
+      integer :: m, n_w, n_runs
+      real(wp) :: h, y0, y1, w_min, w_max
 
       n_pairs = 0
       shift = 0.0_wp
       h = prepared%options%sample_step
       n_w = size(prepared%wheel_y)
       call reserve_search(prepared, work, 0)
-      associate (wy => work%wheel_y(1:n_w), wz => work%wheel_z(1:n_w))
-         call wheel_map%point(prepared%wheel_y, prepared%wheel_z, wy, wz)
-         y0 = max(minval(prepared%rail_y), minval(wy))
-         y1 = min(maxval(prepared%rail_y), maxval(wy))
-         if (y1 - y0 < 4.0_wp*h) then
-            call fatal_error(error, 'contact search: the wheel (y = '//str(minval(wy))//' to '// &
-               str(maxval(wy))//' mm) and the rail (y = '//str(minval(prepared%rail_y))// &
-               ' to '//str(maxval(prepared%rail_y))//' mm, side frame) do not overlap '// &
-               'laterally; check the lateral shift and the track dimensions', stat_no_contact)
-            return
-         end if
-         m = int((y1 - y0)/h) + 1
-         call reserve_search(prepared, work, m)
-         call grid_candidates(prepared, wy, wz, y0, work%rail_env(1:m), work%rail_env_s(1:m), &
-            work%wheel_env(1:m), work%wheel_env_s(1:m), work%gap(1:m), work%rail_covered(1:m), &
+      if (prepared%options%reference_search) then
+         call wheel_map%point(prepared%wheel_y, prepared%wheel_z, work%wheel_y(1:n_w), &
+            work%wheel_z(1:n_w))
+         w_min = minval(work%wheel_y(1:n_w))
+         w_max = maxval(work%wheel_y(1:n_w))
+      else
+         call wheel_extent(prepared, wheel_map, work, w_min, w_max)
+      end if
+      y0 = max(prepared%rail_y_min, w_min)
+      y1 = min(prepared%rail_y_max, w_max)
+      if (y1 - y0 < 4.0_wp*h) then
+         call fatal_error(error, 'contact search: the wheel (y = '//str(w_min)//' to '// &
+            str(w_max)//' mm) and the rail (y = '//str(prepared%rail_y_min)// &
+            ' to '//str(prepared%rail_y_max)//' mm, side frame) do not overlap '// &
+            'laterally; check the lateral shift and the track dimensions', stat_no_contact)
+         return
+      end if
+      m = int((y1 - y0)/h) + 1
+      call reserve_search(prepared, work, m)
+      if (prepared%options%reference_search) then
+         n_runs = 1
+         work%runs(:, 1) = [1, n_w - 1]
+      else
+         call wheel_runs(prepared, wheel_map, work, y0, y1, n_runs)
+      end if
+      if (y0 == prepared%rail_y_min .and. m <= size(prepared%rail_env) .and. &
+         .not. prepared%options%reference_search) then
+         ! The grid of the rail's own envelope, computed once (the same values).
+         call grid_candidates(prepared, work%wheel_y, work%wheel_z, work%runs(:, 1:n_runs), y0, &
+            prepared%rail_env(1:m), prepared%rail_env_s(1:m), prepared%rail_env_covered(1:m), &
+            work%wheel_env(1:m), work%wheel_env_s(1:m), work%gap(1:m), &
             work%wheel_covered(1:m), work%minima(1:m), pairs, n_pairs, shift, error)
-      end associate
+      else
+         call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
+            .false., work%rail_env(1:m), work%rail_env_s(1:m), work%rail_covered(1:m))
+         call grid_candidates(prepared, work%wheel_y, work%wheel_z, work%runs(:, 1:n_runs), y0, &
+            work%rail_env(1:m), work%rail_env_s(1:m), work%rail_covered(1:m), &
+            work%wheel_env(1:m), work%wheel_env_s(1:m), work%gap(1:m), &
+            work%wheel_covered(1:m), work%minima(1:m), pairs, n_pairs, shift, error)
+      end if
    end subroutine sampled_candidates
 
+   !> The lateral bounds of a box of profile points (y_min, y_max, z_min, z_max) placed by
+   !> `map`, widened by box_pad: every placed point of the box lies in [lo, hi].
+   elemental subroutine box_extent(map, y_min, y_max, z_min, z_max, lo, hi)
+      type(rigid_map_type), intent(in) :: map
+      real(wp), intent(in) :: y_min, y_max, z_min, z_max
+      real(wp), intent(out) :: lo, hi
+      ! y' = c y − s z + dy
+      lo = min(map%c*y_min, map%c*y_max) + min(-map%s*z_min, -map%s*z_max) + map%dy - box_pad
+      hi = max(map%c*y_min, map%c*y_max) + max(-map%s*z_min, -map%s*z_max) + map%dy + box_pad
+   end subroutine box_extent
+
+   !> The smallest and the largest y of the wheel samples placed by `wheel_map`, exactly as
+   !> over all samples, placing only the blocks that can hold them; the lateral bounds of every
+   !> placed block are left in work%block_lo, work%block_hi.
+   pure subroutine wheel_extent(prepared, wheel_map, work, w_min, w_max)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(contact_patches_type), intent(inout) :: work
+      real(wp), intent(out) :: w_min, w_max
+      real(wp) :: lowest_top, highest_bottom
+      integer :: b, nb, i1, i2
+
+      nb = size(prepared%wheel_box, 2)
+      associate (box => prepared%wheel_box, lo => work%block_lo(1:nb), hi => work%block_hi(1:nb))
+         call box_extent(wheel_map, box(1, :), box(2, :), box(3, :), box(4, :), lo, hi)
+         ! The smallest sample lies in a block whose lower bound is at most every block's upper
+         ! bound (its own included); likewise the largest.
+         lowest_top = minval(hi)
+         highest_bottom = maxval(lo)
+         w_min = huge(1.0_wp)
+         w_max = -huge(1.0_wp)
+         do b = 1, nb
+            if (lo(b) > lowest_top .and. hi(b) < highest_bottom) cycle
+            i1 = (b - 1)*sample_block + 1
+            i2 = min(size(prepared%wheel_y), b*sample_block)
+            call wheel_map%point(prepared%wheel_y(i1:i2), prepared%wheel_z(i1:i2), &
+               work%wheel_y(i1:i2), work%wheel_z(i1:i2))
+            if (lo(b) <= lowest_top) w_min = min(w_min, minval(work%wheel_y(i1:i2)))
+            if (hi(b) >= highest_bottom) w_max = max(w_max, maxval(work%wheel_y(i1:i2)))
+         end do
+      end associate
+   end subroutine wheel_extent
+
+   !> The runs of wheel polyline segments that can cross the grid between y0 and y1 (increasing,
+   !> without overlap, in work%runs(:, 1:n_runs)), with their end points placed by `wheel_map`
+   !> in work%wheel_y, work%wheel_z: the segments of every block whose lateral bounds
+   !> ([[wheel_extent]]) reach into [y0, y1] and those into and out of such a block. A segment
+   !> left out lies within one block outside [y0, y1], or joins two such blocks on the same side.
+   pure subroutine wheel_runs(prepared, wheel_map, work, y0, y1, n_runs)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(contact_patches_type), intent(inout) :: work
+      real(wp), intent(in) :: y0, y1
+      integer, intent(out) :: n_runs
+      integer :: b, b1, nb, n_w, i1, i2, last
+
+      nb = size(prepared%wheel_box, 2)
+      n_w = size(prepared%wheel_y)
+      n_runs = 0
+      last = 0
+      b = 1
+      associate (lo => work%block_lo(1:nb), hi => work%block_hi(1:nb))
+         do while (b <= nb)
+            if (hi(b) >= y0 .and. lo(b) <= y1) then
+               b1 = b
+               do while (b < nb)
+                  if (.not. (hi(b + 1) >= y0 .and. lo(b + 1) <= y1)) exit
+                  b = b + 1
+               end do
+               ! Segments from the last sample before block b1 to the first after block b.
+               i1 = max(1, (b1 - 1)*sample_block, last + 1)
+               i2 = min(n_w - 1, b*sample_block)
+            else if (b < nb) then
+               ! Two blocks outside the grid on opposite sides: the segment joining them.
+               i1 = b*sample_block
+               i2 = i1
+               if (.not. ((hi(b) < y0 .and. lo(b + 1) > y1) .or. &
+                  (lo(b) > y1 .and. hi(b + 1) < y0))) i2 = i1 - 1
+               i1 = max(i1, last + 1)
+            else
+               exit
+            end if
+            if (i1 <= i2) then
+               n_runs = n_runs + 1
+               work%runs(:, n_runs) = [i1, i2]
+               last = i2
+               call wheel_map%point(prepared%wheel_y(i1:i2 + 1), prepared%wheel_z(i1:i2 + 1), &
+                  work%wheel_y(i1:i2 + 1), work%wheel_z(i1:i2 + 1))
+            end if
+            b = b + 1
+         end do
+      end associate
+   end subroutine wheel_runs
+
    !> [[sampled_candidates]] on the grid y_j = y0 + (j − 1) h, j = 1..size(gap), given the
-   !> placed wheel samples (wy, wz); the other arrays are work space of the grid's size.
-   pure subroutine grid_candidates(prepared, wy, wz, y0, rz, rs, wzl, ws, gap, rc, wc, minima, &
-         pairs, n_pairs, shift, error)
+   !> rail's envelope (rz, rs, rc) and the placed wheel samples (wy, wz) of the segment runs
+   !> `runs`; the other arrays are work space of the grid's size.
+   pure subroutine grid_candidates(prepared, wy, wz, runs, y0, rz, rs, rc, wzl, ws, gap, wc, &
+         minima, pairs, n_pairs, shift, error)
       type(prepared_profiles_type), intent(in) :: prepared
       real(wp), intent(in) :: wy(:), wz(:), y0
-      real(wp), intent(out) :: rz(:), rs(:), wzl(:), ws(:), gap(:)
-      logical, intent(out) :: rc(:), wc(:)
+      integer, intent(in) :: runs(:, :)
+      real(wp), intent(in) :: rz(:), rs(:)
+      logical, intent(in) :: rc(:)
+      real(wp), intent(out) :: wzl(:), ws(:), gap(:)
+      logical, intent(out) :: wc(:)
       integer, intent(out) :: minima(:)
       type(normal_pair_type), intent(inout) :: pairs(:)
       integer, intent(inout) :: n_pairs
       real(wp), intent(out) :: shift
       type(error_type), allocatable, intent(out) :: error
-      integer :: count, j, i, m
+      integer :: count, j, i, r
       real(wp) :: h, slope
       logical :: interior
 
       h = prepared%options%sample_step
       shift = 0.0_wp
-      m = size(rz)
-      if (y0 == minval(prepared%rail_y) .and. m <= size(prepared%rail_env) .and. &
-         .not. prepared%options%reference_search) then
-         ! The grid of the rail's own envelope, computed once (the same values).
-         rz = prepared%rail_env(1:m)
-         rs = prepared%rail_env_s(1:m)
-         rc = prepared%rail_env_covered(1:m)
-      else
-         call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, y0, h, &
-            .false., rz, rs, rc)
-      end if
-      call polyline_envelope(wy, wz, prepared%wheel_s, y0, h, .true., wzl, ws, wc)
-      rc = rc .and. wc
+      wc = .false.
+      wzl = 0.0_wp
+      ws = 0.0_wp
+      do r = 1, size(runs, 2)
+         call envelope_segments(wy, wz, prepared%wheel_s, runs(1, r), runs(2, r), y0, h, .true., &
+            wzl, ws, wc)
+      end do
+      ! wc: where both envelopes are defined.
+      wc = rc .and. wc
       gap = 0.0_wp
-      where (rc) gap = rz - wzl
-      call gap_minima(gap, rc, prepared%options%merge_gap, minima, count, interior)
+      where (wc) gap = rz - wzl
+      call gap_minima(gap, wc, prepared%options%merge_gap, minima, count, interior)
       if (.not. interior) then
-         j = minloc(gap, 1, mask=rc)
+         j = minloc(gap, 1, mask=wc)
          call fatal_error(error, 'contact search: the wheel touches the rail at the end of a '// &
             'profile (y = '//str(y0 + (j - 1)*h)//' mm, side frame), not on a running surface; '// &
             'the profiles do not overlap enough at this wheel position', stat_no_contact)
@@ -416,6 +540,12 @@ contains
 
       call reserve_vector(work%wheel_y, size(prepared%wheel_y))
       call reserve_vector(work%wheel_z, size(prepared%wheel_y))
+      call reserve_vector(work%block_lo, size(prepared%wheel_box, 2))
+      call reserve_vector(work%block_hi, size(prepared%wheel_box, 2))
+      if (allocated(work%runs)) then
+         if (size(work%runs, 2) < size(prepared%wheel_box, 2)) deallocate (work%runs)
+      end if
+      if (.not. allocated(work%runs)) allocate (work%runs(2, size(prepared%wheel_box, 2)))
       ! minima is allocated last and never larger than the others.
       if (allocated(work%minima)) then
          if (size(work%minima) >= m) return
@@ -516,23 +646,17 @@ contains
       call reserve_patch(patches%patch(k), n)
       patches%points(k) = n
       associate (patch => patches%patch(k))
-         call put_row(patch, i0, i0, h, prepared%options%b_min, &
-            strip_row(prepared, r0, w0, pair%theta, gap0))
-         do i = 1, n_right
-            call put_row(patch, i0 + i, i0, h, prepared%options%b_min, patches%right(:, i))
-         end do
-         do i = 1, n_left
-            call put_row(patch, i0 - i, i0, h, prepared%options%b_min, patches%left(:, i))
-         end do
+         call put_rows(1, reshape(strip_row(prepared, r0, w0, pair%theta, gap0), &
+            [row_count, 1]), i0, i0, 1, h, prepared%options%b_min, patch%y, patch%gap, &
+            patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+         call put_rows(n_right, patches%right, i0, i0 + 1, 1, h, prepared%options%b_min, &
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+         call put_rows(n_left, patches%left, i0, i0 - 1, -1, h, prepared%options%b_min, &
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
          patch%h = h
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
          patch%gap(i0) = 0.0_wp
-         if (prepared%options%a_reference_normal) then
-            patch%curv_a(1:n) = cos(pair%theta)/(2.0_wp*patch%r_wheel(1:n))
-         else
-            patch%curv_a(1:n) = cos(patch%gamma(1:n))/(2.0_wp*patch%r_wheel(1:n))
-         end if
          patch%y_track = side*pair%y
          patch%z_track = pair%z
          patch%y_rail = r0%u
@@ -548,18 +672,27 @@ contains
       end associate
    end subroutine build_table
 
-   !> Table point i of a patch (reference point i0) from a row of [[strip_row]]: the gap
-   !> (≥ 0), B = g''/2 clamped to b_min, γ and r_w.
-   pure subroutine put_row(patch, i, i0, h, b_min, row)
-      type(patch_geometry_type), intent(inout) :: patch
-      integer, intent(in) :: i, i0
-      real(wp), intent(in) :: h, b_min, row(row_count)
-      patch%y(i) = (i - i0)*h
-      patch%gap(i) = max(row(1), 0.0_wp)
-      patch%curv_b(i) = max(0.5_wp*row(2), b_min)
-      patch%gamma(i) = row(3)
-      patch%r_wheel(i) = row(4)
-   end subroutine put_row
+   !> Table points i1, i1 + sense, … of a patch (reference point i0) from n rows of
+   !> [[strip_row]] or [[follow]]: y, the gap (≥ 0), B = g''/2 clamped to b_min, γ, r_w and A.
+   pure subroutine put_rows(n, rows, i0, i1, sense, h, b_min, y, gap, curv_a, curv_b, gamma, &
+         r_wheel)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: rows(row_count, *)
+      integer, intent(in) :: i0, i1, sense
+      real(wp), intent(in) :: h, b_min
+      real(wp), intent(inout) :: y(*), gap(*), curv_a(*), curv_b(*), gamma(*), r_wheel(*)
+      integer :: j, i
+
+      do j = 1, n
+         i = i1 + sense*(j - 1)
+         y(i) = (i - i0)*h
+         gap(i) = max(rows(1, j), 0.0_wp)
+         curv_b(i) = max(0.5_wp*rows(2, j), b_min)
+         gamma(i) = rows(3, j)
+         r_wheel(i) = rows(4, j)
+         curv_a(i) = rows(6, j)
+      end do
+   end subroutine put_rows
 
    !> Write the strip tables of all patches to a text file: a header naming the columns and
    !> units, then per patch a comment line with its reference data and one line per table point

@@ -33,8 +33,8 @@ module shcontact_geometry_pair
    real(wp), parameter :: s_tol = 1.0e-10_wp
    !> A profile is followed in a frame while |dη/ds| exceeds this (steeper: it turns back).
    real(wp), parameter :: min_deta = 0.05_wp
-   !> Rows of the work tables: g − gap0, g'', γ, r_w, rail arc length.
-   integer, parameter :: row_count = 5
+   !> Rows of the work tables: g − gap0, g'', γ, r_w, rail arc length, A ([[curvature_a]]).
+   integer, parameter :: row_count = 6
    !> Table points walked at a time on each profile by the fast search ([[follow]]): the walk
    !> overruns the table's end by less than this.
    integer, parameter :: chunk = 32
@@ -226,7 +226,24 @@ contains
       row(3) = theta + atan(w%slope)
       row(4) = prepared%track%nominal_radius + w%v - prepared%z_tape
       row(5) = r%s
+      row(6) = curvature_a(prepared%options%a_reference_normal, cos(theta), sin(theta), &
+         w%slope, row(4))
    end function strip_row
+
+   !> Longitudinal relative curvature A = cos γ/(2 r_w) on a strip (straight track) for the
+   !> wheel's slope w = tan(γ − θ) in the frame of a patch with contact angle θ:
+   !> cos γ = cos(θ + atan w) = (cos θ − w sin θ)/√(1 + w²); with `fixed_normal` (the option
+   !> a_reference_normal) cos θ/(2 r_w).
+   elemental real(wp) function curvature_a(fixed_normal, cos_theta, sin_theta, w, r_wheel) &
+         result(a)
+      logical, intent(in) :: fixed_normal
+      real(wp), intent(in) :: cos_theta, sin_theta, w, r_wheel
+      if (fixed_normal) then
+         a = cos_theta/(2.0_wp*r_wheel)
+      else
+         a = (cos_theta - w*sin_theta)/(2.0_wp*r_wheel*sqrt(1.0_wp + w*w))
+      end if
+   end function curvature_a
 
    !> Follow both profiles from the reference point in steps `step` of η, until the gap exceeds
    !> table_gap or a profile ends or turns back. The patch's own basin ends at the first maximum
@@ -245,10 +262,10 @@ contains
       real(wp), intent(out) :: s_basin
       type(frame_walk_type) :: walk_r, walk_w
       real(wp), dimension(chunk) :: r_zeta, r_slope, r_curv, r_v, r_s, w_zeta, w_slope, w_curv, &
-         w_v, w_s
-      real(wp) :: top
+         w_v, w_s, w_angle, w_a
+      real(wp) :: top, c, sn
       integer :: j, j0, j_top, i, m, n_r, n_w, n_both
-      logical :: cut
+      logical :: cut, fixed_normal
 
       if (prepared%options%reference_search) then
          call follow_pointwise(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, &
@@ -259,6 +276,9 @@ contains
       cut = .false.
       n_rows = 0
       n_basin = 0
+      c = cos(theta)
+      sn = sin(theta)
+      fixed_normal = prepared%options%a_reference_normal
       call start_walk(prepared%rail, rmap, r0, dir_r, step, walk_r)
       call start_walk(prepared%wheel, wmap, w0, dir_w, step, walk_w)
       j0 = 0
@@ -269,12 +289,23 @@ contains
          call walk_points(prepared%wheel, wmap, walk_w, step, j0, n_r, min_deta, w_zeta, &
             w_slope, w_curv, w_v, w_s, n_w)
          n_both = min(n_r, n_w)
+         ! Loops of their own over the chunk, so that they vectorise (the vector atan).
+         do i = 1, n_both
+            w_angle(i) = atan(w_slope(i))
+         end do
+         do i = 1, n_both
+            w_v(i) = prepared%track%nominal_radius + w_v(i) - prepared%z_tape
+         end do
+         do i = 1, n_both
+            w_a(i) = curvature_a(fixed_normal, c, sn, w_slope(i), w_v(i))
+         end do
          do i = 1, n_both
             rows(1, j0 + i) = (r_zeta(i) - w_zeta(i)) - gap0
             rows(2, j0 + i) = r_curv(i) - w_curv(i)
-            rows(3, j0 + i) = theta + atan(w_slope(i))
-            rows(4, j0 + i) = prepared%track%nominal_radius + w_v(i) - prepared%z_tape
+            rows(3, j0 + i) = theta + w_angle(i)
+            rows(4, j0 + i) = w_v(i)
             rows(5, j0 + i) = r_s(i)
+            rows(6, j0 + i) = w_a(i)
          end do
          do i = 1, n_both
             j = j0 + i

@@ -16,7 +16,14 @@ module shcontact_geometry_prepared
    private
 
    public :: contact_options_type, prepared_profiles_type, check_contact_options
-   public :: prepare_profiles, prepare_wheel, sampling_grid_size
+   public :: prepare_profiles, prepare_wheel, sampling_grid_size, sample_boxes
+   public :: sample_block, box_pad
+
+   !> Wheel samples per block of [[prepared_profiles_type]]'s `wheel_box`.
+   integer, parameter :: sample_block = 32
+   !> Margin of the block boxes (mm): far above the round-off of the boxes and of the maps
+   !> applied to them, so that a box always holds its samples.
+   real(wp), parameter :: box_pad = 1.0e-6_wp
 
    !> Options of the contact search and the strip tables.
    type :: contact_options_type
@@ -59,8 +66,14 @@ module shcontact_geometry_prepared
       real(wp) :: y_tape = 0.0_wp, z_tape = 0.0_wp
       !> Dense samples of the wheel, profile coordinates (mm).
       real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
+      !> Bounds (y_min, y_max, z_min, z_max) of each block of [[sample_block]] consecutive
+      !> wheel samples, with a margin (see [[sample_boxes]]): the search maps and envelopes
+      !> only the blocks that can lie over the rail.
+      real(wp), allocatable :: wheel_box(:, :)
       !> Dense samples of the rail, side frame (mm).
       real(wp), allocatable :: rail_s(:), rail_y(:), rail_z(:)
+      !> Smallest and largest y of the rail samples (mm).
+      real(wp) :: rail_y_min = 0.0_wp, rail_y_max = 0.0_wp
       !> The rail's envelope on the sampling grid that starts at its leftmost sample, the grid of
       !> every position where the wheel overlaps the whole rail head (see [[polyline_envelope]]).
       real(wp), allocatable :: rail_env(:), rail_env_s(:)
@@ -133,6 +146,8 @@ contains
       call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
       allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
       call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)
+      prepared%rail_y_min = minval(prepared%rail_y)
+      prepared%rail_y_max = maxval(prepared%rail_y)
       n = sampling_grid_size(prepared)
       allocate (prepared%rail_env(n), prepared%rail_env_s(n), prepared%rail_env_covered(n))
       call polyline_envelope(prepared%rail_y, prepared%rail_z, prepared%rail_s, &
@@ -181,13 +196,35 @@ contains
       prepared%z_tape = p%z
       call sample_spline(prepared%wheel, options%sample_step, prepared%wheel_s, &
          prepared%wheel_y, prepared%wheel_z)
+      if (allocated(prepared%wheel_box)) deallocate (prepared%wheel_box)
+      allocate (prepared%wheel_box(4, (size(prepared%wheel_y) + sample_block - 1)/sample_block))
+      call sample_boxes(prepared%wheel_y, prepared%wheel_z, prepared%wheel_box)
    end subroutine prepare_wheel
+
+   !> The bounds (y_min, y_max, z_min, z_max) of each block of [[sample_block]] consecutive
+   !> samples, widened by [[box_pad]].
+   pure subroutine sample_boxes(y, z, box)
+      !> Samples (mm).
+      real(wp), intent(in) :: y(:), z(:)
+      !> Bounds per block (mm); size(box, 2) = ⌈size(y)/sample_block⌉.
+      real(wp), intent(out) :: box(:, :)
+      integer :: b, i1, i2
+
+      do b = 1, size(box, 2)
+         i1 = (b - 1)*sample_block + 1
+         i2 = min(size(y), b*sample_block)
+         box(1, b) = minval(y(i1:i2)) - box_pad
+         box(2, b) = maxval(y(i1:i2)) + box_pad
+         box(3, b) = minval(z(i1:i2)) - box_pad
+         box(4, b) = maxval(z(i1:i2)) + box_pad
+      end do
+   end subroutine sample_boxes
 
    !> Points of a sampling grid over the rail's whole width (the overlap with the wheel is never
    !> wider).
    pure integer function sampling_grid_size(prepared)
       type(prepared_profiles_type), intent(in) :: prepared
-      sampling_grid_size = int((maxval(prepared%rail_y) - minval(prepared%rail_y))/ &
+      sampling_grid_size = int((prepared%rail_y_max - prepared%rail_y_min)/ &
          prepared%options%sample_step) + 1
    end function sampling_grid_size
 

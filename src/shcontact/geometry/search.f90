@@ -11,7 +11,7 @@ module shcontact_geometry_search
    implicit none
    private
 
-   public :: polyline_envelope, gap_minima
+   public :: polyline_envelope, envelope_segments, gap_minima
 
 contains
 
@@ -30,19 +30,46 @@ contains
       real(wp), intent(out) :: env(:), env_s(:)
       !> Whether any segment crosses the grid line.
       logical, intent(out) :: covered(:)
-      integer :: i, j, j1, j2, m
-      real(wp) :: lo, hi, t, zj
 
-      m = size(env)
       covered = .false.
       env = 0.0_wp
       env_s = 0.0_wp
-      do i = 1, size(y) - 1
+      call envelope_segments(y, z, s, 1, size(y) - 1, y0, h, lowest, env, env_s, covered)
+   end subroutine polyline_envelope
+
+   !> Add the segments i → i + 1, i = i1 … i2, of a polyline to an envelope of
+   !> [[polyline_envelope]] (in this order: a polyline's segments taken in increasing runs give
+   !> the envelope of [[polyline_envelope]] bit for bit, as long as the segments left out cross
+   !> no grid line).
+   pure subroutine envelope_segments(y, z, s, i1, i2, y0, h, lowest, env, env_s, covered)
+      !> Polyline points (mm) and their arc lengths on the profile (mm); only points i1 … i2 + 1
+      !> are read.
+      real(wp), intent(in) :: y(:), z(:), s(:)
+      !> First and last segment.
+      integer, intent(in) :: i1, i2
+      !> First grid line and spacing (mm).
+      real(wp), intent(in) :: y0, h
+      !> Keep the largest z (true) or the smallest (false).
+      logical, intent(in) :: lowest
+      !> Envelope height and the arc length where it is attained, updated.
+      real(wp), intent(inout) :: env(:), env_s(:)
+      !> Whether any segment crosses the grid line, updated.
+      logical, intent(inout) :: covered(:)
+      integer :: i, j, j1, j2, m
+      real(wp) :: g0, g1, t, zj
+
+      m = size(env)
+      if (i2 < i1) return
+      ! Grid coordinates (y − y0)/h of the points, one division per point: the same values as
+      ! (min(y_i, y_i+1) − y0)/h, since both operations are monotone.
+      g1 = (y(i1) - y0)/h
+      do i = i1, i2
+         g0 = g1
+         g1 = (y(i + 1) - y0)/h
          ! A vertical segment crosses no grid line that its neighbours do not.
          if (abs(y(i + 1) - y(i)) <= tiny(1.0_wp)) cycle
-         lo = min(y(i), y(i + 1)); hi = max(y(i), y(i + 1))
-         j1 = max(1, ceiling((lo - y0)/h) + 1)
-         j2 = min(m, floor((hi - y0)/h) + 1)
+         j1 = max(1, ceiling(min(g0, g1)) + 1)
+         j2 = min(m, floor(max(g0, g1)) + 1)
          do j = j1, j2
             t = (y0 + (j - 1)*h - y(i))/(y(i + 1) - y(i))
             zj = z(i) + t*(z(i + 1) - z(i))
@@ -54,7 +81,7 @@ contains
             env_s(j) = s(i) + t*(s(i + 1) - s(i))
          end do
       end do
-   end subroutine polyline_envelope
+   end subroutine envelope_segments
 
    !> Indices of the separate local minima of a sampled gap, deepest first. A minimum counts
    !> only inside a run of valid points (not at its ends), and only if every path from it to a
@@ -75,28 +102,49 @@ contains
       integer, intent(out) :: count
       !> Whether the global minimum is an interior local minimum.
       logical, intent(out) :: global_interior
-      integer :: j, n, jmin, i, best
+      integer :: j, n, i, best, n_local
       real(wp) :: gmin
+      logical :: any_valid
 
       n = size(gap)
-      count = 0
-      minima = 0
-      jmin = 0
+      ! One pass: the smallest valid gap, and the interior local minima (in `minima`, in order).
+      any_valid = .false.
       gmin = 0.0_wp
-      do j = 1, n
-         if (.not. valid(j)) cycle
-         if (jmin == 0) then
-            jmin = j; gmin = gap(j)
-         else if (gap(j) < gmin) then
-            jmin = j; gmin = gap(j)
+      n_local = 0
+      if (n >= 1) then
+         if (valid(1)) then
+            any_valid = .true.
+            gmin = gap(1)
          end if
-      end do
-      global_interior = .false.
+      end if
       do j = 2, n - 1
-         if (.not. (valid(j - 1) .and. valid(j) .and. valid(j + 1))) cycle
+         if (.not. valid(j)) cycle
+         if (.not. any_valid) then
+            any_valid = .true.
+            gmin = gap(j)
+         else if (gap(j) < gmin) then
+            gmin = gap(j)
+         end if
          if (.not. (gap(j) <= gap(j - 1) .and. gap(j) < gap(j + 1))) cycle
+         if (.not. (valid(j - 1) .and. valid(j + 1))) cycle
+         n_local = n_local + 1
+         minima(n_local) = j
+      end do
+      if (n >= 2) then
+         if (valid(n)) then
+            if (.not. any_valid) then
+               gmin = gap(n)
+            else if (gap(n) < gmin) then
+               gmin = gap(n)
+            end if
+         end if
+      end if
+      ! Keep those behind a separating maximum higher than merge_gap.
+      count = 0
+      global_interior = .false.
+      do i = 1, n_local
+         j = minima(i)
          if (saddle_height(j) - gap(j) < merge_gap) cycle
-         if (count == size(minima)) exit
          count = count + 1
          minima(count) = j
          if (gap(j) <= gmin) global_interior = .true.

@@ -20,6 +20,7 @@ module shcontact_geometry_yaw
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_wheel
    use shcontact_geometry_kinematics, only: yawed_wheel_profile
+   use shcontact_geometry_prepared, only: box_pad
    implicit none
    private
 
@@ -41,6 +42,9 @@ module shcontact_geometry_yaw
       real(wp), allocatable :: cy(:, :, :), cz(:, :, :)
       !> Dense samples y(i, j), z(i, j) of node j (at the unyawed wheel's sample parameters).
       real(wp), allocatable :: y(:, :), z(:, :)
+      !> The bounds of the blocks of samples of node j, box(:, b, j) (prepared_profiles_type's
+      !> `wheel_box`).
+      real(wp), allocatable :: box(:, :, :)
    end type yaw_table_type
 
 contains
@@ -67,9 +71,10 @@ contains
       table%ready = .false.
       n_knots = size(unyawed%wheel%cy, 2)
       n_samples = size(unyawed%wheel_y)
-      if (allocated(table%cy)) deallocate (table%cy, table%cz, table%y, table%z)
+      if (allocated(table%cy)) deallocate (table%cy, table%cz, table%y, table%z, table%box)
       allocate (table%cy(4, n_knots, size(yaw_nodes)), table%cz(4, n_knots, size(yaw_nodes)), &
-         table%y(n_samples, size(yaw_nodes)), table%z(n_samples, size(yaw_nodes)))
+         table%y(n_samples, size(yaw_nodes)), table%z(n_samples, size(yaw_nodes)), &
+         table%box(4, size(unyawed%wheel_box, 2), size(yaw_nodes)))
       interpolate = options
       interpolate%l_filt_wheel = 0.0_wp
       node = unyawed
@@ -85,13 +90,15 @@ contains
          table%cz(:, :, j) = node%wheel%cz
          table%y(:, j) = node%wheel_y
          table%z(:, j) = node%wheel_z
+         table%box(:, :, j) = node%wheel_box
       end do
       table%ready = .true.
    end subroutine build_yaw_table
 
    !> The effective wheel profile at yaw ψ (|ψ| ≤ yaw_table_limit) into `yawed`, a copy of the unyawed
    !> preparation: its wheel spline coefficients and samples interpolated in ψ² (nothing is
-   !> allocated; the knots, sample parameters, tape circle and rail stay those of the copy).
+   !> allocated; the knots, sample parameters, tape circle and rail stay those of the copy), and
+   !> bounds of its blocks of samples from those of the nodes.
    pure subroutine apply_yaw(table, yaw, yawed)
       !> The table from [[build_yaw_table]].
       type(yaw_table_type), intent(in) :: table
@@ -114,14 +121,59 @@ contains
          weight(m) = product(u - nodes, mask=[(j /= m, j=1, 4)])/ &
             product(nodes(m) - nodes, mask=[(j /= m, j=1, 4)])
       end do
-      yawed%wheel%cy = weight(1)*table%cy(:, :, j0) + weight(2)*table%cy(:, :, j0 + 1) + &
-         weight(3)*table%cy(:, :, j0 + 2) + weight(4)*table%cy(:, :, j0 + 3)
-      yawed%wheel%cz = weight(1)*table%cz(:, :, j0) + weight(2)*table%cz(:, :, j0 + 1) + &
-         weight(3)*table%cz(:, :, j0 + 2) + weight(4)*table%cz(:, :, j0 + 3)
-      yawed%wheel_y = weight(1)*table%y(:, j0) + weight(2)*table%y(:, j0 + 1) + &
-         weight(3)*table%y(:, j0 + 2) + weight(4)*table%y(:, j0 + 3)
-      yawed%wheel_z = weight(1)*table%z(:, j0) + weight(2)*table%z(:, j0 + 1) + &
-         weight(3)*table%z(:, j0 + 2) + weight(4)*table%z(:, j0 + 3)
+      ! `yawed` is a copy of the table's unyawed preparation: the shapes agree (checked anyway).
+      if (any(shape(yawed%wheel%cy) /= shape(table%cy(:, :, 1))) .or. &
+         any(shape(yawed%wheel%cz) /= shape(table%cz(:, :, 1))) .or. &
+         size(yawed%wheel_y) /= size(table%y, 1) .or. size(yawed%wheel_z) /= size(table%z, 1) &
+         .or. any(shape(yawed%wheel_box) /= shape(table%box(:, :, 1)))) then
+         yawed%wheel%cy = table%cy(:, :, 1)
+         yawed%wheel%cz = table%cz(:, :, 1)
+         yawed%wheel_y = table%y(:, 1)
+         yawed%wheel_z = table%z(:, 1)
+         yawed%wheel_box = table%box(:, :, 1)
+      end if
+      call combine(size(table%cy(:, :, 1)), weight, table%cy(:, :, j0), table%cy(:, :, j0 + 1), &
+         table%cy(:, :, j0 + 2), table%cy(:, :, j0 + 3), yawed%wheel%cy)
+      call combine(size(table%cz(:, :, 1)), weight, table%cz(:, :, j0), table%cz(:, :, j0 + 1), &
+         table%cz(:, :, j0 + 2), table%cz(:, :, j0 + 3), yawed%wheel%cz)
+      call combine(size(table%y, 1), weight, table%y(:, j0), table%y(:, j0 + 1), &
+         table%y(:, j0 + 2), table%y(:, j0 + 3), yawed%wheel_y)
+      call combine(size(table%z, 1), weight, table%z(:, j0), table%z(:, j0 + 1), &
+         table%z(:, j0 + 2), table%z(:, j0 + 3), yawed%wheel_z)
+      call combine_boxes(weight, table%box(:, :, j0:j0 + 3), yawed%wheel_box)
    end subroutine apply_yaw
+
+   !> c = w₁a₁ + w₂a₂ + w₃a₃ + w₄a₄ over n values, one flat loop (the arrays are contiguous).
+   pure subroutine combine(n, w, a1, a2, a3, a4, c)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: w(4), a1(n), a2(n), a3(n), a4(n)
+      real(wp), intent(inout) :: c(n)
+      integer :: i
+      do i = 1, n
+         c(i) = w(1)*a1(i) + w(2)*a2(i) + w(3)*a3(i) + w(4)*a4(i)
+      end do
+   end subroutine combine
+
+   !> Bounds of the blocks of Σ w_m x_m from the bounds of each x_m's blocks (interval
+   !> arithmetic), widened by box_pad against round-off.
+   pure subroutine combine_boxes(w, node_box, box)
+      real(wp), intent(in) :: w(4), node_box(:, :, :)
+      real(wp), intent(inout) :: box(:, :)
+      integer :: b, c, m
+      real(wp) :: lo, hi
+
+      do b = 1, size(box, 2)
+         do c = 1, 3, 2
+            lo = 0.0_wp
+            hi = 0.0_wp
+            do m = 1, 4
+               lo = lo + min(w(m)*node_box(c, b, m), w(m)*node_box(c + 1, b, m))
+               hi = hi + max(w(m)*node_box(c, b, m), w(m)*node_box(c + 1, b, m))
+            end do
+            box(c, b) = lo - box_pad
+            box(c + 1, b) = hi + box_pad
+         end do
+      end do
+   end subroutine combine_boxes
 
 end module shcontact_geometry_yaw
