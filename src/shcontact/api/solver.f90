@@ -53,7 +53,7 @@ module shcontact_api_solver
    use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
-      side_state, yawed_wheel_profile, axle_offset, contact_lead, yaw_radius_factor
+      side_state, yawed_wheel_profile, axle_offset, contact_lead, true_radius_scale
    implicit none
    private
 
@@ -641,7 +641,7 @@ contains
       !> Strip tables to kinematic_table_gap at most (default: the options' table_gap).
       logical, intent(in), optional :: short_tables
       type(wheelset_position_type) :: position
-      real(wp) :: table_gap
+      real(wp) :: table_gap, sin_yaw
       logical :: short
       integer :: k
 
@@ -677,11 +677,12 @@ contains
             ' patches; the solver holds at most '//str_int(max_patches), stat_usage)
          return
       end if
+      sin_yaw = sin(yaw)
       do k = 1, self%patches%count
          associate (g => self%patches%patch(k), n => self%patches%points(k))
             if (yaw /= 0.0_wp) then
-               g%r_wheel(1:n) = g%r_wheel(1:n)/yaw_radius_factor(g%gamma(1:n), yaw)
-               g%r0 = g%r0/yaw_radius_factor(g%gamma0, yaw)
+               g%r_wheel(1:n) = g%r_wheel(1:n)*true_radius_scale(g%gamma(1:n), sin_yaw)
+               g%r0 = g%r0*true_radius_scale(g%gamma0, sin_yaw)
             end if
             self%x_track(k) = contact_lead(g%y_wheel + axle_offset(self%track), g%r0, &
                g%gamma0, yaw)

@@ -37,7 +37,8 @@ module shcontact_geometry_kinematics
    private
 
    public :: wheelset_state_type, check_wheelset_state, side_state, pure_rolling_pitch_rate
-   public :: yawed_wheel_profile, contact_lead, yaw_radius_factor, axle_offset, max_yaw, &
+   public :: yawed_wheel_profile, contact_lead, yaw_radius_factor, true_radius_scale, &
+      axle_offset, max_yaw, &
       max_slope
 
    !> Largest |yaw angle| accepted (rad): far beyond the ~10 mrad of a wheelset in a curve.
@@ -212,5 +213,18 @@ contains
       real(wp) :: sin_t
       call locus_angle(tan(gamma), yaw, sin_t, factor)
    end function yaw_radius_factor
+
+   !> 1/cos θ = √(1 + tan²θ), tan θ = −t sin ψ with t = tan γ limited as in the contact locus:
+   !> the factor that turns the effective profile's rolling radius r cos θ into the true r. Takes
+   !> sin ψ, computed once for a whole table.
+   elemental real(wp) function true_radius_scale(gamma, sin_yaw) result(scale)
+      !> Contact angle γ (rad, CONTACT's sign, side frame).
+      real(wp), intent(in) :: gamma
+      !> sin ψ of the side frame's yaw angle.
+      real(wp), intent(in) :: sin_yaw
+      real(wp) :: tan_t
+      tan_t = max(-max_slope, min(max_slope, tan(gamma)))*sin_yaw
+      scale = sqrt(1.0_wp + tan_t*tan_t)
+   end function true_radius_scale
 
 end module shcontact_geometry_kinematics
