@@ -53,7 +53,8 @@ module shcontact_api_solver
    use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
-      side_state, yawed_wheel_profile, axle_offset, contact_lead, true_radius_scale
+      side_state, yawed_wheel_profile, axle_offset, contact_lead, true_radius_scale, &
+      scale_to_true_radius
    implicit none
    private
 
@@ -681,7 +682,7 @@ contains
       do k = 1, self%patches%count
          associate (g => self%patches%patch(k), n => self%patches%points(k))
             if (yaw /= 0.0_wp) then
-               g%r_wheel(1:n) = g%r_wheel(1:n)*true_radius_scale(g%gamma(1:n), sin_yaw)
+               call scale_to_true_radius(g%gamma(1:n), sin_yaw, g%r_wheel(1:n))
                g%r0 = g%r0*true_radius_scale(g%gamma0, sin_yaw)
             end if
             self%x_track(k) = contact_lead(g%y_wheel + axle_offset(self%track), g%r0, &

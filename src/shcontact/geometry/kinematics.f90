@@ -38,6 +38,7 @@ module shcontact_geometry_kinematics
 
    public :: wheelset_state_type, check_wheelset_state, side_state, pure_rolling_pitch_rate
    public :: yawed_wheel_profile, contact_lead, yaw_radius_factor, true_radius_scale, &
+      scale_to_true_radius, &
       axle_offset, max_yaw, &
       max_slope
 
@@ -226,5 +227,22 @@ contains
       tan_t = max(-max_slope, min(max_slope, tan(gamma)))*sin_yaw
       scale = sqrt(1.0_wp + tan_t*tan_t)
    end function true_radius_scale
+
+   !> radius(i) ← radius(i)·[[true_radius_scale]](gamma(i), sin ψ) over a whole table (one loop
+   !> the compiler vectorises, with the SIMD tan of libmvec).
+   pure subroutine scale_to_true_radius(gamma, sin_yaw, radius)
+      !> Contact angles γ_i (rad) of the table points.
+      real(wp), intent(in) :: gamma(:)
+      !> sin ψ.
+      real(wp), intent(in) :: sin_yaw
+      !> Rolling radii r cos θ on entry, r on return (mm).
+      real(wp), intent(inout) :: radius(:)
+      real(wp) :: tan_t
+      integer :: i
+      do i = 1, size(radius)
+         tan_t = max(-max_slope, min(max_slope, tan(gamma(i))))*sin_yaw
+         radius(i) = radius(i)*sqrt(1.0_wp + tan_t*tan_t)
+      end do
+   end subroutine scale_to_true_radius
 
 end module shcontact_geometry_kinematics
