@@ -22,6 +22,7 @@ module test_api_kinematic
       value_n_patches, value_n_loaded, value_main_patch, value_sum_fx, value_sum_fy, &
       value_sum_fz, value_sum_fn, value_dz, value_nu_x, value_nu_y, value_phi, value_x_track
    use shcontact_api_legacy, only: max_handles
+   use shcontact_tangential_patch, only: state_exterior, state_adhesion, state_slip
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_last_error, &
       shcontact_solve_kinematic, shcontact_patch_kinematic
    implicit none
@@ -377,20 +378,25 @@ contains
       if (allocated(error)) return
       call check(error, SHC_LOAD_VERTICAL_POSITION, load_vertical_position, &
          message='shcontact.fi SHC_LOAD_VERTICAL_POSITION')
+      if (allocated(error)) return
+      call check(error, all([SHC_STATE_EXTERIOR, SHC_STATE_ADHESION, SHC_STATE_SLIP] == &
+         int([state_exterior, state_adhesion, state_slip])), &
+         message='shcontact.fi element states')
    end subroutine test_include_file
 
    !> include/shcontact.h read as text: each #define equals the library's constant (indices
    !> 0-based), and every define is checked.
    subroutine test_c_header(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), parameter :: names(43) = [character(len=24) :: 'OK', 'USAGE', &
+      character(len=24), parameter :: names(46) = [character(len=24) :: 'OK', 'USAGE', &
          'INVALID_INPUT', 'IO', 'NUMERICAL', 'NO_CONTACT', 'RIGHT', 'LEFT', &
          'LOAD_NORMAL_FORCE', 'LOAD_VERTICAL_FORCE', 'LOAD_APPROACH', 'FX', 'FY', 'MZ', 'FN', &
          'FX_NORM', 'FY_NORM', 'FY_TRACK', 'FZ_TRACK', 'APPROACH', 'AREA', 'P_MAX', 'GAMMA0', &
          'R0', 'Y_TRACK', 'Z_TRACK', 'COULOMB', 'ADHESION', 'PATCH_SIZE', 'N_PATCHES', &
          'N_LOADED', 'MAIN_PATCH', 'SUM_FX', 'SUM_FY', 'SUM_FZ', 'SUM_FN', 'DZ', 'RESULT_SIZE', &
-         'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION']
-      integer :: expected(44), found(44), unit, stat, i, value, n_defines
+         'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION', 'STATE_EXTERIOR', &
+         'STATE_ADHESION', 'STATE_SLIP']
+      integer :: expected(47), found(47), unit, stat, i, value, n_defines
       character(len=256) :: line
       character(len=64) :: word, name
 
@@ -403,7 +409,8 @@ contains
          value_n_patches - 1, value_n_loaded - 1, value_main_patch - 1, value_sum_fx - 1, &
          value_sum_fy - 1, value_sum_fz - 1, value_sum_fn - 1, value_dz - 1, &
          result_value_count, value_nu_x - 1, value_nu_y - 1, value_phi - 1, value_x_track - 1, &
-         load_vertical_position, kinematic_value_count]
+         load_vertical_position, int(state_exterior), int(state_adhesion), int(state_slip), &
+         kinematic_value_count]
       found = huge(1)
       n_defines = 0
       open (newunit=unit, file='include/shcontact.h', status='old', action='read', iostat=stat)
@@ -424,7 +431,7 @@ contains
          n_defines = n_defines + 1
          name = name(len('SHCONTACT_') + 1:)
          if (trim(name) == 'KIN_SIZE') then
-            found(44) = value
+            found(size(found)) = value
             cycle
          end if
          do i = 1, size(names)
