@@ -65,8 +65,12 @@ contains
    !> A profile from arrays of points in the canonical form (mm, right side, y towards the
    !> field side, z down; wheel points from the field side to the flange back, rail points from
    !> the track centre to the field side), checked and cleaned as a profile file is
-   !> ([[load_profile]]). Messages name the profile 'wheel array' or 'rail array' (or `name`)
-   !> and the point by its 1-based index.
+   !> ([[load_profile]]: clean_profile, check_plausible) with one difference: points on the
+   !> chord of their neighbours are kept (drop_collinear is for files whose samples were
+   !> resampled; a program's arrays are taken as they are), so that a profile exported to arrays,
+   !> a built-in one for instance, gives the results of the profile itself bit for bit.
+   !> Messages name the profile 'wheel array' or 'rail array' (or `name`) and the point by its
+   !> 1-based index.
    subroutine profile_from_points(y, z, kind, profile, error, name)
       !> Lateral and vertical coordinates of the points (mm), in profile order.
       real(wp), intent(in) :: y(:), z(:)
@@ -94,7 +98,6 @@ contains
       allocate (lines(size(y)), source=0)
       call clean_profile(profile, error, lines, option_prefix=array_hints)
       if (allocated(error)) return
-      call drop_collinear(profile, lines)
       call check_plausible(profile, error, lines, option_prefix=array_hints)
    end subroutine profile_from_points
 
