@@ -79,6 +79,10 @@ extern "C" {
 #define SHCONTACT_X_TRACK 28       /* contact point, longitudinal track coordinate (mm, forward) */
 #define SHCONTACT_KIN_SIZE 29
 
+/* Profiles of shcontact_get_profile. */
+#define SHCONTACT_PROFILE_RAIL 0
+#define SHCONTACT_PROFILE_WHEEL 1
+
 /* Element states of shcontact_fields. */
 #define SHCONTACT_STATE_EXTERIOR 0 /* outside the contact */
 #define SHCONTACT_STATE_ADHESION 1 /* adhesion (stick) */
@@ -106,6 +110,15 @@ int shcontact_create(shcontact_contact **handle, const char *wheel, const char *
 int shcontact_create_arrays(shcontact_contact **handle, int n_wheel, const double *wheel_y,
                             const double *wheel_z, int n_rail, const double *rail_y,
                             const double *rail_z, int side);
+
+/* The points of the contact's wheel (kind SHCONTACT_PROFILE_WHEEL) or rail
+ * (SHCONTACT_PROFILE_RAIL) profile as created: a file's read and cleaned, a built-in one as it is
+ * (mm, the canonical form of shcontact_create_arrays). *n receives the number of points and y, z
+ * (`capacity` values each) the points; when *n exceeds capacity nothing is copied and the status
+ * is SHCONTACT_USAGE (call with capacity 0 and NULL arrays to ask for *n). Passing the points to
+ * shcontact_create_arrays gives a contact with the same results, bit for bit. */
+int shcontact_get_profile(shcontact_contact *handle, int kind, int capacity, int *n, double *y,
+                          double *z);
 
 /* Release a contact (NULL is ignored). */
 int shcontact_destroy(shcontact_contact *handle);

@@ -106,6 +106,12 @@ module test_api
          integer, intent(in) :: iside
          integer, intent(out) :: istat
       end subroutine shc_create_arrays
+      subroutine shc_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+         integer, intent(in) :: ihandle, ikind, nmax
+         integer, intent(out) :: n
+         double precision, intent(out) :: y(*), z(*)
+         integer, intent(out) :: istat
+      end subroutine shc_get_profile
       subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
          integer, intent(in) :: ihandle, ipatch
          integer, intent(out) :: nx, ny
@@ -846,9 +852,10 @@ contains
       type(profile_type) :: wheel, rail
       type(lib_error), allocatable :: err
       double precision :: by_name(25), by_arrays(25), patch_name(17), patch_arrays(17)
-      integer :: ih_name, ih_arrays, istat(2), icase, k
+      integer :: ih_name, ih_arrays, istat(2), icase, k, n
       character(len=256) :: msg
       type(flat_case_type) :: c
+      double precision :: points(4000, 2)
 
       call builtin_profile('S1002', wheel, err)
       if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
@@ -879,6 +886,24 @@ contains
          end do
       end do
       call check(error, nint(by_name(19)), 2, message='the vertical-load case loads two patches')
+      if (allocated(error)) return
+      ! SHC_GET_PROFILE gives the profiles back: first the count (capacity 0), then the points.
+      call shc_get_profile(ih_name, 1, 0, n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == stat_usage .and. n == size(wheel%y), &
+         message='SHC_GET_PROFILE with no room: the count')
+      if (allocated(error)) return
+      call shc_get_profile(ih_name, 1, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == 0 .and. n == size(wheel%y), message='SHC_GET_PROFILE wheel')
+      if (allocated(error)) return
+      call check(error, bitwise_equal(points(1:n, 1), wheel%y) .and. &
+         bitwise_equal(points(1:n, 2), wheel%z), message='wheel points differ')
+      if (allocated(error)) return
+      call shc_get_profile(ih_arrays, 0, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == 0 .and. bitwise_equal(points(1:n, 1), rail%y) .and. &
+         bitwise_equal(points(1:n, 2), rail%z), message='rail points of the arrays handle')
+      if (allocated(error)) return
+      call shc_get_profile(ih_arrays, 7, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1), stat_usage, message='SHC_GET_PROFILE bad kind')
       call shc_destroy(ih_name, istat(1))
       call shc_destroy(ih_arrays, istat(2))
    end subroutine test_legacy_arrays

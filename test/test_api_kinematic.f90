@@ -23,6 +23,7 @@ module test_api_kinematic
       value_sum_fz, value_sum_fn, value_dz, value_nu_x, value_nu_y, value_phi, value_x_track
    use shcontact_api_legacy, only: max_handles
    use shcontact_tangential_patch, only: state_exterior, state_adhesion, state_slip
+   use shcontact_profile_points, only: profile_kind_rail, profile_kind_wheel
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_last_error, &
       shcontact_solve_kinematic, shcontact_patch_kinematic
    implicit none
@@ -382,21 +383,24 @@ contains
       call check(error, all([SHC_STATE_EXTERIOR, SHC_STATE_ADHESION, SHC_STATE_SLIP] == &
          int([state_exterior, state_adhesion, state_slip])), &
          message='shcontact.fi element states')
+      if (allocated(error)) return
+      call check(error, all([SHC_PROFILE_RAIL, SHC_PROFILE_WHEEL] == [profile_kind_rail, &
+         profile_kind_wheel]), message='shcontact.fi profile kinds')
    end subroutine test_include_file
 
    !> include/shcontact.h read as text: each #define equals the library's constant (indices
    !> 0-based), and every define is checked.
    subroutine test_c_header(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), parameter :: names(46) = [character(len=24) :: 'OK', 'USAGE', &
+      character(len=24), parameter :: names(48) = [character(len=24) :: 'OK', 'USAGE', &
          'INVALID_INPUT', 'IO', 'NUMERICAL', 'NO_CONTACT', 'RIGHT', 'LEFT', &
          'LOAD_NORMAL_FORCE', 'LOAD_VERTICAL_FORCE', 'LOAD_APPROACH', 'FX', 'FY', 'MZ', 'FN', &
          'FX_NORM', 'FY_NORM', 'FY_TRACK', 'FZ_TRACK', 'APPROACH', 'AREA', 'P_MAX', 'GAMMA0', &
          'R0', 'Y_TRACK', 'Z_TRACK', 'COULOMB', 'ADHESION', 'PATCH_SIZE', 'N_PATCHES', &
          'N_LOADED', 'MAIN_PATCH', 'SUM_FX', 'SUM_FY', 'SUM_FZ', 'SUM_FN', 'DZ', 'RESULT_SIZE', &
          'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION', 'STATE_EXTERIOR', &
-         'STATE_ADHESION', 'STATE_SLIP']
-      integer :: expected(47), found(47), unit, stat, i, value, n_defines
+         'STATE_ADHESION', 'STATE_SLIP', 'PROFILE_RAIL', 'PROFILE_WHEEL']
+      integer :: expected(49), found(49), unit, stat, i, value, n_defines
       character(len=256) :: line
       character(len=64) :: word, name
 
@@ -410,7 +414,7 @@ contains
          value_sum_fy - 1, value_sum_fz - 1, value_sum_fn - 1, value_dz - 1, &
          result_value_count, value_nu_x - 1, value_nu_y - 1, value_phi - 1, value_x_track - 1, &
          load_vertical_position, int(state_exterior), int(state_adhesion), int(state_slip), &
-         kinematic_value_count]
+         profile_kind_rail, profile_kind_wheel, kinematic_value_count]
       found = huge(1)
       n_defines = 0
       open (newunit=unit, file='include/shcontact.h', status='old', action='read', iostat=stat)

@@ -17,12 +17,13 @@ module shcontact_api_capi
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
       context_patch, context_patch_kinematic, context_message, context_fail, &
-      context_create_arrays, context_field_size, context_fields
+      context_create_arrays, context_field_size, context_fields, context_get_profile
    use shcontact_version_info, only: shcontact_version
    implicit none
    private
 
-   public :: shcontact_create_arrays, shcontact_field_size, shcontact_fields
+   public :: shcontact_create_arrays, shcontact_field_size, shcontact_fields, &
+      shcontact_get_profile
    public :: shcontact_create, shcontact_destroy, shcontact_set_material, shcontact_set_track, &
       shcontact_set_option, shcontact_solve, shcontact_solve_kinematic, shcontact_patch, &
       shcontact_patch_kinematic, shcontact_last_error, shcontact_version_string
@@ -267,6 +268,41 @@ contains
       call c_f_pointer(handle, ctx)
       stat = context_patch(ctx, int(patch), values)
    end function shcontact_patch
+
+   !> The points of the contact's wheel (kind = 1) or rail (kind = 0) profile as created (mm,
+   !> canonical form): *n points in y[0..*n-1], z[...], which hold `capacity` values; *n is set
+   !> also when it exceeds the capacity (status 1, nothing copied): call with capacity 0 to ask.
+   integer(c_int) function shcontact_get_profile(handle, kind, capacity, n, y, z) result(stat) &
+         bind(C, name='shcontact_get_profile')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> 1 wheel, 0 rail.
+      integer(c_int), value :: kind
+      !> Size of y and z.
+      integer(c_int), value :: capacity
+      !> Where to store the number of points (int *).
+      type(c_ptr), value :: n
+      !> The points (double *; may be NULL when capacity is 0).
+      type(c_ptr), value :: y, z
+      type(contact_context_type), pointer :: ctx
+      integer(c_int), pointer :: count
+      real(c_double), pointer :: fy(:), fz(:)
+      integer :: m, points
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      m = max(int(capacity), 0)
+      if (.not. c_associated(n) .or. (m > 0 .and. .not. (c_associated(y) .and. &
+          c_associated(z)))) then
+         stat = context_fail(ctx, 'shcontact_get_profile: n, y or z is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(n, count)
+      call c_f_pointer(y, fy, [m])
+      call c_f_pointer(z, fz, [m])
+      stat = context_get_profile(ctx, int(kind), points, fy, fz)
+      count = points
+   end function shcontact_get_profile
 
    !> The size of the element fields of patch `patch` (1-based) of the last solve: *nx elements
    !> per strip (rolling direction), *ny strips; 0 × 0 for a patch without load. Needs the

@@ -29,7 +29,8 @@ module shcontact_api_context
    public :: contact_context_type, option_keys
    public :: context_create, context_create_arrays, context_set_material, context_set_track, &
       context_set_option, context_solve, context_solve_kinematic, context_patch, &
-      context_patch_kinematic, context_field_size, context_fields, context_message, context_fail
+      context_patch_kinematic, context_field_size, context_fields, context_get_profile, &
+      context_message, context_fail
 
    !> Longest message kept (longer ones are cut).
    integer, parameter :: message_capacity = 1024
@@ -383,6 +384,44 @@ contains
       end if
       stat = record(ctx, error)
    end function context_fields
+
+   !> The points of the wheel (kind = profile_kind_wheel, 1) or rail (profile_kind_rail, 0)
+   !> profile of the contact, as it was created (read and cleaned; mm, canonical form), e.g. to
+   !> pass them to [[context_create_arrays]] after a change. n receives the number of points
+   !> also when it exceeds the capacity of y and z (then nothing is copied and the status is 1).
+   integer function context_get_profile(ctx, kind, n, y, z) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> profile_kind_wheel (1) or profile_kind_rail (0).
+      integer, intent(in) :: kind
+      !> The number of points (0 on failure other than a small capacity).
+      integer, intent(out) :: n
+      !> The points (their size is the capacity); zero beyond n.
+      real(wp), intent(out) :: y(:), z(:)
+      type(error_type), allocatable :: error
+      type(profile_type) :: wheel, rail
+
+      n = 0
+      y = 0.0_wp
+      z = 0.0_wp
+      if (kind /= profile_kind_wheel .and. kind /= profile_kind_rail) then
+         call fatal_error(error, 'profile kind = '//str_int(kind)//': expected 1 (wheel) or '// &
+            '0 (rail)', stat_usage)
+      else if (usable(ctx, error)) then
+         call ctx%solver%get_profiles(wheel, rail)
+         if (kind == profile_kind_rail) wheel = rail
+         n = wheel%size()
+         if (n > min(size(y), size(z))) then
+            call fatal_error(error, 'profile points: the '//trim(merge('wheel', 'rail ', &
+               kind == profile_kind_wheel))//' profile has '//str_int(n)//' points, the '// &
+               'arrays hold '//str_int(min(size(y), size(z))), stat_usage)
+         else
+            y(1:n) = wheel%y
+            z(1:n) = wheel%z
+         end if
+      end if
+      stat = record(ctx, error)
+   end function context_get_profile
 
    !> An error unless the last solve kept its fields and has a patch k.
    subroutine check_fields(ctx, k, error)

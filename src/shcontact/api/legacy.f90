@@ -20,12 +20,13 @@ module shcontact_api_legacy
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
       context_patch, context_patch_kinematic, context_message, context_create_arrays, &
-      context_field_size, context_fields, context_fail
+      context_field_size, context_fields, context_fail, context_get_profile
    implicit none
    private
 
    public :: max_handles
-   public :: legacy_create, legacy_create_arrays, legacy_field_size, legacy_fields
+   public :: legacy_create, legacy_create_arrays, legacy_field_size, legacy_fields, &
+      legacy_get_profile
    public :: legacy_destroy, legacy_set_material, legacy_set_track, &
       legacy_set_option, legacy_solve, legacy_solve_kinematic, legacy_patch, &
       legacy_patch_kinematic, legacy_message
@@ -277,6 +278,23 @@ contains
       end if
    end subroutine legacy_fields
 
+   !> The points of the handle's wheel (ikind = 1) or rail (ikind = 0) profile as created;
+   !> n receives their number also when it exceeds nmax (status 1, nothing copied).
+   subroutine legacy_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+      !> The handle, the profile kind, the capacity of y and z.
+      integer, intent(in) :: ihandle, ikind, nmax
+      !> The number of points.
+      integer, intent(out) :: n
+      !> The points (mm).
+      real(wp), intent(out) :: y(*), z(*)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      n = 0
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_get_profile(slots(ihandle)%ctx, ikind, n, &
+         y(1:max(nmax, 0)), z(1:max(nmax, 0)))
+   end subroutine legacy_get_profile
+
    !> The message of the last call on a handle (blank after a success), or why the handle is
    !> not valid. Cut to len(msg).
    subroutine legacy_message(ihandle, msg)
@@ -360,6 +378,19 @@ subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, sta
    integer, intent(out) :: istat
    call legacy_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
 end subroutine shc_fields
+
+!> The points of the contact's wheel (ikind = 1, SHC_PROFILE_WHEEL) or rail (ikind = 0,
+!> SHC_PROFILE_RAIL) profile as created (mm, canonical form): n points in y(1:n), z(1:n), which
+!> hold nmax; n is set also when it exceeds nmax (status 1).
+subroutine shc_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+   use shcontact_api_legacy, only: legacy_get_profile
+   implicit none
+   integer, intent(in) :: ihandle, ikind, nmax
+   integer, intent(out) :: n
+   double precision, intent(out) :: y(*), z(*)
+   integer, intent(out) :: istat
+   call legacy_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+end subroutine shc_get_profile
 
 !> Release a contact.
 subroutine shc_destroy(ihandle, istat)
