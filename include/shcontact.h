@@ -79,6 +79,15 @@ extern "C" {
 #define SHCONTACT_X_TRACK 28       /* contact point, longitudinal track coordinate (mm, forward) */
 #define SHCONTACT_KIN_SIZE 29
 
+/* Profiles of shcontact_get_profile. */
+#define SHCONTACT_PROFILE_RAIL 0
+#define SHCONTACT_PROFILE_WHEEL 1
+
+/* Element states of shcontact_fields. */
+#define SHCONTACT_STATE_EXTERIOR 0 /* outside the contact */
+#define SHCONTACT_STATE_ADHESION 1 /* adhesion (stick) */
+#define SHCONTACT_STATE_SLIP 2     /* slip */
+
 /* An opaque contact (one wheel on its rail). */
 typedef struct shcontact_contact shcontact_contact;
 
@@ -87,6 +96,29 @@ typedef struct shcontact_contact shcontact_contact;
  * R0 = 460 mm), material (G = 82670 MPa, nu = 0.27, mu = 0.3) and options. *handle receives a
  * handle also when the creation fails (its last error tells why); destroy it in any case. */
 int shcontact_create(shcontact_contact **handle, const char *wheel, const char *rail, int side);
+
+/* Create a contact from profiles given as arrays of points, in mm, in the right-side canonical
+ * form: y towards the field side, z down; the n_wheel wheel points run from the field side to
+ * the flange back (y decreasing overall; origin on the tape circle, flange back at y = -70 mm
+ * as S1002's unless shcontact_set_track says otherwise), the n_rail rail points from the track
+ * centre to the field side (y increasing overall). The points are checked and cleaned as a
+ * profile file is (at least 4 points, finite, no duplicate consecutive points, that order, an
+ * arc length of 5 to 500 mm, no loops, a running surface); a bad array gives
+ * SHCONTACT_INVALID_INPUT and a message naming "wheel array" or "rail array" and the point
+ * (counted from 1). The arrays are copied: free them when the call returns. Defaults and the
+ * handle as shcontact_create. */
+int shcontact_create_arrays(shcontact_contact **handle, int n_wheel, const double *wheel_y,
+                            const double *wheel_z, int n_rail, const double *rail_y,
+                            const double *rail_z, int side);
+
+/* The points of the contact's wheel (kind SHCONTACT_PROFILE_WHEEL) or rail
+ * (SHCONTACT_PROFILE_RAIL) profile as created: a file's read and cleaned, a built-in one as it is
+ * (mm, the canonical form of shcontact_create_arrays). *n receives the number of points and y, z
+ * (`capacity` values each) the points; when *n exceeds capacity nothing is copied and the status
+ * is SHCONTACT_USAGE (call with capacity 0 and NULL arrays to ask for *n). Passing the points to
+ * shcontact_create_arrays gives a contact with the same results, bit for bit. */
+int shcontact_get_profile(shcontact_contact *handle, int kind, int capacity, int *n, double *y,
+                          double *z);
 
 /* Release a contact (NULL is ignored). */
 int shcontact_destroy(shcontact_contact *handle);
@@ -107,7 +139,8 @@ int shcontact_set_track(shcontact_contact *handle, double gauge, double gauge_he
  * normal%n_strips, normal%b_min, tangential%method (fastsim-sh, fastsim), tangential%bound
  * (ellipsoidal, parabolic, weighted, weighted-slip, clipped), tangential%spin_model (additive,
  * uniform, scaled, geometric), tangential%n_elements, profiles%wheel_smoothing,
- * profiles%rail_smoothing. */
+ * profiles%rail_smoothing, output%fields (all or 1: every later solve keeps the element fields
+ * for shcontact_fields; none or 0, the default: no fields, no cost). */
 int shcontact_set_option(shcontact_contact *handle, const char *key, const char *value);
 
 /* Solve one contact: lateral wheelset shift t_y (mm, CONTACT's Y_WS), roll (rad), load mode and
@@ -133,6 +166,21 @@ int shcontact_solve_kinematic(shcontact_contact *handle, double y_ws, double yaw
 
 /* values[SHCONTACT_KIN_SIZE] of patch `patch` (1-based) of the last solve, kinematic layout. */
 int shcontact_patch_kinematic(shcontact_contact *handle, int patch, double *values);
+
+/* Element fields of the last solve (needs output%fields = all before it). *nx elements per
+ * strip (rolling direction) and *ny strips of patch `patch` (1-based); 0 x 0 for a patch that
+ * carries no load. */
+int shcontact_field_size(shcontact_contact *handle, int patch, int *nx, int *ny);
+
+/* The element fields of patch `patch`: each array holds nx*ny values (nx, ny from
+ * shcontact_field_size) in Fortran order, element j (from the leading edge, 0-based) of strip i
+ * at [j + nx*i]: declare them as double x[ny][nx] and read x[i][j]. In the patch's contact frame:
+ * x along the rolling direction from the strip's middle, y the strip centre across the patch
+ * from its reference point (mm); area the element area (mm^2; sum px*area = F_x,
+ * sum py*area = F_y); pn normal pressure, px, py tractions on the wheel (MPa); slip the slip
+ * magnitude (0 in adhesion); state 0 exterior, 1 adhesion, 2 slip. No array may be NULL. */
+int shcontact_fields(shcontact_contact *handle, int patch, int nx, int ny, double *x, double *y,
+                     double *area, double *pn, double *px, double *py, double *slip, int *state);
 
 /* Status of the last call on handle; its message is copied to buffer (NUL-terminated, cut to
  * length - 1 characters, empty after a success). A NULL handle gives SHCONTACT_USAGE. */

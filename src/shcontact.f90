@@ -12,6 +12,7 @@ module shcontact
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_reader, only: read_profile, profile_format_names
    use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_source, only: profile_from_points
    use shcontact_profile_builtin, only: builtin_profile, builtin_profile_names
    use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
    use shcontact_profile_spline, only: profile_spline_type
@@ -66,7 +67,7 @@ module shcontact
    public :: material_type, check_material
    public :: profile_type, profile_kind_rail, profile_kind_wheel, read_profile, &
       profile_format_names, clean_profile, builtin_profile, builtin_profile_names, &
-      write_profile_plain, write_builtin_profiles, profile_spline_type
+      write_profile_plain, write_builtin_profiles, profile_spline_type, profile_from_points
    public :: track_type, wheelset_position_type, side_right, side_left, check_track, &
       check_position, contact_options_type, prepared_profiles_type, check_contact_options, &
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &

@@ -32,7 +32,8 @@ module test_api
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
       solve_stage, solve_case
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_solve, &
-      shcontact_last_error, shcontact_set_option, shcontact_patch
+      shcontact_last_error, shcontact_set_option, shcontact_patch, shcontact_create_arrays, &
+      shcontact_field_size, shcontact_fields
    implicit none
    private
 
@@ -44,6 +45,18 @@ module test_api
    real(wp), parameter :: headline_load = 64.7e3_wp
    type(creepage_type), parameter :: headline_creepage = creepage_type(0.58e-3_wp, 0.061e-3_wp, &
       2.74e-4_wp)
+
+   !> A prescribed case for the flat interfaces: t_y, load mode and value, creepages.
+   type :: flat_case_type
+      real(wp) :: t_y
+      integer :: mode
+      real(wp) :: load, nu_x, nu_y, phi
+   end type flat_case_type
+   !> The headline case; a vertical load at t_y = 5 mm (tread and flange root, two patches).
+   type(flat_case_type), parameter :: array_cases(2) = [ &
+      flat_case_type(headline_t_y, load_normal_force, headline_load, 0.58e-3_wp, 0.061e-3_wp, &
+      2.74e-4_wp), flat_case_type(5.0_wp, load_vertical_force, headline_load, 1.0e-3_wp, &
+      -0.5e-3_wp, 1.0e-4_wp)]
 
    !> The legacy entry points are external procedures.
    interface
@@ -84,6 +97,34 @@ module test_api
          integer, intent(in) :: ihandle
          character(len=*), intent(out) :: msg
       end subroutine shc_errmsg
+      subroutine shc_create_arrays(ihandle, nw, yw, zw, nr, yr, zr, iside, istat)
+         integer, intent(out) :: ihandle
+         integer, intent(in) :: nw
+         double precision, intent(in) :: yw(*), zw(*)
+         integer, intent(in) :: nr
+         double precision, intent(in) :: yr(*), zr(*)
+         integer, intent(in) :: iside
+         integer, intent(out) :: istat
+      end subroutine shc_create_arrays
+      subroutine shc_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+         integer, intent(in) :: ihandle, ikind, nmax
+         integer, intent(out) :: n
+         double precision, intent(out) :: y(*), z(*)
+         integer, intent(out) :: istat
+      end subroutine shc_get_profile
+      subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
+         integer, intent(in) :: ihandle, ipatch
+         integer, intent(out) :: nx, ny
+         integer, intent(out) :: istat
+      end subroutine shc_field_size
+      subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+         integer, intent(in) :: ihandle, ipatch
+         integer, intent(in) :: nx, ny
+         double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
+            px(nx, ny), py(nx, ny), slip(nx, ny)
+         integer, intent(out) :: state(nx, ny)
+         integer, intent(out) :: istat
+      end subroutine shc_fields
    end interface
 
 contains
@@ -107,7 +148,13 @@ contains
          new_unittest('legacy_interface', test_legacy), &
          new_unittest('legacy_bad_arguments', test_legacy_bad), &
          new_unittest('legacy_two_threads', test_legacy_threads), &
-         new_unittest('c_interface', test_c_api) &
+         new_unittest('c_interface', test_c_api), &
+         new_unittest('legacy_arrays_equal_names', test_legacy_arrays), &
+         new_unittest('c_arrays_equal_names', test_c_arrays), &
+         new_unittest('bad_profile_arrays', test_bad_arrays), &
+         new_unittest('legacy_fields_equal_modern', test_legacy_fields), &
+         new_unittest('c_fields_equal_modern', test_c_fields), &
+         new_unittest('fields_bad_calls', test_fields_bad) &
          ]
    end subroutine collect_api
 
@@ -797,7 +844,390 @@ contains
       stat = shcontact_destroy(handle)
    end subroutine test_c_api
 
+   !> Profiles given as arrays through SHC_CREATE_ARRAYS (the built-in S1002 and UIC60 exported
+   !> by builtin_profile) give the results of the handle created from their names, bit for bit:
+   !> prescribed creepages with a normal force, a vertical load on two patches, every patch.
+   subroutine test_legacy_arrays(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      double precision :: by_name(25), by_arrays(25), patch_name(17), patch_arrays(17)
+      integer :: ih_name, ih_arrays, istat(2), icase, k, n
+      character(len=256) :: msg
+      type(flat_case_type) :: c
+      double precision :: points(4000, 2)
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (lib_failed(error, err)) return
+      call shc_create(ih_name, 'builtin:S1002', 'builtin:UIC60', 1, istat(1))
+      call shc_create_arrays(ih_arrays, size(wheel%y), wheel%y, wheel%z, size(rail%y), rail%y, &
+         rail%z, 1, istat(2))
+      call shc_errmsg(ih_arrays, msg)
+      call check(error, all(istat == 0), message='create: '//trim(msg))
+      if (allocated(error)) return
+      do icase = 1, size(array_cases)
+         c = array_cases(icase)
+            call shc_solve(ih_name, c%t_y, 0.0d0, c%mode, c%load, c%nu_x, c%nu_y, c%phi, &
+               by_name, istat(1))
+            call shc_solve(ih_arrays, c%t_y, 0.0d0, c%mode, c%load, c%nu_x, c%nu_y, c%phi, &
+               by_arrays, istat(2))
+         call check(error, all(istat == 0), message='solve failed')
+         if (allocated(error)) return
+         call check(error, bitwise_equal(by_name, by_arrays), message='case '// &
+            char(48 + icase)//': profiles as arrays differ from the same profiles by name')
+         if (allocated(error)) return
+         do k = 1, nint(by_name(18))
+            call shc_patch(ih_name, k, patch_name, istat(1))
+            call shc_patch(ih_arrays, k, patch_arrays, istat(2))
+            call check(error, all(istat == 0) .and. bitwise_equal(patch_name, patch_arrays), &
+               message='case '//char(48 + icase)//': a patch differs')
+            if (allocated(error)) return
+         end do
+      end do
+      call check(error, nint(by_name(19)), 2, message='the vertical-load case loads two patches')
+      if (allocated(error)) return
+      ! SHC_GET_PROFILE gives the profiles back: first the count (capacity 0), then the points.
+      call shc_get_profile(ih_name, 1, 0, n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == stat_usage .and. n == size(wheel%y), &
+         message='SHC_GET_PROFILE with no room: the count')
+      if (allocated(error)) return
+      call shc_get_profile(ih_name, 1, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == 0 .and. n == size(wheel%y), message='SHC_GET_PROFILE wheel')
+      if (allocated(error)) return
+      call check(error, bitwise_equal(points(1:n, 1), wheel%y) .and. &
+         bitwise_equal(points(1:n, 2), wheel%z), message='wheel points differ')
+      if (allocated(error)) return
+      call shc_get_profile(ih_arrays, 0, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1) == 0 .and. bitwise_equal(points(1:n, 1), rail%y) .and. &
+         bitwise_equal(points(1:n, 2), rail%z), message='rail points of the arrays handle')
+      if (allocated(error)) return
+      call shc_get_profile(ih_arrays, 7, size(points, 1), n, points(:, 1), points(:, 2), istat(1))
+      call check(error, istat(1), stat_usage, message='SHC_GET_PROFILE bad kind')
+      call shc_destroy(ih_name, istat(1))
+      call shc_destroy(ih_arrays, istat(2))
+   end subroutine test_legacy_arrays
+
+   !> shcontact_create_arrays as SHC_CREATE_ARRAYS: the built-in profiles as arrays give the
+   !> result of shcontact_create from their names, bit for bit (the left wheel too).
+   subroutine test_c_arrays(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      real(c_double), allocatable, target :: wy(:), wz(:), ry(:), rz(:)
+      character(kind=c_char), target :: wheel_name(14), rail_name(14)
+      type(c_ptr), target :: by_name, by_arrays
+      real(c_double) :: v_name(25), v_arrays(25)
+      integer(c_int) :: stat(2), side
+
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (lib_failed(error, err)) return
+      wy = wheel%y; wz = wheel%z; ry = rail%y; rz = rail%z
+      wheel_name = to_chars('builtin:S1002', 14)
+      rail_name = to_chars('builtin:UIC60', 14)
+      do side = -1, 1, 2
+         stat(1) = shcontact_create(c_loc(by_name), c_loc(wheel_name), c_loc(rail_name), side)
+         stat(2) = shcontact_create_arrays(c_loc(by_arrays), size(wy, kind=c_int), c_loc(wy), &
+            c_loc(wz), size(ry, kind=c_int), c_loc(ry), c_loc(rz), side)
+         call check(error, all(stat == 0), message='shcontact_create_arrays')
+         if (allocated(error)) return
+         stat(1) = shcontact_solve(by_name, side*headline_t_y, 0.0_c_double, 2_c_int, &
+            headline_load, headline_creepage%nu_x, headline_creepage%nu_y, &
+            headline_creepage%phi, v_name)
+         stat(2) = shcontact_solve(by_arrays, side*headline_t_y, 0.0_c_double, 2_c_int, &
+            headline_load, headline_creepage%nu_x, headline_creepage%nu_y, &
+            headline_creepage%phi, v_arrays)
+         call check(error, all(stat == 0) .and. bitwise_equal(v_name, v_arrays), &
+            message='C: profiles as arrays differ from the same profiles by name')
+         if (allocated(error)) return
+         stat(1) = shcontact_destroy(by_name)
+         stat(2) = shcontact_destroy(by_arrays)
+      end do
+   end subroutine test_c_arrays
+
+   !> Bad profile arrays through both flat interfaces: too few points, NaN, a duplicate point,
+   !> the wrong order, a length in metres: status 2 and a message naming the array and the point;
+   !> a negative count or a NULL array: status 1. The handle stays unusable (status 1).
+   subroutine test_bad_arrays(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: y(:), z(:)
+      real(c_double), allocatable, target :: cy(:), cz(:), ry(:), rz(:)
+      type(c_ptr), target :: handle
+      character(kind=c_char), target :: message(512)
+      double precision :: values(25)
+      real(wp) :: nan
+      integer :: ih, istat, icase
+      integer(c_int) :: stat
+      character(len=512) :: msg
+      character(len=:), allocatable :: word, which
+
+      nan = ieee_value(1.0_wp, ieee_quiet_nan)
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
+      if (lib_failed(error, err)) return
+      do icase = 1, 6
+         y = wheel%y; z = wheel%z
+         which = 'wheel array'
+         select case (icase)
+         case (1) ! one point
+            y = y(1:1); z = z(1:1); word = 'point'
+         case (2) ! NaN at point 7
+            z(7) = nan; word = 'point 7'
+         case (3) ! point 12 repeats point 11
+            y(12) = y(11); z(12) = z(11); word = 'point 12'
+         case (4) ! reversed: from the flange back to the field side
+            y = y(size(y):1:-1); z = z(size(z):1:-1); word = 'y(1) > y(n)'
+         case (5) ! in metres
+            y = y/1000.0_wp; z = z/1000.0_wp; word = 'times'
+         case (6) ! a rail with a duplicate point
+            y = rail%y; z = rail%z; y(5) = y(4); z(5) = z(4); word = 'point 5'
+            which = 'rail array'
+         end select
+         if (icase < 6) then
+            call shc_create_arrays(ih, size(y), y, z, size(rail%y), rail%y, rail%z, 1, istat)
+         else
+            call shc_create_arrays(ih, size(wheel%y), wheel%y, wheel%z, size(y), y, z, 1, istat)
+         end if
+         call shc_errmsg(ih, msg)
+         call check(error, ih > 0 .and. istat == stat_invalid_input .and. &
+            index(msg, which) > 0 .and. index(msg, word) > 0, message='bad array case '// &
+            char(48 + icase)//': status '//char(48 + istat)//', '//trim(msg))
+         if (allocated(error)) return
+         call shc_solve(ih, headline_t_y, 0.0d0, 1, headline_load, 0.0d0, 0.0d0, 0.0d0, &
+            values, istat)
+         call check(error, istat, stat_usage, message='solve after a failed creation')
+         if (allocated(error)) return
+         call shc_destroy(ih, istat)
+         ! The same array through the C API.
+         cy = y; cz = z; ry = rail%y; rz = rail%z
+         if (icase == 6) then
+            cy = wheel%y; cz = wheel%z; ry = y; rz = z
+         end if
+         stat = shcontact_create_arrays(c_loc(handle), size(cy, kind=c_int), c_loc(cy), &
+            c_loc(cz), size(ry, kind=c_int), c_loc(ry), c_loc(rz), 1_c_int)
+         stat = shcontact_last_error(handle, c_loc(message), size(message, kind=c_int))
+         call check(error, stat == stat_invalid_input .and. &
+            index(from_chars(message), which) > 0, message='C bad array case '// &
+            char(48 + icase)//': '//from_chars(message))
+         if (allocated(error)) return
+         stat = shcontact_destroy(handle)
+      end do
+      call shc_create_arrays(ih, -1, wheel%y, wheel%z, size(rail%y), rail%y, rail%z, 1, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_usage .and. index(msg, 'negative') > 0, &
+         message='negative count: '//trim(msg))
+      if (allocated(error)) return
+      call shc_destroy(ih, istat)
+      stat = shcontact_create_arrays(c_loc(handle), 10_c_int, c_null_ptr, c_loc(cz), &
+         size(ry, kind=c_int), c_loc(ry), c_loc(rz), 1_c_int)
+      call check(error, stat, int(stat_usage, c_int), message='NULL wheel array')
+      stat = shcontact_destroy(handle)
+   end subroutine test_bad_arrays
+
+   !> SHC_FIELD_SIZE and SHC_FIELDS after solves with the option output%fields = all equal the
+   !> solver object's fields bit for bit, and their sums (Σ p·area) equal each patch's forces; the
+   !> results with fields equal those without. Cases: the headline case and a vertical load on
+   !> two patches.
+   subroutine test_legacy_fields(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(contact_fields_type) :: fields
+      type(lib_error), allocatable :: err
+      double precision :: values(25), plain(25), patch(17)
+      double precision, allocatable :: x(:, :), y(:, :), area(:, :), pn(:, :), px(:, :), &
+         py(:, :), slip(:, :)
+      integer, allocatable :: state(:, :)
+      integer :: ih, ih_plain, istat, icase, k, nx, ny
+      type(flat_case_type) :: c
+
+      call new_solver(solver, error)
+      if (allocated(error)) return
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      call shc_create(ih_plain, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      call shc_set_option(ih, 'output%fields', 'all', istat)
+      call check(error, istat, 0, message='option output%fields')
+      if (allocated(error)) return
+      do icase = 1, size(array_cases)
+         c = array_cases(icase)
+            call solver%solve(c%t_y, 0.0_wp, contact_load_type(c%mode, c%load), &
+               creepage_type(c%nu_x, c%nu_y, c%phi), result, err, fields)
+            if (lib_failed(error, err)) return
+            call shc_solve(ih, c%t_y, 0.0d0, c%mode, c%load, c%nu_x, c%nu_y, c%phi, values, &
+               istat)
+            call shc_solve(ih_plain, c%t_y, 0.0d0, c%mode, c%load, c%nu_x, c%nu_y, c%phi, &
+               plain, istat)
+         call check(error, bitwise_equal(values, plain), &
+            message='a solve with fields differs from one without')
+         if (allocated(error)) return
+         do k = 1, result%n_loaded
+            call shc_field_size(ih, k, nx, ny, istat)
+            call check(error, istat == 0 .and. nx == fields%tangential(k)%nx .and. &
+               ny == fields%tangential(k)%ny .and. nx*ny > 0, message='field size')
+            if (allocated(error)) return
+            allocate (x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), py(nx, ny), &
+               slip(nx, ny), state(nx, ny))
+            call shc_fields(ih, k, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+            call check(error, istat, 0, message='SHC_FIELDS')
+            if (allocated(error)) return
+            call shc_patch(ih, k, patch, istat)
+            call check_fields(error, fields%tangential(k), patch, x, y, area, pn, px, py, slip, &
+               state)
+            if (allocated(error)) return
+            deallocate (x, y, area, pn, px, py, slip, state)
+         end do
+         ! A patch found but not loaded has no fields.
+         if (result%n_patches > result%n_loaded) then
+            call shc_field_size(ih, result%n_patches, nx, ny, istat)
+            call check(error, istat == 0 .and. nx == 0 .and. ny == 0, &
+               message='fields of a patch without load')
+            if (allocated(error)) return
+         end if
+      end do
+      call shc_destroy(ih, istat)
+      call shc_destroy(ih_plain, istat)
+   end subroutine test_legacy_fields
+
+   !> shcontact_field_size and shcontact_fields as their legacy twins: the headline case's fields
+   !> (C order [ny][nx]) equal the solver object's, their sums the forces.
+   subroutine test_c_fields(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(contact_fields_type) :: fields
+      type(lib_error), allocatable :: err
+      character(kind=c_char), target :: wheel(14), rail(14), key(14), value(4)
+      type(c_ptr), target :: handle
+      real(c_double) :: values(25), patch(17)
+      real(c_double), allocatable, target :: x(:, :), y(:, :), area(:, :), pn(:, :), &
+         px(:, :), py(:, :), slip(:, :)
+      integer(c_int), allocatable, target :: state(:, :)
+      integer(c_int), target :: nx, ny
+      integer(c_int) :: stat
+
+      call new_solver(solver, error)
+      if (allocated(error)) return
+      call solver%solve(headline_t_y, 0.0_wp, contact_load_type(load_normal_force, &
+         headline_load), headline_creepage, result, err, fields)
+      if (lib_failed(error, err)) return
+      wheel = to_chars('builtin:S1002', 14)
+      rail = to_chars('builtin:UIC60', 14)
+      key = to_chars('output%fields', 14)
+      value = to_chars('1', 4)
+      stat = shcontact_create(c_loc(handle), c_loc(wheel), c_loc(rail), 1_c_int)
+      if (stat == 0) stat = shcontact_set_option(handle, c_loc(key), c_loc(value))
+      if (stat == 0) stat = shcontact_solve(handle, headline_t_y, 0.0_c_double, 1_c_int, &
+         headline_load, headline_creepage%nu_x, headline_creepage%nu_y, &
+         headline_creepage%phi, values)
+      if (stat == 0) stat = shcontact_field_size(handle, 1_c_int, c_loc(nx), c_loc(ny))
+      call check(error, stat == 0 .and. nx == fields%tangential(1)%nx .and. &
+         ny == fields%tangential(1)%ny, message='C field size')
+      if (allocated(error)) return
+      allocate (x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), py(nx, ny), &
+         slip(nx, ny), state(nx, ny))
+      stat = shcontact_fields(handle, 1_c_int, nx, ny, c_loc(x), c_loc(y), c_loc(area), &
+         c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
+      call check(error, stat, 0_c_int, message='shcontact_fields')
+      if (allocated(error)) return
+      stat = shcontact_patch(handle, 1_c_int, patch)
+      call check_fields(error, fields%tangential(1), patch, x, y, area, pn, px, py, slip, state)
+      if (allocated(error)) return
+      ! Sizes that are not the fields' are refused (here smaller, within the arrays).
+      stat = shcontact_fields(handle, 1_c_int, nx - 1_c_int, ny, c_loc(x), c_loc(y), &
+         c_loc(area), c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
+      call check(error, stat, int(stat_usage, c_int), message='wrong field size')
+      if (allocated(error)) return
+      stat = shcontact_fields(handle, 1_c_int, nx, ny, c_null_ptr, c_loc(y), c_loc(area), &
+         c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
+      call check(error, stat, int(stat_usage, c_int), message='NULL field array')
+      stat = shcontact_destroy(handle)
+   end subroutine test_c_fields
+
+   !> Fields asked for without the option, before any solve, of a patch that does not exist, or
+   !> after the option was turned off again: status 1 and a message saying what to do.
+   subroutine test_fields_bad(error)
+      type(error_type), allocatable, intent(out) :: error
+      double precision :: values(25), x(1, 1)
+      integer :: ih, istat, nx, ny, state(1, 1)
+      character(len=512) :: msg
+
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      call shc_field_size(ih, 1, nx, ny, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_usage .and. index(msg, 'no result') > 0, &
+         message='before a solve: '//trim(msg))
+      if (allocated(error)) return
+      call shc_solve(ih, headline_t_y, 0.0d0, 1, headline_load, headline_creepage%nu_x, &
+         headline_creepage%nu_y, headline_creepage%phi, values, istat)
+      call shc_field_size(ih, 1, nx, ny, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_usage .and. index(msg, 'output%fields') > 0 .and. &
+         nx == 0 .and. ny == 0, message='without the option: '//trim(msg))
+      if (allocated(error)) return
+      call shc_set_option(ih, 'output%fields', 'maybe', istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_invalid_input .and. index(msg, 'all') > 0, &
+         message='bad option value: '//trim(msg))
+      if (allocated(error)) return
+      call shc_set_option(ih, 'OUTPUT%FIELDS', 'all', istat)
+      call shc_solve(ih, headline_t_y, 0.0d0, 1, headline_load, headline_creepage%nu_x, &
+         headline_creepage%nu_y, headline_creepage%phi, values, istat)
+      call shc_field_size(ih, 9, nx, ny, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_usage .and. index(msg, 'patch 9') > 0, &
+         message='patch out of range: '//trim(msg))
+      if (allocated(error)) return
+      call shc_fields(ih, 1, 1, 1, x, x, x, x, x, x, x, state, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_usage .and. index(msg, 'size') > 0, &
+         message='wrong sizes: '//trim(msg))
+      if (allocated(error)) return
+      call shc_set_option(ih, 'output%fields', 'none', istat)
+      call shc_solve(ih, headline_t_y, 0.0d0, 1, headline_load, headline_creepage%nu_x, &
+         headline_creepage%nu_y, headline_creepage%phi, values, istat)
+      call shc_field_size(ih, 1, nx, ny, istat)
+      call check(error, istat, stat_usage, message='fields after the option was turned off')
+      call shc_destroy(ih, istat)
+   end subroutine test_fields_bad
+
    ! --- helpers ---------------------------------------------------------------------------------
+
+   !> Flat fields against a patch's tangential solution: x, pn, px, py, slip, state bit for bit,
+   !> y the strip centres, area = Δx_i·Δy; Σ px·area = F_x, Σ py·area = F_y, Σ pn·area ≈ F_n.
+   subroutine check_fields(error, t, patch, x, y, area, pn, px, py, slip, state)
+      type(error_type), allocatable, intent(out) :: error
+      type(tangential_patch_type), intent(in) :: t
+      real(wp), intent(in) :: patch(:)
+      real(wp), intent(in) :: x(:, :), y(:, :), area(:, :), pn(:, :), px(:, :), py(:, :), &
+         slip(:, :)
+      integer, intent(in) :: state(:, :)
+      integer :: i
+
+      call check(error, bitwise_equal(reshape(x, [size(x)]), reshape(t%x, [size(t%x)])) .and. &
+         bitwise_equal(reshape(pn, [size(pn)]), reshape(t%pn, [size(t%pn)])) .and. &
+         bitwise_equal(reshape(px, [size(px)]), reshape(t%px, [size(t%px)])) .and. &
+         bitwise_equal(reshape(py, [size(py)]), reshape(t%py, [size(t%py)])) .and. &
+         bitwise_equal(reshape(slip, [size(slip)]), reshape(t%slip, [size(t%slip)])) .and. &
+         all(state == int(t%state)), message='flat fields differ from the solver object''s')
+      if (allocated(error)) return
+      do i = 1, t%ny
+         call check(error, all(y(:, i) == t%y(i)) .and. all(area(:, i) == t%dx(i)*t%dy), &
+            message='y or area of a strip')
+         if (allocated(error)) return
+      end do
+      call check(error, sum(px*area), patch(1), rel=.true., thr=1.0e-10_wp, &
+         message='sum of px*area is not F_x')
+      if (allocated(error)) return
+      call check(error, sum(py*area), patch(2), rel=.true., thr=1.0e-10_wp, &
+         message='sum of py*area is not F_y')
+      if (allocated(error)) return
+      ! The element pressure is the semi-ellipse's value at the element centre (midpoint rule).
+      call check(error, sum(pn*area), patch(4), rel=.true., thr=2.0e-2_wp, &
+         message='sum of pn*area far from F_n')
+   end subroutine check_fields
 
    !> A solver for the headline case's data (defaults: S1002, UIC60 canted by the track, R₀ = 460,
    !> G = 82 670 MPa, ν = 0.27, μ = 0.3, FASTSIM_SH).

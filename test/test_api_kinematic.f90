@@ -14,6 +14,7 @@ module test_api_kinematic
    use shcontact_geometry_track, only: side_right, side_left
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      contact_fields_type, &
       load_normal_force, load_vertical_force, load_approach, load_vertical_position
    use shcontact_api_values, only: kinematic_value_count, kinematic_values, patch_value_count, &
       result_value_count, value_fx, value_fy, value_mz, value_fn, value_fx_norm, &
@@ -22,6 +23,8 @@ module test_api_kinematic
       value_n_patches, value_n_loaded, value_main_patch, value_sum_fx, value_sum_fy, &
       value_sum_fz, value_sum_fn, value_dz, value_nu_x, value_nu_y, value_phi, value_x_track
    use shcontact_api_legacy, only: max_handles
+   use shcontact_tangential_patch, only: state_exterior, state_adhesion, state_slip
+   use shcontact_profile_points, only: profile_kind_rail, profile_kind_wheel
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_last_error, &
       shcontact_solve_kinematic, shcontact_patch_kinematic
    implicit none
@@ -68,6 +71,24 @@ module test_api_kinematic
          integer, intent(in) :: ihandle
          character(len=*), intent(out) :: msg
       end subroutine shc_errmsg
+      subroutine shc_set_option(ihandle, key, value, istat)
+         integer, intent(in) :: ihandle
+         character(len=*), intent(in) :: key, value
+         integer, intent(out) :: istat
+      end subroutine shc_set_option
+      subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
+         integer, intent(in) :: ihandle, ipatch
+         integer, intent(out) :: nx, ny
+         integer, intent(out) :: istat
+      end subroutine shc_field_size
+      subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+         integer, intent(in) :: ihandle, ipatch
+         integer, intent(in) :: nx, ny
+         double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
+            px(nx, ny), py(nx, ny), slip(nx, ny)
+         integer, intent(out) :: state(nx, ny)
+         integer, intent(out) :: istat
+      end subroutine shc_fields
    end interface
 
 contains
@@ -79,6 +100,7 @@ contains
       testsuite = [ &
          new_unittest('legacy_equals_modern', test_legacy), &
          new_unittest('c_equals_modern', test_c), &
+         new_unittest('legacy_fields_equal_modern', test_legacy_fields), &
          new_unittest('legacy_bad_arguments', test_legacy_bad), &
          new_unittest('c_bad_arguments', test_c_bad), &
          new_unittest('include_file_constants', test_include_file), &
@@ -178,6 +200,75 @@ contains
       call shc_destroy(ih(1), istat)
       call shc_destroy(ih(-1), istat)
    end subroutine test_legacy
+
+   !> After SHC_SOLVE_KIN with option output%fields = all, SHC_FIELDS gives every loaded patch's
+   !> element fields as solve_kinematic's `fields`, bit for bit, and Σ px·area, Σ py·area are
+   !> the patch's F_x, F_y; the values equal those of a solve without fields.
+   subroutine test_legacy_fields(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_state_type), allocatable :: states(:)
+      integer, allocatable :: sides(:)
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(contact_fields_type) :: fields
+      type(lib_error), allocatable :: err
+      double precision :: values(29), expected(29), patch(29)
+      double precision, allocatable :: x(:, :), y(:, :), area(:, :), pn(:, :), px(:, :), &
+         py(:, :), slip(:, :)
+      integer, allocatable :: state(:, :)
+      integer :: ih, istat, i, k, nx, ny
+
+      call test_states(sides, states)
+      do i = 1, size(states)
+         call modern_result(sides(i), states(i), result, error)
+         if (allocated(error)) return
+         call kinematic_values(result, expected)
+         call solver%init('builtin:S1002', 'builtin:UIC60', err, side=sides(i))
+         if (.not. allocated(err)) call solver%solve_kinematic(states(i), &
+            contact_load_type(load_vertical_force, kinematic_case_load), result, err, fields)
+         if (allocated(err)) then
+            call test_failed(error, 'library error: '//err%message)
+            return
+         end if
+         call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', sides(i), istat)
+         call shc_set_option(ih, 'output%fields', 'all', istat)
+         associate (s => states(i))
+            call shc_solve_kin(ih, s%y_ws, s%yaw, s%roll, s%v_forward, s%v_lateral, &
+               s%v_vertical, s%roll_rate, s%yaw_rate, s%pitch_rate, 2, kinematic_case_load, &
+               values, istat)
+         end associate
+         call check(error, istat == 0 .and. bitwise_equal(values, expected), &
+            message='SHC_SOLVE_KIN with fields differs from solve_kinematic without')
+         if (allocated(error)) return
+         do k = 1, result%n_loaded
+            call shc_field_size(ih, k, nx, ny, istat)
+            call check(error, istat == 0 .and. nx == fields%tangential(k)%nx .and. &
+               ny == fields%tangential(k)%ny, message='kinematic field size')
+            if (allocated(error)) return
+            allocate (x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), py(nx, ny), &
+               slip(nx, ny), state(nx, ny))
+            call shc_fields(ih, k, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+            call shc_patch_kin(ih, k, patch, istat)
+            associate (t => fields%tangential(k))
+               call check(error, bitwise_equal(reshape(px, [nx*ny]), reshape(t%px, [nx*ny])) &
+                  .and. bitwise_equal(reshape(py, [nx*ny]), reshape(t%py, [nx*ny])) .and. &
+                  bitwise_equal(reshape(x, [nx*ny]), reshape(t%x, [nx*ny])) .and. &
+                  all(state == int(t%state)), message='kinematic fields differ')
+            end associate
+            if (allocated(error)) return
+            if (nx*ny > 0) then
+               call check(error, sum(px*area), patch(value_fx), rel=.true., thr=1.0e-10_wp, &
+                  message='kinematic: sum of px*area is not F_x')
+               if (allocated(error)) return
+               call check(error, sum(py*area), patch(value_fy), rel=.true., thr=1.0e-10_wp, &
+                  message='kinematic: sum of py*area is not F_y')
+               if (allocated(error)) return
+            end if
+            deallocate (x, y, area, pn, px, py, slip, state)
+         end do
+         call shc_destroy(ih, istat)
+      end do
+   end subroutine test_legacy_fields
 
    !> shcontact_solve_kinematic and shcontact_patch_kinematic: the same, bit for bit.
    subroutine test_c(error)
@@ -377,20 +468,28 @@ contains
       if (allocated(error)) return
       call check(error, SHC_LOAD_VERTICAL_POSITION, load_vertical_position, &
          message='shcontact.fi SHC_LOAD_VERTICAL_POSITION')
+      if (allocated(error)) return
+      call check(error, all([SHC_STATE_EXTERIOR, SHC_STATE_ADHESION, SHC_STATE_SLIP] == &
+         int([state_exterior, state_adhesion, state_slip])), &
+         message='shcontact.fi element states')
+      if (allocated(error)) return
+      call check(error, all([SHC_PROFILE_RAIL, SHC_PROFILE_WHEEL] == [profile_kind_rail, &
+         profile_kind_wheel]), message='shcontact.fi profile kinds')
    end subroutine test_include_file
 
    !> include/shcontact.h read as text: each #define equals the library's constant (indices
    !> 0-based), and every define is checked.
    subroutine test_c_header(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), parameter :: names(43) = [character(len=24) :: 'OK', 'USAGE', &
+      character(len=24), parameter :: names(48) = [character(len=24) :: 'OK', 'USAGE', &
          'INVALID_INPUT', 'IO', 'NUMERICAL', 'NO_CONTACT', 'RIGHT', 'LEFT', &
          'LOAD_NORMAL_FORCE', 'LOAD_VERTICAL_FORCE', 'LOAD_APPROACH', 'FX', 'FY', 'MZ', 'FN', &
          'FX_NORM', 'FY_NORM', 'FY_TRACK', 'FZ_TRACK', 'APPROACH', 'AREA', 'P_MAX', 'GAMMA0', &
          'R0', 'Y_TRACK', 'Z_TRACK', 'COULOMB', 'ADHESION', 'PATCH_SIZE', 'N_PATCHES', &
          'N_LOADED', 'MAIN_PATCH', 'SUM_FX', 'SUM_FY', 'SUM_FZ', 'SUM_FN', 'DZ', 'RESULT_SIZE', &
-         'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION']
-      integer :: expected(44), found(44), unit, stat, i, value, n_defines
+         'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION', 'STATE_EXTERIOR', &
+         'STATE_ADHESION', 'STATE_SLIP', 'PROFILE_RAIL', 'PROFILE_WHEEL']
+      integer :: expected(49), found(49), unit, stat, i, value, n_defines
       character(len=256) :: line
       character(len=64) :: word, name
 
@@ -403,7 +502,8 @@ contains
          value_n_patches - 1, value_n_loaded - 1, value_main_patch - 1, value_sum_fx - 1, &
          value_sum_fy - 1, value_sum_fz - 1, value_sum_fn - 1, value_dz - 1, &
          result_value_count, value_nu_x - 1, value_nu_y - 1, value_phi - 1, value_x_track - 1, &
-         load_vertical_position, kinematic_value_count]
+         load_vertical_position, int(state_exterior), int(state_adhesion), int(state_slip), &
+         profile_kind_rail, profile_kind_wheel, kinematic_value_count]
       found = huge(1)
       n_defines = 0
       open (newunit=unit, file='include/shcontact.h', status='old', action='read', iostat=stat)
@@ -424,7 +524,7 @@ contains
          n_defines = n_defines + 1
          name = name(len('SHCONTACT_') + 1:)
          if (trim(name) == 'KIN_SIZE') then
-            found(44) = value
+            found(size(found)) = value
             cycle
          end if
          do i = 1, size(names)

@@ -63,6 +63,8 @@ contains
          new_unittest('legacy_f77_example', test_f77), &
          new_unittest('c_example', test_c), &
          new_unittest('python_ctypes_example', test_python), &
+         new_unittest('python_finds_library_by_pkg_config', test_python_pkg_config), &
+         new_unittest('flat_examples_fields_and_arrays', test_flat_extras), &
          new_unittest('interfaces_agree', test_agree), &
          new_unittest('doc_api_numbers', test_doc_numbers), &
          new_unittest('no_allocation_in_solve', test_allocations), &
@@ -237,6 +239,58 @@ contains
       call example_test('python3', '', 'python3 examples/python_ctypes/headline.py --lib '// &
          prefix//'/lib/libshcontact.so', 'python', error)
    end subroutine test_python
+
+   !> The Python script without --lib and without $SHCONTACT_LIB finds the installed library
+   !> through pkg-config (`pkg-config --variable=libdir shcontact`) and prints what it prints
+   !> with --lib.
+   subroutine test_python_pkg_config(error)
+      type(error_type), allocatable, intent(out) :: error
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (run('command -v python3') /= 0) then
+         call skip_test(error, 'python3 not found')
+         return
+      end if
+      call check(error, run('env -u SHCONTACT_LIB PKG_CONFIG_PATH=$(pwd)/'//prefix// &
+         '/lib/pkgconfig python3 examples/python_ctypes/headline.py > '// &
+         output('python_pkg_config')), 0, message='headline.py without --lib failed: see '// &
+         output('python_pkg_config'))
+      if (allocated(error)) return
+      if (.not. exists(output('python'))) return
+      call check(error, run('cmp '//output('python')//' '//output('python_pkg_config')), 0, &
+         message='headline.py prints other numbers with the library found by pkg-config')
+   end subroutine test_python_pkg_config
+
+   !> The F77 and C examples create their contact from profile arrays (the numbers above are
+   !> the built-in profiles' by name, to round-off) and print the main patch's element fields:
+   !> Σ px·area and Σ py·area equal F_x and F_y, and a one-point wheel array gives status 2.
+   subroutine test_flat_extras(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=3), parameter :: names(2) = ['f77', 'c  ']
+      character(len=:), allocatable :: file
+      integer :: i
+      call ensure_installed(error)
+      if (allocated(error)) return
+      do i = 1, size(names)
+         file = output(trim(names(i)))
+         if (.not. exists(file)) then
+            call skip_test(error, 'no '//trim(names(i))//' example output (run the suite)')
+            return
+         end if
+         call check(error, value_of(file, 'field_nx')*value_of(file, 'field_ny') > 0.0_wp .and. &
+            value_of(file, 'field_slip_elements') > 0.0_wp, &
+            message=file//': field sizes or slip elements missing')
+         if (allocated(error)) return
+         call check(error, value_of(file, 'field_sum_fx'), value_of(file, 'fx'), rel=.true., &
+            thr=1.0e-10_wp, message=file//': sum of px*area is not fx')
+         if (allocated(error)) return
+         call check(error, value_of(file, 'field_sum_fy'), value_of(file, 'fy'), rel=.true., &
+            thr=1.0e-10_wp, message=file//': sum of py*area is not fy')
+         if (allocated(error)) return
+         call check_bad_call(file, ['status_bad_array'], [2], error)
+         if (allocated(error)) return
+      end do
+   end subroutine test_flat_extras
 
    !> The three interfaces print the same numbers, bit for bit.
    subroutine test_agree(error)

@@ -1,7 +1,8 @@
 /*
- * shcontact from C through the C API (include/shcontact.h): a kinematic call as a vehicle code
- * makes it, the headline case with prescribed creepages, then four bad calls that must come back
- * with a status and a message.
+ * shcontact from C through the C API (include/shcontact.h): the profiles passed as arrays (here
+ * the built-in ones, fetched from a contact created by name), a kinematic call as a vehicle code
+ * makes it, the headline case with prescribed creepages and its element fields, then five bad
+ * calls that must come back with a status and a message.
  *
  * S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm, G = 82670 MPa, nu = 0.27,
  * mu = 0.3, FASTSIM_SH. Kinematic call: wheelset at y_ws = 4.733 mm, yaw 4 mrad, 40 m/s, pure
@@ -26,6 +27,84 @@ static int fail(shcontact_contact *contact, const char *what)
     return 1;
 }
 
+/* A contact whose profiles are given as arrays: a vehicle code has its own; here they are the
+ * built-in S1002 and UIC60, taken from a contact created from their names. */
+static int create_from_arrays(shcontact_contact **contact, int side)
+{
+    shcontact_contact *by_name = NULL;
+    double *wheel = NULL, *rail = NULL;
+    int n_wheel = 0, n_rail = 0, status;
+
+    status = shcontact_create(&by_name, "builtin:S1002", "builtin:UIC60", side);
+    /* The counts first (no room), then the points: wheel y, z and rail y, z. */
+    if (status == SHCONTACT_OK) {
+        shcontact_get_profile(by_name, SHCONTACT_PROFILE_WHEEL, 0, &n_wheel, NULL, NULL);
+        shcontact_get_profile(by_name, SHCONTACT_PROFILE_RAIL, 0, &n_rail, NULL, NULL);
+        wheel = malloc(2 * (size_t)n_wheel * sizeof *wheel);
+        rail = malloc(2 * (size_t)n_rail * sizeof *rail);
+        if (!wheel || !rail)
+            status = SHCONTACT_USAGE;
+    }
+    if (status == SHCONTACT_OK)
+        status = shcontact_get_profile(by_name, SHCONTACT_PROFILE_WHEEL, n_wheel, &n_wheel, wheel,
+                                       wheel + n_wheel);
+    if (status == SHCONTACT_OK)
+        status = shcontact_get_profile(by_name, SHCONTACT_PROFILE_RAIL, n_rail, &n_rail, rail,
+                                       rail + n_rail);
+    if (status != SHCONTACT_OK) {
+        *contact = by_name; /* for the caller's message */
+    } else {
+        shcontact_destroy(by_name);
+        /* mm; wheel from the field side to the flange back, rail from the track centre to the
+         * field side; y towards the field side, z down. The arrays are copied. */
+        status = shcontact_create_arrays(contact, n_wheel, wheel, wheel + n_wheel, n_rail, rail,
+                                         rail + n_rail, side);
+    }
+    free(wheel);
+    free(rail);
+    return status;
+}
+
+/* The element fields of a patch: the tractions times the element areas add up to its forces. */
+static int print_fields(shcontact_contact *contact, int patch)
+{
+    int nx, ny, i, n_slip = 0, status;
+    double *x, *y, *area, *pn, *px, *py, *slip, sum_fx = 0.0, sum_fy = 0.0;
+    int *state;
+
+    status = shcontact_field_size(contact, patch, &nx, &ny);
+    if (status != SHCONTACT_OK)
+        return status;
+    /* One block for the seven double arrays of nx*ny elements, element j of strip i at
+     * [j + nx*i] (as double x[ny][nx]). */
+    x = malloc(7 * (size_t)nx * (size_t)ny * sizeof *x);
+    state = malloc((size_t)nx * (size_t)ny * sizeof *state);
+    if (!x || !state) {
+        free(x);
+        free(state);
+        return SHCONTACT_USAGE;
+    }
+    y = x + nx * ny;
+    area = y + nx * ny;
+    pn = area + nx * ny;
+    px = pn + nx * ny;
+    py = px + nx * ny;
+    slip = py + nx * ny;
+    status = shcontact_fields(contact, patch, nx, ny, x, y, area, pn, px, py, slip, state);
+    if (status == SHCONTACT_OK) {
+        for (i = 0; i < nx * ny; i++) {
+            sum_fx += px[i] * area[i];
+            sum_fy += py[i] * area[i];
+            n_slip += state[i] == SHCONTACT_STATE_SLIP;
+        }
+        printf("field_nx %d\nfield_ny %d\nfield_slip_elements %d\n", nx, ny, n_slip);
+        printf("field_sum_fx %.17e\nfield_sum_fy %.17e\n", sum_fx, sum_fy);
+    }
+    free(x);
+    free(state);
+    return status;
+}
+
 static void report_bad_call(const char *name, shcontact_contact *contact, int status)
 {
     char message[512];
@@ -46,11 +125,14 @@ int main(int argc, char **argv)
     shcontact_contact *contact = NULL;
     int status;
 
-    if (shcontact_create(&contact, "builtin:S1002", "builtin:UIC60", SHCONTACT_RIGHT) != 0)
-        return fail(contact, "shcontact_create");
+    if (create_from_arrays(&contact, SHCONTACT_RIGHT) != 0)
+        return fail(contact, "shcontact_create_arrays");
     if (shcontact_set_material(contact, 82670.0, 0.27, 0.3) != 0)
         return fail(contact, "shcontact_set_material");
     if (shcontact_set_option(contact, "tangential%method", "fastsim-sh") != 0)
+        return fail(contact, "shcontact_set_option");
+    /* Keep the element fields of every solve (off by default: no cost). */
+    if (shcontact_set_option(contact, "output%fields", "all") != 0)
         return fail(contact, "shcontact_set_option");
 
     /* The kinematic call: position, velocities, vertical wheel load. */
@@ -83,9 +165,11 @@ int main(int argc, char **argv)
     printf("gamma0 %.17e\n", v[SHCONTACT_GAMMA0]);
     printf("n_patches %.17e\n", v[SHCONTACT_N_PATCHES]);
     printf("sum_fz %.17e\n", v[SHCONTACT_SUM_FZ]);
+    if (print_fields(contact, (int)v[SHCONTACT_MAIN_PATCH]) != 0)
+        return fail(contact, "shcontact_fields");
 
     /* Bad calls: an invalid (NULL) handle, a negative load, a NaN creepage, a wheelset that does
-     * not move forward. */
+     * not move forward, a wheel of one point. */
     status = shcontact_solve(NULL, t_y, roll, SHCONTACT_LOAD_NORMAL_FORCE, normal_force, nu_x,
                              nu_y, phi, v);
     report_bad_call("status_invalid_handle", NULL, status);
@@ -98,6 +182,15 @@ int main(int argc, char **argv)
     status = shcontact_solve_kinematic(contact, y_ws, yaw, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, pitch_rate,
                                        SHCONTACT_LOAD_VERTICAL_FORCE, wheel_load, k);
     report_bad_call("status_kin_zero_speed", contact, status);
+    {
+        shcontact_contact *bad = NULL;
+        const double one_y[1] = {0.0}, one_z[1] = {0.0}, rail_y[2] = {-30.0, 30.0},
+                     rail_z[2] = {0.0, 0.0};
+        status = shcontact_create_arrays(&bad, 1, one_y, one_z, 2, rail_y, rail_z,
+                                         SHCONTACT_RIGHT);
+        report_bad_call("status_bad_array", bad, status);
+        shcontact_destroy(bad);
+    }
 
     shcontact_destroy(contact);
     return 0;

@@ -1,8 +1,10 @@
 C     shcontact from fixed-form Fortran 77 through the legacy entry
-C     points SHC_* (doc/api.md) and the include file shcontact.fi: a
-C     kinematic call as a vehicle code makes it, the headline case with
-C     prescribed creepages, then four bad calls that must come back with
-C     a status and a message.
+C     points SHC_* (doc/api.md) and the include file shcontact.fi: the
+C     profiles passed as arrays (here the built-in ones, fetched from a
+C     contact created by name), a kinematic call as a vehicle code makes
+C     it, the headline case with prescribed creepages and its element
+C     fields, then five bad calls that must come back with a status and
+C     a message.
 C
 C     S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm,
 C     G = 82670 MPa, nu = 0.27, mu = 0.3, FASTSIM_SH (the defaults).
@@ -27,18 +29,48 @@ C     The wheelset of the kinematic call (mm, rad, mm/s, rad/s, N).
       DOUBLE PRECISION VALUES(SHC_RESULT_SIZE), G, POISS, FRIC, CNAN
       DOUBLE PRECISION VKIN(SHC_KIN_SIZE)
       INTEGER IH, ISTAT
+C     Profile points (mm): wheel and rail.
+      INTEGER MAXPT, NW, NR, IHNAME
+      PARAMETER (MAXPT = 4000)
+      DOUBLE PRECISION YW(MAXPT), ZW(MAXPT), YR(MAXPT), ZR(MAXPT)
+C     Element fields of patch 1, NX elements per strip by NY strips.
+      INTEGER MAXEL, NX, NY, I, NSLIP
+      PARAMETER (MAXEL = 20000)
+      DOUBLE PRECISION X(MAXEL), Y(MAXEL), AREA(MAXEL), PN(MAXEL)
+      DOUBLE PRECISION PX(MAXEL), PY(MAXEL), SLIP(MAXEL)
+      DOUBLE PRECISION SUMFX, SUMFY
+      INTEGER ISTATE(MAXEL)
       CHARACTER*200 MSG
       CHARACTER*3 STRNAN
       DATA STRNAN /'NaN'/
 C
+C     The profiles as arrays: a vehicle code has its own; here they are
+C     the built-in ones, taken from a contact created from their names.
       CALL SHC_CREATE(IH, 'builtin:S1002', 'builtin:UIC60', 1, ISTAT)
       IF (ISTAT .NE. SHC_OK) GOTO 900
+      CALL SHC_GET_PROFILE(IH, SHC_PROFILE_WHEEL, MAXPT, NW, YW, ZW,
+     &                     ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      CALL SHC_GET_PROFILE(IH, SHC_PROFILE_RAIL, MAXPT, NR, YR, ZR,
+     &                     ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      IHNAME = IH
+C     Wheel points from the field side to the flange back, rail points
+C     from the track centre to the field side; y to the field side, z
+C     down (mm). Checked and cleaned as profile files are.
+      CALL SHC_CREATE_ARRAYS(IH, NW, YW, ZW, NR, YR, ZR, SHC_RIGHT,
+     &                       ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      CALL SHC_DESTROY(IHNAME, ISTAT)
       G = 82670.0D0
       POISS = 0.27D0
       FRIC = 0.3D0
       CALL SHC_SET_MATERIAL(IH, G, POISS, FRIC, ISTAT)
       IF (ISTAT .NE. SHC_OK) GOTO 900
       CALL SHC_SET_OPTION(IH, 'tangential%method', 'fastsim-sh', ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+C     Keep the element fields of every solve (off by default: no cost).
+      CALL SHC_SET_OPTION(IH, 'output%fields', 'all', ISTAT)
       IF (ISTAT .NE. SHC_OK) GOTO 900
 C
 C     The kinematic call: position, velocities, vertical wheel load.
@@ -73,8 +105,34 @@ C     The headline case: position, normal force, creepages.
       WRITE (*, 100) 'n_patches', VALUES(SHC_N_PATCHES)
       WRITE (*, 100) 'sum_fz', VALUES(SHC_SUM_FZ)
 C
+C     The element fields of the main patch: tractions times element
+C     areas add up to its forces.
+      CALL SHC_FIELD_SIZE(IH, NINT(VALUES(SHC_MAIN_PATCH)), NX, NY,
+     &                    ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      IF (NX*NY .GT. MAXEL) THEN
+         WRITE (*, '(A,2I6)') 'error: fields larger than MAXEL:', NX, NY
+         STOP 1
+      END IF
+      CALL SHC_FIELDS(IH, NINT(VALUES(SHC_MAIN_PATCH)), NX, NY, X, Y,
+     &                AREA, PN, PX, PY, SLIP, ISTATE, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
+      SUMFX = 0.0D0
+      SUMFY = 0.0D0
+      NSLIP = 0
+      DO 10 I = 1, NX*NY
+         SUMFX = SUMFX + PX(I)*AREA(I)
+         SUMFY = SUMFY + PY(I)*AREA(I)
+         IF (ISTATE(I) .EQ. SHC_STATE_SLIP) NSLIP = NSLIP + 1
+   10 CONTINUE
+      WRITE (*, '(A,1X,I6)') 'field_nx', NX
+      WRITE (*, '(A,1X,I6)') 'field_ny', NY
+      WRITE (*, '(A,1X,I6)') 'field_slip_elements', NSLIP
+      WRITE (*, 100) 'field_sum_fx', SUMFX
+      WRITE (*, 100) 'field_sum_fy', SUMFY
+C
 C     Bad calls: an invalid handle, a negative load, a NaN creepage,
-C     a wheelset that does not move forward.
+C     a wheelset that does not move forward, a wheel of one point.
       CALL SHC_SOLVE(IH + 999, TY, ROLL, SHC_LOAD_NORMAL_FORCE, FN,
      &               CKSI, CETA, CPHI, VALUES, ISTAT)
       CALL SHC_ERRMSG(IH + 999, MSG)
@@ -93,6 +151,11 @@ C     a wheelset that does not move forward.
      &                   SHC_LOAD_VERTICAL_FORCE, FZ, VKIN, ISTAT)
       CALL SHC_ERRMSG(IH, MSG)
       WRITE (*, 200) 'status_kin_zero_speed', ISTAT, MSG
+      CALL SHC_CREATE_ARRAYS(IHNAME, 1, YW, ZW, NR, YR, ZR, SHC_RIGHT,
+     &                       ISTAT)
+      CALL SHC_ERRMSG(IHNAME, MSG)
+      WRITE (*, 200) 'status_bad_array', ISTAT, MSG
+      CALL SHC_DESTROY(IHNAME, ISTAT)
 C
       CALL SHC_DESTROY(IH, ISTAT)
       STOP

@@ -10,12 +10,15 @@ rolling on R0, vertical wheel load 64.7 kN. Headline case: normal force 64.7 kN,
 
     python3 headline.py [--lib PATH/libshcontact.so] [--t-y MM]
 
-The library is found from --lib, else $SHCONTACT_LIB, else the system's library path.
+The library is found from --lib, else $SHCONTACT_LIB, else pkg-config (the libdir of an
+installed shcontact.pc: PKG_CONFIG_PATH=PREFIX/lib/pkgconfig), else the system's library path.
 """
 import argparse
 import ctypes
 import ctypes.util
 import os
+import shutil
+import subprocess
 import sys
 
 # Result layout of include/shcontact.h (0-based).
@@ -57,10 +60,25 @@ class Shcontact:
         return status, buffer.value.decode()
 
 
+def pkg_config_library():
+    """libshcontact.so in `pkg-config --variable=libdir shcontact`, or None."""
+    if not shutil.which("pkg-config"):
+        return None
+    try:
+        libdir = subprocess.run(["pkg-config", "--variable=libdir", "shcontact"],
+                                capture_output=True, text=True, check=True).stdout.strip()
+    except subprocess.CalledProcessError:
+        return None
+    path = os.path.join(libdir, "libshcontact.so")
+    return path if libdir and os.path.exists(path) else None
+
+
 def find_library(explicit):
-    path = explicit or os.environ.get("SHCONTACT_LIB") or ctypes.util.find_library("shcontact")
+    path = (explicit or os.environ.get("SHCONTACT_LIB") or pkg_config_library()
+            or ctypes.util.find_library("shcontact"))
     if not path:
-        sys.exit("headline.py: libshcontact.so not found; give --lib or set SHCONTACT_LIB")
+        sys.exit("headline.py: libshcontact.so not found; give --lib, set SHCONTACT_LIB or "
+                 "PKG_CONFIG_PATH=PREFIX/lib/pkgconfig")
     return path
 
 

@@ -11,15 +11,19 @@ module shcontact_api_capi
       c_null_char, c_loc, c_f_pointer, c_associated, c_size_t
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: stat_usage
+   use shcontact_core_strings, only: str_int
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
-      context_patch, context_patch_kinematic, context_message, context_fail
+      context_patch, context_patch_kinematic, context_message, context_fail, &
+      context_create_arrays, context_field_size, context_fields, context_get_profile
    use shcontact_version_info, only: shcontact_version
    implicit none
    private
 
+   public :: shcontact_create_arrays, shcontact_field_size, shcontact_fields, &
+      shcontact_get_profile
    public :: shcontact_create, shcontact_destroy, shcontact_set_material, shcontact_set_track, &
       shcontact_set_option, shcontact_solve, shcontact_solve_kinematic, shcontact_patch, &
       shcontact_patch_kinematic, shcontact_last_error, shcontact_version_string
@@ -67,6 +71,53 @@ contains
       end if
       stat = context_create(ctx, from_c(wheel), from_c(rail), int(side))
    end function shcontact_create
+
+   !> Create a contact from profiles given as arrays of points (mm, right-side canonical form:
+   !> y towards the field side, z down; wheel points from the field side to the flange back, rail
+   !> points from the track centre to the field side), checked and cleaned as profile files are.
+   !> *handle as for [[shcontact_create]].
+   integer(c_int) function shcontact_create_arrays(handle, n_wheel, wheel_y, wheel_z, n_rail, &
+         rail_y, rail_z, side) result(stat) bind(C, name='shcontact_create_arrays')
+      !> Where to store the handle (shcontact_contact **).
+      type(c_ptr), value :: handle
+      !> Number of wheel points and their coordinates (const double *).
+      integer(c_int), value :: n_wheel
+      type(c_ptr), value :: wheel_y, wheel_z
+      !> Number of rail points and their coordinates (const double *).
+      integer(c_int), value :: n_rail
+      type(c_ptr), value :: rail_y, rail_z
+      !> 1 right, −1 left.
+      integer(c_int), value :: side
+      type(c_ptr), pointer :: out
+      type(contact_context_type), pointer :: ctx
+      real(c_double), pointer :: wy(:), wz(:), ry(:), rz(:)
+      integer :: alloc_stat
+
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, out)
+      out = c_null_ptr
+      allocate (ctx, stat=alloc_stat)
+      if (alloc_stat /= 0) return
+      out = c_loc(ctx)
+      if (n_wheel < 0 .or. n_rail < 0) then
+         stat = context_fail(ctx, 'shcontact_create_arrays: negative number of points '// &
+            '(n_wheel = '//str_int(int(n_wheel))//', n_rail = '//str_int(int(n_rail))//')', &
+            stat_usage)
+         return
+      end if
+      if ((n_wheel > 0 .and. .not. (c_associated(wheel_y) .and. c_associated(wheel_z))) .or. &
+          (n_rail > 0 .and. .not. (c_associated(rail_y) .and. c_associated(rail_z)))) then
+         stat = context_fail(ctx, 'shcontact_create_arrays: a coordinate array is NULL', &
+            stat_usage)
+         return
+      end if
+      call c_f_pointer(wheel_y, wy, [n_wheel])
+      call c_f_pointer(wheel_z, wz, [n_wheel])
+      call c_f_pointer(rail_y, ry, [n_rail])
+      call c_f_pointer(rail_z, rz, [n_rail])
+      stat = context_create_arrays(ctx, wy, wz, ry, rz, int(side))
+   end function shcontact_create_arrays
 
    !> Release a contact; NULL is accepted and ignored (status 0).
    integer(c_int) function shcontact_destroy(handle) result(stat) &
@@ -217,6 +268,114 @@ contains
       call c_f_pointer(handle, ctx)
       stat = context_patch(ctx, int(patch), values)
    end function shcontact_patch
+
+   !> The points of the contact's wheel (kind = 1) or rail (kind = 0) profile as created (mm,
+   !> canonical form): *n points in y[0..*n-1], z[...], which hold `capacity` values; *n is set
+   !> also when it exceeds the capacity (status 1, nothing copied): call with capacity 0 to ask.
+   integer(c_int) function shcontact_get_profile(handle, kind, capacity, n, y, z) result(stat) &
+         bind(C, name='shcontact_get_profile')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> 1 wheel, 0 rail.
+      integer(c_int), value :: kind
+      !> Size of y and z.
+      integer(c_int), value :: capacity
+      !> Where to store the number of points (int *).
+      type(c_ptr), value :: n
+      !> The points (double *; may be NULL when capacity is 0).
+      type(c_ptr), value :: y, z
+      type(contact_context_type), pointer :: ctx
+      integer(c_int), pointer :: count
+      real(c_double), pointer :: fy(:), fz(:)
+      integer :: m, points
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      m = max(int(capacity), 0)
+      if (.not. c_associated(n) .or. (m > 0 .and. .not. (c_associated(y) .and. &
+          c_associated(z)))) then
+         stat = context_fail(ctx, 'shcontact_get_profile: n, y or z is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(n, count)
+      call c_f_pointer(y, fy, [m])
+      call c_f_pointer(z, fz, [m])
+      stat = context_get_profile(ctx, int(kind), points, fy, fz)
+      count = points
+   end function shcontact_get_profile
+
+   !> The size of the element fields of patch `patch` (1-based) of the last solve: *nx elements
+   !> per strip (rolling direction), *ny strips; 0 × 0 for a patch without load. Needs the
+   !> option output%fields = all before the solve.
+   integer(c_int) function shcontact_field_size(handle, patch, nx, ny) result(stat) &
+         bind(C, name='shcontact_field_size')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Patch index, 1 to the number of patches.
+      integer(c_int), value :: patch
+      !> Where to store the sizes (int *).
+      type(c_ptr), value :: nx, ny
+      type(contact_context_type), pointer :: ctx
+      integer(c_int), pointer :: mx, my
+      integer :: kx, ky
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      if (.not. (c_associated(nx) .and. c_associated(ny))) then
+         stat = context_fail(ctx, 'shcontact_field_size: nx or ny is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(nx, mx)
+      call c_f_pointer(ny, my)
+      stat = context_field_size(ctx, int(patch), kx, ky)
+      mx = kx
+      my = ky
+   end function shcontact_field_size
+
+   !> The element fields of patch `patch` (1-based) of the last solve, each an array of nx·ny
+   !> values (the sizes of shcontact_field_size) in Fortran order: element j (0-based, from the
+   !> leading edge) of strip i at [j + nx*i], i.e. C arrays [ny][nx]. x, y element centres (mm),
+   !> area (mm²), pn, px, py (MPa, on the wheel), slip magnitude, state (0 exterior, 1 adhesion,
+   !> 2 slip).
+   integer(c_int) function shcontact_fields(handle, patch, nx, ny, x, y, area, pn, px, py, slip, &
+         state) result(stat) bind(C, name='shcontact_fields')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Patch index, 1 to the number of patches.
+      integer(c_int), value :: patch
+      !> The sizes.
+      integer(c_int), value :: nx, ny
+      !> The arrays (double *, nx·ny each; none may be NULL).
+      type(c_ptr), value :: x, y, area, pn, px, py, slip
+      !> The element states (int *, nx·ny).
+      type(c_ptr), value :: state
+      type(contact_context_type), pointer :: ctx
+      real(c_double), pointer :: fx(:, :), fy(:, :), fa(:, :), fpn(:, :), fpx(:, :), &
+         fpy(:, :), fs(:, :)
+      integer(c_int), pointer :: fst(:, :)
+      integer :: mx, my
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      mx = max(int(nx), 0)
+      my = max(int(ny), 0)
+      if (mx*my > 0 .and. .not. (c_associated(x) .and. c_associated(y) .and. &
+          c_associated(area) .and. c_associated(pn) .and. c_associated(px) .and. &
+          c_associated(py) .and. c_associated(slip) .and. c_associated(state))) then
+         stat = context_fail(ctx, 'shcontact_fields: an array is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(x, fx, [mx, my])
+      call c_f_pointer(y, fy, [mx, my])
+      call c_f_pointer(area, fa, [mx, my])
+      call c_f_pointer(pn, fpn, [mx, my])
+      call c_f_pointer(px, fpx, [mx, my])
+      call c_f_pointer(py, fpy, [mx, my])
+      call c_f_pointer(slip, fs, [mx, my])
+      call c_f_pointer(state, fst, [mx, my])
+      stat = context_fields(ctx, int(patch), int(nx), int(ny), fx, fy, fa, fpn, fpx, fpy, fs, &
+         fst)
+   end function shcontact_fields
 
    !> The status of the last call on a handle; its message is copied to buffer (NUL-terminated,
    !> cut to length − 1 characters; empty after a success). For a NULL handle: status 1.

@@ -16,26 +16,31 @@ module shcontact_api_context
       parse_spin_model
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
+   use shcontact_profile_source, only: profile_from_points
+   use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
-      max_patches
+      contact_fields_type, max_patches
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
    implicit none
    private
 
    public :: contact_context_type, option_keys
-   public :: context_create, context_set_material, context_set_track, context_set_option, &
-      context_solve, context_solve_kinematic, context_patch, context_patch_kinematic, &
+   public :: context_create, context_create_arrays, context_set_material, context_set_track, &
+      context_set_option, context_solve, context_solve_kinematic, context_patch, &
+      context_patch_kinematic, context_field_size, context_fields, context_get_profile, &
       context_message, context_fail
 
    !> Longest message kept (longer ones are cut).
    integer, parameter :: message_capacity = 1024
 
    !> Keys accepted by [[context_set_option]] (the app's `group%variable` names).
-   character(len=*), parameter :: option_keys(11) = [character(len=24) :: 'normal%method', &
+   character(len=*), parameter :: option_keys(12) = [character(len=24) :: 'normal%method', &
       'normal%reduction', 'normal%epsilon', 'normal%n_strips', 'normal%b_min', &
       'tangential%method', 'tangential%bound', 'tangential%spin_model', &
-      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing']
+      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing', &
+      'output%fields']
 
    !> One contact of a flat interface.
    type :: contact_context_type
@@ -45,6 +50,12 @@ module shcontact_api_context
       type(contact_result_type) :: result
       !> True when `result` holds a solution.
       logical :: has_result = .false.
+      !> Keep the element fields of every solve (option `output%fields`); off by default, so
+      !> that a solve costs what it costs without fields.
+      logical :: keep_fields = .false.
+      !> The fields of the last solve (valid when has_fields).
+      type(contact_fields_type) :: fields
+      logical :: has_fields = .false.
       !> Status of the last operation (0: success).
       integer :: stat = 0
       !> Message of the last operation ('' on success).
@@ -66,9 +77,35 @@ contains
       type(error_type), allocatable :: error
 
       ctx%has_result = .false.
+      ctx%has_fields = .false.
       call ctx%solver%init(trim(wheel), trim(rail), error, side=side)
       stat = record(ctx, error)
    end function context_create
+
+   !> Create the solver from profiles given as arrays of points (mm, right-side canonical form,
+   !> shcontact_profile_points), checked and cleaned as profile files are
+   !> (shcontact_profile_source's profile_from_points), with default track, material and options.
+   integer function context_create_arrays(ctx, wheel_y, wheel_z, rail_y, rail_z, side) &
+         result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Wheel points from the field side to the flange back: y (towards the field side), z (down).
+      real(wp), intent(in) :: wheel_y(:), wheel_z(:)
+      !> Rail points from the track centre to the field side.
+      real(wp), intent(in) :: rail_y(:), rail_z(:)
+      !> 1: right wheel, −1: left wheel.
+      integer, intent(in) :: side
+      type(error_type), allocatable :: error
+      type(profile_type) :: wheel, rail
+
+      ctx%has_result = .false.
+      ctx%has_fields = .false.
+      call profile_from_points(wheel_y, wheel_z, profile_kind_wheel, wheel, error)
+      if (.not. allocated(error)) call profile_from_points(rail_y, rail_z, profile_kind_rail, &
+         rail, error)
+      if (.not. allocated(error)) call ctx%solver%init(wheel, rail, error, side=side)
+      stat = record(ctx, error)
+   end function context_create_arrays
 
    !> Set the shear modulus G (MPa), Poisson's ratio ν and the friction coefficient μ.
    integer function context_set_material(ctx, shear_modulus, poisson, friction) result(stat)
@@ -154,6 +191,10 @@ contains
          call read_real(name, value, search%l_filt_wheel, error)
       case ('profiles%rail_smoothing')
          call read_real(name, value, search%l_filt_rail, error)
+      case ('output%fields')
+         call read_fields_choice(name, value, ctx%keep_fields, error)
+         stat = record(ctx, error)
+         return
       case default
          call fatal_error(error, "option '"//trim(key)//"': unknown; expected one of "// &
             key_list(), stat_invalid_input)
@@ -188,9 +229,16 @@ contains
 
       values = 0.0_wp
       ctx%has_result = .false.
+      ctx%has_fields = .false.
       if (usable(ctx, error)) then
-         call ctx%solver%solve(t_y, roll, contact_load_type(load_mode, load), &
-            creepage_type(nu_x, nu_y, phi), ctx%result, error)
+         if (ctx%keep_fields) then
+            call ctx%solver%solve(t_y, roll, contact_load_type(load_mode, load), &
+               creepage_type(nu_x, nu_y, phi), ctx%result, error, ctx%fields)
+            ctx%has_fields = .not. allocated(error)
+         else
+            call ctx%solver%solve(t_y, roll, contact_load_type(load_mode, load), &
+               creepage_type(nu_x, nu_y, phi), ctx%result, error)
+         end if
          if (.not. allocated(error)) then
             ctx%has_result = .true.
             call result_values(ctx%result, values)
@@ -216,9 +264,16 @@ contains
 
       values = 0.0_wp
       ctx%has_result = .false.
+      ctx%has_fields = .false.
       if (usable(ctx, error)) then
-         call ctx%solver%solve_kinematic(state, contact_load_type(load_mode, load), ctx%result, &
-            error)
+         if (ctx%keep_fields) then
+            call ctx%solver%solve_kinematic(state, contact_load_type(load_mode, load), &
+               ctx%result, error, ctx%fields)
+            ctx%has_fields = .not. allocated(error)
+         else
+            call ctx%solver%solve_kinematic(state, contact_load_type(load_mode, load), &
+               ctx%result, error)
+         end if
          if (.not. allocated(error)) then
             ctx%has_result = .true.
             call kinematic_values(ctx%result, values)
@@ -259,6 +314,139 @@ contains
       if (.not. allocated(error)) call kinematic_values(ctx%result, values, k)
       stat = record(ctx, error)
    end function context_patch_kinematic
+
+   !> The size of patch k's element fields after the last solve: nx elements per strip (along
+   !> the rolling direction) and ny strips. 0 × 0 for a patch that carries no load (found by the
+   !> contact search but not loaded, or loaded with nothing). An error unless the last solve
+   !> kept its fields (option `output%fields`).
+   integer function context_field_size(ctx, k, nx, ny) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Patch index, 1 to the number of patches of the last result.
+      integer, intent(in) :: k
+      !> Elements per strip and strips (0 on failure).
+      integer, intent(out) :: nx, ny
+      type(error_type), allocatable :: error
+
+      nx = 0
+      ny = 0
+      call check_fields(ctx, k, error)
+      if (.not. allocated(error)) call field_shape(ctx, k, nx, ny)
+      stat = record(ctx, error)
+   end function context_field_size
+
+   !> Patch k's element fields after the last solve, as arrays (nx, ny) in Fortran order: element
+   !> (j, i) is element j (from the leading edge) of strip i. nx and ny must be the sizes of
+   !> [[context_field_size]]. Coordinates in the patch's contact frame (mm): x along the rolling
+   !> direction from the strip's middle, y the strip centre across the patch from its reference
+   !> point; area the element area (mm², so that Σ px·area = F_x); pressures and tractions on the
+   !> wheel (MPa); slip |s| in slip elements; state 0 exterior, 1 adhesion, 2 slip.
+   integer function context_fields(ctx, k, nx, ny, x, y, area, pn, px, py, slip, state) &
+         result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Patch index, 1 to the number of patches of the last result.
+      integer, intent(in) :: k
+      !> The field sizes (those of context_field_size).
+      integer, intent(in) :: nx, ny
+      !> Element centres and areas (mm, mm²); zero on failure.
+      real(wp), intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny)
+      !> Normal pressure, tractions (MPa) and slip magnitude; zero on failure.
+      real(wp), intent(out) :: pn(nx, ny), px(nx, ny), py(nx, ny), slip(nx, ny)
+      !> Element state: 0 exterior, 1 adhesion, 2 slip.
+      integer, intent(out) :: state(nx, ny)
+      type(error_type), allocatable :: error
+      integer :: mx, my, i
+
+      x = 0.0_wp; y = 0.0_wp; area = 0.0_wp; pn = 0.0_wp; px = 0.0_wp; py = 0.0_wp
+      slip = 0.0_wp
+      state = 0
+      call check_fields(ctx, k, error)
+      if (.not. allocated(error)) then
+         call field_shape(ctx, k, mx, my)
+         if (nx /= mx .or. ny /= my) call fatal_error(error, 'fields of patch '//str_int(k)// &
+            ': arrays of '//str_int(nx)//' x '//str_int(ny)//' given, the fields are '// &
+            str_int(mx)//' x '//str_int(my)//' (ask their size first)', stat_usage)
+      end if
+      if (.not. allocated(error) .and. nx > 0 .and. ny > 0) then
+         associate (t => ctx%fields%tangential(k))
+            x = t%x
+            do i = 1, ny
+               y(:, i) = t%y(i)
+               area(:, i) = t%dx(i)*t%dy
+            end do
+            pn = t%pn
+            px = t%px
+            py = t%py
+            slip = t%slip
+            state = int(t%state)
+         end associate
+      end if
+      stat = record(ctx, error)
+   end function context_fields
+
+   !> The points of the wheel (kind = profile_kind_wheel, 1) or rail (profile_kind_rail, 0)
+   !> profile of the contact, as it was created (read and cleaned; mm, canonical form), e.g. to
+   !> pass them to [[context_create_arrays]] after a change. n receives the number of points
+   !> also when it exceeds the capacity of y and z (then nothing is copied and the status is 1).
+   integer function context_get_profile(ctx, kind, n, y, z) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> profile_kind_wheel (1) or profile_kind_rail (0).
+      integer, intent(in) :: kind
+      !> The number of points (0 on failure other than a small capacity).
+      integer, intent(out) :: n
+      !> The points (their size is the capacity); zero beyond n.
+      real(wp), intent(out) :: y(:), z(:)
+      type(error_type), allocatable :: error
+      type(profile_type) :: wheel, rail
+
+      n = 0
+      y = 0.0_wp
+      z = 0.0_wp
+      if (kind /= profile_kind_wheel .and. kind /= profile_kind_rail) then
+         call fatal_error(error, 'profile kind = '//str_int(kind)//': expected 1 (wheel) or '// &
+            '0 (rail)', stat_usage)
+      else if (usable(ctx, error)) then
+         call ctx%solver%get_profiles(wheel, rail)
+         if (kind == profile_kind_rail) wheel = rail
+         n = wheel%size()
+         if (n > min(size(y), size(z))) then
+            call fatal_error(error, 'profile points: the '//trim(merge('wheel', 'rail ', &
+               kind == profile_kind_wheel))//' profile has '//str_int(n)//' points, the '// &
+               'arrays hold '//str_int(min(size(y), size(z))), stat_usage)
+         else
+            y(1:n) = wheel%y
+            z(1:n) = wheel%z
+         end if
+      end if
+      stat = record(ctx, error)
+   end function context_get_profile
+
+   !> An error unless the last solve kept its fields and has a patch k.
+   subroutine check_fields(ctx, k, error)
+      type(contact_context_type), intent(in) :: ctx
+      integer, intent(in) :: k
+      type(error_type), allocatable, intent(out) :: error
+      if (ctx%has_result .and. .not. ctx%has_fields) then
+         call fatal_error(error, "fields: the last solve kept none; set the option "// &
+            "'output%fields' to 'all' before solving", stat_usage)
+         return
+      end if
+      call check_patch_index(ctx, k, error)
+   end subroutine check_fields
+
+   !> The element field size of patch k (0 × 0 when it carries no load).
+   pure subroutine field_shape(ctx, k, nx, ny)
+      type(contact_context_type), intent(in) :: ctx
+      integer, intent(in) :: k
+      integer, intent(out) :: nx, ny
+      nx = 0
+      ny = 0
+      if (k > ctx%fields%n_patches) return
+      nx = ctx%fields%tangential(k)%nx
+      ny = ctx%fields%tangential(k)%ny
+   end subroutine field_shape
 
    !> An error unless the context holds a result with a patch k.
    subroutine check_patch_index(ctx, k, error)
@@ -353,6 +541,24 @@ contains
       end if
       value = i
    end subroutine read_int
+
+   !> The value of option `output%fields`: 'all' or '1' keeps the fields of every solve, 'none'
+   !> or '0' none (the app's names for all and none of them).
+   subroutine read_fields_choice(key, text, keep, error)
+      character(len=*), intent(in) :: key, text
+      logical, intent(inout) :: keep
+      type(error_type), allocatable, intent(out) :: error
+      select case (trim(adjustl(to_lower(text))))
+      case ('all', '1')
+         keep = .true.
+      case ('none', '0')
+         keep = .false.
+      case default
+         call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected 'all' "// &
+            "(or 1: keep the element fields of every solve) or 'none' (or 0)", &
+            stat_invalid_input)
+      end select
+   end subroutine read_fields_choice
 
    !> The accepted keys, comma-separated.
    pure function key_list() result(text)

@@ -19,12 +19,15 @@ module shcontact_api_legacy
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
-      context_patch, context_patch_kinematic, context_message
+      context_patch, context_patch_kinematic, context_message, context_create_arrays, &
+      context_field_size, context_fields, context_fail, context_get_profile
    implicit none
    private
 
    public :: max_handles
-   public :: legacy_create, legacy_destroy, legacy_set_material, legacy_set_track, &
+   public :: legacy_create, legacy_create_arrays, legacy_field_size, legacy_fields, &
+      legacy_get_profile
+   public :: legacy_destroy, legacy_set_material, legacy_set_track, &
       legacy_set_option, legacy_solve, legacy_solve_kinematic, legacy_patch, &
       legacy_patch_kinematic, legacy_message
 
@@ -54,8 +57,47 @@ contains
       integer, intent(in) :: iside
       !> Status (0 success).
       integer, intent(out) :: istat
-      integer :: i
 
+      call reserve(ihandle)
+      if (ihandle == 0) then
+         istat = stat_usage
+         return
+      end if
+      istat = context_create(slots(ihandle)%ctx, wheel, rail, iside)
+   end subroutine legacy_create
+
+   !> Reserve a handle and create its contact from profiles given as arrays of points (mm,
+   !> right-side canonical form; see context_create_arrays). Handles as [[legacy_create]].
+   subroutine legacy_create_arrays(ihandle, nw, yw, zw, nr, yr, zr, iside, istat)
+      !> The new handle (0 when the table is full).
+      integer, intent(out) :: ihandle
+      !> Number of wheel points, their y and z (from the field side to the flange back).
+      integer, intent(in) :: nw
+      real(wp), intent(in) :: yw(*), zw(*)
+      !> Number of rail points, their y and z (from the track centre to the field side).
+      integer, intent(in) :: nr
+      real(wp), intent(in) :: yr(*), zr(*)
+      !> 1 right wheel, −1 left wheel.
+      integer, intent(in) :: iside
+      !> Status (0 success).
+      integer, intent(out) :: istat
+
+      call reserve(ihandle)
+      if (ihandle == 0) then
+         istat = stat_usage
+      else if (nw < 0 .or. nr < 0) then
+         istat = context_fail(slots(ihandle)%ctx, 'shc_create_arrays: negative number of '// &
+            'points (nw = '//str_int(nw)//', nr = '//str_int(nr)//')', stat_usage)
+      else
+         istat = context_create_arrays(slots(ihandle)%ctx, yw(1:nw), zw(1:nw), yr(1:nr), &
+            zr(1:nr), iside)
+      end if
+   end subroutine legacy_create_arrays
+
+   !> The first free handle, its slot allocated (0 when the table is full).
+   subroutine reserve(ihandle)
+      integer, intent(out) :: ihandle
+      integer :: i
       ihandle = 0
       !$omp critical (shcontact_legacy_handles)
       do i = 1, max_handles
@@ -66,12 +108,7 @@ contains
          end if
       end do
       !$omp end critical (shcontact_legacy_handles)
-      if (ihandle == 0) then
-         istat = stat_usage
-         return
-      end if
-      istat = context_create(slots(ihandle)%ctx, wheel, rail, iside)
-   end subroutine legacy_create
+   end subroutine reserve
 
    !> Release a handle (status 1 for an invalid one).
    subroutine legacy_destroy(ihandle, istat)
@@ -202,6 +239,62 @@ contains
       if (valid(ihandle)) istat = context_patch(slots(ihandle)%ctx, ipatch, values)
    end subroutine legacy_patch
 
+   !> The size of patch ipatch's element fields after the last solve (nx elements per strip,
+   !> ny strips; 0 × 0 for a patch without load). Needs option output%fields = 'all'.
+   subroutine legacy_field_size(ihandle, ipatch, nx, ny, istat)
+      !> The handle and the patch index.
+      integer, intent(in) :: ihandle, ipatch
+      !> The sizes (0 on failure).
+      integer, intent(out) :: nx, ny
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      nx = 0
+      ny = 0
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_field_size(slots(ihandle)%ctx, ipatch, nx, ny)
+   end subroutine legacy_field_size
+
+   !> Patch ipatch's element fields after the last solve, arrays (nx, ny) (context_fields).
+   subroutine legacy_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+      !> The handle and the patch index.
+      integer, intent(in) :: ihandle, ipatch
+      !> The sizes, as legacy_field_size gives them.
+      integer, intent(in) :: nx, ny
+      !> Element centres (mm), areas (mm²), pressure and tractions (MPa), slip magnitude.
+      real(wp), intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), &
+         py(nx, ny), slip(nx, ny)
+      !> Element state: 0 exterior, 1 adhesion, 2 slip.
+      integer, intent(out) :: state(nx, ny)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) then
+         istat = context_fields(slots(ihandle)%ctx, ipatch, nx, ny, x, y, area, pn, px, py, &
+            slip, state)
+      else
+         x = 0.0_wp; y = 0.0_wp; area = 0.0_wp; pn = 0.0_wp; px = 0.0_wp; py = 0.0_wp
+         slip = 0.0_wp
+         state = 0
+      end if
+   end subroutine legacy_fields
+
+   !> The points of the handle's wheel (ikind = 1) or rail (ikind = 0) profile as created;
+   !> n receives their number also when it exceeds nmax (status 1, nothing copied).
+   subroutine legacy_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+      !> The handle, the profile kind, the capacity of y and z.
+      integer, intent(in) :: ihandle, ikind, nmax
+      !> The number of points.
+      integer, intent(out) :: n
+      !> The points (mm).
+      real(wp), intent(out) :: y(*), z(*)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      n = 0
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_get_profile(slots(ihandle)%ctx, ikind, n, &
+         y(1:max(nmax, 0)), z(1:max(nmax, 0)))
+   end subroutine legacy_get_profile
+
    !> The message of the last call on a handle (blank after a success), or why the handle is
    !> not valid. Cut to len(msg).
    subroutine legacy_message(ihandle, msg)
@@ -242,6 +335,62 @@ subroutine shc_create(ihandle, wheel, rail, iside, istat)
    integer, intent(out) :: istat
    call legacy_create(ihandle, wheel, rail, iside, istat)
 end subroutine shc_create
+
+!> Create a contact from profiles given as arrays of points: nw wheel points yw, zw (from the
+!> field side to the flange back) and nr rail points yr, zr (from the track centre to the field
+!> side), mm, y towards the field side, z down, right-side form; checked and cleaned as profile
+!> files are. See legacy_create_arrays.
+subroutine shc_create_arrays(ihandle, nw, yw, zw, nr, yr, zr, iside, istat)
+   use shcontact_api_legacy, only: legacy_create_arrays
+   implicit none
+   integer, intent(out) :: ihandle
+   integer, intent(in) :: nw
+   double precision, intent(in) :: yw(*), zw(*)
+   integer, intent(in) :: nr
+   double precision, intent(in) :: yr(*), zr(*)
+   integer, intent(in) :: iside
+   integer, intent(out) :: istat
+   call legacy_create_arrays(ihandle, nw, yw, zw, nr, yr, zr, iside, istat)
+end subroutine shc_create_arrays
+
+!> The size of the element fields of patch ipatch of the last solve: nx elements per strip,
+!> ny strips (needs SHC_SET_OPTION(IH, 'output%fields', 'all', ISTAT) before the solve).
+subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
+   use shcontact_api_legacy, only: legacy_field_size
+   implicit none
+   integer, intent(in) :: ihandle, ipatch
+   integer, intent(out) :: nx, ny
+   integer, intent(out) :: istat
+   call legacy_field_size(ihandle, ipatch, nx, ny, istat)
+end subroutine shc_field_size
+
+!> The element fields of patch ipatch of the last solve, arrays (nx, ny): element centres x, y
+!> (mm), element areas (mm**2), normal pressure pn and tractions px, py (MPa), slip magnitude,
+!> state (0 exterior, 1 adhesion, 2 slip). doc/api.md.
+subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+   use shcontact_api_legacy, only: legacy_fields
+   implicit none
+   integer, intent(in) :: ihandle, ipatch
+   integer, intent(in) :: nx, ny
+   double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
+      px(nx, ny), py(nx, ny), slip(nx, ny)
+   integer, intent(out) :: state(nx, ny)
+   integer, intent(out) :: istat
+   call legacy_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
+end subroutine shc_fields
+
+!> The points of the contact's wheel (ikind = 1, SHC_PROFILE_WHEEL) or rail (ikind = 0,
+!> SHC_PROFILE_RAIL) profile as created (mm, canonical form): n points in y(1:n), z(1:n), which
+!> hold nmax; n is set also when it exceeds nmax (status 1).
+subroutine shc_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+   use shcontact_api_legacy, only: legacy_get_profile
+   implicit none
+   integer, intent(in) :: ihandle, ikind, nmax
+   integer, intent(out) :: n
+   double precision, intent(out) :: y(*), z(*)
+   integer, intent(out) :: istat
+   call legacy_get_profile(ihandle, ikind, nmax, n, y, z, istat)
+end subroutine shc_get_profile
 
 !> Release a contact.
 subroutine shc_destroy(ihandle, istat)

@@ -220,6 +220,8 @@ module shcontact_api_solver
       procedure :: set_track
       !> Current data, for the flat interfaces.
       procedure :: get_material, get_options, get_track, get_contact_options
+      !> The wheel and rail profiles as given to init (read and cleaned, before smoothing).
+      procedure :: get_profiles
       !> True once init has succeeded.
       procedure :: is_ready
    end type contact_solver_type
@@ -1075,6 +1077,17 @@ contains
       type(track_type) :: track
       track = self%track
    end function get_track
+
+   !> The wheel and rail profiles as [[init]] took them (a file's read and cleaned, a built-in
+   !> one as it is; before smoothing and placing), e.g. to pass them on as arrays.
+   pure subroutine get_profiles(self, wheel, rail)
+      !> The solver.
+      class(contact_solver_type), intent(in) :: self
+      !> The profiles (canonical form, physics.md §5.1).
+      type(profile_type), intent(out) :: wheel, rail
+      wheel = self%wheel
+      rail = self%rail
+   end subroutine get_profiles
 
    !> True once [[init]] has succeeded.
    pure logical function is_ready(self)

@@ -4,12 +4,16 @@ module shcontact_profile_points
    implicit none
    private
 
-   public :: profile_type, profile_kind_rail, profile_kind_wheel, option_hint
+   public :: profile_type, profile_kind_rail, profile_kind_wheel, option_hint, array_hints
 
    !> The profile is a rail profile.
    integer, parameter :: profile_kind_rail = 0
    !> The profile is a wheel profile.
    integer, parameter :: profile_kind_wheel = 1
+
+   !> The `option_prefix` of profiles given as arrays (shcontact_profile_source's
+   !> profile_from_points): [[option_hint]] then says what to do to the arrays.
+   character(len=*), parameter :: array_hints = '(arrays)'
 
    !> A right-side profile: y lateral towards the field side, z positive **downward**, mm.
    !>
@@ -66,7 +70,8 @@ contains
    !> or, with `prefix` (e.g. '&profiles wheel_'), the caller's variable
    !> (`&profiles wheel_mirror_z = 'yes'`). `value` is 'yes', 'no' or, for the scale, a
    !> placeholder such as 'FACTOR'. The prefix '--' names command-line options
-   !> (`--mirror-z yes`, `--scale FACTOR`).
+   !> (`--mirror-z yes`, `--scale FACTOR`); the prefix [[array_hints]] names what to do to
+   !> arrays given by a program (`pass -z`, `pass the coordinates times FACTOR`).
    pure function option_hint(prefix, name, value) result(text)
       !> The caller's prefix ('' or absent: the library's arguments).
       character(len=*), intent(in), optional :: prefix
@@ -83,6 +88,12 @@ contains
          case ('yes'); text = name//' = .true.'
          case ('no'); text = name//' = .false.'
          case default; text = name//' = '//value
+         end select
+      else if (trim(prefix) == array_hints) then
+         select case (name)
+         case ('mirror_y'); text = 'pass -y'
+         case ('mirror_z'); text = 'pass -z (z is positive downward)'
+         case default; text = 'pass the coordinates times '//value//' (mm)'
          end select
       else if (trim(prefix) == '--') then
          text = '--'//dashed(name)//' '//value

@@ -1,22 +1,24 @@
-!> A profile named by a source string: `builtin:NAME` or a file name (read, checked, cleaned).
+!> A profile named by a source string: `builtin:NAME` or a file name (read, checked, cleaned),
+!> or given as arrays of points by a program (checked and cleaned the same way).
 !>
-!> Profiles from files are also checked for plausibility (shcontact_profile_plausibility).
+!> Profiles from files and arrays are also checked for plausibility
+!> (shcontact_profile_plausibility).
 !>
-!> The one place where the app's case runner and the library's solver object turn a profile
+!> The one place where the app's case runner and the library's interfaces turn a profile
 !> specification into a [[profile_type]].
 module shcontact_profile_source
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type
    use shcontact_profile_plausibility, only: check_plausible
    use shcontact_core_strings, only: to_lower
-   use shcontact_profile_points, only: profile_type
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, array_hints
    use shcontact_profile_reader, only: read_profile
    use shcontact_profile_cleanup, only: clean_profile, drop_collinear
    use shcontact_profile_builtin, only: builtin_profile
    implicit none
    private
 
-   public :: load_profile
+   public :: load_profile, profile_from_points
 
 contains
 
@@ -59,5 +61,44 @@ contains
       call drop_collinear(profile, lines)
       call check_plausible(profile, error, lines, option_prefix=option_prefix)
    end subroutine load_profile
+
+   !> A profile from arrays of points in the canonical form (mm, right side, y towards the
+   !> field side, z down; wheel points from the field side to the flange back, rail points from
+   !> the track centre to the field side), checked and cleaned as a profile file is
+   !> ([[load_profile]]: clean_profile, check_plausible) with one difference: points on the
+   !> chord of their neighbours are kept (drop_collinear is for files whose samples were
+   !> resampled; a program's arrays are taken as they are), so that a profile exported to arrays,
+   !> a built-in one for instance, gives the results of the profile itself bit for bit.
+   !> Messages name the profile 'wheel array' or 'rail array' (or `name`) and the point by its
+   !> 1-based index.
+   subroutine profile_from_points(y, z, kind, profile, error, name)
+      !> Lateral and vertical coordinates of the points (mm), in profile order.
+      real(wp), intent(in) :: y(:), z(:)
+      !> profile_kind_wheel or profile_kind_rail.
+      integer, intent(in) :: kind
+      !> The profile.
+      type(profile_type), intent(out) :: profile
+      !> stat_invalid_input for too few, non-finite, duplicate or misordered points, a wrong
+      !> length or an implausible shape; stat_usage when y and z differ in length.
+      type(error_type), allocatable, intent(out) :: error
+      !> How messages name the profile (default 'wheel array' or 'rail array').
+      character(len=*), intent(in), optional :: name
+      integer, allocatable :: lines(:)
+
+      if (present(name)) then
+         profile%source = name
+      else if (kind == profile_kind_wheel) then
+         profile%source = 'wheel array'
+      else
+         profile%source = 'rail array'
+      end if
+      profile%kind = kind
+      profile%y = y
+      profile%z = z
+      allocate (lines(size(y)), source=0)
+      call clean_profile(profile, error, lines, option_prefix=array_hints)
+      if (allocated(error)) return
+      call check_plausible(profile, error, lines, option_prefix=array_hints)
+   end subroutine profile_from_points
 
 end module shcontact_profile_source
