@@ -1,0 +1,28 @@
+!> Size limits of a case configuration: string lengths, list capacities, the most cases of a
+!> run and the most grid cells of a patch (doc/app.md, "Limits").
+module shcontact_io_config_limits
+   implicit none
+   private
+
+   public :: path_len, name_len, max_sweep_values, max_label_values, max_fields, max_cases
+   public :: max_grid_cells, max_line_length
+
+   !> Length of file-name variables.
+   integer, parameter :: path_len = 512
+   !> Length of choice variables (method names, modes).
+   integer, parameter :: name_len = 32
+   !> Most values one real sweep list may hold.
+   integer, parameter :: max_sweep_values = 100000
+   !> Most values one choice sweep list (bound, spin_model) may hold.
+   integer, parameter :: max_label_values = 16
+   !> Most entries of `output%fields`.
+   integer, parameter :: max_fields = 16
+   !> Most cases of one run (a sweep grid).
+   integer, parameter :: max_cases = 100000000
+   !> Most cells of one patch grid, &normal n_strips × &tangential n_elements: every thread
+   !> holds a few arrays of this size per patch (doc/app.md, "Limits").
+   integer, parameter :: max_grid_cells = 1000000
+   !> Longest line of a case file.
+   integer, parameter :: max_line_length = 4095
+
+end module shcontact_io_config_limits

@@ -1,0 +1,272 @@
+!> The sweep of a run: the sweepable quantities (axes), the values of each axis, and the cases
+!> they span, either every combination ('grid') or the i-th value of every list ('list').
+module shcontact_io_config_sweep
+   use shcontact_core_kinds, only: wp
+   use shcontact_io_config_limits, only: name_len
+   implicit none
+   private
+
+   public :: sweep_axis_type, sweep_config_type, case_point_type
+   public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential, axis_stage
+   public :: axis_index, case_point_value, is_kinematic_input
+
+   !> Sweepable quantities, in loop order (outermost first): geometry, then load, then the
+   !> tangential inputs, so that consecutive cases share geometry and normal solution.
+   !> The wheelset velocities (`&kinematics`) are swept only in kinematic mode, the creepages
+   !> (`&creepage`) only in prescribed-creepage mode.
+   integer, parameter :: n_sweep_axes = 18
+   character(len=*), parameter :: sweep_axis_names(n_sweep_axes) = [character(len=16) :: &
+      't_y', 'roll', 'yaw', 'normal_force', 'approach', 'vertical_force', 'friction', 'bound', &
+      'spin_model', 'v_forward', 'v_lateral', 'v_vertical', 'roll_rate', 'yaw_rate', &
+      'pitch_rate', 'nu_x', 'nu_y', 'phi']
+   !> Which stage an axis changes: 1 geometry, 2 normal load, 3 tangential only.
+   integer, parameter :: axis_geometry = 1, axis_load = 2, axis_tangential = 3
+   integer, parameter :: axis_stage(n_sweep_axes) = [1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, &
+      3, 3, 3, 3, 3]
+   !> The wheelset inputs of a kinematic case (position and velocities), in axis order.
+   character(len=*), parameter :: kinematic_inputs(9) = [character(len=10) :: 't_y', 'roll', &
+      'yaw', 'v_forward', 'v_lateral', 'v_vertical', 'roll_rate', 'yaw_rate', 'pitch_rate']
+
+   !> One swept quantity.
+   type :: sweep_axis_type
+      !> True when values were given (the axis takes part in the sweep).
+      logical :: active = .false.
+      !> True for a choice axis (bound, spin_model): `labels` hold the values.
+      logical :: is_label = .false.
+      !> Values as given: a list, or (first, last) when `points` > 0.
+      real(wp), allocatable :: given(:)
+      !> Number of evenly spaced points from given(1) to given(2); 0 for a list.
+      integer :: points = 0
+      !> Values of a choice axis.
+      character(len=name_len), allocatable :: labels(:)
+   contains
+      !> Number of values.
+      procedure :: size => axis_size
+      !> The i-th value of a real axis.
+      procedure :: value => axis_value
+   end type sweep_axis_type
+
+   !> `&sweep`: the axes, indexed as [[sweep_axis_names]].
+   type :: sweep_config_type
+      character(len=name_len) :: mode = 'grid'
+      type(sweep_axis_type) :: axes(n_sweep_axes)
+   contains
+      !> Number of cases of the sweep (1 without active axes).
+      procedure :: n_cases => sweep_n_cases
+      !> The inputs of case i: the given base point with the swept values put in.
+      procedure :: vary_point
+      !> Index of the first case that has the same inputs up to a stage.
+      procedure :: shares_with => sweep_shares_with
+      !> True when a geometry axis (t_y, roll or yaw) is swept.
+      procedure :: geometry_swept => sweep_geometry_swept
+   end type sweep_config_type
+
+   !> The inputs of one case that a sweep may vary.
+   type :: case_point_type
+      real(wp) :: t_y = 0.0_wp, roll = 0.0_wp
+      !> Wheelset yaw (rad), velocities (mm/s) and rates (rad/s) of a kinematic case; the pitch
+      !> rate is resolved (pure rolling when not given).
+      real(wp) :: yaw = 0.0_wp
+      real(wp) :: normal_force = 0.0_wp, approach = 0.0_wp, vertical_force = 0.0_wp
+      real(wp) :: friction = 0.0_wp
+      character(len=name_len) :: bound = '', spin_model = ''
+      real(wp) :: v_forward = 0.0_wp, v_lateral = 0.0_wp, v_vertical = 0.0_wp
+      real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp, pitch_rate = 0.0_wp
+      real(wp) :: nu_x = 0.0_wp, nu_y = 0.0_wp, phi = 0.0_wp
+   end type case_point_type
+
+contains
+
+   pure integer function axis_size(self)
+      class(sweep_axis_type), intent(in) :: self
+      axis_size = 0
+      if (self%is_label) then
+         if (allocated(self%labels)) axis_size = size(self%labels)
+      else if (self%points > 0) then
+         axis_size = self%points
+      else if (allocated(self%given)) then
+         axis_size = size(self%given)
+      end if
+   end function axis_size
+
+   !> The i-th value: given(i) for a list; first + (last − first)·(i−1)/(points−1) for a range,
+   !> with the last point exactly `last`.
+   pure real(wp) function axis_value(self, i)
+      class(sweep_axis_type), intent(in) :: self
+      integer, intent(in) :: i
+      if (self%points > 0) then
+         if (i == self%points) then
+            axis_value = self%given(2)
+         else
+            axis_value = self%given(1) + (self%given(2) - self%given(1))*real(i - 1, wp)/ &
+               real(self%points - 1, wp)
+         end if
+      else
+         axis_value = self%given(i)
+      end if
+   end function axis_value
+
+   !> Number of cases: the product of the axis sizes ('grid') or the common length ('list').
+   pure integer function sweep_n_cases(self) result(n_cases)
+      class(sweep_config_type), intent(in) :: self
+      integer :: ia
+      integer(kind=8) :: n
+      n = 1
+      do ia = 1, n_sweep_axes
+         if (.not. self%axes(ia)%active) cycle
+         if (self%mode == 'list') then
+            n = self%axes(ia)%size()
+         else
+            n = min(n*self%axes(ia)%size(), int(huge(1), kind=8))
+         end if
+      end do
+      n_cases = int(n)
+   end function sweep_n_cases
+
+   !> Value index of every axis for case `icase` (grid: the last axis varies fastest).
+   pure subroutine axis_indices(self, icase, idx)
+      type(sweep_config_type), intent(in) :: self
+      integer, intent(in) :: icase
+      integer, intent(out) :: idx(n_sweep_axes)
+      integer :: ia, rest, m
+      idx = 0
+      rest = icase - 1
+      do ia = n_sweep_axes, 1, -1
+         if (.not. self%axes(ia)%active) cycle
+         if (self%mode == 'list') then
+            idx(ia) = icase
+         else
+            m = self%axes(ia)%size()
+            idx(ia) = mod(rest, m) + 1
+            rest = rest/m
+         end if
+      end do
+   end subroutine axis_indices
+
+   !> Replace the base values of `p` by the swept values of case `icase`.
+   pure subroutine vary_point(self, icase, p)
+      class(sweep_config_type), intent(in) :: self
+      !> Case index, 1 ≤ icase ≤ n_cases.
+      integer, intent(in) :: icase
+      !> The base values on entry, the inputs of the case on return.
+      type(case_point_type), intent(inout) :: p
+      integer :: idx(n_sweep_axes), ia
+
+      call axis_indices(self, icase, idx)
+      do ia = 1, n_sweep_axes
+         if (idx(ia) == 0) cycle
+         associate (axis => self%axes(ia))
+            select case (trim(sweep_axis_names(ia)))
+            case ('t_y'); p%t_y = axis%value(idx(ia))
+            case ('roll'); p%roll = axis%value(idx(ia))
+            case ('yaw'); p%yaw = axis%value(idx(ia))
+            case ('normal_force'); p%normal_force = axis%value(idx(ia))
+            case ('approach'); p%approach = axis%value(idx(ia))
+            case ('vertical_force'); p%vertical_force = axis%value(idx(ia))
+            case ('friction'); p%friction = axis%value(idx(ia))
+            case ('bound'); p%bound = axis%labels(idx(ia))
+            case ('spin_model'); p%spin_model = axis%labels(idx(ia))
+            case ('v_forward'); p%v_forward = axis%value(idx(ia))
+            case ('v_lateral'); p%v_lateral = axis%value(idx(ia))
+            case ('v_vertical'); p%v_vertical = axis%value(idx(ia))
+            case ('roll_rate'); p%roll_rate = axis%value(idx(ia))
+            case ('yaw_rate'); p%yaw_rate = axis%value(idx(ia))
+            case ('pitch_rate'); p%pitch_rate = axis%value(idx(ia))
+            case ('nu_x'); p%nu_x = axis%value(idx(ia))
+            case ('nu_y'); p%nu_y = axis%value(idx(ia))
+            case ('phi'); p%phi = axis%value(idx(ia))
+            end select
+         end associate
+      end do
+   end subroutine vary_point
+
+   pure logical function sweep_geometry_swept(self) result(geometry_swept)
+      class(sweep_config_type), intent(in) :: self
+      integer :: ia
+      geometry_swept = .false.
+      do ia = 1, n_sweep_axes
+         if (axis_stage(ia) == axis_geometry) geometry_swept = geometry_swept .or. &
+            self%axes(ia)%active
+      end do
+   end function sweep_geometry_swept
+
+   !> The smallest case index whose inputs up to `stage` (axis_geometry: t_y and roll;
+   !> axis_load: also the load) equal those of case `icase`, so that its geometry (or normal
+   !> solution) can be reused.
+   pure integer function sweep_shares_with(self, icase, stage) result(shares_with)
+      class(sweep_config_type), intent(in) :: self
+      integer, intent(in) :: icase, stage
+      integer :: idx(n_sweep_axes), jdx(n_sweep_axes), ia, j, m, stride
+      call axis_indices(self, icase, idx)
+      if (self%mode == 'grid') then
+         ! In a grid the outer axes change slowest: zero the inner indices.
+         shares_with = 1
+         stride = 1
+         do ia = n_sweep_axes, 1, -1
+            if (.not. self%axes(ia)%active) cycle
+            m = self%axes(ia)%size()
+            if (axis_stage(ia) <= stage) shares_with = shares_with + (idx(ia) - 1)*stride
+            stride = stride*m
+         end do
+         return
+      end if
+      ! In a list, search the earlier cases for equal values.
+      do j = 1, icase
+         call axis_indices(self, j, jdx)
+         shares_with = j
+         do ia = 1, n_sweep_axes
+            if (axis_stage(ia) > stage .or. .not. self%axes(ia)%active) cycle
+            if (self%axes(ia)%value(jdx(ia)) /= self%axes(ia)%value(idx(ia))) &
+               shares_with = 0
+         end do
+         if (shares_with > 0) return
+      end do
+      shares_with = icase
+   end function sweep_shares_with
+
+   !> The value of real input axis `ia` (numbering of [[sweep_axis_names]]) of a case; 0 for
+   !> the choice axes (bound, spin_model).
+   pure real(wp) function case_point_value(p, ia) result(x)
+      !> The inputs of the case.
+      type(case_point_type), intent(in) :: p
+      !> Axis index.
+      integer, intent(in) :: ia
+      select case (trim(sweep_axis_names(ia)))
+      case ('t_y'); x = p%t_y
+      case ('roll'); x = p%roll
+      case ('yaw'); x = p%yaw
+      case ('normal_force'); x = p%normal_force
+      case ('approach'); x = p%approach
+      case ('vertical_force'); x = p%vertical_force
+      case ('friction'); x = p%friction
+      case ('v_forward'); x = p%v_forward
+      case ('v_lateral'); x = p%v_lateral
+      case ('v_vertical'); x = p%v_vertical
+      case ('roll_rate'); x = p%roll_rate
+      case ('yaw_rate'); x = p%yaw_rate
+      case ('pitch_rate'); x = p%pitch_rate
+      case ('nu_x'); x = p%nu_x
+      case ('nu_y'); x = p%nu_y
+      case ('phi'); x = p%phi
+      case default; x = 0.0_wp
+      end select
+   end function case_point_value
+
+   !> True for the wheelset inputs of a kinematic case: t_y, roll, yaw, the velocities and
+   !> the rates.
+   pure logical function is_kinematic_input(name)
+      !> An input (sweep axis) name.
+      character(len=*), intent(in) :: name
+      is_kinematic_input = any(kinematic_inputs == name)
+   end function is_kinematic_input
+
+   pure integer function axis_index(name)
+      character(len=*), intent(in) :: name
+      integer :: i
+      axis_index = 0
+      do i = 1, n_sweep_axes
+         if (sweep_axis_names(i) == name) axis_index = i
+      end do
+   end function axis_index
+
+end module shcontact_io_config_sweep

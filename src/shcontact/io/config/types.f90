@@ -1,0 +1,307 @@
+!> The typed configuration of a run: one derived type per namelist group, with the defaults of
+!> the seed's headline case, the whole configuration with where each value was set, and the
+!> questions downstream code asks of it (number of cases, inputs of a case, fields to store).
+module shcontact_io_config_types
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
+   use shcontact_io_config_limits, only: path_len, name_len, max_fields
+   use shcontact_io_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
+      axis_index, is_kinematic_input
+   implicit none
+   private
+
+   public :: case_config_type, profiles_config_type, track_config_type, position_config_type
+   public :: kinematics_config_type, load_config_type, creepage_config_type, normal_config_type
+   public :: tangential_config_type, output_config_type
+   public :: set_origin, origin, sweep_origin
+
+   !> `&profiles`: which profiles, read how.
+   type :: profiles_config_type
+      !> Wheel profile: `builtin:S1002` or a file name (relative names are taken from the
+      !> directory of the case file that sets them).
+      character(len=path_len) :: wheel = 'builtin:S1002'
+      !> Rail profile: `builtin:UIC60` or a file name.
+      character(len=path_len) :: rail = 'builtin:UIC60'
+      !> File formats: 'auto', 'plain', 'simpack', 'miniprof'.
+      character(len=name_len) :: wheel_format = 'auto', rail_format = 'auto'
+      !> Smoothing lengths L_filt (mm); 0 interpolates.
+      real(wp) :: wheel_smoothing = 0.0_wp, rail_smoothing = 0.0_wp
+      !> Mirror y or z of a profile file: 'auto' (the file's or format's convention), 'yes',
+      !> 'no' (CONTACT's MIRRORY/MIRRORZ).
+      character(len=name_len) :: wheel_mirror_y = 'auto', wheel_mirror_z = 'auto'
+      character(len=name_len) :: rail_mirror_y = 'auto', rail_mirror_z = 'auto'
+      !> Factor from a profile file's units to mm; 0: the file's or format's (CONTACT's SCALE).
+      real(wp) :: wheel_scale = 0.0_wp, rail_scale = 0.0_wp
+   end type profiles_config_type
+
+   !> `&track`: track and wheelset dimensions (physics.md §5.2).
+   type :: track_config_type
+      !> 'right' or 'left'.
+      character(len=name_len) :: side = 'right'
+      !> Track gauge (mm), measured `gauge_height` below the rail top.
+      real(wp) :: gauge = 1435.0_wp, gauge_height = 14.0_wp
+      !> Rail inclination as a slope towards the track centre (1:40).
+      real(wp) :: inclination = 0.025_wp
+      !> The rail profile is already canted: the inclination is not applied again.
+      logical :: rail_canted = .false.
+      !> Flange-back distance and flange-back position in wheel-profile coordinates (mm).
+      real(wp) :: flange_back_distance = 1360.0_wp, flange_back_position = -70.0_wp
+      !> Nominal rolling radius R₀ (mm).
+      real(wp) :: nominal_radius = 460.0_wp
+   end type track_config_type
+
+   !> `&position`: wheelset position.
+   type :: position_config_type
+      !> Lateral shift (mm), CONTACT's Y_WS (physics.md decision 13). The seed's "t_y = 5.8 mm"
+      !> measured between the profile origins corresponds to Y_WS = 10.533 − 5.8 = 4.733 mm,
+      !> where the geometric spin equals the seed's φ = 0.274 1/m (../shared/reference/README.md).
+      real(wp) :: t_y = 4.733_wp
+      !> Roll angle (rad).
+      real(wp) :: roll = 0.0_wp
+   end type position_config_type
+
+   !> `&kinematics`: the wheelset's motion (CONTACT's module 1, physics.md decision 14). With
+   !> mode 'on' the creepages of every patch come from the rigid-body motion of the wheelset
+   !> (the library's `solve_kinematic`) instead of `&creepage`; the lateral shift and the roll
+   !> are those of `&position`. Track frame: x forward, y towards the right field side, z down.
+   type :: kinematics_config_type
+      !> 'off' (prescribed creepages, `&creepage`) or 'on'.
+      character(len=name_len) :: mode = 'off'
+      !> Yaw angle ψ (rad), CONTACT's YAW_WS.
+      real(wp) :: yaw = 0.0_wp
+      !> Forward speed of the wheelset centre V (mm/s, > 0): 30 m/s.
+      real(wp) :: v_forward = 30000.0_wp
+      !> Lateral and vertical velocity of the wheelset centre (mm/s).
+      real(wp) :: v_lateral = 0.0_wp, v_vertical = 0.0_wp
+      !> Roll and yaw rate (rad/s).
+      real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp
+      !> Angular velocity about the axle (rad/s, < 0 rolling forward); used only when given
+      !> (`pitch_rate_given`), else pure rolling −V/R₀ of each case's V.
+      real(wp) :: pitch_rate = 0.0_wp
+      !> True when `pitch_rate` was set (case file or override); set by [[validate_config]].
+      logical :: pitch_rate_given = .false.
+   end type kinematics_config_type
+
+   !> `&load`: how the normal problem is loaded.
+   type :: load_config_type
+      !> 'force', 'approach' or 'vertical'.
+      character(len=name_len) :: mode = 'force'
+      !> Normal force on the patch (N), rigid approach (mm), vertical wheel load (N).
+      real(wp) :: normal_force = 64700.0_wp, approach = 0.05_wp, vertical_force = 64700.0_wp
+   end type load_config_type
+
+   !> `&creepage`: creepages at the geometric contact point (physics.md decision 2).
+   type :: creepage_config_type
+      !> ν_x, ν_y (dimensionless), φ (rad/mm).
+      real(wp) :: nu_x = 0.58e-3_wp, nu_y = 0.061e-3_wp, phi = 2.74e-4_wp
+   end type creepage_config_type
+
+   !> `&normal`: the normal solver.
+   type :: normal_config_type
+      character(len=name_len) :: method = 'semi-hertz'
+      character(len=name_len) :: reduction = 'local-hertz'
+      real(wp) :: epsilon = 0.55_wp
+      integer :: n_strips = 100
+      !> Clamp of B(y) (1/mm), physics.md decision 4.
+      real(wp) :: b_min = 1.0e-4_wp
+      !> 'local' (cos γ(y)) or 'reference' (cos γ₀) in A(y).
+      character(len=name_len) :: longitudinal_curvature = 'local'
+   end type normal_config_type
+
+   !> `&tangential`: the tangential solver.
+   type :: tangential_config_type
+      character(len=name_len) :: method = 'fastsim-sh'
+      character(len=name_len) :: bound = 'weighted'
+      character(len=name_len) :: spin_model = 'uniform'
+      character(len=name_len) :: spin_flexibility = 'longitudinal'
+      integer :: n_elements = 50
+   end type tangential_config_type
+
+   !> `&output`: the HDF5 file.
+   type :: output_config_type
+      character(len=path_len) :: file = 'shcontact.h5'
+      !> Per-case fields to store ('auto': all for a single case, none in a sweep).
+      character(len=name_len) :: fields(max_fields) = reshape([character(len=name_len) :: &
+         'auto'], [max_fields], pad=[character(len=name_len) :: ''])
+      character(len=name_len) :: precision = 'double'
+      integer :: compression = 4
+      integer :: checkpoint_cases = 0
+   end type output_config_type
+
+   !> Where a variable got its value (for messages).
+   type :: origin_type
+      character(len=40) :: key = ''
+      character(len=:), allocatable :: where
+   end type origin_type
+
+   !> The resolved, validated configuration of a run.
+   type :: case_config_type
+      type(profiles_config_type) :: profiles
+      type(track_config_type) :: track
+      type(position_config_type) :: position
+      type(kinematics_config_type) :: kinematics
+      type(material_type) :: material
+      type(load_config_type) :: load
+      type(creepage_config_type) :: creepage
+      type(normal_config_type) :: normal
+      type(tangential_config_type) :: tangential
+      type(output_config_type) :: output
+      type(sweep_config_type) :: sweep
+      !> Where each assigned variable was set.
+      type(origin_type), allocatable :: origins(:)
+      !> The case file ('' for the built-in default case), for messages about the case as a
+      !> whole.
+      character(len=:), allocatable :: case_file
+   contains
+      !> Number of cases of the run (1 without a sweep).
+      procedure :: n_cases
+      !> The inputs that vary, for case i (1-based).
+      procedure :: case_point
+      !> True when the named field is to be stored for each case.
+      procedure :: wants_field
+      !> Index of the first case of the run that has the same geometry (or normal solution).
+      procedure :: shares_with
+      !> True in kinematic mode (`&kinematics mode = 'on'`).
+      procedure :: is_kinematic
+      !> True when a sweep changes the contact geometry (t_y, roll or yaw) from case to case.
+      procedure :: geometry_swept
+      !> True when input axis `ia` is reported per case: swept, or a wheelset input of a
+      !> kinematic run.
+      procedure :: reports_input
+   end type case_config_type
+
+contains
+
+   !> Number of cases of the run (1 without a sweep).
+   pure integer function n_cases(self)
+      class(case_config_type), intent(in) :: self
+      n_cases = self%sweep%n_cases()
+   end function n_cases
+
+   !> The varying inputs of case `icase`: base values, replaced by the swept ones. The pitch
+   !> rate, when not given, is that of pure rolling at the case's forward speed.
+   pure function case_point(self, icase) result(p)
+      class(case_config_type), intent(in) :: self
+      !> Case index, 1 ≤ icase ≤ n_cases.
+      integer, intent(in) :: icase
+      type(case_point_type) :: p
+
+      p%t_y = self%position%t_y
+      p%roll = self%position%roll
+      p%yaw = self%kinematics%yaw
+      p%normal_force = self%load%normal_force
+      p%approach = self%load%approach
+      p%vertical_force = self%load%vertical_force
+      p%friction = self%material%friction
+      p%bound = self%tangential%bound
+      p%spin_model = self%tangential%spin_model
+      p%v_forward = self%kinematics%v_forward
+      p%v_lateral = self%kinematics%v_lateral
+      p%v_vertical = self%kinematics%v_vertical
+      p%roll_rate = self%kinematics%roll_rate
+      p%yaw_rate = self%kinematics%yaw_rate
+      p%pitch_rate = self%kinematics%pitch_rate
+      p%nu_x = self%creepage%nu_x
+      p%nu_y = self%creepage%nu_y
+      p%phi = self%creepage%phi
+      call self%sweep%vary_point(icase, p)
+      if (.not. (self%kinematics%pitch_rate_given .or. &
+                 self%sweep%axes(axis_index('pitch_rate'))%active)) &
+         p%pitch_rate = pure_rolling_pitch_rate(p%v_forward, self%track%nominal_radius)
+   end function case_point
+
+   !> The first case with the inputs of case `icase` up to `stage`, whose geometry (or normal
+   !> solution) can be reused.
+   pure integer function shares_with(self, icase, stage)
+      class(case_config_type), intent(in) :: self
+      integer, intent(in) :: icase, stage
+      shares_with = self%sweep%shares_with(icase, stage)
+   end function shares_with
+
+   pure logical function geometry_swept(self)
+      class(case_config_type), intent(in) :: self
+      geometry_swept = self%sweep%geometry_swept()
+   end function geometry_swept
+
+   pure logical function is_kinematic(self)
+      class(case_config_type), intent(in) :: self
+      is_kinematic = self%kinematics%mode == 'on'
+   end function is_kinematic
+
+   pure logical function reports_input(self, ia)
+      class(case_config_type), intent(in) :: self
+      !> Axis index.
+      integer, intent(in) :: ia
+      reports_input = self%sweep%axes(ia)%active
+      if (self%is_kinematic()) reports_input = reports_input .or. &
+         is_kinematic_input(trim(sweep_axis_names(ia)))
+   end function reports_input
+
+   !> Whether a per-case field ('geometry', 'strips', 'pressure', 'traction', 'state', 'slip')
+   !> is stored: 'auto' stores them all for a single case and none in a sweep.
+   pure logical function wants_field(self, field)
+      class(case_config_type), intent(in) :: self
+      character(len=*), intent(in) :: field
+      associate (f => self%output%fields)
+         if (any(f == 'none')) then
+            wants_field = .false.
+         else if (any(f == 'all')) then
+            wants_field = .true.
+         else if (any(f == 'auto') .and. self%n_cases() == 1) then
+            wants_field = .true.
+         else
+            wants_field = any(f == field)
+         end if
+      end associate
+   end function wants_field
+
+   subroutine set_origin(config, key, where)
+      type(case_config_type), intent(inout) :: config
+      character(len=*), intent(in) :: key, where
+      type(origin_type), allocatable :: tmp(:)
+      integer :: i
+      if (.not. allocated(config%origins)) allocate (config%origins(0))
+      do i = 1, size(config%origins)
+         if (config%origins(i)%key == key) then
+            config%origins(i)%where = where
+            return
+         end if
+      end do
+      allocate (tmp(size(config%origins) + 1))
+      tmp(1:size(config%origins)) = config%origins
+      tmp(size(tmp))%key = key
+      tmp(size(tmp))%where = where
+      call move_alloc(tmp, config%origins)
+   end subroutine set_origin
+
+   !> Where a variable was set: 'file:line', 'command line --set ...', or 'default'.
+   pure function origin(config, key) result(where)
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: key
+      character(len=:), allocatable :: where
+      integer :: i
+      where = 'default'
+      if (.not. allocated(config%origins)) return
+      do i = 1, size(config%origins)
+         if (config%origins(i)%key == key) where = config%origins(i)%where
+      end do
+   end function origin
+
+   !> Where the sweep was set: the last `&sweep` assignment, else the case file, else the
+   !> command line (never 'default': a sweep is always someone's input).
+   pure function sweep_origin(config) result(where)
+      type(case_config_type), intent(in) :: config
+      character(len=:), allocatable :: where
+      integer :: i
+      where = 'command line'
+      if (allocated(config%case_file)) then
+         if (len(config%case_file) > 0) where = config%case_file
+      end if
+      if (.not. allocated(config%origins)) return
+      do i = 1, size(config%origins)
+         if (index(config%origins(i)%key, 'sweep%') == 1) where = config%origins(i)%where
+      end do
+   end function sweep_origin
+
+end module shcontact_io_config_types

@@ -1,0 +1,547 @@
+!> Validation, once, into a trusted configuration: every value against its range or choices,
+!> the sweep for consistency, and the settings derived from others (the wheel origin of a
+!> MiniProf file, whether the pitch rate was given, the rules of kinematic mode). Messages
+!> name where the value was set, the group, the variable, the value and what is allowed.
+module shcontact_io_config_validate
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_error, only: error_type, fatal_error
+   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_io_text, only: format_real
+   use shcontact_geometry_kinematics, only: max_yaw
+   use shcontact_profile_reader, only: profile_file_format
+   use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases, max_grid_cells
+   use shcontact_io_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
+      is_kinematic_input
+   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin
+   use shcontact_io_config_variables, only: variables, find_variable, join_words, &
+      mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes, reductions, &
+      tangential_methods, bounds, spin_models, spin_flexibilities, field_names, precisions, &
+      sweep_modes, kinematics_modes
+   implicit none
+   private
+
+   public :: validate_config
+
+contains
+
+   !> Check every value against its allowed range or choices, and the sweep for consistency.
+   !> Messages name where the value was set, the group, the variable, the value and what is
+   !> allowed.
+   subroutine validate_config(config, error)
+      !> The configuration; choice values are normalised to lower case, sweep axes activated.
+      type(case_config_type), intent(inout) :: config
+      !> Set on the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      associate (c => config)
+         call check_choice(c, 'profiles', 'wheel_format', c%profiles%wheel_format, formats, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_format', c%profiles%rail_format, formats, error)
+         if (allocated(error)) return
+         call check_profile_name(c, 'wheel', c%profiles%wheel, 'builtin:S1002', error)
+         if (allocated(error)) return
+         call check_profile_name(c, 'rail', c%profiles%rail, 'builtin:UIC60', error, &
+            also='builtin:UIC60-canted')
+         if (allocated(error)) return
+         call resolve_wheel_origin(c)
+         call check_real_var(c, 'profiles', 'wheel_smoothing', c%profiles%wheel_smoothing, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'rail_smoothing', c%profiles%rail_smoothing, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_y', c%profiles%wheel_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'wheel_mirror_z', c%profiles%wheel_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_y', c%profiles%rail_mirror_y, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_choice(c, 'profiles', 'rail_mirror_z', c%profiles%rail_mirror_z, &
+            mirror_choices, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'wheel_scale', c%profiles%wheel_scale, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'profiles', 'rail_scale', c%profiles%rail_scale, error)
+         if (allocated(error)) return
+         call check_choice(c, 'track', 'side', c%track%side, sides, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'gauge', c%track%gauge, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'gauge_height', c%track%gauge_height, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'inclination', c%track%inclination, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'flange_back_distance', c%track%flange_back_distance, &
+            error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'flange_back_position', c%track%flange_back_position, &
+            error)
+         if (allocated(error)) return
+         call check_real_var(c, 'track', 'nominal_radius', c%track%nominal_radius, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'position', 't_y', c%position%t_y, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'position', 'roll', c%position%roll, error)
+         if (allocated(error)) return
+         call check_kinematics(c, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'material', 'shear_modulus', c%material%shear_modulus, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'material', 'poisson', c%material%poisson, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'material', 'friction', c%material%friction, error)
+         if (allocated(error)) return
+         call check_choice(c, 'load', 'mode', c%load%mode, load_modes, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'load', 'normal_force', c%load%normal_force, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'load', 'approach', c%load%approach, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'load', 'vertical_force', c%load%vertical_force, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'creepage', 'nu_x', c%creepage%nu_x, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'creepage', 'nu_y', c%creepage%nu_y, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'creepage', 'phi', c%creepage%phi, error)
+         if (allocated(error)) return
+         call check_choice(c, 'normal', 'method', c%normal%method, normal_methods, error)
+         if (allocated(error)) return
+         call check_choice(c, 'normal', 'reduction', c%normal%reduction, reductions, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'normal', 'epsilon', c%normal%epsilon, error)
+         if (allocated(error)) return
+         call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, 2, 100000, error)
+         if (allocated(error)) return
+         call check_real_var(c, 'normal', 'b_min', c%normal%b_min, error)
+         if (allocated(error)) return
+         call check_choice(c, 'normal', 'longitudinal_curvature', &
+            c%normal%longitudinal_curvature, curvature_modes, error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'method', c%tangential%method, tangential_methods, &
+            error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'bound', c%tangential%bound, bounds, error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'spin_model', c%tangential%spin_model, spin_models, &
+            error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'spin_flexibility', c%tangential%spin_flexibility, &
+            spin_flexibilities, error)
+         if (allocated(error)) return
+         call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
+            error)
+         if (allocated(error)) return
+         call check_grid_size(c, error)
+         if (allocated(error)) return
+         if (c%tangential%method == 'fastsim' .and. c%normal%method /= 'hertz') then
+            call fatal_error(error, origin(c, 'tangential%method')//": &tangential method = "// &
+               "'fastsim' works on the Hertz ellipse of the reference point: set &normal "// &
+               "method = 'hertz' (now '"//trim(c%normal%method)//"')")
+            return
+         end if
+         call check_output(c, error)
+         if (allocated(error)) return
+         call resolve_kinematic_mode(c, error)
+         if (allocated(error)) return
+         call check_sweep(c, error)
+      end associate
+   end subroutine validate_config
+
+   !> A MiniProf wheel has its origin at the flange back: unless `&track flange_back_position`
+   !> is given, it is 0 for such a wheel (the default −70 mm is S1002's, whose origin is at the
+   !> tape circle). The resolved namelist shows the value used.
+   subroutine resolve_wheel_origin(config)
+      type(case_config_type), intent(inout) :: config
+      if (origin(config, 'track%flange_back_position') /= 'default') return
+      if (index(to_lower(config%profiles%wheel), 'builtin:') == 1) return
+      if (profile_file_format(trim(config%profiles%wheel), trim(config%profiles%wheel_format)) &
+          == 'miniprof') config%track%flange_back_position = 0.0_wp
+   end subroutine resolve_wheel_origin
+
+   !> n_strips × n_elements within [[max_grid_cells]], checked before anything is allocated.
+   subroutine check_grid_size(config, error)
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      integer(i8) :: cells
+      character(len=:), allocatable :: where
+      cells = int(config%normal%n_strips, i8)*int(config%tangential%n_elements, i8)
+      if (cells <= max_grid_cells) return
+      where = origin(config, 'tangential%n_elements')
+      if (where == 'default') where = origin(config, 'normal%n_strips')
+      call fatal_error(error, where//': &normal n_strips × &tangential n_elements = '// &
+         str_int(config%normal%n_strips)//' × '//str_int(config%tangential%n_elements)// &
+         ' = '//str_int(cells)//' grid cells per patch; at most '//str_int(max_grid_cells)// &
+         ' are allowed (memory grows with it on every thread)')
+   end subroutine check_grid_size
+
+   !> The `&kinematics` values in their ranges; whether the pitch rate was given.
+   subroutine check_kinematics(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      associate (k => config%kinematics)
+         call check_choice(config, 'kinematics', 'mode', k%mode, kinematics_modes, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'yaw', k%yaw, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_forward', k%v_forward, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_lateral', k%v_lateral, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'v_vertical', k%v_vertical, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'roll_rate', k%roll_rate, error)
+         if (allocated(error)) return
+         call check_real_var(config, 'kinematics', 'yaw_rate', k%yaw_rate, error)
+         if (allocated(error)) return
+         k%pitch_rate_given = origin(config, 'kinematics%pitch_rate') /= 'default'
+         if (k%pitch_rate_given) call check_real_var(config, 'kinematics', 'pitch_rate', &
+            k%pitch_rate, error)
+      end associate
+   end subroutine check_kinematics
+
+   !> Kinematic mode takes the creepages from the wheelset motion: `&creepage` must not be
+   !> given (it would be silently ignored), the spin model is 'additive' (that of the library's
+   !> `solve_kinematic`, which carries the rigid slip to each strip) and the load defaults to
+   !> the vertical wheel load shared by all patches.
+   subroutine resolve_kinematic_mode(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: creepages(3) = [character(len=4) :: 'nu_x', 'nu_y', 'phi']
+      character(len=:), allocatable :: where
+      integer :: i
+
+      if (.not. config%is_kinematic()) return
+      do i = 1, size(creepages)
+         where = origin(config, 'creepage%'//trim(creepages(i)))
+         if (where == 'default') cycle
+         call fatal_error(error, where//': &creepage '//trim(creepages(i))//' is given, but '// &
+            "&kinematics mode = 'on' computes the creepages of every patch from the wheelset "// &
+            "motion; remove &creepage, or set &kinematics mode = 'off' to prescribe them")
+         return
+      end do
+      where = origin(config, 'tangential%spin_model')
+      if (where /= 'default' .and. config%tangential%spin_model /= 'additive') then
+         call fatal_error(error, where//": &tangential spin_model = '"// &
+            trim(config%tangential%spin_model)//"': &kinematics mode = 'on' needs "// &
+            "spin_model = 'additive' (the rigid slip carried to each strip, as the library's "// &
+            "solve_kinematic); remove it or set 'additive'")
+         return
+      end if
+      config%tangential%spin_model = 'additive'
+      if (origin(config, 'load%mode') == 'default') config%load%mode = 'vertical'
+   end subroutine resolve_kinematic_mode
+
+   !> Allowed range of each real variable (also used for its sweep values).
+   pure subroutine real_limits(name, lo, hi, lo_open, hi_open)
+      character(len=*), intent(in) :: name
+      real(wp), intent(out) :: lo, hi
+      logical, intent(out) :: lo_open, hi_open
+      lo_open = .false.
+      hi_open = .false.
+      select case (name)
+      case ('wheel_smoothing', 'rail_smoothing')
+         lo = 0.0_wp; hi = 100.0_wp
+      case ('wheel_scale', 'rail_scale')
+         lo = 0.0_wp; hi = 1.0e6_wp
+      case ('gauge')
+         lo = 500.0_wp; hi = 2000.0_wp
+      case ('gauge_height')
+         lo = 0.0_wp; hi = 50.0_wp
+      case ('inclination')
+         lo = -0.2_wp; hi = 0.2_wp
+      case ('b_min')
+         lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
+      case ('flange_back_distance')
+         lo = 400.0_wp; hi = 2000.0_wp
+      case ('flange_back_position')
+         lo = -200.0_wp; hi = 200.0_wp
+      case ('nominal_radius')
+         lo = 100.0_wp; hi = 2000.0_wp
+      case ('t_y')
+         lo = -30.0_wp; hi = 30.0_wp
+      case ('roll')
+         lo = -0.1_wp; hi = 0.1_wp
+      case ('shear_modulus')
+         lo = 0.0_wp; hi = 1.0e6_wp; lo_open = .true.
+      case ('poisson')
+         lo = 0.0_wp; hi = 0.5_wp; hi_open = .true.
+      case ('friction')
+         lo = 0.0_wp; hi = 10.0_wp; lo_open = .true.
+      case ('normal_force', 'vertical_force')
+         lo = 0.0_wp; hi = 1.0e7_wp; lo_open = .true.
+      case ('approach')
+         lo = 0.0_wp; hi = 5.0_wp; lo_open = .true.
+      case ('nu_x', 'nu_y')
+         lo = -1.0_wp; hi = 1.0_wp
+      case ('phi')
+         lo = -0.1_wp; hi = 0.1_wp
+      case ('epsilon')
+         lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
+      case ('yaw')
+         lo = -max_yaw; hi = max_yaw
+      case ('v_forward')
+         ! Creepages are velocities divided by the rolling speed: V > 0 (720 km/h at most).
+         lo = 0.0_wp; hi = 2.0e5_wp; lo_open = .true.
+      case ('v_lateral', 'v_vertical')
+         lo = -1.0e4_wp; hi = 1.0e4_wp
+      case ('roll_rate', 'yaw_rate')
+         lo = -10.0_wp; hi = 10.0_wp
+      case ('pitch_rate')
+         ! Rolling forward turns the wheel backwards about the axle: −V/r.
+         lo = -2000.0_wp; hi = 0.0_wp; hi_open = .true.
+      case default
+         lo = -huge(1.0_wp); hi = huge(1.0_wp)
+      end select
+   end subroutine real_limits
+
+   !> A real in its allowed range, finite.
+   subroutine check_real(config, group, name, label, x, error)
+      type(case_config_type), intent(in) :: config
+      !> Group and variable (for the range and the origin).
+      character(len=*), intent(in) :: group, name
+      !> How to show the variable in the message (e.g. 'nu_x(3)').
+      character(len=*), intent(in) :: label
+      real(wp), intent(in) :: x
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: lo, hi
+      logical :: lo_open, hi_open, ok
+      integer :: iv
+      character(len=:), allocatable :: units
+
+      call real_limits(name, lo, hi, lo_open, hi_open)
+      ok = ieee_is_finite(x)
+      if (ok) then
+         if (lo_open) then
+            ok = x > lo
+         else
+            ok = x >= lo
+         end if
+         if (hi_open) then
+            ok = ok .and. x < hi
+         else
+            ok = ok .and. x <= hi
+         end if
+      end if
+      if (ok) return
+      iv = find_variable(group, name)
+      units = ''
+      if (iv > 0) then
+         if (len_trim(variables(iv)%units) > 0 .and. variables(iv)%units /= '1') &
+            units = ' '//trim(variables(iv)%units)
+      end if
+      call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//label// &
+         ' = '//format_real(x)//' is out of range; expected '//format_real(lo)// &
+         less(lo_open)//name//less(hi_open)//format_real(hi)//units)
+   end subroutine check_real
+
+   !> ' < ' or ' <= '.
+   pure function less(strict) result(op)
+      logical, intent(in) :: strict
+      character(len=:), allocatable :: op
+      if (strict) then
+         op = ' < '
+      else
+         op = ' <= '
+      end if
+   end function less
+
+   subroutine check_real_var(config, group, name, x, error)
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: group, name
+      real(wp), intent(in) :: x
+      type(error_type), allocatable, intent(out) :: error
+      call check_real(config, group, name, name, x, error)
+   end subroutine check_real_var
+
+   subroutine check_int_var(config, group, name, i, lo, hi, error)
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: group, name
+      integer, intent(in) :: i, lo, hi
+      type(error_type), allocatable, intent(out) :: error
+      if (i >= lo .and. i <= hi) return
+      call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//name// &
+         ' = '//str_int(i)//' is out of range; expected '//str_int(lo)//' <= '//name// &
+         ' <= '//str_int(hi))
+   end subroutine check_int_var
+
+   !> A choice among a fixed list.
+   subroutine check_choice(config, group, name, value, allowed, error)
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: group, name, value
+      character(len=*), intent(in) :: allowed(:)
+      type(error_type), allocatable, intent(out) :: error
+      if (any(allowed == value)) return
+      call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//name// &
+         " = '"//trim(value)//"' is not allowed; expected one of "// &
+         join_words(allowed, '', "'"))
+   end subroutine check_choice
+
+   !> A built-in name is one we have; anything else is a file name (checked when it is read).
+   subroutine check_profile_name(config, name, value, builtin, error, also)
+      type(case_config_type), intent(in) :: config
+      character(len=*), intent(in) :: name, builtin
+      !> The profile name; a built-in name is spelt canonically on return.
+      character(len=*), intent(inout) :: value
+      type(error_type), allocatable, intent(out) :: error
+      !> Another accepted built-in name.
+      character(len=*), intent(in), optional :: also
+      if (to_lower(value) == to_lower(builtin)) value = builtin
+      if (present(also)) then
+         if (to_lower(value) == to_lower(also)) then
+            value = also
+            return
+         end if
+      end if
+      if (len_trim(value) == 0) then
+         call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
+            " is empty; expected '"//builtin//"' or a file name")
+      else if (index(to_lower(value), 'builtin:') == 1 .and. &
+               to_lower(value) /= to_lower(builtin)) then
+         call fatal_error(error, origin(config, 'profiles%'//name)//': &profiles '//name// &
+            " = '"//trim(value)//"': unknown built-in profile; expected '"//builtin// &
+            "'"//alternative(also)//" or a file name")
+      end if
+   end subroutine check_profile_name
+
+   pure function alternative(also) result(text)
+      character(len=*), intent(in), optional :: also
+      character(len=:), allocatable :: text
+      text = ''
+      if (present(also)) text = ", '"//also//"'"
+   end function alternative
+
+   subroutine check_output(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, n
+      if (len_trim(config%output%file) == 0) then
+         call fatal_error(error, origin(config, 'output%file')//': &output file is empty; '// &
+            'expected a file name')
+         return
+      end if
+      call check_choice(config, 'output', 'precision', config%output%precision, precisions, &
+         error)
+      if (allocated(error)) return
+      call check_int_var(config, 'output', 'compression', config%output%compression, 0, 9, error)
+      if (allocated(error)) return
+      call check_int_var(config, 'output', 'checkpoint_cases', config%output%checkpoint_cases, &
+         0, huge(1), error)
+      if (allocated(error)) return
+      n = 0
+      do i = 1, max_fields
+         if (len_trim(config%output%fields(i)) == 0) cycle
+         n = n + 1
+         call check_choice(config, 'output', 'fields', config%output%fields(i), field_names, &
+            error)
+         if (allocated(error)) return
+      end do
+      if (n == 0) config%output%fields(1) = 'none'
+   end subroutine check_output
+
+   !> Every sweep value in the range of its variable; ranges well formed; list lengths equal
+   !> in 'list' mode; load axes that match the load mode.
+   subroutine check_sweep(config, error)
+      type(case_config_type), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: where, name
+      integer :: ia, i, n_list
+
+      call check_choice(config, 'sweep', 'mode', config%sweep%mode, sweep_modes, error)
+      if (allocated(error)) return
+      n_list = -1
+      do ia = 1, n_sweep_axes
+         associate (axis => config%sweep%axes(ia))
+            name = trim(sweep_axis_names(ia))
+            where = origin(config, 'sweep%'//name)
+            if (where == 'default') where = origin(config, 'sweep%'//name//'_points')
+            if (where == 'default') where = sweep_origin(config)
+            axis%active = .false.
+            if (axis%is_label) then
+               axis%active = size(axis%labels) > 0
+               do i = 1, axis%size()
+                  if (name == 'bound') then
+                     call check_choice(config, 'sweep', name, axis%labels(i), bounds, error)
+                  else
+                     call check_choice(config, 'sweep', name, axis%labels(i), spin_models, error)
+                  end if
+                  if (allocated(error)) return
+               end do
+            else
+               if (.not. allocated(axis%given)) allocate (axis%given(0))
+               if (axis%points /= 0) then
+                  if (axis%points < 2 .or. axis%points > max_sweep_values) then
+                     call fatal_error(error, origin(config, 'sweep%'//name//'_points')// &
+                        ': &sweep '//name//'_points = '//str_int(axis%points)// &
+                        ' is out of range; expected 0 (a list) or 2 to '// &
+                        str_int(max_sweep_values))
+                     return
+                  end if
+                  if (size(axis%given) /= 2) then
+                     call fatal_error(error, where//': &sweep '//name//' has '// &
+                        str_int(size(axis%given))//' values; with '//name// &
+                        '_points > 0 it must hold exactly two: first, last')
+                     return
+                  end if
+               end if
+               axis%active = size(axis%given) > 0
+               do i = 1, size(axis%given)
+                  call check_real(config, 'sweep', name, name//'('//str_int(i)//')', &
+                     axis%given(i), error)
+                  if (allocated(error)) return
+               end do
+            end if
+            if (.not. axis%active) cycle
+            if (config%is_kinematic() .and. any(name == ['nu_x      ', 'nu_y      ', &
+                'phi       ', 'spin_model'])) then
+               call fatal_error(error, where//': &sweep '//name//" is given, but &kinematics "// &
+                  "mode = 'on' takes the creepages from the wheelset motion (spin model "// &
+                  "'additive'); sweep the wheelset inputs (t_y, roll, yaw, v_forward, ...) instead")
+               return
+            end if
+            if (.not. config%is_kinematic() .and. is_kinematic_input(name) .and. &
+                name /= 't_y' .and. name /= 'roll') then
+               call fatal_error(error, where//': &sweep '//name//" is given, but &kinematics "// &
+                  "mode = 'off' (prescribed creepages); set &kinematics mode = 'on' to solve "// &
+                  'from the wheelset motion')
+               return
+            end if
+            if (axis_stage(ia) == axis_load .and. .not. load_axis_matches(name, &
+                config%load%mode)) then
+               call fatal_error(error, where//': &sweep '//name//' is given but &load mode = '// &
+                  "'"//trim(config%load%mode)//"'; sweep the quantity of the load mode")
+               return
+            end if
+            if (config%sweep%mode == 'list') then
+               if (n_list < 0) then
+                  n_list = axis%size()
+               else if (axis%size() /= n_list) then
+                  call fatal_error(error, where//": &sweep mode = 'list' needs lists of equal "// &
+                     'length; '//name//' has '//str_int(axis%size())//' values, an '// &
+                     'earlier list '//str_int(n_list))
+                  return
+               end if
+            end if
+         end associate
+      end do
+      if (config%n_cases() > max_cases) then
+         call fatal_error(error, sweep_origin(config)//': the sweep has more than '// &
+            str_int(max_cases)//' cases; split it into several runs')
+      end if
+   end subroutine check_sweep
+
+   pure logical function load_axis_matches(name, mode)
+      character(len=*), intent(in) :: name, mode
+      select case (name)
+      case ('normal_force')
+         load_axis_matches = mode == 'force'
+      case ('approach')
+         load_axis_matches = mode == 'approach'
+      case default
+         load_axis_matches = mode == 'vertical'
+      end select
+   end function load_axis_matches
+
+end module shcontact_io_config_validate
