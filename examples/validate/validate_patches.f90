@@ -7,11 +7,11 @@
 !> The creepages are prescribed at the geometric contact point, as in §3 (module 3); the sign
 !> mapping is that of validate_tangential.
 module validate_patches
-   use, intrinsic :: iso_fortran_env, only: output_unit
+   use, intrinsic :: iso_fortran_env, only: output_unit, int64
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, material_type, &
       prepared_profiles_type, patch_geometry_type, normal_patch_type, find_contact_patches, &
       wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
-   use shcontact_tangential_options, only: parse_spin_flexibility
+   use shcontact_tangential_options, only: parse_spin_flexibility, parse_flexibility
    use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
    use validate_case, only: solve_normal
    use validate_normal, only: reference_pressure_patch, write_strips
@@ -28,26 +28,35 @@ module validate_patches
    !> Configurations: the defaults first, then one setting changed at a time; the last rows run
    !> FASTSIM_SH on CONTACT's exact pressure (c_pressure = 'contact', validate_normal's
    !> reference_pressure_patch), which separates the tangential model's error from the normal one.
-   integer, parameter :: n_configs = 11
+   integer, parameter :: n_configs = 15
    character(len=*), parameter :: config_labels(n_configs) = [character(len=48) :: &
       'defaults (W1, uniform, longitudinal)', 'bound ellipsoidal', 'bound parabolic', &
       'bound weighted-slip (W2)', 'bound clipped (W3)', 'spin flexibility spin', &
       'spin model additive', 'normal reduction constant', &
-      'defaults on CONTACT pressure', 'ellipsoidal on CONTACT pressure', 'normal reduction coupled']
+      'defaults on CONTACT pressure', 'ellipsoidal on CONTACT pressure', 'normal reduction coupled', &
+      'flexibility patch', 'flexibility patch on CONTACT pressure', 'flexibility carter', &
+      'flexibility carter on CONTACT pressure']
    character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
       'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted', &
-      'weighted', 'ellipsoidal', 'weighted']
+      'weighted', 'ellipsoidal', 'weighted', 'weighted', 'weighted', 'weighted', &
+      'weighted']
    character(len=*), parameter :: c_flex(n_configs) = [character(len=12) :: 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'spin', 'longitudinal', &
-      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal']
+      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', &
+      'longitudinal', 'longitudinal', 'longitudinal']
    character(len=*), parameter :: c_spin(n_configs) = [character(len=8) :: 'uniform', &
       'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform', 'uniform', &
-      'uniform', 'uniform']
+      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform']
    character(len=*), parameter :: c_reduction(n_configs) = [character(len=11) :: &
       'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz', &
-      'local-hertz', 'local-hertz', 'constant', 'local-hertz', 'local-hertz', 'coupled']
+      'local-hertz', 'local-hertz', 'constant', 'local-hertz', 'local-hertz', 'coupled', &
+      'local-hertz', 'local-hertz', 'local-hertz', 'local-hertz']
    character(len=*), parameter :: c_pressure(n_configs) = [character(len=7) :: 'ours', &
-      'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', 'contact', 'ours']
+      'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', 'contact', 'ours', 'ours', &
+      'contact', 'ours', 'contact']
+   character(len=*), parameter :: c_flexibility(n_configs) = [character(len=6) :: 'strip', &
+      'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', &
+      'patch', 'patch', 'carter', 'carter']
 
 contains
 
@@ -63,6 +72,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(error_stats_type) :: ex(n_configs, size(patch_names)), ey(n_configs, size(patch_names))
       real(wp) :: bx(n_configs, size(patch_names)), by(n_configs, size(patch_names))
+      real(wp) :: cost(n_configs, size(patch_names))
       character(len=24) :: doe_names(size(patch_names))
       integer :: n_cases(size(patch_names))
       type(csv_writer_type) :: out
@@ -71,21 +81,21 @@ contains
       do ip = 1, size(patch_names)
          call run_patch(ref_root//trim(patch_names(ip))//'/', prepared, out_dir// &
             'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
-            by(:, ip), doe_names(ip), n_cases(ip), error)
+            by(:, ip), cost(:, ip), doe_names(ip), n_cases(ip), error)
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
-         'spin_flexibility,reduction,pressure,n_cases,dfx_max,dfx_p80,dfx_mean,dfx_bias,'// &
-         'dfy_max,dfy_p80,dfy_mean,dfy_bias', &
+         'spin_flexibility,flexibility,reduction,pressure,n_cases,dfx_max,dfx_p80,dfx_mean,dfx_bias,'// &
+         'dfy_max,dfy_p80,dfy_mean,dfy_bias,us_per_case', &
          error)
       if (allocated(error)) return
       do ip = 1, size(patch_names)
          do ic = 1, n_configs
             call out%row([real(n_cases(ip), wp), ex(ic, ip)%max, ex(ic, ip)%p80, &
                ex(ic, ip)%mean, bx(ic, ip), ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean, &
-               by(ic, ip)], text=[character(len=48) :: patch_names(ip), doe_names(ip), &
-               config_labels(ic), c_bound(ic), c_spin(ic), c_flex(ic), c_reduction(ic), &
-               c_pressure(ic)], digits=4)
+               by(ic, ip), cost(ic, ip)], text=[character(len=48) :: patch_names(ip), &
+               doe_names(ip), config_labels(ic), c_bound(ic), c_spin(ic), c_flex(ic), &
+               c_flexibility(ic), c_reduction(ic), c_pressure(ic)], digits=4)
          end do
       end do
       call out%close()
@@ -97,7 +107,7 @@ contains
 
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
    !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
-   subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, doe_name, n, error)
+   subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, doe_name, n, error)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
       character(len=*), intent(in) :: strips_base
@@ -105,6 +115,8 @@ contains
       !> Mean magnitude bias of f_x and f_y: (f − f_exact) sign(f_exact) averaged, > 0 when our
       !> forces are too large.
       real(wp), intent(out) :: bx(n_configs), by(n_configs)
+      !> Wall time of one tangential solve (µs per case, best of three runs of the set).
+      real(wp), intent(out) :: cost(n_configs)
       character(len=24), intent(out) :: doe_name
       integer, intent(out) :: n
       type(error_type), allocatable, intent(out) :: error
@@ -116,7 +128,8 @@ contains
       real(wp), allocatable :: fx(:), fy(:)
       real(wp) :: y_ws, y_ref, y_geo
       logical :: there
-      integer :: ic
+      integer :: ic, rep
+      integer(int64) :: t0, t1, rate
 
       call read_csv(ref_dir//'summary.csv', summary, error)
       if (allocated(error)) return
@@ -160,8 +173,15 @@ contains
          end if
          call options_of(ic, options, error)
          if (allocated(error)) return
-         call solve_set(patch, material(), options, set, fx, fy, error)
-         if (allocated(error)) return
+         ! Best of three timed runs: the cost per case of each configuration, same run.
+         cost(ic) = huge(1.0_wp)
+         do rep = 1, 3
+            call system_clock(t0, rate)
+            call solve_set(patch, material(), options, set, fx, fy, error)
+            if (allocated(error)) return
+            call system_clock(t1)
+            cost(ic) = min(cost(ic), 1.0e6_wp*real(t1 - t0, wp)/real(rate, wp)/n)
+         end do
          ex(ic) = error_stats(abs(fx - set%fx))
          ey(ic) = error_stats(abs(fy - set%fy))
          bx(ic) = sum((fx - set%fx)*sign(1.0_wp, set%fx))/n
@@ -206,6 +226,8 @@ contains
          error)
       if (.not. allocated(error)) call parse_spin_flexibility(trim(c_flex(ic)), &
          options%spin_flexibility, error)
+      if (.not. allocated(error)) call parse_flexibility(trim(c_flexibility(ic)), &
+         options%flexibility, error)
       options%n_elements = 50
       options%fields = .false.
    end subroutine options_of

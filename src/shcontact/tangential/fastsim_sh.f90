@@ -23,7 +23,7 @@ module shcontact_tangential_fastsim_sh
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
-      bound_ellipsoidal, spin_flexibility_spin
+      bound_ellipsoidal, spin_flexibility_spin, flexibility_patch
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_spin, only: geometric_spin, strip_spin_terms
@@ -50,7 +50,7 @@ contains
       !> Set for invalid input; stat_no_contact when no strip is loaded.
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0, &
-         cos0
+         cos0, ae, be, c11e, c22e, c23e
       integer :: i, s, n_inactive
 
       call check_material(material, error)
@@ -68,12 +68,19 @@ contains
       cos0 = cos(patch%gamma0)
       ws%bound = options%bound
       ws%spin_model = options%spin_model
+      ws%flexibility = options%flexibility
       ws%fields = options%fields
       ws%friction = mu
       ws%dy = patch%dy
       ws%y_offset = 0.0_wp
       ws%gamma0 = patch%gamma0
       ws%phi_geo0 = geometric_spin(patch%gamma0, r0)
+
+      if (options%flexibility == flexibility_patch) then
+         call equivalent_ellipse(patch, ae, be)
+         call kalker_coefficients(ae/be, material%poisson, c11e, c22e, c23e, &
+            options%kalker_scheme)
+      end if
 
       s = 0
       n_inactive = 0
@@ -99,9 +106,17 @@ contains
          ! physics.md §6.3/§6.5 step 2, each rate multiplied by a_i (a_i² for R_φ).
          ws%y(s) = y
          ws%a(s) = a
-         ws%akx(s) = 0.375_wp*g*c11*k
-         ws%aky(s) = 0.375_wp*g*c22*k
-         akphi = 4.0_wp/pi*g*c23*s_ratio*k
+         if (options%flexibility == flexibility_patch) then
+            ! The patch's own linear theory: L_x = 8a_e/(3Gc₁₁), L_y = 8a_e/(3Gc₂₂),
+            ! L_φ = πa_e√(a_e/b_e)/(4Gc₂₃) at a_e/b_e (physics.md §3.1), the same on every strip.
+            ws%akx(s) = 0.375_wp*g*c11e*a/ae
+            ws%aky(s) = 0.375_wp*g*c22e*a/ae
+            akphi = 4.0_wp/pi*g*c23e*sqrt(be/ae)*a/ae
+         else
+            ws%akx(s) = 0.375_wp*g*c11*k
+            ws%aky(s) = 0.375_wp*g*c22*k
+            akphi = 4.0_wp/pi*g*c23*s_ratio*k
+         end if
          ws%a2kphi(s) = akphi*a
          if (options%spin_flexibility == spin_flexibility_spin) then
             ws%akxs_y(s) = akphi*y
@@ -137,6 +152,29 @@ contains
       ws%parabolic_load_ratio = 32.0_wp/(9.0_wp*pi)*ws%parabolic_load_ratio/ws%load
       call set_element_grid(ws)
    end subroutine prepare_fastsim_sh
+
+   !> The equivalent ellipse of a strip patch: b_e half the loaded width (first to last loaded
+   !> strip), a_e from the area, π a_e b_e = Σ 2 a_i dy.
+   pure subroutine equivalent_ellipse(patch, ae, be)
+      !> The strip table (at least one loaded strip, checked).
+      type(normal_patch_type), intent(in) :: patch
+      !> Semi-axes along x and y (mm).
+      real(wp), intent(out) :: ae, be
+      real(wp) :: area, y_lo, y_hi
+      integer :: i
+
+      area = 0.0_wp
+      y_lo = huge(1.0_wp)
+      y_hi = -huge(1.0_wp)
+      do i = 1, patch%n_strips
+         if (.not. (patch%a(i) > 0.0_wp)) cycle
+         area = area + 2.0_wp*patch%a(i)*patch%dy
+         y_lo = min(y_lo, patch%y(i))
+         y_hi = max(y_hi, patch%y(i))
+      end do
+      be = 0.5_wp*(y_hi - y_lo + patch%dy)
+      ae = area/(pi*be)
+   end subroutine equivalent_ellipse
 
    !> FASTSIM_SH in one call: [[prepare_fastsim_sh]] then solve_prepared.
    pure subroutine solve_fastsim_sh(ws, patch, material, creepage, options, result, error)

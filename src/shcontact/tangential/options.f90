@@ -12,9 +12,11 @@ module shcontact_tangential_options
    public :: bound_ellipsoidal, bound_parabolic, bound_weighted, bound_weighted_slip, bound_clipped
    public :: spin_additive, spin_uniform, spin_scaled, spin_geometric
    public :: spin_flexibility_spin, spin_flexibility_longitudinal
+   public :: flexibility_strip, flexibility_patch, flexibility_carter
    public :: parse_method, parse_bound, parse_spin_model, parse_kalker_scheme, &
-      parse_spin_flexibility
-   public :: method_name, bound_name, spin_model_name, kalker_scheme_name, spin_flexibility_name
+      parse_spin_flexibility, parse_flexibility
+   public :: method_name, bound_name, spin_model_name, kalker_scheme_name, spin_flexibility_name, &
+      flexibility_name
 
    !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (physics.md §6.5).
    integer, parameter :: method_fastsim_sh = 1
@@ -48,6 +50,17 @@ module shcontact_tangential_options
    !> `spin_flexibility = 'longitudinal'`: all of ν_xi builds up with L_x,i (seed eq 21 literally).
    integer, parameter :: spin_flexibility_longitudinal = 2
 
+   !> `flexibility = 'strip'`: each strip's flexibilities L_x, L_y, L_φ are those of its own local
+   !> Hertz ellipse (physics.md §6.3, seed eq 21).
+   integer, parameter :: flexibility_strip = 1
+   !> `flexibility = 'patch'`: one set L_x, L_y, L_φ for the whole patch, Kalker's linear theory of
+   !> the patch's equivalent ellipse (doc/tangential.md, "Flexibilities").
+   integer, parameter :: flexibility_patch = 2
+   !> `flexibility = 'carter'`: each strip's own flexibilities, stiffened per strip and case so
+   !> that the strip's simplified-theory creep curve follows Carter's exact 2-D curve
+   !> (doc/tangential.md, "Flexibilities"); equal to 'strip' at small creepage.
+   integer, parameter :: flexibility_carter = 3
+
    character(len=*), parameter :: method_names(2) = [character(len=10) :: 'fastsim-sh', 'fastsim']
    character(len=*), parameter :: bound_names(5) = [character(len=13) :: 'ellipsoidal', &
       'parabolic', 'weighted', 'weighted-slip', 'clipped']
@@ -57,6 +70,8 @@ module shcontact_tangential_options
       'contact']
    character(len=*), parameter :: spin_flexibility_names(2) = [character(len=12) :: 'spin', &
       'longitudinal']
+   character(len=*), parameter :: flexibility_names(3) = [character(len=6) :: 'strip', 'patch', &
+      'carter']
 
    !> Largest accepted number of elements per strip.
    integer, parameter :: max_elements = 1000000
@@ -80,6 +95,10 @@ module shcontact_tangential_options
       !> [[spin_flexibility_longitudinal]] (seed eq 21 literally; best fit in doc/validation.md);
       !> [[spin_flexibility_spin]] makes FASTSIM_SH equal to FASTSIM on a Hertzian patch.
       integer :: spin_flexibility = spin_flexibility_longitudinal
+      !> Where the flexibilities come from: [[flexibility_strip]] (default, each strip's local
+      !> ellipse), [[flexibility_patch]] (the equivalent ellipse of the whole patch) or
+      !> [[flexibility_carter]] (each strip's, stiffened towards saturation by Carter's curve).
+      integer :: flexibility = flexibility_strip
       !> Fill the per-element fields of the result; .false. computes the totals only (faster).
       logical :: fields = .true.
    end type tangential_options_type
@@ -103,6 +122,8 @@ contains
       call check_code('kalker_scheme', options%kalker_scheme, kalker_scheme_names, error)
       if (allocated(error)) return
       call check_code('spin_flexibility', options%spin_flexibility, spin_flexibility_names, error)
+      if (allocated(error)) return
+      call check_code('flexibility', options%flexibility, flexibility_names, error)
       if (allocated(error)) return
       if (options%n_elements < 1 .or. options%n_elements > max_elements) then
          write (buf, '(i0)') options%n_elements
@@ -166,6 +187,17 @@ contains
       call parse_choice('spin_flexibility', text, spin_flexibility_names, code, error)
    end subroutine parse_spin_flexibility
 
+   !> Parse `flexibility`: 'strip', 'patch' or 'carter'.
+   pure subroutine parse_flexibility(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `flexibility_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('flexibility', text, flexibility_names, code, error)
+   end subroutine parse_flexibility
+
    !> Name of a method code ('?' when out of range).
    pure function method_name(code) result(name)
       !> A `method_*` code.
@@ -205,6 +237,14 @@ contains
       character(len=:), allocatable :: name
       name = choice_name(code, spin_flexibility_names)
    end function spin_flexibility_name
+
+   !> Name of a flexibility code ('?' when out of range).
+   pure function flexibility_name(code) result(name)
+      !> A `flexibility_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, flexibility_names)
+   end function flexibility_name
 
    !> Look `text` up in `names` (the code is the position); error lists the allowed values.
    pure subroutine parse_choice(option, text, names, code, error)
