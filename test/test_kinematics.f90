@@ -49,6 +49,8 @@ contains
          new_unittest('bad_state_rejected', test_bad_state), &
          new_unittest('independent_of_earlier_calls', test_history), &
          new_unittest('short_tables_equal_full_tables', test_short_tables), &
+         new_unittest('short_tables_equal_full_tables_yawed_vertical', &
+         test_short_tables_yawed_vertical), &
          new_unittest('yaw_table_matches_direct_fit', test_yaw_table), &
          new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin), &
          new_unittest('wheelset_both_wheels', test_wheelset), &
@@ -427,6 +429,54 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_short_tables
+
+   !> The kinematic call with its short strip tables (contact option kinematic_table_gap,
+   !> 0.25 mm) against the same call on the full 2 mm tables (kinematic_table_gap = table_gap),
+   !> yawed, with the vertical wheel load and its balance, from the tread to the flange root:
+   !> a contact inside the short tables gives the same forces (1e-9 of F_z on one patch).
+   subroutine test_short_tables_yawed_vertical(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: short, full
+      type(contact_result_type) :: s, f
+      type(lib_error), allocatable :: err
+      real(wp) :: yaws(3) = [-0.006_wp, 0.0_wp, 0.0047_wp], d
+      real(wp), parameter :: vertical_tol = 1.0e-5_wp
+      integer :: i, j
+
+      call short%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call full%init('builtin:S1002', 'builtin:UIC60', err, &
+         contact_options=contact_options_type(kinematic_table_gap=2.0_wp))
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do j = 1, size(yaws)
+         do i = -7, 7
+            call short%solve_kinematic(rolling(0.7_wp*i + 0.013_wp, yaws(j), 0.4e-3_wp), &
+               contact_load_type(load_vertical_force, f_z), s, err)
+            if (.not. allocated(err)) call full%solve_kinematic(rolling(0.7_wp*i + 0.013_wp, &
+               yaws(j), 0.4e-3_wp), contact_load_type(load_vertical_force, f_z), f, err)
+            call check(error, .not. allocated(err), 'solve_kinematic failed')
+            if (allocated(error)) return
+            call check(error, s%n_loaded, f%n_loaded)
+            if (allocated(error)) return
+            d = maxval(abs([s%track%fx - f%track%fx, s%track%fy - f%track%fy, &
+               s%track%fz - f%track%fz, s%patch(1:f%n_loaded)%fn - f%patch(1:f%n_loaded)%fn]))
+            ! Two patches: the cut of a patch's table at the ridge to its neighbour is raised to
+            ! the table's largest gap (shcontact_normal_loading's confine_to_basin), which the
+            ! table gap sets; within the vertical balance's tolerance then.
+            call check(error, d <= merge(1.0e-9_wp, vertical_tol, f%n_loaded == 1)*f_z, &
+               'short and full tables differ by '// &
+               real_text(d)//' N at t_y = '//real_text(0.7_wp*i + 0.013_wp)//' mm, yaw '// &
+               real_text(yaws(j)))
+            if (allocated(error)) return
+         end do
+      end do
+   contains
+      pure function real_text(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=24) :: text
+         write (text, '(es12.4)') x
+      end function real_text
+   end subroutine test_short_tables_yawed_vertical
 
    !> The yawed wheel interpolated in ψ² (shcontact_geometry_yaw) against the direct fit of the
    !> contact locus at yaw angles between the nodes: samples and spline coefficients within

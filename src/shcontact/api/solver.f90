@@ -82,10 +82,6 @@ module shcontact_api_solver
    !> (0.65 N of 64.7 kN), within at most max_vertical_iterations solutions.
    real(wp), parameter :: vertical_rtol = 1.0e-5_wp
    integer, parameter :: max_vertical_iterations = 30
-   !> Strip tables of a kinematic call end where the gap exceeds this (mm) — far beyond the
-   !> approach of a wheel load (~0.1 mm) — unless the contact reaches their end, when the call
-   !> is solved again with the options' table_gap (2 mm by default).
-   real(wp), parameter :: kinematic_table_gap = 0.5_wp
 
    !> The load of one solve.
    type :: contact_load_type
@@ -183,7 +179,7 @@ module shcontact_api_solver
       !> Geometry of the last position (valid when has_geometry).
       logical :: has_geometry = .false.
       real(wp) :: t_y = 0.0_wp, roll = 0.0_wp, yaw = 0.0_wp
-      !> The strip tables end at kinematic_table_gap (a kinematic call's first try).
+      !> The strip tables end at the options' kinematic_table_gap (a kinematic call's first try).
       logical :: short_tables = .false.
       type(contact_patches_type) :: patches
       !> Patches whose normal problem is prepared for this geometry.
@@ -405,7 +401,8 @@ contains
       options = self%tangential_options
       options%fields = present(fields)
       options%spin_model = spin_additive
-      ! First with strip tables to kinematic_table_gap (the approach of a wheel load is ~0.1 mm),
+      ! First with strip tables to the options' kinematic_table_gap (0.25 mm; the approach of a
+      ! wheel load is 0.05-0.25 mm),
       ! then, if a contact reaches the end of those tables, with the full ones.
       call kinematic_contact(self, state, local, load, options, .true., error)
       if (allocated(error)) then
@@ -658,14 +655,16 @@ contains
       position = wheelset_position_type(side=self%side, y_ws=t_y, roll=roll)
       if (yaw == 0.0_wp) then
          table_gap = self%prepared%options%table_gap
-         if (short) self%prepared%options%table_gap = min(table_gap, kinematic_table_gap)
+         if (short) self%prepared%options%table_gap = min(table_gap, &
+            self%prepared%options%kinematic_table_gap)
          call find_contact_patches(self%prepared, position, self%patches, error)
          self%prepared%options%table_gap = table_gap
       else
          call prepare_yaw(self, yaw, error)
          if (allocated(error)) return
          table_gap = self%yawed%options%table_gap
-         if (short) self%yawed%options%table_gap = min(table_gap, kinematic_table_gap)
+         if (short) self%yawed%options%table_gap = min(table_gap, &
+            self%yawed%options%kinematic_table_gap)
          call find_contact_patches(self%yawed, position, self%patches, error)
          self%yawed%options%table_gap = table_gap
       end if
