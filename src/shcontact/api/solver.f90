@@ -398,17 +398,24 @@ contains
       call check_call(state%y_ws, state%roll, load, creepage_type(), error)
       if (allocated(error)) return
       local = side_state(state, self%side)
+      ! The balance iterates on forces only; the fields, when asked for, come from one more
+      ! solve of the final state (the totals are the same with and without fields).
       options = self%tangential_options
-      options%fields = present(fields)
+      options%fields = .false.
       options%spin_model = spin_additive
-      ! First with strip tables to the options' kinematic_table_gap (0.25 mm; the approach of a
-      ! wheel load is 0.05-0.25 mm),
-      ! then, if a contact reaches the end of those tables, with the full ones.
+      ! First with strip tables to the options' kinematic_table_gap (0.25 mm by default; the
+      ! approach of a wheel load is 0.05-0.25 mm), then, if a contact reaches the end of those
+      ! tables, with the full ones.
       call kinematic_contact(self, state, local, load, options, .true., error)
       if (allocated(error)) then
          if (error%stat /= stat_no_contact) return
          deallocate (error)
          call kinematic_contact(self, state, local, load, options, .false., error)
+         if (allocated(error)) return
+      end if
+      if (present(fields)) then
+         options%fields = .true.
+         call kinematic_tangential(self, options, error)
          if (allocated(error)) return
       end if
       call summarise(self, result)
@@ -454,8 +461,9 @@ contains
    !> part S(q) = Σ N_i cos γ_i; the tangential forces add −T = −Σ F_y,i sin γ_i, which grow
    !> with the load. Each tangential solve gives τ = T/q; the normal problem alone is then
    !> brought to S(q) − τ q = F_z (cheap solves, S nearly ∝ q), and after two tangential solves
-   !> a secant step on the whole balance C(q) takes over. The iteration always starts from q = F_z, so a call does not depend on the
-   !> calls before it.
+   !> a secant step on the whole balance C(q) takes over. The iteration always starts from
+   !> q = F_z, so a call does not depend on the calls before it. The creepages depend on the
+   !> geometry only: they are computed once, before the iteration.
    subroutine kinematic_contact(self, state, local, load, options, short_tables, error)
       type(contact_solver_type), intent(inout) :: self
       !> The state in the track frame and in the wheel's side frame.
@@ -469,6 +477,8 @@ contains
       integer :: it, inner, k
 
       call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
+      if (allocated(error)) return
+      call kinematic_creepages(self, local, error)
       if (allocated(error)) return
       normal_load = load
       lifted = 0.0_wp
@@ -490,8 +500,9 @@ contains
          else
             call update_normal(self, normal_load, error)
             if (allocated(error)) return
+            vertical = strip_vertical(self)
          end if
-         call kinematic_tangential(self, local, options, error)
+         call kinematic_tangential(self, options, error)
          if (allocated(error)) return
          if (load%mode /= load_vertical_force) return
          carried = 0.0_wp
@@ -505,7 +516,7 @@ contains
                'wheel); expected a positive vertical force', stat_numerical)
             return
          end if
-         lifted = (strip_vertical(self) - carried)/normal_load%value
+         lifted = (vertical - carried)/normal_load%value
          q = normal_load%value*load%value/carried
          if (it >= 2 .and. (carried - c_prev)*(normal_load%value - q_prev) > 0.0_wp) then
             q = normal_load%value + (load%value - carried)*(normal_load%value - q_prev)/ &
@@ -538,25 +549,38 @@ contains
       end function strip_vertical
    end subroutine kinematic_contact
 
-   !> The tangential problem of every loaded patch with the creepages of the wheelset's motion at
-   !> its reference point.
-   subroutine kinematic_tangential(self, local, options, error)
+   !> The creepages of the wheelset's motion at the reference point of every patch found
+   !> (self%creepage).
+   subroutine kinematic_creepages(self, local, error)
       type(contact_solver_type), intent(inout) :: self
+      !> The state in the wheel's side frame.
       type(wheelset_state_type), intent(in) :: local
-      type(tangential_options_type), intent(in) :: options
       type(error_type), allocatable, intent(out) :: error
-      type(creepage_type) :: creepage
       type(contact_point_type) :: point
       real(wp) :: speed
       integer :: k
 
-      do k = 1, self%n_loaded
+      do k = 1, self%patches%count
          associate (g => self%patches%patch(k))
             point = contact_point_type(axle=g%y_wheel + axle_offset(self%track), &
                radius=g%r0, gamma=g%gamma0)
          end associate
-         call rigid_creepages(local, point, creepage, speed, error)
+         call rigid_creepages(local, point, self%creepage(k), speed, error)
          if (allocated(error)) return
+      end do
+   end subroutine kinematic_creepages
+
+   !> The tangential problem of every loaded patch with its creepages from
+   !> [[kinematic_creepages]].
+   subroutine kinematic_tangential(self, options, error)
+      type(contact_solver_type), intent(inout) :: self
+      type(tangential_options_type), intent(in) :: options
+      type(error_type), allocatable, intent(out) :: error
+      type(creepage_type) :: creepage
+      integer :: k
+
+      do k = 1, self%n_loaded
+         creepage = self%creepage(k)
          call solve_patch(self, k, creepage, options, error)
          if (allocated(error)) return
       end do
