@@ -24,7 +24,7 @@
 !> at the flange (t ≈ 2.6) and ψ = 4 mrad the lead is about 5 mm ([[contact_lead]]). The
 !> effective profile lies r(1 − cos θ) higher than the unyawed one, so it is on the flange that
 !> the yaw changes the gap (0.17 mm at 10 mrad and 70°); the rolling radius of the contact point
-!> stays r, while the effective profile's height gives r cos θ ([[yaw_radius_factor]]).
+!> stays r, while the effective profile's height gives r cos θ ([[true_radius_scale]]).
 module shcontact_geometry_kinematics
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
@@ -37,7 +37,7 @@ module shcontact_geometry_kinematics
    private
 
    public :: wheelset_state_type, check_wheelset_state, side_state, pure_rolling_pitch_rate
-   public :: yawed_wheel_profile, contact_lead, yaw_radius_factor, true_radius_scale, &
+   public :: yawed_wheel_profile, contact_lead, locus_tangent, true_radius_scale, &
       scale_to_true_radius, &
       axle_offset, max_yaw, &
       max_slope
@@ -134,13 +134,22 @@ contains
       axle_offset = 0.5_wp*track%flange_back_distance - track%flange_back_position
    end function axle_offset
 
-   !> sin θ and cos θ of the contact locus for a surface slope t = dz/dy (side frame) and the
-   !> yaw ψ of the side frame: tan θ = −t sin ψ, t limited to ±[[max_slope]].
-   elemental subroutine locus_angle(slope, yaw, sin_theta, cos_theta)
-      real(wp), intent(in) :: slope, yaw
+   !> tan θ of the contact locus for a surface slope t = dz/dy (side frame) and sin ψ of the side
+   !> frame's yaw: tan θ = −t sin ψ, t limited to ±[[max_slope]].
+   elemental real(wp) function locus_tangent(slope, sin_yaw) result(tan_theta)
+      !> Surface slope t = dz/dy (tan γ).
+      real(wp), intent(in) :: slope
+      !> sin ψ.
+      real(wp), intent(in) :: sin_yaw
+      tan_theta = -max(-max_slope, min(max_slope, slope))*sin_yaw
+   end function locus_tangent
+
+   !> sin θ and cos θ of the contact locus ([[locus_tangent]]).
+   elemental subroutine locus_angle(slope, sin_yaw, sin_theta, cos_theta)
+      real(wp), intent(in) :: slope, sin_yaw
       real(wp), intent(out) :: sin_theta, cos_theta
       real(wp) :: tan_theta
-      tan_theta = -max(-max_slope, min(max_slope, slope))*sin(yaw)
+      tan_theta = locus_tangent(slope, sin_yaw)
       cos_theta = 1.0_wp/sqrt(1.0_wp + tan_theta**2)
       sin_theta = tan_theta*cos_theta
    end subroutine locus_angle
@@ -151,7 +160,7 @@ contains
    !> rolls it as usual. The slopes come from the fitted spline at the profile's points, and the
    !> effective profile keeps the spline's knots as its parameter.
    !> z_tape stays that of the unyawed wheel, so the table's rolling radius r_nom + z − z_tape
-   !> is r cos θ ([[yaw_radius_factor]]).
+   !> is r cos θ ([[true_radius_scale]]).
    pure subroutine yawed_wheel_profile(wheel, spline, track, z_tape, yaw, yawed)
       !> The wheel profile as given (right-side canonical form).
       type(profile_type), intent(in) :: wheel
@@ -176,7 +185,7 @@ contains
       do i = 1, n
          p = spline%eval(spline%s(i), i)
          slope = p%dz/sign(max(abs(p%dy), abs(p%dz)/max_slope), p%dy)
-         call locus_angle(slope, yaw, sin_t, cos_t)
+         call locus_angle(slope, sy, sin_t, cos_t)
          r = track%nominal_radius + p%z - z_tape
          axle = p%y + axle_offset(track)
          yawed%y(i) = axle*cy + r*sin_t*sy - axle_offset(track)
@@ -199,21 +208,11 @@ contains
       real(wp), intent(in) :: gamma
       !> Yaw angle of the side frame (rad).
       real(wp), intent(in) :: yaw
-      real(wp) :: sin_t, cos_t
-      call locus_angle(tan(gamma), yaw, sin_t, cos_t)
-      x = -axle*sin(yaw) + radius*sin_t*cos(yaw)
+      real(wp) :: sin_t, cos_t, sy
+      sy = sin(yaw)
+      call locus_angle(tan(gamma), sy, sin_t, cos_t)
+      x = -axle*sy + radius*sin_t*cos(yaw)
    end function contact_lead
-
-   !> cos θ of the contact locus at contact angle γ: the effective profile's rolling radius is
-   !> r cos θ, the true one r.
-   elemental real(wp) function yaw_radius_factor(gamma, yaw) result(factor)
-      !> Contact angle γ (rad, CONTACT's sign, side frame).
-      real(wp), intent(in) :: gamma
-      !> Yaw angle of the side frame (rad).
-      real(wp), intent(in) :: yaw
-      real(wp) :: sin_t
-      call locus_angle(tan(gamma), yaw, sin_t, factor)
-   end function yaw_radius_factor
 
    !> 1/cos θ = √(1 + tan²θ), tan θ = −t sin ψ with t = tan γ limited as in the contact locus:
    !> the factor that turns the effective profile's rolling radius r cos θ into the true r. Takes
@@ -224,7 +223,7 @@ contains
       !> sin ψ of the side frame's yaw angle.
       real(wp), intent(in) :: sin_yaw
       real(wp) :: tan_t
-      tan_t = max(-max_slope, min(max_slope, tan(gamma)))*sin_yaw
+      tan_t = locus_tangent(tan(gamma), sin_yaw)
       scale = sqrt(1.0_wp + tan_t*tan_t)
    end function true_radius_scale
 
@@ -237,11 +236,9 @@ contains
       real(wp), intent(in) :: sin_yaw
       !> Rolling radii r cos θ on entry, r on return (mm).
       real(wp), intent(inout) :: radius(:)
-      real(wp) :: tan_t
       integer :: i
       do i = 1, size(radius)
-         tan_t = max(-max_slope, min(max_slope, tan(gamma(i))))*sin_yaw
-         radius(i) = radius(i)*sqrt(1.0_wp + tan_t*tan_t)
+         radius(i) = radius(i)*true_radius_scale(gamma(i), sin_yaw)
       end do
    end subroutine scale_to_true_radius
 

@@ -29,7 +29,7 @@ module shcontact_tangential_rigid_slip
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_strings, only: str_real
-   use shcontact_geometry_kinematics, only: wheelset_state_type, max_slope
+   use shcontact_geometry_kinematics, only: wheelset_state_type, locus_tangent
    use shcontact_tangential_creepage, only: creepage_type
    implicit none
    private
@@ -66,7 +66,7 @@ contains
       cy = cos(state%yaw); sy = sin(state%yaw)
       cr = cos(state%roll); sr = sin(state%roll)
       ! Contact-locus angle θ of the point (tan θ = −tan γ sin ψ).
-      tan_t = -max(-max_slope, min(max_slope, tan(point%gamma)))*sy
+      tan_t = locus_tangent(tan(point%gamma), sy)
       cos_t = 1.0_wp/sqrt(1.0_wp + tan_t**2)
       sin_t = tan_t*cos_t
       b = [point%radius*sin_t, point%axle, point%radius*cos_t]
