@@ -25,6 +25,8 @@ module shcontact_api_wheelset
 
    !> Index of the right and the left wheel in the arrays of this module.
    integer, parameter :: wheel_right = 1, wheel_left = 2
+   !> Names of the wheels in messages, by index.
+   character(len=5), parameter :: wheel_names(2) = ['right', 'left ']
 
    !> The result of one wheelset call.
    type :: wheelset_result_type
@@ -70,14 +72,13 @@ contains
       type(tangential_options_type), intent(in), optional :: tangential_options
       integer :: k
       integer, parameter :: sides(2) = [side_right, side_left]
-      character(len=5), parameter :: names(2) = ['right', 'left ']
 
       do k = 1, 2
          call self%wheel(k)%init(wheel, rail, error, track=track, material=material, &
             side=sides(k), contact_options=contact_options, normal_options=normal_options, &
             tangential_options=tangential_options)
          if (allocated(error)) then
-            call prefix_error(error, trim(names(k))//' wheel')
+            call prefix_error(error, trim(wheel_names(k))//' wheel')
             return
          end if
       end do
@@ -97,7 +98,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: k, p
       real(wp) :: side, fy
-      character(len=5), parameter :: names(2) = ['right', 'left ']
 
       do k = 1, 2
          if (k == wheel_right) then
@@ -106,7 +106,7 @@ contains
             call self%wheel(k)%solve_kinematic(state, load_left, result%wheel(k), error)
          end if
          if (allocated(error)) then
-            call prefix_error(error, trim(names(k))//' wheel')
+            call prefix_error(error, trim(wheel_names(k))//' wheel')
             return
          end if
       end do
