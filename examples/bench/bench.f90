@@ -9,9 +9,9 @@
 !>     --batch-time S         target length of one timed batch in s (default 0.01)
 !>     --doe-runs N           repetitions of each DOE run (default 5)
 !>     --quick                --runs 5 --batch-time 0.002 --doe-runs 2 (for slow builds)
-!>     --only SECTION         run one section: geometry, tangential, full, doe, moving (no
-!>                            checks), or scan (every 0.01 mm position, failed calls; not in
-!>                            the default run)
+!>     --only SECTION         run one section: geometry, tangential, full, doe, moving,
+!>                            defaults (new against old defaults; no checks), or scan (every
+!>                            0.01 mm position, failed calls; not in the default run)
 !>     --output FILE          HDF5 file of the DOE (default build/shcontact_bench_doe.h5)
 !>     --save-results FILE    write the forces of the checked cases to a text file
 !>     --compare-results FILE compare the forces with a file saved by another build
@@ -32,7 +32,7 @@ program shcontact_bench
       march_workspace_type, prepare_fastsim_sh, creepage_type, tangential_patch_type, &
       solve_tangential, bound_name, parse_bound, parse_spin_model, shcontact_version, &
       contact_solver_type
-   use shcontact_normal_options, only: method_hertz
+   use shcontact_normal_options, only: method_hertz, reduction_local_hertz
    use shcontact_tangential_options, only: bound_weighted
    use shcontact_io_config, only: case_config_type, case_point_type, load_config, axis_load
    use shcontact_case_runner, only: run_setup_type, prepare_run
@@ -108,6 +108,7 @@ program shcontact_bench
    if (wanted('full')) call bench_full_case()
    if (wanted('doe')) call bench_doe()
    if (wanted('moving')) call bench_moving_wheel()
+   if (wanted('defaults')) call bench_defaults()
    if (config%only == 'scan') call bench_scan()
    if (len(config%only) == 0) call check_results()
    call print_summary()
@@ -162,7 +163,7 @@ contains
          case ('--only')
             config%only = trim(val)
             if (all(config%only /= [character(len=10) :: 'geometry', 'tangential', 'full', &
-               'doe', 'moving', 'scan'])) stat = 1
+               'doe', 'moving', 'defaults', 'scan'])) stat = 1
          case ('--output')
             config%output = trim(val)
          case ('--save-results')
@@ -444,6 +445,53 @@ contains
       summary%moving_ratio = t_moving%median/t_fixed%median
    end subroutine bench_moving_wheel
 
+   !> The defaults of issue 13 against the old ones, same run: the normal reduction `coupled`
+   !> (the strips' load redistributed through the half-space) against `local-hertz`, on the
+   !> full case at a fixed position (normal solve for the load + tangential) and on the
+   !> kinematic call along the hunting trajectory, with the ratios new/old.
+   subroutine bench_defaults()
+      type(full_case_kernel) :: full(2)
+      type(kinematic_kernel) :: moving(2)
+      type(timing_type) :: t_full(2), t_moving(2)
+      type(normal_options_type) :: old
+      character(len=*), parameter :: names(2) = [character(len=11) :: 'coupled', 'local-hertz']
+      integer :: c
+
+      call section('defaults: normal reduction coupled (new, issue 13) against local-hertz '// &
+         '(old), 100 strips x 50 elements, same run')
+      old = normal_options
+      old%reduction = reduction_local_hertz
+      do c = 1, 2
+         full(c)%n_strips = sizes(3)
+         full(c)%contact = normal_contact(sizes(3), reduction=merge(normal_options%reduction, &
+            old%reduction, c == 1))
+         full(c)%load = case_load
+         full(c)%material = material
+         full(c)%options = tangential_options
+         full(c)%options%fields = .false.
+         full(c)%creepage = headline
+         call moving(c)%solver%init('builtin:S1002', 'builtin:UIC60', error)
+         call stop_on(error, 'solver init')
+         if (c == 2) call moving(c)%solver%set_options(error, normal=old)
+         call stop_on(error, 'set_options')
+         moving(c)%states = hunting_states(1000)
+         call moving(c)%run(1)
+      end do
+      ! Interleaved: new, old, new, old … so that both see the same machine load.
+      do c = 1, 2
+         t_full(c) = time_kernel(full(c), config%runs, config%batch_time)
+         call report(full(c), t_full(c), 'full case, fixed position, '//trim(names(c)))
+      end do
+      do c = 1, 2
+         t_moving(c) = time_kernel(moving(c), config%runs, config%batch_time)
+         call report(moving(c), t_moving(c), 'kinematic call, hunting, '//trim(names(c)))
+      end do
+      write (output_unit, '(2x,a,f6.2,a,f6.2,a,i0)') 'ratio new/old defaults: full case ', &
+         t_full(1)%median/t_full(2)%median, ', wheel in motion ', &
+         t_moving(1)%median/t_moving(2)%median, '; failed calls: ', moving(1)%failures + &
+         moving(2)%failures
+   end subroutine bench_defaults
+
    !> Every 0.01 mm position from -10 to 10 mm at yaw 0 and +-10 mrad: the failed calls.
    subroutine bench_scan()
       type(contact_solver_type) :: solver
@@ -722,9 +770,11 @@ contains
    ! ------------------------------------------------------------------------------ helpers
 
    !> The case's patch prepared for the strip method (or the Hertz method) with n strips.
-   function normal_contact(n, hertz) result(contact)
+   function normal_contact(n, hertz, reduction) result(contact)
       integer, intent(in) :: n
       logical, intent(in), optional :: hertz
+      !> Normal reduction code (default: the case's).
+      integer, intent(in), optional :: reduction
       type(normal_contact_type) :: contact
       type(normal_options_type) :: options
 
@@ -733,6 +783,7 @@ contains
       if (present(hertz)) then
          if (hertz) options%method = method_hertz
       end if
+      if (present(reduction)) options%reduction = reduction
       call prepare_normal_contact(contact, patches(1), options, material, error)
       call stop_on(error, 'prepare_normal_contact')
    end function normal_contact

@@ -11,7 +11,8 @@ module shcontact_math_lapack
    implicit none
    private
 
-   public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense
+   public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense, &
+      solve_dense_leading
 
    ! Explicit interfaces to the reference LAPACK routines used by the wrappers.
    interface
@@ -132,6 +133,30 @@ contains
       call dgesv(n, size(b, 2), a, n, ipiv, b, size(b, 1), info)
       call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
    end subroutine solve_dense
+
+   !> Solve the leading n × n block of `a` with one right-hand side, the first n entries of `b`
+   !> (LAPACK `dgesv` with the leading dimension of `a`: fixed-size work arrays, no copy).
+   pure subroutine solve_dense_leading(n, a, b, ipiv, error)
+      !> Order of the system, 1 ≤ n ≤ min(size(a, 1), size(a, 2), size(b), size(ipiv)).
+      integer, intent(in) :: n
+      !> Matrix in its leading block; overwritten by its LU factors.
+      real(wp), intent(inout) :: a(:, :)
+      !> Right-hand side on entry, solution on return (first n entries).
+      real(wp), intent(inout) :: b(:)
+      !> Pivot indices (workspace of the caller, so that nothing is allocated here).
+      integer, intent(out) :: ipiv(:)
+      !> Set when the block is singular or does not fit.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: info
+
+      if (n < 1 .or. n > size(a, 1) .or. n > size(a, 2) .or. n > size(b) .or. &
+         n > size(ipiv)) then
+         call fatal_error(error, 'dgesv: the leading block does not fit the arrays', stat_usage)
+         return
+      end if
+      call dgesv(n, 1, a, size(a, 1), ipiv, b, size(b), info)
+      call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
+   end subroutine solve_dense_leading
 
    !> Turn a LAPACK info code into an error naming the routine.
    pure subroutine check_info(routine, info, before, after, error)

@@ -15,13 +15,15 @@ module shcontact_normal_options
    integer, parameter :: method_semi_hertz = 1
    !> `method = 'hertz'`: one Hertz ellipse from the curvatures at the reference point.
    integer, parameter :: method_hertz = 2
-   !> `reduction = 'local-hertz'`: ε_a, ε_b from the local Hertz problem at A(y)/B(y) (default).
+   !> `reduction = 'local-hertz'`: ε_a, ε_b from the local Hertz problem at A(y)/B(y) (the
+   !> default before issue 13).
    integer, parameter :: reduction_local_hertz = 1
    !> `reduction = 'constant'`: ε_a = ε_b = `epsilon` everywhere (Kik–Piotrowski virtual
    !> penetration ε·δ).
    integer, parameter :: reduction_constant = 2
-   !> `reduction = 'coupled'`: the local-Hertz strips, then their load redistributed through the
-   !> half-space coupling between strips (shcontact_normal_coupling; 5–20 ms per solve).
+   !> `reduction = 'coupled'` (default since issue 13): the local-Hertz strips, then their load
+   !> redistributed through the half-space coupling between strips (shcontact_normal_coupling;
+   !> about 10 µs per solve; doc/validation.md §6.4).
    integer, parameter :: reduction_coupled = 3
 
    !> Largest number of strips accepted (a guard against typing errors, not a numerical limit).
@@ -34,7 +36,7 @@ module shcontact_normal_options
       integer :: method = method_semi_hertz
       !> [[reduction_local_hertz]], [[reduction_constant]] or [[reduction_coupled]] (semi-Hertz
       !> method only).
-      integer :: reduction = reduction_local_hertz
+      integer :: reduction = reduction_coupled
       !> Constant penetration fraction ε of the `'constant'` reduction, 0 < ε ≤ 1.
       real(wp) :: epsilon = 0.55_wp
       !> Number of strips per patch n_y (decision 11).

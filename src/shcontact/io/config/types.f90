@@ -100,7 +100,7 @@ module shcontact_io_config_types
    !> `&normal`: the normal solver.
    type :: normal_config_type
       character(len=name_len) :: method = 'semi-hertz'
-      character(len=name_len) :: reduction = 'local-hertz'
+      character(len=name_len) :: reduction = 'coupled'
       real(wp) :: epsilon = 0.55_wp
       integer :: n_strips = 100
       !> Clamp of B(y) (1/mm), physics.md decision 4.
