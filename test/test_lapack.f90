@@ -4,7 +4,7 @@ module test_lapack
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_numerical
    use shcontact_math_lapack, only: solve_spd_banded, solve_general_banded, solve_tridiagonal, &
-      solve_dense
+      solve_dense, solve_dense_leading
    implicit none
    private
    public :: collect_lapack
@@ -21,7 +21,8 @@ contains
          new_unittest('general_banded_known_solution', test_gb), &
          new_unittest('general_banded_singular_is_error', test_gb_singular), &
          new_unittest('tridiagonal_known_solution', test_tri), &
-         new_unittest('dense_singular_is_error', test_dense_singular) &
+         new_unittest('dense_singular_is_error', test_dense_singular), &
+         new_unittest('dense_leading_block_known_solution', test_dense_leading) &
          ]
    end subroutine collect_lapack
 
@@ -145,5 +146,41 @@ contains
       call solve_dense(a, b, err)
       call check(error, allocated(err), message='singular matrix must give an error')
    end subroutine test_dense_singular
+
+   !> solve_dense_leading on the leading block of larger arrays, against x_i = i: a nonsymmetric
+   !> matrix that needs pivoting (zero first diagonal), by its own elimination (order 6) and
+   !> through dgesv (order 40); a singular block is an error.
+   subroutine test_dense_leading(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      integer, parameter :: big = 40
+      real(wp) :: a(big + 3, big + 2), b(big + 5), x(big)
+      integer :: ipiv(big + 1), order, i, j, k
+
+      do k = 1, 2
+         order = merge(n, big, k == 1)
+         a = huge(1.0_wp)
+         b = huge(1.0_wp)
+         do j = 1, order
+            do i = 1, order
+               a(i, j) = 1.0_wp/real(i + 2*j, wp) + merge(3.0_wp, 0.0_wp, i == j .and. i > 1)
+            end do
+         end do
+         a(1, 1) = 0.0_wp
+         x(1:order) = [(real(i, wp), i=1, order)]
+         b(1:order) = matmul(a(1:order, 1:order), x(1:order))
+         call solve_dense_leading(order, a, b, ipiv, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, maxval(abs(b(1:order) - x(1:order))), 0.0_wp, thr=1.0e-10_wp, &
+            message='order '//merge('6 ', '40', k == 1))
+         if (allocated(error)) return
+      end do
+      a(1:3, 1:3) = reshape([1, 2, 3, 2, 4, 6, 0, 1, 1], [3, 3])
+      b(1:3) = 1
+      call solve_dense_leading(3, a, b, ipiv, err)
+      call check(error, allocated(err), message='singular block must give an error')
+   end subroutine test_dense_leading
 
 end module test_lapack

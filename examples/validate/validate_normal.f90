@@ -236,7 +236,7 @@ contains
       type(csv_table_type) :: table
       real(wp), allocatable :: iy(:), y(:), x(:), pn(:)
       real(wp) :: dx, dy, a_h
-      integer :: n_rows, r, i, j
+      integer :: n_rows, r, i, j, iy0
 
       call read_csv(grid_path, table, error)
       if (allocated(error)) return
@@ -248,9 +248,22 @@ contains
       if (allocated(error)) return
       call column(table, 'pn_MPa', pn, error)
       if (allocated(error)) return
-      n_rows = nint(maxval(iy))
-      dx = x(2) - x(1)
-      dy = (maxval(y) - minval(y))/(n_rows - 1)
+      ! The file may hold the whole grid or only the elements in contact (data/exact/): the
+      ! steps are the smallest spacings, the strips run from the first to the last row present.
+      iy0 = nint(minval(iy))
+      n_rows = nint(maxval(iy)) - iy0 + 1
+      dx = huge(1.0_wp)
+      dy = huge(1.0_wp)
+      do i = 2, size(pn)
+         if (nint(iy(i)) == nint(iy(i - 1)) .and. abs(x(i) - x(i - 1)) > 0.0_wp) &
+            dx = min(dx, abs(x(i) - x(i - 1)))
+         if (nint(iy(i)) /= nint(iy(i - 1)) .and. abs(y(i) - y(i - 1)) > 0.0_wp) &
+            dy = min(dy, abs(y(i) - y(i - 1))/abs(iy(i) - iy(i - 1)))
+      end do
+      if (dx == huge(1.0_wp) .or. dy == huge(1.0_wp)) then
+         call fatal_error(error, grid_path//': fewer than two grid steps in x or y')
+         return
+      end if
 
       patch = ours
       patch%n_strips = n_rows
@@ -262,9 +275,11 @@ contains
          patch%gamma(n_rows), patch%delta_r(n_rows), patch%r_wheel(n_rows))
       patch%a = 0.0_wp
       patch%strip_load = 0.0_wp
+      do r = 1, n_rows
+         patch%y(r) = y(1) - y_geo + real(r + iy0 - 1 - nint(iy(1)), wp)*dy
+      end do
       do i = 1, size(pn)
-         r = nint(iy(i))
-         patch%y(r) = y(i) - y_geo
+         r = nint(iy(i)) - iy0 + 1
          if (pn(i) > 0.0_wp) then
             patch%a(r) = patch%a(r) + 0.5_wp*dx
             patch%strip_load(r) = patch%strip_load(r) + pn(i)*dx*dy

@@ -14,6 +14,9 @@ module shcontact_math_lapack
    public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense, &
       solve_dense_leading
 
+   !> Largest order [[solve_dense_leading]] eliminates itself (unblocked) instead of calling dgesv.
+   integer, parameter :: small_order = 32
+
    ! Explicit interfaces to the reference LAPACK routines used by the wrappers.
    interface
       pure subroutine dpbsv(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
@@ -134,8 +137,11 @@ contains
       call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
    end subroutine solve_dense
 
-   !> Solve the leading n × n block of `a` with one right-hand side, the first n entries of `b`
-   !> (LAPACK `dgesv` with the leading dimension of `a`: fixed-size work arrays, no copy).
+   !> Solve the leading n × n block of `a` with one right-hand side, the first n entries of `b`:
+   !> Gaussian elimination with partial pivoting, unblocked, for n ≤ [[small_order]] (the
+   !> coupled reduction's systems of ≤ 17 unknowns, solved several times per contact call, where
+   !> the blocked `dgesv` spends more in its call tree than in the arithmetic), `dgesv` with the
+   !> leading dimension of `a` above. Fixed-size work arrays, no copy, nothing allocated.
    pure subroutine solve_dense_leading(n, a, b, ipiv, error)
       !> Order of the system, 1 ≤ n ≤ min(size(a, 1), size(a, 2), size(b), size(ipiv)).
       integer, intent(in) :: n
@@ -147,15 +153,50 @@ contains
       integer, intent(out) :: ipiv(:)
       !> Set when the block is singular or does not fit.
       type(error_type), allocatable, intent(out) :: error
-      integer :: info
+      real(wp) :: t, f
+      integer :: info, i, j, k, p
 
       if (n < 1 .or. n > size(a, 1) .or. n > size(a, 2) .or. n > size(b) .or. &
          n > size(ipiv)) then
          call fatal_error(error, 'dgesv: the leading block does not fit the arrays', stat_usage)
          return
       end if
-      call dgesv(n, 1, a, size(a, 1), ipiv, b, size(b), info)
-      call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
+      if (n > small_order) then
+         call dgesv(n, 1, a, size(a, 1), ipiv, b, size(b), info)
+         call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', &
+            error)
+         return
+      end if
+      do k = 1, n
+         p = k - 1 + maxloc(abs(a(k:n, k)), dim=1)
+         ipiv(k) = p
+         if (.not. (abs(a(p, k)) > 0.0_wp)) then
+            call check_info('dgesv', k, 'U(', ',.) is exactly zero: the matrix is singular', &
+               error)
+            return
+         end if
+         if (p /= k) then
+            do j = k, n
+               t = a(k, j)
+               a(k, j) = a(p, j)
+               a(p, j) = t
+            end do
+            t = b(k)
+            b(k) = b(p)
+            b(p) = t
+         end if
+         do i = k + 1, n
+            f = a(i, k)/a(k, k)
+            a(i, k) = f
+            do j = k + 1, n
+               a(i, j) = a(i, j) - f*a(k, j)
+            end do
+            b(i) = b(i) - f*b(k)
+         end do
+      end do
+      do i = n, 1, -1
+         b(i) = (b(i) - dot_product(a(i, i + 1:n), b(i + 1:n)))/a(i, i)
+      end do
    end subroutine solve_dense_leading
 
    !> Turn a LAPACK info code into an error naming the routine.
