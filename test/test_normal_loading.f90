@@ -9,7 +9,9 @@ module test_normal_loading
    use shcontact_core_material, only: material_type
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_options, only: normal_options_type, method_hertz
+   use shcontact_normal_options, only: normal_options_type, method_hertz, reduction_local_hertz, &
+      reduction_coupled
+   use shcontact_normal_coupling, only: couple_strips
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_builtin, only: builtin_profile
    use shcontact_geometry_track, only: track_type, wheelset_position_type
@@ -42,6 +44,8 @@ contains
          new_unittest('hertz_method_approach', test_hertz_approach), &
          new_unittest('two_patches_balance', test_two_patches), &
          new_unittest('two_patches_hertz_method', test_two_patches_hertz), &
+         new_unittest('coupled_patches_far_apart', test_coupled_far), &
+         new_unittest('coupled_patches_close', test_coupled_close), &
          new_unittest('second_patch_apart', test_patch_apart), &
          new_unittest('vertical_load_errors', test_vertical_errors), &
          new_unittest('workspace_reuse', test_reuse), &
@@ -55,11 +59,13 @@ contains
    end subroutine collect_normal_loading
 
    !> Prepare the tread and flange patches with the given options.
-   subroutine two_contacts(contacts, options, error, gap_flange)
+   subroutine two_contacts(contacts, options, error, gap_flange, y_flange)
       type(normal_contact_type), intent(inout) :: contacts(2)
       type(normal_options_type), intent(in) :: options
       type(error_type), allocatable, intent(out) :: error
       real(wp), intent(in), optional :: gap_flange
+      !> Rail-profile y of the flange patch's reference point (mm; the tread patch's is 0).
+      real(wp), intent(in), optional :: y_flange
       type(patch_geometry_type) :: geom
       type(lib_error), allocatable :: err
       type(material_type) :: mat
@@ -72,6 +78,8 @@ contains
       if (.not. allocated(err)) then
          call polynomial_patch(geom, flange_a, flange_b, 4.0_wp, 0.005_wp, gamma0=flange_gamma, &
             gap0=gap)
+         geom%y_rail = -40.0_wp
+         if (present(y_flange)) geom%y_rail = y_flange
          call prepare_normal_contact(contacts(2), geom, options, mat, err)
       end if
       if (allocated(err)) call test_failed(error, err%message)
@@ -170,6 +178,9 @@ contains
       real(wp) :: dz
       integer :: k
 
+      ! The strips of each patch on their own (local-Hertz): each patch is then Hertz's at its
+      ! approach. The coupled default is tested below.
+      options%reduction = reduction_local_hertz
       call two_contacts(contacts, options, error)
       if (allocated(error)) return
       call solve_vertical_load(contacts, f_z, patches, dz, err)
@@ -194,6 +205,69 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_two_patches
+
+   !> `reduction = 'coupled'` with the two patches 500 mm apart along the profile, beyond the
+   !> separation distance: each is its own coupled solution (the local-Hertz patch coupled
+   !> alone) to rounding; the vertical balance and the common rigid approach are kept exactly.
+   subroutine test_coupled_far(error)
+      type(error_type), allocatable, intent(out) :: error
+      call coupled_pair(500.0_wp, error)
+   end subroutine test_coupled_far
+
+   !> The same 8 mm apart between reference points (a tread contact and a second one beside it,
+   !> as on the S1002 at t_y = 5 mm; their loaded extents are closer than 4 mm): each patch's
+   !> surface is pressed down by the other's load, so the smaller patch carries less than alone
+   !> (by more than 5 %) and the larger one more, while the vertical balance and the rigid
+   !> approaches stay those of the strips.
+   subroutine test_coupled_close(error)
+      type(error_type), allocatable, intent(out) :: error
+      call coupled_pair(8.0_wp, error)
+   end subroutine test_coupled_close
+
+   !> Two patches `distance` mm apart along the profile, vertical load, coupled reduction,
+   !> against the same patches with the local-Hertz strips each coupled alone.
+   subroutine coupled_pair(distance, error)
+      real(wp), intent(in) :: distance
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_options_type) :: options
+      type(normal_contact_type) :: contacts(2)
+      type(normal_patch_type) :: joint(2), alone(2)
+      real(wp), parameter :: f_z = 80000.0_wp, gaps(2) = [0.0_wp, flange_gap]
+      real(wp) :: dz, dz_alone, change(2)
+      integer :: k
+
+      options%reduction = reduction_local_hertz
+      call two_contacts(contacts, options, error, y_flange=-distance)
+      if (allocated(error)) return
+      call solve_vertical_load(contacts, f_z, alone, dz_alone, err)
+      do k = 1, 2
+         if (.not. allocated(err)) call couple_strips(alone(k), contacts(k)%e_star, err)
+         contacts(k)%options%reduction = reduction_coupled
+      end do
+      if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, joint, dz, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, dz, dz_alone, thr=1.0e-14_wp, rel=.true., message='rigid approach')
+      if (allocated(error)) return
+      call check(error, joint(1)%load*cos(tread_gamma) + joint(2)%load*cos(flange_gamma), &
+         f_z, thr=1.0e-10_wp, rel=.true., message='vertical balance')
+      if (allocated(error)) return
+      do k = 1, 2
+         call check(error, joint(k)%approach, dz*cos(merge(tread_gamma, flange_gamma, k == 1)) &
+            - gaps(k), thr=1.0e-14_wp, message='common rigid approach')
+         if (allocated(error)) return
+         change(k) = joint(k)%load/alone(k)%load - 1.0_wp
+      end do
+      if (distance > 100.0_wp) then
+         call check(error, maxval(abs(change)) < 1.0e-12_wp, message='patches far apart '// &
+            'should carry their own coupled loads')
+      else
+         call check(error, change(2) < -0.05_wp .and. change(1) > 0.0_wp, message='the '// &
+            'smaller patch should give load to the larger one')
+      end if
+   end subroutine coupled_pair
 
    !> The same with `method = 'hertz'`: the patch loads are Hertz's at δ_k to rounding.
    subroutine test_two_patches_hertz(error)

@@ -56,7 +56,8 @@ contains
          new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8), &
          new_unittest('doe_ty5p8_local_hertz_vs_exact', test_doe_ty5p8_local_hertz), &
          new_unittest('doe_ty5p8_carter_vs_exact', test_doe_ty5p8_carter), &
-         new_unittest('doe_project_positions_vs_exact', test_doe_positions) &
+         new_unittest('doe_project_positions_vs_exact', test_doe_positions), &
+         new_unittest('two_lobe_load_split_vs_exact', test_lobes) &
          ]
    end subroutine collect_validation
 
@@ -234,9 +235,9 @@ contains
       call check(error, percentile(ey, 0.8_wp), 0.028_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
       if (allocated(error)) return
-      call check(error, maxval(en), 0.107_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
+      call check(error, maxval(en), 0.056_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
       if (allocated(error)) return
-      call check(error, percentile(en, 0.8_wp), 0.099_wp, thr=0.005_wp, &
+      call check(error, percentile(en, 0.8_wp), 0.049_wp, thr=0.005_wp, &
          message='P80 |Delta F_n|/F_n')
    end subroutine test_kinematic
 
@@ -276,20 +277,25 @@ contains
       call check_row(ex, ey, [0.031_wp, 0.047_wp, 0.021_wp, 0.013_wp], 'ty5p8 carter', error)
    end subroutine test_doe_ty5p8_carter
 
-   !> The defaults on the project's own exact-theory positions (data/exact/, doc/validation.md
-   !> §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max |Δf_y|, P80 |Δf_x| /
-   !> P80 |Δf_y|), and the target P80 |Δf_x| ≤ 0.02 on every one. Needs ../shared/profiles.
+   !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
+   !> doc/validation.md §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max
+   !> |Δf_y|, P80 |Δf_x| / P80 |Δf_y|), and the target P80 |Δf_x| ≤ 0.02 where it is met.
+   !> Needs ../shared/profiles.
    subroutine test_doe_positions(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: names(4) = [character(len=7) :: 'yws-2p0', 'yws2p0', &
-         'yws3p5', 'yws6p5']
-      real(wp), parameter :: y_ws(4) = [-2.0_wp, 2.0_wp, 3.5_wp, 6.5_wp]
-      real(wp), parameter :: y_ref(4) = [755.8867_wp, 741.7663_wp, 739.5012_wp, 723.8171_wp]
-      real(wp), parameter :: rows(4, 4) = reshape([ &
+      character(len=*), parameter :: names(7) = [character(len=7) :: 'yws-4p0', 'yws-2p0', &
+         'yws1p0', 'yws2p0', 'yws3p5', 'yws4p4', 'yws6p5']
+      real(wp), parameter :: y_ws(7) = [-4.0_wp, -2.0_wp, 1.0_wp, 2.0_wp, 3.5_wp, 4.4_wp, 6.5_wp]
+      real(wp), parameter :: y_ref(7) = [757.2227_wp, 755.8867_wp, 745.1116_wp, 741.7663_wp, &
+         739.5012_wp, 738.1043_wp, 723.8171_wp]
+      real(wp), parameter :: rows(4, 7) = reshape([ &
+         0.030_wp, 0.056_wp, 0.011_wp, 0.036_wp, &
          0.038_wp, 0.053_wp, 0.011_wp, 0.035_wp, &
+         0.045_wp, 0.053_wp, 0.035_wp, 0.029_wp, &
          0.025_wp, 0.059_wp, 0.008_wp, 0.033_wp, &
          0.025_wp, 0.058_wp, 0.012_wp, 0.038_wp, &
-         0.035_wp, 0.027_wp, 0.020_wp, 0.019_wp], [4, 4])
+         0.025_wp, 0.059_wp, 0.011_wp, 0.038_wp, &
+         0.035_wp, 0.027_wp, 0.020_wp, 0.019_wp], [4, 7])
       real(wp), allocatable :: ex(:), ey(:)
       integer :: k
 
@@ -299,11 +305,57 @@ contains
          if (allocated(error) .or. .not. allocated(ex)) return
          call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
          if (allocated(error)) return
-         call check(error, percentile(ex, 0.8_wp) <= 0.02_wp, message=trim(names(k))// &
-            ': P80 |Delta f_x| above the target 0.02')
+         ! The target P80 |Δf_x| ≤ 0.02, except at Y_WS = 1 mm (doc/validation.md §6.4: the
+         ! 18 mm wide plateau patch, 0.035 against 0.127 with the old default).
+         if (names(k) /= 'yws1p0') call check(error, percentile(ex, 0.8_wp) <= 0.02_wp, &
+            message=trim(names(k))//': P80 |Delta f_x| above the target 0.02')
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions
+
+   !> The two-lobe positions Y_WS = 5.0 and 5.3 mm (data/exact/, doc/validation.md §6.5): CONTACT
+   !> has one patch with a tread and a flange-side lobe, we have two patches. Under CONTACT's
+   !> vertical load, the flange-side patch's share of the normal load is CONTACT's lobe share
+   !> (31.3 %, 71.6 %) within 1.5 points with the patches coupled (the default; 31.9 %, 70.2 %),
+   !> which the strips on their own miss by 3.6 and 5.4 points.
+   subroutine test_lobes(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: y_ws(2) = [5.0_wp, 5.3_wp], f_z(2) = [65057.01997_wp, 65156.70991_wp]
+      real(wp), parameter :: contact_share(2) = [0.312948_wp, 0.715826_wp]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(track_type) :: track
+      type(lib_error), allocatable :: err
+      real(wp) :: share
+      integer :: k, flange
+      logical :: there
+
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) then
+         call skip_test(error, '../shared/profiles is absent')
+         return
+      end if
+      track%rail_canted = .true.
+      call solver%init(profiles_dir//'MBench_S1002_v3.prw', profiles_dir//'MBench_UIC60_v3.prr', &
+         err, track=track, material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, &
+         friction=0.3_wp))
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do k = 1, 2
+         call solver%solve(y_ws(k), 0.0_wp, contact_load_type(load_vertical_force, f_z(k)), &
+            creepage_type(0.0_wp, 0.0_wp, 0.0_wp), result, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, result%n_loaded, 2, message='two loaded patches')
+         if (allocated(error)) return
+         flange = minloc(result%patch(1:2)%y_track, dim=1)
+         share = result%patch(flange)%fn/sum(result%patch(1:2)%fn)
+         call check(error, share, contact_share(k), thr=0.015_wp, message='flange-side share')
+         if (allocated(error)) return
+      end do
+   end subroutine test_lobes
 
    !> max |Δf_x|, max |Δf_y|, P80 |Δf_x|, P80 |Δf_y| against a table row, each within ±0.002.
    subroutine check_row(ex, ey, row, label, error)

@@ -17,6 +17,7 @@ module validate_patches
    use validate_normal, only: reference_pressure_patch, write_strips
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
       error_stats
+   use validate_lobes, only: run_lobes
    implicit none
    private
 
@@ -25,8 +26,8 @@ module validate_patches
    !> The patch folders: the two shared ones (under ../shared/reference/), then the positions of
    !> data/exact/ (doc/validation.md §6.5: CONTACT runs made for this project, same set-up).
    integer, parameter :: n_shared = 2
-   character(len=*), parameter :: patch_names(6) = [character(len=13) :: 'ty0_literal', &
-      'ty5p8_literal', 'yws-2p0', 'yws2p0', 'yws3p5', 'yws6p5']
+   character(len=*), parameter :: patch_names(9) = [character(len=13) :: 'ty0_literal', &
+      'ty5p8_literal', 'yws-4p0', 'yws-2p0', 'yws1p0', 'yws2p0', 'yws3p5', 'yws4p4', 'yws6p5']
    !> Where the project's own exact-theory positions are (relative to the repository root).
    character(len=*), parameter :: extra_root = 'data/exact/'
    !> Configurations: the defaults first, then one setting changed at a time; the last rows run
@@ -116,6 +117,7 @@ contains
       if (allocated(error)) return
       write (output_unit, '(a)') 'shcontact-validate: DOE on every patch written to '// &
          out_dir//'patches_doe.csv, patches_doe.md'
+      call run_lobes(prepared, out_dir, error)
    end subroutine run_patches
 
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip

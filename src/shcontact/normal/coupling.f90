@@ -40,10 +40,35 @@ module shcontact_normal_coupling
    implicit none
    private
 
-   public :: couple_strips
+   public :: couple_strips, couple_patches
 
-   !> Most groups of strips in the coupled solve (module text).
+   !> Most groups of strips per patch in the coupled solve (module text).
    integer, parameter, public :: max_groups = 16
+   !> Most patches of a wheel coupled together ([[couple_patches]]), and so most groups.
+   integer, parameter, public :: max_patches = 4
+   integer, parameter :: max_total = max_groups*max_patches
+   !> Patches whose loaded extents lie at most this far apart along the profile (mm) press each
+   !> other fully; beyond separate_distance not at all (CONTACT's D_COMB = 4 mm and D_SEP = 8 mm).
+   real(wp), parameter :: combine_distance = 4.0_wp, separate_distance = 8.0_wp
+
+   !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
+   !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
+   !> last_group(p), in the order of their strips.
+   type :: group_set_type
+      integer :: n = 0, n_patches = 0
+      integer :: patch(max_total) = 0
+      !> Width (mm), centre along the patch y (mm) and along the profile s (mm), mean half-length
+      !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), contact angle (rad),
+      !> coupled/local load ratio.
+      real(wp), dimension(max_total) :: width = 0.0_wp, yc = 0.0_wp, s = 0.0_wp, ac = 0.0_wp, &
+         gc = 0.0_wp, local = 0.0_wp, gamma = 0.0_wp, ratio = 0.0_wp
+      integer, dimension(max_patches) :: first_group = 1, last_group = 0
+      !> Per set patch: local-Hertz load N_k (N) and cos γ_k.
+      real(wp), dimension(max_patches) :: patch_load = 0.0_wp, cos_gamma = 1.0_wp
+   contains
+      !> Empty the set (the arrays are kept).
+      procedure :: reset => reset_group_set
+   end type group_set_type
 
    !> Hastings' coefficients of K(m) and E(m) in m₁ = 1 − m (Abramowitz & Stegun 17.3.34, 17.3.36).
    real(wp), parameter :: hastings_ka(0:4) = [1.38629436112_wp, 0.09666344259_wp, &
@@ -86,17 +111,105 @@ contains
       real(wp), intent(in) :: e_star
       !> Set when the dense solve fails.
       type(error_type), allocatable, intent(out) :: error
-      real(wp), dimension(max_groups) :: width, yc, ac, gc, local, ratio, peak
-      real(wp) :: kern(max_groups, max_groups), kmat(max_groups + 1, max_groups + 1), &
-         rhs(max_groups + 1)
-      integer :: first(max_groups), last(max_groups), idx(max_groups), pivots(max_groups + 1)
-      logical :: in_contact(max_groups)
-      real(wp) :: load, g, t, r, total
-      integer :: n, m, ng, i, j, jg, mg, pass, c
+      type(group_set_type) :: set
+
+      call add_patch_groups(set, patch, 0.0_wp, 0.0_wp)
+      if (set%n < 1) return
+      call solve_groups(set, e_star, error)
+      if (allocated(error)) return
+      call scale_patch(set, 1, patch)
+   end subroutine couple_strips
+
+   !> The patches of one wheel coupled together (module text): the strips of every loaded patch
+   !> in one half-space problem, so that neighbouring patches press each other's surfaces down
+   !> and share the load as one contact would. The patches are placed along the profile by
+   !> `offset` (mm, the position of each reference point along the rail profile); a strip's
+   !> influence on another patch's strip is taken along that patch's normal, cos(γ_k − γ_l)
+   !> times the in-plane kernel. The patches move as one rigid body: their coupled approaches
+   !> differ from the local-Hertz ones by Δ cos γ_k with one vertical shift Δ, and the vertical
+   !> normal load Σ_k N_k cos γ_k is kept (so every loading mode keeps its balance) while each
+   !> patch's own load may change. A single loaded patch is [[couple_strips]]; loaded patches
+   !> beyond [[max_patches]] (the least loaded) are coupled alone.
+   pure subroutine couple_patches(patches, offset, e_star, error)
+      !> The strip tables of the wheel's patches (unloaded ones are skipped).
+      type(normal_patch_type), intent(inout) :: patches(:)
+      !> Position of each patch's reference point along the rail profile (mm).
+      real(wp), intent(in) :: offset(:)
+      !> E* = G/(1 − ν) (MPa).
+      real(wp), intent(in) :: e_star
+      !> Set when a dense solve fails.
+      type(error_type), allocatable, intent(out) :: error
+      type(group_set_type) :: set, single
+      real(wp) :: shift(max_patches)
+      integer :: order(max_patches), n_joint, k, i, g1
+
+      ! The most loaded patches, at most max_patches of them, in one problem.
+      n_joint = 0
+      do k = 1, size(patches)
+         if (.not. (patches(k)%load > 0.0_wp) .or. patches(k)%is_hertz) cycle
+         if (n_joint < max_patches) then
+            n_joint = n_joint + 1
+            order(n_joint) = k
+         else
+            i = minloc(patches(order(1:n_joint))%load, dim=1)
+            if (patches(k)%load > patches(order(i))%load) then
+               call couple_strips(patches(order(i)), e_star, error)
+               order(i) = k
+            else
+               call couple_strips(patches(k), e_star, error)
+            end if
+            if (allocated(error)) return
+         end if
+      end do
+      if (n_joint < 1) return
+      if (n_joint == 1) then
+         call couple_strips(patches(order(1)), e_star, error)
+         return
+      end if
+      ! Each patch alone first: the shift c_k = δ'_k − δ_k of its own coupled solution. The
+      ! joint problem starts from those, so that patches too far apart to press each other keep
+      ! their own coupled solutions (the load–approach relation of each stays the strips').
+      do i = 1, n_joint
+         k = order(i)
+         call single%reset()
+         call add_patch_groups(single, patches(k), 0.0_wp, patches(k)%gamma0)
+         shift(i) = 0.0_wp
+         if (single%n < 1) cycle
+         call solve_groups(single, e_star, error, shift(i))
+         if (allocated(error)) return
+         shift(i) = shift(i)*cos(patches(k)%gamma0)
+      end do
+      do i = 1, n_joint
+         k = order(i)
+         g1 = set%n + 1
+         call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
+         set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)
+      end do
+      if (set%n < 1) return
+      call solve_groups(set, e_star, error)
+      if (allocated(error)) return
+      do i = 1, n_joint
+         call scale_patch(set, i, patches(order(i)))
+      end do
+   end subroutine couple_patches
+
+   !> Append the groups of one patch's loaded strips to the set (module text). Group centres
+   !> are offset + y (mm along the profile).
+   pure subroutine add_patch_groups(set, patch, offset, gamma)
+      type(group_set_type), intent(inout) :: set
+      type(normal_patch_type), intent(in) :: patch
+      !> Position of the patch's reference point along the profile (mm) and its contact angle.
+      real(wp), intent(in) :: offset, gamma
+      integer :: first(max_groups), last(max_groups)
+      integer :: m, ng, i, j, c, g, n
 
       n = patch%n_strips
-      load = sum(patch%strip_load(1:n))
-      if (.not. (load > 0.0_wp)) return
+      set%n_patches = set%n_patches + 1
+      set%first_group(set%n_patches) = set%n + 1
+      set%last_group(set%n_patches) = set%n
+      set%patch_load(set%n_patches) = sum(patch%strip_load(1:n))
+      set%cos_gamma(set%n_patches) = cos(gamma)
+      if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
       m = count(patch%a(1:n) > 0.0_wp .and. patch%k(1:n) > 0.0_wp)
       if (m < 1) return
       ng = min(m, max_groups)
@@ -105,83 +218,127 @@ contains
       if (mod(m, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
       call group_strips(patch, ng, m, first, last)
       do j = 1, ng
-         width(j) = 0.0_wp
-         yc(j) = 0.0_wp
-         ac(j) = 0.0_wp
-         gc(j) = 0.0_wp
-         local(j) = 0.0_wp
+         g = set%n + j
+         set%patch(g) = set%n_patches
+         set%gamma(g) = gamma
+         set%width(g) = 0.0_wp
+         set%yc(g) = 0.0_wp
+         set%ac(g) = 0.0_wp
+         set%gc(g) = 0.0_wp
+         set%local(g) = 0.0_wp
          c = 0
          do i = first(j), last(j)
             if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) cycle
             c = c + 1
-            yc(j) = yc(j) + patch%y(i)
-            ac(j) = ac(j) + patch%a(i)
-            ! δ_i = k_i² δ = δ − g_i/ε_b,i (physics.md §4.3 step 3).
-            gc(j) = gc(j) + (1.0_wp - patch%eps_a(i))*patch%approach*(1.0_wp - patch%k(i)**2)
-            local(j) = local(j) + patch%strip_load(i)
+            set%yc(g) = set%yc(g) + patch%y(i)
+            set%ac(g) = set%ac(g) + patch%a(i)
+            ! δ_i = k_i² δ = δ − g_i/ε_b,i (physics.md §4.3 step 3): the interpenetration
+            ! δ − g_i of the strip, its gap below the patch's approach.
+            set%gc(g) = set%gc(g) + patch%approach - (1.0_wp - patch%eps_a(i))* &
+               patch%approach*(1.0_wp - patch%k(i)**2)
+            set%local(g) = set%local(g) + patch%strip_load(i)
          end do
-         width(j) = real(c, wp)*patch%dy
-         yc(j) = yc(j)/real(c, wp)
-         ac(j) = ac(j)/real(c, wp)
-         gc(j) = gc(j)/real(c, wp)
+         set%width(g) = real(c, wp)*patch%dy
+         set%yc(g) = set%yc(g)/real(c, wp)
+         set%ac(g) = set%ac(g)/real(c, wp)
+         set%gc(g) = set%gc(g)/real(c, wp)
+         set%s(g) = offset + set%yc(g)
       end do
-      do i = 1, ng
-         do j = 1, ng
-            kern(j, i) = group_influence(ac(i), yc(j) - yc(i), width(i))/(pi*e_star)
-         end do
-      end do
+      set%n = set%n + ng
+      set%last_group(set%n_patches) = set%n
+   end subroutine add_patch_groups
 
-      ! Active set over the groups: groups whose peak comes out negative leave the contact.
-      in_contact(1:ng) = .true.
-      peak(1:ng) = 0.0_wp
-      do pass = 1, ng
+   !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J = δ_J − g_J on every group in
+   !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set: groups with
+   !> a negative peak leave); set%ratio = coupled over local-Hertz load of each group.
+   pure subroutine solve_groups(set, e_star, error, shift)
+      type(group_set_type), intent(inout) :: set
+      real(wp), intent(in) :: e_star
+      type(error_type), allocatable, intent(out) :: error
+      !> The vertical shift Δ of the solution (mm).
+      real(wp), intent(out), optional :: shift
+      real(wp) :: kern(max_total, max_total), kmat(max_total + 1, max_total + 1), &
+         rhs(max_total + 1), peak(max_total), vertical, weight(max_patches, max_patches)
+      integer :: idx(max_total), pivots(max_total + 1)
+      logical :: in_contact(max_total)
+      integer :: n, i, j, mg, pass
+
+      n = set%n
+      call patch_weights(set, weight)
+      do i = 1, n
+         do j = 1, n
+            kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i))/ &
+               (pi*e_star)
+            if (set%patch(i) /= set%patch(j)) kern(j, i) = kern(j, i)*cos(set%gamma(j) - &
+               set%gamma(i))*weight(set%patch(j), set%patch(i))
+         end do
+      end do
+      vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
+      in_contact(1:n) = .true.
+      peak(1:n) = 0.0_wp
+      do pass = 1, n
          mg = 0
-         do j = 1, ng
+         do j = 1, n
             if (.not. in_contact(j)) cycle
             mg = mg + 1
             idx(mg) = j
          end do
-         if (mg < 1) return
+         if (mg < 1) exit
          do i = 1, mg
             do j = 1, mg
                kmat(j, i) = kern(idx(j), idx(i))
             end do
-            kmat(mg + 1, i) = 0.5_wp*pi*ac(idx(i))*width(idx(i))
-            kmat(i, mg + 1) = -1.0_wp
-            rhs(i) = -gc(idx(i))
+            kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))*cos(set%gamma(idx(i)))
+            kmat(i, mg + 1) = -cos(set%gamma(idx(i)))
+            rhs(i) = set%gc(idx(i))
          end do
          kmat(mg + 1, mg + 1) = 0.0_wp
-         rhs(mg + 1) = load
+         rhs(mg + 1) = vertical
          call solve_dense_leading(mg + 1, kmat, rhs, pivots, error)
          if (allocated(error)) return
-         peak(1:ng) = 0.0_wp
+         peak(1:n) = 0.0_wp
          peak(idx(1:mg)) = rhs(1:mg)
+         if (present(shift)) shift = rhs(mg + 1)
          if (all(peak(idx(1:mg)) >= 0.0_wp)) exit
-         where (peak(1:ng) < 0.0_wp) in_contact(1:ng) = .false.
+         where (peak(1:n) < 0.0_wp) in_contact(1:n) = .false.
       end do
+      do j = 1, n
+         set%ratio(j) = max(0.0_wp, 0.5_wp*pi*peak(j)*set%ac(j)*set%width(j))/set%local(j)
+      end do
+   end subroutine solve_groups
 
-      ! Coupled over local-Hertz load of each group, then per strip by linear interpolation
-      ! between group centres (constant beyond the outer centres).
-      do j = 1, ng
-         ratio(j) = max(0.0_wp, 0.5_wp*pi*peak(j)*ac(j)*width(j))/local(j)
-      end do
-      jg = 1
+   !> Scale the strips of the set's patch ip by their groups' ratios, interpolated between
+   !> group centres (constant beyond the outer ones); strips whose ratio vanishes leave the
+   !> contact. The patch's load becomes the sum of its coupled groups' loads.
+   pure subroutine scale_patch(set, ip, patch)
+      type(group_set_type), intent(in) :: set
+      integer, intent(in) :: ip
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp) :: load, total, t, r, g
+      integer :: i, jg, g1, g2, n
+
+      n = patch%n_strips
+      g1 = set%first_group(ip)
+      g2 = set%last_group(ip)
+      if (g2 < g1) return
+      load = sum(set%ratio(g1:g2)*set%local(g1:g2))
+      jg = g1
       do i = 1, n
          if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) then
             call leave_contact(patch, i)
             cycle
          end if
-         do while (jg < ng)
-            if (patch%y(i) < yc(jg + 1)) exit
+         do while (jg < g2)
+            if (patch%y(i) < set%yc(jg + 1)) exit
             jg = jg + 1
          end do
-         if (ng == 1 .or. patch%y(i) <= yc(1)) then
-            r = ratio(1)
-         else if (jg >= ng) then
-            r = ratio(ng)
+         if (g1 == g2 .or. patch%y(i) <= set%yc(g1)) then
+            r = set%ratio(g1)
+         else if (jg >= g2) then
+            r = set%ratio(g2)
          else
-            t = (patch%y(i) - yc(jg))/(yc(jg + 1) - yc(jg))
-            r = (1.0_wp - t)*ratio(jg) + t*ratio(jg + 1)
+            t = (patch%y(i) - set%yc(jg))/(set%yc(jg + 1) - set%yc(jg))
+            r = (1.0_wp - t)*set%ratio(jg) + t*set%ratio(jg + 1)
          end if
          if (r > 0.0_wp) then
             patch%strip_load(i) = r*patch%strip_load(i)
@@ -190,7 +347,17 @@ contains
          end if
       end do
       total = sum(patch%strip_load(1:n))
-      if (.not. (total > 0.0_wp)) return
+      if (.not. (total > 0.0_wp) .or. .not. (load > 0.0_wp)) then
+         patch%strip_load(1:n) = 0.0_wp
+         patch%a(1:n) = 0.0_wp
+         patch%k(1:n) = 0.0_wp
+         patch%p0(1:n) = 0.0_wp
+         patch%load = 0.0_wp
+         patch%area = 0.0_wp
+         patch%p_max = 0.0_wp
+         return
+      end if
+      ! The interpolation moved a little load between groups: restore the group sum.
       g = load/total
       do i = 1, n
          if (.not. (patch%strip_load(i) > 0.0_wp)) cycle
@@ -200,7 +367,40 @@ contains
       patch%load = load
       patch%area = 2.0_wp*sum(patch%a(1:n))*patch%dy
       patch%p_max = maxval(patch%p0(1:n))
-   end subroutine couple_strips
+   end subroutine scale_patch
+
+   !> How much two patches of the set press each other (module text): 1 when the gap between
+   !> their loaded extents along the profile is at most [[combine_distance]], 0 beyond
+   !> [[separate_distance]], linear between (CONTACT's rule for combining and separating contact
+   !> regions, D_COMB and D_SEP; beyond it the wheel and rail surfaces are no half-space).
+   pure subroutine patch_weights(set, weight)
+      type(group_set_type), intent(in) :: set
+      real(wp), intent(out) :: weight(max_patches, max_patches)
+      real(wp) :: lo(max_patches), hi(max_patches), d
+      integer :: p, q, g
+
+      lo = huge(1.0_wp)
+      hi = -huge(1.0_wp)
+      do g = 1, set%n
+         p = set%patch(g)
+         lo(p) = min(lo(p), set%s(g) - 0.5_wp*set%width(g))
+         hi(p) = max(hi(p), set%s(g) + 0.5_wp*set%width(g))
+      end do
+      do q = 1, set%n_patches
+         do p = 1, set%n_patches
+            d = max(0.0_wp, lo(q) - hi(p), lo(p) - hi(q))
+            weight(p, q) = min(1.0_wp, max(0.0_wp, (separate_distance - d)/ &
+               (separate_distance - combine_distance)))
+         end do
+      end do
+   end subroutine patch_weights
+
+   !> Empty a group set.
+   pure subroutine reset_group_set(set)
+      class(group_set_type), intent(inout) :: set
+      set%n = 0
+      set%n_patches = 0
+   end subroutine reset_group_set
 
    !> Split the loaded strips (a_i > 0, k_i > 0; m of them, in index order) into ng groups of
    !> consecutive loaded strips, as equal in number as possible; first(j)…last(j) is the index

@@ -16,7 +16,7 @@ module shcontact_normal_loading
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz, &
       reduction_coupled
-   use shcontact_normal_coupling, only: couple_strips
+   use shcontact_normal_coupling, only: couple_strips, couple_patches
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape_fast, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
@@ -50,6 +50,9 @@ module shcontact_normal_loading
       type(semihertz_geometry_type) :: geometry
       !> Hertz shape at A(0)/B(0): the `'hertz'` method and the first guess of force matching.
       type(hertz_shape_type) :: ref_shape
+      !> The reference point on the rail profile (side frame, mm) and its track height (mm):
+      !> where the patch lies along the profile, for the coupling between patches.
+      real(wp) :: y_rail = 0.0_wp, z_track = 0.0_wp
    end type normal_contact_type
 
    !> N(δ)^{2/3} − N_target^{2/3} of one patch, with δ = origin + x.
@@ -106,6 +109,8 @@ contains
       contact%options = options
       contact%material = material
       contact%e_star = material%e_star()
+      contact%y_rail = geometry%y_rail
+      contact%z_track = geometry%z_track
       call confine_to_basin(geometry, n_points, first, last, gap_first, gap_last, confined)
       if (confined) then
          call prepare_semihertz(geometry, options, contact%geometry, error, first=first, &
@@ -197,6 +202,34 @@ contains
       call couple_strips(patch, contact%e_star, error)
    end subroutine coupled_if_asked
 
+   !> `reduction = 'coupled'` for the patches of one wheel: their strips in one half-space problem
+   !> (shcontact_normal_coupling's couple_patches), placed along the rail profile by their
+   !> reference points; Σ_k N_k cos γ_k, hence the vertical balance, is kept.
+   subroutine patches_coupled_if_asked(contacts, patches, error)
+      type(normal_contact_type), intent(in) :: contacts(:)
+      type(normal_patch_type), intent(inout) :: patches(:)
+      type(error_type), allocatable, intent(out) :: error
+      !> More patches than this on one wheel are coupled one by one (a fixed-size work array).
+      integer, parameter :: most = 32
+      real(wp) :: offset(most), dy, dz
+      integer :: k
+
+      if (contacts(1)%options%reduction /= reduction_coupled) return
+      if (size(contacts) > most) then
+         do k = 1, size(contacts)
+            call coupled_if_asked(contacts(k), patches(k), error)
+            if (allocated(error)) return
+         end do
+         return
+      end if
+      do k = 1, size(contacts)
+         dy = contacts(k)%y_rail - contacts(1)%y_rail
+         dz = contacts(k)%z_track - contacts(1)%z_track
+         offset(k) = sign(sqrt(dy*dy + dz*dz), dy)
+      end do
+      call couple_patches(patches, offset(1:size(contacts)), contacts(1)%e_star, error)
+   end subroutine patches_coupled_if_asked
+
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
    !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
    !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
@@ -281,10 +314,7 @@ contains
             stat_numerical)
          return
       end if
-      do k = 1, size(contacts)
-         call coupled_if_asked(contacts(k), patches(k), error)
-         if (allocated(error)) return
-      end do
+      call patches_coupled_if_asked(contacts, patches, error)
    end subroutine solve_vertical_load
 
    !> Several patches at a prescribed rigid vertical approach Δz of the wheel (a vertical
@@ -328,10 +358,7 @@ contains
          return
       end if
       f_z = f%force
-      do k = 1, size(contacts)
-         call coupled_if_asked(contacts(k), patches(k), error)
-         if (allocated(error)) return
-      end do
+      call patches_coupled_if_asked(contacts, patches, error)
    end subroutine solve_vertical_approach
 
    !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md

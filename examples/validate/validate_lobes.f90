@@ -1,0 +1,123 @@
+!> doc/validation.md §6.5: the two-lobe positions of data/exact (Y_WS = 5.0 and 5.3 mm), where
+!> CONTACT's one contact patch holds a tread lobe and a flange-side lobe and we find two patches.
+!> Under CONTACT's vertical load, each of our patches against the lobe nearest it (track y of the
+!> lobe's pressure centre): the normal force with the strips of each patch on their own
+!> (`local-hertz`) and with the patches coupled through the half-space (`coupled`, the default).
+module validate_lobes
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use shcontact, only: wp, error_type, fatal_error, material_type, prepared_profiles_type, &
+      patch_geometry_type, normal_patch_type, find_contact_patches, wheelset_position_type, &
+      normal_options_type, new_normal_options, normal_contact_type, prepare_normal_contact, &
+      solve_vertical_load
+   use validate_csv, only: csv_table_type, read_csv, column, summary_value, csv_writer_type
+   implicit none
+   private
+
+   public :: run_lobes
+
+   !> The two-lobe positions (data/exact/<name>/ with lobes.csv).
+   character(len=*), parameter :: lobe_positions(2) = [character(len=7) :: 'yws5p0', 'yws5p3']
+   character(len=*), parameter :: extra_root = 'data/exact/'
+
+contains
+
+   !> Every two-lobe position: lobes.csv and lobes.md in out_dir.
+   subroutine run_lobes(prepared, out_dir, error)
+      !> The prepared Manchester profiles (validate_case%load_manchester).
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Output directory (with a trailing '/').
+      character(len=*), intent(in) :: out_dir
+      !> Set when a file cannot be read or written, or a solve fails.
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_writer_type) :: out
+      character(len=*), parameter :: reductions(2) = [character(len=11) :: 'local-hertz', &
+         'coupled']
+      type(csv_table_type) :: summary, lobes
+      real(wp), allocatable :: y_lobe(:), n_lobe(:)
+      real(wp) :: y_ws, f_z, y_ours(2), n_ours(2, 2)
+      character(len=1024) :: md
+      integer :: ip, il, ir, unit
+
+      call out%open(out_dir//'lobes.csv', 'position,y_ws_mm,fz_N,lobe,contact_y_track_mm,'// &
+         'contact_fn_N,ours_y_track_mm,fn_local_hertz_N,fn_coupled_N', error)
+      if (allocated(error)) return
+      open (newunit=unit, file=out_dir//'lobes.md', status='replace', action='write')
+      write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
+         'release` (lobes.csv) -->', '', 'F_n in kN (share of the position''s total in %)', '', &
+         '| position | lobe (CONTACT track y, mm) | CONTACT | our patch (track y, mm) | '// &
+         '`local-hertz` | `coupled` |', '|---|---|---|---|---|---|'
+      do ip = 1, size(lobe_positions)
+         call read_csv(extra_root//trim(lobe_positions(ip))//'/summary.csv', summary, error)
+         if (.not. allocated(error)) call summary_value(summary, 'y_ws', y_ws, error)
+         if (.not. allocated(error)) call summary_value(summary, 'fz_vertical_input', f_z, error)
+         if (.not. allocated(error)) call read_csv(extra_root//trim(lobe_positions(ip))// &
+            '/lobes.csv', lobes, error)
+         if (.not. allocated(error)) call column(lobes, 'ytr_cg', y_lobe, error)
+         if (.not. allocated(error)) call column(lobes, 'Fn', n_lobe, error)
+         if (allocated(error)) return
+         do ir = 1, size(reductions)
+            do il = 1, size(y_lobe)
+               call nearest_patch_load(prepared, y_ws, f_z, reductions(ir), y_lobe(il), &
+                  y_ours(il), n_ours(il, ir), error)
+               if (allocated(error)) return
+            end do
+         end do
+         do il = 1, size(y_lobe)
+            call out%row([y_ws, f_z, real(il, wp), y_lobe(il), n_lobe(il), y_ours(il), &
+               n_ours(il, 1), n_ours(il, 2)], text=[character(len=8) :: lobe_positions(ip)], &
+               digits=6)
+            write (md, '(a,f4.1,a,i0,a,f7.2,a,f6.2,a,f5.1,a,f7.2,a,2(f6.2,a,f5.1,a))') &
+               '| Y_WS = ', y_ws, ' mm | ', il, ' (', y_lobe(il), ') | ', &
+               1.0e-3_wp*n_lobe(il), ' (', 100.0_wp*n_lobe(il)/sum(n_lobe), ') | ', y_ours(il), &
+               ' | ', 1.0e-3_wp*n_ours(il, 1), ' (', 100.0_wp*n_ours(il, 1)/sum(n_ours(:, 1)), &
+               ') | ', 1.0e-3_wp*n_ours(il, 2), ' (', 100.0_wp*n_ours(il, 2)/sum(n_ours(:, 2)), &
+               ') |'
+            write (unit, '(a)') trim(md)
+         end do
+      end do
+      close (unit)
+      call out%close()
+      write (output_unit, '(a)') 'shcontact-validate: two-lobe positions written to '// &
+         out_dir//'lobes.csv, lobes.md'
+   end subroutine run_lobes
+
+   !> Our patches at y_ws under the vertical load f_z with the given reduction: the track y and
+   !> normal force of the patch whose reference point is nearest y_lobe.
+   subroutine nearest_patch_load(prepared, y_ws, f_z, reduction, y_lobe, y_ours, n_ours, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      real(wp), intent(in) :: y_ws, f_z, y_lobe
+      character(len=*), intent(in) :: reduction
+      real(wp), intent(out) :: y_ours, n_ours
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(normal_options_type) :: options
+      real(wp) :: dz
+      integer :: k, best
+
+      call find_contact_patches(prepared, wheelset_position_type(y_ws=y_ws), geometry, error)
+      if (allocated(error)) return
+      call new_normal_options(options, error, reduction=trim(reduction))
+      if (allocated(error)) return
+      allocate (contacts(size(geometry)), patches(size(geometry)))
+      do k = 1, size(geometry)
+         call prepare_normal_contact(contacts(k), geometry(k), options, material(), error)
+         if (allocated(error)) return
+      end do
+      call solve_vertical_load(contacts, f_z, patches, dz, error)
+      if (allocated(error)) return
+      best = 1
+      do k = 2, size(geometry)
+         if (abs(geometry(k)%y_track - y_lobe) < abs(geometry(best)%y_track - y_lobe)) best = k
+      end do
+      y_ours = geometry(best)%y_track
+      n_ours = patches(best)%load
+   end subroutine nearest_patch_load
+
+   !> README §2: G = 82670 MPa, ν = 0.27, μ = 0.3.
+   pure type(material_type) function material()
+      material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
+   end function material
+
+end module validate_lobes
