@@ -477,7 +477,7 @@ contains
          moving(c)%states = hunting_states(1000)
          call moving(c)%run(1)
       end do
-      ! Interleaved: new, old, new, old … so that both see the same machine load.
+      ! The new and the old defaults of each item are timed one right after the other.
       do c = 1, 2
          t_full(c) = time_kernel(full(c), config%runs, config%batch_time)
          call report(full(c), t_full(c), 'full case, fixed position, '//trim(names(c)))
