@@ -33,15 +33,20 @@ contains
       character(len=*), parameter :: reductions(2) = [character(len=11) :: 'local-hertz', &
          'coupled']
       type(csv_table_type) :: summary, lobes
-      real(wp), allocatable :: y_lobe(:), n_lobe(:)
-      real(wp) :: y_ws, f_z, y_ours(2), n_ours(2, 2)
-      character(len=1024) :: md
-      integer :: ip, il, ir, unit
+      real(wp), allocatable :: y_lobe(:), n_lobe(:), y_ours(:), n_ours(:, :)
+      real(wp) :: y_ws, f_z
+      character(len=1024) :: md, msg
+      integer :: ip, il, ir, unit, stat
 
       call out%open(out_dir//'lobes.csv', 'position,y_ws_mm,fz_N,lobe,contact_y_track_mm,'// &
          'contact_fn_N,ours_y_track_mm,fn_local_hertz_N,fn_coupled_N', error)
       if (allocated(error)) return
-      open (newunit=unit, file=out_dir//'lobes.md', status='replace', action='write')
+      open (newunit=unit, file=out_dir//'lobes.md', status='replace', action='write', &
+         iostat=stat, iomsg=msg)
+      if (stat /= 0) then
+         call fatal_error(error, out_dir//'lobes.md: cannot write ('//trim(msg)//')')
+         return
+      end if
       write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
          'release` (lobes.csv) -->', '', 'F_n in kN (share of the position''s total in %)', '', &
          '| position | lobe (CONTACT track y, mm) | CONTACT | our patch (track y, mm) | '// &
@@ -55,12 +60,12 @@ contains
          if (.not. allocated(error)) call column(lobes, 'ytr_cg', y_lobe, error)
          if (.not. allocated(error)) call column(lobes, 'Fn', n_lobe, error)
          if (allocated(error)) return
+         if (allocated(y_ours)) deallocate (y_ours, n_ours)
+         allocate (y_ours(size(y_lobe)), n_ours(size(y_lobe), size(reductions)))
          do ir = 1, size(reductions)
-            do il = 1, size(y_lobe)
-               call nearest_patch_load(prepared, y_ws, f_z, reductions(ir), y_lobe(il), &
-                  y_ours(il), n_ours(il, ir), error)
-               if (allocated(error)) return
-            end do
+            call nearest_patch_loads(prepared, y_ws, f_z, reductions(ir), y_lobe, y_ours, &
+               n_ours(:, ir), error)
+            if (allocated(error)) return
          end do
          do il = 1, size(y_lobe)
             call out%row([y_ws, f_z, real(il, wp), y_lobe(il), n_lobe(il), y_ours(il), &
@@ -81,20 +86,20 @@ contains
          out_dir//'lobes.csv, lobes.md'
    end subroutine run_lobes
 
-   !> Our patches at y_ws under the vertical load f_z with the given reduction: the track y and
-   !> normal force of the patch whose reference point is nearest y_lobe.
-   subroutine nearest_patch_load(prepared, y_ws, f_z, reduction, y_lobe, y_ours, n_ours, error)
+   !> Our patches at y_ws under the vertical load f_z with the given reduction: for each lobe,
+   !> the track y and normal force of the patch whose reference point is nearest the lobe's.
+   subroutine nearest_patch_loads(prepared, y_ws, f_z, reduction, y_lobe, y_ours, n_ours, error)
       type(prepared_profiles_type), intent(in) :: prepared
-      real(wp), intent(in) :: y_ws, f_z, y_lobe
+      real(wp), intent(in) :: y_ws, f_z, y_lobe(:)
       character(len=*), intent(in) :: reduction
-      real(wp), intent(out) :: y_ours, n_ours
+      real(wp), intent(out) :: y_ours(:), n_ours(:)
       type(error_type), allocatable, intent(out) :: error
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_contact_type), allocatable :: contacts(:)
       type(normal_patch_type), allocatable :: patches(:)
       type(normal_options_type) :: options
       real(wp) :: dz
-      integer :: k, best
+      integer :: k, best, il
 
       call find_contact_patches(prepared, wheelset_position_type(y_ws=y_ws), geometry, error)
       if (allocated(error)) return
@@ -107,13 +112,16 @@ contains
       end do
       call solve_vertical_load(contacts, f_z, patches, dz, error)
       if (allocated(error)) return
-      best = 1
-      do k = 2, size(geometry)
-         if (abs(geometry(k)%y_track - y_lobe) < abs(geometry(best)%y_track - y_lobe)) best = k
+      do il = 1, size(y_lobe)
+         best = 1
+         do k = 2, size(geometry)
+            if (abs(geometry(k)%y_track - y_lobe(il)) < abs(geometry(best)%y_track - &
+               y_lobe(il))) best = k
+         end do
+         y_ours(il) = geometry(best)%y_track
+         n_ours(il) = patches(best)%load
       end do
-      y_ours = geometry(best)%y_track
-      n_ours = patches(best)%load
-   end subroutine nearest_patch_load
+   end subroutine nearest_patch_loads
 
    !> README §2: G = 82670 MPa, ν = 0.27, μ = 0.3.
    pure type(material_type) function material()

@@ -143,9 +143,6 @@ contains
       real(wp), allocatable :: fx(:), fy(:)
       real(wp) :: y_ws, y_ref, y_geo
       logical :: there, has_grid
-      real(wp), allocatable :: dump(:, :)
-      integer :: unit_dump, k
-      character(len=:), allocatable :: dump_path
       integer :: ic, rep
       integer(int64) :: t0, t1, rate
 
@@ -209,13 +206,6 @@ contains
             call system_clock(t1)
             cost(ic) = min(cost(ic), 1.0e6_wp*real(t1 - t0, wp)/real(rate, wp)/n)
          end do
-         if (ic == 1) then
-            allocate (dump(n, 2 + 2*n_configs))
-            dump(:, 1) = set%fx
-            dump(:, 2) = set%fy
-         end if
-         dump(:, 1 + 2*ic) = fx
-         dump(:, 2 + 2*ic) = fy
          ex(ic) = error_stats(abs(fx - set%fx))
          ey(ic) = error_stats(abs(fy - set%fy))
          if (c_pressure(ic) == 'contact' .and. .not. has_grid) then
@@ -225,13 +215,6 @@ contains
          bx(ic) = sum((fx - set%fx)*sign(1.0_wp, set%fx))/n
          by(ic) = sum((fy - set%fy)*sign(1.0_wp, set%fy))/n
       end do
-      ! Every case of every configuration (for studies; not part of the documented tables).
-      dump_path = 'build/cases_'//strips_base(index(strips_base, 'strips_') + 7:)//'.csv'
-      open (newunit=unit_dump, file=dump_path, status='replace', action='write')
-      do k = 1, n
-         write (unit_dump, '(*(g0.6,:,","))') set%nux(k), set%nuy(k), set%phi(k), dump(k, :)
-      end do
-      close (unit_dump)
    end subroutine run_patch
 
    !> The folder of patch ip: ../shared/reference/<name>/ for the shared ones, data/exact/<name>/.

@@ -171,8 +171,8 @@ contains
          p = k - 1 + maxloc(abs(a(k:n, k)), dim=1)
          ipiv(k) = p
          if (.not. (abs(a(p, k)) > 0.0_wp)) then
-            call check_info('dgesv', k, 'U(', ',.) is exactly zero: the matrix is singular', &
-               error)
+            call check_info('solve_dense_leading', k, 'U(', &
+               ',.) is exactly zero: the matrix is singular', error)
             return
          end if
          if (p /= k) then

@@ -139,9 +139,10 @@ contains
       real(wp), intent(in) :: e_star
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
-      type(group_set_type) :: set, single
-      real(wp) :: shift(max_patches)
-      integer :: order(max_patches), n_joint, k, i, g1
+      type(group_set_type) :: set
+      real(wp) :: weight(max_patches, max_patches)
+      integer :: order(max_patches), component(max_patches), chosen(max_patches), n_joint, k, &
+         i, j, c, old, members
 
       ! The most loaded patches, at most max_patches of them, in one problem.
       n_joint = 0
@@ -151,7 +152,10 @@ contains
             n_joint = n_joint + 1
             order(n_joint) = k
          else
-            i = minloc(patches(order(1:n_joint))%load, dim=1)
+            i = 1
+            do j = 2, n_joint
+               if (patches(order(j))%load < patches(order(i))%load) i = j
+            end do
             if (patches(k)%load > patches(order(i))%load) then
                call couple_strips(patches(order(i)), e_star, error)
                order(i) = k
@@ -162,15 +166,68 @@ contains
          end if
       end do
       if (n_joint < 1) return
-      if (n_joint == 1) then
-         call couple_strips(patches(order(1)), e_star, error)
-         return
-      end if
-      ! Each patch alone first: the shift c_k = δ'_k − δ_k of its own coupled solution. The
-      ! joint problem starts from those, so that patches too far apart to press each other keep
-      ! their own coupled solutions (the load–approach relation of each stays the strips').
+      ! Which patches press each other (patch_weights > 0): the connected groups of patches
+      ! are solved each on its own, a patch that presses no other alone.
       do i = 1, n_joint
          k = order(i)
+         call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
+      end do
+      call patch_weights(set, weight)
+      do i = 1, n_joint
+         component(i) = i
+      end do
+      do i = 1, n_joint
+         do j = 1, n_joint
+            if (weight(i, j) > 0.0_wp .and. component(i) /= component(j)) then
+               c = min(component(i), component(j))
+               old = max(component(i), component(j))
+               do k = 1, n_joint
+                  if (component(k) == old) component(k) = c
+               end do
+            end if
+         end do
+      end do
+      do c = 1, n_joint
+         members = count(component(1:n_joint) == c)
+         if (members == 0) cycle
+         if (members == 1) then
+            i = findloc(component(1:n_joint), c, dim=1)
+            call couple_strips(patches(order(i)), e_star, error)
+            if (allocated(error)) return
+            cycle
+         end if
+         members = 0
+         do i = 1, n_joint
+            if (component(i) /= c) cycle
+            members = members + 1
+            chosen(members) = order(i)
+         end do
+         call couple_component(patches, offset, e_star, chosen(1:members), error)
+         if (allocated(error)) return
+      end do
+   end subroutine couple_patches
+
+   !> Patches that press each other, coupled in one problem ([[couple_patches]]): each patch
+   !> alone first, for the shift c_k = δ'_k − δ_k of its own coupled solution; the joint
+   !> problem starts from those, so that the patches' own load–approach relations stay the
+   !> strips'.
+   pure subroutine couple_component(patches, offset, e_star, members, error)
+      !> The strip tables of the wheel's patches.
+      type(normal_patch_type), intent(inout) :: patches(:)
+      !> Position of each patch's reference point along the rail profile (mm).
+      real(wp), intent(in) :: offset(:)
+      !> E* = G/(1 − ν) (MPa).
+      real(wp), intent(in) :: e_star
+      !> Indices of the patches coupled together (at most max_patches).
+      integer, intent(in) :: members(:)
+      !> Set when a dense solve fails.
+      type(error_type), allocatable, intent(out) :: error
+      type(group_set_type) :: set, single
+      real(wp) :: shift(max_patches)
+      integer :: i, k, g1
+
+      do i = 1, size(members)
+         k = members(i)
          call single%reset()
          call add_patch_groups(single, patches(k), 0.0_wp, patches(k)%gamma0)
          shift(i) = 0.0_wp
@@ -179,8 +236,8 @@ contains
          if (allocated(error)) return
          shift(i) = shift(i)*cos(patches(k)%gamma0)
       end do
-      do i = 1, n_joint
-         k = order(i)
+      do i = 1, size(members)
+         k = members(i)
          g1 = set%n + 1
          call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
          set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)
@@ -188,10 +245,10 @@ contains
       if (set%n < 1) return
       call solve_groups(set, e_star, error)
       if (allocated(error)) return
-      do i = 1, n_joint
-         call scale_patch(set, i, patches(order(i)))
+      do i = 1, size(members)
+         call scale_patch(set, i, patches(members(i)))
       end do
-   end subroutine couple_patches
+   end subroutine couple_component
 
    !> Append the groups of one patch's loaded strips to the set (module text). Group centres
    !> are offset + y (mm along the profile).
@@ -260,15 +317,16 @@ contains
       real(wp) :: kern(max_total, max_total), kmat(max_total + 1, max_total + 1), &
          rhs(max_total + 1), peak(max_total), vertical, weight(max_patches, max_patches)
       integer :: idx(max_total), pivots(max_total + 1)
-      logical :: in_contact(max_total)
+      logical :: in_contact(max_total), readmitted
+      real(wp) :: displacement
       integer :: n, i, j, mg, pass
 
       n = set%n
       call patch_weights(set, weight)
       do i = 1, n
          do j = 1, n
-            kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i))/ &
-               (pi*e_star)
+            kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), &
+               i == j)/(pi*e_star)
             if (set%patch(i) /= set%patch(j)) kern(j, i) = kern(j, i)*cos(set%gamma(j) - &
                set%gamma(i))*weight(set%patch(j), set%patch(i))
          end do
@@ -276,7 +334,9 @@ contains
       vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
       in_contact(1:n) = .true.
       peak(1:n) = 0.0_wp
-      do pass = 1, n
+      ! Active set: groups whose peak comes out negative leave; a group left out whose surface
+      ! would then interpenetrate comes back.
+      do pass = 1, 2*n + 1
          mg = 0
          do j = 1, n
             if (.not. in_contact(j)) cycle
@@ -299,8 +359,23 @@ contains
          peak(1:n) = 0.0_wp
          peak(idx(1:mg)) = rhs(1:mg)
          if (present(shift)) shift = rhs(mg + 1)
-         if (all(peak(idx(1:mg)) >= 0.0_wp)) exit
-         where (peak(1:n) < 0.0_wp) in_contact(1:n) = .false.
+         if (any(peak(idx(1:mg)) < 0.0_wp)) then
+            where (peak(1:n) < 0.0_wp) in_contact(1:n) = .false.
+            cycle
+         end if
+         readmitted = .false.
+         do j = 1, n
+            if (in_contact(j)) cycle
+            displacement = -cos(set%gamma(j))*rhs(mg + 1)
+            do i = 1, mg
+               displacement = displacement + kern(j, idx(i))*peak(idx(i))
+            end do
+            if (displacement < set%gc(j) - 1.0e-9_wp*max(abs(set%gc(j)), 1.0e-6_wp)) then
+               in_contact(j) = .true.
+               readmitted = .true.
+            end if
+         end do
+         if (.not. readmitted) exit
       end do
       do j = 1, n
          set%ratio(j) = max(0.0_wp, 0.5_wp*pi*peak(j)*set%ac(j)*set%width(j))/set%local(j)
@@ -388,6 +463,11 @@ contains
       end do
       do q = 1, set%n_patches
          do p = 1, set%n_patches
+            if (lo(p) > hi(p) .or. lo(q) > hi(q)) then
+               ! A patch without loaded strips presses nothing.
+               weight(p, q) = 0.0_wp
+               cycle
+            end if
             d = max(0.0_wp, lo(q) - hi(p), lo(p) - hi(q))
             weight(p, q) = min(1.0_wp, max(0.0_wp, (separate_distance - d)/ &
                (separate_distance - combine_distance)))
@@ -449,17 +529,22 @@ contains
 
    !> Influence of a group strip of width w (mm) and half-length a (mm) at lateral distance eta
    !> (mm), ∫∫ √(1 − x²/a²)/r over the strip (mm), from the line integral across the width,
-   !> ∫ √(1 − x²/a²)/√(x² + y²) dx = 2a F(|y|/a)/a = 2 F(|y|/a) ([[line_kernel]]): on the strip
-   !> itself Gauss–Legendre in s with |y| = (w/2) s² (which takes out F's logarithmic
-   !> singularity), Simpson's rule for the neighbours up to two widths away, the midpoint rule
-   !> beyond (relative error below 2e-3 there, where the kernel is smallest).
-   pure real(wp) function group_influence(a, eta, w) result(s)
+   !> ∫ √(1 − x²/a²)/√(x² + y²) dx = 2 F(|y|/a) ([[line_kernel]]): on the group itself
+   !> (`self`) Gauss–Legendre in s with |y| = (w/2) s² (which takes out F's logarithmic
+   !> singularity), Simpson's rule across the width for groups up to 2.5 widths away, the
+   !> midpoint rule beyond. Measured against the full integral: Simpson within 0.1–1.1 % at one
+   !> width, the midpoint rule within 0.4–1.4 % at 2.5 widths and less farther out (the kernel
+   !> falls like 1/η there); small beside the grouping itself.
+   pure real(wp) function group_influence(a, eta, w, self) result(s)
+      !> Half-length a and width w of the loaded group (mm), lateral distance eta (mm).
       real(wp), intent(in) :: a, eta, w
+      !> The group's influence on itself.
+      logical, intent(in) :: self
       real(wp) :: d, h
       integer :: k
       d = abs(eta)
-      if (d < 0.5_wp*w) then
-         ! Self term (eta = 0 by construction): 2 ∫_0^{w/2} 2F(y/a) dy.
+      if (self) then
+         ! 2 ∫_0^{w/2} 2F(y/a) dy.
          h = 0.5_wp*w
          s = 0.0_wp
          do k = 1, n_self
@@ -467,8 +552,9 @@ contains
          end do
          s = 8.0_wp*h*s
       else if (d < 2.5_wp*w) then
-         s = (w/3.0_wp)*(line_kernel((d - 0.5_wp*w)/a) + 4.0_wp*line_kernel(d/a) + &
-            line_kernel((d + 0.5_wp*w)/a))
+         ! Groups of two patches may overlap along the profile: the near edge stays apart.
+         s = (w/3.0_wp)*(line_kernel(max(d - 0.5_wp*w, 0.05_wp*w)/a) + &
+            4.0_wp*line_kernel(max(d, 0.1_wp*w)/a) + line_kernel((d + 0.5_wp*w)/a))
       else
          s = 2.0_wp*w*line_kernel(d/a)
       end if

@@ -194,9 +194,12 @@ contains
 
    !> `reduction = 'coupled'`: redistribute the load of the local-Hertz strips through the
    !> half-space (shcontact_normal_coupling); the load, hence every force balance, is kept.
-   subroutine coupled_if_asked(contact, patch, error)
+   pure subroutine coupled_if_asked(contact, patch, error)
+      !> The prepared patch.
       type(normal_contact_type), intent(in) :: contact
+      !> Its solution (local-Hertz on entry).
       type(normal_patch_type), intent(inout) :: patch
+      !> Set when the dense solve fails.
       type(error_type), allocatable, intent(out) :: error
       if (contact%options%reduction /= reduction_coupled .or. patch%is_hertz) return
       call couple_strips(patch, contact%e_star, error)
@@ -205,9 +208,12 @@ contains
    !> `reduction = 'coupled'` for the patches of one wheel: their strips in one half-space problem
    !> (shcontact_normal_coupling's couple_patches), placed along the rail profile by their
    !> reference points; Σ_k N_k cos γ_k, hence the vertical balance, is kept.
-   subroutine patches_coupled_if_asked(contacts, patches, error)
+   pure subroutine patches_coupled_if_asked(contacts, patches, error)
+      !> The prepared patches of one wheel.
       type(normal_contact_type), intent(in) :: contacts(:)
+      !> Their solutions (local-Hertz on entry).
       type(normal_patch_type), intent(inout) :: patches(:)
+      !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
       !> More patches than this on one wheel are coupled one by one (a fixed-size work array).
       integer, parameter :: most = 32
@@ -334,7 +340,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(vertical_residual) :: f
       real(wp) :: residual
-      integer :: k
       character(len=64) :: buf
 
       f_z = 0.0_wp
