@@ -20,7 +20,8 @@ module test_validation
    use shcontact_geometry_contact, only: contact_options_type, find_contact_patches
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
+      solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_options, only: tangential_options_type, flexibility_carter, &
       parse_bound, parse_spin_model, parse_spin_flexibility
@@ -57,7 +58,8 @@ contains
          new_unittest('doe_ty5p8_local_hertz_vs_exact', test_doe_ty5p8_local_hertz), &
          new_unittest('doe_ty5p8_carter_vs_exact', test_doe_ty5p8_carter), &
          new_unittest('doe_project_positions_vs_exact', test_doe_positions), &
-         new_unittest('two_lobe_load_split_vs_exact', test_lobes) &
+         new_unittest('two_lobe_load_split_vs_exact', test_lobes), &
+         new_unittest('two_lobe_doe_per_lobe_vs_exact', test_lobe_doe) &
          ]
    end subroutine collect_validation
 
@@ -374,6 +376,135 @@ contains
          end do
       end do
    end subroutine test_lobes
+
+   !> The DOE per lobe at Y_WS = 5.0 and 5.3 mm (doc/validation.md §6.5, doc/validation/lobes.md):
+   !> each of our two patches (defaults, the vertical load for which Σ F_n = 64.7 kN as in
+   !> CONTACT's module 3) with the creepages carried from CONTACT's geometric point to its own by
+   !> the rigid slip, ν_x,k = ξ − φ (y_k − y_G), y_k = (y_track,k − y_ref)/cos δ, against
+   !> CONTACT's forces of the lobe it lies on (each over the lobe's F_n): the table within ±0.002.
+   subroutine test_lobe_doe(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: names(2) = [character(len=6) :: 'yws5p0', 'yws5p3']
+      real(wp), parameter :: y_ws(2) = [5.0_wp, 5.3_wp], y_ref(2) = [734.5832_wp, 729.5134_wp]
+      real(wp), parameter :: delta(2) = [-0.166_wp, -0.252651_wp]
+      real(wp), parameter :: y_geo(2) = [2.704981413_wp, -3.117605365_wp]
+      !> Track y of each lobe's pressure centre (lobes.csv), lobe 1 on the flange side.
+      real(wp), parameter :: y_lobe(2, 2) = reshape([726.61_wp, 737.03_wp, 726.50_wp, &
+         736.36_wp], [2, 2])
+      real(wp), parameter :: rows(4, 2, 2) = reshape([ &
+         0.036_wp, 0.039_wp, 0.021_wp, 0.029_wp, 0.044_wp, 0.059_wp, 0.012_wp, 0.045_wp, &
+         0.034_wp, 0.068_wp, 0.008_wp, 0.024_wp, 0.037_wp, 0.041_wp, 0.011_wp, 0.019_wp], &
+         [4, 2, 2])
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: cases(:, :), ex(:), ey(:)
+      real(wp) :: y_k, nux
+      integer :: ip, il, k, best, i, n
+      logical :: there
+
+      do ip = 1, 2
+         inquire (file='data/exact/'//names(ip)//'/doe_6x6x6_exact_nonhertz_per_lobe.csv', &
+            exist=there)
+         if (.not. there) then
+            call skip_test(error, 'data/exact/'//names(ip)//' is absent')
+            return
+         end if
+         call two_patch_solution(y_ws(ip), geometry, patches, error)
+         if (allocated(error) .or. .not. allocated(patches)) return
+         call read_columns('data/exact/'//names(ip)//'/doe_6x6x6_exact_nonhertz_per_lobe.csv', &
+            [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'lobe', 'fx', 'fy'], cases, &
+            error)
+         if (allocated(error)) return
+         call recommended_options(options)
+         do il = 1, 2
+            best = 1
+            do k = 2, size(geometry)
+               if (abs(geometry(k)%y_track - y_lobe(il, ip)) < &
+                  abs(geometry(best)%y_track - y_lobe(il, ip))) best = k
+            end do
+            y_k = (geometry(best)%y_track - y_ref(ip))/cos(delta(ip))
+            call prepare_fastsim_sh(ws, patches(best), material_type(), options, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            n = count(nint(cases(:, 4)) == il)
+            call check(error, n, 216, message=names(ip)//': cases of the lobe')
+            if (allocated(error)) return
+            if (allocated(ex)) deallocate (ex, ey)
+            allocate (ex(n), ey(n))
+            n = 0
+            do i = 1, size(cases, 1)
+               if (nint(cases(i, 4)) /= il) cycle
+               n = n + 1
+               nux = cases(i, 1) - 1.0e-3_wp*cases(i, 3)*(y_k - y_geo(ip))
+               call solve_prepared(ws, creepage_type(-nux, -cases(i, 2), &
+                  -1.0e-3_wp*cases(i, 3)), result, err)
+               if (allocated(err)) then
+                  call test_failed(error, err%message); return
+               end if
+               ex(n) = abs(-result%fx_norm - cases(i, 5))
+               ey(n) = abs(-result%fy_norm - cases(i, 6))
+            end do
+            call check_row(ex, ey, rows(:, il, ip), names(ip)//' lobe '// &
+               merge('1', '2', il == 1), error)
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_lobe_doe
+
+   !> Our patches at y_ws with the default options under the vertical load for which their
+   !> normal forces add up to 64.7 kN (patches unallocated and the test skipped without
+   !> ../shared).
+   subroutine two_patch_solution(y_ws, geometry, patches, error)
+      real(wp), intent(in) :: y_ws
+      type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
+      type(normal_patch_type), allocatable, intent(out) :: patches(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail
+      type(track_type) :: track
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_options_type) :: options
+      type(lib_error), allocatable :: err
+      real(wp) :: f_z, dz
+      integer :: k, it
+      logical :: there
+
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) then
+         call skip_test(error, '../shared/profiles is absent')
+         return
+      end if
+      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
+      if (.not. allocated(err)) call clean_profile(wheel, err)
+      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
+      if (.not. allocated(err)) call clean_profile(rail, err)
+      track%rail_canted = .true.
+      if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
+         wheelset_position_type(y_ws=y_ws), contact_options_type(), geometry, err)
+      if (.not. allocated(err)) call new_normal_options(options, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      allocate (contacts(size(geometry)), patches(size(geometry)))
+      do k = 1, size(geometry)
+         call prepare_normal_contact(contacts(k), geometry(k), options, material_type(), err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+      end do
+      f_z = normal_force
+      do it = 1, 4
+         call solve_vertical_load(contacts, f_z, patches, dz, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         if (it < 4) f_z = f_z*normal_force/sum(patches%load)
+      end do
+   end subroutine two_patch_solution
 
    !> max |Δf_x|, max |Δf_y|, P80 |Δf_x|, P80 |Δf_y| against a table row, each within ±0.002.
    subroutine check_row(ex, ey, row, label, error)

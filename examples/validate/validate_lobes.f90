@@ -10,6 +10,9 @@ module validate_lobes
       normal_options_type, new_normal_options, normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
    use validate_csv, only: csv_table_type, read_csv, column, summary_value, csv_writer_type
+   use validate_tangential, only: case_set_type, solve_set, error_stats_type, error_stats
+   use shcontact, only: tangential_options_type, parse_bound, parse_spin_model
+   use shcontact_tangential_options, only: parse_spin_flexibility
    implicit none
    private
 
@@ -80,11 +83,117 @@ contains
             write (unit, '(a)') trim(md)
          end do
       end do
+      ! The DOE per lobe: each of our patches with the creepages carried to its point.
+      write (unit, '(a)') '', 'DOE per lobe (defaults; creepages carried from CONTACT''s '// &
+         'geometric point to each patch''s by the rigid slip): max \|Δf_x\| / max '// &
+         '\|Δf_y\| ; P80 \|Δf_x\| / P80 \|Δf_y\|', '', '| position | lobe 1 '// &
+         '(flange side) | lobe 2 (tread) |', '|---|---|---|'
+      do ip = 1, size(lobe_positions)
+         call lobe_doe(prepared, lobe_positions(ip), md, error)
+         if (allocated(error)) return
+         write (unit, '(a)') trim(md)
+      end do
       close (unit)
       call out%close()
       write (output_unit, '(a)') 'shcontact-validate: two-lobe positions written to '// &
          out_dir//'lobes.csv, lobes.md'
    end subroutine run_lobes
+
+   !> The 6³ DOE of one two-lobe position split by lobe (CONTACT's per-lobe forces, each over its
+   !> lobe's F_n): each of our patches (default options, vertical load giving Σ F_n ≈ 64.7 kN as
+   !> CONTACT's module 3) with ν_x,k = ξ − φ (y_k − y_G), ν_y,k = η, φ_k = φ, y_k the local y of
+   !> the patch's reference point, (y_track,k − y_ref)/cos δ. One Markdown row.
+   subroutine lobe_doe(prepared, name, row, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      character(len=*), intent(in) :: name
+      character(len=*), intent(out) :: row
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_table_type) :: summary, lobes, doe
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_contact_type), allocatable :: contacts(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      type(normal_options_type) :: options
+      type(tangential_options_type) :: tangential
+      type(case_set_type) :: set
+      type(error_stats_type) :: ex, ey
+      real(wp), allocatable :: y_lobe(:), nux(:), nuy(:), phi(:), lobe(:), fx(:), fy(:), &
+         gx(:), gy(:)
+      real(wp) :: y_ws, f_z, y_ref, delta, y_geo, dz, y_k
+      character(len=64) :: cell
+      integer :: k, il, best, it
+      logical, allocatable :: mine(:)
+
+      call read_csv(extra_root//trim(name)//'/summary.csv', summary, error)
+      if (.not. allocated(error)) call summary_value(summary, 'y_ws', y_ws, error)
+      if (.not. allocated(error)) call summary_value(summary, 'ycp_tr', y_ref, error)
+      if (.not. allocated(error)) call summary_value(summary, 'delt', delta, error)
+      if (.not. allocated(error)) call summary_value(summary, 'y_geo', y_geo, error)
+      if (.not. allocated(error)) call read_csv(extra_root//trim(name)//'/lobes.csv', lobes, &
+         error)
+      if (.not. allocated(error)) call column(lobes, 'ytr_cg', y_lobe, error)
+      if (.not. allocated(error)) call read_csv(extra_root//trim(name)// &
+         '/doe_6x6x6_exact_nonhertz_per_lobe.csv', doe, error)
+      if (.not. allocated(error)) call column(doe, 'nux', nux, error)
+      if (.not. allocated(error)) call column(doe, 'nuy', nuy, error)
+      if (.not. allocated(error)) call column(doe, 'phi_1_per_m', phi, error)
+      if (.not. allocated(error)) call column(doe, 'lobe', lobe, error)
+      if (.not. allocated(error)) call column(doe, 'fx', fx, error)
+      if (.not. allocated(error)) call column(doe, 'fy', fy, error)
+      if (.not. allocated(error)) call find_contact_patches(prepared, &
+         wheelset_position_type(y_ws=y_ws), geometry, error)
+      if (.not. allocated(error)) call new_normal_options(options, error)
+      if (allocated(error)) return
+      allocate (contacts(size(geometry)), patches(size(geometry)))
+      do k = 1, size(geometry)
+         call prepare_normal_contact(contacts(k), geometry(k), options, material(), error)
+         if (allocated(error)) return
+      end do
+      ! The vertical load for which our normal forces add up to CONTACT's 64.7 kN.
+      f_z = 64700.0_wp
+      do it = 1, 3
+         call solve_vertical_load(contacts, f_z, patches, dz, error)
+         if (allocated(error)) return
+         f_z = f_z*64700.0_wp/sum(patches%load)
+      end do
+      call solve_vertical_load(contacts, f_z, patches, dz, error)
+      if (allocated(error)) return
+      call parse_bound('weighted', tangential%bound, error)
+      if (.not. allocated(error)) call parse_spin_model('uniform', tangential%spin_model, error)
+      if (.not. allocated(error)) call parse_spin_flexibility('longitudinal', &
+         tangential%spin_flexibility, error)
+      if (allocated(error)) return
+      tangential%fields = .false.
+      row = '| Y_WS = '//trim(adjustl(real_text(y_ws)))//' mm |'
+      do il = 1, size(y_lobe)
+         best = 1
+         do k = 2, size(geometry)
+            if (abs(geometry(k)%y_track - y_lobe(il)) < abs(geometry(best)%y_track - &
+               y_lobe(il))) best = k
+         end do
+         y_k = (geometry(best)%y_track - y_ref)/cos(delta)
+         mine = nint(lobe) == il
+         set%name = name
+         set%phi = 1.0e-3_wp*pack(phi, mine)
+         set%nux = pack(nux, mine) - set%phi*(y_k - y_geo)
+         set%nuy = pack(nuy, mine)
+         set%fx = pack(fx, mine)
+         set%fy = pack(fy, mine)
+         call solve_set(patches(best), material(), tangential, set, gx, gy, error)
+         if (allocated(error)) return
+         ex = error_stats(abs(gx - set%fx))
+         ey = error_stats(abs(gy - set%fy))
+         write (cell, '(f5.3,a,f5.3,a,f5.3,a,f5.3)') ex%max, ' / ', ey%max, ' ; ', ex%p80, &
+            ' / ', ey%p80
+         row = trim(row)//' '//trim(cell)//' |'
+      end do
+   end subroutine lobe_doe
+
+   !> A real as short text.
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=16) :: text
+      write (text, '(f6.2)') x
+   end function real_text
 
    !> Our patches at y_ws under the vertical load f_z with the given reduction: for each lobe,
    !> the track y and normal force of the patch whose reference point is nearest the lobe's.
