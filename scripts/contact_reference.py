@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate exact-theory (CONTACT) reference data at a wheelset lateral position Y_WS.
 
-Procedure (mirrors /work/shared/reference/README.md):
+Procedure (mirrors ../shared/reference/README.md):
   1. CONTACT module 1 (S1002 / UIC60 mbench set-up, right wheel), zero yaw, VY=VYAW=0,
      VPITCH adjusted so that CKSI ~ 0 ("pure-rolling-ish"), FZ iterated by secant so that the
      normal force of the largest patch (integrated pn*dx*dy from the .mat file) is 64700 N.
@@ -17,30 +17,30 @@ import argparse, csv, math, os, re, shutil, subprocess, sys, time
 import numpy as np
 
 CONTACT = os.environ.get('CONTACT_EXE', '/tmp/contact-src/bin/contact_O2')
-PROFILES = ['/work/shared/profiles/MBench_S1002_v3.prw', '/work/shared/profiles/MBench_UIC60_v3.prr']
 FN_TARGET = 64700.0
 MU = 0.3
 VS = 2000.0
 RNOM = 460.0
 
-M1_TEMPLATE = """  1 MODULE
- 1203100    C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS
- 0022033    V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL
- 0002321    H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN
-    999     100    30    1     1e-05         MAXGS , MAXIN , MAXNR , MAXOUT, EPS
-  0.300   0.300                                 FSTAT, FKIN
-  0.270   0.270   82670.0  82670.0                POISS 1,2,  GG 1,2
-  0.2000   0.2000   1.000   90d   8.0   4.0      DX, DS, DQREL, A_SEP, D_SEP, D_COMB
-   14.0     0    1435.0   0.000                GAUGHT, GAUGSQ, GAUGWD, CANT
-  'MBench_UIC60_v3.prr'   0     1.0   0.0       RFNAME, MIRRORY, SCALE, SMOOTH
-     0.0    0.0   0.000   0.0   0.0   0.000     DY, DZ, ROLL, VY, VZ, VROLL
-  1360.0  -70.0   460.0                         FBDIST, FBPOS, NOMRAD
-  'MBench_S1002_v3.prw'   0     1.0   0.0       WFNAME, MIRRORY, SCALE, SMOOTH
-  0.0  {y:.6f}  {fz:.4f}  0.0000000000  0.0  0.0          S, Y, FZ, ROLL, YAW, PITCH
-  2000.0  0.0  0.0  0.0  0.0  {vpitch:.11f}   VS,VY,VZ, VROLL,VYAW,VPITCH
+SHARED = os.environ.get('SHCONTACT_SHARED', os.path.join(os.path.dirname(__file__), '..', '..',
+                                                           'shared'))
 
-  0 MODULE
-"""
+PROFILES = [os.path.join(SHARED, 'profiles', n) for n in ('MBench_S1002_v3.prw',
+                                                         'MBench_UIC60_v3.prr')]
+
+
+def module1_deck(y, fz, vpitch):
+    """The shared module-1 deck (../shared/reference/ty5p8_literal/inp/module1_headline.inp,
+    read, never copied) with the wheelset line and the velocity line replaced: Y_WS = y, FZ = fz,
+    no roll or yaw, VS = 2000 mm/s, no lateral or yaw velocity, pitch rate vpitch."""
+    path = os.path.join(SHARED, 'reference', 'ty5p8_literal', 'inp', 'module1_headline.inp')
+    lines = open(path).read().splitlines()
+    for i, line in enumerate(lines):
+        if line.rstrip().endswith('S, Y, FZ, ROLL, YAW, PITCH'):
+            lines[i] = '  0.0  %.6f  %.4f  0.0000000000  0.0  0.0          S, Y, FZ, ROLL, YAW, PITCH' % (y, fz)
+        elif line.rstrip().endswith('VS,VY,VZ, VROLL,VYAW,VPITCH'):
+            lines[i] = '  2000.0  0.0  0.0  0.0  0.0  %.11f   VS,VY,VZ, VROLL,VYAW,VPITCH' % vpitch
+    return '\n'.join(lines) + '\n'
 
 FLOAT = r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?'
 
@@ -197,7 +197,7 @@ def module1(yws, workdir, log):
             if fn_.startswith(name + '.') and fn_.endswith('.mat'):
                 os.remove(os.path.join(workdir, fn_))
         with open(os.path.join(workdir, name + '.inp'), 'w') as f:
-            f.write(M1_TEMPLATE.format(y=yws, fz=fz, vpitch=vpitch))
+            f.write(module1_deck(yws, fz, vpitch))
         ok, _, _, _ = run_contact(workdir, name)
         out = parse_out1(os.path.join(workdir, name + '.out'))
         mats = sorted(fn_ for fn_ in os.listdir(workdir) if re.match(r'm1\.0001[a-z]?\.mat$', fn_))
