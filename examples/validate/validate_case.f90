@@ -10,7 +10,7 @@ module validate_case
    implicit none
    private
 
-   public :: load_manchester, deepest_patch, solve_normal, quadratic_geometry
+   public :: load_manchester, deepest_patch, solve_normal, quadratic_geometry, reference_material
 
 contains
 
@@ -110,5 +110,10 @@ contains
       allocate (geometry%gamma(2*half + 1), source=0.0_wp)
       allocate (geometry%r_wheel(2*half + 1), source=r0)
    end subroutine quadratic_geometry
+
+   !> The reference's material (../shared/reference/README.md §2): G = 82670 MPa, ν = 0.27, μ = 0.3.
+   pure type(material_type) function reference_material() result(material)
+      material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
+   end function reference_material
 
 end module validate_case

@@ -9,6 +9,7 @@ module validate_lobes
       patch_geometry_type, normal_patch_type, find_contact_patches, wheelset_position_type, &
       normal_options_type, new_normal_options, normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
+   use validate_case, only: reference_material
    use validate_csv, only: csv_table_type, read_csv, column, summary_value, csv_writer_type
    use validate_tangential, only: case_set_type, solve_set, error_stats_type, error_stats
    use shcontact, only: tangential_options_type, parse_bound, parse_spin_model
@@ -110,17 +111,15 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(csv_table_type) :: summary, lobes, doe
       type(patch_geometry_type), allocatable :: geometry(:)
-      type(normal_contact_type), allocatable :: contacts(:)
       type(normal_patch_type), allocatable :: patches(:)
-      type(normal_options_type) :: options
       type(tangential_options_type) :: tangential
       type(case_set_type) :: set
       type(error_stats_type) :: ex, ey
       real(wp), allocatable :: y_lobe(:), nux(:), nuy(:), phi(:), lobe(:), fx(:), fy(:), &
          gx(:), gy(:)
-      real(wp) :: y_ws, f_z, y_ref, delta, y_geo, dz, y_k
+      real(wp) :: y_ws, f_z, y_ref, delta, y_geo, y_k
       character(len=64) :: cell
-      integer :: k, il, best, it
+      integer :: il, best, it
       logical, allocatable :: mine(:)
 
       call read_csv(extra_root//trim(name)//'/summary.csv', summary, error)
@@ -139,24 +138,14 @@ contains
       if (.not. allocated(error)) call column(doe, 'lobe', lobe, error)
       if (.not. allocated(error)) call column(doe, 'fx', fx, error)
       if (.not. allocated(error)) call column(doe, 'fy', fy, error)
-      if (.not. allocated(error)) call find_contact_patches(prepared, &
-         wheelset_position_type(y_ws=y_ws), geometry, error)
-      if (.not. allocated(error)) call new_normal_options(options, error)
       if (allocated(error)) return
-      allocate (contacts(size(geometry)), patches(size(geometry)))
-      do k = 1, size(geometry)
-         call prepare_normal_contact(contacts(k), geometry(k), options, material(), error)
-         if (allocated(error)) return
-      end do
       ! The vertical load for which our normal forces add up to CONTACT's 64.7 kN.
       f_z = 64700.0_wp
-      do it = 1, 3
-         call solve_vertical_load(contacts, f_z, patches, dz, error)
+      do it = 1, 4
+         call wheel_patches(prepared, y_ws, f_z, 'coupled', geometry, patches, error)
          if (allocated(error)) return
-         f_z = f_z*64700.0_wp/sum(patches%load)
+         if (it < 4) f_z = f_z*64700.0_wp/sum(patches%load)
       end do
-      call solve_vertical_load(contacts, f_z, patches, dz, error)
-      if (allocated(error)) return
       call parse_bound('weighted', tangential%bound, error)
       if (.not. allocated(error)) call parse_spin_model('uniform', tangential%spin_model, error)
       if (.not. allocated(error)) call parse_spin_flexibility('longitudinal', &
@@ -165,11 +154,7 @@ contains
       tangential%fields = .false.
       row = '| Y_WS = '//trim(adjustl(real_text(y_ws)))//' mm |'
       do il = 1, size(y_lobe)
-         best = 1
-         do k = 2, size(geometry)
-            if (abs(geometry(k)%y_track - y_lobe(il)) < abs(geometry(best)%y_track - &
-               y_lobe(il))) best = k
-         end do
+         best = nearest(geometry, y_lobe(il))
          y_k = (geometry(best)%y_track - y_ref)/cos(delta)
          mine = nint(lobe) == il
          set%name = name
@@ -178,7 +163,7 @@ contains
          set%nuy = pack(nuy, mine)
          set%fx = pack(fx, mine)
          set%fy = pack(fy, mine)
-         call solve_set(patches(best), material(), tangential, set, gx, gy, error)
+         call solve_set(patches(best), reference_material(), tangential, set, gx, gy, error)
          if (allocated(error)) return
          ex = error_stats(abs(gx - set%fx))
          ey = error_stats(abs(gy - set%fy))
@@ -204,11 +189,31 @@ contains
       real(wp), intent(out) :: y_ours(:), n_ours(:)
       type(error_type), allocatable, intent(out) :: error
       type(patch_geometry_type), allocatable :: geometry(:)
-      type(normal_contact_type), allocatable :: contacts(:)
       type(normal_patch_type), allocatable :: patches(:)
+      integer :: best, il
+
+      call wheel_patches(prepared, y_ws, f_z, reduction, geometry, patches, error)
+      if (allocated(error)) return
+      do il = 1, size(y_lobe)
+         best = nearest(geometry, y_lobe(il))
+         y_ours(il) = geometry(best)%y_track
+         n_ours(il) = patches(best)%load
+      end do
+   end subroutine nearest_patch_loads
+
+   !> The patches of the right wheel at y_ws and their normal solutions under the vertical load
+   !> f_z (N) with the given reduction.
+   subroutine wheel_patches(prepared, y_ws, f_z, reduction, geometry, patches, error)
+      type(prepared_profiles_type), intent(in) :: prepared
+      real(wp), intent(in) :: y_ws, f_z
+      character(len=*), intent(in) :: reduction
+      type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
+      type(normal_patch_type), allocatable, intent(out) :: patches(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(normal_contact_type), allocatable :: contacts(:)
       type(normal_options_type) :: options
       real(wp) :: dz
-      integer :: k, best, il
+      integer :: k
 
       call find_contact_patches(prepared, wheelset_position_type(y_ws=y_ws), geometry, error)
       if (allocated(error)) return
@@ -216,25 +221,22 @@ contains
       if (allocated(error)) return
       allocate (contacts(size(geometry)), patches(size(geometry)))
       do k = 1, size(geometry)
-         call prepare_normal_contact(contacts(k), geometry(k), options, material(), error)
+         call prepare_normal_contact(contacts(k), geometry(k), options, reference_material(), &
+            error)
          if (allocated(error)) return
       end do
       call solve_vertical_load(contacts, f_z, patches, dz, error)
-      if (allocated(error)) return
-      do il = 1, size(y_lobe)
-         best = 1
-         do k = 2, size(geometry)
-            if (abs(geometry(k)%y_track - y_lobe(il)) < abs(geometry(best)%y_track - &
-               y_lobe(il))) best = k
-         end do
-         y_ours(il) = geometry(best)%y_track
-         n_ours(il) = patches(best)%load
-      end do
-   end subroutine nearest_patch_loads
+   end subroutine wheel_patches
 
-   !> README §2: G = 82670 MPa, ν = 0.27, μ = 0.3.
-   pure type(material_type) function material()
-      material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
-   end function material
+   !> The patch whose reference point (track y) is nearest y (mm).
+   pure integer function nearest(geometry, y) result(best)
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      real(wp), intent(in) :: y
+      integer :: k
+      best = 1
+      do k = 2, size(geometry)
+         if (abs(geometry(k)%y_track - y) < abs(geometry(best)%y_track - y)) best = k
+      end do
+   end function nearest
 
 end module validate_lobes

@@ -13,7 +13,7 @@ module validate_patches
       wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
    use shcontact_tangential_options, only: parse_spin_flexibility, parse_flexibility
    use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
-   use validate_case, only: solve_normal
+   use validate_case, only: solve_normal, reference_material
    use validate_normal, only: reference_pressure_patch, write_strips
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
       error_stats
@@ -167,7 +167,7 @@ contains
       call read_case_set(ref_dir//trim(doe_name)//'_exact_nonhertz.csv', doe_name, set, error)
       if (allocated(error)) return
       n = size(set%fx)
-      call solve_normal(geometry, material(), 'semi-hertz', 'local-hertz', 100, 64700.0_wp, &
+      call solve_normal(geometry, reference_material(), 'semi-hertz', 'local-hertz', 100, 64700.0_wp, &
          default_patch, error)
       if (allocated(error)) return
       contact_patch = default_patch
@@ -186,7 +186,7 @@ contains
          else if (c_reduction(ic) == 'coupled' .and. ic > 1) then
             patch = coupled_patch
          else
-            call solve_normal(geometry, material(), 'semi-hertz', c_reduction(ic), 100, &
+            call solve_normal(geometry, reference_material(), 'semi-hertz', c_reduction(ic), 100, &
                64700.0_wp, patch, error)
             if (allocated(error)) return
             if (c_reduction(ic) == 'coupled') then
@@ -201,7 +201,7 @@ contains
          cost(ic) = huge(1.0_wp)
          do rep = 1, 3
             call system_clock(t0, rate)
-            call solve_set(patch, material(), options, set, fx, fy, error)
+            call solve_set(patch, reference_material(), options, set, fx, fy, error)
             if (allocated(error)) return
             call system_clock(t1)
             cost(ic) = min(cost(ic), 1.0e6_wp*real(t1 - t0, wp)/real(rate, wp)/n)
@@ -229,10 +229,6 @@ contains
       end if
    end function patch_dir
 
-   !> README §2: G = 82670 MPa, ν = 0.27, μ = 0.3.
-   pure type(material_type) function material()
-      material = material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp)
-   end function material
 
    !> Our patch at y_ws whose reference point is nearest CONTACT's (track y).
    subroutine nearest_patch(prepared, y_ws, y_ref, geometry, error)
