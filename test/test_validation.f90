@@ -478,11 +478,7 @@ contains
          call skip_test(error, '../shared/profiles is absent')
          return
       end if
-      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
-      if (.not. allocated(err)) call clean_profile(wheel, err)
-      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
-      if (.not. allocated(err)) call clean_profile(rail, err)
-      track%rail_canted = .true.
+      call manchester_profiles(wheel, rail, track, err)
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
          wheelset_position_type(y_ws=y_ws), contact_options_type(), geometry, err)
       if (.not. allocated(err)) call new_normal_options(options, err)
@@ -617,11 +613,7 @@ contains
          call skip_test(error, '../shared (profiles or exact-theory reference) is absent')
          return
       end if
-      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
-      if (.not. allocated(err)) call clean_profile(wheel, err)
-      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
-      if (.not. allocated(err)) call clean_profile(rail, err)
-      track%rail_canted = .true.
+      call manchester_profiles(wheel, rail, track, err)
       shift = 0.0_wp
       if (present(y_ws)) shift = y_ws
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
@@ -645,6 +637,19 @@ contains
       if (.not. allocated(err)) call solve_load(contact, normal_force, patch, err)
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine reference_patch
+
+   !> The Manchester profiles of ../shared/profiles, read and cleaned, on the track with the rail
+   !> already canted (README §2).
+   subroutine manchester_profiles(wheel, rail, track, err)
+      type(profile_type), intent(out) :: wheel, rail
+      type(track_type), intent(out) :: track
+      type(lib_error), allocatable, intent(out) :: err
+      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
+      if (.not. allocated(err)) call clean_profile(wheel, err)
+      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
+      if (.not. allocated(err)) call clean_profile(rail, err)
+      track%rail_canted = .true.
+   end subroutine manchester_profiles
 
    !> CONTACT's exact normal results (headline_summary.csv, row module3_exact_nonhertz).
    subroutine reference_normal(approach, area, length, width, error)
