@@ -113,6 +113,9 @@ module shcontact_io_hdf5
    !> Datasets smaller than this are stored contiguously, without compression.
    integer, parameter :: min_compressed_size = 256
 
+   !> The extent of a scalar dataset (no dimensions).
+   integer(hsize_t), parameter :: scalar(0) = [integer(hsize_t) ::]
+
 contains
 
    ! ------------------------------------------------------------------------------------------
@@ -397,13 +400,7 @@ contains
       character(len=*), intent(in) :: units
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(0)
-      integer :: stat
-      call create_dataset(file, path, H5T_IEEE_F64LE, dims, .false., dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, value, dims, stat)
-      call finish_dataset(file, path, dset, stat, units, error)
+      call write_reals(file, path, [value], scalar, units, error)
    end subroutine write_real_0d
 
    subroutine write_real_1d(file, path, values, units, error, compress)
@@ -419,17 +416,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Apply the file's compression and precision settings (a per-element field).
       logical, intent(in), optional :: compress
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(1)
-      integer :: stat
-      logical :: pack
-      pack = .false.
-      if (present(compress)) pack = compress
-      dims = shape(values, kind=hsize_t)
-      call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
-      call finish_dataset(file, path, dset, stat, units, error)
+      call write_reals(file, path, values, shape(values, kind=hsize_t), units, error, compress)
    end subroutine write_real_1d
 
    subroutine write_real_2d(file, path, values, units, error, compress)
@@ -445,17 +432,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Apply the file's compression and precision settings (a per-element field).
       logical, intent(in), optional :: compress
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(2)
-      integer :: stat
-      logical :: pack
-      pack = .false.
-      if (present(compress)) pack = compress
-      dims = shape(values, kind=hsize_t)
-      call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
-      call finish_dataset(file, path, dset, stat, units, error)
+      call write_reals(file, path, values, shape(values, kind=hsize_t), units, error, compress)
    end subroutine write_real_2d
 
    subroutine write_real_3d(file, path, values, units, error, compress)
@@ -471,18 +448,30 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Apply the file's compression and precision settings (a per-element field).
       logical, intent(in), optional :: compress
+      call write_reals(file, path, values, shape(values, kind=hsize_t), units, error, compress)
+   end subroutine write_real_3d
+
+   !> Write a real dataset of any rank with its units: `dims` is its extent ([[scalar]] for a
+   !> scalar), `values` its elements in array element order (the writers of each rank pass
+   !> their array as it is, by sequence association).
+   subroutine write_reals(file, path, values, dims, units, error, compress)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hsize_t), intent(in) :: dims(:)
+      real(wp), intent(in) :: values(product(dims))
+      character(len=*), intent(in) :: units
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: compress
       integer(hid_t) :: dset
-      integer(hsize_t) :: dims(3)
       integer :: stat
       logical :: pack
       pack = .false.
       if (present(compress)) pack = compress
-      dims = shape(values, kind=hsize_t)
       call create_dataset(file, path, real_file_type(file, pack), dims, pack, dset, error)
       if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, shape(values, kind=hsize_t), stat)
       call finish_dataset(file, path, dset, stat, units, error)
-   end subroutine write_real_3d
+   end subroutine write_reals
 
    subroutine write_int_0d(file, path, value, units, error)
       !> The file.
@@ -495,13 +484,7 @@ contains
       character(len=*), intent(in) :: units
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: dset
-      integer(hsize_t) :: dims(0)
-      integer :: stat
-      call create_dataset(file, path, H5T_STD_I32LE, dims, .false., dset, error)
-      if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, value, dims, stat)
-      call finish_dataset(file, path, dset, stat, units, error)
+      call write_ints(file, path, [value], scalar, units, error)
    end subroutine write_int_0d
 
    subroutine write_int_1d(file, path, values, units, error)
@@ -515,15 +498,24 @@ contains
       character(len=*), intent(in) :: units
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
+      call write_ints(file, path, values, shape(values, kind=hsize_t), units, error)
+   end subroutine write_int_1d
+
+   !> Write a 32-bit integer dataset of any rank with its units, as [[write_reals]].
+   subroutine write_ints(file, path, values, dims, units, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hsize_t), intent(in) :: dims(:)
+      integer, intent(in) :: values(product(dims))
+      character(len=*), intent(in) :: units
+      type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset
-      integer(hsize_t) :: dims(1)
       integer :: stat
-      dims = shape(values, kind=hsize_t)
       call create_dataset(file, path, H5T_STD_I32LE, dims, .false., dset, error)
       if (allocated(error)) return
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, dims, stat)
+      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, shape(values, kind=hsize_t), stat)
       call finish_dataset(file, path, dset, stat, units, error)
-   end subroutine write_int_1d
+   end subroutine write_ints
 
    subroutine write_int8_2d(file, path, values, units, error, compress)
       !> The file.
@@ -568,22 +560,11 @@ contains
       character(len=*), intent(in) :: text
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: dset, str
-      integer(hsize_t) :: dims(0)
-      integer :: stat, s
-      call make_string_type(max(1, len(text)), str, stat)
-      call create_dataset(file, path, str, dims, .false., dset, error)
-      if (allocated(error)) then
-         call h5tclose_f(str, s)
-         return
-      end if
       if (len(text) > 0) then
-         call h5dwrite_f(dset, str, text, dims, stat)
+         call write_strings(file, path, [text], scalar, error)
       else
-         call h5dwrite_f(dset, str, achar(0), dims, stat)
+         call write_strings(file, path, [achar(0)], scalar, error)
       end if
-      call h5tclose_f(str, s)
-      call finish_dataset(file, path, dset, stat, '', error)
    end subroutine write_text_0d
 
    subroutine write_text_1d(file, path, texts, error)
@@ -606,26 +587,36 @@ contains
       subroutine write_fixed(n)
          integer, intent(in) :: n
          character(len=n) :: buf(size(texts))
-         integer(hid_t) :: dset, str
-         integer(hsize_t) :: dims(1)
-         integer :: stat, s, i
+         integer :: i
          do i = 1, size(texts)
             buf(i) = repeat(achar(0), n)
             buf(i)(1:len_trim(texts(i))) = texts(i)(1:len_trim(texts(i)))
          end do
-         dims = shape(texts, kind=hsize_t)
-         call make_string_type(n, str, stat)
-         call create_dataset(file, path, str, dims, .false., dset, error)
-         if (allocated(error)) then
-            call h5tclose_f(str, s)
-            return
-         end if
-         call h5dwrite_f(dset, str, buf, dims, stat)
-         call h5tclose_f(str, s)
-         call finish_dataset(file, path, dset, stat, '', error)
+         call write_strings(file, path, buf, shape(texts, kind=hsize_t), error)
       end subroutine write_fixed
 
    end subroutine write_text_1d
+
+   !> Write a text dataset of any rank, as [[write_reals]]: fixed-length strings of
+   !> len(texts) bytes, NUL-padded, with an empty `units` attribute.
+   subroutine write_strings(file, path, texts, dims, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hsize_t), intent(in) :: dims(:)
+      character(len=*), intent(in) :: texts(product(dims))
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: dset, str
+      integer :: stat, s
+      call make_string_type(len(texts), str, stat)
+      call create_dataset(file, path, str, dims, .false., dset, error)
+      if (allocated(error)) then
+         call h5tclose_f(str, s)
+         return
+      end if
+      call h5dwrite_f(dset, str, texts, shape(texts, kind=hsize_t), stat)
+      call h5tclose_f(str, s)
+      call finish_dataset(file, path, dset, stat, '', error)
+   end subroutine write_strings
 
    !> A C string type of n bytes, null-padded.
    subroutine make_string_type(n, str, stat)
@@ -883,23 +874,11 @@ contains
       !> Attribute name.
       character(len=*), intent(in) :: name
       !> The value.
-      real(wp), intent(in) :: value
+      real(wp), intent(in), target :: value
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, space, attr
-      integer(hsize_t) :: dims(0)
-      integer :: stat, s
-      call open_object(file, path, obj, error)
-      if (allocated(error)) return
-      call h5screate_f(H5S_SCALAR_F, space, s)
-      call h5acreate_f(obj, name, H5T_IEEE_F64LE, space, attr, stat)
-      if (stat == 0) then
-         call h5awrite_f(attr, H5T_NATIVE_DOUBLE, value, dims, stat)
-         call h5aclose_f(attr, s)
-      end if
-      call h5sclose_f(space, s)
-      call h5oclose_f(obj, s)
-      if (stat /= 0) call fail(error, file, path, 'cannot write the attribute '//name)
+      call write_scalar_attribute(file, path, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &
+         c_loc(value), error)
    end subroutine attr_real
 
    subroutine attr_int(file, path, name, value, error)
@@ -910,24 +889,34 @@ contains
       !> Attribute name.
       character(len=*), intent(in) :: name
       !> The value.
-      integer, intent(in) :: value
+      integer, intent(in), target :: value
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
+      call write_scalar_attribute(file, path, name, H5T_STD_I32LE, H5T_NATIVE_INTEGER, &
+         c_loc(value), error)
+   end subroutine attr_int
+
+   !> Write a scalar numeric attribute: stored as `file_type`, read from `buf` as `mem_type`.
+   subroutine write_scalar_attribute(file, path, name, file_type, mem_type, buf, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      integer(hid_t), intent(in) :: file_type, mem_type
+      type(c_ptr), intent(in) :: buf
+      type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: obj, space, attr
-      integer(hsize_t) :: dims(0)
       integer :: stat, s
       call open_object(file, path, obj, error)
       if (allocated(error)) return
       call h5screate_f(H5S_SCALAR_F, space, s)
-      call h5acreate_f(obj, name, H5T_STD_I32LE, space, attr, stat)
+      call h5acreate_f(obj, name, file_type, space, attr, stat)
       if (stat == 0) then
-         call h5awrite_f(attr, H5T_NATIVE_INTEGER, value, dims, stat)
+         call h5awrite_f(attr, mem_type, buf, stat)
          call h5aclose_f(attr, s)
       end if
       call h5sclose_f(space, s)
       call h5oclose_f(obj, s)
       if (stat /= 0) call fail(error, file, path, 'cannot write the attribute '//name)
-   end subroutine attr_int
+   end subroutine write_scalar_attribute
 
    ! ------------------------------------------------------------------------------------------
    ! Reading
@@ -1021,13 +1010,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(1)
-      integer :: stat, s
       call open_dataset(file, path, 1, dset, dims, error)
       if (allocated(error)) return
       allocate (values(dims(1)))
-      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
-      call h5dclose_f(dset, s)
-      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+      call read_reals(file, path, dset, values, size(values, kind=hsize_t), error)
    end subroutine read_real_1d
 
    subroutine read_real_2d(file, path, values, error)
@@ -1041,13 +1027,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(2)
-      integer :: stat, s
       call open_dataset(file, path, 2, dset, dims, error)
       if (allocated(error)) return
       allocate (values(dims(1), dims(2)))
-      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, stat)
-      call h5dclose_f(dset, s)
-      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+      call read_reals(file, path, dset, values, size(values, kind=hsize_t), error)
    end subroutine read_real_2d
 
    subroutine read_int_1d(file, path, values, error)
@@ -1061,14 +1044,39 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset
       integer(hsize_t) :: dims(1)
-      integer :: stat, s
       call open_dataset(file, path, 1, dset, dims, error)
       if (allocated(error)) return
       allocate (values(dims(1)))
-      call h5dread_f(dset, H5T_NATIVE_INTEGER, values, dims, stat)
+      call read_ints(file, path, dset, values, size(values, kind=hsize_t), error)
+   end subroutine read_int_1d
+
+   !> Read the whole of the open dataset `dset` as `n` reals (Fortran order) and close it.
+   subroutine read_reals(file, path, dset, values, n, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(in) :: dset
+      integer(hsize_t), intent(in) :: n
+      real(wp), intent(out) :: values(n)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat, s
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, [n], stat)
       call h5dclose_f(dset, s)
       if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
-   end subroutine read_int_1d
+   end subroutine read_reals
+
+   !> Read the whole of the open dataset `dset` as `n` integers, as [[read_reals]].
+   subroutine read_ints(file, path, dset, values, n, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(in) :: dset
+      integer(hsize_t), intent(in) :: n
+      integer, intent(out) :: values(n)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat, s
+      call h5dread_f(dset, H5T_NATIVE_INTEGER, values, [n], stat)
+      call h5dclose_f(dset, s)
+      if (stat /= 0) call fail(error, file, path, 'cannot read the dataset')
+   end subroutine read_ints
 
    subroutine read_text_0d(file, path, text, error)
       !> The file.
@@ -1205,19 +1213,11 @@ contains
       !> Attribute name.
       character(len=*), intent(in) :: name
       !> The value.
-      integer, intent(out) :: value
+      integer, intent(out), target :: value
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(0)
-      integer :: stat, s
       value = 0
-      call open_attribute(file, path, name, obj, attr, error)
-      if (allocated(error)) return
-      call h5aread_f(attr, H5T_NATIVE_INTEGER, value, dims, stat)
-      call h5aclose_f(attr, s)
-      call h5oclose_f(obj, s)
-      if (stat /= 0) call fail(error, file, path, 'cannot read the attribute '//name)
+      call read_scalar_attribute(file, path, name, H5T_NATIVE_INTEGER, c_loc(value), error)
    end subroutine read_attr_int
 
    subroutine read_attr_real(file, path, name, value, error)
@@ -1228,20 +1228,31 @@ contains
       !> Attribute name.
       character(len=*), intent(in) :: name
       !> The value.
-      real(wp), intent(out) :: value
+      real(wp), intent(out), target :: value
       !> Set on failure.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: obj, attr
-      integer(hsize_t) :: dims(0)
-      integer :: stat, s
       value = 0.0_wp
+      call read_scalar_attribute(file, path, name, H5T_NATIVE_DOUBLE, c_loc(value), error)
+   end subroutine read_attr_real
+
+   !> Read a scalar numeric attribute into `buf`, converted to `mem_type`.
+   subroutine read_scalar_attribute(file, path, name, mem_type, buf, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      integer(hid_t), intent(in) :: mem_type
+      type(c_ptr), intent(in) :: buf
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: obj, attr
+      type(c_ptr) :: ptr ! h5aread_f takes its buffer intent(inout)
+      integer :: stat, s
       call open_attribute(file, path, name, obj, attr, error)
       if (allocated(error)) return
-      call h5aread_f(attr, H5T_NATIVE_DOUBLE, value, dims, stat)
+      ptr = buf
+      call h5aread_f(attr, mem_type, ptr, stat)
       call h5aclose_f(attr, s)
       call h5oclose_f(obj, s)
       if (stat /= 0) call fail(error, file, path, 'cannot read the attribute '//name)
-   end subroutine read_attr_real
+   end subroutine read_scalar_attribute
 
    !> An I/O error naming the file and the object.
    subroutine fail(error, file, path, what)
