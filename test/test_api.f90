@@ -5,7 +5,7 @@ module test_api
       c_null_char, c_loc, c_associated, c_intptr_t
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
-   use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io, &
       stat_usage
    use shcontact_core_material, only: material_type
@@ -34,6 +34,9 @@ module test_api
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_solve, &
       shcontact_last_error, shcontact_set_option, shcontact_patch, shcontact_create_arrays, &
       shcontact_field_size, shcontact_fields
+   use test_flat_api, only: shc_create, shc_destroy, shc_set_material, shc_set_option, &
+      shc_solve, shc_patch, shc_errmsg, shc_create_arrays, shc_get_profile, shc_field_size, &
+      shc_fields, to_chars, from_chars, bitwise_equal
    implicit none
    private
 
@@ -57,75 +60,6 @@ module test_api
       flat_case_type(headline_t_y, load_normal_force, headline_load, 0.58e-3_wp, 0.061e-3_wp, &
       2.74e-4_wp), flat_case_type(5.0_wp, load_vertical_force, headline_load, 1.0e-3_wp, &
       -0.5e-3_wp, 1.0e-4_wp)]
-
-   !> The legacy entry points are external procedures.
-   interface
-      subroutine shc_create(ihandle, wheel, rail, iside, istat)
-         integer, intent(out) :: ihandle
-         character(len=*), intent(in) :: wheel, rail
-         integer, intent(in) :: iside
-         integer, intent(out) :: istat
-      end subroutine shc_create
-      subroutine shc_destroy(ihandle, istat)
-         integer, intent(in) :: ihandle
-         integer, intent(out) :: istat
-      end subroutine shc_destroy
-      subroutine shc_set_material(ihandle, g, poiss, fric, istat)
-         integer, intent(in) :: ihandle
-         double precision, intent(in) :: g, poiss, fric
-         integer, intent(out) :: istat
-      end subroutine shc_set_material
-      subroutine shc_set_option(ihandle, key, value, istat)
-         integer, intent(in) :: ihandle
-         character(len=*), intent(in) :: key, value
-         integer, intent(out) :: istat
-      end subroutine shc_set_option
-      subroutine shc_solve(ihandle, ty, roll, imode, fload, cksi, ceta, cphi, values, istat)
-         integer, intent(in) :: ihandle
-         double precision, intent(in) :: ty, roll
-         integer, intent(in) :: imode
-         double precision, intent(in) :: fload, cksi, ceta, cphi
-         double precision, intent(out) :: values(25)
-         integer, intent(out) :: istat
-      end subroutine shc_solve
-      subroutine shc_patch(ihandle, ipatch, values, istat)
-         integer, intent(in) :: ihandle, ipatch
-         double precision, intent(out) :: values(17)
-         integer, intent(out) :: istat
-      end subroutine shc_patch
-      subroutine shc_errmsg(ihandle, msg)
-         integer, intent(in) :: ihandle
-         character(len=*), intent(out) :: msg
-      end subroutine shc_errmsg
-      subroutine shc_create_arrays(ihandle, nw, yw, zw, nr, yr, zr, iside, istat)
-         integer, intent(out) :: ihandle
-         integer, intent(in) :: nw
-         double precision, intent(in) :: yw(*), zw(*)
-         integer, intent(in) :: nr
-         double precision, intent(in) :: yr(*), zr(*)
-         integer, intent(in) :: iside
-         integer, intent(out) :: istat
-      end subroutine shc_create_arrays
-      subroutine shc_get_profile(ihandle, ikind, nmax, n, y, z, istat)
-         integer, intent(in) :: ihandle, ikind, nmax
-         integer, intent(out) :: n
-         double precision, intent(out) :: y(*), z(*)
-         integer, intent(out) :: istat
-      end subroutine shc_get_profile
-      subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
-         integer, intent(in) :: ihandle, ipatch
-         integer, intent(out) :: nx, ny
-         integer, intent(out) :: istat
-      end subroutine shc_field_size
-      subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
-         integer, intent(in) :: ihandle, ipatch
-         integer, intent(in) :: nx, ny
-         double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
-            px(nx, ny), py(nx, ny), slip(nx, ny)
-         integer, intent(out) :: state(nx, ny)
-         integer, intent(out) :: istat
-      end subroutine shc_fields
-   end interface
 
 contains
 
@@ -1275,14 +1209,6 @@ contains
          message='unexpected error: '//err%message)
    end subroutine expect_error
 
-   !> Bitwise equality of two real arrays.
-   pure logical function bitwise_equal(a, b)
-      real(wp), intent(in) :: a(:), b(:)
-      bitwise_equal = size(a) == size(b)
-      if (bitwise_equal) bitwise_equal = all(transfer(a, 0_i8, size(a)) == &
-         transfer(b, 0_i8, size(b)))
-   end function bitwise_equal
-
    !> Bitwise equality of two results (all flat values and every patch).
    pure logical function same_result(a, b)
       type(contact_result_type), intent(in) :: a, b
@@ -1314,29 +1240,5 @@ contains
          transfer(c_loc(fields%normal(1)%a), 0_c_intptr_t), &
          transfer(c_loc(fields%geometry(1)%gap), 0_c_intptr_t)]
    end function field_addresses
-
-   !> A NUL-terminated C string in an array of n characters.
-   pure function to_chars(text, n) result(chars)
-      character(len=*), intent(in) :: text
-      integer, intent(in) :: n
-      character(kind=c_char) :: chars(n)
-      integer :: i
-      chars = c_null_char
-      do i = 1, min(len(text), n - 1)
-         chars(i) = text(i:i)
-      end do
-   end function to_chars
-
-   !> The text of a NUL-terminated C string.
-   pure function from_chars(chars) result(text)
-      character(kind=c_char), intent(in) :: chars(:)
-      character(len=:), allocatable :: text
-      integer :: i
-      text = ''
-      do i = 1, size(chars)
-         if (chars(i) == c_null_char) exit
-         text = text//chars(i)
-      end do
-   end function from_chars
 
 end module test_api

@@ -4,11 +4,11 @@
 !> arguments; and the constants of include/shcontact.fi and include/shcontact.h against the
 !> library's modules.
 module test_api_kinematic
-   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_ptr, &
-      c_null_char, c_loc, c_associated
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_ptr, c_null_ptr, c_loc, &
+      c_associated
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
-   use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io, &
       stat_usage, stat_numerical, stat_no_contact
    use shcontact_geometry_track, only: side_right, side_left
@@ -27,6 +27,8 @@ module test_api_kinematic
    use shcontact_profile_points, only: profile_kind_rail, profile_kind_wheel
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_last_error, &
       shcontact_solve_kinematic, shcontact_patch_kinematic
+   use test_flat_api, only: shc_create, shc_destroy, shc_solve_kin, shc_patch_kin, shc_errmsg, &
+      shc_set_option, shc_field_size, shc_fields, to_chars, from_chars, bitwise_equal
    implicit none
    private
 
@@ -40,56 +42,6 @@ module test_api_kinematic
    !> The examples' kinematic case: t_y = 4.733 mm with a yaw angle of 4 mrad, pure rolling.
    type(wheelset_state_type), parameter :: kinematic_case_state = wheelset_state_type( &
       y_ws=4.733_wp, yaw=4.0e-3_wp, v_forward=speed, pitch_rate=-speed/460.0_wp)
-
-   !> The legacy entry points are external procedures.
-   interface
-      subroutine shc_create(ihandle, wheel, rail, iside, istat)
-         integer, intent(out) :: ihandle
-         character(len=*), intent(in) :: wheel, rail
-         integer, intent(in) :: iside
-         integer, intent(out) :: istat
-      end subroutine shc_create
-      subroutine shc_destroy(ihandle, istat)
-         integer, intent(in) :: ihandle
-         integer, intent(out) :: istat
-      end subroutine shc_destroy
-      subroutine shc_solve_kin(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, &
-            fload, values, istat)
-         integer, intent(in) :: ihandle
-         double precision, intent(in) :: yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch
-         integer, intent(in) :: imode
-         double precision, intent(in) :: fload
-         double precision, intent(out) :: values(29)
-         integer, intent(out) :: istat
-      end subroutine shc_solve_kin
-      subroutine shc_patch_kin(ihandle, ipatch, values, istat)
-         integer, intent(in) :: ihandle, ipatch
-         double precision, intent(out) :: values(29)
-         integer, intent(out) :: istat
-      end subroutine shc_patch_kin
-      subroutine shc_errmsg(ihandle, msg)
-         integer, intent(in) :: ihandle
-         character(len=*), intent(out) :: msg
-      end subroutine shc_errmsg
-      subroutine shc_set_option(ihandle, key, value, istat)
-         integer, intent(in) :: ihandle
-         character(len=*), intent(in) :: key, value
-         integer, intent(out) :: istat
-      end subroutine shc_set_option
-      subroutine shc_field_size(ihandle, ipatch, nx, ny, istat)
-         integer, intent(in) :: ihandle, ipatch
-         integer, intent(out) :: nx, ny
-         integer, intent(out) :: istat
-      end subroutine shc_field_size
-      subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
-         integer, intent(in) :: ihandle, ipatch
-         integer, intent(in) :: nx, ny
-         double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
-            px(nx, ny), py(nx, ny), slip(nx, ny)
-         integer, intent(out) :: state(nx, ny)
-         integer, intent(out) :: istat
-      end subroutine shc_fields
-   end interface
 
 contains
 
@@ -284,8 +236,8 @@ contains
       integer :: i, k
 
       call test_states(sides, states)
-      wheel = to_chars('builtin:S1002')
-      rail = to_chars('builtin:UIC60')
+      wheel = to_chars('builtin:S1002', 14)
+      rail = to_chars('builtin:UIC60', 14)
       do i = 1, size(states)
          call modern_result(sides(i), states(i), result, error)
          if (allocated(error)) return
@@ -395,8 +347,8 @@ contains
 
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       s = kinematic_case_state
-      wheel = to_chars('builtin:S1002')
-      rail = to_chars('builtin:UIC60')
+      wheel = to_chars('builtin:S1002', 14)
+      rail = to_chars('builtin:UIC60', 14)
       stat = shcontact_create(c_loc(handle), c_loc(wheel), c_loc(rail), 1_c_int)
       call check(error, stat, 0_c_int)
       if (allocated(error)) return
@@ -550,36 +502,5 @@ contains
       end do
       word = adjustl(word)
    end subroutine strip_parentheses
-
-   !> Bitwise equality of two real arrays.
-   pure logical function bitwise_equal(a, b)
-      real(wp), intent(in) :: a(:), b(:)
-      bitwise_equal = size(a) == size(b)
-      if (bitwise_equal) bitwise_equal = all(transfer(a, 0_i8, size(a)) == &
-         transfer(b, 0_i8, size(b)))
-   end function bitwise_equal
-
-   !> A NUL-terminated C string in 14 characters.
-   pure function to_chars(text) result(chars)
-      character(len=*), intent(in) :: text
-      character(kind=c_char) :: chars(14)
-      integer :: i
-      chars = c_null_char
-      do i = 1, min(len(text), 13)
-         chars(i) = text(i:i)
-      end do
-   end function to_chars
-
-   !> The text of a NUL-terminated C string.
-   pure function from_chars(chars) result(text)
-      character(kind=c_char), intent(in) :: chars(:)
-      character(len=:), allocatable :: text
-      integer :: i
-      text = ''
-      do i = 1, size(chars)
-         if (chars(i) == c_null_char) exit
-         text = text//chars(i)
-      end do
-   end function from_chars
 
 end module test_api_kinematic
