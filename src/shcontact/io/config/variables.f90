@@ -8,7 +8,7 @@ module shcontact_io_config_variables
 
    public :: variable_info_type, variables, group_names, find_variable
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list
-   public :: type_phrase, string_capacity, suggestion, group_variable_list, join_words
+   public :: type_phrase, string_capacity, is_choice, suggestion, group_variable_list, join_words
    public :: mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes
    public :: reductions, tangential_methods, bounds, spin_models, spin_flexibilities
    public :: bound_choices, spin_model_choices, field_names, precisions, sweep_modes
@@ -261,6 +261,14 @@ contains
       string_capacity = name_len
       if (v%name == 'wheel' .or. v%name == 'rail' .or. v%name == 'file') string_capacity = path_len
    end function string_capacity
+
+   !> True for a string variable that names a choice (every string but the file names): its
+   !> values are case-insensitive and stored in lower case.
+   pure logical function is_choice(v)
+      type(variable_info_type), intent(in) :: v
+      is_choice = (v%kind == k_string .or. v%kind == k_string_list) .and. &
+         string_capacity(v) == name_len
+   end function is_choice
 
    !> "; did you mean X?" for a close variable name of the group.
    pure function suggestion(group, name) result(s)
