@@ -58,19 +58,48 @@ contains
       close (unit)
    end function scratch_file
 
+   !> Load a configuration that must be valid: a case file ('' for none) and overrides.
+   subroutine load_valid(name, overrides, config, error)
+      character(len=*), intent(in) :: name, overrides(:)
+      type(case_config_type), intent(out) :: config
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: lerr
+      call load_config(name, overrides, config, lerr)
+      if (allocated(lerr)) call test_failed(error, lerr%message)
+   end subroutine load_valid
+
    !> Load a scratch file and expect an error whose message contains every fragment.
    subroutine expect_error(error, tag, lines, fragments, stat)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in) :: tag
       character(len=*), intent(in) :: lines(:), fragments(:)
       integer, intent(in), optional :: stat
+      character(len=:), allocatable :: name
+      name = scratch_file(tag, lines)
+      call expect_load_error(error, tag, name, no_overrides, fragments, stat)
+      if (delete_file(name)) continue
+   end subroutine expect_error
+
+   !> Expect an error from overrides of the default case, its message containing every
+   !> fragment.
+   subroutine expect_override_error(error, tag, overrides, fragments)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: tag
+      character(len=*), intent(in) :: overrides(:), fragments(:)
+      call expect_load_error(error, tag, '', overrides, fragments)
+   end subroutine expect_override_error
+
+   !> Load a case file ('' for none) with overrides and expect an error whose message contains
+   !> every fragment (and whose status is `stat`, when given).
+   subroutine expect_load_error(error, tag, name, overrides, fragments, stat)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: tag, name
+      character(len=*), intent(in) :: overrides(:), fragments(:)
+      integer, intent(in), optional :: stat
       type(case_config_type) :: config
       type(lib_error), allocatable :: lerr
-      character(len=:), allocatable :: name
       integer :: i
-      name = scratch_file(tag, lines)
-      call load_config(name, no_overrides, config, lerr)
-      if (delete_file(name)) continue
+      call load_config(name, overrides, config, lerr)
       if (.not. allocated(lerr)) then
          call test_failed(error, tag//': expected an error, got none')
          return
@@ -83,17 +112,34 @@ contains
          end if
       end do
       if (present(stat)) call check(error, lerr%stat, stat, message=tag//': status')
-   end subroutine expect_error
+   end subroutine expect_load_error
+
+   !> Print a configuration as a namelist and read it back: the text must read and print the
+   !> same again.
+   subroutine read_back(c, d, text, error)
+      !> The configuration printed.
+      type(case_config_type), intent(in) :: c
+      !> The configuration read back.
+      type(case_config_type), intent(out) :: d
+      !> The printed namelist.
+      character(len=:), allocatable, intent(out) :: text
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: lerr
+      text = config_namelist(c)
+      call read_config_text(text, 'printed', d, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'printed namelist does not read back: '//lerr%message// &
+            new_line('a')//text)
+         return
+      end if
+      call check(error, config_namelist(d) == text, message='printed namelist is a fixed point')
+   end subroutine read_back
 
    subroutine test_defaults(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
-      call load_config('', no_overrides, c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', no_overrides, c, error)
+      if (allocated(error)) return
       call check(error, c%n_cases(), 1)
       if (allocated(error)) return
       call check(error, c%profiles%wheel == 'builtin:S1002' .and. &
@@ -127,7 +173,6 @@ contains
    subroutine test_partial_file(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
       character(len=:), allocatable :: name
       name = scratch_file('partial', [character(len=80) :: &
          '! a comment line', &
@@ -139,12 +184,9 @@ contains
          '  friction = 0.25', &
          '/', &
          "&profiles wheel = 'wheel.prw' /"])
-      call load_config(name, no_overrides, c, lerr)
+      call load_valid(name, no_overrides, c, error)
       if (delete_file(name)) continue
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      if (allocated(error)) return
       call check(error, c%creepage%nu_y, -2.5e-4_wp)
       if (allocated(error)) return
       call check(error, c%creepage%nu_x, 0.58e-3_wp, message='untouched variable keeps default')
@@ -163,14 +205,10 @@ contains
    subroutine test_overrides(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
-      call load_config('', [character(len=40) :: 'creepage%nu_x=1e-3', &
+      call load_valid('', [character(len=40) :: 'creepage%nu_x=1e-3', &
          'tangential%bound=parabolic', 'sweep%phi=0,1e-3', 'sweep%phi=0,2e-3,3e-3', &
-         'output%fields=pressure,state'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+         'output%fields=pressure,state'], c, error)
+      if (allocated(error)) return
       call check(error, c%creepage%nu_x, 1.0e-3_wp)
       if (allocated(error)) return
       call check(error, c%tangential%bound == 'parabolic', message='unquoted string override')
@@ -180,16 +218,11 @@ contains
       call check(error, c%wants_field('state') .and. .not. c%wants_field('traction'), &
          message='field list override')
       if (allocated(error)) return
-      call load_config('', [character(len=40) :: 'creepage.nu_x=1'], c, lerr)
-      call check(error, allocated(lerr), message='malformed override is an error')
+      call expect_override_error(error, 'malformed override', [character(len=40) :: &
+         'creepage.nu_x=1'], [character(len=40) :: 'group%variable=value'])
       if (allocated(error)) return
-      call check(error, index(lerr%message, 'group%variable=value') > 0, message=lerr%message)
-      if (allocated(error)) return
-      call load_config('', [character(len=40) :: 'creepage%nu_x=abc'], c, lerr)
-      call check(error, allocated(lerr), message='wrong type in an override')
-      if (allocated(error)) return
-      call check(error, index(lerr%message, '--set creepage%nu_x=abc') > 0 .and. &
-         index(lerr%message, 'real number') > 0, message=lerr%message)
+      call expect_override_error(error, 'wrong type in an override', [character(len=40) :: &
+         'creepage%nu_x=abc'], [character(len=40) :: '--set creepage%nu_x=abc', 'real number'])
    end subroutine test_overrides
 
    subroutine test_unknown_variable(error)
@@ -275,27 +308,17 @@ contains
 
    subroutine test_missing_file(error)
       type(error_type), allocatable, intent(out) :: error
-      type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
-      call load_config('/nonexistent/case.nml', no_overrides, c, lerr)
-      call check(error, allocated(lerr), message='missing case file is an error')
-      if (allocated(error)) return
-      call check(error, lerr%stat, stat_io)
-      if (allocated(error)) return
-      call check(error, index(lerr%message, '/nonexistent/case.nml') > 0, message=lerr%message)
+      call expect_load_error(error, 'missing case file', '/nonexistent/case.nml', no_overrides, &
+         [character(len=40) :: '/nonexistent/case.nml'], stat_io)
    end subroutine test_missing_file
 
    subroutine test_sweep_grid(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
       type(case_point_type) :: p
-      call load_config('', [character(len=60) :: 'sweep%nu_x=0,2e-3', 'sweep%nu_x_points=20', &
-         'sweep%phi=0,1e-3,2e-3', "sweep%bound=weighted,clipped"], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', [character(len=60) :: 'sweep%nu_x=0,2e-3', 'sweep%nu_x_points=20', &
+         'sweep%phi=0,1e-3,2e-3', "sweep%bound=weighted,clipped"], c, error)
+      if (allocated(error)) return
       call check(error, c%n_cases(), 20*2*3)
       if (allocated(error)) return
       ! Loop order: bound, nu_x, phi (phi fastest).
@@ -325,81 +348,53 @@ contains
    subroutine test_sweep_list(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
       type(case_point_type) :: p
-      call load_config('', [character(len=60) :: "sweep%mode=list", 'sweep%nu_x=0,1e-3,2e-3', &
-         'sweep%nu_y=3e-3,4e-3,5e-3'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', [character(len=60) :: "sweep%mode=list", 'sweep%nu_x=0,1e-3,2e-3', &
+         'sweep%nu_y=3e-3,4e-3,5e-3'], c, error)
+      if (allocated(error)) return
       call check(error, c%n_cases(), 3)
       if (allocated(error)) return
       p = c%case_point(2)
       call check(error, p%nu_x == 1.0e-3_wp .and. p%nu_y == 4.0e-3_wp, message='list pairs')
       if (allocated(error)) return
-      call load_config('', [character(len=60) :: "sweep%mode=list", 'sweep%nu_x=0,1e-3', &
-         'sweep%nu_y=3e-3,4e-3,5e-3'], c, lerr)
-      call check(error, allocated(lerr), message='lists of unequal length')
+      call expect_override_error(error, 'lists of unequal length', [character(len=60) :: &
+         "sweep%mode=list", 'sweep%nu_x=0,1e-3', 'sweep%nu_y=3e-3,4e-3,5e-3'], &
+         [character(len=20) :: 'equal length'])
       if (allocated(error)) return
-      call check(error, index(lerr%message, 'equal length') > 0, message=lerr%message)
+      call expect_override_error(error, 'a range needs exactly two values', &
+         [character(len=60) :: 'sweep%nu_x=0,1e-3,2e-3', 'sweep%nu_x_points=5'], &
+         [character(len=20) :: 'exactly two'])
       if (allocated(error)) return
-      call load_config('', [character(len=60) :: 'sweep%nu_x=0,1e-3,2e-3', &
-         'sweep%nu_x_points=5'], c, lerr)
-      call check(error, allocated(lerr), message='a range needs exactly two values')
-      if (allocated(error)) return
-      call check(error, index(lerr%message, 'exactly two') > 0, message=lerr%message)
-      if (allocated(error)) return
-      call load_config('', [character(len=60) :: 'sweep%approach=0.01,0.02'], c, lerr)
-      call check(error, allocated(lerr), message='load axis of another load mode')
-      if (allocated(error)) return
-      call check(error, index(lerr%message, "mode = 'force'") > 0, message=lerr%message)
+      call expect_override_error(error, 'load axis of another load mode', &
+         [character(len=60) :: 'sweep%approach=0.01,0.02'], [character(len=20) :: "mode = 'force'"])
    end subroutine test_sweep_list
 
    subroutine test_shares_with(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
-      type(lib_error), allocatable :: lerr
-      call load_config('', [character(len=60) :: 'sweep%t_y=0,1,2', &
-         'sweep%normal_force=5e4,6e4', 'sweep%nu_x=0,1e-3,2e-3,3e-3'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', [character(len=60) :: 'sweep%t_y=0,1,2', &
+         'sweep%normal_force=5e4,6e4', 'sweep%nu_x=0,1e-3,2e-3,3e-3'], c, error)
+      if (allocated(error)) return
       ! Case 14 = t_y index 2, force index 2, nu_x index 2 (4 nu_x per force, 8 per t_y).
       call check(error, c%shares_with(14, axis_geometry), 9, message='same geometry from case 9')
       if (allocated(error)) return
       call check(error, c%shares_with(14, axis_load), 13, message='same normal from case 13')
       if (allocated(error)) return
-      call load_config('', [character(len=60) :: 'sweep%mode=list', 'sweep%t_y=0,1,0', &
-         'sweep%nu_x=0,1e-3,2e-3'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', [character(len=60) :: 'sweep%mode=list', 'sweep%t_y=0,1,0', &
+         'sweep%nu_x=0,1e-3,2e-3'], c, error)
+      if (allocated(error)) return
       call check(error, c%shares_with(3, axis_geometry), 1, message='list: equal t_y found')
    end subroutine test_shares_with
 
    subroutine test_round_trip(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c, d
-      type(lib_error), allocatable :: lerr
       character(len=:), allocatable :: text
-      call load_config('', [character(len=60) :: 'creepage%nu_x=1.23456789012345e-4', &
+      call load_valid('', [character(len=60) :: 'creepage%nu_x=1.23456789012345e-4', &
          "profiles%wheel=it's.prw", 'sweep%phi=0,2e-3', 'sweep%phi_points=21', &
-         'sweep%bound=weighted,clipped', 'track%rail_canted=.true.'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
-      text = config_namelist(c)
-      call read_config_text(text, 'printed', d, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, 'printed namelist does not read back: '//lerr%message// &
-            new_line('a')//text)
-         return
-      end if
-      call check(error, config_namelist(d) == text, message='printed namelist is a fixed point')
+         'sweep%bound=weighted,clipped', 'track%rail_canted=.true.'], c, error)
+      if (allocated(error)) return
+      call read_back(c, d, text, error)
       if (allocated(error)) return
       call check(error, d%creepage%nu_x == c%creepage%nu_x, message='exact real round trip')
       if (allocated(error)) return
@@ -434,15 +429,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c
       type(case_point_type) :: p
-      type(lib_error), allocatable :: lerr
       character(len=:), allocatable :: name
       integer :: ia
 
-      call load_config('', no_overrides, c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', no_overrides, c, error)
+      if (allocated(error)) return
       call check(error, .not. c%is_kinematic() .and. c%load%mode == 'force' .and. &
          c%tangential%spin_model == 'uniform', message='kinematics off by default, unchanged '// &
          'defaults of the prescribed-creepage mode')
@@ -460,12 +451,9 @@ contains
          '  v_vertical = -5.0, roll_rate = 0.01, yaw_rate = -0.02', &
          '/', &
          '&sweep v_forward = 10000, 20000 /'])
-      call load_config(name, no_overrides, c, lerr)
+      call load_valid(name, no_overrides, c, error)
       if (delete_file(name)) continue
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      if (allocated(error)) return
       call check(error, c%is_kinematic(), message='mode on')
       if (allocated(error)) return
       call check(error, c%load%mode == 'vertical', message='kinematic mode loads the wheel '// &
@@ -490,12 +478,9 @@ contains
       if (allocated(error)) return
 
       ! A pitch rate given is used as it is; the load mode given is kept.
-      call load_config('', [character(len=40) :: 'kinematics%mode=on', &
-         'kinematics%pitch_rate=-60', 'load%mode=force'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
+      call load_valid('', [character(len=40) :: 'kinematics%mode=on', &
+         'kinematics%pitch_rate=-60', 'load%mode=force'], c, error)
+      if (allocated(error)) return
       p = c%case_point(1)
       call check(error, p%pitch_rate == -60.0_wp .and. c%load%mode == 'force' .and. &
          p%v_forward == 30000.0_wp, message='given pitch rate and load mode; V = 30 m/s default')
@@ -556,25 +541,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c, d
       type(case_point_type) :: p
-      type(lib_error), allocatable :: lerr
       character(len=:), allocatable :: text
-      call load_config('', [character(len=60) :: 'kinematics%mode=on', 'kinematics%yaw=0.004', &
-         'sweep%t_y=0,4.733,8', 'sweep%v_forward=1e4,3e4'], c, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, lerr%message)
-         return
-      end if
-      text = config_namelist(c)
+      call load_valid('', [character(len=60) :: 'kinematics%mode=on', 'kinematics%yaw=0.004', &
+         'sweep%t_y=0,4.733,8', 'sweep%v_forward=1e4,3e4'], c, error)
+      if (allocated(error)) return
+      call read_back(c, d, text, error)
+      if (allocated(error)) return
       call check(error, index(text, '&creepage') == 0 .or. index(text, '! &creepage') > 0, &
          message='&creepage is left out in kinematic mode')
-      if (allocated(error)) return
-      call read_config_text(text, 'printed', d, lerr)
-      if (allocated(lerr)) then
-         call test_failed(error, 'printed namelist does not read back: '//lerr%message// &
-            new_line('a')//text)
-         return
-      end if
-      call check(error, config_namelist(d) == text, message='printed namelist is a fixed point')
       if (allocated(error)) return
       p = d%case_point(6)
       call check(error, d%n_cases() == 6 .and. .not. d%kinematics%pitch_rate_given .and. &
