@@ -53,17 +53,11 @@ contains
       type(c_ptr), value :: wheel, rail
       !> 1 right, −1 left.
       integer(c_int), value :: side
-      type(c_ptr), pointer :: out
       type(contact_context_type), pointer :: ctx
-      integer :: alloc_stat
 
       stat = stat_usage
-      if (.not. c_associated(handle)) return
-      call c_f_pointer(handle, out)
-      out = c_null_ptr
-      allocate (ctx, stat=alloc_stat)
-      if (alloc_stat /= 0) return
-      out = c_loc(ctx)
+      call new_context(handle, ctx)
+      if (.not. associated(ctx)) return
       if (.not. (c_associated(wheel) .and. c_associated(rail))) then
          stat = context_fail(ctx, 'shcontact_create: wheel or rail profile name is NULL; '// &
             "expected a name such as 'builtin:S1002' or a file name", stat_usage)
@@ -88,18 +82,12 @@ contains
       type(c_ptr), value :: rail_y, rail_z
       !> 1 right, −1 left.
       integer(c_int), value :: side
-      type(c_ptr), pointer :: out
       type(contact_context_type), pointer :: ctx
       real(c_double), pointer :: wy(:), wz(:), ry(:), rz(:)
-      integer :: alloc_stat
 
       stat = stat_usage
-      if (.not. c_associated(handle)) return
-      call c_f_pointer(handle, out)
-      out = c_null_ptr
-      allocate (ctx, stat=alloc_stat)
-      if (alloc_stat /= 0) return
-      out = c_loc(ctx)
+      call new_context(handle, ctx)
+      if (.not. associated(ctx)) return
       if (n_wheel < 0 .or. n_rail < 0) then
          stat = context_fail(ctx, 'shcontact_create_arrays: negative number of points '// &
             '(n_wheel = '//str_int(int(n_wheel))//', n_rail = '//str_int(int(n_rail))//')', &
@@ -118,6 +106,28 @@ contains
       call c_f_pointer(rail_z, rz, [n_rail])
       stat = context_create_arrays(ctx, wy, wz, ry, rz, int(side))
    end function shcontact_create_arrays
+
+   !> Allocate a new contact and store its address in *handle (shcontact_contact **): NULL
+   !> first, so that the caller finds NULL when memory is out. `ctx` is null when `handle` is
+   !> NULL or memory is out.
+   subroutine new_context(handle, ctx)
+      !> Where to store the handle.
+      type(c_ptr), intent(in) :: handle
+      !> The new contact.
+      type(contact_context_type), pointer, intent(out) :: ctx
+      type(c_ptr), pointer :: out
+      integer :: alloc_stat
+      ctx => null()
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, out)
+      out = c_null_ptr
+      allocate (ctx, stat=alloc_stat)
+      if (alloc_stat /= 0) then
+         ctx => null()
+         return
+      end if
+      out = c_loc(ctx)
+   end subroutine new_context
 
    !> Release a contact; NULL is accepted and ignored (status 0).
    integer(c_int) function shcontact_destroy(handle) result(stat) &
