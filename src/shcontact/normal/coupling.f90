@@ -145,18 +145,19 @@ contains
    !> differ from the local-Hertz ones by Δ cos γ_k with one vertical shift Δ, and the vertical
    !> normal load Σ_k N_k cos γ_k is kept (so every loading mode keeps its balance) while each
    !> patch's own load may change. A single loaded patch is [[couple_strips]]; loaded patches
-   !> beyond [[max_patches]] (the least loaded) are coupled alone.
-   pure subroutine couple_patches(patches, offset, e_star, error)
+   !> beyond [[max_patches]] (the least loaded) are coupled alone, and so is every patch when
+   !> `offset` is absent (patches not placed press no other).
+   pure subroutine couple_patches(patches, e_star, error, offset)
       !> The strip tables of the wheel's patches (unloaded ones are skipped).
       type(normal_patch_type), intent(inout) :: patches(:)
-      !> Position of each patch's reference point along the rail profile (mm).
-      real(wp), intent(in) :: offset(:)
       !> E* = G/(1 − ν) (MPa).
       real(wp), intent(in) :: e_star
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Position of each patch's reference point along the rail profile (mm).
+      real(wp), intent(in), optional :: offset(:)
       type(group_set_type) :: set, single
-      real(wp) :: weight(max_patches, max_patches)
+      real(wp) :: weight(max_patches, max_patches), place
       integer :: order(max_patches), component(max_patches), chosen(max_patches), n_joint, k, &
          i, j, c, old, members
 
@@ -187,9 +188,15 @@ contains
       ! patch are built here once; the problems below take copies of them.
       do i = 1, n_joint
          k = order(i)
-         call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
+         place = 0.0_wp
+         if (present(offset)) place = offset(k)
+         call add_patch_groups(set, patches(k), place, patches(k)%gamma0)
       end do
-      call patch_weights(set, weight)
+      if (present(offset)) then
+         call patch_weights(set, weight)
+      else
+         weight = 0.0_wp
+      end if
       do i = 1, n_joint
          component(i) = i
       end do
