@@ -18,6 +18,7 @@ program tester
    use test_hertz, only: collect_hertz
    use test_semihertz, only: collect_semihertz
    use test_normal_loading, only: collect_normal_loading
+   use test_normal_loading_patches, only: collect_normal_loading_patches
    use test_profile_reader, only: collect_profile_reader
    use test_profile_cleanup, only: collect_profile_cleanup
    use test_profile_builtin, only: collect_profile_builtin
@@ -53,6 +54,7 @@ program tester
       new_testsuite('hertz', collect_hertz), &
       new_testsuite('semihertz', collect_semihertz), &
       new_testsuite('normal_loading', collect_normal_loading), &
+      new_testsuite('normal_loading_patches', collect_normal_loading_patches), &
       new_testsuite('profile_reader', collect_profile_reader), &
       new_testsuite('profile_cleanup', collect_profile_cleanup), &
       new_testsuite('profile_builtin', collect_profile_builtin), &

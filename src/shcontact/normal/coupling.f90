@@ -58,13 +58,14 @@ module shcontact_normal_coupling
       integer :: n = 0, n_patches = 0
       integer :: patch(max_total) = 0
       !> Width (mm), centre along the patch y (mm) and along the profile s (mm), mean half-length
-      !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), contact angle (rad),
-      !> coupled/local load ratio.
+      !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), coupled/local load ratio.
       real(wp), dimension(max_total) :: width = 0.0_wp, yc = 0.0_wp, s = 0.0_wp, ac = 0.0_wp, &
-         gc = 0.0_wp, local = 0.0_wp, gamma = 0.0_wp, ratio = 0.0_wp
+         gc = 0.0_wp, local = 0.0_wp, ratio = 0.0_wp
       integer, dimension(max_patches) :: first_group = 1, last_group = 0
-      !> Per set patch: local-Hertz load N_k (N) and cos γ_k.
-      real(wp), dimension(max_patches) :: patch_load = 0.0_wp, cos_gamma = 1.0_wp
+      !> Per set patch: local-Hertz load N_k (N), position of the reference point along the
+      !> profile (mm), contact angle γ_k (rad) and cos γ_k.
+      real(wp), dimension(max_patches) :: patch_load = 0.0_wp, offset = 0.0_wp, gamma = 0.0_wp, &
+         cos_gamma = 1.0_wp
    contains
       !> Empty the set (the arrays are kept).
       procedure :: reset => reset_group_set
@@ -114,11 +115,26 @@ contains
       type(group_set_type) :: set
 
       call add_patch_groups(set, patch, 0.0_wp, 0.0_wp)
+      call couple_single(set, patch, e_star, error)
+   end subroutine couple_strips
+
+   !> The coupled solve of a set that holds the groups of one patch alone (at offset 0 and
+   !> contact angle 0, as [[couple_strips]] places them), scaled back onto the patch's strips.
+   pure subroutine couple_single(set, patch, e_star, error)
+      !> The groups of the patch.
+      type(group_set_type), intent(inout) :: set
+      !> The patch's strip table: local Hertz on entry, coupled on return.
+      type(normal_patch_type), intent(inout) :: patch
+      !> E* = G/(1 − ν) (MPa).
+      real(wp), intent(in) :: e_star
+      !> Set when the dense solve fails.
+      type(error_type), allocatable, intent(out) :: error
+
       if (set%n < 1) return
       call solve_groups(set, e_star, error)
       if (allocated(error)) return
       call scale_patch(set, 1, patch)
-   end subroutine couple_strips
+   end subroutine couple_single
 
    !> The patches of one wheel coupled together (module text): the strips of every loaded patch
    !> in one half-space problem, so that neighbouring patches press each other's surfaces down
@@ -129,18 +145,19 @@ contains
    !> differ from the local-Hertz ones by Δ cos γ_k with one vertical shift Δ, and the vertical
    !> normal load Σ_k N_k cos γ_k is kept (so every loading mode keeps its balance) while each
    !> patch's own load may change. A single loaded patch is [[couple_strips]]; loaded patches
-   !> beyond [[max_patches]] (the least loaded) are coupled alone.
-   pure subroutine couple_patches(patches, offset, e_star, error)
+   !> beyond [[max_patches]] (the least loaded) are coupled alone, and so is every patch when
+   !> `offset` is absent (patches not placed press no other).
+   pure subroutine couple_patches(patches, e_star, error, offset)
       !> The strip tables of the wheel's patches (unloaded ones are skipped).
       type(normal_patch_type), intent(inout) :: patches(:)
-      !> Position of each patch's reference point along the rail profile (mm).
-      real(wp), intent(in) :: offset(:)
       !> E* = G/(1 − ν) (MPa).
       real(wp), intent(in) :: e_star
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
-      type(group_set_type) :: set
-      real(wp) :: weight(max_patches, max_patches)
+      !> Position of each patch's reference point along the rail profile (mm).
+      real(wp), intent(in), optional :: offset(:)
+      type(group_set_type) :: set, single
+      real(wp) :: weight(max_patches, max_patches), place
       integer :: order(max_patches), component(max_patches), chosen(max_patches), n_joint, k, &
          i, j, c, old, members
 
@@ -167,12 +184,19 @@ contains
       end do
       if (n_joint < 1) return
       ! Which patches press each other (patch_weights > 0): the connected groups of patches
-      ! are solved each on its own, a patch that presses no other alone.
+      ! are solved each on its own, a patch that presses no other alone. The groups of every
+      ! patch are built here once; the problems below take copies of them.
       do i = 1, n_joint
          k = order(i)
-         call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
+         place = 0.0_wp
+         if (present(offset)) place = offset(k)
+         call add_patch_groups(set, patches(k), place, patches(k)%gamma0)
       end do
-      call patch_weights(set, weight)
+      if (present(offset)) then
+         call patch_weights(set, weight)
+      else
+         weight = 0.0_wp
+      end if
       do i = 1, n_joint
          component(i) = i
       end do
@@ -192,7 +216,9 @@ contains
          if (members == 0) cycle
          if (members == 1) then
             i = findloc(component(1:n_joint), c, dim=1)
-            call couple_strips(patches(order(i)), e_star, error)
+            call single%reset()
+            call copy_patch_groups(single, set, i, 0.0_wp, 0.0_wp)
+            call couple_single(single, patches(order(i)), e_star, error)
             if (allocated(error)) return
             cycle
          end if
@@ -200,9 +226,9 @@ contains
          do i = 1, n_joint
             if (component(i) /= c) cycle
             members = members + 1
-            chosen(members) = order(i)
+            chosen(members) = i
          end do
-         call couple_component(patches, offset, e_star, chosen(1:members), error)
+         call couple_component(set, chosen(1:members), order, patches, e_star, error)
          if (allocated(error)) return
       end do
    end subroutine couple_patches
@@ -211,42 +237,44 @@ contains
    !> alone first, for the shift c_k = δ'_k − δ_k of its own coupled solution; the joint
    !> problem starts from those, so that the patches' own load–approach relations stay the
    !> strips'.
-   pure subroutine couple_component(patches, offset, e_star, members, error)
+   pure subroutine couple_component(all, members, order, patches, e_star, error)
+      !> The groups of every jointly coupled patch, placed along the profile.
+      type(group_set_type), intent(in) :: all
+      !> The patches of `all` coupled together (at most max_patches).
+      integer, intent(in) :: members(:)
+      !> Index in `patches` of each patch of `all`.
+      integer, intent(in) :: order(:)
       !> The strip tables of the wheel's patches.
       type(normal_patch_type), intent(inout) :: patches(:)
-      !> Position of each patch's reference point along the rail profile (mm).
-      real(wp), intent(in) :: offset(:)
       !> E* = G/(1 − ν) (MPa).
       real(wp), intent(in) :: e_star
-      !> Indices of the patches coupled together (at most max_patches).
-      integer, intent(in) :: members(:)
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
       type(group_set_type) :: set, single
       real(wp) :: shift(max_patches)
-      integer :: i, k, g1
+      integer :: i, p, g1
 
       do i = 1, size(members)
-         k = members(i)
+         p = members(i)
          call single%reset()
-         call add_patch_groups(single, patches(k), 0.0_wp, patches(k)%gamma0)
+         call copy_patch_groups(single, all, p, 0.0_wp, all%gamma(p))
          shift(i) = 0.0_wp
          if (single%n < 1) cycle
          call solve_groups(single, e_star, error, shift(i))
          if (allocated(error)) return
-         shift(i) = shift(i)*cos(patches(k)%gamma0)
+         shift(i) = shift(i)*single%cos_gamma(1)
       end do
       do i = 1, size(members)
-         k = members(i)
+         p = members(i)
          g1 = set%n + 1
-         call add_patch_groups(set, patches(k), offset(k), patches(k)%gamma0)
+         call copy_patch_groups(set, all, p, all%offset(p), all%gamma(p))
          set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)
       end do
       if (set%n < 1) return
       call solve_groups(set, e_star, error)
       if (allocated(error)) return
       do i = 1, size(members)
-         call scale_patch(set, i, patches(members(i)))
+         call scale_patch(set, i, patches(order(members(i))))
       end do
    end subroutine couple_component
 
@@ -261,11 +289,7 @@ contains
       integer :: m, ng, i, j, c, g, n
 
       n = patch%n_strips
-      set%n_patches = set%n_patches + 1
-      set%first_group(set%n_patches) = set%n + 1
-      set%last_group(set%n_patches) = set%n
-      set%patch_load(set%n_patches) = sum(patch%strip_load(1:n))
-      set%cos_gamma(set%n_patches) = cos(gamma)
+      call open_patch(set, sum(patch%strip_load(1:n)), offset, gamma)
       if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
       m = count(patch%a(1:n) > 0.0_wp .and. patch%k(1:n) > 0.0_wp)
       if (m < 1) return
@@ -277,7 +301,6 @@ contains
       do j = 1, ng
          g = set%n + j
          set%patch(g) = set%n_patches
-         set%gamma(g) = gamma
          set%width(g) = 0.0_wp
          set%yc(g) = 0.0_wp
          set%ac(g) = 0.0_wp
@@ -305,6 +328,48 @@ contains
       set%last_group(set%n_patches) = set%n
    end subroutine add_patch_groups
 
+   !> Append the groups of patch p of another set, placed at `offset` along the profile with
+   !> contact angle `gamma` (the groups themselves are the patch's, [[add_patch_groups]]).
+   pure subroutine copy_patch_groups(set, source, p, offset, gamma)
+      type(group_set_type), intent(inout) :: set
+      !> The set that holds the patch's groups.
+      type(group_set_type), intent(in) :: source
+      !> The patch in `source`.
+      integer, intent(in) :: p
+      !> Position of the patch's reference point along the profile (mm) and its contact angle.
+      real(wp), intent(in) :: offset, gamma
+      integer :: g, h
+
+      call open_patch(set, source%patch_load(p), offset, gamma)
+      do g = source%first_group(p), source%last_group(p)
+         h = set%n + 1
+         set%patch(h) = set%n_patches
+         set%width(h) = source%width(g)
+         set%yc(h) = source%yc(g)
+         set%ac(h) = source%ac(g)
+         set%gc(h) = source%gc(g)
+         set%local(h) = source%local(g)
+         set%s(h) = offset + set%yc(h)
+         set%n = h
+      end do
+      set%last_group(set%n_patches) = set%n
+   end subroutine copy_patch_groups
+
+   !> Start a new patch of the set, without groups yet.
+   pure subroutine open_patch(set, load, offset, gamma)
+      type(group_set_type), intent(inout) :: set
+      !> Its local-Hertz load (N), the position of its reference point along the profile (mm)
+      !> and its contact angle (rad).
+      real(wp), intent(in) :: load, offset, gamma
+      set%n_patches = set%n_patches + 1
+      set%first_group(set%n_patches) = set%n + 1
+      set%last_group(set%n_patches) = set%n
+      set%patch_load(set%n_patches) = load
+      set%offset(set%n_patches) = offset
+      set%gamma(set%n_patches) = gamma
+      set%cos_gamma(set%n_patches) = cos(gamma)
+   end subroutine open_patch
+
    !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J = δ_J − g_J on every group in
    !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set: groups with
    !> a negative peak leave); set%ratio = coupled over local-Hertz load of each group.
@@ -323,14 +388,7 @@ contains
 
       n = set%n
       call patch_weights(set, weight)
-      do i = 1, n
-         do j = 1, n
-            kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), &
-               i == j)/(pi*e_star)
-            if (set%patch(i) /= set%patch(j)) kern(j, i) = kern(j, i)*cos(set%gamma(j) - &
-               set%gamma(i))*weight(set%patch(j), set%patch(i))
-         end do
-      end do
+      call fill_kernel(set, e_star, weight, kern)
       vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
       in_contact(1:n) = .true.
       peak(1:n) = 0.0_wp
@@ -348,8 +406,9 @@ contains
             do j = 1, mg
                kmat(j, i) = kern(idx(j), idx(i))
             end do
-            kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))*cos(set%gamma(idx(i)))
-            kmat(i, mg + 1) = -cos(set%gamma(idx(i)))
+            kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))* &
+               set%cos_gamma(set%patch(idx(i)))
+            kmat(i, mg + 1) = -set%cos_gamma(set%patch(idx(i)))
             rhs(i) = set%gc(idx(i))
          end do
          kmat(mg + 1, mg + 1) = 0.0_wp
@@ -366,7 +425,7 @@ contains
          readmitted = .false.
          do j = 1, n
             if (in_contact(j)) cycle
-            displacement = -cos(set%gamma(j))*rhs(mg + 1)
+            displacement = -set%cos_gamma(set%patch(j))*rhs(mg + 1)
             do i = 1, mg
                displacement = displacement + kern(j, idx(i))*peak(idx(i))
             end do
@@ -381,6 +440,35 @@ contains
          set%ratio(j) = max(0.0_wp, 0.5_wp*pi*peak(j)*set%ac(j)*set%width(j))/set%local(j)
       end do
    end subroutine solve_groups
+
+   !> The influence matrix of a set, kern(j, i) = K_ji (module text): the displacement at group
+   !> j per unit peak of group i. Between two patches p ∋ j and q ∋ i it is taken along p's
+   !> normal, cos(γ_p − γ_q) times the in-plane kernel, times their weight ([[patch_weights]]).
+   !> The groups of a patch are consecutive in the set: the matrix is filled block by block.
+   pure subroutine fill_kernel(set, e_star, weight, kern)
+      type(group_set_type), intent(in) :: set
+      !> E* = G/(1 − ν) (MPa).
+      real(wp), intent(in) :: e_star
+      !> How much the set's patches press each other.
+      real(wp), intent(in) :: weight(max_patches, max_patches)
+      real(wp), intent(out) :: kern(max_total, max_total)
+      real(wp) :: c
+      integer :: p, q, i, j
+
+      do q = 1, set%n_patches
+         do p = 1, set%n_patches
+            c = 1.0_wp
+            if (p /= q) c = cos(set%gamma(p) - set%gamma(q))
+            do i = set%first_group(q), set%last_group(q)
+               do j = set%first_group(p), set%last_group(p)
+                  kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), &
+                     i == j)/(pi*e_star)
+                  if (p /= q) kern(j, i) = kern(j, i)*c*weight(p, q)
+               end do
+            end do
+         end do
+      end do
+   end subroutine fill_kernel
 
    !> Scale the strips of the set's patch ip by their groups' ratios, interpolated between
    !> group centres (constant beyond the outer ones); strips whose ratio vanishes leave the

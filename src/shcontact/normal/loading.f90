@@ -215,17 +215,15 @@ contains
       type(normal_patch_type), intent(inout) :: patches(:)
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
-      !> More patches than this on one wheel are coupled one by one (a fixed-size work array).
+      !> More patches than this on one wheel are not placed along the profile (a fixed-size work
+      !> array): each is coupled alone.
       integer, parameter :: most = 32
       real(wp) :: offset(most), dy, dz
       integer :: k
 
       if (contacts(1)%options%reduction /= reduction_coupled) return
       if (size(contacts) > most) then
-         do k = 1, size(contacts)
-            call coupled_if_asked(contacts(k), patches(k), error)
-            if (allocated(error)) return
-         end do
+         call couple_patches(patches, contacts(1)%e_star, error)
          return
       end if
       do k = 1, size(contacts)
@@ -233,7 +231,7 @@ contains
          dz = contacts(k)%z_track - contacts(1)%z_track
          offset(k) = sign(sqrt(dy*dy + dz*dz), dy)
       end do
-      call couple_patches(patches, offset(1:size(contacts)), contacts(1)%e_star, error)
+      call couple_patches(patches, contacts(1)%e_star, error, offset(1:size(contacts)))
    end subroutine patches_coupled_if_asked
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz

@@ -1,0 +1,137 @@
+!> The benchmark's sections on the wheel in motion (issues 12 and 13): the kinematic call at a
+!> fixed position and along a hunting trajectory, the new defaults against the old ones, and the
+!> scan of every 0.01 mm position (kernels in [[bench_moving]]).
+module bench_moving_items
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use shcontact, only: wp, error_type, normal_options_type, contact_solver_type
+   use shcontact_normal_options, only: reduction_local_hertz
+   use bench_timing, only: timing_type, time_kernel, wall_time
+   use bench_kernels, only: full_case_kernel
+   use bench_moving, only: kinematic_kernel, hunting_states, scan_positions
+   use bench_config, only: bench_config_type, sizes
+   use bench_case, only: bench_case_type
+   use bench_results, only: summary_type
+   use bench_report, only: section, report, stop_on
+   implicit none
+   private
+
+   public :: moving_section, defaults_section, scan_section
+
+contains
+
+   !> The kinematic call (issue 12), 100 strips x 50 elements, vertical load 64.7 kN, 30 m/s:
+   !> at one fixed wheelset position with the trajectory's velocities (new creepages at every
+   !> call; the geometry and the prepared normal problem are reused) and along a hunting
+   !> trajectory whose t_y and yaw change at every call (amplitudes 0.01-8 mm, up to 10 mrad),
+   !> measured in the same run, with the ratio.
+   subroutine moving_section(config, summary)
+      !> The options of the run.
+      type(bench_config_type), intent(in) :: config
+      !> The figures of the targets.
+      type(summary_type), intent(inout) :: summary
+      type(kinematic_kernel) :: fixed, moving
+      type(timing_type) :: t_fixed, t_moving
+      type(error_type), allocatable :: error
+      real(wp) :: t_init
+
+      call section('wheel in motion: kinematic call (solve_kinematic), 100 strips x 50 '// &
+         'elements, vertical load 64.7 kN, 30 m/s')
+      t_init = wall_time()
+      call moving%solver%init('builtin:S1002', 'builtin:UIC60', error)
+      t_init = wall_time() - t_init
+      call stop_on(error, 'solver init')
+      call fixed%solver%init('builtin:S1002', 'builtin:UIC60', error)
+      call stop_on(error, 'solver init')
+      moving%states = hunting_states(1000)
+      ! Same position (that of state 200), the velocities of the trajectory: new creepages at
+      ! every call, as a vehicle code's call when the wheelset has not moved.
+      fixed%states = moving%states
+      fixed%states%y_ws = moving%states(200)%y_ws
+      fixed%states%yaw = moving%states(200)%yaw
+      write (output_unit, '(2x,a,f8.1,a)') 'set-up (init: profiles smoothed and sampled): ', &
+         1.0e6_wp*t_init, ' us, once per wheel'
+      t_init = wall_time()
+      call moving%run(1)
+      t_init = wall_time() - t_init
+      write (output_unit, '(2x,a,f8.1,a)') 'first yawed call (also prepares the yaw table): ', &
+         1.0e6_wp*t_init, ' us, once per wheel'
+      t_fixed = time_kernel(fixed, config%runs, config%batch_time)
+      call report(fixed, t_fixed, 'same position, new velocities (creepages) every call')
+      t_moving = time_kernel(moving, config%runs, config%batch_time)
+      call report(moving, t_moving, 'hunting trajectory, t_y and yaw new every call')
+      write (output_unit, '(2x,a,f7.2,a,i0)') 'ratio moving/fixed: ', &
+         t_moving%median/t_fixed%median, '; failed calls: ', moving%failures + fixed%failures
+      summary%moving = t_moving%median
+      summary%moving_ratio = t_moving%median/t_fixed%median
+   end subroutine moving_section
+
+   !> The defaults of issue 13 against the old ones, same run: the normal reduction `coupled`
+   !> (the strips' load redistributed through the half-space) against `local-hertz`, on the
+   !> full case at a fixed position (normal solve for the load + tangential) and on the
+   !> kinematic call along the hunting trajectory, with the ratios new/old.
+   subroutine defaults_section(config, bench)
+      !> The options of the run.
+      type(bench_config_type), intent(in) :: config
+      !> The case.
+      type(bench_case_type), intent(in) :: bench
+      type(full_case_kernel) :: full(2)
+      type(kinematic_kernel) :: moving(2)
+      type(timing_type) :: t_full(2), t_moving(2)
+      type(normal_options_type) :: old
+      type(error_type), allocatable :: error
+      character(len=*), parameter :: names(2) = [character(len=11) :: 'coupled', 'local-hertz']
+      integer :: c
+
+      call section('defaults: normal reduction coupled (new, issue 13) against local-hertz '// &
+         '(old), 100 strips x 50 elements, same run')
+      old = bench%normal_options
+      old%reduction = reduction_local_hertz
+      do c = 1, 2
+         full(c)%n_strips = sizes(3)
+         full(c)%contact = bench%normal_contact(sizes(3), &
+            reduction=merge(bench%normal_options%reduction, old%reduction, c == 1))
+         full(c)%load = bench%load
+         full(c)%material = bench%material
+         full(c)%options = bench%tangential_options
+         full(c)%options%fields = .false.
+         full(c)%creepage = bench%headline
+         call moving(c)%solver%init('builtin:S1002', 'builtin:UIC60', error)
+         call stop_on(error, 'solver init')
+         if (c == 2) call moving(c)%solver%set_options(error, normal=old)
+         call stop_on(error, 'set_options')
+         moving(c)%states = hunting_states(1000)
+         call moving(c)%run(1)
+      end do
+      ! The new and the old defaults of each item are timed one right after the other.
+      do c = 1, 2
+         t_full(c) = time_kernel(full(c), config%runs, config%batch_time)
+         call report(full(c), t_full(c), 'full case, fixed position, '//trim(names(c)))
+      end do
+      do c = 1, 2
+         t_moving(c) = time_kernel(moving(c), config%runs, config%batch_time)
+         call report(moving(c), t_moving(c), 'kinematic call, hunting, '//trim(names(c)))
+      end do
+      write (output_unit, '(2x,a,f6.2,a,f6.2,a,i0)') 'ratio new/old defaults: full case ', &
+         t_full(1)%median/t_full(2)%median, ', wheel in motion ', &
+         t_moving(1)%median/t_moving(2)%median, '; failed calls: ', moving(1)%failures + &
+         moving(2)%failures
+   end subroutine defaults_section
+
+   !> Every 0.01 mm position from -10 to 10 mm at yaw 0 and +-10 mrad: the failed calls.
+   subroutine scan_section()
+      type(contact_solver_type) :: solver
+      type(error_type), allocatable :: error
+      integer :: failures
+      real(wp) :: t
+
+      call section('scan: kinematic call at every 0.01 mm, t_y = -10 ... 10 mm, yaw 0 and '// &
+         '+-10 mrad, vertical load 64.7 kN')
+      call solver%init('builtin:S1002', 'builtin:UIC60', error)
+      call stop_on(error, 'solver init')
+      t = wall_time()
+      call scan_positions(solver, [0.0_wp, 0.01_wp, -0.01_wp], failures)
+      write (output_unit, '(2x,a,i0,a,f8.1,a)') 'failed calls: ', failures, ' of 6003 (', &
+         wall_time() - t, ' s)'
+   end subroutine scan_section
+
+end module bench_moving_items

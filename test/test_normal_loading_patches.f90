@@ -1,0 +1,139 @@
+!> Tests of a vertical wheel load shared by more patches than the coupled reduction solves
+!> together (physics.md §4.6, shcontact_normal_coupling): beyond [[max_patches]] the least loaded
+!> patches are coupled alone, and beyond the patches the loading can place along the profile
+!> every patch is. The vertical balance holds in every case.
+module test_normal_loading_patches
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_options, only: normal_options_type, reduction_local_hertz, &
+      reduction_coupled
+   use shcontact_normal_coupling, only: couple_strips, max_patches
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
+      solve_vertical_load
+   use test_semihertz, only: polynomial_patch
+   implicit none
+   private
+   public :: collect_normal_loading_patches
+
+   !> Tread-like patches (seed curvatures, physics.md §1.5) in a row along the profile.
+   real(wp), parameter :: tread_a = 1.0_wp/920, tread_b = 1.0_wp/600
+   !> Spacing of the reference points along the profile (mm): neighbours' loaded extents are
+   !> within the combination distance, so placed patches press each other.
+   real(wp), parameter :: spacing = 12.0_wp
+   !> Vertical load per patch (N).
+   real(wp), parameter :: load_per_patch = 20000.0_wp
+
+contains
+
+   !> Collect the tests.
+   subroutine collect_normal_loading_patches(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('more_than_max_patches_balance', test_more_than_joint), &
+         new_unittest('patches_not_placed_coupled_alone', test_not_placed) &
+         ]
+   end subroutine collect_normal_loading_patches
+
+   !> Six loaded patches, two more than the joint problem holds: Σ N_k cos γ_k = F_z to 1e-10
+   !> and the rigid approach is the strips'; the two least loaded (in the local-Hertz solution)
+   !> are their own coupled solutions, the four others share their load (one of them changes by
+   !> more than 0.1 %).
+   subroutine test_more_than_joint(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = max_patches + 2
+      type(normal_patch_type) :: alone(n), joint(n)
+      real(wp) :: dz, dz_alone
+      logical :: joint_member(n)
+      integer :: k
+
+      call solve_row(n, alone, dz_alone, joint, dz, error)
+      if (allocated(error)) return
+      call check(error, all(joint%load > 0.0_wp), message='every patch should carry')
+      if (allocated(error)) return
+      call check_balance(joint, n*load_per_patch, dz, dz_alone, error)
+      if (allocated(error)) return
+      joint_member = .false.
+      do k = 1, max_patches
+         joint_member(maxloc(alone%load, mask=.not. joint_member, dim=1)) = .true.
+      end do
+      do k = 1, n
+         if (joint_member(k)) cycle
+         call check(error, joint(k)%load, alone(k)%load, thr=1.0e-12_wp, rel=.true., &
+            message='a patch beyond the joint problem should be coupled alone')
+         if (allocated(error)) return
+      end do
+      call check(error, maxval(abs(joint%load/alone%load - 1.0_wp), mask=joint_member) > &
+         1.0e-3_wp, message='the most loaded patches should press each other')
+   end subroutine test_more_than_joint
+
+   !> More patches (33) than the loading places along the profile: each is coupled alone, and
+   !> the vertical balance holds.
+   subroutine test_not_placed(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 33
+      type(normal_patch_type) :: alone(n), joint(n)
+      real(wp) :: dz, dz_alone
+      integer :: k
+
+      call solve_row(n, alone, dz_alone, joint, dz, error)
+      if (allocated(error)) return
+      call check_balance(joint, n*load_per_patch, dz, dz_alone, error)
+      if (allocated(error)) return
+      do k = 1, n
+         call check(error, joint(k)%load, alone(k)%load, thr=1.0e-12_wp, rel=.true., &
+            message='a patch not placed should be coupled alone')
+         if (allocated(error)) return
+      end do
+   end subroutine test_not_placed
+
+   !> n tread-like patches in a row (contact angles −0.03 − 0.02 (k − 1) rad, gaps
+   !> 0.5 (k − 1) µm) under n·load_per_patch: the coupled solution, and the local-Hertz one with
+   !> each patch then coupled alone.
+   subroutine solve_row(n, alone, dz_alone, joint, dz, error)
+      integer, intent(in) :: n
+      type(normal_patch_type), intent(out) :: alone(n), joint(n)
+      real(wp), intent(out) :: dz_alone, dz
+      type(error_type), allocatable, intent(out) :: error
+      type(normal_contact_type) :: contacts(n)
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(material_type) :: mat
+      type(lib_error), allocatable :: err
+      integer :: k
+
+      options%reduction = reduction_local_hertz
+      do k = 1, n
+         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
+            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
+         geom%y_rail = -spacing*(k - 1)
+         call prepare_normal_contact(contacts(k), geom, options, mat, err)
+         if (allocated(err)) exit
+      end do
+      if (.not. allocated(err)) call solve_vertical_load(contacts, n*load_per_patch, alone, &
+         dz_alone, err)
+      do k = 1, n
+         if (.not. allocated(err)) call couple_strips(alone(k), contacts(k)%e_star, err)
+         contacts(k)%options%reduction = reduction_coupled
+      end do
+      if (.not. allocated(err)) call solve_vertical_load(contacts, n*load_per_patch, joint, dz, &
+         err)
+      if (allocated(err)) call test_failed(error, err%message)
+   end subroutine solve_row
+
+   !> Σ N_k cos γ_k = F_z and the rigid approach of the strips, kept by the coupling.
+   subroutine check_balance(patches, f_z, dz, dz_alone, error)
+      type(normal_patch_type), intent(in) :: patches(:)
+      real(wp), intent(in) :: f_z, dz, dz_alone
+      type(error_type), allocatable, intent(out) :: error
+
+      call check(error, sum(patches%load*cos(patches%gamma0)), f_z, thr=1.0e-10_wp, rel=.true., &
+         message='vertical balance')
+      if (allocated(error)) return
+      call check(error, dz, dz_alone, thr=1.0e-14_wp, rel=.true., message='rigid approach')
+   end subroutine check_balance
+
+end module test_normal_loading_patches
