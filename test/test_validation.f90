@@ -24,7 +24,7 @@ module test_validation
       solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_options, only: tangential_options_type, flexibility_carter, &
-      parse_bound, parse_spin_model, parse_spin_flexibility
+      correction_none, parse_bound, parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
@@ -256,13 +256,14 @@ contains
          0.02_wp, message='ty5p8 DOE: P80 targets missed')
    end subroutine test_doe_ty5p8
 
-   !> The old default reduction `local-hertz` on ty5p8_literal, Table 10's row within ±0.002
-   !> (max 0.034 / 0.033, P80 0.026 / 0.010): f_x is what the coupling improves.
+   !> The defaults when issue 13 was filed (reduction `local-hertz`, no correction) on
+   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.034 / 0.033, P80 0.026 / 0.010): f_x is
+   !> what the coupling improves.
    subroutine test_doe_ty5p8_local_hertz(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
       call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
-         reduction='local-hertz')
+         reduction='local-hertz', correction=correction_none)
       if (allocated(error) .or. .not. allocated(ex)) return
       call check_row(ex, ey, [0.034_wp, 0.033_wp, 0.026_wp, 0.010_wp], 'ty5p8 local-hertz', &
          error)
@@ -522,7 +523,8 @@ contains
    !> exact-theory DOE file (the shared columns) at Y_WS, on the patch nearest CONTACT's
    !> reference point y_ref (track y) with the given normal reduction (default: the library's);
    !> ex unallocated (and the test skipped) without the data.
-   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, flexibility)
+   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, flexibility, &
+      correction)
       character(len=*), intent(in) :: doe
       real(wp), intent(in) :: y_ws, y_ref
       integer, intent(in) :: n_expected
@@ -530,6 +532,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in), optional :: reduction
       integer, intent(in), optional :: flexibility
+      !> Tangential `correction_*` (default: the library's, `exact-ellipse`).
+      integer, intent(in), optional :: correction
       type(normal_patch_type) :: patch
       type(tangential_options_type) :: options
       type(march_workspace_type) :: ws
@@ -551,6 +555,7 @@ contains
       if (allocated(error)) return
       call recommended_options(options)
       if (present(flexibility)) options%flexibility = flexibility
+      if (present(correction)) options%correction = correction
       call prepare_fastsim_sh(ws, patch, material_type(), options, err)
       if (allocated(err)) then
          call test_failed(error, err%message)
@@ -575,13 +580,14 @@ contains
    ! ------------------------------------------------------------------ helpers
 
    !> The recommended tangential settings (doc/validation.md), explicitly: W1, uniform spin,
-   !> longitudinal spin flexibility, 50 elements per strip.
+   !> longitudinal spin flexibility, the exact-ellipse correction, 50 elements per strip.
    subroutine recommended_options(options)
       type(tangential_options_type), intent(out) :: options
       type(lib_error), allocatable :: err
       call parse_bound('weighted', options%bound, err)
       call parse_spin_model('uniform', options%spin_model, err)
       call parse_spin_flexibility('longitudinal', options%spin_flexibility, err)
+      call parse_correction('exact-ellipse', options%correction, err)
       options%n_elements = 50
       options%fields = .false.
    end subroutine recommended_options

@@ -5,6 +5,7 @@ module bench_moving_items
    use, intrinsic :: iso_fortran_env, only: output_unit
    use shcontact, only: wp, error_type, normal_options_type, contact_solver_type
    use shcontact_normal_options, only: reduction_local_hertz
+   use shcontact_tangential_options, only: tangential_options_type, correction_none
    use bench_timing, only: timing_type, time_kernel, wall_time
    use bench_kernels, only: full_case_kernel
    use bench_moving, only: kinematic_kernel, hunting_states, scan_positions
@@ -65,56 +66,63 @@ contains
       summary%moving_ratio = t_moving%median/t_fixed%median
    end subroutine moving_section
 
-   !> The defaults of issue 13 against the old ones, same run: the normal reduction `coupled`
-   !> (the strips' load redistributed through the half-space) against `local-hertz`, on the
-   !> full case at a fixed position (normal solve for the load + tangential) and on the
-   !> kinematic call along the hunting trajectory, with the ratios new/old.
+   !> The defaults of issue 13 against the old ones, same run: the new defaults (normal reduction
+   !> `coupled`, tangential correction `exact-ellipse`), the same without the correction, and
+   !> the defaults when the issue was filed (`local-hertz`, no correction), on the full case at a
+   !> fixed position (normal solve for the load + tangential) and on the kinematic call along
+   !> the hunting trajectory, with the ratios to the old defaults.
    subroutine defaults_section(config, bench)
       !> The options of the run.
       type(bench_config_type), intent(in) :: config
       !> The case.
       type(bench_case_type), intent(in) :: bench
-      type(full_case_kernel) :: full(2)
-      type(kinematic_kernel) :: moving(2)
-      type(timing_type) :: t_full(2), t_moving(2)
-      type(normal_options_type) :: old
+      integer, parameter :: n_configs = 3
+      type(full_case_kernel) :: full(n_configs)
+      type(kinematic_kernel) :: moving(n_configs)
+      type(timing_type) :: t_full(n_configs), t_moving(n_configs)
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
       type(error_type), allocatable :: error
-      character(len=*), parameter :: names(2) = [character(len=11) :: 'coupled', 'local-hertz']
+      character(len=*), parameter :: names(n_configs) = [character(len=40) :: &
+         'new defaults (coupled, exact-ellipse)', 'coupled, correction none', &
+         'old defaults (local-hertz, none)']
       integer :: c
 
-      call section('defaults: normal reduction coupled (new, issue 13) against local-hertz '// &
-         '(old), 100 strips x 50 elements, same run')
-      old = bench%normal_options
-      old%reduction = reduction_local_hertz
-      do c = 1, 2
+      call section('defaults: new (issue 13) against old, 100 strips x 50 elements, same run')
+      do c = 1, n_configs
+         normal = bench%normal_options
+         tangential = bench%tangential_options
+         if (c >= 2) tangential%correction = correction_none
+         if (c == 3) normal%reduction = reduction_local_hertz
          full(c)%n_strips = sizes(3)
-         full(c)%contact = bench%normal_contact(sizes(3), &
-            reduction=merge(bench%normal_options%reduction, old%reduction, c == 1))
+         full(c)%contact = bench%normal_contact(sizes(3), reduction=normal%reduction)
          full(c)%load = bench%load
          full(c)%material = bench%material
-         full(c)%options = bench%tangential_options
+         full(c)%options = tangential
          full(c)%options%fields = .false.
          full(c)%creepage = bench%headline
          call moving(c)%solver%init('builtin:S1002', 'builtin:UIC60', error)
          call stop_on(error, 'solver init')
-         if (c == 2) call moving(c)%solver%set_options(error, normal=old)
+         call moving(c)%solver%set_options(error, normal=normal, tangential=tangential)
          call stop_on(error, 'set_options')
          moving(c)%states = hunting_states(1000)
          call moving(c)%run(1)
       end do
-      ! The new and the old defaults of each item are timed one right after the other.
-      do c = 1, 2
+      ! The configurations of each item are timed one right after the other.
+      do c = 1, n_configs
          t_full(c) = time_kernel(full(c), config%runs, config%batch_time)
          call report(full(c), t_full(c), 'full case, fixed position, '//trim(names(c)))
       end do
-      do c = 1, 2
+      do c = 1, n_configs
          t_moving(c) = time_kernel(moving(c), config%runs, config%batch_time)
          call report(moving(c), t_moving(c), 'kinematic call, hunting, '//trim(names(c)))
       end do
       write (output_unit, '(2x,a,f6.2,a,f6.2,a,i0)') 'ratio new/old defaults: full case ', &
-         t_full(1)%median/t_full(2)%median, ', wheel in motion ', &
-         t_moving(1)%median/t_moving(2)%median, '; failed calls: ', moving(1)%failures + &
-         moving(2)%failures
+         t_full(1)%median/t_full(3)%median, ', wheel in motion ', &
+         t_moving(1)%median/t_moving(3)%median, '; failed calls: ', sum(moving%failures)
+      write (output_unit, '(2x,a,f6.2,a,f6.2)') 'ratio with/without the correction: full '// &
+         'case ', t_full(1)%median/t_full(2)%median, ', wheel in motion ', &
+         t_moving(1)%median/t_moving(2)%median
    end subroutine defaults_section
 
    !> Every 0.01 mm position from -10 to 10 mm at yaw 0 and +-10 mrad: the failed calls.

@@ -11,7 +11,8 @@ module validate_patches
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, material_type, &
       prepared_profiles_type, patch_geometry_type, normal_patch_type, find_contact_patches, &
       wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
-   use shcontact_tangential_options, only: parse_spin_flexibility, parse_flexibility
+   use shcontact_tangential_options, only: parse_spin_flexibility, parse_flexibility, &
+      parse_correction
    use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
    use validate_case, only: solve_normal, reference_material
    use validate_normal, only: reference_pressure_patch, write_strips
@@ -33,34 +34,44 @@ module validate_patches
    !> Configurations: the defaults first, then one setting changed at a time; the last rows run
    !> FASTSIM_SH on CONTACT's exact pressure (c_pressure = 'contact', validate_normal's
    !> reference_pressure_patch), which separates the tangential model's error from the normal one.
-   integer, parameter :: n_configs = 15
+   integer, parameter :: n_configs = 18
    character(len=*), parameter :: config_labels(n_configs) = [character(len=48) :: &
-      'defaults (coupled; W1; uniform; longitudinal)', 'bound ellipsoidal', 'bound parabolic', &
-      'bound weighted-slip (W2)', 'bound clipped (W3)', 'spin flexibility spin', &
-      'spin model additive', 'normal reduction constant', &
-      'normal reduction local-hertz (old default)', 'defaults on CONTACT pressure', &
-      'ellipsoidal on CONTACT pressure', 'flexibility patch', &
-      'flexibility patch on CONTACT pressure', 'flexibility carter', &
+      'defaults (coupled, W1, exact-ellipse correction)', 'bound ellipsoidal', &
+      'bound parabolic', 'bound weighted-slip (W2)', 'bound clipped (W3)', &
+      'spin flexibility spin', 'spin model additive', 'normal reduction constant', &
+      'normal reduction local-hertz', 'correction none', &
+      'issue-13 start (local-hertz, no correction)', 'defaults on CONTACT pressure', &
+      'correction none on CONTACT pressure', 'ellipsoidal on CONTACT pressure', &
+      'flexibility patch', 'flexibility patch on CONTACT pressure', 'flexibility carter', &
       'flexibility carter on CONTACT pressure']
    character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
       'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted', &
-      'weighted', 'weighted', 'ellipsoidal', 'weighted', 'weighted', 'weighted', 'weighted']
+      'weighted', 'weighted', 'weighted', 'weighted', 'weighted', 'ellipsoidal', 'weighted', &
+      'weighted', 'weighted', 'weighted']
    character(len=*), parameter :: c_flex(n_configs) = [character(len=12) :: 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'spin', 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', &
-      'longitudinal', 'longitudinal', 'longitudinal']
+      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', &
+      'longitudinal']
    character(len=*), parameter :: c_spin(n_configs) = [character(len=8) :: 'uniform', &
       'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform', 'uniform', &
-      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform']
+      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', &
+      'uniform']
    character(len=*), parameter :: c_reduction(n_configs) = [character(len=11) :: &
       'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'constant', &
-      'local-hertz', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled']
+      'local-hertz', 'coupled', 'local-hertz', 'coupled', 'coupled', 'coupled', 'coupled', &
+      'coupled', 'coupled', 'coupled']
    character(len=*), parameter :: c_pressure(n_configs) = [character(len=7) :: 'ours', &
-      'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', 'contact', &
-      'ours', 'contact', 'ours', 'contact']
+      'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', &
+      'contact', 'contact', 'ours', 'contact', 'ours', 'contact']
    character(len=*), parameter :: c_flexibility(n_configs) = [character(len=6) :: 'strip', &
       'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', &
-      'patch', 'patch', 'carter', 'carter']
+      'strip', 'strip', 'strip', 'patch', 'patch', 'carter', 'carter']
+   character(len=*), parameter :: c_correction(n_configs) = [character(len=13) :: &
+      'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', &
+      'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'none', 'none', &
+      'exact-ellipse', 'none', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', &
+      'exact-ellipse', 'exact-ellipse']
 
 contains
 
@@ -80,7 +91,7 @@ contains
       character(len=24) :: doe_names(size(patch_names))
       integer :: n_cases(size(patch_names))
       type(csv_writer_type) :: out
-      character(len=48) :: cells(9)
+      character(len=48) :: cells(10)
       integer :: ip, ic
 
       do ip = 1, size(patch_names)
@@ -90,8 +101,8 @@ contains
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
-         'spin_flexibility,flexibility,reduction,pressure,n_cases,dfx_max,dfx_p80,dfx_mean,dfx_bias,'// &
-         'dfy_max,dfy_p80,dfy_mean,dfy_bias,us_per_case', &
+         'spin_flexibility,flexibility,reduction,pressure,correction,n_cases,dfx_max,dfx_p80,'// &
+         'dfx_mean,dfx_bias,dfy_max,dfy_p80,dfy_mean,dfy_bias,us_per_case', &
          error)
       if (allocated(error)) return
       do ip = 1, size(patch_names)
@@ -107,6 +118,7 @@ contains
             cells(7) = c_flexibility(ic)
             cells(8) = c_reduction(ic)
             cells(9) = c_pressure(ic)
+            cells(10) = c_correction(ic)
             call out%row([real(n_cases(ip), wp), ex(ic, ip)%max, ex(ic, ip)%p80, &
                ex(ic, ip)%mean, bx(ic, ip), ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean, &
                by(ic, ip), cost(ic, ip)], text=cells, digits=4)
@@ -264,6 +276,8 @@ contains
          options%spin_flexibility, error)
       if (.not. allocated(error)) call parse_flexibility(trim(c_flexibility(ic)), &
          options%flexibility, error)
+      if (.not. allocated(error)) call parse_correction(trim(c_correction(ic)), &
+         options%correction, error)
       options%n_elements = 50
       options%fields = .false.
    end subroutine options_of

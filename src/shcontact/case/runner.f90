@@ -30,7 +30,7 @@ module shcontact_case_runner
       solve_approach, solve_vertical_load
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model, parse_spin_flexibility
+      parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_solver, only: solve_tangential
@@ -151,6 +151,8 @@ contains
       if (allocated(error)) return
       call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
          setup%tangential%spin_flexibility, error)
+      if (allocated(error)) return
+      call parse_correction(trim(config%tangential%correction), setup%tangential%correction, error)
       if (allocated(error)) return
       setup%tangential%n_elements = config%tangential%n_elements
       setup%tangential%fields = config%wants_field('pressure') .or. &

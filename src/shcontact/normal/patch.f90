@@ -2,10 +2,11 @@
 !> (physics.md §4.3), which is also everything FASTSIM_SH needs (§6.5).
 module shcontact_normal_patch
    use shcontact_core_kinds, only: wp
+   use shcontact_core_constants, only: pi
    implicit none
    private
 
-   public :: normal_patch_type
+   public :: normal_patch_type, ellipse_strip_patch
 
    !> Strips of equal width dy centred at y(i); a strip with a(i) = 0 carries no load.
    type :: normal_patch_type
@@ -50,5 +51,55 @@ module shcontact_normal_patch
       !> Local wheel rolling radius r_w,i (mm).
       real(wp), allocatable :: r_wheel(:)
    end type normal_patch_type
+
+contains
+
+   !> The strip table of a Hertz ellipse with given semi-axes and load on a flat, straight patch
+   !> (γ = 0, constant rolling radius): strips over [−b, b], k_i = √(1 − y_i²/b²), a_i = k_i a,
+   !> p₀,ᵢ = k_i p₀ with p₀ = 3N/(2πab), n_i/m_i = b/a. Used to run FASTSIM_SH on canonical
+   !> ellipses (the exact-ellipse table and its tests).
+   pure subroutine ellipse_strip_patch(semi_a, semi_b, load, n_strips, r0, patch)
+      !> Semi-axes along x and y (mm), > 0.
+      real(wp), intent(in) :: semi_a, semi_b
+      !> Normal force (N), > 0.
+      real(wp), intent(in) :: load
+      !> Number of strips, ≥ 1.
+      integer, intent(in) :: n_strips
+      !> Rolling radius (mm), > 0.
+      real(wp), intent(in) :: r0
+      !> The strip table.
+      type(normal_patch_type), intent(out) :: patch
+      real(wp) :: eta, p0
+      integer :: i
+
+      patch%n_strips = n_strips
+      patch%is_hertz = .true.
+      patch%ellipse_a = semi_a
+      patch%ellipse_b = semi_b
+      patch%r0 = r0
+      patch%dy = 2.0_wp*semi_b/n_strips
+      p0 = 1.5_wp*load/(pi*semi_a*semi_b)
+      allocate (patch%y(n_strips), patch%a(n_strips), patch%k(n_strips), patch%p0(n_strips), &
+         patch%strip_load(n_strips), patch%m(n_strips), patch%n(n_strips), &
+         patch%eps_a(n_strips), patch%gamma(n_strips), patch%delta_r(n_strips), &
+         patch%r_wheel(n_strips))
+      do i = 1, n_strips
+         eta = (2.0_wp*i - 1.0_wp)/n_strips - 1.0_wp
+         patch%y(i) = eta*semi_b
+         patch%k(i) = sqrt((1.0_wp - eta)*(1.0_wp + eta))
+         patch%a(i) = patch%k(i)*semi_a
+         patch%p0(i) = patch%k(i)*p0
+         patch%strip_load(i) = 0.5_wp*pi*patch%p0(i)*patch%a(i)*patch%dy
+      end do
+      patch%m = 1.0_wp
+      patch%n = semi_b/semi_a
+      patch%eps_a = 0.5_wp
+      patch%gamma = 0.0_wp
+      patch%delta_r = 0.0_wp
+      patch%r_wheel = r0
+      patch%load = sum(patch%strip_load)
+      patch%area = 2.0_wp*sum(patch%a)*patch%dy
+      patch%p_max = maxval(patch%p0)
+   end subroutine ellipse_strip_patch
 
 end module shcontact_normal_patch

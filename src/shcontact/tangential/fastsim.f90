@@ -19,6 +19,7 @@ module shcontact_tangential_fastsim
       bound_ellipsoidal, spin_uniform
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_ellipse_correction, only: ellipse_correction_type
    use shcontact_tangential_march, only: march_workspace_type, reserve_workspace, &
       set_element_grid, solve_prepared
    implicit none
@@ -136,6 +137,7 @@ contains
       end do
       ws%parabolic_load_ratio = 32.0_wp/(9.0_wp*pi)*ws%parabolic_load_ratio/load
       call set_element_grid(ws)
+      ws%correction = ellipse_correction_type()
    end subroutine prepare_fastsim
 
    !> Classical FASTSIM in one call: [[prepare_fastsim]] then solve_prepared.

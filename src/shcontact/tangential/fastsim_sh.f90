@@ -23,7 +23,9 @@ module shcontact_tangential_fastsim_sh
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
-      bound_ellipsoidal, spin_flexibility_spin, flexibility_patch
+      bound_ellipsoidal, spin_flexibility_spin, flexibility_patch, corrected_model
+   use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
+      prepare_ellipse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_spin, only: geometric_spin, strip_spin_terms
@@ -151,6 +153,22 @@ contains
       ws%n_active = s
       ws%parabolic_load_ratio = 32.0_wp/(9.0_wp*pi)*ws%parabolic_load_ratio/ws%load
       call set_element_grid(ws)
+      ws%correction = ellipse_correction_type()
+      if (corrected_model(options)) then
+         call equivalent_ellipse(patch, ae, be)
+         call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, &
+            options%kalker_scheme, load_mean(ws%y), load_mean(ws%cos_gamma), &
+            load_mean(ws%sin_gamma))
+      end if
+
+   contains
+
+      !> Σ N_s v_s / Σ N_s over the loaded strips.
+      pure real(wp) function load_mean(v)
+         real(wp), intent(in) :: v(:)
+         load_mean = sum(ws%strip_normal(1:ws%n_active)*v(1:ws%n_active))/ws%load
+      end function load_mean
+
    end subroutine prepare_fastsim_sh
 
    !> The equivalent ellipse of a strip patch: b_e half the loaded width (first to last loaded

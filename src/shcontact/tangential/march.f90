@@ -28,6 +28,7 @@ module shcontact_tangential_march
       bound_weighted_slip, bound_clipped, spin_additive, spin_scaled, flexibility_strip, &
       flexibility_carter
    use shcontact_tangential_spin, only: local_creepages, scaled_spin_factor
+   use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, ellipse_defect
    implicit none
    private
 
@@ -95,6 +96,11 @@ module shcontact_tangential_march
       !> Per element: x'_j, step h_j/a, step times midpoint h_j x_mid,j/a², bound shape s_j,
       !> √(1 − x'²), 1 − x'², 1/√(1 − x'²).
       real(wp), allocatable :: xn(:), hn(:), hm(:), shape(:), ell(:), par(:), inv_ell(:)
+      !> The exact-ellipse correction of the totals (inactive unless the preparation set it).
+      type(ellipse_correction_type) :: correction
+      !> Load-weighted means of the strips' local creepages ν_x − φ_x y, ν_y, φ for the case
+      !> being solved: the creepages of the load centre.
+      real(wp) :: centre_nu_x = 0.0_wp, centre_nu_y = 0.0_wp, centre_phi = 0.0_wp
    end type march_workspace_type
 
 contains
@@ -247,6 +253,7 @@ contains
          end do
       end do
       if (ws%fields) call store_inactive(ws, result)
+      if (ws%correction%active) call correct_totals(ws, fx, fy, mz, fy_track, fz_track)
 
       result%fx = fx
       result%fy = fy
@@ -268,9 +275,12 @@ contains
       type(march_workspace_type), intent(inout) :: ws
       type(creepage_type), intent(in) :: creepage
       real(wp), intent(in) :: lambda
-      real(wp) :: nux, phix, nuy, phis
+      real(wp) :: nux, phix, nuy, phis, centre_x, centre_y, centre_phi
       integer :: s
 
+      centre_x = 0.0_wp
+      centre_y = 0.0_wp
+      centre_phi = 0.0_wp
       do s = 1, ws%n_active
          call local_creepages(ws%spin_model, creepage%nu_x, creepage%nu_y, creepage%phi, &
             lambda, ws%cos_ratio(s), ws%phi_geo(s), ws%dphi_geo(s), ws%rho(s), ws%phi_geo0, &
@@ -280,9 +290,32 @@ contains
          ws%cy(s) = -ws%aky(s)*nuy
          ws%cphi(s) = -ws%a2kphi(s)*phis
          ws%mu_pe(s) = ws%friction*ws%pe_peak(s)
+         centre_x = centre_x + ws%strip_normal(s)*(nux - phix*ws%y(s))
+         centre_y = centre_y + ws%strip_normal(s)*nuy
+         centre_phi = centre_phi + ws%strip_normal(s)*phis
       end do
+      ws%centre_nu_x = centre_x/ws%load
+      ws%centre_nu_y = centre_y/ws%load
+      ws%centre_phi = centre_phi/ws%load
       if (ws%flexibility == flexibility_carter) call carter_stiffening(ws)
    end subroutine strip_increments
+
+   !> Add the exact-ellipse defect (shcontact_tangential_ellipse_correction) at the creepages of
+   !> the load centre to the totals: F_x, F_y, M_z (F_x acting at the load centre) and the
+   !> track-frame forces (F_y along the mean tangent). The per-element fields stay the march's.
+   pure subroutine correct_totals(ws, fx, fy, mz, fy_track, fz_track)
+      type(march_workspace_type), intent(in) :: ws
+      real(wp), intent(inout) :: fx, fy, mz, fy_track, fz_track
+      real(wp) :: dfx, dfy, scale
+
+      call ellipse_defect(ws%correction, ws%centre_nu_x, ws%centre_nu_y, ws%centre_phi, dfx, dfy)
+      scale = ws%friction*ws%load
+      fx = fx + scale*dfx
+      fy = fy + scale*dfy
+      mz = mz - ws%correction%y_centre*scale*dfx
+      fy_track = fy_track + scale*dfy*ws%correction%cos_gamma
+      fz_track = fz_track + scale*dfy*ws%correction%sin_gamma
+   end subroutine correct_totals
 
    !> `flexibility = 'carter'` (doc/tangential.md, "Flexibilities"): on one strip with the
    !> parabolic march bound g = G₀(1 − x'²), a constant increment r per unit step gives the

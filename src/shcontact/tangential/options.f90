@@ -13,10 +13,11 @@ module shcontact_tangential_options
    public :: spin_additive, spin_uniform, spin_scaled, spin_geometric
    public :: spin_flexibility_spin, spin_flexibility_longitudinal
    public :: flexibility_strip, flexibility_patch, flexibility_carter
+   public :: correction_none, correction_exact_ellipse
    public :: parse_method, parse_bound, parse_spin_model, parse_kalker_scheme, &
-      parse_spin_flexibility, parse_flexibility
+      parse_spin_flexibility, parse_flexibility, parse_correction
    public :: method_name, bound_name, spin_model_name, kalker_scheme_name, spin_flexibility_name, &
-      flexibility_name
+      flexibility_name, correction_name, corrected_model
 
    !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (physics.md §6.5).
    integer, parameter :: method_fastsim_sh = 1
@@ -61,6 +62,14 @@ module shcontact_tangential_options
    !> (doc/tangential.md, "Flexibilities"); equal to 'strip' at small creepage.
    integer, parameter :: flexibility_carter = 3
 
+   !> `correction = 'none'`: the forces of the march itself.
+   integer, parameter :: correction_none = 1
+   !> `correction = 'exact-ellipse'`: add the exact theory's defect of the patch's equivalent
+   !> ellipse (shcontact_tangential_ellipse_correction; doc/tangential.md). It is tabulated for
+   !> the default model (FASTSIM_SH, bound 'weighted', flexibility 'strip', spin flexibility
+   !> 'longitudinal') and applies to that model only ([[corrected_model]]).
+   integer, parameter :: correction_exact_ellipse = 2
+
    character(len=*), parameter :: method_names(2) = [character(len=10) :: 'fastsim-sh', 'fastsim']
    character(len=*), parameter :: bound_names(5) = [character(len=13) :: 'ellipsoidal', &
       'parabolic', 'weighted', 'weighted-slip', 'clipped']
@@ -72,6 +81,8 @@ module shcontact_tangential_options
       'longitudinal']
    character(len=*), parameter :: flexibility_names(3) = [character(len=6) :: 'strip', 'patch', &
       'carter']
+   character(len=*), parameter :: correction_names(2) = [character(len=13) :: 'none', &
+      'exact-ellipse']
 
    !> Largest accepted number of elements per strip.
    integer, parameter :: max_elements = 1000000
@@ -99,6 +110,9 @@ module shcontact_tangential_options
       !> ellipse), [[flexibility_patch]] (the equivalent ellipse of the whole patch) or
       !> [[flexibility_carter]] (each strip's, stiffened towards saturation by Carter's curve).
       integer :: flexibility = flexibility_strip
+      !> Correction of the totals, `correction_*`. Default [[correction_exact_ellipse]]; it is
+      !> applied when the model is the one it was tabulated for ([[corrected_model]]).
+      integer :: correction = correction_exact_ellipse
       !> Fill the per-element fields of the result; .false. computes the totals only (faster).
       logical :: fields = .true.
    end type tangential_options_type
@@ -124,6 +138,8 @@ contains
       call check_code('spin_flexibility', options%spin_flexibility, spin_flexibility_names, error)
       if (allocated(error)) return
       call check_code('flexibility', options%flexibility, flexibility_names, error)
+      if (allocated(error)) return
+      call check_code('correction', options%correction, correction_names, error)
       if (allocated(error)) return
       if (options%n_elements < 1 .or. options%n_elements > max_elements) then
          write (buf, '(i0)') options%n_elements
@@ -198,6 +214,29 @@ contains
       call parse_choice('flexibility', text, flexibility_names, code, error)
    end subroutine parse_flexibility
 
+   !> Parse `correction`: 'none' or 'exact-ellipse'.
+   pure subroutine parse_correction(text, code, error)
+      !> The option value as written.
+      character(len=*), intent(in) :: text
+      !> The code, `correction_*`.
+      integer, intent(out) :: code
+      !> Set for an unknown value.
+      type(error_type), allocatable, intent(out) :: error
+      call parse_choice('correction', text, correction_names, code, error)
+   end subroutine parse_correction
+
+   !> True when the exact-ellipse correction applies: it is asked for and the model is the one
+   !> its table was made for (FASTSIM_SH, bound 'weighted', flexibility 'strip', spin flexibility
+   !> 'longitudinal'; any spin model, Kalker scheme and n_x).
+   pure logical function corrected_model(options)
+      !> The options.
+      type(tangential_options_type), intent(in) :: options
+      corrected_model = options%correction == correction_exact_ellipse .and. &
+         options%method == method_fastsim_sh .and. options%bound == bound_weighted .and. &
+         options%flexibility == flexibility_strip .and. &
+         options%spin_flexibility == spin_flexibility_longitudinal
+   end function corrected_model
+
    !> Name of a method code ('?' when out of range).
    pure function method_name(code) result(name)
       !> A `method_*` code.
@@ -245,6 +284,14 @@ contains
       character(len=:), allocatable :: name
       name = choice_name(code, flexibility_names)
    end function flexibility_name
+
+   !> Name of a correction code ('?' when out of range).
+   pure function correction_name(code) result(name)
+      !> A `correction_*` code.
+      integer, intent(in) :: code
+      character(len=:), allocatable :: name
+      name = choice_name(code, correction_names)
+   end function correction_name
 
    !> Look `text` up in `names` (the code is the position); error lists the allowed values.
    pure subroutine parse_choice(option, text, names, code, error)

@@ -115,6 +115,7 @@ module shcontact_io_config_types
       character(len=name_len) :: bound = 'weighted'
       character(len=name_len) :: spin_model = 'uniform'
       character(len=name_len) :: spin_flexibility = 'longitudinal'
+      character(len=name_len) :: correction = 'exact-ellipse'
       integer :: n_elements = 50
    end type tangential_config_type
 

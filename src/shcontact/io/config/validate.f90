@@ -16,8 +16,8 @@ module shcontact_io_config_validate
    use shcontact_io_config_types, only: case_config_type, origin, sweep_origin
    use shcontact_io_config_variables, only: variables, find_variable, join_words, &
       mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes, reductions, &
-      tangential_methods, bounds, spin_models, spin_flexibilities, field_names, precisions, &
-      sweep_modes, kinematics_modes
+      tangential_methods, bounds, spin_models, spin_flexibilities, corrections, field_names, &
+      precisions, sweep_modes, kinematics_modes
    implicit none
    private
 
@@ -130,6 +130,9 @@ contains
          if (allocated(error)) return
          call check_choice(c, 'tangential', 'spin_flexibility', c%tangential%spin_flexibility, &
             spin_flexibilities, error)
+         if (allocated(error)) return
+         call check_choice(c, 'tangential', 'correction', c%tangential%correction, corrections, &
+            error)
          if (allocated(error)) return
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
             error)

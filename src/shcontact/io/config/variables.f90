@@ -10,7 +10,7 @@ module shcontact_io_config_variables
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list
    public :: type_phrase, string_capacity, is_choice, suggestion, group_variable_list, join_words
    public :: mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes
-   public :: reductions, tangential_methods, bounds, spin_models, spin_flexibilities
+   public :: reductions, tangential_methods, bounds, spin_models, spin_flexibilities, corrections
    public :: bound_choices, spin_model_choices, field_names, precisions, sweep_modes
    public :: kinematics_modes
 
@@ -114,6 +114,9 @@ module shcontact_io_config_variables
       variable_info_type('tangential', 'spin_flexibility', k_string, '', &
       "flexibility of the spin part of the longitudinal slip: 'longitudinal' (L_x, seed eq 21) "// &
       "or 'spin' (L_phi, Kalker's FASTSIM)"), &
+      variable_info_type('tangential', 'correction', k_string, '', &
+      "'exact-ellipse' (add the exact theory's defect of the equivalent Hertz ellipse to the "// &
+      "forces; default model only) or 'none' (the march's forces)"), &
       variable_info_type('tangential', 'n_elements', k_int, '', &
       'number of elements per strip (n_x)'), &
       variable_info_type('output', 'file', k_string, '', 'HDF5 output file'), &
@@ -213,6 +216,8 @@ module shcontact_io_config_variables
       'scaled', 'geometric']
    character(len=*), parameter :: spin_flexibilities(*) = [character(len=12) :: &
       'longitudinal', 'spin']
+   !> The corrections of the tangential forces (doc/tangential.md).
+   character(len=*), parameter :: corrections(*) = [character(len=13) :: 'exact-ellipse', 'none']
    character(len=*), parameter :: bound_choices(*) = bounds, spin_model_choices(*) = spin_models
    character(len=*), parameter :: field_names(*) = [character(len=8) :: 'auto', 'all', 'none', &
       'geometry', 'strips', 'pressure', 'traction', 'state', 'slip']

@@ -133,6 +133,7 @@ contains
             case ('spin_model'); value = quote_string(config%tangential%spin_model)
             case ('spin_flexibility')
                value = quote_string(config%tangential%spin_flexibility)
+            case ('correction'); value = quote_string(config%tangential%correction)
             case ('n_elements'); value = str_int(config%tangential%n_elements)
             end select
          case ('output')

@@ -1,0 +1,325 @@
+!> Tests of the exact-ellipse correction (shcontact_tangential_ellipse_correction): the table is
+!> the exact theory minus today's FASTSIM_SH, the corrected forces follow the exact theory on
+!> ellipses off the table's nodes, and the symmetries and limits hold.
+module test_ellipse_correction
+   use testdrive, only: new_unittest, unittest_type, error_type, check
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_core_material, only: material_type
+   use shcontact_normal_patch, only: normal_patch_type, ellipse_strip_patch
+   use shcontact_tangential_options, only: tangential_options_type, correction_none, &
+      correction_exact_ellipse, bound_ellipsoidal, parse_correction, correction_name, &
+      corrected_model
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_march, only: march_workspace_type, solve_prepared
+   use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
+   use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
+      prepare_ellipse_correction, ellipse_defect, table_node_case
+   use shcontact_tangential_ellipse_table, only: n_table_ratio, n_table_t, n_table_ty, &
+      n_table_phi, table_t_phi, table_unit, table_poisson
+   implicit none
+   private
+   public :: collect_ellipse_correction
+
+   !> CONTACT's forces at the table's nodes, and on ellipses between them.
+   character(len=*), parameter :: table_csv = 'data/exact/ellipse_table.csv'
+   character(len=*), parameter :: check_csv = 'data/exact/ellipse_check.csv'
+
+contains
+
+   !> Collect the tests.
+   subroutine collect_ellipse_correction(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('table_is_exact_minus_fastsim_sh', test_table_current), &
+         new_unittest('exact_on_ellipses_between_nodes', test_between_nodes), &
+         new_unittest('symmetries', test_symmetries), &
+         new_unittest('limits', test_limits), &
+         new_unittest('other_models_uncorrected', test_other_models), &
+         new_unittest('option_parsing', test_option) &
+         ]
+   end subroutine collect_ellipse_correction
+
+   !> The reference material of the table.
+   pure type(material_type) function table_material()
+      table_material = material_type(shear_modulus=82670.0_wp, poisson=table_poisson, &
+         friction=0.3_wp)
+   end function table_material
+
+   !> Every 7th node of the table: CONTACT's force (data/exact/ellipse_table.csv) minus
+   !> FASTSIM_SH without correction equals the tabulated defect to its rounding, and the file
+   !> has every node of the grid. Fails when FASTSIM_SH changes and the table was not remade
+   !> (scripts/contact_ellipse_table.py --skip-contact).
+   subroutine test_table_current(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: rows(:, :)
+      type(normal_patch_type) :: patch
+      type(creepage_type) :: creepage
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: result
+      type(ellipse_correction_type) :: node
+      type(lib_error), allocatable :: lerr
+      real(wp) :: dfx, dfy, worst
+      integer :: i, ip, n_checked, n_nodes
+
+      call read_table(table_csv, 6, rows, error)
+      if (allocated(error)) return
+      n_nodes = n_table_ratio*n_table_t*(n_table_ty*n_table_phi - n_table_ty/2)
+      call check(error, size(rows, 2) == n_nodes, message='the table CSV has '// &
+         real_text(real(size(rows, 2), wp))//' nodes, the grid '//real_text(real(n_nodes, wp)))
+      if (allocated(error)) return
+      options%fields = .false.
+      options%correction = correction_none
+      n_checked = 0
+      worst = 0.0_wp
+      do i = 1, size(rows, 2), 7
+         ip = findloc(nint(1000*table_t_phi), nint(1000*rows(4, i)), dim=1)
+         call check(error, ip > 0, message='t_phi of a CSV line is not a node')
+         if (allocated(error)) return
+         call table_node_case(nint(rows(1, i)), nint(rows(2, i)), nint(rows(3, i)), ip, &
+            table_material(), patch, creepage)
+         call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+         if (allocated(lerr)) exit
+         call solve_prepared(ws, creepage, result, lerr)
+         if (allocated(lerr)) exit
+         ! The table's defect at the node, in our sign (D is odd: the same table).
+         call prepare_ellipse_correction(node, patch%ellipse_a, patch%ellipse_b, patch%load, &
+            table_material(), 1, 0.0_wp, 1.0_wp, 0.0_wp)
+         call ellipse_defect(node, creepage%nu_x, creepage%nu_y, creepage%phi, dfx, dfy)
+         worst = max(worst, abs((-rows(5, i) - result%fx_norm) - dfx), &
+            abs((-rows(6, i) - result%fy_norm) - dfy))
+         n_checked = n_checked + 1
+      end do
+      call check(error, .not. allocated(lerr), message='solve failed on a table node')
+      if (allocated(error)) return
+      call check(error, n_checked > 3000 .and. worst <= 1.2_wp*table_unit, &
+         message='table defect differs from exact − FASTSIM_SH by '//real_text(worst)// &
+         '; remake the table (scripts/contact_ellipse_table.py --skip-contact)')
+   end subroutine test_table_current
+
+   !> Ellipses of a/b = 0.29 … 6.9 that are not table nodes, 37 cases each (pure spin
+   !> sweeps and a 3³ set of ν_x, ν_y, φ), exact by CONTACT at 60 × 60 elements
+   !> (data/exact/ellipse_check.csv): FASTSIM_SH with the correction is within 0.012 of the exact
+   !> f_x, f_y in every case and within 0.004 in 80 % (without it: 0.080, 0.036).
+   subroutine test_between_nodes(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: cols(:, :), e(:)
+      type(normal_patch_type) :: patch
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: result
+      type(lib_error), allocatable :: lerr
+      integer :: i, n
+
+      call read_table(check_csv, 7, cols, error)
+      if (allocated(error)) return
+      n = size(cols, 2)
+      allocate (e(2*n))
+      options%fields = .false.
+      do i = 1, n
+         if (i == 1 .or. cols(1, i) /= cols(1, max(1, i - 1))) then
+            call ellipse_strip_patch(cols(1, i), cols(2, i), 64700.0_wp, 100, 460.0_wp, patch)
+            call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+            if (allocated(lerr)) exit
+         end if
+         call solve_prepared(ws, creepage_type(-cols(3, i), -cols(4, i), -cols(5, i)), result, &
+            lerr)
+         if (allocated(lerr)) exit
+         e(2*i - 1) = abs(-result%fx_norm - cols(6, i))
+         e(2*i) = abs(-result%fy_norm - cols(7, i))
+      end do
+      call check(error, .not. allocated(lerr), message='solve failed')
+      if (allocated(error)) return
+      call check(error, n == 222, message='ellipse_check.csv: expected 222 cases')
+      if (allocated(error)) return
+      i = (maxloc(e, dim=1) + 1)/2
+      call check(error, maxval(e) <= 0.012_wp .and. p80(e) <= 0.004_wp, &
+         message='max / P80 |Δf| on ellipses '//real_text(maxval(e))//' / '//real_text(p80(e))// &
+         ', expected <= 0.012 / 0.004; the largest at a, b, nu_x, nu_y, phi = '// &
+         real_text(cols(1, i))//', '//real_text(cols(2, i))//', '//real_text(cols(3, i))//', '// &
+         real_text(cols(4, i))//', '//real_text(cols(5, i)))
+   end subroutine test_between_nodes
+
+   !> D is odd in the creepages; mirroring y flips ν_y, φ and D_y; ν_x → −ν_x flips D_x only.
+   subroutine test_symmetries(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(ellipse_correction_type) :: c
+      real(wp) :: x0, y0, x1, y1
+      real(wp), parameter :: nx = 7.0e-4_wp, ny = -4.0e-4_wp, ph = 9.0e-4_wp
+
+      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, 64700.0_wp, table_material(), 1, &
+         0.0_wp, 1.0_wp, 0.0_wp)
+      call ellipse_defect(c, nx, ny, ph, x0, y0)
+      call check(error, abs(x0) + abs(y0) > 1.0e-3_wp, message='defect expected here')
+      if (allocated(error)) return
+      call ellipse_defect(c, -nx, -ny, -ph, x1, y1)
+      call check(error, abs(x1 + x0) + abs(y1 + y0) < 1.0e-14_wp, message='odd')
+      if (allocated(error)) return
+      call ellipse_defect(c, nx, -ny, -ph, x1, y1)
+      call check(error, abs(x1 - x0) + abs(y1 + y0) < 1.0e-14_wp, message='mirror in y')
+      if (allocated(error)) return
+      call ellipse_defect(c, -nx, ny, ph, x1, y1)
+      call check(error, abs(x1 + x0) + abs(y1 - y0) < 1.0e-14_wp, message='nu_x reversed')
+   end subroutine test_symmetries
+
+   !> No defect without creepage; none at full slip (t → 1), where both theories give μp along
+   !> the rigid slip; and at small creepage (s = 0.005) the corrected forces are Kalker's linear
+   !> theory, F_x = −G ab c₁₁ ν_x, F_y = −G ab c₂₂ ν_y − G (ab)^{3/2} c₂₃ φ, i.e. f = −3s, within
+   !> 2 % for each creepage alone.
+   subroutine test_limits(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(ellipse_correction_type) :: c
+      type(normal_patch_type) :: patch
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: r
+      type(lib_error), allocatable :: lerr
+      real(wp) :: dx, dy
+      real(wp), parameter :: s = 0.005_wp, f_linear = -3.0_wp*s
+
+      call ellipse_strip_patch(6.0_wp, 4.5_wp, 64700.0_wp, 100, 460.0_wp, patch)
+      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, patch%load, table_material(), 1, &
+         0.0_wp, 1.0_wp, 0.0_wp)
+      call ellipse_defect(c, 0.0_wp, 0.0_wp, 0.0_wp, dx, dy)
+      call check(error, dx == 0.0_wp .and. dy == 0.0_wp, message='defect at zero creepage')
+      if (allocated(error)) return
+      call ellipse_defect(c, 1.0_wp, -1.0_wp, 0.1_wp, dx, dy)
+      call check(error, abs(dx) + abs(dy) < 1.0e-3_wp, message='defect at full slip '// &
+         real_text(dx)//', '//real_text(dy))
+      if (allocated(error)) return
+      options%fields = .false.
+      call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+      call solve_prepared(ws, creepage_type(s/c%scale_x, 0.0_wp, 0.0_wp), r, lerr)
+      call check(error, .not. allocated(lerr), message='solve failed')
+      if (allocated(error)) return
+      call check(error, r%fx_norm, f_linear, rel=.true., thr=0.02_wp, &
+         message='f_x at small nu_x against the linear theory')
+      if (allocated(error)) return
+      call solve_prepared(ws, creepage_type(0.0_wp, s/c%scale_y, 0.0_wp), r, lerr)
+      call check(error, r%fy_norm, f_linear, rel=.true., thr=0.02_wp, &
+         message='f_y at small nu_y against the linear theory')
+      if (allocated(error)) return
+      call solve_prepared(ws, creepage_type(0.0_wp, 0.0_wp, s/c%scale_phi), r, lerr)
+      call check(error, r%fy_norm, f_linear, rel=.true., thr=0.02_wp, &
+         message='f_y at small phi against the linear theory')
+   end subroutine test_limits
+
+   !> Another bound gets no correction: its totals are the march's (the sum of its fields).
+   subroutine test_other_models(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(normal_patch_type) :: patch
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: plain, corrected
+      type(lib_error), allocatable :: lerr
+      type(creepage_type), parameter :: creepage = creepage_type(-5.0e-4_wp, 3.0e-4_wp, &
+         -8.0e-4_wp)
+
+      call ellipse_strip_patch(6.0_wp, 4.0_wp, 64700.0_wp, 60, 460.0_wp, patch)
+      options%bound = bound_ellipsoidal
+      call check(error, .not. corrected_model(options), message='ellipsoidal is not corrected')
+      if (allocated(error)) return
+      options%correction = correction_none
+      call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+      call solve_prepared(ws, creepage, plain, lerr)
+      options%correction = correction_exact_ellipse
+      call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+      call solve_prepared(ws, creepage, corrected, lerr)
+      call check(error, .not. allocated(lerr), message='solve failed')
+      if (allocated(error)) return
+      call check(error, corrected%fx == plain%fx .and. corrected%fy == plain%fy, &
+         message='ellipsoidal bound changed by the correction')
+      if (allocated(error)) return
+      ! The default model is corrected, by a defect of the size the table holds here.
+      options = tangential_options_type()
+      call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+      call solve_prepared(ws, creepage, corrected, lerr)
+      options%correction = correction_none
+      call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+      call solve_prepared(ws, creepage, plain, lerr)
+      call check(error, abs(corrected%fy_norm - plain%fy_norm) > 1.0e-3_wp, &
+         message='default model not corrected')
+   end subroutine test_other_models
+
+   !> The option's names.
+   subroutine test_option(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: lerr
+      integer :: code
+
+      call parse_correction('Exact_Ellipse', code, lerr)
+      call check(error, .not. allocated(lerr) .and. code == correction_exact_ellipse .and. &
+         correction_name(code) == 'exact-ellipse', message='exact-ellipse')
+      if (allocated(error)) return
+      call parse_correction('none', code, lerr)
+      call check(error, code == correction_none, message='none')
+      if (allocated(error)) return
+      call parse_correction('hertz', code, lerr)
+      call check(error, allocated(lerr), message='unknown correction accepted')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, 'exact-ellipse') > 0, &
+         message='the error names the choices: '//lerr%message)
+   end subroutine test_option
+
+   !> A numeric CSV with one header line, n_cols columns.
+   subroutine read_table(path, n_cols, cols, error)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: n_cols
+      real(wp), allocatable, intent(out) :: cols(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: grown(:, :)
+      real(wp) :: row(n_cols)
+      integer :: unit, stat, n
+
+      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
+      call check(error, stat == 0, message='cannot open '//path)
+      if (allocated(error)) return
+      read (unit, *)
+      allocate (cols(n_cols, 1024))
+      n = 0
+      do
+         read (unit, *, iostat=stat) row
+         if (stat /= 0) exit
+         n = n + 1
+         if (n > size(cols, 2)) then
+            allocate (grown(n_cols, 2*size(cols, 2)))
+            grown(:, 1:n - 1) = cols(:, 1:n - 1)
+            call move_alloc(grown, cols)
+         end if
+         cols(:, n) = row
+      end do
+      close (unit)
+      cols = cols(:, 1:n)
+   end subroutine read_table
+
+   !> A real in a message.
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+      write (buf, '(es10.3)') x
+      text = trim(adjustl(buf))
+   end function real_text
+
+   !> 80th percentile, nearest rank.
+   pure real(wp) function p80(values)
+      real(wp), intent(in) :: values(:)
+      real(wp) :: v(size(values)), t
+      integer :: i, j
+      v = values
+      do i = 2, size(v)
+         t = v(i)
+         j = i - 1
+         do while (j >= 1)
+            if (v(j) <= t) exit
+            v(j + 1) = v(j)
+            j = j - 1
+         end do
+         v(j + 1) = t
+      end do
+      p80 = v(max(1, ceiling(0.8_wp*size(v) - 1.0e-9_wp)))
+   end function p80
+
+end module test_ellipse_correction
