@@ -101,8 +101,9 @@ contains
 
    !> Ellipses of a/b = 0.29 … 6.9 that are not table nodes, 37 cases each (pure spin
    !> sweeps and a 3³ set of ν_x, ν_y, φ), exact by CONTACT at 60 × 60 elements
-   !> (data/exact/ellipse_check.csv): FASTSIM_SH with the correction is within 0.012 of the exact
-   !> f_x, f_y in every case and within 0.004 in 80 % (without it: 0.080, 0.036).
+   !> (data/exact/ellipse_check.csv): FASTSIM_SH with the correction is within 0.008 of the exact
+   !> f_x, f_y in every case and within 0.002 in 80 % (measured 0.0066 and 0.0012; without it
+   !> 0.059 and 0.023).
    subroutine test_between_nodes(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: cols(:, :), e(:)
@@ -135,9 +136,9 @@ contains
       call check(error, n == 222, message='ellipse_check.csv: expected 222 cases')
       if (allocated(error)) return
       i = (maxloc(e, dim=1) + 1)/2
-      call check(error, maxval(e) <= 0.012_wp .and. p80(e) <= 0.004_wp, &
+      call check(error, maxval(e) <= 0.008_wp .and. p80(e) <= 0.002_wp, &
          message='max / P80 |Δf| on ellipses '//real_text(maxval(e))//' / '//real_text(p80(e))// &
-         ', expected <= 0.012 / 0.004; the largest at a, b, nu_x, nu_y, phi = '// &
+         ', expected <= 0.008 / 0.002; the largest at a, b, nu_x, nu_y, phi = '// &
          real_text(cols(1, i))//', '//real_text(cols(2, i))//', '//real_text(cols(3, i))//', '// &
          real_text(cols(4, i))//', '//real_text(cols(5, i)))
    end subroutine test_between_nodes

@@ -133,11 +133,13 @@ contains
       call check(error, percentile(ey, 0.8_wp) <= 0.04_wp, &
          message='DOE: 80th percentile of |Delta f_y| > 0.04 against the exact theory')
       if (allocated(error)) return
-      ! Issue 13: Table 10's defaults row (doc/validation.md §6.4) within ±0.002 and the target
-      ! P80 |Δf_x| ≤ 0.02.
-      call check_row(ex, ey, [0.054_wp, 0.050_wp, 0.017_wp, 0.026_wp], 'ty0 defaults', error)
+      ! Issue 13: Table 10's defaults row (doc/validation.md §6.4) within ±0.002 and the targets
+      ! P80 |Δf_x|, P80 |Δf_y| ≤ 0.02, max |Δf| ≤ 0.05.
+      call check_row(ex, ey, [0.020_wp, 0.020_wp, 0.010_wp, 0.013_wp], 'ty0 defaults', error)
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp) <= 0.02_wp, message='ty0: P80 |Delta f_x| > 0.02')
+      call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
+         0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
+         message='ty0: a target of issue 13 is missed')
       if (allocated(error)) return
       ! The headline creepages (README §5): f_x = −0.4960, f_y = −0.2869.
       call solve_prepared(ws, creepage_type(-0.58e-3_wp, -0.061e-3_wp, -2.74e-4_wp), result, err)
@@ -227,14 +229,14 @@ contains
          end associate
       end do
       ! doc/validation.md Table 9, "all".
-      call check(error, maxval(ex), 0.059_wp, thr=0.002_wp, message='max |Delta f_x|')
+      call check(error, maxval(ex), 0.047_wp, thr=0.002_wp, message='max |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp), 0.054_wp, thr=0.002_wp, &
+      call check(error, percentile(ex, 0.8_wp), 0.020_wp, thr=0.002_wp, &
          message='P80 |Delta f_x|')
       if (allocated(error)) return
-      call check(error, maxval(ey), 0.046_wp, thr=0.002_wp, message='max |Delta f_y|')
+      call check(error, maxval(ey), 0.020_wp, thr=0.002_wp, message='max |Delta f_y|')
       if (allocated(error)) return
-      call check(error, percentile(ey, 0.8_wp), 0.028_wp, thr=0.002_wp, &
+      call check(error, percentile(ey, 0.8_wp), 0.014_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
       if (allocated(error)) return
       call check(error, maxval(en), 0.056_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
@@ -243,14 +245,15 @@ contains
          message='P80 |Delta F_n|/F_n')
    end subroutine test_kinematic
 
-   !> Issue 13: the defaults (normal reduction `coupled`) on ty5p8_literal, Table 10's row within
-   !> ±0.002 (max 0.024 / 0.043, P80 0.006 / 0.012), and the targets P80 |Δf_x|, |Δf_y| ≤ 0.02.
+   !> Issue 13: the defaults (normal reduction `coupled`, correction `exact-ellipse`) on
+   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.010 / 0.050, P80 0.004 / 0.006), and the
+   !> targets P80 |Δf_x|, |Δf_y| ≤ 0.02 (the max, 0.0503, is at the target's edge).
    subroutine test_doe_ty5p8(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
       call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
       if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.024_wp, 0.043_wp, 0.006_wp, 0.012_wp], 'ty5p8 defaults', error)
+      call check_row(ex, ey, [0.010_wp, 0.050_wp, 0.004_wp, 0.006_wp], 'ty5p8 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
          0.02_wp, message='ty5p8 DOE: P80 targets missed')
@@ -282,7 +285,7 @@ contains
 
    !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
    !> doc/validation.md §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max
-   !> |Δf_y|, P80 |Δf_x| / P80 |Δf_y|), and the target P80 |Δf_x| ≤ 0.02 where it is met.
+   !> |Δf_y|, P80 |Δf_x| / P80 |Δf_y|), and the targets of issue 13 where they are met.
    !> Needs ../shared/profiles.
    subroutine test_doe_positions(error)
       type(error_type), allocatable, intent(out) :: error
@@ -292,13 +295,13 @@ contains
       real(wp), parameter :: y_ref(7) = [757.2227_wp, 755.8867_wp, 745.1116_wp, 741.7663_wp, &
          739.5012_wp, 738.1043_wp, 723.8171_wp]
       real(wp), parameter :: rows(4, 7) = reshape([ &
-         0.030_wp, 0.056_wp, 0.011_wp, 0.036_wp, &
-         0.038_wp, 0.053_wp, 0.011_wp, 0.035_wp, &
-         0.045_wp, 0.053_wp, 0.035_wp, 0.029_wp, &
-         0.025_wp, 0.059_wp, 0.008_wp, 0.033_wp, &
-         0.025_wp, 0.058_wp, 0.012_wp, 0.038_wp, &
-         0.025_wp, 0.059_wp, 0.011_wp, 0.038_wp, &
-         0.035_wp, 0.027_wp, 0.020_wp, 0.019_wp], [4, 7])
+         0.009_wp, 0.008_wp, 0.001_wp, 0.003_wp, &
+         0.008_wp, 0.009_wp, 0.001_wp, 0.004_wp, &
+         0.038_wp, 0.049_wp, 0.028_wp, 0.020_wp, &
+         0.011_wp, 0.021_wp, 0.007_wp, 0.006_wp, &
+         0.009_wp, 0.011_wp, 0.004_wp, 0.004_wp, &
+         0.010_wp, 0.010_wp, 0.002_wp, 0.002_wp, &
+         0.028_wp, 0.045_wp, 0.025_wp, 0.040_wp], [4, 7])
       real(wp), allocatable :: ex(:), ey(:)
       integer :: k
 
@@ -308,10 +311,15 @@ contains
          if (allocated(error) .or. .not. allocated(ex)) return
          call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
          if (allocated(error)) return
-         ! The target P80 |Δf_x| ≤ 0.02, except at Y_WS = 1 mm (doc/validation.md §6.4: the
-         ! 18 mm wide plateau patch, 0.035 against 0.127 with the old default).
-         if (names(k) /= 'yws1p0') call check(error, percentile(ex, 0.8_wp) <= 0.02_wp, &
-            message=trim(names(k))//': P80 |Delta f_x| above the target 0.02')
+         ! The targets where they are met (doc/validation.md §6.4): max |Δf| ≤ 0.05 everywhere;
+         ! P80 |Δf_x|, |Δf_y| ≤ 0.02 except at Y_WS = 1 mm (the 18 mm wide plateau patch) and
+         ! 6.5 mm (the flange root), where our pressure is off.
+         call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, &
+            message=trim(names(k))//': max |Delta f| above the target 0.05')
+         if (allocated(error)) return
+         if (names(k) /= 'yws1p0' .and. names(k) /= 'yws6p5') call check(error, &
+            percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
+            message=trim(names(k))//': P80 |Delta f_x| or |Delta f_y| above the target 0.02')
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions
@@ -393,8 +401,8 @@ contains
       real(wp), parameter :: y_lobe(2, 2) = reshape([726.61_wp, 737.03_wp, 726.50_wp, &
          736.36_wp], [2, 2])
       real(wp), parameter :: rows(4, 2, 2) = reshape([ &
-         0.036_wp, 0.039_wp, 0.021_wp, 0.029_wp, 0.044_wp, 0.059_wp, 0.012_wp, 0.045_wp, &
-         0.034_wp, 0.068_wp, 0.008_wp, 0.024_wp, 0.037_wp, 0.041_wp, 0.011_wp, 0.019_wp], &
+         0.024_wp, 0.039_wp, 0.005_wp, 0.011_wp, 0.019_wp, 0.047_wp, 0.015_wp, 0.009_wp, &
+         0.016_wp, 0.075_wp, 0.009_wp, 0.020_wp, 0.024_wp, 0.034_wp, 0.005_wp, 0.011_wp], &
          [4, 2, 2])
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: patches(:)

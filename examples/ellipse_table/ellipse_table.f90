@@ -25,7 +25,9 @@ program ellipse_table
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_ellipse_table, only: table_ratio, table_t_phi, n_table_ratio, &
       n_table_t, n_table_ty, n_table_phi, table_unit, table_poisson
-   use shcontact_tangential_ellipse_correction, only: table_node_case
+   use shcontact_tangential_ellipse_correction, only: table_node_case, ellipse_correction_type, &
+      prepare_ellipse_correction
+   use shcontact_tangential_kalker, only: kalker_scheme_scaled
    implicit none
 
    !> One table case: its grid indices (i_φ the t_φ node) and creepages (CONTACT's sign: rail
@@ -168,7 +170,7 @@ contains
       type(grid_case_type), intent(in) :: cases(:)
       type(error_type), allocatable, intent(out) :: error
       integer, allocatable :: dfx(:, :, :, :), dfy(:, :, :, :)
-      real(wp) :: fx_exact(size(cases)), fy_exact(size(cases)), fx, fy
+      real(wp) :: fx_exact(size(cases)), fy_exact(size(cases)), fx, fy, linear(3, n_table_ratio)
       logical :: known(size(cases))
       type(normal_patch_type) :: patch
       type(tangential_options_type) :: options
@@ -212,8 +214,46 @@ contains
             end if
          end associate
       end do
-      call write_module(out_path, dfx, dfy, error)
+      call linear_slopes(linear, error)
+      if (allocated(error)) return
+      call write_module(out_path, dfx, dfy, linear, error)
    end subroutine write_source
+
+   !> Per a/b node, the defect's slopes dD/ds at zero creepage, exact minus FASTSIM_SH: s_x → D_x,
+   !> s_y → D_y, s_φ → D_y. The exact linear theory is f = −3s in every one (Kalker's
+   !> coefficients scale s); FASTSIM_SH's is measured at s = 1e-4 (CONTACT's sign throughout).
+   subroutine linear_slopes(linear, error)
+      real(wp), intent(out) :: linear(3, n_table_ratio)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: s = 1.0e-4_wp
+      type(normal_patch_type) :: patch
+      type(creepage_type) :: creepage
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: r
+      type(ellipse_correction_type) :: scale
+      integer :: ir
+
+      options%fields = .false.
+      options%correction = correction_none
+      do ir = 1, n_table_ratio
+         call table_node_case(ir, 0, 0, 1, material(), patch, creepage)
+         call prepare_fastsim_sh(ws, patch, material(), options, error)
+         if (allocated(error)) return
+         call prepare_ellipse_correction(scale, patch%ellipse_a, patch%ellipse_b, patch%load, &
+            material(), kalker_scheme_scaled, 0.0_wp, 1.0_wp, 0.0_wp)
+         ! CONTACT's creepage +s is ours −s/scale; CONTACT's force is minus ours.
+         call solve_prepared(ws, creepage_type(-s/scale%scale_x, 0.0_wp, 0.0_wp), r, error)
+         if (allocated(error)) return
+         linear(1, ir) = (-3.0_wp*s + r%fx_norm)/s
+         call solve_prepared(ws, creepage_type(0.0_wp, -s/scale%scale_y, 0.0_wp), r, error)
+         if (allocated(error)) return
+         linear(2, ir) = (-3.0_wp*s + r%fy_norm)/s
+         call solve_prepared(ws, creepage_type(0.0_wp, 0.0_wp, -s/scale%scale_phi), r, error)
+         if (allocated(error)) return
+         linear(3, ir) = (-3.0_wp*s + r%fy_norm)/s
+      end do
+   end subroutine linear_slopes
 
    !> data/exact/ellipse_table.csv: a header, then i_ratio,k_x,k_y,t_phi,fx,fy per line in any
    !> order; known(i) tells which grid cases it has.
@@ -261,9 +301,10 @@ contains
    end subroutine read_exact
 
    !> Write the module source: the sizes, nodes and the defects in units of table_unit.
-   subroutine write_module(path, dfx, dfy, error)
+   subroutine write_module(path, dfx, dfy, linear, error)
       character(len=*), intent(in) :: path
       integer, intent(in) :: dfx(:, :, :, :), dfy(:, :, :, :)
+      real(wp), intent(in) :: linear(:, :)
       type(error_type), allocatable, intent(out) :: error
       integer :: u, ios, ir, kx
 
@@ -282,7 +323,7 @@ contains
          '   implicit none', &
          '   private', '', &
          '   public :: n_table_ratio, n_table_t, n_table_ty, n_table_phi, table_ratio, &', &
-         '      table_t_phi, table_unit, table_poisson, table_dfx, table_dfy', '', &
+         '      table_t_phi, table_unit, table_poisson, table_dfx, table_dfy, table_linear', '', &
          '   !> Nodes in a/b, in t_x (0, 0.1, …, 0.9), in t_y (−0.9, …, 0.9) and in t_φ.'
       write (u, '(a,i0,a,i0,a,i0,a,i0)') '   integer, parameter :: n_table_ratio = ', &
          n_table_ratio, ', n_table_t = ', n_table_t, ', n_table_ty = ', n_table_ty, &
@@ -295,6 +336,17 @@ contains
       call write_nodes(u, table_t_phi)
       write (u, '(a)') '   !> Unit of the stored defects; Poisson ratio of the exact runs.'
       write (u, '(a)') '   real(wp), parameter :: table_unit = 1.0e-5_wp, table_poisson = 0.27_wp'
+      write (u, '(a)') '   !> Per a/b node, the defect''s slopes at zero creepage (exact linear theory minus', &
+         '   !> FASTSIM_SH): dD_x/ds_x, dD_y/ds_y, dD_y/ds_φ.', &
+         '   real(wp), parameter :: table_linear(3, n_table_ratio) = reshape([ &'
+      do ir = 1, n_table_ratio
+         write (u, '(6x,3(f9.5,"_wp",:,", "))', advance='no') linear(:, ir)
+         if (ir < n_table_ratio) then
+            write (u, '(a)') ', &'
+         else
+            write (u, '(a)') '], [3, n_table_ratio])'
+         end if
+      end do
       write (u, '(a)') '   !> D_x and D_y at the nodes (units of table_unit).'
       write (u, '(a)') '   integer, protected :: table_dfx(n_table_phi, n_table_ty, n_table_t, n_table_ratio)'
       write (u, '(a)') '   integer, protected :: table_dfy(n_table_phi, n_table_ty, n_table_t, n_table_ratio)'

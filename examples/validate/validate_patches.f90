@@ -36,11 +36,11 @@ module validate_patches
    !> reference_pressure_patch), which separates the tangential model's error from the normal one.
    integer, parameter :: n_configs = 18
    character(len=*), parameter :: config_labels(n_configs) = [character(len=48) :: &
-      'defaults (coupled, W1, exact-ellipse correction)', 'bound ellipsoidal', &
+      'defaults (coupled; W1; exact-ellipse)', 'bound ellipsoidal', &
       'bound parabolic', 'bound weighted-slip (W2)', 'bound clipped (W3)', &
       'spin flexibility spin', 'spin model additive', 'normal reduction constant', &
       'normal reduction local-hertz', 'correction none', &
-      'issue-13 start (local-hertz, no correction)', 'defaults on CONTACT pressure', &
+      'issue-13 start (local-hertz; no correction)', 'defaults on CONTACT pressure', &
       'correction none on CONTACT pressure', 'ellipsoidal on CONTACT pressure', &
       'flexibility patch', 'flexibility patch on CONTACT pressure', 'flexibility carter', &
       'flexibility carter on CONTACT pressure']

@@ -26,7 +26,7 @@ module shcontact_tangential_ellipse_correction
    use shcontact_tangential_kalker, only: kalker_coefficients, kalker_scheme_scaled
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_ellipse_table, only: table_ratio, table_t_phi, table_dfx, table_dfy, &
-      table_unit, n_table_ratio, n_table_t, n_table_ty, n_table_phi
+      table_linear, table_unit, n_table_ratio, n_table_t, n_table_ty, n_table_phi
    implicit none
    private
 
@@ -122,9 +122,45 @@ contains
             end do
          end do
       end do
-      dfx = sign_x*table_unit*dfx
-      dfy = sign_y*table_unit*dfy
+      dfx = table_unit*dfx
+      dfy = table_unit*dfy
+      call add_linear_regime(lo(1), w(:, 1), sx, sy, sp, dfx, dfy)
+      dfx = sign_x*dfx
+      dfy = sign_y*dfy
    end subroutine ellipse_defect
+
+   !> Near zero creepage the defect is linear in s, with the slope of the exact linear theory
+   !> minus FASTSIM_SH's (table_linear); the table's first cell, which reaches s ≈ 0.1 where
+   !> saturation has begun, has another slope. Inside that cell (u = max(t_x/t₁, |t_y|/t₁,
+   !> t_φ/t_φ,₁) < 1) add the difference of the slopes times s, weighted by 1 − u: the
+   !> derivative at zero is then the linear theory's, and every node keeps its value.
+   pure subroutine add_linear_regime(lo, w, sx, sy, sp, dfx, dfy)
+      !> Lower a/b node and weights.
+      integer, intent(in) :: lo
+      real(wp), intent(in) :: w(2)
+      !> Scaled creepages (s_x, s_φ ≥ 0).
+      real(wp), intent(in) :: sx, sy, sp
+      !> Defects from the table (units of μF_n), updated.
+      real(wp), intent(inout) :: dfx, dfy
+      real(wp) :: s1, s1_phi, u, weight, slope(3)
+      integer :: h, k
+
+      h = n_table_ty/2
+      s1 = 1.0_wp/(n_table_t - 1)
+      s1_phi = table_t_phi(2)/(1.0_wp - table_t_phi(2))
+      u = max(sx/(1.0_wp + sx)/(s1/(1.0_wp + s1)), abs(sy)/(1.0_wp + abs(sy))/(s1/(1.0_wp + s1)), &
+         sp/(1.0_wp + sp)/table_t_phi(2))
+      weight = 1.0_wp - u
+      if (weight <= 0.0_wp) return
+      slope = 0.0_wp
+      do k = 0, 1
+         slope = slope + w(k + 1)*(table_linear(:, lo + k) - table_unit*[ &
+            table_dfx(1, h + 1, 2, lo + k)/s1, table_dfy(1, h + 2, 1, lo + k)/s1, &
+            table_dfy(2, h + 1, 1, lo + k)/s1_phi])
+      end do
+      dfx = dfx + weight*slope(1)*sx
+      dfy = dfy + weight*(slope(2)*sy + slope(3)*sp)
+   end subroutine add_linear_regime
 
    !> The ellipse and the creepages (our sign) of table node (i_ratio, k_x, k_y, i_φ): semi-axes
    !> with a/b = table_ratio(i_ratio) and area table_area, table_load on table_strips strips, and

@@ -9,7 +9,7 @@ module shcontact_tangential_ellipse_table
    private
 
    public :: n_table_ratio, n_table_t, n_table_ty, n_table_phi, table_ratio, &
-      table_t_phi, table_unit, table_poisson, table_dfx, table_dfy
+      table_t_phi, table_unit, table_poisson, table_dfx, table_dfy, table_linear
 
    !> Nodes in a/b, in t_x (0, 0.1, …, 0.9), in t_y (−0.9, …, 0.9) and in t_φ.
    integer, parameter :: n_table_ratio = 9, n_table_t = 10, n_table_ty = 19, n_table_phi = 15
@@ -22,6 +22,18 @@ module shcontact_tangential_ellipse_table
       0.50_wp, 0.60_wp, 0.70_wp, 0.80_wp, 0.90_wp]
    !> Unit of the stored defects; Poisson ratio of the exact runs.
    real(wp), parameter :: table_unit = 1.0e-5_wp, table_poisson = 0.27_wp
+   !> Per a/b node, the defect's slopes at zero creepage (exact linear theory minus
+   !> FASTSIM_SH): dD_x/ds_x, dD_y/ds_y, dD_y/ds_φ.
+   real(wp), parameter :: table_linear(3, n_table_ratio) = reshape([ &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp, &
+        0.93843_wp,   0.93843_wp,   0.00277_wp], [3, n_table_ratio])
    !> D_x and D_y at the nodes (units of table_unit).
    integer, protected :: table_dfx(n_table_phi, n_table_ty, n_table_t, n_table_ratio)
    integer, protected :: table_dfy(n_table_phi, n_table_ty, n_table_t, n_table_ratio)

@@ -52,7 +52,7 @@ contains
       !> Set for invalid input; stat_no_contact when no strip is loaded.
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0, &
-         cos0, ae, be, c11e, c22e, c23e
+         cos0, ae, be, c11e, c22e, c23e, y_c, spread, area
       integer :: i, s, n_inactive
 
       call check_material(material, error)
@@ -155,10 +155,21 @@ contains
       call set_element_grid(ws)
       ws%correction = ellipse_correction_type()
       if (corrected_model(options)) then
-         call equivalent_ellipse(patch, ae, be)
+         ! The correction's ellipse: b_e from the load's lateral spread (on an ellipse the load
+         ! per unit width is ∝ 1 − y²/b², of variance b²/5), a_e from the area of the strips
+         ! that carry load, π a_e b_e. Unlike the loaded width, the spread moves continuously
+         ! when an edge strip takes or loses a little load (the wheel in motion).
+         y_c = load_mean(ws%y)
+         spread = 0.0_wp
+         area = 0.0_wp
+         do s = 1, ws%n_active
+            spread = spread + ws%strip_normal(s)*(ws%y(s) - y_c)**2
+            if (ws%strip_normal(s) > 0.0_wp) area = area + 2.0_wp*ws%a(s)*ws%dy
+         end do
+         be = max(sqrt(5.0_wp*spread/ws%load), 0.5_wp*ws%dy)
+         ae = area/(pi*be)
          call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, &
-            options%kalker_scheme, load_mean(ws%y), load_mean(ws%cos_gamma), &
-            load_mean(ws%sin_gamma))
+            options%kalker_scheme, y_c, load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
       end if
 
    contains

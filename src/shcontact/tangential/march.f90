@@ -203,7 +203,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), dimension(max_block) :: sx, sy, sxy, cmax, n_adh
       real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu, fy_s, fy_track, &
-         fz_track
+         fz_track, dfx, dfy
       integer :: b0, s, l, m, nx, n_blocks, block
 
       if (ws%n_active < 1) then
@@ -253,7 +253,10 @@ contains
          end do
       end do
       if (ws%fields) call store_inactive(ws, result)
-      if (ws%correction%active) call correct_totals(ws, fx, fy, mz, fy_track, fz_track)
+      if (ws%correction%active) then
+         call correct_totals(ws, fx, fy, mz, fy_track, fz_track, dfx, dfy)
+         if (ws%fields) call spread_defect(ws, dfx, dfy, result)
+      end if
 
       result%fx = fx
       result%fy = fy
@@ -302,20 +305,44 @@ contains
 
    !> Add the exact-ellipse defect (shcontact_tangential_ellipse_correction) at the creepages of
    !> the load centre to the totals: F_x, F_y, M_z (F_x acting at the load centre) and the
-   !> track-frame forces (F_y along the mean tangent). The per-element fields stay the march's.
-   pure subroutine correct_totals(ws, fx, fy, mz, fy_track, fz_track)
+   !> track-frame forces (F_y along the load-weighted mean tangent).
+   pure subroutine correct_totals(ws, fx, fy, mz, fy_track, fz_track, dfx, dfy)
       type(march_workspace_type), intent(in) :: ws
       real(wp), intent(inout) :: fx, fy, mz, fy_track, fz_track
-      real(wp) :: dfx, dfy, scale
+      !> The corrections ΔF_x, ΔF_y (N).
+      real(wp), intent(out) :: dfx, dfy
+      real(wp) :: scale
 
       call ellipse_defect(ws%correction, ws%centre_nu_x, ws%centre_nu_y, ws%centre_phi, dfx, dfy)
       scale = ws%friction*ws%load
-      fx = fx + scale*dfx
-      fy = fy + scale*dfy
-      mz = mz - ws%correction%y_centre*scale*dfx
-      fy_track = fy_track + scale*dfy*ws%correction%cos_gamma
-      fz_track = fz_track + scale*dfy*ws%correction%sin_gamma
+      dfx = scale*dfx
+      dfy = scale*dfy
+      fx = fx + dfx
+      fy = fy + dfy
+      mz = mz - ws%correction%y_centre*dfx
+      fy_track = fy_track + dfy*ws%correction%cos_gamma
+      fz_track = fz_track + dfy*ws%correction%sin_gamma
    end subroutine correct_totals
+
+   !> The fields' share of the exact-ellipse correction: each loaded strip takes the part
+   !> N_s/F_n of ΔF_x and ΔF_y, spread over its elements in proportion to p_n. The fields then
+   !> sum to the corrected totals, with the moment −y_c ΔF_x of [[correct_totals]] (p_n of a strip
+   !> is symmetric in x, so ΔF_y adds none). Slip and stick/slip state stay the march's.
+   pure subroutine spread_defect(ws, dfx, dfy, result)
+      type(march_workspace_type), intent(in) :: ws
+      !> ΔF_x, ΔF_y (N).
+      real(wp), intent(in) :: dfx, dfy
+      type(tangential_patch_type), intent(inout) :: result
+      real(wp) :: w
+      integer :: s, i
+
+      do s = 1, ws%n_active
+         i = ws%strip(s)
+         w = ws%strip_normal(s)/(ws%load*sum(result%pn(:, i))*result%dx(i)*ws%dy)
+         result%px(:, i) = result%px(:, i) + dfx*w*result%pn(:, i)
+         result%py(:, i) = result%py(:, i) + dfy*w*result%pn(:, i)
+      end do
+   end subroutine spread_defect
 
    !> `flexibility = 'carter'` (doc/tangential.md, "Flexibilities"): on one strip with the
    !> parabolic march bound g = G₀(1 − x'²), a constant increment r per unit step gives the
