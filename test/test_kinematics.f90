@@ -436,14 +436,14 @@ contains
    !> 0.25 mm) against the same call on the full 2 mm tables (kinematic_table_gap = table_gap),
    !> yawed, with the vertical wheel load and its balance, from the tread to the flange root:
    !> a contact inside the short tables gives the same forces (1e-9 of F_z on one patch without
-   !> the exact-ellipse correction; 1e-4 of F_z with it, see test_short_tables).
+   !> the exact-ellipse correction; 2e-4 of F_z with it, see test_short_tables).
    subroutine test_short_tables_yawed_vertical(error)
       type(error_type), allocatable, intent(out) :: error
       type(contact_solver_type) :: short, full
       type(contact_result_type) :: s, f
       type(lib_error), allocatable :: err
       real(wp) :: yaws(3) = [-0.006_wp, 0.0_wp, 0.0047_wp], d
-      real(wp), parameter :: vertical_tol = 1.0e-4_wp
+      real(wp), parameter :: vertical_tol = 2.0e-4_wp
       integer :: i, j
 
       call short%init('builtin:S1002', 'builtin:UIC60', err)
@@ -466,7 +466,7 @@ contains
             ! Two patches: the cut of a patch's table at the ridge to its neighbour is raised to
             ! the table's largest gap (shcontact_normal_loading's confine_to_basin), which the
             ! table gap sets; within the vertical balance's tolerance then.
-            call check(error, d <= merge(1.0e-4_wp, vertical_tol, f%n_loaded == 1)*f_z, &
+            call check(error, d <= merge(2.0e-4_wp, vertical_tol, f%n_loaded == 1)*f_z, &
                'short and full tables differ by '// &
                real_text(d)//' N at t_y = '//real_text(0.7_wp*i + 0.013_wp)//' mm, yaw '// &
                real_text(yaws(j)))
