@@ -246,17 +246,18 @@ contains
    end subroutine test_kinematic
 
    !> Issue 13: the defaults (normal reduction `coupled`, correction `exact-ellipse`) on
-   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.010 / 0.050, P80 0.004 / 0.006), and the
-   !> targets P80 |Δf_x|, |Δf_y| ≤ 0.02 (the max, 0.0503, is at the target's edge).
+   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.010 / 0.050, P80 0.004 / 0.005), and the
+   !> targets P80 |Δf_x|, |Δf_y| ≤ 0.02 and max |Δf| ≤ 0.05 (0.0497: at the target's edge).
    subroutine test_doe_ty5p8(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
       call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
       if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.010_wp, 0.050_wp, 0.004_wp, 0.006_wp], 'ty5p8 defaults', error)
+      call check_row(ex, ey, [0.010_wp, 0.050_wp, 0.004_wp, 0.005_wp], 'ty5p8 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
-         0.02_wp, message='ty5p8 DOE: P80 targets missed')
+         0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
+         message='ty5p8 DOE: a target of issue 13 is missed')
    end subroutine test_doe_ty5p8
 
    !> The defaults when issue 13 was filed (reduction `local-hertz`, no correction) on
@@ -401,8 +402,8 @@ contains
       real(wp), parameter :: y_lobe(2, 2) = reshape([726.61_wp, 737.03_wp, 726.50_wp, &
          736.36_wp], [2, 2])
       real(wp), parameter :: rows(4, 2, 2) = reshape([ &
-         0.024_wp, 0.039_wp, 0.005_wp, 0.011_wp, 0.019_wp, 0.047_wp, 0.015_wp, 0.009_wp, &
-         0.016_wp, 0.075_wp, 0.009_wp, 0.020_wp, 0.024_wp, 0.034_wp, 0.005_wp, 0.011_wp], &
+         0.023_wp, 0.037_wp, 0.004_wp, 0.012_wp, 0.019_wp, 0.047_wp, 0.015_wp, 0.009_wp, &
+         0.017_wp, 0.073_wp, 0.008_wp, 0.020_wp, 0.024_wp, 0.033_wp, 0.005_wp, 0.011_wp], &
          [4, 2, 2])
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: patches(:)

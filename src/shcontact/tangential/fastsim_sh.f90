@@ -157,14 +157,17 @@ contains
       if (corrected_model(options)) then
          ! The correction's ellipse: b_e from the load's lateral spread (on an ellipse the load
          ! per unit width is ∝ 1 − y²/b², of variance b²/5), a_e from the area of the strips
-         ! that carry load, π a_e b_e. Unlike the loaded width, the spread moves continuously
-         ! when an edge strip takes or loses a little load (the wheel in motion).
+         ! that carry load, π a_e b_e. A strip counts in the area in proportion to its load up
+         ! to 1 % of the mean strip load (the coupled reduction can leave a strip its length
+         ! with no load). Unlike the loaded width and area, both move continuously when an
+         ! edge strip takes or loses a little load (the wheel in motion).
          y_c = load_mean(ws%y)
          spread = 0.0_wp
          area = 0.0_wp
          do s = 1, ws%n_active
             spread = spread + ws%strip_normal(s)*(ws%y(s) - y_c)**2
-            if (ws%strip_normal(s) > 0.0_wp) area = area + 2.0_wp*ws%a(s)*ws%dy
+            area = area + 2.0_wp*ws%a(s)*ws%dy*min(1.0_wp, &
+               100.0_wp*ws%n_active*ws%strip_normal(s)/ws%load)
          end do
          be = max(sqrt(5.0_wp*spread/ws%load), 0.5_wp*ws%dy)
          ae = area/(pi*be)
