@@ -71,9 +71,8 @@ module validate_kinematic
       !> Our rolling radius at our point (mm), and CONTACT's at its point as its ξ implies:
       !> −ξ = 2(V − |Ω|r)/(V + |Ω|r) without yaw rate (0 when the case has a yaw rate).
       real(wp) :: r_ours = 0.0_wp, r_ref = 0.0_wp
-      !> Normal force of the compared patch (N), ours and CONTACT's, and the F_z/cos δ that a
-      !> vertical balance of the normal force alone would give at CONTACT's angle.
-      real(wp) :: fn = 0.0_wp, fn_ref = 0.0_wp, fn_ref_normal_only = 0.0_wp
+      !> Normal force of the compared patch (N), ours and CONTACT's.
+      real(wp) :: fn = 0.0_wp, fn_ref = 0.0_wp
       !> Our other loaded patches: their summed normal force (N) and the y of the largest.
       real(wp) :: fn_other = 0.0_wp, y_other = 0.0_wp
       !> f = F/(μF_n) on the rail, ours and CONTACT's.
@@ -222,7 +221,6 @@ contains
       c%nux_ref = v(9); c%nuy_ref = v(10); c%phi_ref = v(11)
       c%fn_ref = v(12); c%fx_ref = v(13); c%fy_ref = v(14)
       c%fx_tr_ref = v(15); c%fy_tr_ref = v(16); c%fz_tr_ref = v(17)
-      c%fn_ref_normal_only = vertical_load/cos(c%delta_ref)
       if (v(3) == 0.0_wp) c%r_ref = (2.0_wp + c%nux_ref)/(2.0_wp - c%nux_ref)*v(1)/abs(v(4))
       call take_ours(result, abs(v(4))/v(1), c)
       if (c%yaw /= 0.0_wp) return
@@ -361,13 +359,13 @@ contains
       integer :: i
 
       call out%open(path, 'case,status,y_ws_mm,yaw_rad,xi_k,eta_k,omega_k,n_patches,'// &
-         'n_loaded,main_patch,main_share,x_ours_mm,x_ref_mm,y_ours_mm,y_ref_mm,z_ours_mm,'// &
-         'z_ref_mm,gamma_ours_rad,delta_ref_rad,x_g_mm,y_g_mm,nux_ours,nux_ours_transferred,'// &
-         'nux_ref,nuy_ours,nuy_ours_transferred,nuy_ref,phi_ours_per_mm,'// &
-         'phi_ours_transferred_per_mm,phi_ref_per_mm,r_ours_mm,r_ref_mm,fn_ours_N,fn_ref_N,'// &
-         'fn_rel_err,fn_ref_normal_only_N,fn_other_patches_N,y_other_patch_mm,'// &
-         'fx_ours_uniform,fy_ours_uniform,fx_ours,fx_ref,fy_ours,fy_ref,dfx,dfy,'// &
-         'fx_tr_ours_N,fx_tr_ref_N,fy_tr_ours_N,fy_tr_ref_N,fz_tr_ours_N,fz_tr_ref_N', error)
+         'n_loaded,main_patch,main_share,x_ours_mm,dx_mm,y_ours_mm,dy_mm,z_ours_mm,dz_mm,'// &
+         'gamma_ours_rad,dgamma_rad,x_g_mm,y_g_mm,nux_ours,nux_ours_transferred,'// &
+         'dnux_transferred,nuy_ours,nuy_ours_transferred,dnuy_transferred,phi_ours_per_mm,'// &
+         'phi_ours_transferred_per_mm,dphi_transferred_per_mm,r_ours_mm,dr_mm,fn_ours_N,'// &
+         'fn_rel_err,fn_other_patches_N,y_other_patch_mm,fx_ours_uniform,fy_ours_uniform,'// &
+         'fx_ours,fy_ours,dfx,dfy,fx_tr_ours_N,dfx_tr_N,fy_tr_ours_N,dfy_tr_N,fz_tr_ours_N,'// &
+         'dfz_tr_N', error)
       if (allocated(error)) return
       do i = 1, size(cases)
          associate (c => cases(i))
@@ -376,14 +374,18 @@ contains
                   text=[character(len=8) :: c%name, 'failed'])
                cycle
             end if
+            ! Ours and ours minus CONTACT's (d...): the reference values themselves stay in
+            ! ../shared/reference.
             call out%row([c%y_ws, c%yaw, c%xi_k, c%eta_k, c%omega_k, real(c%n_patches, wp), &
-               real(c%n_loaded, wp), real(c%main, wp), c%main_share, c%x_ours, c%x_ref, &
-               c%y_ours, c%y_ref, c%z_ours, c%z_ref, c%gamma_ours, c%delta_ref, c%x_g, c%y_g, &
-               c%nux, c%nux_t, c%nux_ref, c%nuy, c%nuy_t, c%nuy_ref, c%phi, c%phi_t, &
-               c%phi_ref, c%r_ours, c%r_ref, c%fn, c%fn_ref, (c%fn - c%fn_ref)/c%fn_ref, &
-               c%fn_ref_normal_only, c%fn_other, c%y_other, c%fx_uniform, c%fy_uniform, c%fx, c%fx_ref, c%fy, c%fy_ref, &
-               c%fx - c%fx_ref, c%fy - c%fy_ref, c%fx_tr, c%fx_tr_ref, c%fy_tr, c%fy_tr_ref, &
-               c%fz_tr, c%fz_tr_ref], text=[character(len=8) :: c%name, 'ok'])
+               real(c%n_loaded, wp), real(c%main, wp), c%main_share, c%x_ours, &
+               c%x_ours - c%x_ref, c%y_ours, c%y_ours - c%y_ref, c%z_ours, c%z_ours - c%z_ref, &
+               c%gamma_ours, c%gamma_ours - c%delta_ref, c%x_g, c%y_g, c%nux, c%nux_t, &
+               c%nux_t - c%nux_ref, c%nuy, c%nuy_t, c%nuy_t - c%nuy_ref, c%phi, c%phi_t, &
+               c%phi_t - c%phi_ref, c%r_ours, c%r_ours - c%r_ref, c%fn, &
+               (c%fn - c%fn_ref)/c%fn_ref, c%fn_other, c%y_other, c%fx_uniform, c%fy_uniform, &
+               c%fx, c%fy, c%fx - c%fx_ref, c%fy - c%fy_ref, c%fx_tr, c%fx_tr - c%fx_tr_ref, &
+               c%fy_tr, c%fy_tr - c%fy_tr_ref, c%fz_tr, c%fz_tr - c%fz_tr_ref], &
+               text=[character(len=8) :: c%name, 'ok'])
          end associate
       end do
       call out%close()
@@ -447,9 +449,10 @@ contains
          end associate
       end do
       write (unit, '(a)') '', 'Creepages (‰; φ in 1/m): ours at our geometric point, ours '// &
-         'transferred to CONTACT''s reference point, CONTACT''s.', '', &
+         'transferred to CONTACT''s reference point, and that minus CONTACT''s (Δ; CONTACT''s '// &
+         'values are in ../shared/reference/kinematic_sample).', '', &
          '| case | Y_WS | yaw (mrad) | ξ_k, η_k, ω_k (‰) | y_g (mm) | x_g (mm) | '// &
-         'ξ ours / transf. / CONTACT | η ours / transf. / CONTACT | φ ours / transf. / CONTACT |', &
+         'ξ ours / transf. / Δ | η ours / transf. / Δ | φ ours / transf. / Δ |', &
          '|---|---|---|---|---|---|---|---|---|'
       do i = 1, size(cases)
          associate (c => cases(i))
@@ -462,13 +465,16 @@ contains
             write (unit, '(a)') '| '//trim(c%name)//' | '//ftext(c%y_ws, 3)//' | '// &
                ftext(1.0e3_wp*c%yaw, 0)//' | '//kin_text(c)//' | '//ftext(c%y_g, 3)//' | '// &
                ftext(c%x_g, 3)//' | '//ftext(1.0e3_wp*c%nux, 3)//' / '// &
-               ftext(1.0e3_wp*c%nux_t, 3)//' / '//ftext(1.0e3_wp*c%nux_ref, 3)//' | '// &
+               ftext(1.0e3_wp*c%nux_t, 3)//' / '// &
+               ftext(1.0e3_wp*(c%nux_t - c%nux_ref), 3, signed=.true.)//' | '// &
                ftext(1.0e3_wp*c%nuy, 3)//' / '//ftext(1.0e3_wp*c%nuy_t, 3)//' / '// &
-               ftext(1.0e3_wp*c%nuy_ref, 3)//' | '//ftext(1.0e3_wp*c%phi, 4)//' / '// &
-               ftext(1.0e3_wp*c%phi_t, 4)//' / '//ftext(1.0e3_wp*c%phi_ref, 4)//' |'
+               ftext(1.0e3_wp*(c%nuy_t - c%nuy_ref), 3, signed=.true.)//' | '// &
+               ftext(1.0e3_wp*c%phi, 4)//' / '//ftext(1.0e3_wp*c%phi_t, 4)//' / '// &
+               ftext(1.0e3_wp*(c%phi_t - c%phi_ref), 4, signed=.true.)//' |'
          end associate
       end do
-      write (unit, '(a)') '', 'Contact point, normal force and forces (ours / CONTACT; '// &
+      write (unit, '(a)') '', 'Contact point, normal force and forces (ours / ours minus '// &
+         'CONTACT; '// &
          'y in track coordinates, x = lead along the track; totals on the rail, kN). "patches" '// &
          'counts our loaded patches; the others carry F_n,other at y_other. "uniform": ours '// &
          'with the uniform spin model (cases without yaw, module text).', '', &
@@ -479,20 +485,26 @@ contains
          associate (c => cases(i))
             if (.not. c%ok) cycle
             write (unit, '(a)') '| '//trim(c%name)//' | '//patches_text(c)//' | '// &
-               ftext(c%y_ours, 2)//' / '//ftext(c%y_ref, 2)//' | '//ftext(c%x_ours, 2)// &
-               ' / '//ftext(c%x_ref, 2)//' | '//ftext(degrees(c%gamma_ours), 1)//' / '// &
-               ftext(degrees(c%delta_ref), 1)//' | '//ftext(1.0e-3_wp*c%fn, 1)//' / '// &
-               ftext(1.0e-3_wp*c%fn_ref, 1)//' | '//ftext(c%fx, 3)//' / '// &
-               ftext(c%fx_ref, 3)//' | '//ftext(c%fy, 3)//' / '//ftext(c%fy_ref, 3)//' | '// &
-               ftext(c%fx - c%fx_ref, 3, signed=.true.)//', '// &
+               pair(c%y_ours, c%y_ref, 2)//' | '//pair(c%x_ours, c%x_ref, 2)//' | '// &
+               pair(degrees(c%gamma_ours), degrees(c%delta_ref), 1)//' | '// &
+               pair(1.0e-3_wp*c%fn, 1.0e-3_wp*c%fn_ref, 1)//' | '//ftext(c%fx, 3)//' | '// &
+               ftext(c%fy, 3)//' | '//ftext(c%fx - c%fx_ref, 3, signed=.true.)//', '// &
                ftext(c%fy - c%fy_ref, 3, signed=.true.)//' | '//uniform_text(c)//' | '// &
-               ftext(1.0e-3_wp*c%fx_tr, 2)//' / '//ftext(1.0e-3_wp*c%fx_tr_ref, 2)//' | '// &
-               ftext(1.0e-3_wp*c%fy_tr, 2)//' / '//ftext(1.0e-3_wp*c%fy_tr_ref, 2)//' | '// &
-               ftext(1.0e-3_wp*c%fz_tr, 2)//' / '//ftext(1.0e-3_wp*c%fz_tr_ref, 2)//' |'
+               pair(1.0e-3_wp*c%fx_tr, 1.0e-3_wp*c%fx_tr_ref, 2)//' | '// &
+               pair(1.0e-3_wp*c%fy_tr, 1.0e-3_wp*c%fy_tr_ref, 2)//' | '// &
+               pair(1.0e-3_wp*c%fz_tr, 1.0e-3_wp*c%fz_tr_ref, 2)//' |'
          end associate
       end do
       close (unit)
    end subroutine write_markdown
+
+   !> "ours / ours − CONTACT's" with d decimals.
+   function pair(ours, ref, d) result(text)
+      real(wp), intent(in) :: ours, ref
+      integer, intent(in) :: d
+      character(len=:), allocatable :: text
+      text = ftext(ours, d)//' / '//ftext(ours - ref, d, signed=.true.)
+   end function pair
 
    !> Δf_x, Δf_y of the uniform-spin diagnostic, or a dash.
    function uniform_text(c) result(text)
