@@ -28,6 +28,7 @@ program ellipse_table
    use shcontact_tangential_ellipse_correction, only: table_node_case, ellipse_correction_type, &
       prepare_ellipse_correction
    use shcontact_tangential_kalker, only: kalker_scheme_scaled
+   use shcontact_core_strings, only: str_int
    implicit none
 
    !> One table case: its grid indices (i_φ the t_φ node) and creepages (CONTACT's sign: rail
@@ -182,8 +183,8 @@ contains
       call read_exact(exact_path, cases, fx_exact, fy_exact, known, error)
       if (allocated(error)) return
       if (.not. all(known)) then
-         error = error_type(1, exact_path//': '//itoa(count(.not. known))//' of the '// &
-            itoa(size(cases))//' table nodes are missing (run the decks of the missing ones)')
+         error = error_type(1, exact_path//': '//str_int(count(.not. known))//' of the '// &
+            str_int(size(cases))//' table nodes are missing (run the decks of the missing ones)')
          return
       end if
       h = n_table_ty/2
@@ -283,7 +284,7 @@ contains
          ip = findloc(nint(1000*table_t_phi), nint(1000*t_phi), dim=1)
          if (ios /= 0 .or. ip == 0) then
             close (u)
-            error = error_type(1, path//': line '//itoa(line)// &
+            error = error_type(1, path//': line '//str_int(line)// &
                ': expected "i_ratio,k_x,k_y,t_phi,fx,fy" at a node of the table')
             return
          end if
@@ -401,12 +402,5 @@ contains
       end do
    end subroutine write_data
 
-   pure function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa
 
 end program ellipse_table

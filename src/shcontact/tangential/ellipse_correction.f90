@@ -42,8 +42,14 @@ module shcontact_tangential_ellipse_correction
    type :: ellipse_correction_type
       !> Apply the correction (set by [[prepare_ellipse_correction]]).
       logical :: active = .false.
-      !> ln(a_e/b_e), clamped to the table's range.
+      !> ln(a_e/b_e), clamped to the table's range; the lower a/b node and the weights of it
+      !> and the next.
       real(wp) :: log_ratio = 0.0_wp
+      integer :: ratio_node = 1
+      real(wp) :: ratio_weight(2) = [1.0_wp, 0.0_wp]
+      !> Near zero creepage: the defect's true slopes (table_linear) minus those of the table's
+      !> first cell, dD_x/ds_x, dD_y/ds_y, dD_y/ds_φ ([[add_linear_regime]]).
+      real(wp) :: slope_gap(3) = 0.0_wp
       !> Scaled creepage per unit creepage: s_x/ν_x, s_y/ν_y (dimensionless), s_φ/φ (mm).
       real(wp) :: scale_x = 0.0_wp, scale_y = 0.0_wp, scale_phi = 0.0_wp
       !> Load centre from the reference point (mm); mean cos γ and sin γ over the load, for the
@@ -75,6 +81,8 @@ contains
       correction%active = .true.
       correction%log_ratio = min(max(log(semi_a/semi_b), log(table_ratio(1))), &
          log(table_ratio(n_table_ratio)))
+      call ratio_bracket(correction%log_ratio, correction%ratio_node, correction%ratio_weight)
+      correction%slope_gap = linear_slope_gap(correction%ratio_node, correction%ratio_weight)
       correction%scale_x = material%shear_modulus*semi_a*semi_b*c11/saturation
       correction%scale_y = material%shear_modulus*semi_a*semi_b*c22/saturation
       correction%scale_phi = material%shear_modulus*(semi_a*semi_b)**1.5_wp*c23/saturation
@@ -106,7 +114,8 @@ contains
       end if
       sign_x = sign(1.0_wp, sx)
       sx = abs(sx)
-      call ratio_bracket(correction%log_ratio, lo(1), w(:, 1))
+      lo(1) = correction%ratio_node
+      w(:, 1) = correction%ratio_weight
       call t_bracket(sx/(1.0_wp + sx), 0, lo(2), w(:, 2))
       call t_bracket(sy/(1.0_wp + abs(sy)), -n_table_t, lo(3), w(:, 3))
       call phi_bracket(sp/(1.0_wp + sp), lo(4), w(:, 4))
@@ -124,7 +133,7 @@ contains
       end do
       dfx = table_unit*dfx
       dfy = table_unit*dfy
-      call add_linear_regime(lo(1), w(:, 1), sx, sy, sp, dfx, dfy)
+      call add_linear_regime(correction%slope_gap, sx, sy, sp, dfx, dfy)
       dfx = sign_x*dfx
       dfy = sign_y*dfy
    end subroutine ellipse_defect
@@ -132,35 +141,46 @@ contains
    !> Near zero creepage the defect is linear in s, with the slope of the exact linear theory
    !> minus FASTSIM_SH's (table_linear); the table's first cell, which reaches s ≈ 0.1 where
    !> saturation has begun, has another slope. Inside that cell (u = max(t_x/t₁, |t_y|/t₁,
-   !> t_φ/t_φ,₁) < 1) add the difference of the slopes times s, weighted by 1 − u: the
-   !> derivative at zero is then the linear theory's, and every node keeps its value.
-   pure subroutine add_linear_regime(lo, w, sx, sy, sp, dfx, dfy)
-      !> Lower a/b node and weights.
-      integer, intent(in) :: lo
-      real(wp), intent(in) :: w(2)
+   !> t_φ/t_φ,₁) < 1) add the difference of the slopes (slope_gap, [[linear_slope_gap]]) times
+   !> s, weighted by 1 − u: the derivative at zero is then the linear theory's, and every node
+   !> keeps its value.
+   pure subroutine add_linear_regime(slope_gap, sx, sy, sp, dfx, dfy)
+      !> Slope differences dD_x/ds_x, dD_y/ds_y, dD_y/ds_φ of the patch's a/b.
+      real(wp), intent(in) :: slope_gap(3)
       !> Scaled creepages (s_x, s_φ ≥ 0).
       real(wp), intent(in) :: sx, sy, sp
       !> Defects from the table (units of μF_n), updated.
       real(wp), intent(inout) :: dfx, dfy
-      real(wp) :: s1, s1_phi, u, weight, slope(3)
+      real(wp) :: t1, weight
+
+      t1 = 1.0_wp/n_table_t
+      weight = 1.0_wp - max(sx/(1.0_wp + sx)/t1, abs(sy)/(1.0_wp + abs(sy))/t1, &
+         sp/(1.0_wp + sp)/table_t_phi(2))
+      if (weight <= 0.0_wp) return
+      dfx = dfx + weight*slope_gap(1)*sx
+      dfy = dfy + weight*(slope_gap(2)*sy + slope_gap(3)*sp)
+   end subroutine add_linear_regime
+
+   !> The true slopes of the defect at zero creepage (table_linear) minus the table's own along
+   !> each axis (its first node over that node's s), interpolated in a/b.
+   pure function linear_slope_gap(lo, w) result(gap)
+      !> Lower a/b node and weights.
+      integer, intent(in) :: lo
+      real(wp), intent(in) :: w(2)
+      real(wp) :: gap(3)
+      real(wp) :: s1, s1_phi
       integer :: h, k
 
       h = n_table_ty/2
       s1 = 1.0_wp/(n_table_t - 1)
       s1_phi = table_t_phi(2)/(1.0_wp - table_t_phi(2))
-      u = max(sx/(1.0_wp + sx)/(s1/(1.0_wp + s1)), abs(sy)/(1.0_wp + abs(sy))/(s1/(1.0_wp + s1)), &
-         sp/(1.0_wp + sp)/table_t_phi(2))
-      weight = 1.0_wp - u
-      if (weight <= 0.0_wp) return
-      slope = 0.0_wp
+      gap = 0.0_wp
       do k = 0, 1
-         slope = slope + w(k + 1)*(table_linear(:, lo + k) - table_unit*[ &
+         gap = gap + w(k + 1)*(table_linear(:, lo + k) - table_unit*[ &
             table_dfx(1, h + 1, 2, lo + k)/s1, table_dfy(1, h + 2, 1, lo + k)/s1, &
             table_dfy(2, h + 1, 1, lo + k)/s1_phi])
       end do
-      dfx = dfx + weight*slope(1)*sx
-      dfy = dfy + weight*(slope(2)*sy + slope(3)*sp)
-   end subroutine add_linear_regime
+   end function linear_slope_gap
 
    !> The ellipse and the creepages (our sign) of table node (i_ratio, k_x, k_y, i_φ): semi-axes
    !> with a/b = table_ratio(i_ratio) and area table_area, table_load on table_strips strips, and
