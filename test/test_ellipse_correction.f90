@@ -4,6 +4,7 @@
 module test_ellipse_correction
    use testdrive, only: new_unittest, unittest_type, error_type, check
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_core_material, only: material_type
    use shcontact_normal_patch, only: normal_patch_type, ellipse_strip_patch
@@ -16,6 +17,7 @@ module test_ellipse_correction
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
       prepare_ellipse_correction, ellipse_defect, table_node_case
+   use test_validation, only: percentile, read_columns
    use shcontact_tangential_ellipse_table, only: n_table_ratio, n_table_t, n_table_ty, &
       n_table_phi, table_t_phi, table_unit, table_poisson, table_linear
    implicit none
@@ -53,7 +55,7 @@ contains
    !> (scripts/contact_ellipse_table.py --skip-contact).
    subroutine test_table_current(error)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: rows(:, :)
+      real(wp), allocatable :: rows(:, :), values(:, :)
       type(normal_patch_type) :: patch
       type(creepage_type) :: creepage
       type(tangential_options_type) :: options
@@ -64,11 +66,13 @@ contains
       real(wp) :: dfx, dfy, worst
       integer :: i, ip, n_checked, n_nodes
 
-      call read_table(table_csv, 6, rows, error)
+      call read_columns(table_csv, [character(len=7) :: 'i_ratio', 'k_x', 'k_y', 't_phi', 'fx', &
+         'fy'], values, error)
       if (allocated(error)) return
+      rows = transpose(values)
       n_nodes = n_table_ratio*n_table_t*(n_table_ty*n_table_phi - n_table_ty/2)
       call check(error, size(rows, 2) == n_nodes, message='the table CSV has '// &
-         real_text(real(size(rows, 2), wp))//' nodes, the grid '//real_text(real(n_nodes, wp)))
+         str_int(size(rows, 2))//' nodes, the grid '//str_int(n_nodes))
       if (allocated(error)) return
       options%fields = .false.
       options%correction = correction_none
@@ -95,7 +99,7 @@ contains
       call check(error, .not. allocated(lerr), message='solve failed on a table node')
       if (allocated(error)) return
       call check(error, n_checked > 3000 .and. worst <= 1.2_wp*table_unit, &
-         message='table defect differs from exact − FASTSIM_SH by '//real_text(worst)// &
+         message='table defect differs from exact − FASTSIM_SH by '//str_real(worst)// &
          '; remake the table (scripts/contact_ellipse_table.py --skip-contact)')
    end subroutine test_table_current
 
@@ -106,7 +110,7 @@ contains
    !> 0.059 and 0.023).
    subroutine test_between_nodes(error)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: cols(:, :), e(:)
+      real(wp), allocatable :: cols(:, :), values(:, :), e(:)
       type(normal_patch_type) :: patch
       type(tangential_options_type) :: options
       type(march_workspace_type) :: ws
@@ -114,8 +118,10 @@ contains
       type(lib_error), allocatable :: lerr
       integer :: i, n
 
-      call read_table(check_csv, 7, cols, error)
+      call read_columns(check_csv, [character(len=10) :: 'a_mm', 'b_mm', 'nu_x', 'nu_y', &
+         'phi_per_mm', 'fx', 'fy'], values, error)
       if (allocated(error)) return
+      cols = transpose(values)
       n = size(cols, 2)
       allocate (e(2*n))
       options%fields = .false.
@@ -136,11 +142,12 @@ contains
       call check(error, n == 222, message='ellipse_check.csv: expected 222 cases')
       if (allocated(error)) return
       i = (maxloc(e, dim=1) + 1)/2
-      call check(error, maxval(e) <= 0.008_wp .and. p80(e) <= 0.002_wp, &
-         message='max / P80 |Δf| on ellipses '//real_text(maxval(e))//' / '//real_text(p80(e))// &
+      call check(error, maxval(e) <= 0.008_wp .and. percentile(e, 0.8_wp) <= 0.002_wp, &
+         message='max / P80 |Δf| on ellipses '//str_real(maxval(e))//' / '// &
+         str_real(percentile(e, 0.8_wp))// &
          ', expected <= 0.008 / 0.002; the largest at a, b, nu_x, nu_y, phi = '// &
-         real_text(cols(1, i))//', '//real_text(cols(2, i))//', '//real_text(cols(3, i))//', '// &
-         real_text(cols(4, i))//', '//real_text(cols(5, i)))
+         str_real(cols(1, i))//', '//str_real(cols(2, i))//', '//str_real(cols(3, i))//', '// &
+         str_real(cols(4, i))//', '//str_real(cols(5, i)))
    end subroutine test_between_nodes
 
    !> D is odd in the creepages; mirroring y flips ν_y, φ and D_y; ν_x → −ν_x flips D_x only.
@@ -193,7 +200,7 @@ contains
       if (allocated(error)) return
       call ellipse_defect(c, 1.0_wp, -1.0_wp, 0.1_wp, dx, dy)
       call check(error, abs(dx) + abs(dy) < 1.0e-3_wp, message='defect at full slip '// &
-         real_text(dx)//', '//real_text(dy))
+         str_real(dx)//', '//str_real(dy))
       if (allocated(error)) return
       options%fields = .false.
       call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
@@ -268,64 +275,5 @@ contains
       call check(error, index(lerr%message, 'exact-ellipse') > 0, &
          message='the error names the choices: '//lerr%message)
    end subroutine test_option
-
-   !> A numeric CSV with one header line, n_cols columns.
-   subroutine read_table(path, n_cols, cols, error)
-      character(len=*), intent(in) :: path
-      integer, intent(in) :: n_cols
-      real(wp), allocatable, intent(out) :: cols(:, :)
-      type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: grown(:, :)
-      real(wp) :: row(n_cols)
-      integer :: unit, stat, n
-
-      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
-      call check(error, stat == 0, message='cannot open '//path)
-      if (allocated(error)) return
-      read (unit, *)
-      allocate (cols(n_cols, 1024))
-      n = 0
-      do
-         read (unit, *, iostat=stat) row
-         if (stat /= 0) exit
-         n = n + 1
-         if (n > size(cols, 2)) then
-            allocate (grown(n_cols, 2*size(cols, 2)))
-            grown(:, 1:n - 1) = cols(:, 1:n - 1)
-            call move_alloc(grown, cols)
-         end if
-         cols(:, n) = row
-      end do
-      close (unit)
-      cols = cols(:, 1:n)
-   end subroutine read_table
-
-   !> A real in a message.
-   pure function real_text(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=24) :: buf
-      write (buf, '(es10.3)') x
-      text = trim(adjustl(buf))
-   end function real_text
-
-   !> 80th percentile, nearest rank.
-   pure real(wp) function p80(values)
-      real(wp), intent(in) :: values(:)
-      real(wp) :: v(size(values)), t
-      integer :: i, j
-      v = values
-      do i = 2, size(v)
-         t = v(i)
-         j = i - 1
-         do while (j >= 1)
-            if (v(j) <= t) exit
-            v(j + 1) = v(j)
-            j = j - 1
-         end do
-         v(j + 1) = t
-      end do
-      p80 = v(max(1, ceiling(0.8_wp*size(v) - 1.0e-9_wp)))
-   end function p80
 
 end module test_ellipse_correction

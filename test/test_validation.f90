@@ -34,7 +34,7 @@ module test_validation
       contact_result_type, load_vertical_force
    implicit none
    private
-   public :: collect_validation
+   public :: collect_validation, percentile, read_columns
 
    character(len=*), parameter :: profiles_dir = '../shared/profiles/'
    character(len=*), parameter :: reference_dir = '../shared/reference/ty0_literal/'
