@@ -143,8 +143,9 @@ contains
       call check(error, result%n_patches, size(geometry))
       if (allocated(error)) return
       call check(error, bitwise_equal([result%main%fx, result%main%fy, result%main%mz, &
-         result%main%fn, result%main%gamma0, result%main%y_track], [tangential%fx, &
-         tangential%fy, tangential%mz, normal%load, geometry(1)%gamma0, geometry(1)%y_track]), &
+         result%main%fn, result%main%gamma0, result%main%gamma_plane, result%main%y_track], &
+         [tangential%fx, tangential%fy, tangential%mz, normal%load, normal%gamma0, &
+         geometry(1)%gamma0, geometry(1)%y_track + normal%y_shift*cos(geometry(1)%gamma0)]), &
          message='solver object differs from the stage-by-stage pipeline')
       if (allocated(error)) return
       call check(error, result%main%fn, headline_load, rel=.true., thr=1.0e-10_wp)
@@ -288,7 +289,7 @@ contains
       if (allocated(error)) return
       balance = 0.0_wp
       do k = 1, result%n_loaded
-         balance = balance + result%patch(k)%fn*cos(result%patch(k)%gamma0)
+         balance = balance + result%patch(k)%fn*cos(result%patch(k)%gamma_plane)
       end do
       call check(error, balance, headline_load, rel=.true., thr=1.0e-9_wp)
       if (allocated(error)) return

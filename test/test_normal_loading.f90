@@ -610,8 +610,9 @@ contains
       do k = 1, size(geom)
          f_z = f_z + patches(k)%load*cos(geom(k)%gamma0)
          if (.not. (patches(k)%load > 0.0_wp)) cycle
-         y_lo = patches(k)%y(1) - 0.5_wp*patches(k)%dy
-         y_hi = patches(k)%y(patches(k)%n_strips) + 0.5_wp*patches(k)%dy
+         ! Strips are measured from the loaded reference point, y_shift from the table's origin.
+         y_lo = patches(k)%y_shift + patches(k)%y(1) - 0.5_wp*patches(k)%dy
+         y_hi = patches(k)%y_shift + patches(k)%y(patches(k)%n_strips) + 0.5_wp*patches(k)%dy
          call check(error, y_lo > geom(k)%basin_lower - geom(k)%h .and. &
             y_hi < geom(k)%basin_upper + geom(k)%h, message=at//'contact inside its basin')
          if (allocated(error)) return

@@ -130,7 +130,7 @@ contains
       real(wp), intent(in) :: f_z, dz, dz_alone
       type(error_type), allocatable, intent(out) :: error
 
-      call check(error, sum(patches%load*cos(patches%gamma0)), f_z, thr=1.0e-10_wp, rel=.true., &
+      call check(error, sum(patches%load*cos(patches%gamma_plane)), f_z, thr=1.0e-10_wp, rel=.true., &
          message='vertical balance')
       if (allocated(error)) return
       call check(error, dz, dz_alone, thr=1.0e-14_wp, rel=.true., message='rigid approach')

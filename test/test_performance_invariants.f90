@@ -512,10 +512,10 @@ contains
          integer, intent(in) :: j
          table_y = contact%geometry%y_first + (j - 1)*contact%geometry%h
       end function table_y
-      !> ψ_j = ε_b,j (δ − touch_j) at the current approach.
+      !> ψ_j = (ε_b,j − c_j)(δ − touch_j) at the current approach.
       real(wp) function psi(j)
          integer, intent(in) :: j
-         psi = contact%geometry%eps_b(j)*(approach - contact%geometry%touch(j))
+         psi = contact%geometry%psi_slope(j)*(approach - contact%geometry%touch(j))
       end function psi
       !> Fraction of a cell from the point inside (ψ > 0) to the zero of the linear ψ.
       real(wp) function crossing(psi_in, psi_out)

@@ -106,9 +106,16 @@ module shcontact_api_solver
       real(wp) :: fy_track = 0.0_wp, fz_track = 0.0_wp
       !> Approach δ (mm), contact area (mm²), largest strip peak pressure (MPa).
       real(wp) :: approach = 0.0_wp, area = 0.0_wp, p_max = 0.0_wp
-      !> Contact angle γ₀ (rad, CONTACT's sign) and rolling radius r₀ (mm) at the reference point.
+      !> Contact angle γ₀ (rad, CONTACT's sign) and rolling radius r₀ (mm) at the reference point:
+      !> the first contact of the contact search, and for a loaded patch the geometric contact
+      !> point of the loaded state, where the creepages are given (doc/geometry.md "Vertical
+      !> approach").
       real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp
-      !> Reference point in track coordinates (mm; y from the track centre, z down).
+      !> Contact angle of the contact plane (rad, CONTACT's sign): that of the first contact.
+      !> F_n is normal to this plane, and a vertical load is shared as Σ F_n cos γ_plane = F_z.
+      real(wp) :: gamma_plane = 0.0_wp
+      !> Reference point in track coordinates (mm; y from the track centre, z down), the same
+      !> point.
       real(wp) :: y_track = 0.0_wp, z_track = 0.0_wp
       !> Coulomb check max|p|/(μ p_n,e) and adhesion area fraction.
       real(wp) :: coulomb_ratio = 0.0_wp, adhesion_fraction = 0.0_wp
@@ -415,7 +422,7 @@ contains
       end if
       if (present(fields)) then
          options%fields = .true.
-         call kinematic_tangential(self, options, error)
+         call kinematic_tangential(self, local, options, error)
          if (allocated(error)) return
       end if
       call summarise(self, result)
@@ -462,8 +469,8 @@ contains
    !> with the load. Each tangential solve gives τ = T/q; the normal problem alone is then
    !> brought to S(q) − τ q = F_z (cheap solves, S nearly ∝ q), and after two tangential solves
    !> a secant step on the whole balance C(q) takes over. The iteration always starts from
-   !> q = F_z, so a call does not depend on the calls before it. The creepages depend on the
-   !> geometry only: they are computed once, before the iteration.
+   !> q = F_z, so a call does not depend on the calls before it. The creepages are those of the
+   !> wheelset's motion at each patch's reference point of the loaded state ([[kinematic_tangential]]).
    subroutine kinematic_contact(self, state, local, load, options, short_tables, error)
       type(contact_solver_type), intent(inout) :: self
       !> The state in the track frame and in the wheel's side frame.
@@ -477,8 +484,6 @@ contains
       integer :: it, inner, k
 
       call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
-      if (allocated(error)) return
-      call kinematic_creepages(self, local, error)
       if (allocated(error)) return
       normal_load = load
       lifted = 0.0_wp
@@ -502,7 +507,7 @@ contains
             if (allocated(error)) return
             vertical = strip_vertical(self)
          end if
-         call kinematic_tangential(self, options, error)
+         call kinematic_tangential(self, local, options, error)
          if (allocated(error)) return
          if (load%mode /= load_vertical_force) return
          carried = 0.0_wp
@@ -549,42 +554,42 @@ contains
       end function strip_vertical
    end subroutine kinematic_contact
 
-   !> The creepages of the wheelset's motion at the reference point of every patch found
-   !> (self%creepage).
-   subroutine kinematic_creepages(self, local, error)
+   !> The tangential problem of every loaded patch with the creepages of the wheelset's motion
+   !> at its reference point: the geometric contact point of the loaded state (the normal
+   !> solution's y_shift from the first contact along the contact plane, its rolling radius
+   !> and contact angle; shcontact_normal_semihertz's refer_to_loaded_point). The point's axle
+   !> coordinate moves by y_shift cos γ_plane from the first contact's.
+   subroutine kinematic_tangential(self, local, options, error)
       type(contact_solver_type), intent(inout) :: self
       !> The state in the wheel's side frame.
       type(wheelset_state_type), intent(in) :: local
+      type(tangential_options_type), intent(in) :: options
       type(error_type), allocatable, intent(out) :: error
       type(contact_point_type) :: point
+      type(creepage_type) :: creepage
       real(wp) :: speed
       integer :: k
 
-      do k = 1, self%patches%count
-         associate (g => self%patches%patch(k))
-            point = contact_point_type(axle=g%y_wheel + axle_offset(self%track), &
-               radius=g%r0, gamma=g%gamma0)
-         end associate
-         call rigid_creepages(local, point, self%creepage(k), speed, error)
-         if (allocated(error)) return
-      end do
-   end subroutine kinematic_creepages
-
-   !> The tangential problem of every loaded patch with its creepages from
-   !> [[kinematic_creepages]].
-   subroutine kinematic_tangential(self, options, error)
-      type(contact_solver_type), intent(inout) :: self
-      type(tangential_options_type), intent(in) :: options
-      type(error_type), allocatable, intent(out) :: error
-      type(creepage_type) :: creepage
-      integer :: k
-
       do k = 1, self%n_loaded
-         creepage = self%creepage(k)
+         if (.not. (self%normal(k)%load > 0.0_wp)) cycle
+         point = contact_point_type(axle=reference_axle(self, k), radius=self%normal(k)%r0, &
+            gamma=self%normal(k)%gamma0)
+         call rigid_creepages(local, point, creepage, speed, error)
+         if (allocated(error)) return
          call solve_patch(self, k, creepage, options, error)
          if (allocated(error)) return
       end do
    end subroutine kinematic_tangential
+
+   !> Axle coordinate L (mm) of loaded patch k's reference point: the first contact's, moved by
+   !> y_shift cos γ_plane along the contact plane (shcontact_normal_semihertz's
+   !> refer_to_loaded_point).
+   pure real(wp) function reference_axle(self, k) result(axle)
+      type(contact_solver_type), intent(in) :: self
+      integer, intent(in) :: k
+      axle = self%patches%patch(k)%y_wheel + axle_offset(self%track) + &
+         self%normal(k)%y_shift*cos(self%normal(k)%gamma_plane)
+   end function reference_axle
 
    !> The tangential problem of loaded patch k for its creepages.
    subroutine solve_patch(self, k, creepage, options, error)
@@ -815,6 +820,7 @@ contains
       do k = 1, result%n_patches
          associate (p => result%patch(k), g => self%patches%patch(k))
             p%gamma0 = g%gamma0
+            p%gamma_plane = g%gamma0
             p%r0 = g%r0
             p%y_track = g%y_track
             p%z_track = g%z_track
@@ -825,6 +831,15 @@ contains
       do k = 1, self%n_loaded
          associate (p => result%patch(k), n => self%normal(k), t => self%tangential(k))
             p%fn = n%load
+            if (n%load > 0.0_wp) then
+               p%gamma0 = n%gamma0
+               p%r0 = n%r0
+               ! Along the contact plane towards the wheel's field side (y_track is in the
+               ! track frame: towards −y on the left wheel).
+               p%y_track = p%y_track + self%side*n%y_shift*cos(n%gamma_plane)
+               p%z_track = p%z_track + n%y_shift*sin(n%gamma_plane)
+               p%x_track = contact_lead(reference_axle(self, k), n%r0, n%gamma0, self%yaw)
+            end if
             p%approach = n%approach
             p%area = n%area
             p%p_max = n%p_max
@@ -887,6 +902,8 @@ contains
       dst%dy = src%dy
       dst%gamma0 = src%gamma0
       dst%r0 = src%r0
+      dst%y_shift = src%y_shift
+      dst%gamma_plane = src%gamma_plane
       call copy_vector(src%y, dst%y)
       call copy_vector(src%a, dst%a)
       call copy_vector(src%k, dst%k)

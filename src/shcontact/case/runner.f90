@@ -465,9 +465,12 @@ contains
       s%approach = stage%normal(m)%approach
       s%area = stage%normal(m)%area
       s%p_max = stage%normal(m)%p_max
-      s%gamma0 = stage%geometry(m)%gamma0
-      s%r0 = stage%geometry(m)%r0
-      s%y_track = stage%geometry(m)%y_track
+      ! The reference point where the creepages are given: the geometric contact point of the
+      ! loaded state (doc/geometry.md "Vertical approach").
+      s%gamma0 = stage%normal(m)%gamma0
+      s%r0 = stage%normal(m)%r0
+      s%y_track = stage%geometry(m)%y_track + &
+         stage%normal(m)%y_shift*cos(stage%normal(m)%gamma_plane)
    end subroutine summarise
 
 end module shcontact_case_runner

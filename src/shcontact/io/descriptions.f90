@@ -133,6 +133,10 @@ contains
       case ('area'); text = 'contact area, sum of 2 a_i dy'
       case ('p_max'); text = 'largest strip peak pressure'
       case ('dy'); text = 'strip width'
+      case ('y_shift'); text = 'reference point (geometric contact point of the loaded state, '// &
+         'where the creepages are given) from the first contact, along the contact plane'
+      case ('gamma0'); text = 'contact angle at the reference point (CONTACT sign)'
+      case ('r0'); text = 'wheel rolling radius at the reference point'
       case ('is_hertz'); text = '1 when the patch is one Hertz ellipse, else 0 (semi-Hertz strips)'
       case ('ellipse_a'); text = 'Hertz ellipse semi-axis along x (rolling)'
       case ('ellipse_b'); text = 'Hertz ellipse semi-axis along y (lateral)'

@@ -504,6 +504,9 @@ contains
       if (.not. allocated(error)) call h5_write(file, path//'/area', n%area, 'mm^2', error)
       if (.not. allocated(error)) call h5_write(file, path//'/p_max', n%p_max, 'MPa', error)
       if (.not. allocated(error)) call h5_write(file, path//'/dy', n%dy, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/y_shift', n%y_shift, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/gamma0', n%gamma0, 'rad', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/r0', n%r0, 'mm', error)
       if (.not. allocated(error)) call h5_write(file, path//'/is_hertz', merge(1, 0, &
          n%is_hertz), '1', error)
       if (n%is_hertz .and. .not. allocated(error)) then

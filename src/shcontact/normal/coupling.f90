@@ -37,6 +37,7 @@ module shcontact_normal_coupling
    use shcontact_core_error, only: error_type
    use shcontact_math_lapack, only: solve_dense_leading
    use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_semihertz, only: vertical_tilt
    implicit none
    private
 
@@ -58,9 +59,11 @@ module shcontact_normal_coupling
       integer :: n = 0, n_patches = 0
       integer :: patch(max_total) = 0
       !> Width (mm), centre along the patch y (mm) and along the profile s (mm), mean half-length
-      !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), coupled/local load ratio.
+      !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), coupled/local load ratio,
+      !> and the mean share 1 − c of a change of approach that reaches the group (a vertical
+      !> approach, shcontact_normal_semihertz's vertical_tilt).
       real(wp), dimension(max_total) :: width = 0.0_wp, yc = 0.0_wp, s = 0.0_wp, ac = 0.0_wp, &
-         gc = 0.0_wp, local = 0.0_wp, ratio = 0.0_wp
+         gc = 0.0_wp, local = 0.0_wp, ratio = 0.0_wp, wc = 1.0_wp
       integer, dimension(max_patches) :: first_group = 1, last_group = 0
       !> Per set patch: local-Hertz load N_k (N), position of the reference point along the
       !> profile (mm), contact angle γ_k (rad) and cos γ_k.
@@ -268,7 +271,7 @@ contains
          p = members(i)
          g1 = set%n + 1
          call copy_patch_groups(set, all, p, all%offset(p), all%gamma(p))
-         set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)
+         set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)*set%wc(g1:set%n)
       end do
       if (set%n < 1) return
       call solve_groups(set, e_star, error)
@@ -305,6 +308,7 @@ contains
          set%yc(g) = 0.0_wp
          set%ac(g) = 0.0_wp
          set%gc(g) = 0.0_wp
+         set%wc(g) = 0.0_wp
          set%local(g) = 0.0_wp
          c = 0
          do i = first(j), last(j)
@@ -316,13 +320,16 @@ contains
             ! δ − g_i of the strip, its gap below the patch's approach.
             set%gc(g) = set%gc(g) + patch%approach - (1.0_wp - patch%eps_a(i))* &
                patch%approach*(1.0_wp - patch%k(i)**2)
+            set%wc(g) = set%wc(g) + patch%gamma(i)
             set%local(g) = set%local(g) + patch%strip_load(i)
          end do
          set%width(g) = real(c, wp)*patch%dy
          set%yc(g) = set%yc(g)/real(c, wp)
          set%ac(g) = set%ac(g)/real(c, wp)
          set%gc(g) = set%gc(g)/real(c, wp)
-         set%s(g) = offset + set%yc(g)
+         ! 1 − c at the group's mean contact angle (γ varies little across a group).
+         set%wc(g) = 1.0_wp - vertical_tilt(set%wc(g)/real(c, wp), patch%gamma_plane)
+         set%s(g) = offset + patch%y_shift + set%yc(g)
       end do
       set%n = set%n + ng
       set%last_group(set%n_patches) = set%n
@@ -348,6 +355,7 @@ contains
          set%yc(h) = source%yc(g)
          set%ac(h) = source%ac(g)
          set%gc(h) = source%gc(g)
+         set%wc(h) = source%wc(g)
          set%local(h) = source%local(g)
          set%s(h) = offset + set%yc(h)
          set%n = h
@@ -370,7 +378,7 @@ contains
       set%cos_gamma(set%n_patches) = cos(gamma)
    end subroutine open_patch
 
-   !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J = δ_J − g_J on every group in
+   !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in
    !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set: groups with
    !> a negative peak leave); set%ratio = coupled over local-Hertz load of each group.
    pure subroutine solve_groups(set, e_star, error, shift)
@@ -408,7 +416,7 @@ contains
             end do
             kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))* &
                set%cos_gamma(set%patch(idx(i)))
-            kmat(i, mg + 1) = -set%cos_gamma(set%patch(idx(i)))
+            kmat(i, mg + 1) = -set%cos_gamma(set%patch(idx(i)))*set%wc(idx(i))
             rhs(i) = set%gc(idx(i))
          end do
          kmat(mg + 1, mg + 1) = 0.0_wp
@@ -425,7 +433,7 @@ contains
          readmitted = .false.
          do j = 1, n
             if (in_contact(j)) cycle
-            displacement = -set%cos_gamma(set%patch(j))*rhs(mg + 1)
+            displacement = -set%cos_gamma(set%patch(j))*set%wc(j)*rhs(mg + 1)
             do i = 1, mg
                displacement = displacement + kern(j, idx(i))*peak(idx(i))
             end do

@@ -20,7 +20,8 @@ module shcontact_normal_loading
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape_fast, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
-      semihertz_strips, semihertz_load, ellipse_strips, reserve_strips, clear_strips
+      semihertz_strips, semihertz_load, ellipse_strips, reserve_strips, clear_strips, &
+      refer_to_loaded_point
    use shcontact_normal_patch, only: normal_patch_type
    implicit none
    private
@@ -143,6 +144,7 @@ contains
       end if
       call fill_patch(contact, approach, patch, error)
       if (.not. allocated(error)) call coupled_if_asked(contact, patch, error)
+      if (.not. allocated(error)) call refer_to_loaded_point(contact%geometry, patch)
    end subroutine solve_approach
 
    !> The normal solution for a prescribed normal force N on one patch: δ such that
@@ -190,6 +192,7 @@ contains
          return
       end if
       call coupled_if_asked(contact, patch, error)
+      if (.not. allocated(error)) call refer_to_loaded_point(contact%geometry, patch)
    end subroutine solve_load
 
    !> `reduction = 'coupled'`: redistribute the load of the local-Hertz strips through the
@@ -319,6 +322,7 @@ contains
          return
       end if
       call patches_coupled_if_asked(contacts, patches, error)
+      if (.not. allocated(error)) call refer_patches(contacts, patches)
    end subroutine solve_vertical_load
 
    !> Several patches at a prescribed rigid vertical approach Δz of the wheel (a vertical
@@ -362,7 +366,18 @@ contains
       end if
       f_z = f%force
       call patches_coupled_if_asked(contacts, patches, error)
+      if (.not. allocated(error)) call refer_patches(contacts, patches)
    end subroutine solve_vertical_approach
+
+   !> Every patch of a wheel referred to its own geometric contact point of the loaded state.
+   pure subroutine refer_patches(contacts, patches)
+      type(normal_contact_type), intent(in) :: contacts(:)
+      type(normal_patch_type), intent(inout) :: patches(:)
+      integer :: k
+      do k = 1, size(contacts)
+         call refer_to_loaded_point(contacts(k)%geometry, patches(k))
+      end do
+   end subroutine refer_patches
 
    !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
    !> "Neighbouring patches under load"): past a basin limit the table runs into a neighbouring

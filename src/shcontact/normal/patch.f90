@@ -28,8 +28,13 @@ module shcontact_normal_patch
       real(wp) :: p_max = 0.0_wp
       !> Strip width (mm).
       real(wp) :: dy = 0.0_wp
-      !> Contact angle and rolling radius at the reference point (copied from the geometry).
+      !> Contact angle and rolling radius at the reference point: the geometric contact point
+      !> of the loaded state (shcontact_normal_semihertz's refer_to_loaded_point), where the
+      !> strips' y = 0 and where creepages are given.
       real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp
+      !> Where the reference point lies from the geometry table's origin (the first contact),
+      !> along the contact plane (mm), and the contact plane's angle (rad).
+      real(wp) :: y_shift = 0.0_wp, gamma_plane = 0.0_wp
       !> Strip centres, from the reference point (mm).
       real(wp), allocatable :: y(:)
       !> Strip half-lengths a_i (mm).

@@ -6,6 +6,16 @@
 !> strips for one approach are then laid out by [[semihertz_strips]] without any elliptic
 !> integral or allocation. [[ellipse_strips]] gives the strip table of one Hertz ellipse
 !> (`method = 'hertz'`) on the same geometry.
+!>
+!> **The approach is a vertical translation of the wheel** (doc/normal.md "Vertical approach").
+!> The wheelset moves down under its load; it does not move along each strip's normal. Where the
+!> contact angle varies across the patch, such a translation closes the gap along the contact
+!> normal by Δ(1 − c(y)), c = tan γ₀ tan(γ(y) − γ₀), not by Δ, so the interpenetration is
+!> δ − g(y) − (δ + g₀)c(y) (g₀ the gap at the reference point when several patches share one
+!> vertical approach). This is the undeformed distance of the loaded state, CONTACT's h of
+!> module 1; on a flange root (γ from −32° to −25° across the patch) it moves the contact by
+!> 0.3 mm and changes the gap by 25 %. The geometric contact point of the loaded state, the
+!> minimum of that distance, is where [[refer_to_loaded_point]] puts the strips' origin.
 module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
@@ -19,13 +29,17 @@ module shcontact_normal_semihertz
 
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
-   public :: reserve_strips, clear_strips
+   public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt
 
    !> Smallest relative growth of δ over which the strips sweep across table points out of
    !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
    !> against the ≈ 2e-4 change of the midpoint error it spreads out, small enough that the
    !> strips seldom reach past the contact.
    real(wp), parameter :: cover_ramp = 0.01_wp
+   !> Smallest ψ per unit approach, as a fraction of ε_b: a point where the tilt term c reaches
+   !> ε_b (far out on a steep flank) would never come into contact; it then comes in only at
+   !> approaches far beyond any load.
+   real(wp), parameter :: min_slope = 0.01_wp
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
@@ -52,7 +66,13 @@ module shcontact_normal_semihertz
       real(wp), allocatable :: gap(:), curv_a(:), gamma(:), r_wheel(:)
       !> Penetration split used by the strips: local Hertz ε_a, ε_b, or the constant ε.
       real(wp), allocatable :: eps_a(:), eps_b(:)
-      !> Approach at which each table point comes into contact, g/ε_b (mm).
+      !> Tilt term c(y) = tan γ₀ tan(γ(y) − γ₀) of the vertical approach ([[vertical_tilt]]):
+      !> a vertical translation of the wheel that closes the gap by Δ at the reference point
+      !> closes it by Δ(1 − c(y)) at y, along the contact normal.
+      real(wp), allocatable :: tilt(:)
+      !> ψ per unit approach, ε_b − c (clamped at a small fraction of ε_b).
+      real(wp), allocatable :: psi_slope(:)
+      !> Approach at which each table point comes into contact, (g + g₀c)/(ε_b − c) (mm).
       real(wp), allocatable :: touch(:)
       !> Approach from which the strips cover each table point ([[outward_cover]]): at most
       !> touch, monotonic on each side of i_first, so the strips' interval for an approach δ is
@@ -130,7 +150,11 @@ contains
          prepared%eps_a(1:n) = options%epsilon
          prepared%eps_b(1:n) = options%epsilon
       end if
-      prepared%touch(1:n) = prepared%gap(1:n)/prepared%eps_b(1:n)
+      prepared%tilt(1:n) = vertical_tilt(prepared%gamma(1:n), prepared%gamma0)
+      prepared%psi_slope(1:n) = max(prepared%eps_b(1:n) - prepared%tilt(1:n), &
+         min_slope*prepared%eps_b(1:n))
+      prepared%touch(1:n) = (prepared%gap(1:n) + prepared%gap0*prepared%tilt(1:n))/ &
+         prepared%psi_slope(1:n)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
       associate (i0 => prepared%i_first)
@@ -293,7 +317,8 @@ contains
    end subroutine check_geometry
 
    !> The strips of the semi-Hertzian method for approach δ (physics.md §4.3 steps 3–8):
-   !> `n_strips` strips of equal width cover every table point where δ_i = δ − g(y)/ε_b(y) > 0
+   !> `n_strips` strips of equal width cover every table point where
+   !> δ_i = δ − (g(y) + (δ + g₀)c(y))/ε_b(y) > 0 (c the tilt term of the vertical approach)
    !> (strips over a point out of contact carry no load), on an interval that grows continuously
    !> with δ ([[outward_cover]]), so N(δ) is continuous.
    !> Below contact the patch is cleared (zero load) without error. The patch arrays must hold
@@ -381,7 +406,7 @@ contains
    end subroutine semihertz_load
 
    !> The interval of the strips for approach δ, cut into n strips: its start y_lo and the strip
-   !> width dy; `touching` is false below contact. ψ = ε_b(δ − g/ε_b) = δ ε_b − g is linear on
+   !> width dy; `touching` is false below contact. ψ = ε_b δ − g − (δ + g₀)c is linear on
    !> each cell: where touch increases outwards the interval ends at its exact crossings of the
    !> table model ([[end_fraction]]).
    pure subroutine contact_interval(prepared, approach, n, touching, y_lo, dy, error)
@@ -500,6 +525,70 @@ contains
       j_hi = lo
    end function last_reached
 
+   !> The tilt term of the vertical approach at every table point (module text):
+   !> c = tan γ₀ tan(γ − γ₀). A vertical translation t of the wheel moves its surface, where
+   !> its normal makes the angle γ with the vertical, by t cos γ/cos(γ − γ₀) along the contact
+   !> normal (angle γ₀); relative to t cos γ₀ at the reference point that is 1 − c. It vanishes
+   !> on a flat contact (γ₀ = 0) and where γ = γ₀, and is the same in the mirror image (γ → −γ).
+   elemental real(wp) function vertical_tilt(gamma, gamma0) result(tilt)
+      !> Contact angle γ (rad).
+      real(wp), intent(in) :: gamma
+      !> Contact angle γ₀ of the contact plane (rad).
+      real(wp), intent(in) :: gamma0
+      tilt = tan(gamma0)*tan(gamma - gamma0)
+   end function vertical_tilt
+
+   !> Refer a solved strip table to the geometric contact point of the loaded state (module
+   !> text): the minimum over the table of the undeformed distance g(y) + (δ + g₀)c(y),
+   !> refined by a parabola through its neighbours, as CONTACT defines the point where creepages
+   !> are given (../shared/reference README §2). The strips' y is then measured from there, and
+   !> γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the table's
+   !> origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out of
+   !> contact, a Hertz ellipse and a table without strip data keep the table's origin.
+   pure subroutine refer_to_loaded_point(prepared, patch)
+      !> Prepared geometry.
+      type(semihertz_geometry_type), intent(in) :: prepared
+      !> The solved strip table.
+      type(normal_patch_type), intent(inout) :: patch
+      integer :: j, jm, n, c
+      real(wp) :: approach, g_lo, g_mid, g_hi, curvature, offset, t
+
+      patch%gamma_plane = prepared%gamma0
+      patch%y_shift = 0.0_wp
+      if (patch%is_hertz .or. .not. prepared%has_strip_data .or. .not. (patch%load > 0.0_wp)) &
+         return
+      n = prepared%n_table
+      approach = patch%approach + prepared%gap0
+      jm = 1
+      g_mid = loaded_gap(1)
+      do j = 2, n
+         g_lo = loaded_gap(j)
+         if (g_lo < g_mid) then
+            g_mid = g_lo
+            jm = j
+         end if
+      end do
+      offset = 0.0_wp
+      if (jm > 1 .and. jm < n) then
+         g_lo = loaded_gap(jm - 1)
+         g_hi = loaded_gap(jm + 1)
+         curvature = g_lo - 2.0_wp*g_mid + g_hi
+         if (curvature > 0.0_wp) offset = max(-0.5_wp, min(0.5_wp, 0.5_wp*(g_lo - g_hi)/curvature))
+      end if
+      patch%y_shift = table_y(prepared, jm) + offset*prepared%h
+      call locate(prepared, patch%y_shift, c, t)
+      patch%gamma0 = lerp(prepared%gamma, c, t)
+      patch%r0 = lerp(prepared%r_wheel, c, t)
+      patch%y(1:patch%n_strips) = patch%y(1:patch%n_strips) - patch%y_shift
+      patch%delta_r(1:patch%n_strips) = patch%r_wheel(1:patch%n_strips) - patch%r0
+   contains
+      !> The undeformed distance of the loaded state at table point i, up to a constant (mm).
+      pure real(wp) function loaded_gap(i)
+         integer, intent(in) :: i
+         loaded_gap = prepared%gap(i) + approach*prepared%tilt(i)
+      end function loaded_gap
+   end subroutine refer_to_loaded_point
+
    !> The strip table of one Hertz ellipse centred at the reference point (`method = 'hertz'`):
    !> y_i over [−b, b], k_i = √(1 − y_i²/b²), a_i = k_i a, p₀,ᵢ = k_i p₀ and the global m, n;
    !> γ_i and r_w,i from the geometry tables (clamped at the ends). `patch%load` is the ellipse's
@@ -590,6 +679,8 @@ contains
       patch%dy = 0.0_wp
       patch%gamma0 = gamma0
       patch%r0 = r0
+      patch%gamma_plane = gamma0
+      patch%y_shift = 0.0_wp
    end subroutine clear_totals
 
    !> The strip arrays of a patch out of contact.
@@ -633,12 +724,12 @@ contains
          if (size(prepared%gap) >= n) return
          c = max(n, size(prepared%gap) + size(prepared%gap)/2)
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
-            prepared%eps_a, prepared%eps_b, prepared%touch, prepared%cover, prepared%m, &
-            prepared%n, prepared%p_factor)
+            prepared%eps_a, prepared%eps_b, prepared%tilt, prepared%psi_slope, prepared%touch, &
+            prepared%cover, prepared%m, prepared%n, prepared%p_factor)
       end if
       allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%r_wheel(c), &
-         prepared%eps_a(c), prepared%eps_b(c), prepared%touch(c), prepared%cover(c), &
-         prepared%m(c), prepared%n(c), prepared%p_factor(c))
+         prepared%eps_a(c), prepared%eps_b(c), prepared%tilt(c), prepared%psi_slope(c), &
+         prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c))
    end subroutine reserve_table
 
    !> "load too large for the patch geometry", with where the table ends.
@@ -655,12 +746,13 @@ contains
          stat_no_contact)
    end subroutine table_end_error
 
-   !> ψ_j = ε_b,j (δ − g_j/ε_b,j): its sign is exactly that of δ − touch_j.
+   !> ψ_j = (ε_b,j − c_j)(δ − touch_j) = ε_b,j δ − g_j − (δ + g₀)c_j = ε_b,j δ_j: its sign is
+   !> exactly that of δ − touch_j.
    pure real(wp) function psi_at(prepared, approach, j)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       integer, intent(in) :: j
-      psi_at = prepared%eps_b(j)*(approach - prepared%touch(j))
+      psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
    end function psi_at
 
    !> Fraction of a cell from the inside point (ψ_in > 0) to the zero of the linear ψ, in [0, 1].

@@ -1,0 +1,256 @@
+!> The approach is a vertical translation of the wheel (doc/geometry.md "Vertical approach";
+!> shcontact_normal_semihertz): the interpenetration δ − g(y) − (δ + g₀)c(y) with
+!> c = tan γ₀ tan(γ(y) − γ₀), and the strips referred to the geometric contact point of the
+!> loaded state. Checked on an analytic patch (closed form) and against CONTACT's undeformed
+!> distance h of module 1 at seven wheel positions (data/exact/*/h_module1_row.csv).
+module test_vertical_approach
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_core_material, only: material_type
+   use shcontact_profile_points, only: profile_type
+   use shcontact_geometry_track, only: track_type, wheelset_position_type
+   use shcontact_geometry_contact, only: contact_options_type, find_contact_patches
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_options, only: normal_options_type, reduction_local_hertz
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_semihertz, only: vertical_tilt
+   use test_semihertz, only: polynomial_patch
+   use test_validation, only: read_columns, manchester_profiles, profiles_dir
+   implicit none
+   private
+   public :: collect_vertical_approach
+
+   !> The project's CONTACT positions (data/exact/, README there).
+   character(len=*), parameter :: positions(7) = [character(len=7) :: 'yws-4p0', 'yws-2p0', &
+      'yws1p0', 'yws2p0', 'yws3p5', 'yws4p4', 'yws6p5']
+
+contains
+
+   !> Collect the tests.
+   subroutine collect_vertical_approach(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('tilted_hertz_contact_follows_loaded_gap', test_tilted_hertz), &
+         new_unittest('flat_contact_keeps_first_contact', test_flat), &
+         new_unittest('loaded_gap_is_contacts_h', test_contact_h) &
+         ]
+   end subroutine collect_vertical_approach
+
+   !> g = B y², constant A and B, and a contact angle turning across the patch as on a flange
+   !> root, γ = γ₀ + κ y (γ₀ = −0.5 rad, κ = 0.05 rad/mm). The loaded gap
+   !> B y² + δ tan γ₀ tan(κ y) is a parabola whose minimum y* solves 2B y + δ tan γ₀ κ/cos²(κ y)
+   !> = 0: the strips must be referred to y*, and the contact (where δ_i > 0) is symmetric about
+   !> it up to the tangent's cubic term. Without the vertical approach both stay at y = 0.
+   subroutine test_tilted_hertz(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: curv_a = 1.0_wp/920, curv_b = 0.005_wp, gamma0 = -0.5_wp, &
+         kappa = 0.05_wp
+      type(patch_geometry_type) :: geom
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(lib_error), allocatable :: err
+      real(wp) :: y_star, y_lo, y_hi, s
+      integer :: it
+
+      call polynomial_patch(geom, curv_a, curv_b, 12.0_wp, 0.01_wp, gamma0=gamma0)
+      geom%gamma = gamma0 + kappa*geom%y
+      call prepare_normal_contact(contact, geom, normal_options_type(reduction= &
+         reduction_local_hertz), material_type(), err)
+      if (.not. allocated(err)) call solve_load(contact, 64700.0_wp, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      s = patch%approach*tan(gamma0)*kappa
+      y_star = 0.0_wp
+      do it = 1, 20
+         y_star = y_star - (2*curv_b*y_star + s/cos(kappa*y_star)**2)/ &
+            (2*curv_b + 2*s*kappa*tan(kappa*y_star)/cos(kappa*y_star)**2)
+      end do
+      call check(error, abs(y_star) > 0.1_wp, message='the test patch should shift by > 0.1 mm')
+      if (allocated(error)) return
+      call check(error, patch%y_shift, y_star, thr=2.0e-4_wp, &
+         message='reference point at the minimum of the loaded gap')
+      if (allocated(error)) return
+      call check(error, patch%gamma0, gamma0 + kappa*y_star, thr=1.0e-5_wp, &
+         message='contact angle at the reference point')
+      if (allocated(error)) return
+      call check(error, patch%r0, geom%r0 + 4.0e-2_wp*y_star, thr=1.0e-5_wp, &
+         message='rolling radius at the reference point')
+      if (allocated(error)) return
+      call check(error, patch%gamma_plane, gamma0, message='contact plane of the first contact')
+      if (allocated(error)) return
+      y_lo = patch%y(1) - 0.5_wp*patch%dy
+      y_hi = patch%y(patch%n_strips) + 0.5_wp*patch%dy
+      ! Strips are measured from y*: the contact is symmetric about 0.
+      call check(error, 0.5_wp*(y_lo + y_hi), 0.0_wp, thr=0.01_wp, &
+         message='contact symmetric about the loaded geometric point')
+      if (allocated(error)) return
+      call check(error, maxval(abs(patch%delta_r(1:patch%n_strips) - 4.0e-2_wp*patch%y(1: &
+         patch%n_strips))), 0.0_wp, thr=1.0e-9_wp, message='delta_r from the reference point')
+   end subroutine test_tilted_hertz
+
+   !> A flat contact (γ₀ = 0): the tilt vanishes whatever γ(y) does, and the reference point
+   !> stays at the first contact, bit for bit.
+   subroutine test_flat(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type) :: geom
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(lib_error), allocatable :: err
+
+      call polynomial_patch(geom, 1.0_wp/920, 1.0_wp/600, 12.0_wp, 0.01_wp)
+      geom%gamma = 0.05_wp*geom%y
+      call check(error, maxval(abs(vertical_tilt(geom%gamma, 0.0_wp))), 0.0_wp, &
+         message='no tilt on a flat contact')
+      if (allocated(error)) return
+      call prepare_normal_contact(contact, geom, normal_options_type(), material_type(), err)
+      if (.not. allocated(err)) call solve_load(contact, 64700.0_wp, patch, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, patch%y_shift, 0.0_wp, message='reference point moved on a flat contact')
+   end subroutine test_flat
+
+   !> Our loaded gap g(y) + δ c(y) at CONTACT's approach δ against CONTACT's undeformed
+   !> distance h of module 1 along the row through its geometric point G (scripts/
+   !> contact_gap_rows.py), both from their minima: |Δ| ≤ 0.04 h + 2e-4 mm where h ≤ 0.05 mm (linear interpolation of the 0.2 mm grid costs
+   !> up to B·0.2²/4 ≈ 1e-4 mm). And the point itself: ours (first contact + y_shift along
+   !> the plane) within 0.01 mm of CONTACT's G on the rail profile, where at Y_WS = 6.5 mm the
+   !> first contact lies 0.25 mm away.
+   subroutine test_contact_h(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: wheel, rail
+      type(track_type) :: track
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: rows(:, :), info(:, :), tilt(:), loaded(:)
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr, d, ours, theirs, worst, g_rail, first
+      integer :: ip, k, best, im, j
+      logical :: there
+      character(len=:), allocatable :: dir
+
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) then
+         call skip_test(error, '../shared/profiles is absent')
+         return
+      end if
+      call manchester_profiles(wheel, rail, track, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do ip = 1, size(positions)
+         dir = 'data/exact/'//trim(positions(ip))//'/'
+         call summary_values(dir//'summary.csv', y_ws, y_geo, pen, ycp_r, delt, ycp_tr, error)
+         if (allocated(error)) return
+         call read_columns(dir//'h_module1_row.csv', [character(len=4) :: 'y_mm', 'h_mm'], &
+            rows, error)
+         if (allocated(error)) return
+         call find_contact_patches(wheel, rail, track, wheelset_position_type(y_ws=y_ws), &
+            contact_options_type(), geometry, err)
+         if (allocated(err)) then
+            call test_failed(error, trim(positions(ip))//': '//err%message); return
+         end if
+         best = 1
+         do k = 2, size(geometry)
+            if (abs(geometry(k)%y_track - ycp_tr) < abs(geometry(best)%y_track - ycp_tr)) best = k
+         end do
+         associate (g => geometry(best))
+            call prepare_normal_contact(contact, g, normal_options_type(), material_type(), err)
+            if (.not. allocated(err)) call solve_load(contact, 64700.0_wp, patch, err)
+            if (allocated(err)) then
+               call test_failed(error, trim(positions(ip))//': '//err%message); return
+            end if
+            tilt = vertical_tilt(g%gamma, g%gamma0)
+            loaded = g%gap + pen*tilt
+            im = minloc(loaded, dim=1)
+            worst = 0.0_wp
+            do j = -30, 30
+               d = 0.1_wp*j
+               theirs = interpolate(rows(:, 1), rows(:, 2), y_geo + d) - &
+                  interpolate(rows(:, 1), rows(:, 2), y_geo)
+               if (.not. (theirs <= 0.05_wp)) cycle
+               ours = interpolate(g%y, loaded, g%y(im) + d) - loaded(im)
+               worst = max(worst, abs(ours - theirs)/(0.04_wp*theirs + 2.0e-4_wp))
+            end do
+            call check(error, worst <= 1.0_wp, message=trim(positions(ip))// &
+               ': loaded gap differs from CONTACT''s h by more than 4 % + 0.2 um')
+            if (allocated(error)) return
+            ! Rail-profile y of CONTACT's G and of ours.
+            g_rail = ycp_r + y_geo*cos(delt)
+            first = g%y_rail
+            call check(error, g%y_rail + patch%y_shift*cos(g%gamma0), g_rail, thr=0.01_wp, &
+               message=trim(positions(ip))//': loaded geometric point on the rail profile')
+            if (allocated(error)) return
+            if (positions(ip) == 'yws6p5') then
+               call check(error, abs(first - g_rail) > 0.2_wp, message='yws6p5: the first '// &
+                  'contact should lie > 0.2 mm from CONTACT''s G (the case the tilt is for)')
+               if (allocated(error)) return
+            end if
+         end associate
+      end do
+   end subroutine test_contact_h
+
+   !> Y_WS, y_geo, the approach pen, the reference point on the rail profile ycp_r, the contact
+   !> angle delt and the reference point's track y ycp_tr of a summary.csv (key,value,...).
+   subroutine summary_values(path, y_ws, y_geo, pen, ycp_r, delt, ycp_tr, error)
+      character(len=*), intent(in) :: path
+      real(wp), intent(out) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr
+      type(error_type), allocatable, intent(out) :: error
+      character(len=512) :: line
+      character(len=64) :: key
+      real(wp) :: value
+      integer :: unit, stat, comma, found
+
+      found = 0
+      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
+      if (stat /= 0) then
+         call test_failed(error, path//': cannot open')
+         return
+      end if
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         comma = index(line, ',')
+         if (comma < 2) cycle
+         key = line(1:comma - 1)
+         line = line(comma + 1:)
+         comma = index(line, ',')
+         if (comma < 2) cycle
+         read (line(1:comma - 1), *, iostat=stat) value
+         if (stat /= 0) cycle
+         select case (trim(key))
+         case ('y_ws'); y_ws = value; found = found + 1
+         case ('y_geo'); y_geo = value; found = found + 1
+         case ('pen'); pen = value; found = found + 1
+         case ('ycp_r'); ycp_r = value; found = found + 1
+         case ('delt'); delt = value; found = found + 1
+         case ('ycp_tr'); ycp_tr = value; found = found + 1
+         end select
+      end do
+      close (unit)
+      if (found /= 6) call test_failed(error, path//': expected y_ws, y_geo, pen, ycp_r, delt '// &
+         'and ycp_tr')
+   end subroutine summary_values
+
+   !> Linear interpolation of (x, f) at t (x increasing; clamped at the ends).
+   pure real(wp) function interpolate(x, f, t) result(v)
+      real(wp), intent(in) :: x(:), f(:), t
+      integer :: i
+      if (t <= x(1)) then
+         v = f(1)
+         return
+      end if
+      do i = 2, size(x)
+         if (t <= x(i)) then
+            v = f(i - 1) + (f(i) - f(i - 1))*(t - x(i - 1))/(x(i) - x(i - 1))
+            return
+         end if
+      end do
+      v = f(size(x))
+   end function interpolate
+
+end module test_vertical_approach
