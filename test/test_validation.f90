@@ -135,7 +135,7 @@ contains
       if (allocated(error)) return
       ! Issue 13: Table 10's defaults row (doc/validation.md §6.4) within ±0.002 and the targets
       ! P80 |Δf_x|, P80 |Δf_y| ≤ 0.02, max |Δf| ≤ 0.05.
-      call check_row(ex, ey, [0.021_wp, 0.020_wp, 0.010_wp, 0.013_wp], 'ty0 defaults', error)
+      call check_row(ex, ey, [0.012_wp, 0.014_wp, 0.003_wp, 0.007_wp], 'ty0 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
          0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
@@ -231,9 +231,9 @@ contains
          end associate
       end do
       ! doc/validation.md Table 9, "all".
-      call check(error, maxval(ex), 0.047_wp, thr=0.002_wp, message='max |Delta f_x|')
+      call check(error, maxval(ex), 0.049_wp, thr=0.002_wp, message='max |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp), 0.020_wp, thr=0.002_wp, &
+      call check(error, percentile(ex, 0.8_wp), 0.022_wp, thr=0.002_wp, &
          message='P80 |Delta f_x|')
       if (allocated(error)) return
       call check(error, maxval(ey), 0.020_wp, thr=0.002_wp, message='max |Delta f_y|')
@@ -241,21 +241,21 @@ contains
       call check(error, percentile(ey, 0.8_wp), 0.011_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
       if (allocated(error)) return
-      call check(error, maxval(en), 0.056_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
+      call check(error, maxval(en), 0.039_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
       if (allocated(error)) return
-      call check(error, percentile(en, 0.8_wp), 0.049_wp, thr=0.005_wp, &
+      call check(error, percentile(en, 0.8_wp), 0.032_wp, thr=0.005_wp, &
          message='P80 |Delta F_n|/F_n')
    end subroutine test_kinematic
 
    !> Issue 13: the defaults (normal reduction `coupled`, correction `exact-ellipse`) on
-   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.011 / 0.050, P80 0.004 / 0.007), and the
-   !> targets P80 |Δf_x|, |Δf_y| ≤ 0.02 and max |Δf| ≤ 0.05 (0.0497: at the target's edge).
+   !> ty5p8_literal, Table 10's row within ±0.002 (max 0.013 / 0.024, P80 0.006 / 0.006), and the
+   !> targets P80 |Δf_x|, |Δf_y| ≤ 0.02 and max |Δf| ≤ 0.05.
    subroutine test_doe_ty5p8(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
       call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
       if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.011_wp, 0.050_wp, 0.004_wp, 0.007_wp], 'ty5p8 defaults', error)
+      call check_row(ex, ey, [0.013_wp, 0.024_wp, 0.006_wp, 0.006_wp], 'ty5p8 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
          0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
@@ -276,14 +276,14 @@ contains
    end subroutine test_doe_ty5p8_local_hertz
 
    !> Tangential `flexibility = 'carter'` on ty5p8_literal, Table 10's row within ±0.002 (max
-   !> 0.029 / 0.046, P80 0.019 / 0.012): worse than the defaults here, one reason it is not one.
+   !> 0.036 / 0.042, P80 0.024 / 0.015): worse than the defaults here, one reason it is not one.
    subroutine test_doe_ty5p8_carter(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
       call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
          flexibility=flexibility_carter)
       if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.029_wp, 0.046_wp, 0.019_wp, 0.012_wp], 'ty5p8 carter', error)
+      call check_row(ex, ey, [0.036_wp, 0.042_wp, 0.024_wp, 0.015_wp], 'ty5p8 carter', error)
    end subroutine test_doe_ty5p8_carter
 
    !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
@@ -298,13 +298,13 @@ contains
       real(wp), parameter :: y_ref(7) = [757.2227_wp, 755.8867_wp, 745.1116_wp, 741.7663_wp, &
          739.5012_wp, 738.1043_wp, 723.8171_wp]
       real(wp), parameter :: rows(4, 7) = reshape([ &
-         0.009_wp, 0.008_wp, 0.001_wp, 0.003_wp, &
-         0.008_wp, 0.009_wp, 0.001_wp, 0.004_wp, &
-         0.036_wp, 0.047_wp, 0.026_wp, 0.019_wp, &
-         0.010_wp, 0.022_wp, 0.007_wp, 0.007_wp, &
-         0.009_wp, 0.011_wp, 0.004_wp, 0.004_wp, &
-         0.011_wp, 0.010_wp, 0.002_wp, 0.003_wp, &
-         0.021_wp, 0.015_wp, 0.007_wp, 0.008_wp], [4, 7])
+         0.008_wp, 0.008_wp, 0.003_wp, 0.002_wp, &
+         0.008_wp, 0.009_wp, 0.003_wp, 0.002_wp, &
+         0.030_wp, 0.028_wp, 0.019_wp, 0.009_wp, &
+         0.017_wp, 0.015_wp, 0.011_wp, 0.010_wp, &
+         0.009_wp, 0.009_wp, 0.003_wp, 0.004_wp, &
+         0.009_wp, 0.009_wp, 0.003_wp, 0.005_wp, &
+         0.016_wp, 0.015_wp, 0.012_wp, 0.009_wp], [4, 7])
       real(wp), allocatable :: ex(:), ey(:)
       integer :: k
 
@@ -314,13 +314,12 @@ contains
          if (allocated(error) .or. .not. allocated(ex)) return
          call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
          if (allocated(error)) return
-         ! The targets where they are met (doc/validation.md §6.4): max |Δf| ≤ 0.05 everywhere;
-         ! P80 |Δf_x|, |Δf_y| ≤ 0.02 except at Y_WS = 1 mm (the 18 mm wide plateau patch), where
-         ! our pressure is off.
+         ! The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤
+         ! 0.05, P80 |Δf_x|, |Δf_y| ≤ 0.02.
          call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, &
             message=trim(names(k))//': max |Delta f| above the target 0.05')
          if (allocated(error)) return
-         if (names(k) /= 'yws1p0') call check(error, &
+         call check(error, &
             percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
             message=trim(names(k))//': P80 |Delta f_x| or |Delta f_y| above the target 0.02')
          if (allocated(error)) return
@@ -331,13 +330,13 @@ contains
    !> has one patch with a tread and a flange-side lobe, we have two patches. Under CONTACT's
    !> vertical load, the flange-side patch's share of the normal load is CONTACT's lobe share
    !> (31.3 %, 71.6 %) within 1.5 points with the patches coupled (the default), and Table 11's
-   !> shares are kept within ±0.2 points: 31.9 %, 70.1 % coupled; 35.0 %, 66.1 % with the strips
+   !> shares are kept within ±0.2 points: 30.2 %, 72.0 % coupled; 35.0 %, 66.1 % with the strips
    !> of each patch on their own (`local-hertz`), which miss CONTACT's by 3.7 and 5.5 points.
    subroutine test_lobes(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: y_ws(2) = [5.0_wp, 5.3_wp], f_z(2) = [65057.01997_wp, 65156.70991_wp]
       real(wp), parameter :: contact_share(2) = [0.312948_wp, 0.715826_wp]
-      real(wp), parameter :: table_share(2, 2) = reshape([0.319_wp, 0.701_wp, 0.350_wp, &
+      real(wp), parameter :: table_share(2, 2) = reshape([0.302_wp, 0.720_wp, 0.350_wp, &
          0.661_wp], [2, 2])
       type(contact_solver_type) :: solver
       type(normal_options_type) :: options
@@ -404,8 +403,8 @@ contains
       real(wp), parameter :: y_lobe(2, 2) = reshape([726.61_wp, 737.03_wp, 726.50_wp, &
          736.36_wp], [2, 2])
       real(wp), parameter :: rows(4, 2, 2) = reshape([ &
-         0.024_wp, 0.037_wp, 0.004_wp, 0.011_wp, 0.018_wp, 0.047_wp, 0.014_wp, 0.009_wp, &
-         0.016_wp, 0.073_wp, 0.005_wp, 0.018_wp, 0.024_wp, 0.028_wp, 0.004_wp, 0.010_wp], &
+         0.027_wp, 0.038_wp, 0.004_wp, 0.006_wp, 0.010_wp, 0.018_wp, 0.006_wp, 0.009_wp, &
+         0.020_wp, 0.026_wp, 0.010_wp, 0.021_wp, 0.024_wp, 0.030_wp, 0.005_wp, 0.014_wp], &
          [4, 2, 2])
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: patches(:)

@@ -12,7 +12,7 @@ module shcontact_math_lapack
    private
 
    public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense, &
-      solve_dense_leading
+      solve_dense_leading, solve_factored_leading
 
    !> Largest order [[solve_dense_leading]] eliminates itself (unblocked) instead of calling dgesv.
    integer, parameter :: small_order = 32
@@ -176,7 +176,9 @@ contains
             return
          end if
          if (p /= k) then
-            do j = k, n
+            ! Whole rows, the multipliers too (LAPACK's dgetrf layout, which
+            ! [[solve_factored_leading]] and dgetrs read).
+            do j = 1, n
                t = a(k, j)
                a(k, j) = a(p, j)
                a(p, j) = t
@@ -185,19 +187,68 @@ contains
             b(k) = b(p)
             b(p) = t
          end if
+         ! Column by column (contiguous in memory): the same operations on every element as
+         ! row by row.
+         f = a(k, k)
          do i = k + 1, n
-            f = a(i, k)/a(k, k)
-            a(i, k) = f
-            do j = k + 1, n
-               a(i, j) = a(i, j) - f*a(k, j)
+            a(i, k) = a(i, k)/f
+         end do
+         do j = k + 1, n
+            f = a(k, j)
+            do i = k + 1, n
+               a(i, j) = a(i, j) - a(i, k)*f
             end do
-            b(i) = b(i) - f*b(k)
+         end do
+         do i = k + 1, n
+            b(i) = b(i) - a(i, k)*b(k)
          end do
       end do
-      do i = n, 1, -1
-         b(i) = (b(i) - dot_product(a(i, i + 1:n), b(i + 1:n)))/a(i, i)
-      end do
+      call back_substitute(n, a, b)
    end subroutine solve_dense_leading
+
+   !> Solve U x = b in place with the upper triangle of the leading block of `a`, column by
+   !> column.
+   pure subroutine back_substitute(n, a, b)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: a(:, :)
+      real(wp), intent(inout) :: b(:)
+      integer :: i, j
+      do j = n, 1, -1
+         b(j) = b(j)/a(j, j)
+         do i = 1, j - 1
+            b(i) = b(i) - a(i, j)*b(j)
+         end do
+      end do
+   end subroutine back_substitute
+
+   !> Solve with the factors that [[solve_dense_leading]] left in `a` and `ipiv` (any order: the
+   !> unblocked elimination and dgesv store them alike): the row interchanges, then L and U.
+   pure subroutine solve_factored_leading(n, a, ipiv, b)
+      !> Order of the factorised system.
+      integer, intent(in) :: n
+      !> LU factors in the leading block.
+      real(wp), intent(in) :: a(:, :)
+      !> Pivot indices of the factorisation.
+      integer, intent(in) :: ipiv(:)
+      !> Right-hand side on entry, solution on return (first n entries).
+      real(wp), intent(inout) :: b(:)
+      real(wp) :: t
+      integer :: i, k
+
+      do k = 1, n
+         if (ipiv(k) /= k) then
+            t = b(k)
+            b(k) = b(ipiv(k))
+            b(ipiv(k)) = t
+         end if
+      end do
+      do k = 1, n - 1
+         do i = k + 1, n
+            b(i) = b(i) - a(i, k)*b(k)
+         end do
+      end do
+      call back_substitute(n, a, b)
+   end subroutine solve_factored_leading
 
    !> Turn a LAPACK info code into an error naming the routine.
    pure subroutine check_info(routine, info, before, after, error)

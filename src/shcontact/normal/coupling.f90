@@ -15,27 +15,42 @@
 !>   over strip i, and P_i ≥ 0 (strips with a negative solution leave the contact);
 !> * the total stays the local-Hertz solution's load, Σ (π/2) P_i a_i δy = N, which fixes δ' (so
 !>   every loading mode keeps its force balance and its load–approach relation);
-!> * the strip lengths a_i stay those of the local-Hertz solution: they agree with the exact
-!>   contact within about 0.2 mm on both shared patches, where the loads do not (doc/validation.md
-!>   §6.4). Fixed lengths make the problem linear with a unique solution; letting a_i follow P_i
-!>   (a_i ∝ P_i, 2-D Hertz) was tried and is unstable on the narrow flange-root patch (the strips
-!>   lengthen without bound).
+!> * the strip lengths follow the loads: a_i = c_i P_i with c_i = a_H,i/p₀H,i, the ratio of the
+!>   strip's local Hertz ellipse, which depends on its curvatures A_i, B_i alone (a_H and p₀H both
+!>   grow as √δ). Every local-Hertz strip satisfies this, and so does every slice y = const of a
+!>   Hertz ellipse, a(y)/p(0, y) = a/p₀: a strip that the coupling unloads also shortens, one it
+!>   loads lengthens, as it would in Hertz's solution. With fixed lengths a strip could lose
+!>   most of its load and keep its full length (its pressure then too flat in x), and load pushed
+!>   to the end of a long plateau (Y_WS = 1 mm) piled up on the last strips instead of spreading.
+!>   The lengths make the problem nonlinear; [[consistent_lengths]] solves it by a secant
+!>   iteration on ln a_i, with the kernel linear in ln a_i about the local-Hertz lengths and the
+!>   linear systems solved by chord steps on one factorisation. (A plain update a ← c P
+!>   alternates between two lengths on a narrow patch, where the displacement fixes the load per
+!>   unit width P a rather than P: that was why an earlier attempt "lengthened without bound".)
 !>
 !> On a Hertzian patch the Hertz pressure satisfies these conditions, so the coupling leaves it
 !> unchanged up to the discretisation. The gap of strip i comes from the strip table itself,
-!> g_i = ε_b,i δ (1 − k_i²) (§4.3 step 3). k_i = a_i/a_H,i is kept consistent (≤ 1).
+!> g_i = ε_b,i δ (1 − k_i²) (§4.3 step 3), and k_i = a_i/a_H,i follows the lengths.
 !>
 !> The conditions are imposed on at most [[max_groups]] groups of neighbouring strips (the load
 !> moves over distances of the patch width, which the groups resolve) and the strips take their
-!> group's coupled/local load ratio, interpolated between group centres. The kernel is the line
-!> integral across each group in closed form (complete elliptic integrals), so one coupling
-!> costs about 10 µs, comparable with the local-Hertz solve itself (doc/performance.md); it is
-!> the default reduction since issue 13 (doc/validation.md §6.4–6.5).
+!> group's coupled/local load ratio, interpolated between group centres (and their lengths its
+!> square root). The groups are a fixed partition of the patch's strips by index, narrower at
+!> the ends ([[group_strips]]), and their centre, length, interpenetration and contact angle are
+!> means weighted by the strip loads: the strips move continuously with the approach, and a
+!> strip entering or leaving the contact changes its group continuously, so the coupled loads
+!> are a continuous function of the wheel's position (a partition of the loaded strips by
+!> count shifted every group when one strip came or went, which the kinematic call's vertical
+!> balance saw as jumps of the carried load). A change Δ of the approach reaches group J as
+!> Δ cos γ_J w_J, w_J = 1 − c of the vertical approach (shcontact_normal_semihertz). The
+!> kernel is the line integral across each group in closed form (complete elliptic integrals),
+!> so one coupling costs about as much as the local-Hertz solve itself (doc/performance.md); it
+!> is the default reduction since issue 13 (doc/validation.md §6.4–6.5).
 module shcontact_normal_coupling
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type
-   use shcontact_math_lapack, only: solve_dense_leading
+   use shcontact_math_lapack, only: solve_dense_leading, solve_factored_leading
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_semihertz, only: vertical_tilt
    implicit none
@@ -51,6 +66,16 @@ module shcontact_normal_coupling
    !> Patches whose loaded extents lie at most this far apart along the profile (mm) press each
    !> other fully; beyond separate_distance not at all (CONTACT's D_COMB = 4 mm and D_SEP = 8 mm).
    real(wp), parameter :: combine_distance = 4.0_wp, separate_distance = 8.0_wp
+   !> Length updates of [[consistent_lengths]]: a fixed number, so that the result is a smooth
+   !> function of the strips (a stopping test would make it jump where the count changes: a
+   !> wheel in motion, the short and full tables of the kinematic call). Three steps give every
+   !> statistic of doc/validation.md Table 10 and Table 11 within 0.002 of the converged
+   !> iteration (with a stopping test at 0.1 % in the lengths).
+   integer, parameter :: length_iterations = 4
+   !> The sensitivity d ln P/d ln a assumed by the length steps: −1/2, halfway between a narrow
+   !> patch (−1) and a wide one (0), so that every step divides the error of ln a by at least 3
+   !> ([[consistent_lengths]]).
+   real(wp), parameter :: length_sensitivity = -0.5_wp
 
    !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
    !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
@@ -64,6 +89,10 @@ module shcontact_normal_coupling
       !> approach, shcontact_normal_semihertz's vertical_tilt).
       real(wp), dimension(max_total) :: width = 0.0_wp, yc = 0.0_wp, s = 0.0_wp, ac = 0.0_wp, &
          gc = 0.0_wp, local = 0.0_wp, ratio = 0.0_wp, wc = 1.0_wp
+      !> The group's local-Hertz length-to-peak ratio a/P (mm/MPa, [[consistent_lengths]]).
+      real(wp), dimension(max_total) :: length_per_peak = 0.0_wp
+      !> The groups in contact at the last solve (the next one starts from them).
+      logical :: in_contact(max_total) = .true.
       integer, dimension(max_patches) :: first_group = 1, last_group = 0
       !> Per set patch: local-Hertz load N_k (N), position of the reference point along the
       !> profile (mm), contact angle γ_k (rad) and cos γ_k.
@@ -73,6 +102,25 @@ module shcontact_normal_coupling
       !> Empty the set (the arrays are kept).
       procedure :: reset => reset_group_set
    end type group_set_type
+
+   !> The factorised linear system of the groups in contact ([[solve_groups]]): the peaks and
+   !> the shift Δ solve it, and [[chord_step]] reuses its LU factors as the lengths change.
+   type :: group_system_type
+      !> Number of groups in contact and their indices in the set.
+      integer :: mg
+      integer :: idx(max_total)
+      !> LU factors of the (mg + 1)-order system and their pivots.
+      real(wp) :: lu(max_total + 1, max_total + 1)
+      integer :: pivots(max_total + 1)
+      !> The solution: peaks P of the groups in contact (MPa), then Δ (mm).
+      real(wp) :: x(max_total + 1)
+      !> Kernel K₀ and its slope S of the groups in contact (compact), their gaps δ − g (mm)
+      !> and cos γ of their patches.
+      real(wp) :: kern(max_total, max_total), slope(max_total, max_total)
+      real(wp) :: gap(max_total), cos_contact(max_total)
+      !> How a vertical shift Δ of the wheel reaches each group: cos γ (1 − c) (vertical_tilt).
+      real(wp) :: shift_share(max_total)
+   end type group_system_type
 
    !> Hastings' coefficients of K(m) and E(m) in m₁ = 1 − m (Abramowitz & Stegun 17.3.34, 17.3.36).
    real(wp), parameter :: hastings_ka(0:4) = [1.38629436112_wp, 0.09666344259_wp, &
@@ -97,7 +145,7 @@ module shcontact_normal_coupling
 contains
 
    !> Redistribute the load of a local-Hertz strip table through the half-space coupling (module
-   !> text). The table keeps its strips, its total load and γ_i, δr_i, m_i, n_i, ε_a,i; k_i,
+   !> text). The table keeps its strips, its total load and γ_i, δr_i, m_i, n_i, ε_a,i; a_i, k_i,
    !> p₀,ᵢ, N_i, area and p_max change. The approach stays the local-Hertz one: the coupling
    !> redistributes a given load, and the load–approach relation of every loading mode (and so
    !> its continuity and its force balances) is that of the local-Hertz strips.
@@ -105,9 +153,9 @@ contains
    !> The coupled problem is solved on at most [[max_groups]] groups of neighbouring loaded
    !> strips (each group one strip of its summed width, mean length, mean gap): the coupling
    !> redistributes load over distances of the patch width, which the groups resolve, and the
-   !> cost stays a few microseconds. Each strip's load is then scaled by its group's coupled/local
-   !> ratio, interpolated linearly between group centres; strips whose ratio vanishes leave the
-   !> contact. With one strip per group this is the strip-wise coupled problem itself.
+   !> cost stays a few microseconds. Each strip's load and half-length are then scaled by its
+   !> group's coupled/local ratios, interpolated linearly between group centres; strips whose
+   !> load ratio vanishes leave the contact. With one strip per group this is the strip-wise coupled problem itself.
    pure subroutine couple_strips(patch, e_star, error)
       !> The strip table: local Hertz on entry, coupled on return.
       type(normal_patch_type), intent(inout) :: patch
@@ -134,7 +182,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       if (set%n < 1) return
-      call solve_groups(set, e_star, error)
+      call consistent_lengths(set, e_star, error)
       if (allocated(error)) return
       call scale_patch(set, 1, patch)
    end subroutine couple_single
@@ -263,7 +311,7 @@ contains
          call copy_patch_groups(single, all, p, 0.0_wp, all%gamma(p))
          shift(i) = 0.0_wp
          if (single%n < 1) cycle
-         call solve_groups(single, e_star, error, shift(i))
+         call consistent_lengths(single, e_star, error, shift(i))
          if (allocated(error)) return
          shift(i) = shift(i)*single%cos_gamma(1)
       end do
@@ -274,7 +322,7 @@ contains
          set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)*set%wc(g1:set%n)
       end do
       if (set%n < 1) return
-      call solve_groups(set, e_star, error)
+      call consistent_lengths(set, e_star, error)
       if (allocated(error)) return
       do i = 1, size(members)
          call scale_patch(set, i, patches(order(members(i))))
@@ -289,49 +337,57 @@ contains
       !> Position of the patch's reference point along the profile (mm) and its contact angle.
       real(wp), intent(in) :: offset, gamma
       integer :: first(max_groups), last(max_groups)
-      integer :: m, ng, i, j, c, g, n
+      integer :: ng, i, j, g, n
+      real(wp) :: load_i
 
       n = patch%n_strips
       call open_patch(set, sum(patch%strip_load(1:n)), offset, gamma)
       if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
-      m = count(patch%a(1:n) > 0.0_wp .and. patch%k(1:n) > 0.0_wp)
-      if (m < 1) return
-      ng = min(m, max_groups)
-      ! An odd number of loaded strips needs an odd number of groups for a mirror-symmetric
-      ! partition (a middle group).
-      if (mod(m, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
-      call group_strips(patch, ng, m, first, last)
+      ! A fixed partition of all the strips (module text): an odd number of strips needs an odd
+      ! number of groups for a mirror-symmetric partition (a middle group).
+      ng = min(n, max_groups)
+      if (mod(n, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
+      call group_strips(n, ng, first, last)
+      g = set%n
       do j = 1, ng
-         g = set%n + j
+         g = g + 1
          set%patch(g) = set%n_patches
-         set%width(g) = 0.0_wp
          set%yc(g) = 0.0_wp
          set%ac(g) = 0.0_wp
          set%gc(g) = 0.0_wp
          set%wc(g) = 0.0_wp
          set%local(g) = 0.0_wp
-         c = 0
+         ! Means weighted by the strip loads, so that a strip entering or leaving the contact
+         ! (its load goes to zero with it) changes the group continuously.
          do i = first(j), last(j)
             if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) cycle
-            c = c + 1
-            set%yc(g) = set%yc(g) + patch%y(i)
-            set%ac(g) = set%ac(g) + patch%a(i)
+            load_i = patch%strip_load(i)
+            set%yc(g) = set%yc(g) + load_i*patch%y(i)
+            set%ac(g) = set%ac(g) + load_i*patch%a(i)
             ! δ_i = k_i² δ = δ − g_i/ε_b,i (physics.md §4.3 step 3): the interpenetration
             ! δ − g_i of the strip, its gap below the patch's approach.
-            set%gc(g) = set%gc(g) + patch%approach - (1.0_wp - patch%eps_a(i))* &
-               patch%approach*(1.0_wp - patch%k(i)**2)
-            set%wc(g) = set%wc(g) + patch%gamma(i)
-            set%local(g) = set%local(g) + patch%strip_load(i)
+            set%gc(g) = set%gc(g) + load_i*(patch%approach - (1.0_wp - patch%eps_a(i))* &
+               patch%approach*(1.0_wp - patch%k(i)**2))
+            set%wc(g) = set%wc(g) + load_i*patch%gamma(i)
+            set%local(g) = set%local(g) + load_i
          end do
-         set%width(g) = real(c, wp)*patch%dy
-         set%yc(g) = set%yc(g)/real(c, wp)
-         set%ac(g) = set%ac(g)/real(c, wp)
-         set%gc(g) = set%gc(g)/real(c, wp)
+         if (.not. (set%local(g) > 0.0_wp)) then
+            ! A group without load (its strips all out of contact) is left out.
+            g = g - 1
+            cycle
+         end if
+         set%width(g) = real(last(j) - first(j) + 1, wp)*patch%dy
+         set%yc(g) = set%yc(g)/set%local(g)
+         set%ac(g) = set%ac(g)/set%local(g)
+         set%gc(g) = set%gc(g)/set%local(g)
          ! 1 − c at the group's mean contact angle (γ varies little across a group).
-         set%wc(g) = 1.0_wp - vertical_tilt(set%wc(g)/real(c, wp), patch%gamma_plane)
+         set%wc(g) = 1.0_wp - vertical_tilt(set%wc(g)/set%local(g), patch%gamma_plane)
          set%s(g) = offset + patch%y_shift + set%yc(g)
+         ! The local-Hertz strips have a_i = (a_H,i/p₀H,i) p₀,ᵢ: the group's own ratio.
+         set%length_per_peak(g) = 0.5_wp*pi*set%ac(g)**2*set%width(g)/set%local(g)
+         set%in_contact(g) = .true.
       end do
-      set%n = set%n + ng
+      set%n = g
       set%last_group(set%n_patches) = set%n
    end subroutine add_patch_groups
 
@@ -357,6 +413,8 @@ contains
          set%gc(h) = source%gc(g)
          set%wc(h) = source%wc(g)
          set%local(h) = source%local(g)
+         set%length_per_peak(h) = source%length_per_peak(g)
+         set%in_contact(h) = .true.
          set%s(h) = offset + set%yc(h)
          set%n = h
       end do
@@ -378,109 +436,225 @@ contains
       set%cos_gamma(set%n_patches) = cos(gamma)
    end subroutine open_patch
 
-   !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in
-   !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set: groups with
-   !> a negative peak leave); set%ratio = coupled over local-Hertz load of each group.
-   pure subroutine solve_groups(set, e_star, error, shift)
+   !> The coupled solution of a set with strip lengths that follow their loads (module text):
+   !> a local-Hertz strip has a_i = c_i p₀,ᵢ, with c_i = a_H,i/p₀H,i fixed by its curvatures
+   !> alone (both grow as √δ), and so does a slice y = const of a Hertz ellipse, a(y)/p(0, y) =
+   !> a/p₀. The coupling moves load between the strips; their lengths follow it.
+   !>
+   !> The fixed point a = c P(a) is found in ln a, group by group, by [[length_iterations]]
+   !> steps (ln(c P) − ln a)/(1 − s) with the assumed sensitivity s = d ln P/d ln a =
+   !> [[length_sensitivity]], halfway between −1 (a narrow patch, where the displacement fixes the
+   !> load per unit width P a, and a ← c P would alternate between two lengths) and 0 (a wide
+   !> one, where it fixes P). The kernel is taken linear in ln a about the local-Hertz lengths
+   !> ([[fill_kernel]]'s slope), and the peaks at new lengths come from chord steps on the first
+   !> factorisation ([[chord_step]]); the loads at the final lengths are then solved exactly. The
+   !> strips' lengths follow their loads in [[scale_patch]].
+   pure subroutine consistent_lengths(set, e_star, error, shift)
       type(group_set_type), intent(inout) :: set
       real(wp), intent(in) :: e_star
       type(error_type), allocatable, intent(out) :: error
       !> The vertical shift Δ of the solution (mm).
       real(wp), intent(out), optional :: shift
-      real(wp) :: kern(max_total, max_total), kmat(max_total + 1, max_total + 1), &
-         rhs(max_total + 1), peak(max_total), vertical, weight(max_patches, max_patches)
-      integer :: idx(max_total), pivots(max_total + 1)
-      logical :: in_contact(max_total), readmitted
-      real(wp) :: displacement
-      integer :: n, i, j, mg, pass
+      real(wp) :: kern(max_total, max_total), slope(max_total, max_total), &
+         weight(max_patches, max_patches)
+      real(wp), dimension(max_total) :: ac_fill, log_a_fill, stretch_log
+      type(group_system_type) :: system
+      real(wp) :: peak, log_a, log_peak, step
+      integer :: it, g, n
 
       n = set%n
       call patch_weights(set, weight)
-      call fill_kernel(set, e_star, weight, kern)
+      call fill_kernel(set, e_star, weight, kern, slope)
+      ac_fill(1:n) = set%ac(1:n)
+      log_a_fill(1:n) = log(ac_fill(1:n))
+      stretch_log(1:n) = 0.0_wp
+      call solve_groups(set, kern, slope, stretch_log, system, error)
+      if (allocated(error)) return
+      do it = 1, length_iterations
+         do g = 1, n
+            peak = set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g))
+            if (.not. (peak > 0.0_wp)) cycle
+            log_a = log_a_fill(g) + stretch_log(g)
+            log_peak = log(set%length_per_peak(g)*peak)
+            step = (log_peak - log_a)/(1.0_wp - length_sensitivity)
+            stretch_log(g) = stretch_log(g) + step
+            set%ac(g) = ac_fill(g)*exp(stretch_log(g))
+         end do
+         ! The peaks at the new lengths by one chord step on the first factorisation (a smooth
+         ! map of the strips: no decision is taken inside the iteration).
+         call chord_step(set, stretch_log, system)
+      end do
+      ! The loads at the final lengths, solved exactly with the set in contact checked again.
+      call solve_groups(set, kern, slope, stretch_log, system, error)
+      if (allocated(error)) return
+      if (present(shift)) shift = system%x(system%mg + 1)
+   end subroutine consistent_lengths
+
+   !> One chord step of the system at new lengths on the factors of the last [[solve_groups]]:
+   !> x ← x + LU⁻¹ (b − M x), with M at the lengths of set%ac (the kernel K₀ + S ln(a/a_fill)
+   !> of the groups in contact, kept compact in `system`). set%ratio follows the new peaks.
+   pure subroutine chord_step(set, stretch_log, system)
+      type(group_set_type), intent(inout) :: set
+      !> ln(a/a_fill) of every group.
+      real(wp), intent(in) :: stretch_log(:)
+      type(group_system_type), intent(inout) :: system
+      real(wp) :: r(max_total + 1), weighted(max_total), vertical
+      integer :: i, mg
+
+      mg = system%mg
+      if (mg < 1) return
       vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
-      in_contact(1:n) = .true.
-      peak(1:n) = 0.0_wp
-      ! Active set: groups whose peak comes out negative leave; a group left out whose surface
-      ! would then interpenetrate comes back.
+      do i = 1, mg
+         weighted(i) = stretch_log(system%idx(i))*system%x(i)
+      end do
+      r(1:mg) = system%gap(1:mg) + system%shift_share(1:mg)*system%x(mg + 1)
+      ! Column by column (no temporary array, contiguous access).
+      do i = 1, mg
+         r(1:mg) = r(1:mg) - system%kern(1:mg, i)*system%x(i) - system%slope(1:mg, i)*weighted(i)
+      end do
+      r(mg + 1) = vertical
+      do i = 1, mg
+         r(mg + 1) = r(mg + 1) - 0.5_wp*pi*set%ac(system%idx(i))*set%width(system%idx(i))* &
+            system%cos_contact(i)*system%x(i)
+      end do
+      call solve_factored_leading(mg + 1, system%lu, system%pivots, r)
+      system%x(1:mg + 1) = system%x(1:mg + 1) + r(1:mg + 1)
+      call set_ratios(set, system)
+   end subroutine chord_step
+
+   !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in
+   !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set, started
+   !> from the last solve's: groups with a negative peak leave, groups out of contact whose
+   !> surface would interpenetrate come back); set%ratio = coupled over local-Hertz load of each
+   !> group. The kernel is K₀ + S ln(a/a_fill); `system` keeps the factors and the compact K₀, S
+   !> of the groups in contact.
+   pure subroutine solve_groups(set, kern, slope, stretch_log, system, error)
+      type(group_set_type), intent(inout) :: set
+      !> The kernel at the lengths of the fill ([[fill_kernel]]), its slope in ln a, and
+      !> ln(a/a_fill) of every group.
+      real(wp), intent(in) :: kern(:, :), slope(:, :), stretch_log(:)
+      type(group_system_type), intent(inout) :: system
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: vertical
+      logical :: readmitted
+      integer :: n, i, j, mg, pass
+
+      n = set%n
+      vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
       do pass = 1, 2*n + 1
          mg = 0
          do j = 1, n
-            if (.not. in_contact(j)) cycle
+            if (.not. set%in_contact(j)) cycle
             mg = mg + 1
-            idx(mg) = j
+            system%idx(mg) = j
          end do
+         system%mg = mg
          if (mg < 1) exit
-         do i = 1, mg
-            do j = 1, mg
-               kmat(j, i) = kern(idx(j), idx(i))
-            end do
-            kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))* &
-               set%cos_gamma(set%patch(idx(i)))
-            kmat(i, mg + 1) = -set%cos_gamma(set%patch(idx(i)))*set%wc(idx(i))
-            rhs(i) = set%gc(idx(i))
-         end do
-         kmat(mg + 1, mg + 1) = 0.0_wp
-         rhs(mg + 1) = vertical
-         call solve_dense_leading(mg + 1, kmat, rhs, pivots, error)
-         if (allocated(error)) return
-         peak(1:n) = 0.0_wp
-         peak(idx(1:mg)) = rhs(1:mg)
-         if (present(shift)) shift = rhs(mg + 1)
-         if (any(peak(idx(1:mg)) < 0.0_wp)) then
-            where (peak(1:n) < 0.0_wp) in_contact(1:n) = .false.
-            cycle
-         end if
-         readmitted = .false.
-         do j = 1, n
-            if (in_contact(j)) cycle
-            displacement = -set%cos_gamma(set%patch(j))*set%wc(j)*rhs(mg + 1)
+         associate (idx => system%idx, kmat => system%lu, rhs => system%x)
             do i = 1, mg
-               displacement = displacement + kern(j, idx(i))*peak(idx(i))
+               do j = 1, mg
+                  system%kern(j, i) = kern(idx(j), idx(i))
+                  system%slope(j, i) = slope(idx(j), idx(i))
+                  kmat(j, i) = system%kern(j, i) + system%slope(j, i)*stretch_log(idx(i))
+               end do
+               system%gap(i) = set%gc(idx(i))
+               system%cos_contact(i) = set%cos_gamma(set%patch(idx(i)))
+               kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))* &
+                  system%cos_contact(i)
+               system%shift_share(i) = system%cos_contact(i)*set%wc(idx(i))
+               kmat(i, mg + 1) = -system%shift_share(i)
+               rhs(i) = system%gap(i)
             end do
-            if (displacement < set%gc(j) - 1.0e-9_wp*max(abs(set%gc(j)), 1.0e-6_wp)) then
-               in_contact(j) = .true.
-               readmitted = .true.
+            kmat(mg + 1, mg + 1) = 0.0_wp
+            rhs(mg + 1) = vertical
+            call solve_dense_leading(mg + 1, kmat, rhs, system%pivots, error)
+            if (allocated(error)) return
+            if (any(rhs(1:mg) < 0.0_wp)) then
+               do i = 1, mg
+                  if (rhs(i) < 0.0_wp) set%in_contact(idx(i)) = .false.
+               end do
+               cycle
             end if
-         end do
+         end associate
+         call readmit(set, kern, slope, stretch_log, system, readmitted)
          if (.not. readmitted) exit
       end do
-      do j = 1, n
-         set%ratio(j) = max(0.0_wp, 0.5_wp*pi*peak(j)*set%ac(j)*set%width(j))/set%local(j)
-      end do
+      call set_ratios(set, system)
    end subroutine solve_groups
+
+   !> Whether a group out of contact would interpenetrate under the system's solution; such
+   !> groups are marked in contact again.
+   pure subroutine readmit(set, kern, slope, stretch_log, system, readmits)
+      type(group_set_type), intent(inout) :: set
+      real(wp), intent(in) :: kern(:, :), slope(:, :), stretch_log(:)
+      type(group_system_type), intent(in) :: system
+      !> True when a group came back.
+      logical, intent(out) :: readmits
+      real(wp) :: displacement
+      integer :: i, j, k
+      readmits = .false.
+      do j = 1, set%n
+         if (set%in_contact(j)) cycle
+         displacement = -set%cos_gamma(set%patch(j))*set%wc(j)*system%x(system%mg + 1)
+         do i = 1, system%mg
+            k = system%idx(i)
+            displacement = displacement + (kern(j, k) + slope(j, k)*stretch_log(k))*system%x(i)
+         end do
+         if (displacement < set%gc(j) - 1.0e-9_wp*max(abs(set%gc(j)), 1.0e-6_wp)) then
+            set%in_contact(j) = .true.
+            readmits = .true.
+         end if
+      end do
+   end subroutine readmit
+
+   !> set%ratio from the peaks of the system: coupled over local-Hertz load of every group (0
+   !> out of contact).
+   pure subroutine set_ratios(set, system)
+      type(group_set_type), intent(inout) :: set
+      type(group_system_type), intent(in) :: system
+      integer :: i, j
+      set%ratio(1:set%n) = 0.0_wp
+      do i = 1, system%mg
+         j = system%idx(i)
+         set%ratio(j) = max(0.0_wp, 0.5_wp*pi*system%x(i)*set%ac(j)*set%width(j))/set%local(j)
+      end do
+   end subroutine set_ratios
 
    !> The influence matrix of a set, kern(j, i) = K_ji (module text): the displacement at group
    !> j per unit peak of group i. Between two patches p ∋ j and q ∋ i it is taken along p's
    !> normal, cos(γ_p − γ_q) times the in-plane kernel, times their weight ([[patch_weights]]).
    !> The groups of a patch are consecutive in the set: the matrix is filled block by block.
-   pure subroutine fill_kernel(set, e_star, weight, kern)
+   pure subroutine fill_kernel(set, e_star, weight, kern, slope)
       type(group_set_type), intent(in) :: set
       !> E* = G/(1 − ν) (MPa).
       real(wp), intent(in) :: e_star
       !> How much the set's patches press each other.
       real(wp), intent(in) :: weight(max_patches, max_patches)
       real(wp), intent(out) :: kern(max_total, max_total)
+      !> ∂K_ji/∂ln a_i, the kernel's change with the half-length of the loaded group.
+      real(wp), intent(out) :: slope(max_total, max_total)
       real(wp) :: c
       integer :: p, q, i, j
 
       do q = 1, set%n_patches
          do p = 1, set%n_patches
-            c = 1.0_wp
-            if (p /= q) c = cos(set%gamma(p) - set%gamma(q))
+            c = 1.0_wp/(pi*e_star)
+            if (p /= q) c = c*cos(set%gamma(p) - set%gamma(q))*weight(p, q)
             do i = set%first_group(q), set%last_group(q)
                do j = set%first_group(p), set%last_group(p)
-                  kern(j, i) = group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), &
-                     i == j)/(pi*e_star)
-                  if (p /= q) kern(j, i) = kern(j, i)*c*weight(p, q)
+                  call group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), i == j, &
+                     kern(j, i), slope(j, i))
+                  kern(j, i) = c*kern(j, i)
+                  slope(j, i) = c*slope(j, i)
                end do
             end do
          end do
       end do
    end subroutine fill_kernel
 
-   !> Scale the strips of the set's patch ip by their groups' ratios, interpolated between
-   !> group centres (constant beyond the outer ones); strips whose ratio vanishes leave the
-   !> contact. The patch's load becomes the sum of its coupled groups' loads.
+   !> Scale the strips of the set's patch ip by their groups' load ratios, interpolated between
+   !> group centres (constant beyond the outer ones), and their half-lengths by its square root;
+   !> strips whose ratio vanishes leave the contact. The patch's load becomes the sum of its coupled groups' loads.
    pure subroutine scale_patch(set, ip, patch)
       type(group_set_type), intent(in) :: set
       integer, intent(in) :: ip
@@ -512,7 +686,11 @@ contains
             r = (1.0_wp - t)*set%ratio(jg) + t*set%ratio(jg + 1)
          end if
          if (r > 0.0_wp) then
+            ! The strip's length follows its load as its own a = c P does: q = (π/2) P a ∝ a²,
+            ! so a/a_local = √(q/q_local) (module text); k_i = a_i/a_H,i with it.
             patch%strip_load(i) = r*patch%strip_load(i)
+            patch%a(i) = sqrt(r)*patch%a(i)
+            patch%k(i) = sqrt(r)*patch%k(i)
          else
             call leave_contact(patch, i)
          end if
@@ -578,39 +756,36 @@ contains
       set%n_patches = 0
    end subroutine reset_group_set
 
-   !> Split the loaded strips (a_i > 0, k_i > 0; m of them, in index order) into ng groups of
-   !> consecutive loaded strips, as equal in number as possible; first(j)…last(j) is the index
-   !> range of group j (unloaded strips inside it are skipped).
-   pure subroutine group_strips(patch, ng, m, first, last)
-      type(normal_patch_type), intent(in) :: patch
-      integer, intent(in) :: ng, m
+   !> The groups of a patch's n strips: a fixed partition by strip index, ng groups whose
+   !> widths grade from about 4 % of the strips at the ends to 8 % in the middle (half uniform,
+   !> half Chebyshev-spaced boundaries, t_j = j/(2ng) + (1 − cos(πj/ng))/4): the strips move
+   !> continuously with the approach and so do the groups, and the ends of the contact, where
+   !> the lengths change fastest, get narrower groups. Mirror-symmetric; every group holds at
+   !> least one strip.
+   pure subroutine group_strips(n, ng, first, last)
+      integer, intent(in) :: n, ng
       integer, intent(out) :: first(:), last(:)
-      integer :: i, c, j
+      integer :: j, b(0:max_groups)
 
-      c = 0
-      j = 1
-      do i = 1, patch%n_strips
-         if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) cycle
-         c = c + 1
-         if (c == 1) first(1) = i
-         if (c > group_end(j, ng, m)) then
-            j = j + 1
-            first(j) = i
+      b(0) = 0
+      b(ng) = n
+      do j = 1, ng - 1
+         if (2*j <= ng) then
+            b(j) = max(b(j - 1) + 1, nint(n*boundary(j)))
          end if
-         last(j) = i
+      end do
+      do j = ng - 1, 1, -1
+         if (2*j > ng) b(j) = min(b(j + 1) - 1, n - b(ng - j))
+      end do
+      do j = 1, ng
+         first(j) = b(j - 1) + 1
+         last(j) = b(j)
       end do
    contains
-      !> Number of loaded strips in groups 1…j: round(j m/ng), rounded towards the nearer end
-      !> so that the partition is the mirror image of itself (a symmetric patch gets symmetric
-      !> groups).
-      pure integer function group_end(j, ng, m)
-         integer, intent(in) :: j, ng, m
-         if (2*j <= ng) then
-            group_end = (2*j*m + ng)/(2*ng)
-         else
-            group_end = m - (2*(ng - j)*m + ng)/(2*ng)
-         end if
-      end function group_end
+      pure real(wp) function boundary(j)
+         integer, intent(in) :: j
+         boundary = 0.5_wp*real(j, wp)/ng + 0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng))
+      end function boundary
    end subroutine group_strips
 
    !> A strip without load.
@@ -631,42 +806,58 @@ contains
    !> midpoint rule beyond. Measured against the full integral: Simpson within 0.1–1.1 % at one
    !> width, the midpoint rule within 0.4–1.4 % at 2.5 widths and less farther out (the kernel
    !> falls like 1/η there); small beside the grouping itself.
-   pure real(wp) function group_influence(a, eta, w, self) result(s)
+   pure subroutine group_influence(a, eta, w, self, s, ds)
       !> Half-length a and width w of the loaded group (mm), lateral distance eta (mm).
       real(wp), intent(in) :: a, eta, w
       !> The group's influence on itself.
       logical, intent(in) :: self
-      real(wp) :: d, h
+      !> The influence (mm) and its derivative with respect to ln a (mm).
+      real(wp), intent(out) :: s, ds
+      real(wp) :: d, h, f(3), df(3)
       integer :: k
       d = abs(eta)
       if (self) then
          ! 2 ∫_0^{w/2} 2F(y/a) dy.
          h = 0.5_wp*w
          s = 0.0_wp
+         ds = 0.0_wp
          do k = 1, n_self
-            s = s + self_w(k)*self_t(k)*line_kernel(h*self_t(k)**2/a)
+            call line_kernel(h*self_t(k)**2/a, f(1), df(1))
+            s = s + self_w(k)*self_t(k)*f(1)
+            ds = ds + self_w(k)*self_t(k)*df(1)
          end do
          s = 8.0_wp*h*s
+         ds = 8.0_wp*h*ds
       else if (d < 2.5_wp*w) then
          ! Groups of two patches may overlap along the profile: the near edge stays apart.
-         s = (w/3.0_wp)*(line_kernel(max(d - 0.5_wp*w, 0.05_wp*w)/a) + &
-            4.0_wp*line_kernel(max(d, 0.1_wp*w)/a) + line_kernel((d + 0.5_wp*w)/a))
+         call line_kernel(max(d - 0.5_wp*w, 0.05_wp*w)/a, f(1), df(1))
+         call line_kernel(max(d, 0.1_wp*w)/a, f(2), df(2))
+         call line_kernel((d + 0.5_wp*w)/a, f(3), df(3))
+         s = (w/3.0_wp)*(f(1) + 4.0_wp*f(2) + f(3))
+         ds = (w/3.0_wp)*(df(1) + 4.0_wp*df(2) + df(3))
       else
-         s = 2.0_wp*w*line_kernel(d/a)
+         call line_kernel(d/a, f(1), df(1))
+         s = 2.0_wp*w*f(1)
+         ds = 2.0_wp*w*df(1)
       end if
-   end function group_influence
+   end subroutine group_influence
 
    !> F(u) = ∫₀¹ √(1 − t²)/√(t² + u²) dt = √(1 + u²)(K(m) − E(m)), m = 1/(1 + u²) (u ≥ 0):
    !> Hastings' approximations of K and E (Abramowitz & Stegun 17.3.34, 17.3.36, |error| ≤ 2e-8)
    !> for m > 0.1, the series of (K − E)/m in m below (relative error ≤ 2e-6 overall).
-   pure real(wp) function line_kernel(u) result(f)
+   pure subroutine line_kernel(u, f, df)
       real(wp), intent(in) :: u
+      !> F(u), and −u F'(u) = √m (E − (1 − m)(K − E)/m), the derivative of F(y/a) with respect
+      !> to ln a (d(K − E)/dm = E/(2(1 − m))).
+      real(wp), intent(out) :: f, df
       real(wp) :: m, m1, l, kk, ee, d
       m = 1.0_wp/(1.0_wp + u*u)
       m1 = u*u*m
       if (m <= 0.1_wp) then
          d = 0.25_wp*pi*(1.0_wp + m*(3.0_wp/8.0_wp + m*(15.0_wp/64.0_wp + m*(175.0_wp/1024.0_wp &
             + m*(2205.0_wp/16384.0_wp)))))
+         ee = 0.5_wp*pi*(1.0_wp - m*(0.25_wp + m*(3.0_wp/64.0_wp + m*(5.0_wp/256.0_wp + &
+            m*(175.0_wp/16384.0_wp)))))
       else
          l = -log(max(m1, tiny(1.0_wp)))
          kk = hastings_ka(0) + m1*(hastings_ka(1) + m1*(hastings_ka(2) + m1*(hastings_ka(3) + &
@@ -678,6 +869,7 @@ contains
          d = (kk - ee)/m
       end if
       f = d*sqrt(m)
-   end function line_kernel
+      df = sqrt(m)*(ee - m1*d)
+   end subroutine line_kernel
 
 end module shcontact_normal_coupling
