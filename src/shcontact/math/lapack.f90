@@ -146,9 +146,9 @@ contains
       !> Order of the system, 1 ≤ n ≤ min(size(a, 1), size(a, 2), size(b), size(ipiv)).
       integer, intent(in) :: n
       !> Matrix in its leading block; overwritten by its LU factors.
-      real(wp), intent(inout) :: a(:, :)
+      real(wp), intent(inout), contiguous :: a(:, :)
       !> Right-hand side on entry, solution on return (first n entries).
-      real(wp), intent(inout) :: b(:)
+      real(wp), intent(inout), contiguous :: b(:)
       !> Pivot indices (workspace of the caller, so that nothing is allocated here).
       integer, intent(out) :: ipiv(:)
       !> Set when the block is singular or does not fit.
@@ -210,8 +210,8 @@ contains
    !> column.
    pure subroutine back_substitute(n, a, b)
       integer, intent(in) :: n
-      real(wp), intent(in) :: a(:, :)
-      real(wp), intent(inout) :: b(:)
+      real(wp), intent(in), contiguous :: a(:, :)
+      real(wp), intent(inout), contiguous :: b(:)
       integer :: i, j
       do j = n, 1, -1
          b(j) = b(j)/a(j, j)
@@ -227,11 +227,11 @@ contains
       !> Order of the factorised system.
       integer, intent(in) :: n
       !> LU factors in the leading block.
-      real(wp), intent(in) :: a(:, :)
+      real(wp), intent(in), contiguous :: a(:, :)
       !> Pivot indices of the factorisation.
       integer, intent(in) :: ipiv(:)
       !> Right-hand side on entry, solution on return (first n entries).
-      real(wp), intent(inout) :: b(:)
+      real(wp), intent(inout), contiguous :: b(:)
       real(wp) :: t
       integer :: i, k
 
