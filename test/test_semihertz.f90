@@ -92,42 +92,16 @@ contains
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine prepare
 
-   !> The local-Hertz strips on g = B y² (no coupling): k_i = √(1 − y_i²/b²) within 0.005 on
-   !> every strip, the seed's requirement, exactly as physics.md §4.3's "Hertz check" states.
-   subroutine test_quadratic_local_hertz_k(error)
+   !> The seed's curvatures on g = B y² (A, B constant): the Hertz solution at the seed's load,
+   !> and the strips of `options` solved for that load.
+   subroutine seed_quadratic(options, contact, patch, hz, error)
+      type(normal_options_type), intent(in) :: options
+      type(normal_contact_type), intent(out) :: contact
+      type(normal_patch_type), intent(out) :: patch
+      type(hertz_type), intent(out) :: hz
       type(error_type), allocatable, intent(out) :: error
       type(lib_error), allocatable :: err
       type(patch_geometry_type) :: geom
-      type(normal_contact_type) :: contact
-      type(normal_patch_type) :: patch
-      type(hertz_type) :: hz
-      type(material_type) :: mat
-
-      call hertz_from_load(seed_a, seed_b, seed_load, mat, hz, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
-      call polynomial_patch(geom, seed_a, seed_b, 10.0_wp, 0.01_wp)
-      call prepare(contact, geom, normal_options_type(reduction=reduction_local_hertz), error)
-      if (allocated(error)) return
-      call solve_load(contact, seed_load, patch, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
-      call check(error, maxval(abs(patch%k - sqrt(1.0_wp - (patch%y/hz%b)**2))) < 5.0e-3_wp, &
-         message='local-Hertz k_i differs from sqrt(1 - y^2/b^2)')
-   end subroutine test_quadratic_local_hertz_k
-
-   !> On g = B y² with constant A, B the default strips reproduce Hertz (§4.3 "Hertz check"):
-   !> at N = 64.7 kN the approach, a, b and p₀ within 0.5 %; at the Hertz approach the load.
-   subroutine test_quadratic_default(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(lib_error), allocatable :: err
-      type(patch_geometry_type) :: geom
-      type(normal_options_type) :: options
-      type(normal_contact_type) :: contact
-      type(normal_patch_type) :: patch
-      type(hertz_type) :: hz
       type(material_type) :: mat
 
       call hertz_from_load(seed_a, seed_b, seed_load, mat, hz, err)
@@ -138,9 +112,35 @@ contains
       call prepare(contact, geom, options, error)
       if (allocated(error)) return
       call solve_load(contact, seed_load, patch, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
+      if (allocated(err)) call test_failed(error, err%message)
+   end subroutine seed_quadratic
+
+   !> The local-Hertz strips on g = B y² (no coupling): k_i = √(1 − y_i²/b²) within 0.005 on
+   !> every strip, the seed's requirement, exactly as physics.md §4.3's "Hertz check" states.
+   subroutine test_quadratic_local_hertz_k(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(hertz_type) :: hz
+
+      call seed_quadratic(normal_options_type(reduction=reduction_local_hertz), contact, patch, &
+         hz, error)
+      if (allocated(error)) return
+      call check(error, maxval(abs(patch%k - sqrt(1.0_wp - (patch%y/hz%b)**2))) < 5.0e-3_wp, &
+         message='local-Hertz k_i differs from sqrt(1 - y^2/b^2)')
+   end subroutine test_quadratic_local_hertz_k
+
+   !> On g = B y² with constant A, B the default strips reproduce Hertz (§4.3 "Hertz check"):
+   !> at N = 64.7 kN the approach, a, b and p₀ within 0.5 %; at the Hertz approach the load.
+   subroutine test_quadratic_default(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: patch
+      type(hertz_type) :: hz
+
+      call seed_quadratic(normal_options_type(), contact, patch, hz, error)
+      if (allocated(error)) return
       call check(error, patch%n_strips, 100)
       if (allocated(error)) return
       call check(error, patch%approach, hz%approach, thr=5.0e-3_wp, rel=.true., message='delta')
