@@ -183,9 +183,6 @@ contains
                a(k, j) = a(p, j)
                a(p, j) = t
             end do
-            t = b(k)
-            b(k) = b(p)
-            b(p) = t
          end if
          ! Column by column (contiguous in memory): the same operations on every element as
          ! row by row.
@@ -199,11 +196,8 @@ contains
                a(i, j) = a(i, j) - a(i, k)*f
             end do
          end do
-         do i = k + 1, n
-            b(i) = b(i) - a(i, k)*b(k)
-         end do
       end do
-      call back_substitute(n, a, b)
+      call solve_factored_leading(n, a, ipiv, b)
    end subroutine solve_dense_leading
 
    !> Solve U x = b in place with the upper triangle of the leading block of `a`, column by

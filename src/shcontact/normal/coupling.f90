@@ -385,7 +385,9 @@ contains
          set%gc(g) = set%gc(g)/set%local(g)
          ! 1 − c at the group's mean contact angle (γ varies little across a group).
          set%wc(g) = 1.0_wp - vertical_tilt(set%wc(g)/set%local(g), patch%gamma_plane)
-         set%s(g) = offset + patch%y_shift + set%yc(g)
+         ! The strips are still measured from the first contact: the coupling comes before
+         ! refer_to_loaded_point (shcontact_normal_loading).
+         set%s(g) = offset + set%yc(g)
          ! The local-Hertz strips have a_i = (a_H,i/p₀H,i) p₀,ᵢ: the group's own ratio.
          set%length_per_peak(g) = 0.5_wp*pi*set%ac(g)**2*set%width(g)/set%local(g)
          set%in_contact(g) = .true.

@@ -13,8 +13,8 @@
 !> normal by Δ(1 − c(y)), c = tan γ₀ tan(γ(y) − γ₀), not by Δ, so the interpenetration is
 !> δ − g(y) − (δ + g₀)c(y) (g₀ the gap at the reference point when several patches share one
 !> vertical approach). This is the undeformed distance of the loaded state, CONTACT's h of
-!> module 1; on a flange root (γ from −32° to −25° across the patch) it moves the contact by
-!> 0.3 mm and changes the gap by 25 %. The geometric contact point of the loaded state, the
+!> module 1 (test vertical_approach/loaded_gap_is_contacts_h); on a flange root it moves the
+!> contact point by more than 0.2 mm. The geometric contact point of the loaded state, the
 !> minimum of that distance, is where [[refer_to_loaded_point]] puts the strips' origin.
 module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
@@ -550,7 +550,7 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       !> The solved strip table.
       type(normal_patch_type), intent(inout) :: patch
-      integer :: j, jm, n, c
+      integer :: j, jm, n, c, j_lo, j_hi
       real(wp) :: approach, g_lo, g_mid, g_hi, curvature, offset, t
 
       patch%gamma_plane = prepared%gamma0
@@ -559,9 +559,16 @@ contains
          return
       n = prepared%n_table
       approach = patch%approach + prepared%gap0
-      jm = 1
-      g_mid = loaded_gap(1)
-      do j = 2, n
+      ! The minimum lies where the strips are: the loaded gap is 0 at the first contact, and
+      ! wherever it is ≤ 0 the strip penetration δ_i ≥ δ > 0. So only the table points under
+      ! the strips are searched (and one more on each side, for the parabola).
+      call locate(prepared, patch%y(1) - 0.5_wp*patch%dy, j_lo, t)
+      call locate(prepared, patch%y(patch%n_strips) + 0.5_wp*patch%dy, j_hi, t)
+      j_lo = max(1, j_lo - 1)
+      j_hi = min(n, j_hi + 2)
+      jm = j_lo
+      g_mid = loaded_gap(j_lo)
+      do j = j_lo + 1, j_hi
          g_lo = loaded_gap(j)
          if (g_lo < g_mid) then
             g_mid = g_lo
