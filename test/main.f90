@@ -17,6 +17,7 @@ program tester
    use test_layout, only: collect_layout
    use test_hertz, only: collect_hertz
    use test_semihertz, only: collect_semihertz
+   use test_strip_influence, only: collect_strip_influence
    use test_normal_loading, only: collect_normal_loading
    use test_normal_loading_patches, only: collect_normal_loading_patches
    use test_profile_reader, only: collect_profile_reader
@@ -55,6 +56,7 @@ program tester
       new_testsuite('lapack', collect_lapack), &
       new_testsuite('hertz', collect_hertz), &
       new_testsuite('semihertz', collect_semihertz), &
+      new_testsuite('strip_influence', collect_strip_influence), &
       new_testsuite('normal_loading', collect_normal_loading), &
       new_testsuite('normal_loading_patches', collect_normal_loading_patches), &
       new_testsuite('profile_reader', collect_profile_reader), &

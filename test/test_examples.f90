@@ -12,8 +12,9 @@
 !> examples/fpm_dependency (shcontact as a path dependency) built by fpm itself.
 !>
 !> The archive is the newest build/*/shcontact/libshcontact.a (the one `fpm test` just built),
-!> or $SHCONTACT_ARCHIVE; the modules those of the newest build/*/shcontact.mod, or
-!> $SHCONTACT_MODULES. Missing tools (bash, gfortran, gcc, pkg-config, python3, cmake, make,
+!> or $SHCONTACT_ARCHIVE; the modules those of the directory of the newest build/*/shcontact*.mod
+!> (gfortran leaves an unchanged .mod file alone, so shcontact.mod alone may point to another
+!> profile's older build), or $SHCONTACT_MODULES. Missing tools (bash, gfortran, gcc, pkg-config, python3, cmake, make,
 !> fpm) skip a test.
 module test_examples
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -621,7 +622,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: find_archive = 'a=${SHCONTACT_ARCHIVE:-$(ls -t '// &
          'build/*/shcontact/libshcontact.a 2>/dev/null | head -1)}; [ -n "$a" ] && '// &
-         'm=${SHCONTACT_MODULES:-$(dirname $(ls -t build/*/shcontact.mod | head -1))}; '
+         'm=${SHCONTACT_MODULES:-$(dirname $(ls -t build/*/shcontact*.mod | head -1))}; '
 
       if (install_state == 0) then
          install_state = 3

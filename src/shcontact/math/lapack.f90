@@ -186,10 +186,19 @@ contains
          end if
          ! Column by column (contiguous in memory): the same operations on every element as
          ! row by row.
-         f = a(k, k)
-         do i = k + 1, n
-            a(i, k) = a(i, k)/f
-         end do
+         ! One division per column, as LAPACK's dgetf2 scales by 1/pivot (and divides when
+         ! the pivot is so small that its reciprocal would overflow).
+         if (abs(a(k, k)) >= tiny(1.0_wp)) then
+            f = 1.0_wp/a(k, k)
+            do i = k + 1, n
+               a(i, k) = a(i, k)*f
+            end do
+         else
+            f = a(k, k)
+            do i = k + 1, n
+               a(i, k) = a(i, k)/f
+            end do
+         end if
          do j = k + 1, n
             f = a(k, j)
             do i = k + 1, n

@@ -43,17 +43,17 @@
 !> count shifted every group when one strip came or went, which the kinematic call's vertical
 !> balance saw as jumps of the carried load). A change Δ of the approach reaches group J as
 !> Δ cos γ_J w_J, w_J = 1 − c of the vertical approach (shcontact_normal_semihertz). The
-!> kernel is the line integral across each group in closed form (complete elliptic integrals),
-!> so one coupling costs about as much as the local-Hertz solve itself (doc/performance.md); it
+!> kernel is the line integral along each group in closed form (complete elliptic integrals),
+!> integrated across its width by quadrature (shcontact_normal_strip_influence), so one coupling costs about as much as the local-Hertz solve itself (doc/performance.md); it
 !> is the default reduction since issue 13 (doc/validation.md §6.4–6.5).
 module shcontact_normal_coupling
-   use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type
    use shcontact_math_lapack, only: solve_dense_leading, solve_factored_leading
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_semihertz, only: vertical_tilt
+   use shcontact_normal_strip_influence, only: influence_column
    implicit none
    private
 
@@ -122,28 +122,6 @@ module shcontact_normal_coupling
       !> How a vertical shift Δ of the wheel reaches each group: cos γ (1 − c) (vertical_tilt).
       real(wp) :: shift_share(max_total)
    end type group_system_type
-
-   !> Hastings' coefficients of K(m) and E(m) in m₁ = 1 − m (Abramowitz & Stegun 17.3.34, 17.3.36).
-   real(wp), parameter :: hastings_ka(0:4) = [1.38629436112_wp, 0.09666344259_wp, &
-      0.03590092383_wp, 0.03742563713_wp, 0.01451196212_wp]
-   real(wp), parameter :: hastings_kb(0:4) = [0.5_wp, 0.12498593597_wp, 0.06880248576_wp, &
-      0.03328355346_wp, 0.00441787012_wp]
-   real(wp), parameter :: hastings_ea(1:4) = [0.44325141463_wp, 0.06260601220_wp, &
-      0.04757383546_wp, 0.01736506451_wp]
-   real(wp), parameter :: hastings_eb(1:4) = [0.24998368310_wp, 0.09200180037_wp, &
-      0.04069697526_wp, 0.00526449639_wp]
-   !> Gauss–Legendre nodes and weights on (0, 1) for the self term (8 points; 6 points, with a
-   !> relative error of 1e-4 to 7e-4 on the self influence, moved the coupled strips on a Hertz
-   !> gap by more than 2 % at the ellipse's ends).
-   integer, parameter :: n_self = 8
-   real(wp), parameter :: self_t(n_self) = 0.5_wp*(1.0_wp + [-0.9602898564975363_wp, &
-      -0.7966664774136267_wp, -0.5255324099163290_wp, -0.1834346424956498_wp, &
-      0.1834346424956498_wp, 0.5255324099163290_wp, 0.7966664774136267_wp, &
-      0.9602898564975363_wp])
-   real(wp), parameter :: self_w(n_self) = 0.5_wp*[0.1012285362903763_wp, &
-      0.2223810344533745_wp, 0.3137066458778873_wp, 0.3626837833783620_wp, &
-      0.3626837833783620_wp, 0.3137066458778873_wp, 0.2223810344533745_wp, &
-      0.1012285362903763_wp]
 
 contains
 
@@ -640,19 +618,22 @@ contains
       !> ∂K_ji/∂ln a_i, the kernel's change with the half-length of the loaded group.
       real(wp), intent(out) :: slope(max_total, max_total)
       real(wp) :: c
-      integer :: p, q, i, j
+      integer :: p, q, i, fp, lp, self_index
 
       do q = 1, set%n_patches
          do p = 1, set%n_patches
             c = 1.0_wp/(pi*e_star)
             if (p /= q) c = c*cos(set%gamma(p) - set%gamma(q))*weight(p, q)
+            fp = set%first_group(p)
+            lp = set%last_group(p)
+            if (lp < fp) cycle
             do i = set%first_group(q), set%last_group(q)
-               do j = set%first_group(p), set%last_group(p)
-                  call group_influence(set%ac(i), set%s(j) - set%s(i), set%width(i), i == j, &
-                     kern(j, i), slope(j, i))
-                  kern(j, i) = c*kern(j, i)
-                  slope(j, i) = c*slope(j, i)
-               end do
+               self_index = 0
+               if (p == q) self_index = i - fp + 1
+               call influence_column(set%ac(i), set%width(i), set%s(i), set%s(fp:lp), &
+                  self_index, kern(fp:lp, i), slope(fp:lp, i))
+               kern(fp:lp, i) = c*kern(fp:lp, i)
+               slope(fp:lp, i) = c*slope(fp:lp, i)
             end do
          end do
       end do
@@ -803,107 +784,5 @@ contains
       patch%k(i) = 0.0_wp
       patch%strip_load(i) = 0.0_wp
    end subroutine leave_contact
-
-   !> Influence of a group strip of width w (mm) and half-length a (mm) at lateral distance eta
-   !> (mm), ∫∫ √(1 − x²/a²)/r over the strip (mm), from the line integral across the width,
-   !> ∫ √(1 − x²/a²)/√(x² + y²) dx = 2 F(|y|/a) ([[line_kernel]]): on the group itself
-   !> (`self`) Gauss–Legendre in s with |y| = (w/2) s² (which takes out F's logarithmic
-   !> singularity), Simpson's rule across the width for groups up to 2.5 widths away, the
-   !> midpoint rule beyond. Measured against the full integral: Simpson within 0.1–1.1 % at one
-   !> width, the midpoint rule within 0.4–1.4 % at 2.5 widths and less farther out (the kernel
-   !> falls like 1/η there); small beside the grouping itself.
-   pure subroutine group_influence(a, eta, w, self, s, ds)
-      !> Half-length a and width w of the loaded group (mm), lateral distance eta (mm).
-      real(wp), intent(in) :: a, eta, w
-      !> The group's influence on itself.
-      logical, intent(in) :: self
-      !> The influence (mm) and its derivative with respect to ln a (mm).
-      real(wp), intent(out) :: s, ds
-      real(wp) :: d, h, f(3), df(3), inv_a
-      integer :: k
-      d = abs(eta)
-      inv_a = 1.0_wp/a
-      if (self) then
-         ! 2 ∫_0^{w/2} 2F(y/a) dy.
-         h = 0.5_wp*w
-         s = 0.0_wp
-         ds = 0.0_wp
-         do k = 1, n_self
-            call line_kernel(h*self_t(k)**2*inv_a, f(1), df(1))
-            s = s + self_w(k)*self_t(k)*f(1)
-            ds = ds + self_w(k)*self_t(k)*df(1)
-         end do
-         s = 8.0_wp*h*s
-         ds = 8.0_wp*h*ds
-      else if (d < 2.5_wp*w) then
-         ! Groups of two patches may overlap along the profile: the near edge stays apart.
-         call line_kernel(max(d - 0.5_wp*w, 0.05_wp*w)*inv_a, f(1), df(1))
-         call line_kernel(max(d, 0.1_wp*w)*inv_a, f(2), df(2))
-         call line_kernel((d + 0.5_wp*w)*inv_a, f(3), df(3))
-         s = (w/3.0_wp)*(f(1) + 4.0_wp*f(2) + f(3))
-         ds = (w/3.0_wp)*(df(1) + 4.0_wp*df(2) + df(3))
-      else
-         call line_kernel(d*inv_a, f(1), df(1))
-         s = 2.0_wp*w*f(1)
-         ds = 2.0_wp*w*df(1)
-      end if
-   end subroutine group_influence
-
-   !> F(u) = ∫₀¹ √(1 − t²)/√(t² + u²) dt = √(1 + u²)(K(m) − E(m)), m = 1/(1 + u²) (u ≥ 0):
-   !> Hastings' approximations of K and E (Abramowitz & Stegun 17.3.34, 17.3.36, |error| ≤ 2e-8)
-   !> for m > 0.1, the series of (K − E)/m in m below (relative error ≤ 2e-6 overall).
-   pure subroutine line_kernel(u, f, df)
-      real(wp), intent(in) :: u
-      !> F(u), and −u F'(u) = √m (E − (1 − m)(K − E)/m), the derivative of F(y/a) with respect
-      !> to ln a (d(K − E)/dm = E/(2(1 − m))).
-      real(wp), intent(out) :: f, df
-      real(wp) :: m, m1, l, kk, ee, d, q, root_m
-      ! One square root and one division: √m = 1/√(1 + u²), and /m is ·(1 + u²).
-      q = 1.0_wp + u*u
-      root_m = 1.0_wp/sqrt(q)
-      m = root_m*root_m
-      m1 = u*u*m
-      if (m <= 0.1_wp) then
-         d = 0.25_wp*pi*(1.0_wp + m*(3.0_wp/8.0_wp + m*(15.0_wp/64.0_wp + m*(175.0_wp/1024.0_wp &
-            + m*(2205.0_wp/16384.0_wp)))))
-         ee = 0.5_wp*pi*(1.0_wp - m*(0.25_wp + m*(3.0_wp/64.0_wp + m*(5.0_wp/256.0_wp + &
-            m*(175.0_wp/16384.0_wp)))))
-      else
-         l = -log_unit(max(m1, tiny(1.0_wp)))
-         kk = hastings_ka(0) + m1*(hastings_ka(1) + m1*(hastings_ka(2) + m1*(hastings_ka(3) + &
-            m1*hastings_ka(4)))) + l*(hastings_kb(0) + m1*(hastings_kb(1) + m1*(hastings_kb(2) &
-            + m1*(hastings_kb(3) + m1*hastings_kb(4)))))
-         ee = 1.0_wp + m1*(hastings_ea(1) + m1*(hastings_ea(2) + m1*(hastings_ea(3) + &
-            m1*hastings_ea(4)))) + l*m1*(hastings_eb(1) + m1*(hastings_eb(2) + &
-            m1*(hastings_eb(3) + m1*hastings_eb(4))))
-         d = (kk - ee)*q
-      end if
-      f = d*root_m
-      df = root_m*(ee - m1*d)
-   end subroutine line_kernel
-
-   !> ln x for 0 < x ≤ 1 (normal numbers), within 2e-11 relative to ln 2 (the kernel needs
-   !> 1e-6; libm's log was a sixth of a coupling's instructions): x = f 2^e read from its bits,
-   !> f in [1/√2, √2), ln f = 2 atanh s, s = (f − 1)/(f + 1), |s| ≤ 0.172, by its series to s¹¹.
-   elemental real(wp) function log_unit(x) result(v)
-      real(wp), intent(in) :: x
-      real(wp), parameter :: ln2 = 0.6931471805599453_wp, root_two = 1.4142135623730951_wp
-      integer(int64), parameter :: mantissa = int(z'000FFFFFFFFFFFFF', int64), &
-         one_exponent = int(z'3FF0000000000000', int64)
-      integer(int64) :: bits
-      real(wp) :: f, s, s2
-      integer :: e
-      bits = transfer(x, bits)
-      e = int(shiftr(bits, 52)) - 1023
-      f = transfer(ior(iand(bits, mantissa), one_exponent), f)
-      if (f >= root_two) then
-         f = 0.5_wp*f
-         e = e + 1
-      end if
-      s = (f - 1.0_wp)/(f + 1.0_wp)
-      s2 = s*s
-      v = e*ln2 + 2.0_wp*s*(1.0_wp + s2*(1.0_wp/3 + s2*(1.0_wp/5 + s2*(1.0_wp/7 + s2*(1.0_wp/9 + &
-         s2/11)))))
-   end function log_unit
 
 end module shcontact_normal_coupling
