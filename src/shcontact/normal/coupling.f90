@@ -77,6 +77,9 @@ module shcontact_normal_coupling
    !> patch (−1) and a wide one (0), so that every step divides the error of ln a by at least 3
    !> ([[consistent_lengths]]).
    real(wp), parameter :: length_sensitivity = -0.5_wp
+   !> Most groups that one factorisation holds out of contact by the capacitance method
+   !> ([[hold_negative_groups]]); beyond them the system is factorised again without them.
+   integer, parameter :: max_held = 8
 
    !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
    !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
@@ -121,6 +124,14 @@ module shcontact_normal_coupling
       real(wp) :: gap(max_total), cos_contact(max_total)
       !> How a vertical shift Δ of the wheel reaches each group: cos γ (1 − c) (vertical_tilt).
       real(wp) :: shift_share(max_total)
+      !> Groups of the factorised system held out of contact without a new factorisation
+      !> ([[hold_negative_groups]]): their number, their positions in idx, the columns A⁻¹e_h of
+      !> the factorised matrix A, and the LU factors of the capacitance matrix C = (A⁻¹)_HH.
+      integer :: n_held = 0
+      integer :: held(max_held)
+      real(wp) :: inverse_columns(max_total + 1, max_held)
+      real(wp) :: capacitance(max_held, max_held)
+      integer :: capacitance_pivots(max_held)
    end type group_system_type
 
 contains
@@ -501,7 +512,7 @@ contains
          r(mg + 1) = r(mg + 1) - 0.5_wp*pi*set%ac(system%idx(i))*set%width(system%idx(i))* &
             system%cos_contact(i)*system%x(i)
       end do
-      call solve_factored_leading(mg + 1, system%lu, system%pivots, r)
+      call constrained_solve(system, r)
       system%x(1:mg + 1) = system%x(1:mg + 1) + r(1:mg + 1)
       call set_ratios(set, system)
    end subroutine chord_step
@@ -520,7 +531,7 @@ contains
       type(group_system_type), intent(inout) :: system
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: vertical
-      logical :: readmitted
+      logical :: readmitted, held_all
       integer :: n, i, j, mg, pass
 
       n = set%n
@@ -553,7 +564,9 @@ contains
             rhs(mg + 1) = vertical
             call solve_dense_leading(mg + 1, kmat, rhs, system%pivots, error)
             if (allocated(error)) return
-            if (any(rhs(1:mg) < 0.0_wp)) then
+            call hold_negative_groups(system, held_all, error)
+            if (allocated(error)) return
+            if (.not. held_all) then
                do i = 1, mg
                   if (rhs(i) < 0.0_wp) set%in_contact(idx(i)) = .false.
                end do
@@ -563,31 +576,131 @@ contains
          call readmit(set, kern, slope, stretch_log, system, readmitted)
          if (.not. readmitted) exit
       end do
+      ! The next solve starts without the held groups; this one keeps them in its factors.
+      do i = 1, system%n_held
+         set%in_contact(system%idx(system%held(i))) = .false.
+      end do
       call set_ratios(set, system)
    end subroutine solve_groups
 
-   !> Whether a group out of contact would interpenetrate under the system's solution; such
-   !> groups are marked in contact again.
+   !> Groups with a negative peak held out of contact on the factors of the system with them
+   !> (the capacitance method: with H the held groups and A the factorised matrix, the solution
+   !> of the system without them is x = z − A⁻¹E_H C⁻¹ z_H, z = A⁻¹b, C = (A⁻¹)_HH, their
+   !> equations relaxed and x_H = 0), repeated while the solution has negative peaks: a
+   !> factorisation for every change of the contact set cost most of a coupled solve. `held_all`
+   !> is false when more than [[max_held]] groups, or every group, would be held (the caller
+   !> then factorises the smaller system). On entry system%x is z.
+   pure subroutine hold_negative_groups(system, held_all, error)
+      type(group_system_type), intent(inout) :: system
+      logical, intent(out) :: held_all
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: z(max_total + 1), w(max_held)
+      integer :: i, k, l, mg, nh
+
+      mg = system%mg
+      system%n_held = 0
+      held_all = .true.
+      z(1:mg + 1) = system%x(1:mg + 1)
+      do
+         nh = system%n_held
+         do i = 1, mg
+            ! Held groups have x = 0 exactly.
+            if (.not. (system%x(i) < 0.0_wp)) cycle
+            if (nh == max_held .or. nh + 1 >= mg) then
+               held_all = .false.
+               system%n_held = 0
+               system%x(1:mg + 1) = z(1:mg + 1)
+               return
+            end if
+            nh = nh + 1
+            system%held(nh) = i
+            system%inverse_columns(1:mg + 1, nh) = 0.0_wp
+            system%inverse_columns(i, nh) = 1.0_wp
+            call solve_factored_leading(mg + 1, system%lu, system%pivots, &
+               system%inverse_columns(:, nh))
+         end do
+         if (nh == system%n_held) return
+         system%n_held = nh
+         do l = 1, nh
+            do k = 1, nh
+               system%capacitance(k, l) = system%inverse_columns(system%held(k), l)
+            end do
+            w(l) = z(system%held(l))
+         end do
+         call solve_dense_leading(nh, system%capacitance, w, system%capacitance_pivots, error)
+         if (allocated(error)) return
+         system%x(1:mg + 1) = z(1:mg + 1)
+         call subtract_held(mg, system%held(1:nh), system%inverse_columns, w(1:nh), system%x)
+      end do
+   end subroutine hold_negative_groups
+
+   !> Solve with the system's factors and its held groups ([[hold_negative_groups]]): v ← the
+   !> solution of the system without them for the right-hand side v (their entries of v are
+   !> free: their equations are relaxed).
+   pure subroutine constrained_solve(system, v)
+      type(group_system_type), intent(in) :: system
+      real(wp), intent(inout), contiguous :: v(:)
+      real(wp) :: w(max_held)
+      integer :: k, nh
+      call solve_factored_leading(system%mg + 1, system%lu, system%pivots, v)
+      nh = system%n_held
+      if (nh < 1) return
+      do k = 1, nh
+         w(k) = v(system%held(k))
+      end do
+      call solve_factored_leading(nh, system%capacitance, system%capacitance_pivots, w)
+      call subtract_held(system%mg, system%held(1:nh), system%inverse_columns, w(1:nh), v)
+   end subroutine constrained_solve
+
+   !> v ← v − A⁻¹E_H w over the first mg + 1 entries, with the held entries set to 0 exactly.
+   pure subroutine subtract_held(mg, held, inverse_columns, w, v)
+      integer, intent(in) :: mg
+      !> Positions of the held groups in the system.
+      integer, intent(in) :: held(:)
+      !> A⁻¹e_h of every held group, and the weights w.
+      real(wp), intent(in) :: inverse_columns(:, :), w(:)
+      real(wp), intent(inout) :: v(:)
+      integer :: k
+      do k = 1, size(held)
+         v(1:mg + 1) = v(1:mg + 1) - inverse_columns(1:mg + 1, k)*w(k)
+      end do
+      do k = 1, size(held)
+         v(held(k)) = 0.0_wp
+      end do
+   end subroutine subtract_held
+
+   !> Whether a group out of contact, or held out of it ([[hold_negative_groups]]), would
+   !> interpenetrate under the system's solution. If one would, the groups out of contact that
+   !> would are marked in contact again, and the held groups that would not are marked out of
+   !> it (the caller factorises again).
    pure subroutine readmit(set, kern, slope, stretch_log, system, readmits)
       type(group_set_type), intent(inout) :: set
       real(wp), intent(in) :: kern(:, :), slope(:, :), stretch_log(:)
       type(group_system_type), intent(in) :: system
       !> True when a group came back.
       logical, intent(out) :: readmits
+      logical :: candidate(max_total), comes_back(max_total)
       real(wp) :: displacement
       integer :: i, j, k
-      readmits = .false.
+
+      candidate(1:set%n) = .not. set%in_contact(1:set%n)
+      do k = 1, system%n_held
+         candidate(system%idx(system%held(k))) = .true.
+      end do
+      comes_back(1:set%n) = .false.
       do j = 1, set%n
-         if (set%in_contact(j)) cycle
+         if (.not. candidate(j)) cycle
          displacement = -set%cos_gamma(set%patch(j))*set%wc(j)*system%x(system%mg + 1)
          do i = 1, system%mg
             k = system%idx(i)
             displacement = displacement + (kern(j, k) + slope(j, k)*stretch_log(k))*system%x(i)
          end do
-         if (displacement < set%gc(j) - 1.0e-9_wp*max(abs(set%gc(j)), 1.0e-6_wp)) then
-            set%in_contact(j) = .true.
-            readmits = .true.
-         end if
+         comes_back(j) = displacement < set%gc(j) - 1.0e-9_wp*max(abs(set%gc(j)), 1.0e-6_wp)
+      end do
+      readmits = any(comes_back(1:set%n))
+      if (.not. readmits) return
+      do j = 1, set%n
+         if (candidate(j)) set%in_contact(j) = comes_back(j)
       end do
    end subroutine readmit
 
