@@ -204,9 +204,11 @@ contains
          if (allocated(error)) return
          do k = 1, size(geometry)
             if (.not. (patches(k)%load > 0.0_wp)) cycle
-            ! Tangent-plane offset of the load centre, projected on the rail profile's y.
-            y_centre = geometry(k)%y_rail + cos(geometry(k)%gamma0)* &
-               sum(patches(k)%strip_load*patches(k)%y)/sum(patches(k)%strip_load)
+            ! Tangent-plane offset of the load centre from the loaded point, and the loaded
+            ! point's from the first contact, projected on the rail profile's y.
+            y_centre = geometry(k)%y_rail + patches(k)%lateral_offset() + &
+               cos(geometry(k)%gamma0)*sum(patches(k)%strip_load*patches(k)%y)/ &
+               sum(patches(k)%strip_load)
             call out%row([manchester_y_ws(iw), real(k, wp), patches(k)%load, &
                patches(k)%approach, patches(k)%p_max, geometry(k)%gamma0, y_centre, &
                geometry(k)%y_rail, manchester_approach(iw), manchester_p_max(iw), &

@@ -588,7 +588,7 @@ contains
       type(contact_solver_type), intent(in) :: self
       integer, intent(in) :: k
       axle = self%patches%patch(k)%y_wheel + axle_offset(self%track) + &
-         self%normal(k)%y_shift*cos(self%normal(k)%gamma_plane)
+         self%normal(k)%lateral_offset()
    end function reference_axle
 
    !> The tangential problem of loaded patch k for its creepages.
@@ -836,8 +836,8 @@ contains
                p%r0 = n%r0
                ! Along the contact plane towards the wheel's field side (y_track is in the
                ! track frame: towards −y on the left wheel).
-               p%y_track = p%y_track + self%side*n%y_shift*cos(n%gamma_plane)
-               p%z_track = p%z_track + n%y_shift*sin(n%gamma_plane)
+               p%y_track = p%y_track + self%side*n%lateral_offset()
+               p%z_track = p%z_track + n%vertical_offset()
                p%x_track = contact_lead(reference_axle(self, k), n%r0, n%gamma0, self%yaw)
             end if
             p%approach = n%approach

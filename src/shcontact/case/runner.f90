@@ -469,8 +469,7 @@ contains
       ! loaded state (doc/geometry.md "Vertical approach").
       s%gamma0 = stage%normal(m)%gamma0
       s%r0 = stage%normal(m)%r0
-      s%y_track = stage%geometry(m)%y_track + &
-         stage%normal(m)%y_shift*cos(stage%normal(m)%gamma_plane)
+      s%y_track = stage%geometry(m)%y_track + stage%normal(m)%lateral_offset()
    end subroutine summarise
 
 end module shcontact_case_runner

@@ -127,7 +127,9 @@ module shcontact_normal_coupling
       !> Groups of the factorised system held out of contact without a new factorisation
       !> ([[hold_negative_groups]]): their number, their positions in idx, the columns A⁻¹e_h of
       !> the factorised matrix A, and the LU factors of the capacitance matrix C = (A⁻¹)_HH.
-      integer :: n_held = 0
+      !> (No default values in this type: a default would make every local system be
+      !> initialised as a whole, some 100 kB, on every solve.)
+      integer :: n_held
       integer :: held(max_held)
       real(wp) :: inverse_columns(max_total + 1, max_held)
       real(wp) :: capacitance(max_held, max_held)
@@ -535,6 +537,7 @@ contains
       integer :: n, i, j, mg, pass
 
       n = set%n
+      system%n_held = 0
       vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
       do pass = 1, 2*n + 1
          mg = 0

@@ -55,6 +55,11 @@ module shcontact_normal_patch
       real(wp), allocatable :: delta_r(:)
       !> Local wheel rolling radius r_w,i (mm).
       real(wp), allocatable :: r_wheel(:)
+   contains
+      !> How far the reference point lies from the first contact across the track (mm).
+      procedure :: lateral_offset
+      !> How far it lies from the first contact vertically (mm).
+      procedure :: vertical_offset
    end type normal_patch_type
 
 contains
@@ -106,5 +111,19 @@ contains
       patch%area = 2.0_wp*sum(patch%a)*patch%dy
       patch%p_max = maxval(patch%p0)
    end subroutine ellipse_strip_patch
+
+   !> The reference point's move from the geometry table's origin (the first contact) across
+   !> the track (mm): y_shift along the contact plane, y_shift cos γ_plane (positive towards the
+   !> field side of the wheel).
+   pure real(wp) function lateral_offset(self) result(offset)
+      class(normal_patch_type), intent(in) :: self
+      offset = self%y_shift*cos(self%gamma_plane)
+   end function lateral_offset
+
+   !> The reference point's move from the first contact vertically (mm): y_shift sin γ_plane.
+   pure real(wp) function vertical_offset(self) result(offset)
+      class(normal_patch_type), intent(in) :: self
+      offset = self%y_shift*sin(self%gamma_plane)
+   end function vertical_offset
 
 end module shcontact_normal_patch
