@@ -34,7 +34,8 @@ module test_validation
       contact_result_type, load_vertical_force
    implicit none
    private
-   public :: collect_validation, percentile, read_columns, manchester_profiles, profiles_dir
+   public :: collect_validation, percentile, read_columns, manchester_profiles, profiles_dir, &
+      skip_without_profiles
 
    character(len=*), parameter :: profiles_dir = '../shared/profiles/'
    character(len=*), parameter :: reference_dir = '../shared/reference/ty0_literal/'
@@ -346,13 +347,9 @@ contains
       type(lib_error), allocatable :: err
       real(wp) :: share
       integer :: k, flange
-      logical :: there
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared/profiles is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       track%rail_canted = .true.
       call solver%init(profiles_dir//'MBench_S1002_v3.prw', profiles_dir//'MBench_UIC60_v3.prr', &
          err, track=track, material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, &
@@ -482,13 +479,9 @@ contains
       type(lib_error), allocatable :: err
       real(wp) :: f_z, dz
       integer :: k, it
-      logical :: there
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared/profiles is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       call manchester_profiles(wheel, rail, track, err)
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
          wheelset_position_type(y_ws=y_ws), contact_options_type(), geometry, err)
@@ -656,6 +649,14 @@ contains
 
    !> The Manchester profiles of ../shared/profiles, read and cleaned, on the track with the rail
    !> already canted (README §2).
+   !> Mark the test skipped (error allocated, as skip_test does) when ../shared/profiles is absent.
+   subroutine skip_without_profiles(error)
+      type(error_type), allocatable, intent(out) :: error
+      logical :: there
+      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
+      if (.not. there) call skip_test(error, '../shared/profiles is absent')
+   end subroutine skip_without_profiles
+
    subroutine manchester_profiles(wheel, rail, track, err)
       type(profile_type), intent(out) :: wheel, rail
       type(track_type), intent(out) :: track

@@ -4,7 +4,7 @@
 !> vertical load shared by the patches of the right wheel) and must equal the printed value to
 !> its last digit (within half a unit of it). Skipped when ../shared is absent.
 module test_validation_normal
-   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_core_material, only: material_type
@@ -17,7 +17,7 @@ module test_validation_normal
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
-   use test_validation, only: manchester_profiles, profiles_dir
+   use test_validation, only: manchester_profiles, profiles_dir, skip_without_profiles
    implicit none
    private
    public :: collect_validation_normal
@@ -49,13 +49,9 @@ contains
       type(lib_error), allocatable :: err
       real(wp) :: dz, ours(3:n_columns)
       integer :: r, k, c
-      logical :: there
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared/profiles is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       call table_2_rows(rows, units, error)
       if (allocated(error)) return
       call manchester_profiles(wheel, rail, track, err)

@@ -4,7 +4,7 @@
 !> loaded state. Checked on an analytic patch (closed form) and against CONTACT's undeformed
 !> distance h of module 1 at seven wheel positions (data/exact/*/h_module1_row.csv).
 module test_vertical_approach
-   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_core_material, only: material_type
@@ -17,7 +17,8 @@ module test_vertical_approach
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_semihertz, only: vertical_tilt
    use test_semihertz, only: polynomial_patch
-   use test_validation, only: read_columns, manchester_profiles, profiles_dir
+   use test_validation, only: read_columns, manchester_profiles, profiles_dir, &
+      skip_without_profiles
    implicit none
    private
    public :: collect_vertical_approach
@@ -130,14 +131,10 @@ contains
       real(wp), allocatable :: rows(:, :), info(:, :), tilt(:), loaded(:)
       real(wp) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr, d, ours, theirs, worst, g_rail, first
       integer :: ip, k, best, im, j
-      logical :: there
       character(len=:), allocatable :: dir
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared/profiles is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       call manchester_profiles(wheel, rail, track, err)
       if (allocated(err)) then
          call test_failed(error, err%message); return
