@@ -85,23 +85,23 @@ module shcontact_normal_coupling
    !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
    !> last_group(p), in the order of their strips.
    type :: group_set_type
-      integer :: n = 0, n_patches = 0
-      integer :: patch(max_total) = 0
+      !> (No default values: a local set is emptied by [[reset_group_set]], and every array
+      !> entry is written before it is read; a default would initialise some 7 kB per solve.)
+      integer :: n, n_patches
+      integer :: patch(max_total)
       !> Width (mm), centre along the patch y (mm) and along the profile s (mm), mean half-length
       !> a (mm), mean interpenetration δ − g (mm), local-Hertz load (N), coupled/local load ratio,
       !> and the mean share 1 − c of a change of approach that reaches the group (a vertical
       !> approach, shcontact_normal_semihertz's vertical_tilt).
-      real(wp), dimension(max_total) :: width = 0.0_wp, yc = 0.0_wp, s = 0.0_wp, ac = 0.0_wp, &
-         gc = 0.0_wp, local = 0.0_wp, ratio = 0.0_wp, wc = 1.0_wp
+      real(wp), dimension(max_total) :: width, yc, s, ac, gc, local, ratio, wc
       !> The group's local-Hertz length-to-peak ratio a/P (mm/MPa, [[consistent_lengths]]).
-      real(wp), dimension(max_total) :: length_per_peak = 0.0_wp
+      real(wp), dimension(max_total) :: length_per_peak
       !> The groups in contact at the last solve (the next one starts from them).
-      logical :: in_contact(max_total) = .true.
-      integer, dimension(max_patches) :: first_group = 1, last_group = 0
+      logical :: in_contact(max_total)
+      integer, dimension(max_patches) :: first_group, last_group
       !> Per set patch: local-Hertz load N_k (N), position of the reference point along the
       !> profile (mm), contact angle γ_k (rad) and cos γ_k.
-      real(wp), dimension(max_patches) :: patch_load = 0.0_wp, offset = 0.0_wp, gamma = 0.0_wp, &
-         cos_gamma = 1.0_wp
+      real(wp), dimension(max_patches) :: patch_load, offset, gamma, cos_gamma
    contains
       !> Empty the set (the arrays are kept).
       procedure :: reset => reset_group_set
@@ -159,6 +159,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(group_set_type) :: set
 
+      call set%reset()
       call add_patch_groups(set, patch, 0.0_wp, 0.0_wp)
       call couple_single(set, patch, e_star, error)
    end subroutine couple_strips
@@ -206,6 +207,7 @@ contains
       integer :: order(max_patches), component(max_patches), chosen(max_patches), n_joint, k, &
          i, j, c, old, members
 
+      call set%reset()
       ! The most loaded patches, at most max_patches of them, in one problem.
       n_joint = 0
       do k = 1, size(patches)
@@ -299,6 +301,7 @@ contains
       real(wp) :: shift(max_patches)
       integer :: i, p, g1
 
+      call set%reset()
       do i = 1, size(members)
          p = members(i)
          call single%reset()
@@ -455,7 +458,7 @@ contains
          weight(max_patches, max_patches)
       real(wp), dimension(max_total) :: ac_fill, log_a_fill, stretch_log
       type(group_system_type) :: system
-      real(wp) :: peak, log_a, log_peak, step
+      real(wp) :: peak, log_a, log_peak, step, take
       integer :: it, g, n
 
       n = set%n
@@ -467,13 +470,17 @@ contains
       call solve_groups(set, kern, slope, stretch_log, system, error)
       if (allocated(error)) return
       do it = 1, length_iterations
+         ! Loops without branches over the groups (their log and exp vectorise): a group
+         ! without a positive peak takes no step (take = 0).
          do g = 1, n
             peak = set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g))
-            if (.not. (peak > 0.0_wp)) cycle
+            take = 0.5_wp + sign(0.5_wp, peak - tiny(1.0_wp))
             log_a = log_a_fill(g) + stretch_log(g)
-            log_peak = log(set%length_per_peak(g)*peak)
+            log_peak = log(set%length_per_peak(g)*max(peak, tiny(1.0_wp)))
             step = (log_peak - log_a)/(1.0_wp - length_sensitivity)
-            stretch_log(g) = stretch_log(g) + step
+            stretch_log(g) = stretch_log(g) + take*step
+         end do
+         do g = 1, n
             set%ac(g) = ac_fill(g)*exp(stretch_log(g))
          end do
          ! The peaks at the new lengths by one chord step on the first factorisation (a smooth
@@ -762,7 +769,7 @@ contains
       type(group_set_type), intent(in) :: set
       integer, intent(in) :: ip
       type(normal_patch_type), intent(inout) :: patch
-      real(wp) :: load, total, t, r, g
+      real(wp) :: load, total, t, r, g, root
       integer :: i, jg, g1, g2, n
 
       n = patch%n_strips
@@ -770,33 +777,35 @@ contains
       g2 = set%last_group(ip)
       if (g2 < g1) return
       load = sum(set%ratio(g1:g2)*set%local(g1:g2))
+      ! The ratio of every strip first (p0 holds it until the last loop), 0 for a strip out of
+      ! contact or whose ratio vanishes.
       jg = g1
       do i = 1, n
-         if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) then
-            call leave_contact(patch, i)
-            cycle
+         r = 0.0_wp
+         if (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp) then
+            do while (jg < g2)
+               if (patch%y(i) < set%yc(jg + 1)) exit
+               jg = jg + 1
+            end do
+            if (g1 == g2 .or. patch%y(i) <= set%yc(g1)) then
+               r = set%ratio(g1)
+            else if (jg >= g2) then
+               r = set%ratio(g2)
+            else
+               t = (patch%y(i) - set%yc(jg))/(set%yc(jg + 1) - set%yc(jg))
+               r = (1.0_wp - t)*set%ratio(jg) + t*set%ratio(jg + 1)
+            end if
          end if
-         do while (jg < g2)
-            if (patch%y(i) < set%yc(jg + 1)) exit
-            jg = jg + 1
-         end do
-         if (g1 == g2 .or. patch%y(i) <= set%yc(g1)) then
-            r = set%ratio(g1)
-         else if (jg >= g2) then
-            r = set%ratio(g2)
-         else
-            t = (patch%y(i) - set%yc(jg))/(set%yc(jg + 1) - set%yc(jg))
-            r = (1.0_wp - t)*set%ratio(jg) + t*set%ratio(jg + 1)
-         end if
-         if (r > 0.0_wp) then
-            ! The strip's length follows its load as its own a = c P does: q = (π/2) P a ∝ a²,
-            ! so a/a_local = √(q/q_local) (module text); k_i = a_i/a_H,i with it.
-            patch%strip_load(i) = r*patch%strip_load(i)
-            patch%a(i) = sqrt(r)*patch%a(i)
-            patch%k(i) = sqrt(r)*patch%k(i)
-         else
-            call leave_contact(patch, i)
-         end if
+         patch%p0(i) = max(r, 0.0_wp)
+      end do
+      ! The strip's length follows its load as its own a = c P does: q = (π/2) P a ∝ a², so
+      ! a/a_local = √(q/q_local) (module text); k_i = a_i/a_H,i with it. A strip with ratio 0
+      ! leaves the contact (load, a and k become 0). No branch: the loop vectorises.
+      do i = 1, n
+         root = sqrt(patch%p0(i))
+         patch%strip_load(i) = patch%p0(i)*patch%strip_load(i)
+         patch%a(i) = root*patch%a(i)
+         patch%k(i) = root*patch%k(i)
       end do
       total = sum(patch%strip_load(1:n))
       if (.not. (total > 0.0_wp) .or. .not. (load > 0.0_wp)) then
@@ -809,12 +818,12 @@ contains
          patch%p_max = 0.0_wp
          return
       end if
-      ! The interpolation moved a little load between groups: restore the group sum.
+      ! The interpolation moved a little load between groups: restore the group sum (p₀ = 0
+      ! where the load is 0).
       g = load/total
       do i = 1, n
-         if (.not. (patch%strip_load(i) > 0.0_wp)) cycle
          patch%strip_load(i) = g*patch%strip_load(i)
-         patch%p0(i) = 2.0_wp*patch%strip_load(i)/(pi*patch%a(i)*patch%dy)
+         patch%p0(i) = 2.0_wp*patch%strip_load(i)/(pi*max(patch%a(i), tiny(1.0_wp))*patch%dy)
       end do
       patch%load = load
       patch%area = 2.0_wp*sum(patch%a(1:n))*patch%dy
@@ -890,15 +899,5 @@ contains
          boundary = 0.5_wp*real(j, wp)/ng + 0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng))
       end function boundary
    end subroutine group_strips
-
-   !> A strip without load.
-   pure subroutine leave_contact(patch, i)
-      type(normal_patch_type), intent(inout) :: patch
-      integer, intent(in) :: i
-      patch%a(i) = 0.0_wp
-      patch%p0(i) = 0.0_wp
-      patch%k(i) = 0.0_wp
-      patch%strip_load(i) = 0.0_wp
-   end subroutine leave_contact
 
 end module shcontact_normal_coupling
