@@ -128,15 +128,18 @@ contains
       real(wp), intent(out) :: f(:), df(:)
       real(wp) :: select, m, m1, l, kk, ee, d, q, root_m, d_series, e_series
       integer :: k
-      ! The logarithms first, in a loop of their own (f holds −ln m₁ until the second loop):
-      ! the vectorised log is a call, and a loop without other work keeps few values live across it.
+      ! √m and the logarithms first, in a loop of their own (df holds √m and f holds −ln m₁
+      ! until the second loop): the vectorised log is a call, and a loop without other work
+      ! keeps few values live across it. One square root and one division per point:
+      ! √m = 1/√(1 + u²), m₁ = u² m, and /m is ·(1 + u²).
       do k = 1, size(u)
-         f(k) = -log(max(u(k)*u(k)/(1.0_wp + u(k)*u(k)), tiny(1.0_wp)))
+         root_m = 1.0_wp/sqrt(1.0_wp + u(k)*u(k))
+         df(k) = root_m
+         f(k) = -log(max(u(k)*u(k)*(root_m*root_m), tiny(1.0_wp)))
       end do
       do k = 1, size(u)
-         ! One square root and one division: √m = 1/√(1 + u²), and /m is ·(1 + u²).
          q = 1.0_wp + u(k)*u(k)
-         root_m = 1.0_wp/sqrt(q)
+         root_m = df(k)
          m = root_m*root_m
          m1 = u(k)*u(k)*m
          d_series = 0.25_wp*pi*(1.0_wp + m*(3.0_wp/8.0_wp + m*(15.0_wp/64.0_wp + &
