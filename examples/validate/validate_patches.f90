@@ -27,8 +27,10 @@ module validate_patches
    !> The patch folders: the two shared ones (under ../shared/reference/), then the positions of
    !> data/exact/ (doc/validation.md §6.5: CONTACT runs made for this project, same set-up).
    integer, parameter :: n_shared = 2
-   character(len=*), parameter :: patch_names(9) = [character(len=13) :: 'ty0_literal', &
-      'ty5p8_literal', 'yws-4p0', 'yws-2p0', 'yws1p0', 'yws2p0', 'yws3p5', 'yws4p4', 'yws6p5']
+   character(len=*), parameter :: patch_names(21) = [character(len=13) :: 'ty0_literal', &
+      'ty5p8_literal', 'yws-6p0', 'yws-4p0', 'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', &
+      'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', 'yws3p5', 'yws4p0', &
+      'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', 'yws7p0']
    !> Where the project's own exact-theory positions are (relative to the repository root).
    character(len=*), parameter :: extra_root = 'data/exact/'
    !> Configurations: the defaults first, then one setting changed at a time; the last rows run
@@ -44,6 +46,10 @@ module validate_patches
       'correction none on CONTACT pressure', 'ellipsoidal on CONTACT pressure', &
       'flexibility patch', 'flexibility patch on CONTACT pressure', 'flexibility carter', &
       'flexibility carter on CONTACT pressure']
+   !> The configurations of the first table of patches_doe.md (doc/validation.md Table 10): the
+   !> defaults, the defaults on CONTACT's pressure, the defaults when issue 13 was filed, then
+   !> one option changed at a time.
+   integer, parameter :: summary_configs(8) = [1, 12, 11, 2, 6, 7, 9, 10]
    character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
       'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted', &
       'weighted', 'weighted', 'weighted', 'weighted', 'weighted', 'ellipsoidal', 'weighted', &
@@ -282,14 +288,15 @@ contains
       options%fields = .false.
    end subroutine options_of
 
-   !> patches_doe.md: one row per configuration, max / P80 per patch.
+   !> patches_doe.md: first the positions as rows against the defaults and the main alternatives
+   !> ([[summary_configs]]; doc/validation.md Table 10), then every configuration as a row.
    subroutine write_markdown(path, ex, ey, doe_names, error)
       character(len=*), intent(in) :: path
       type(error_stats_type), intent(in) :: ex(:, :), ey(:, :)
       character(len=*), intent(in) :: doe_names(:)
       type(error_type), allocatable, intent(out) :: error
-      character(len=1024) :: msg, line
-      integer :: unit, stat, ic, ip
+      character(len=2048) :: msg, line
+      integer :: unit, stat, ic, ip, k
 
       open (newunit=unit, file=path, status='replace', action='write', iostat=stat, iomsg=msg)
       if (stat /= 0) then
@@ -298,7 +305,21 @@ contains
       end if
       write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
          'release` (patches_doe.csv) -->', '', &
-         'max \|Δf\| ; P80 \|Δf_x\| / P80 \|Δf_y\| against the exact theory', ''
+         'max \|Δf\| ; P80 \|Δf_x\| / P80 \|Δf_y\| against the exact theory', '', &
+         'Every position, the defaults and the main alternatives:', ''
+      line = '| position (DOE) |'
+      do k = 1, size(summary_configs)
+         line = trim(line)//' '//trim(config_labels(summary_configs(k)))//' |'
+      end do
+      write (unit, '(a)') trim(line), '|---|'//repeat('---|', size(summary_configs))
+      do ip = 1, size(patch_names)
+         line = '| '//trim(patch_names(ip))//' ('//trim(doe_names(ip))//') |'
+         do k = 1, size(summary_configs)
+            line = trim(line)//cell(summary_configs(k), ip)
+         end do
+         write (unit, '(a)') trim(line)
+      end do
+      write (unit, '(a)') '', 'Every configuration:', ''
       line = '| configuration |'
       do ip = 1, size(patch_names)
          line = trim(line)//' '//trim(patch_names(ip))//' ('//trim(doe_names(ip))//') |'
@@ -307,16 +328,25 @@ contains
       do ic = 1, n_configs
          line = '| '//trim(config_labels(ic))//' |'
          do ip = 1, size(patch_names)
-            if (ex(ic, ip)%max < 0.0_wp) then
-               line = trim(line)//' n/a |'
-            else
-               write (line, '(a,3(f5.3,a))') trim(line)//' ', max(ex(ic, ip)%max, &
-                  ey(ic, ip)%max), ' ; ', ex(ic, ip)%p80, ' / ', ey(ic, ip)%p80, ' |'
-            end if
+            line = trim(line)//cell(ic, ip)
          end do
          write (unit, '(a)') trim(line)
       end do
       close (unit)
+   contains
+      !> One table cell: max ; P80 x / P80 y, or n/a.
+      function cell(ic, ip) result(text)
+         integer, intent(in) :: ic, ip
+         character(len=:), allocatable :: text
+         character(len=40) :: buf
+         if (ex(ic, ip)%max < 0.0_wp) then
+            text = ' n/a |'
+         else
+            write (buf, '(3(f5.3,a))') max(ex(ic, ip)%max, ey(ic, ip)%max), ' ; ', &
+               ex(ic, ip)%p80, ' / ', ey(ic, ip)%p80, ' |'
+            text = ' '//trim(buf)
+         end if
+      end function cell
    end subroutine write_markdown
 
 end module validate_patches
