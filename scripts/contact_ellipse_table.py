@@ -13,7 +13,7 @@
 usage: scripts/contact_ellipse_table.py [--work DIR] [--skip-contact]
   --skip-contact  reuse data/exact/ellipse_table.csv and only rewrite the table module (after a
                   change to FASTSIM_SH: the table holds exact minus FASTSIM_SH)
-Run from the repository root. The whole grid (24 840 nodes) is about 100 CPU-minutes of CONTACT;
+Run from the repository root. The whole grid (33 120 nodes) is about 170 CPU-minutes of CONTACT;
 after a change of the grid only the new nodes are run.
 """
 import argparse, os, subprocess, sys, tempfile

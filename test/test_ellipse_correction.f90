@@ -103,11 +103,14 @@ contains
          '; remake the table (scripts/contact_ellipse_table.py --skip-contact)')
    end subroutine test_table_current
 
-   !> Ellipses of a/b = 0.29 … 6.9 that are not table nodes, 37 cases each (pure spin
-   !> sweeps and a 3³ set of ν_x, ν_y, φ), exact by CONTACT at 60 × 60 elements
-   !> (data/exact/ellipse_check.csv): FASTSIM_SH with the correction is within 0.008 of the exact
-   !> f_x, f_y in every case and within 0.002 in 80 % (measured 0.0066 and 0.0012; without it
-   !> 0.059 and 0.023).
+   !> Ellipses that are not table nodes, 37 cases each (pure spin sweeps and a 3³ set of ν_x, ν_y,
+   !> φ), exact by CONTACT at 60 × 60 elements (data/exact/ellipse_check.csv). FASTSIM_SH with the
+   !> correction is within
+   !> * 0.008 of the exact f_x, f_y in every case and 0.002 in 80 % on the six of a/b = 0.29 … 6.9
+   !>   (measured 0.0066 and 0.0012; without it 0.059 and 0.023);
+   !> * 0.012 and 0.004 on the three long ones of a/b = 9.5, 15 and 18.8 (flange patches; measured
+   !>   0.0105 and 0.0036);
+   !> * 0.017 and 0.006 on a/b = 31.2, past the table's last node 25 (measured 0.0159, 0.0058).
    subroutine test_between_nodes(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: cols(:, :), values(:, :), e(:)
@@ -139,15 +142,36 @@ contains
       end do
       call check(error, .not. allocated(lerr), message='solve failed')
       if (allocated(error)) return
-      call check(error, n == 222, message='ellipse_check.csv: expected 222 cases')
+      call check(error, n == 370, message='ellipse_check.csv: expected 370 cases')
       if (allocated(error)) return
-      i = (maxloc(e, dim=1) + 1)/2
-      call check(error, maxval(e) <= 0.008_wp .and. percentile(e, 0.8_wp) <= 0.002_wp, &
-         message='max / P80 |Δf| on ellipses '//str_real(maxval(e))//' / '// &
-         str_real(percentile(e, 0.8_wp))// &
-         ', expected <= 0.008 / 0.002; the largest at a, b, nu_x, nu_y, phi = '// &
-         str_real(cols(1, i))//', '//str_real(cols(2, i))//', '//str_real(cols(3, i))//', '// &
-         str_real(cols(4, i))//', '//str_real(cols(5, i)))
+      call check_range(0.0_wp, 7.0_wp, 0.008_wp, 0.002_wp, error)
+      if (allocated(error)) return
+      call check_range(7.0_wp, 25.0_wp, 0.012_wp, 0.004_wp, error)
+      if (allocated(error)) return
+      call check_range(25.0_wp, huge(1.0_wp), 0.017_wp, 0.006_wp, error)
+   contains
+      !> max and P80 of the errors of the ellipses with lo < a/b ≤ hi.
+      subroutine check_range(lo, hi, max_bound, p80_bound, error)
+         real(wp), intent(in) :: lo, hi, max_bound, p80_bound
+         type(error_type), allocatable, intent(out) :: error
+         logical :: inside(2*n)
+         real(wp), allocatable :: ein(:)
+         integer :: k
+         do k = 1, n
+            inside(2*k - 1:2*k) = cols(1, k)/cols(2, k) > lo .and. cols(1, k)/cols(2, k) <= hi
+         end do
+         ein = pack(e, inside)
+         call check(error, size(ein) > 0, message='no check ellipse with a/b in the range')
+         if (allocated(error)) return
+         k = (maxloc(merge(e, -1.0_wp, inside), dim=1) + 1)/2
+         call check(error, maxval(ein) <= max_bound .and. percentile(ein, 0.8_wp) <= p80_bound, &
+            message='max / P80 |Δf| on ellipses of a/b in ('//str_real(lo)//', '// &
+            str_real(hi)//'] '//str_real(maxval(ein))//' / '//str_real(percentile(ein, 0.8_wp))// &
+            ', expected <= '//str_real(max_bound)//' / '//str_real(p80_bound)// &
+            '; the largest at a, b, nu_x, nu_y, phi = '//str_real(cols(1, k))//', '// &
+            str_real(cols(2, k))//', '//str_real(cols(3, k))//', '//str_real(cols(4, k))//', '// &
+            str_real(cols(5, k)))
+      end subroutine check_range
    end subroutine test_between_nodes
 
    !> D is odd in the creepages; mirroring y flips ν_y, φ and D_y; ν_x → −ν_x flips D_x only.

@@ -366,16 +366,22 @@ contains
    subroutine write_nodes(u, values)
       integer, intent(in) :: u
       real(wp), intent(in) :: values(:)
-      integer :: k, j
+      character(len=8) :: text
+      integer :: k, i
 
       do k = 1, size(values), 10
-         j = min(size(values), k + 9)
-         write (u, '(6x,*(f4.2,"_wp",:,", "))', advance='no') values(k:j)
-         if (j < size(values)) then
-            write (u, '(a)') ', &'
-         else
-            write (u, '(a)') ']'
-         end if
+         write (u, '(6x)', advance='no')
+         do i = k, min(size(values), k + 9)
+            write (text, '(f8.2)') values(i)
+            write (u, '(a)', advance='no') trim(adjustl(text))//'_wp'
+            if (i == size(values)) then
+               write (u, '(a)') ']'
+            else if (i == k + 9) then
+               write (u, '(a)') ', &'
+            else
+               write (u, '(a)', advance='no') ', '
+            end if
+         end do
       end do
    end subroutine write_nodes
 
