@@ -35,6 +35,7 @@ module test_validation
    implicit none
    private
    public :: collect_validation, percentile, read_columns, manchester_profiles, profiles_dir, &
+      summary_values, &
       skip_without_profiles
 
    character(len=*), parameter :: profiles_dir = '../shared/profiles/'
@@ -300,15 +301,6 @@ contains
          'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', &
          'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', &
          'yws7p0']
-      real(wp), parameter :: y_ws(n_positions) = [ &
-         -6.00_wp, -4.00_wp, -2.00_wp, -1.00_wp, 0.50_wp, 0.75_wp, 1.00_wp, 1.25_wp, &
-         1.50_wp, 2.00_wp, 2.50_wp, 3.00_wp, 3.50_wp, 4.00_wp, 4.40_wp, 4.60_wp, &
-         6.00_wp, 6.50_wp, 7.00_wp]
-      real(wp), parameter :: y_ref(n_positions) = [ &
-         757.6136_wp, 757.2227_wp, 755.8867_wp, 754.2216_wp, 747.7122_wp, &
-         746.3601_wp, 745.1116_wp, 744.0204_wp, 743.1077_wp, 741.7663_wp, &
-         740.8674_wp, 740.1628_wp, 739.5012_wp, 738.7886_wp, 738.1043_wp, &
-         737.6716_wp, 725.6892_wp, 723.8171_wp, 718.2217_wp]
       real(wp), parameter :: rows(4, n_positions) = reshape([ &
          0.009_wp, 0.008_wp, 0.002_wp, 0.002_wp, &
          0.008_wp, 0.008_wp, 0.003_wp, 0.002_wp, &
@@ -330,11 +322,15 @@ contains
          0.016_wp, 0.015_wp, 0.012_wp, 0.009_wp, &
          0.010_wp, 0.011_wp, 0.003_wp, 0.010_wp], [4, n_positions])
       real(wp), allocatable :: ex(:), ey(:)
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
       integer :: k
 
       do k = 1, size(names)
+         call summary_values('data/exact/'//trim(names(k))//'/summary.csv', y_ws, y_geo, pen, &
+            ycp_r, delt, y_ref, error)
+         if (allocated(error)) return
          call doe_errors('data/exact/'//trim(names(k))//'/doe_6x6x6_exact_nonhertz.csv', &
-            y_ws(k), y_ref(k), 216, ex, ey, error)
+            y_ws, y_ref, 216, ex, ey, error)
          if (allocated(error) .or. .not. allocated(ex)) return
          call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
          if (allocated(error)) return
@@ -360,27 +356,27 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: names(3) = [character(len=7) :: 'yws0p75', 'yws1p0', &
          'yws1p25']
-      real(wp), parameter :: y_ws(3) = [0.75_wp, 1.0_wp, 1.25_wp]
-      real(wp), parameter :: y_ref(3) = [746.3601_wp, 745.1116_wp, 744.0204_wp]
-      real(wp), parameter :: y_geo(3) = [-4.505780434_wp, -3.420933207_wp, -2.500488679_wp]
       real(wp), parameter :: offset(3, 2) = reshape([0.112_wp, 0.096_wp, 0.071_wp, &
          -1.017_wp, -1.018_wp, -0.826_wp], [3, 2])
       character(len=*), parameter :: reductions(2) = [character(len=11) :: 'coupled', &
          'local-hertz']
       type(normal_patch_type) :: patch
       real(wp), allocatable :: grid(:, :)
-      real(wp) :: theirs, ours
+      real(wp) :: theirs, ours, y_ws, y_geo, pen, ycp_r, delt, y_ref
       integer :: k, r, n
 
       call skip_without_profiles(error)
       if (allocated(error)) return
       do k = 1, size(names)
+         call summary_values('data/exact/'//trim(names(k))//'/summary.csv', y_ws, y_geo, pen, &
+            ycp_r, delt, y_ref, error)
+         if (allocated(error)) return
          call read_columns('data/exact/'//trim(names(k))//'/grid_module3_exact_nonhertz.csv', &
             [character(len=6) :: 'y_mm', 'pn_MPa'], grid, error)
          if (allocated(error)) return
-         theirs = sum(grid(:, 1)*grid(:, 2))/sum(grid(:, 2)) - y_geo(k)
+         theirs = sum(grid(:, 1)*grid(:, 2))/sum(grid(:, 2)) - y_geo
          do r = 1, 2
-            call reference_patch(patch, error, y_ws=y_ws(k), y_ref=y_ref(k), &
+            call reference_patch(patch, error, y_ws=y_ws, y_ref=y_ref, &
                reduction=trim(reductions(r)))
             if (allocated(error)) return
             n = patch%n_strips
@@ -855,5 +851,47 @@ contains
       end do
       p = sorted(min(size(sorted), max(1, ceiling(q*size(sorted) - 1.0e-9_wp))))
    end function percentile
+
+   !> Y_WS, y_geo, the approach pen, the reference point on the rail profile ycp_r, the contact
+   !> angle delt and the reference point's track y ycp_tr of a summary.csv (key,value,...).
+   subroutine summary_values(path, y_ws, y_geo, pen, ycp_r, delt, ycp_tr, error)
+      character(len=*), intent(in) :: path
+      real(wp), intent(out) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr
+      type(error_type), allocatable, intent(out) :: error
+      character(len=512) :: line
+      character(len=64) :: key
+      real(wp) :: value
+      integer :: unit, stat, comma, found
+
+      found = 0
+      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
+      if (stat /= 0) then
+         call test_failed(error, path//': cannot open')
+         return
+      end if
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         comma = index(line, ',')
+         if (comma < 2) cycle
+         key = line(1:comma - 1)
+         line = line(comma + 1:)
+         comma = index(line, ',')
+         if (comma < 2) cycle
+         read (line(1:comma - 1), *, iostat=stat) value
+         if (stat /= 0) cycle
+         select case (trim(key))
+         case ('y_ws'); y_ws = value; found = found + 1
+         case ('y_geo'); y_geo = value; found = found + 1
+         case ('pen'); pen = value; found = found + 1
+         case ('ycp_r'); ycp_r = value; found = found + 1
+         case ('delt'); delt = value; found = found + 1
+         case ('ycp_tr'); ycp_tr = value; found = found + 1
+         end select
+      end do
+      close (unit)
+      if (found /= 6) call test_failed(error, path//': expected y_ws, y_geo, pen, ycp_r, delt '// &
+         'and ycp_tr')
+   end subroutine summary_values
 
 end module test_validation

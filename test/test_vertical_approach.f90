@@ -18,7 +18,7 @@ module test_vertical_approach
    use shcontact_normal_semihertz, only: vertical_tilt
    use test_semihertz, only: polynomial_patch
    use test_validation, only: read_columns, manchester_profiles, profiles_dir, &
-      skip_without_profiles
+      skip_without_profiles, summary_values
    implicit none
    private
    public :: collect_vertical_approach
@@ -194,48 +194,6 @@ contains
          end associate
       end do
    end subroutine test_contact_h
-
-   !> Y_WS, y_geo, the approach pen, the reference point on the rail profile ycp_r, the contact
-   !> angle delt and the reference point's track y ycp_tr of a summary.csv (key,value,...).
-   subroutine summary_values(path, y_ws, y_geo, pen, ycp_r, delt, ycp_tr, error)
-      character(len=*), intent(in) :: path
-      real(wp), intent(out) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr
-      type(error_type), allocatable, intent(out) :: error
-      character(len=512) :: line
-      character(len=64) :: key
-      real(wp) :: value
-      integer :: unit, stat, comma, found
-
-      found = 0
-      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
-      if (stat /= 0) then
-         call test_failed(error, path//': cannot open')
-         return
-      end if
-      do
-         read (unit, '(a)', iostat=stat) line
-         if (stat /= 0) exit
-         comma = index(line, ',')
-         if (comma < 2) cycle
-         key = line(1:comma - 1)
-         line = line(comma + 1:)
-         comma = index(line, ',')
-         if (comma < 2) cycle
-         read (line(1:comma - 1), *, iostat=stat) value
-         if (stat /= 0) cycle
-         select case (trim(key))
-         case ('y_ws'); y_ws = value; found = found + 1
-         case ('y_geo'); y_geo = value; found = found + 1
-         case ('pen'); pen = value; found = found + 1
-         case ('ycp_r'); ycp_r = value; found = found + 1
-         case ('delt'); delt = value; found = found + 1
-         case ('ycp_tr'); ycp_tr = value; found = found + 1
-         end select
-      end do
-      close (unit)
-      if (found /= 6) call test_failed(error, path//': expected y_ws, y_geo, pen, ycp_r, delt '// &
-         'and ycp_tr')
-   end subroutine summary_values
 
    !> Linear interpolation of (x, f) at t (x increasing; clamped at the ends).
    pure real(wp) function interpolate(x, f, t) result(v)
