@@ -16,7 +16,8 @@ usage: genref.py YWS OUTDIR [--cases corner|doe6|both] [--n 6] [--workdir DIR]
 import argparse, csv, math, os, re, shutil, subprocess, sys, time
 import numpy as np
 
-CONTACT = os.environ.get('CONTACT_EXE', '/tmp/contact-src/bin/contact_O2')
+CONTACT = os.environ.get('CONTACT_EXE', os.path.join(os.path.dirname(__file__), '..', 'build',
+                                                     'contact', 'contact'))  # scripts/contact_build.sh
 FN_TARGET = 64700.0
 MU = 0.3
 VS = 2000.0
