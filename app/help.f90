@@ -123,7 +123,7 @@ contains
          'spikes,'//nl// &
          'running surface) and print a summary (points, range, units) on stdout. With '// &
          '--write,'//nl// &
-         'write the built-in profiles (S1002.txt, UIC60.txt) into DIR instead.'//nl//nl// &
+         'write the built-in profiles (S1002.txt, UIC60.txt, UIC60-canted.txt) into DIR instead.'//nl//nl// &
          'Options:'//nl// &
          '  -o, --output OUT         write the cleaned profile as a 2-column file (y z in mm,'// &
          nl// &
