@@ -20,7 +20,9 @@ module test_output_files
       unavailable, expect_in, program_path
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
-   use shcontact_io_files, only: file_exists
+   use shcontact_io_files, only: file_exists, process_id
+   use shcontact_io_xdmf, only: write_xdmf_sidecar
+   use shcontact_io_text, only: string_type
    use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_create, h5_commit, h5_close, h5_copy, &
       h5_exists, h5_read, h5_write, h5_read_attribute, h5_write_attribute
    use shcontact_io_results, only: read_result_summary
@@ -50,7 +52,8 @@ contains
          new_unittest('existing_work_folder', test_existing_work_folder), &
          new_unittest('two_runs_one_output', test_two_runs), &
          new_unittest('special_outputs', test_special_outputs), &
-         new_unittest('own_files_replaced', test_own_files_replaced) &
+         new_unittest('own_files_replaced', test_own_files_replaced), &
+         new_unittest('temporary_names_exclusive', test_temporary_names) &
          ]
    end subroutine collect_output_files
 
@@ -240,6 +243,13 @@ contains
          .not. holds(dir, 'ls -d r.h5* > /dev/null 2>&1'), &
          message='the foreign sidecar is untouched and nothing is written')
       if (allocated(error)) return
+      ! A run without fields writes no sidecar: with --force it runs, r.xmf stays as it was.
+      stat = run_program(dir, 'run pure_spin.nml -q -o r.h5 --force')
+      call check(error, stat, 0, message='--force without fields: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/r.xmf') == 'mine'//new_line('a') .and. &
+         file_exists(dir//'/r.h5'), message='no sidecar to write: the foreign one is kept')
+      if (allocated(error)) return
       ! With fields the sidecar is written: refused the same way, replaced with --force.
       call write_lines(dir//'/sw.nml', small_sweep)
       stat = run_program(dir, 'run sw.nml -q -o f.h5')
@@ -304,6 +314,16 @@ contains
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), 'control character (byte 9)', &
          'tab in the merge output')
+      if (allocated(error)) return
+      ! The name from the configuration (&output file, here through --set): status 2.
+      stat = run_program(dir, 'run -q --set output%file="a$(printf ''\t'')b.h5"')
+      call check(error, stat, 2, message='tab in &output file: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the output name "a?b.h5" holds a '// &
+         'control character (byte 9', 'tab in &output file')
+      if (allocated(error)) return
+      call check(error, holds(dir, 'test -z "$(ls | grep -v -e out.txt -e err.txt)"'), &
+         message='no file written for a name with a tab')
       call shell('rm -rf '//dir)
    end subroutine test_control_characters
 
@@ -375,6 +395,44 @@ contains
          file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_own_files_replaced
+
+   !> The temporary names OUT.h5.tmpPID and OUT.xmf.tmpPID are created exclusively: a file of
+   !> that name makes the write fail and is left as it was (it was truncated before).
+   subroutine test_temporary_names(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, pid
+      type(h5_file_type) :: file
+      type(lib_error), allocatable :: e
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_temp')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      stat = run_program(dir, 'run sw.nml -q -o fields.h5')
+      call check(error, stat, 0, message='run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      pid = str(process_id())
+      call shell('cd '//dir//' && echo mine > new.h5.tmp'//pid//' && echo mine > fields.xmf.tmp'// &
+         pid)
+      call h5_create(file, dir//'/new.h5', e)
+      call check(error, allocated(e), message='h5_create over an existing temporary name')
+      if (allocated(error)) return
+      call h5_close(file)
+      call write_xdmf_sidecar(dir//'/fields.h5', [1], [string_type('cases/000001')], e)
+      call check(error, allocated(e), message='sidecar over an existing temporary name')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/new.h5.tmp'//pid) == 'mine'//new_line('a') .and. &
+         file_text(dir//'/fields.xmf.tmp'//pid) == 'mine'//new_line('a') .and. .not. &
+         file_exists(dir//'/new.h5'), message='the files of the temporary names are untouched')
+      call shell('rm -rf '//dir)
+   end subroutine test_temporary_names
+
+   function str(i) result(text)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: text
+      character(len=12) :: buf
+      write (buf, '(i0)') i
+      text = trim(buf)
+   end function str
 
    ! ------------------------------------------------------------------------------------------
    ! The work folder OUT.h5.partial (items 13 and 14)
