@@ -327,7 +327,8 @@ contains
       call shell('rm -rf '//dir)
    end subroutine test_control_characters
 
-   !> A FIFO as output hung the run (the check opened it); a device, a symbolic link: refused.
+   !> A FIFO as output hung the run (the check opened it), as a merge input too; a device, a
+   !> symbolic link: refused.
    subroutine test_special_outputs(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir
@@ -354,6 +355,13 @@ contains
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), 'cannot write the output "link.h5": '// &
          'it is a symbolic link', 'symbolic link as output')
+      if (allocated(error)) return
+      ! A pipe as a merge input: refused, not waited on.
+      stat = run_limited(dir, 'merge m.h5 fifo.h5')
+      call check(error, stat, 3, message='pipe as merge input: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'cannot open "fifo.h5": it is a '// &
+         'pipe, not a regular file', 'pipe as merge input')
       if (allocated(error)) return
       ! --force replaces the link by the result file; what it pointed to is untouched.
       stat = run_limited(dir, 'run -q -o link.h5 --force')
@@ -529,11 +537,11 @@ contains
       call write_lines(dir//'/long.nml', [character(len=72) :: &
          '&sweep nu_x = 0.0, 2.0e-3, nu_x_points = 300 /', &
          '&output checkpoint_cases = 10 /'])
-      ! The first run in the background; the second once the first holds its work folder.
+      ! The first run in the background; the second once the first has written a block.
       call shell('cd '//dir//' && (env OMP_NUM_THREADS=1 '//program_path()//' run long.nml '// &
          '-q -o out.h5 > first_out.txt 2> first_err.txt; echo $? > first_status.txt) &')
       do k = 1, 1200
-         if (file_exists(dir//'/out.h5.partial/lock') .or. &
+         if (file_exists(dir//'/out.h5.partial/blocks.txt') .or. &
              file_exists(dir//'/first_status.txt')) exit
          call shell('sleep 0.05')
       end do

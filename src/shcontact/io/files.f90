@@ -191,17 +191,27 @@ contains
       call c_free(p)
    end function canonical_path
 
-   !> What a path names, without following a symbolic link: 'none' (nothing), 'file' (a
+   !> What a path names, without following a symbolic link (unless `follow`): 'none' (nothing), 'file' (a
    !> regular file), 'directory', 'link' (a symbolic link, whatever it points to), 'pipe',
    !> 'device', 'socket' or 'other'.
-   function path_kind(path) result(kind)
+   function path_kind(path, follow) result(kind)
       !> The path.
       character(len=*), intent(in) :: path
+      !> Follow a symbolic link (say what it points to; 'none' for a dangling one).
+      logical, intent(in), optional :: follow
       character(len=:), allocatable :: kind
-      integer :: values(13), stat, mode
-      ! lstat is a GNU Fortran intrinsic (POSIX lstat): values(3) is st_mode.
-      call lstat(path, values, stat)
-      if (stat /= 0) then
+      integer :: values(13), status, mode
+      ! lstat and stat are GNU Fortran intrinsics (POSIX lstat, stat): values(3) is st_mode.
+      if (present(follow)) then
+         if (follow) then
+            call stat(path, values, status)
+         else
+            call lstat(path, values, status)
+         end if
+      else
+         call lstat(path, values, status)
+      end if
+      if (status /= 0) then
          kind = 'none'
          return
       end if

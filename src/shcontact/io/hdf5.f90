@@ -25,7 +25,7 @@ module shcontact_io_hdf5
       H5T_INTEGER_F, H5T_STRING_F, h5tis_variable_str_f
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
-   use shcontact_io_files, only: rename_file, delete_file, process_id
+   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_core_strings, only: str_int
    implicit none
    private
@@ -222,14 +222,19 @@ contains
       !> Set when it cannot be opened as HDF5.
       type(error_type), allocatable, intent(out) :: error
       integer :: stat
-      logical :: exists
+      character(len=:), allocatable :: kind
       call start_library(error)
       if (allocated(error)) return
       file%name = name
       file%temp_name = ''
-      inquire (file=name, exist=exists)
-      if (.not. exists) then
+      ! Only a regular file (opening a pipe would wait for a writer).
+      kind = path_kind(name, follow=.true.)
+      if (kind == 'none') then
          call fatal_error(error, 'cannot open "'//name//'": no such file', stat_io)
+         return
+      else if (kind /= 'file') then
+         call fatal_error(error, 'cannot open "'//name//'": it is a '//kind//', not a '// &
+            'regular file', stat_io)
          return
       end if
       call h5fopen_f(name, H5F_ACC_RDONLY_F, file%id, stat)
