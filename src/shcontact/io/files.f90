@@ -57,6 +57,10 @@ module shcontact_io_files
          integer(c_int), value :: fd, operation
          integer(c_int) :: stat
       end function c_flock
+      function c_errno_location() bind(c, name='__errno_location') result(p)
+         import :: c_ptr
+         type(c_ptr) :: p
+      end function c_errno_location
       function c_usleep(microseconds) bind(c, name='usleep') result(stat)
          import :: c_int
          integer(c_int), value :: microseconds
@@ -71,6 +75,8 @@ module shcontact_io_files
       folder_unlocked = 3, folder_link = 4, folder_not_directory = 5, folder_cannot_create = 6
    !> flock(2) operations (Linux and the BSDs): exclusive, do not wait.
    integer(c_int), parameter :: lock_ex = 2, lock_nb = 4
+   !> errno of a lock held by another process (EWOULDBLOCK = EAGAIN on Linux).
+   integer(c_int), parameter :: errno_would_block = 11
 
 contains
 
@@ -274,8 +280,12 @@ contains
          unit = -1
          return
       end if
-      ! fnum (GNU Fortran intrinsic): the POSIX file descriptor of the unit.
+      ! fnum (GNU Fortran intrinsic): the POSIX file descriptor of the unit. A file system
+      ! without flock (some Lustre or NFS mounts: ENOLCK, ENOSYS, EOPNOTSUPP) counts as
+      ! locked: the atomic mkdir of the work folder still keeps two new runs apart.
       if (c_flock(int(fnum(unit), c_int), ior(lock_ex, lock_nb)) == 0) then
+         state = lock_taken
+      else if (last_errno() /= errno_would_block) then
          state = lock_taken
       else
          state = lock_busy
@@ -283,6 +293,14 @@ contains
          unit = -1
       end if
    end subroutine lock_file
+
+   !> errno of the last failed C library call of this thread (glibc).
+   function last_errno() result(code)
+      integer :: code
+      integer(c_int), pointer :: p
+      call c_f_pointer(c_errno_location(), p)
+      code = int(p)
+   end function last_errno
 
    !> Make a work folder and hold its lock file `dir/lock_name`, or, with `take_over`, hold the
    !> lock of an existing one. A symbolic link is never followed. The creation (mkdir) is
