@@ -24,8 +24,8 @@ module test_output_files
    use shcontact_io_xdmf, only: write_xdmf_sidecar
    use shcontact_io_text, only: string_type
    use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_create, h5_commit, h5_close, h5_copy, &
-      h5_exists, h5_read, h5_write, h5_read_attribute, h5_write_attribute
-   use shcontact_io_results, only: read_result_summary
+      h5_make_group, h5_exists, h5_read, h5_write, h5_read_attribute, h5_write_attribute
+   use shcontact_io_results, only: read_result_summary, case_group_name
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns
    implicit none
    private
@@ -115,6 +115,55 @@ contains
       call check(error, stat, 0, message='replace '//name)
    end subroutine damage
 
+   !> Copy the result file `name` with the library's writer, the field pn of the first case's
+   !> patch_1 cut to its first strip (the other fields of that patch left out), and replace
+   !> `name` by the copy.
+   subroutine damage_field(name, error)
+      character(len=*), intent(in) :: name
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type) :: src, out
+      type(lib_error), allocatable :: e
+      character(len=:), allocatable :: software, group, tangential
+      real(wp), allocatable :: pn(:, :)
+      integer, allocatable :: cases(:)
+      integer :: n_cases, k, stat
+      call h5_open(src, name, e)
+      if (.not. allocated(e)) call h5_read_attribute(src, '/', 'software', software, e)
+      if (.not. allocated(e)) call h5_read_attribute(src, '/', 'n_cases', n_cases, e)
+      if (.not. allocated(e)) call h5_read(src, 'summary/case', cases, e)
+      if (.not. allocated(e)) call h5_create(out, name//'.new', e)
+      if (.not. allocated(e)) call h5_write_attribute(out, '/', 'software', software, e)
+      if (.not. allocated(e)) call h5_write_attribute(out, '/', 'n_cases', n_cases, e)
+      if (.not. allocated(e)) call h5_copy(src, 'input', out, 'input', e)
+      if (.not. allocated(e)) call h5_copy(src, 'summary', out, 'summary', e)
+      if (.not. allocated(e) .and. h5_exists(src, 'geometry')) call h5_copy(src, 'geometry', &
+         out, 'geometry', e)
+      do k = 1, size(cases)
+         if (allocated(e)) exit
+         group = case_group_name(cases(k), n_cases)
+         if (k > 1) then
+            call h5_copy(src, group, out, group, e)
+            cycle
+         end if
+         tangential = group//'/patch_1/tangential'
+         call h5_make_group(out, tangential, e)
+         if (.not. allocated(e) .and. h5_exists(src, group//'/patch_1/normal')) call h5_copy( &
+            src, group//'/patch_1/normal', out, group//'/patch_1/normal', e)
+         if (.not. allocated(e)) call h5_copy(src, tangential//'/xy', out, tangential//'/xy', e)
+         if (.not. allocated(e)) call h5_copy(src, tangential//'/y', out, tangential//'/y', e)
+         if (.not. allocated(e)) call h5_read(src, tangential//'/pn', pn, e)
+         if (.not. allocated(e)) call h5_write(out, tangential//'/pn', pn(:, 1:1), 'MPa', e)
+      end do
+      call h5_close(src)
+      if (.not. allocated(e)) call h5_commit(out, e)
+      if (allocated(e)) then
+         call test_failed(error, 'cannot make the damaged file: '//e%message)
+         return
+      end if
+      call shell('mv -f '//name//'.new '//name, stat)
+      call check(error, stat, 0, message='replace '//name)
+   end subroutine damage_field
+
    !> No crash text (runtime error, backtrace, signal) on stderr.
    subroutine expect_clean(error, dir, what)
       type(error_type), allocatable, intent(out) :: error
@@ -179,7 +228,8 @@ contains
    end subroutine test_damaged_block
 
    !> Shards with a /summary column cut to one value (merge died with SIGSEGV on a 50 000-row
-   !> shard, read garbage on a small one) or holding texts: refused, no merged file.
+   !> shard, read garbage on a small one) or holding texts: refused, no merged file. A field of
+   !> the wrong shape (found when the sidecar is written) left the merged file: no longer.
    subroutine test_damaged_shard(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir
@@ -191,7 +241,8 @@ contains
       if (stat == 0) stat = run_program(dir, 'run sw.nml -q -o s.h5 --shard 2/2')
       call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
-      call shell('cp '//dir//'/s-shard2of2.h5 '//dir//'/t-shard2of2.h5')
+      call shell('cp '//dir//'/s-shard2of2.h5 '//dir//'/t-shard2of2.h5 && cp '//dir// &
+         '/s-shard2of2.h5 '//dir//'/v-shard2of2.h5')
       call damage(dir//'/s-shard2of2.h5', 'mz', 'cut', error)
       if (allocated(error)) return
       stat = run_program(dir, 'merge m.h5 s-shard1of2.h5 s-shard2of2.h5')
@@ -216,6 +267,22 @@ contains
       if (allocated(error)) return
       call check(error, .not. holds(dir, 'ls m.* > /dev/null 2>&1'), &
          message='no merged file from a shard with texts')
+      if (allocated(error)) return
+      ! A field of the wrong shape: found when the sidecar is written, after the merged file;
+      ! that file (written by this command) goes too.
+      call shell('cp '//dir//'/s-shard1of2.h5 '//dir//'/u-shard1of2.h5')
+      call damage_field(dir//'/u-shard1of2.h5', error)
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge m.h5 u-shard1of2.h5 v-shard2of2.h5')
+      call check(error, stat, 3, message='merge of a shard with a damaged field: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'pn does not have the shape of its '// &
+         'element grid', 'damaged field')
+      if (allocated(error)) return
+      call check(error, .not. holds(dir, 'ls m.* > /dev/null 2>&1'), &
+         message='no merged file from a shard with a damaged field: '// &
+         file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_damaged_shard
 

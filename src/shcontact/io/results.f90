@@ -47,6 +47,7 @@ module shcontact_io_results
    use shcontact_io_provenance, only: git_revision, build_compiler, build_flags, host_name, &
       available_threads
    use shcontact_io_xdmf, only: write_xdmf_sidecar
+   use shcontact_io_files, only: delete_file
    use shcontact_io_output_checks, only: check_output_file, check_layout
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_type, string_list_type
@@ -879,6 +880,10 @@ contains
          groups(i)%text = case_group_name(order(i), n_first)
       end do
       call write_xdmf_sidecar(output, order, groups, error)
+      ! No output from a failed command: the file this call has just written goes too.
+      if (allocated(error)) then
+         if (delete_file(output)) continue
+      end if
    end subroutine merge_result_files
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
