@@ -329,7 +329,11 @@ contains
             if (c_mkdir(dir//c_null_char, int(o'777', c_int)) == 0) then
                call lock_file(dir//'/'//lock_name, .true., unit, lock)
                state = folder_made
-               if (lock /= lock_taken) state = folder_cannot_create
+               if (lock /= lock_taken) then
+                  ! The folder this call made goes again.
+                  state = folder_cannot_create
+                  if (remove_directory(dir)) continue
+               end if
                return
             end if
             if (path_kind(dir) == 'none') then
