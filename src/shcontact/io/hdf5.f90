@@ -169,6 +169,13 @@ contains
       end if
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
+      if (access == H5F_ACC_EXCL_F .and. path_kind(file%temp_name) /= 'none') then
+         call fatal_error(error, 'cannot write "'//name//'": its temporary name "'// &
+            file%temp_name//'" is taken (by a file shcontact does not overwrite)', stat_io)
+         file%id = -1
+         file%temp_name = ''
+         return
+      end if
       call h5fcreate_f(file%temp_name, access, file%id, stat)
       if (stat /= 0) then
          file%id = -1
