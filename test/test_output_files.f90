@@ -468,6 +468,18 @@ contains
       stat = run_program(dir, 'run -q -o notes.h5 --force')
       call check(error, stat, 0, message='--force over a foreign output: '// &
          file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! merge: the same rule (a whole run's file is a valid single input).
+      call shell('echo mine > '//dir//'/notes2.h5')
+      stat = run_program(dir, 'merge notes2.h5 own.h5')
+      call check(error, stat, 3, message='merge over a foreign output: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/notes2.h5') == 'mine'//new_line('a'), &
+         message='merge: the foreign output is untouched')
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge notes2.h5 own.h5 --force')
+      call check(error, stat, 0, message='merge --force: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_own_files_replaced
 
