@@ -5,6 +5,7 @@ module shcontact_app_cli
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
    use shcontact_case_sweep, only: max_threads
+   use shcontact_io_files, only: control_character
    implicit none
    private
 
@@ -41,6 +42,9 @@ module shcontact_app_cli
       logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
+      !> run, merge --force: replace an output (or sidecar) that shcontact did not write, start
+      !> afresh in the work folder of an interrupted run.
+      logical :: force = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
@@ -187,6 +191,8 @@ contains
             cli%check = .true.
          case ('--resume')
             cli%resume = .true.
+         case ('--force')
+            cli%force = .true.
          case ('-q', '--quiet')
             cli%quiet = .true.
          case ('-v', '--verbose')
@@ -218,6 +224,8 @@ contains
          accepts = command == 'run' .or. command == 'geometry'
       case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
          accepts = command == 'run'
+      case ('--force')
+         accepts = command == 'run' .or. command == 'merge'
       case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &
             '--mirror-z')
          accepts = command == 'profiles'
@@ -302,7 +310,25 @@ contains
          if (cli%csv_units .and. cli%format /= 'csv') call fatal_error(error, &
             '--csv-units needs --format csv', stat_usage)
       end select
+      if (allocated(error)) return
+      if (cli%command == 'merge') then
+         call check_output_name(cli%inputs%items(1)%text, 'merge OUT.h5', error)
+      else if (cli%command == 'run') then
+         call check_output_name(cli%output, '-o', error)
+      end if
    end subroutine check_combination
+
+   !> An output name without control characters (a newline in `-o` was dropped on the way
+   !> and another file written).
+   subroutine check_output_name(name, what, error)
+      character(len=*), intent(in) :: name, what
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+      k = control_character(name)
+      if (k > 0) call fatal_error(error, what//' "'//name(1:k - 1)//'?'//name(k + 1:)// &
+         '": the name holds a control character (byte '//str_int(iachar(name(k:k)))// &
+         '); choose a name without one', stat_usage)
+   end subroutine check_output_name
 
    function argument(i) result(arg)
       integer, intent(in) :: i

@@ -100,6 +100,7 @@ contains
 
       options%threads = cli%threads
       options%resume = cli%resume
+      options%force = cli%force
       options%command_line = command_line()
       call choose_shard(cli, options%shard, options%n_shards, error)
       if (allocated(error)) then
@@ -219,7 +220,7 @@ contains
       type(error_type), allocatable :: error
       status = 0
       call merge_result_files(cli%inputs%items(1)%text, cli%inputs%items(2:cli%inputs%n), &
-         command_line(), iso_timestamp(), error)
+         command_line(), iso_timestamp(), error, force=cli%force)
       if (allocated(error)) then
          status = report_error(error)
          return

@@ -94,7 +94,11 @@ contains
          nl// &
          '                           (without --shard the Slurm variables are ignored)'//nl// &
          '  --resume                 complete an interrupted run from its checkpoint '// &
-         'OUT.h5.partial/'//nl//nl// &
+         'OUT.h5.partial/'//nl// &
+         '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
+         'write, or'//nl// &
+         '                           start afresh over an interrupted run''s checkpoint'// &
+         nl//nl// &
          'Progress goes to stderr: a bar on a terminal, else a line (cases done, rate, ETA)'// &
          nl// &
          'every 10 % of the cases or 10 s.'
@@ -109,6 +113,8 @@ contains
          'file of an unsharded run. The shards must come from the same configuration and'//nl// &
          'hold every case exactly once; OUT.h5 must not be one of them.'//nl//nl// &
          'Options:'//nl// &
+         '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
+         'write'//nl// &
          '  -q, --quiet              errors only on stderr'
    end function merge_help
 

@@ -32,6 +32,7 @@ program tester
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
    use test_app, only: collect_app
+   use test_output_files, only: collect_output_files
    use test_cli, only: collect_cli
    use test_api, only: collect_api
    use test_kinematics, only: collect_kinematics
@@ -72,6 +73,7 @@ program tester
       new_testsuite('config', collect_config), &
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app), &
+      new_testsuite('output_files', collect_output_files), &
       new_testsuite('cli', collect_cli), &
       new_testsuite('api', collect_api), &
       new_testsuite('kinematics', collect_kinematics), &

@@ -11,7 +11,7 @@
 module shcontact_io_hdf5
    use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_int, c_char, c_null_char
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
-      h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
+      h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
       H5P_DATASET_CREATE_F, H5P_LINK_CREATE_F, H5P_GROUP_CREATE_F, h5pset_chunk_f, &
       h5pset_deflate_f, h5pset_obj_track_times_f, h5pset_create_inter_group_f, h5screate_f, &
       h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, h5dcreate_f, h5dopen_f, h5dclose_f, &
@@ -21,10 +21,11 @@ module shcontact_io_hdf5
       H5T_NATIVE_INTEGER, H5T_STD_I8LE, H5T_STD_I32LE, H5T_IEEE_F64LE, h5kind_to_type, &
       H5_INTEGER_KIND, h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, &
       h5aexists_by_name_f, h5aget_type_f, h5gcreate_f, h5gclose_f, h5ocopy_f, h5lexists_f, &
-      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE, h5tget_class_f, H5T_FLOAT_F, h5adelete_f
+      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE, h5tget_class_f, H5T_FLOAT_F, h5adelete_f, &
+      H5T_INTEGER_F, H5T_STRING_F, h5tis_variable_str_f
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
-   use shcontact_io_files, only: rename_file, delete_file, process_id
+   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_core_strings, only: str_int
    implicit none
    private
@@ -152,19 +153,34 @@ contains
       character(len=*), intent(in), optional :: temp_name
       !> The description of each dataset, written as its `long_name` attribute.
       procedure(description_function), optional :: describe
-      integer :: stat
+      integer :: stat, access
 
       call start_library(error)
       if (allocated(error)) return
       if (present(describe)) file%describe => describe
       file%name = name
+      ! The default temporary name is created exclusively (a file of that name is never
+      ! overwritten); a given one is the caller's own name (e.g. in its work folder).
       file%temp_name = name//'.tmp'//str_int(process_id())
-      if (present(temp_name)) file%temp_name = temp_name
+      access = H5F_ACC_EXCL_F
+      if (present(temp_name)) then
+         file%temp_name = temp_name
+         access = H5F_ACC_TRUNC_F
+      end if
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
-      call h5fcreate_f(file%temp_name, H5F_ACC_TRUNC_F, file%id, stat)
+      if (access == H5F_ACC_EXCL_F .and. path_kind(file%temp_name) /= 'none') then
+         call fatal_error(error, 'cannot write "'//name//'": its temporary name "'// &
+            file%temp_name//'" is taken (by a file shcontact does not overwrite)', stat_io)
+         file%id = -1
+         file%temp_name = ''
+         return
+      end if
+      call h5fcreate_f(file%temp_name, access, file%id, stat)
       if (stat /= 0) then
          file%id = -1
+         ! Not ours: never removed by h5_discard.
+         file%temp_name = ''
          call fatal_error(error, 'cannot create the output file "'//name// &
             '" (is the directory there and writable?)', stat_io)
       end if
@@ -213,14 +229,19 @@ contains
       !> Set when it cannot be opened as HDF5.
       type(error_type), allocatable, intent(out) :: error
       integer :: stat
-      logical :: exists
+      character(len=:), allocatable :: kind
       call start_library(error)
       if (allocated(error)) return
       file%name = name
       file%temp_name = ''
-      inquire (file=name, exist=exists)
-      if (.not. exists) then
+      ! Only a regular file (opening a pipe would wait for a writer).
+      kind = path_kind(name, follow=.true.)
+      if (kind == 'none') then
          call fatal_error(error, 'cannot open "'//name//'": no such file', stat_io)
+         return
+      else if (kind /= 'file') then
+         call fatal_error(error, 'cannot open "'//name//'": it is a '//kind//', not a '// &
+            'regular file', stat_io)
          return
       end if
       call h5fopen_f(name, H5F_ACC_RDONLY_F, file%id, stat)
@@ -769,7 +790,7 @@ contains
    end function c_text
 
    !> Shape (Fortran order), element size in bytes and kind (float or not) of a dataset.
-   subroutine h5_dataset_info(file, path, dims, type_size, is_float, error)
+   subroutine h5_dataset_info(file, path, dims, type_size, is_float, error, type_class)
       !> The file.
       type(h5_file_type), intent(in) :: file
       !> Dataset path.
@@ -782,12 +803,16 @@ contains
       logical, intent(out) :: is_float
       !> Set when it does not exist or cannot be read.
       type(error_type), allocatable, intent(out) :: error
+      !> 'integer', 'float', 'text' (fixed-length strings), 'variable-length text' or 'other'.
+      character(len=:), allocatable, intent(out), optional :: type_class
       integer(hid_t) :: dset, space, dtype
       integer(hsize_t) :: d(8), maxd(8)
       integer(size_t) :: n
       integer :: stat, s, ndims, class
+      logical :: variable
       type_size = 0
       is_float = .false.
+      if (present(type_class)) type_class = 'other'
       allocate (dims(0))
       if (.not. h5_exists(file, path)) then
          call fail(error, file, path, 'no such dataset')
@@ -809,6 +834,16 @@ contains
       call h5tget_class_f(dtype, class, s)
       type_size = int(n)
       is_float = class == H5T_FLOAT_F
+      if (present(type_class)) then
+         if (class == H5T_INTEGER_F) type_class = 'integer'
+         if (class == H5T_FLOAT_F) type_class = 'float'
+         if (class == H5T_STRING_F) then
+            variable = .false.
+            call h5tis_variable_str_f(dtype, variable, s)
+            type_class = 'text'
+            if (variable) type_class = 'variable-length text'
+         end if
+      end if
       call h5tclose_f(dtype, s)
       call h5dclose_f(dset, s)
    end subroutine h5_dataset_info

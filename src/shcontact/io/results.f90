@@ -31,10 +31,7 @@
 !> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
 module shcontact_io_results
    use shcontact_core_kinds, only: wp, i1
-   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
-      stat_usage
-   use shcontact_core_textfile, only: is_directory
-   use shcontact_io_files, only: file_exists, canonical_path
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_version_info, only: shcontact_version
    use shcontact_profile_points, only: profile_type
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -50,6 +47,8 @@ module shcontact_io_results
    use shcontact_io_provenance, only: git_revision, build_compiler, build_flags, host_name, &
       available_threads
    use shcontact_io_xdmf, only: write_xdmf_sidecar
+   use shcontact_io_files, only: delete_file
+   use shcontact_io_output_checks, only: check_output_file, check_layout
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
@@ -667,6 +666,7 @@ contains
       end if
       call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
       if (.not. allocated(error)) call h5_read(file, 'input/namelist', config_text, error)
+      if (.not. allocated(error)) call check_layout(file, name, error)
       if (.not. allocated(error)) call h5_read(file, 'summary/case', indices, error)
       if (allocated(error)) then
          call h5_close(file)
@@ -716,7 +716,7 @@ contains
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
    subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
-                                 shard, temp_name, threads)
+                                 shard, temp_name, threads, force)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
@@ -733,6 +733,8 @@ contains
       character(len=*), intent(in), optional :: temp_name
       !> OpenMP threads of the run, recorded in the file (default: those available now).
       integer, intent(in), optional :: threads
+      !> Replace an output (or sidecar) that shcontact did not write ([[check_output_file]]).
+      logical, intent(in), optional :: force
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
@@ -752,7 +754,7 @@ contains
          call fatal_error(error, 'merge: no input files', stat_invalid_input)
          return
       end if
-      call check_output_file(output, error, inputs)
+      call check_output_file(output, error, inputs, force)
       if (allocated(error)) return
       n_first = 0
       n_fail = 0
@@ -878,56 +880,11 @@ contains
          groups(i)%text = case_group_name(order(i), n_first)
       end do
       call write_xdmf_sidecar(output, order, groups, error)
+      ! No output from a failed command: the file this call has just written goes too.
+      if (allocated(error)) then
+         if (delete_file(output)) continue
+      end if
    end subroutine merge_result_files
-
-   !> An output name that may be written: not a directory, not one of `inputs`, and not an
-   !> existing file other than a shcontact result file (which a new run replaces). Nothing that
-   !> is not ours is overwritten.
-   subroutine check_output_file(output, error, inputs)
-      !> The output file.
-      character(len=*), intent(in) :: output
-      !> stat_io (directory, foreign file) or stat_usage (also an input), naming the file.
-      type(error_type), allocatable, intent(out) :: error
-      !> Files read to make the output.
-      type(string_type), intent(in), optional :: inputs(:)
-      character(len=:), allocatable :: target
-      integer :: f
-      if (is_directory(output)) then
-         call fatal_error(error, 'cannot write the output "'//output//'": it is a directory', &
-            stat_io)
-         return
-      end if
-      if (.not. file_exists(output)) return
-      target = canonical_path(output)
-      if (present(inputs)) then
-         do f = 1, size(inputs)
-            if (canonical_path(inputs(f)%text) == target) then
-               call fatal_error(error, 'the output "'//output//'" is also an input; give '// &
-                  'a new name for the merged file', stat_usage)
-               return
-            end if
-         end do
-      end if
-      if (.not. is_result_file(output)) then
-         call fatal_error(error, 'the output "'//output//'" exists and is not a shcontact '// &
-            'result file; it is not overwritten (remove it or choose another name)', stat_io)
-      end if
-   end subroutine check_output_file
-
-   !> True for an HDF5 file written by shcontact.
-   function is_result_file(name) result(yes)
-      character(len=*), intent(in) :: name
-      logical :: yes
-      type(h5_file_type) :: file
-      type(error_type), allocatable :: error
-      character(len=:), allocatable :: software
-      yes = .false.
-      call h5_open(file, name, error)
-      if (allocated(error)) return
-      call h5_read_attribute(file, '/', 'software', software, error)
-      yes = .not. allocated(error)
-      call h5_close(file)
-   end function is_result_file
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)
