@@ -178,6 +178,9 @@ contains
       case ('xy'); text = 'element centres (x, y) interleaved: the mesh of the XDMF sidecar '// &
          '(ParaView)'
       case ('dx'); text = 'element length dx_i of each strip'
+      case ('element'); text = 'element index j along the strip, 0 at the leading edge: '// &
+         'dimension scale of the element dimension of the element fields'
+      case ('component'); text = 'the components (x, y) of xy: its dimension scale'
       case ('dy'); text = 'strip width'
       case ('pn'); text = 'normal pressure p_n on the element (semi-ellipsoidal)'
       case ('px'); text = 'longitudinal traction on the wheel'

@@ -228,16 +228,21 @@ contains
    end subroutine write_provenance
 
    !> Make `group/scale` a dimension scale and attach it to dimension `dim` of those datasets
-   !> of `names` that exist in the group.
-   subroutine attach_scale(file, group, scale, dimension_name, names, dim, error)
+   !> of `names` that exist in the group (their earlier attachments are dropped first, unless
+   !> `keep` is true: a second dimension of the same datasets).
+   subroutine attach_scale(file, group, scale, dimension_name, names, dim, error, keep)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: group, scale, dimension_name
       character(len=*), intent(in) :: names(:)
       integer, intent(in) :: dim
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: keep
       character(len=*), parameter :: scale_attributes(3) = [character(len=14) :: &
          'REFERENCE_LIST', 'CLASS', 'NAME']
       integer :: i
+      logical :: keep_attached
+      keep_attached = .false.
+      if (present(keep)) keep_attached = keep
       if (.not. h5_exists(file, group//'/'//scale)) return
       ! A group copied from another file keeps its attributes but not the objects their
       ! references point to: start afresh.
@@ -249,7 +254,8 @@ contains
       do i = 1, size(names)
          if (allocated(error)) return
          if (.not. h5_exists(file, group//'/'//trim(names(i)))) cycle
-         call h5_delete_attribute(file, group//'/'//trim(names(i)), 'DIMENSION_LIST', error)
+         if (.not. keep_attached) call h5_delete_attribute(file, group//'/'//trim(names(i)), &
+            'DIMENSION_LIST', error)
          if (.not. allocated(error)) call h5_attach_scale(file, group//'/'//trim(names(i)), &
             group//'/'//scale, dim, error)
       end do
@@ -270,16 +276,27 @@ contains
       if (.not. allocated(error)) call attach_field_scales(file, patch//'/tangential', error)
    end subroutine attach_patch_scales
 
-   !> Scales of the element fields of a tangential group: y on the strip dimension.
+   !> Scales of the element fields of a tangential group: y on the strip dimension (and dx's),
+   !> `element` on the element dimension, `component` on the first dimension of `xy` (every
+   !> dimension has its scale, so netCDF readers such as xarray open the group).
    subroutine attach_field_scales(file, path, error)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: error
       if (.not. h5_exists(file, path//'/xy')) return
       call attach_scale(file, path, 'y', 'strip (y, lateral)', element_fields, 2, error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'element', &
+         'element (j from the leading edge)', element_fields, 1, error, keep=.true.)
       if (allocated(error)) return
       call h5_delete_attribute(file, path//'/xy', 'DIMENSION_LIST', error)
       if (.not. allocated(error)) call h5_attach_scale(file, path//'/xy', path//'/y', 3, error)
+      if (.not. allocated(error)) call h5_delete_attribute(file, path//'/dx', 'DIMENSION_LIST', &
+         error)
+      if (.not. allocated(error)) call h5_attach_scale(file, path//'/dx', path//'/y', 1, error)
+      if (.not. allocated(error) .and. h5_exists(file, path//'/element')) &
+         call h5_attach_scale(file, path//'/xy', path//'/element', 2, error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'component', 'x, y', &
+         [character(len=2) :: 'xy'], 1, error, keep=.true.)
    end subroutine attach_field_scales
 
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
@@ -596,8 +613,9 @@ contains
 
    !> The element grid of the fields: `xy`, the element centres (x, y) interleaved (the mesh
    !> geometry of the XDMF sidecar: ParaView's XDMF reader wants the coordinates of a point
-   !> together), y as the dimension scale of the strip dimension of every field, the element
-   !> dimension labelled, and a `coordinates` attribute (x, y) on every field.
+   !> together), y as the dimension scale of the strip dimension of every field, `element`
+   !> (j = 0, 1, ...) that of the element dimension, `component` ('x', 'y') that of xy's first,
+   !> every dimension labelled, and a `coordinates` attribute (x, y) on every field.
    subroutine write_field_grid(file, path, t, error)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
@@ -611,6 +629,10 @@ contains
       xy(1, :, :) = t%x
       xy(2, :, :) = spread(t%y, 1, size(t%x, 1))
       call h5_write(file, path//'/xy', xy, 'mm', error, compress=.true.)
+      if (.not. allocated(error)) call h5_write(file, path//'/element', &
+         [(i - 1, i = 1, size(t%x, 1))], '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/component', &
+         [character(len=1) :: 'x', 'y'], error)
       if (.not. allocated(error)) call attach_field_scales(file, path, error)
       if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 1, 'x, y', error)
       if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 2, &
