@@ -80,7 +80,7 @@ class ResultFile:
         """{'wheel': (n, 2) array, 'rail': (n, 2) array} of (y, z) in mm, as used."""
         with self._open() as f:
             group = f.get("input/profiles", {})
-            return {name: group[name][()] for name in group}
+            return {name: group[name][()] for name in ("wheel", "rail") if name in group}
 
     def summary(self):
         """The /summary table: dict of column name to a 1-D array over the cases of the file

@@ -19,7 +19,8 @@ def test_summary_equals_csv(run_app):
     assert "&kinematics" in f.namelist
     assert f.failures()["case"].size == 0
     assert f.cases() == list(range(1, 35))
-    assert set(f.profiles()) == {"wheel", "rail"}
+    profiles = f.profiles()
+    assert set(profiles) == {"wheel", "rail"} and profiles["rail"].shape[1] == 2
 
 
 def test_fields_of_a_case(run_app):
@@ -57,22 +58,22 @@ def test_to_xarray(run_app):
 
 def test_xarray_opens_every_group(run_app):
     """Every dimension has its HDF5 dimension scale, so xarray (h5netcdf) opens every group of
-    the file: the tangential groups used to fail with "mixing of labeled and unlabeled
-    dimensions"."""
+    the file with named dimensions: the tangential groups used to fail with "mixing of labeled
+    and unlabeled dimensions", the profiles got phony dimensions."""
     xr = pytest.importorskip("xarray")
     pytest.importorskip("h5netcdf")
     import h5py
     path, _ = run_app("ksweep", "examples/kinematic_sweep.nml", "--set", "output%fields=all")
     groups = []
     with h5py.File(path) as f:
-        f.visititems(lambda name, obj: groups.append(name)
-                     if isinstance(obj, h5py.Group) and not name.startswith("input") else None)
-        # Every dimension of every dataset outside /input has a scale.
+        f.visititems(lambda name, obj: groups.append(name) if isinstance(obj, h5py.Group)
+                     else None)
+        # Every dimension of every dataset has a scale.
         unscaled = []
         f.visititems(lambda name, obj: unscaled.extend(
             f"{name}[{k}]" for k, dim in enumerate(obj.dims) if len(dim) == 0)
-            if isinstance(obj, h5py.Dataset) and not name.startswith("input")
-            and obj.attrs.get("CLASS") != b"DIMENSION_SCALE" else None)
+            if isinstance(obj, h5py.Dataset) and obj.attrs.get("CLASS") != b"DIMENSION_SCALE"
+            else None)
     assert unscaled == []
     # Opening is slow (~0.4 s a group): the groups outside /cases, and those of two cases, one
     # of them with two loaded patches (cases 19 to 22 of this sweep).
@@ -86,3 +87,5 @@ def test_xarray_opens_every_group(run_app):
                 assert ds["state"].dims == ("y", "element")
             if group == "summary":
                 assert ds["fx"].dims == ("case",)
+            if group == "input/profiles":
+                assert ds["wheel"].dims == ("wheel_point", "column")

@@ -56,6 +56,9 @@ contains
          case ('namelist'); text = 'the resolved configuration of the run, as namelist text'
          case ('wheel'); text = 'wheel profile used, (y, z) points in profile coordinates'
          case ('rail'); text = 'rail profile used, (y, z) points in profile coordinates'
+         case ('wheel_point', 'rail_point'); text = 'index of the profile point (0, 1, ...): '// &
+            'dimension scale of the points of the profile'
+         case ('column'); text = 'the columns (y, z) of the profiles: their dimension scale'
          case default; text = ''
          end select
       case default

@@ -7,7 +7,8 @@
 !>                           sign_convention, n_cases (cases of the whole run), cases_in_file
 !>                           (and shard = 'I/N' in a shard file)
 !>     /input/namelist       the resolved configuration (namelist text)
-!>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`
+!>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`; scales
+!>                           wheel_point, rail_point, column
 !>     /geometry/patch_K/... the patch geometry tables, when every case shares them
 !>     /summary/...          one row per case: case, status, n_patches (found), n_loaded
 !>                           (solved; /cases/.../patch_1..n_loaded), main_patch, a column
@@ -177,6 +178,9 @@ contains
                info%profiles(k), error)
             if (allocated(error)) return
          end do
+         call h5_write(file, 'input/profiles/column', [character(len=1) :: 'y', 'z'], error)
+         if (.not. allocated(error)) call attach_profile_scales(file, error)
+         if (allocated(error)) return
       end if
       if (allocated(info%geometry)) then
          do k = 1, size(info%geometry)
@@ -300,6 +304,20 @@ contains
          [character(len=2) :: 'xy'], 1, error, keep=.true.)
    end subroutine attach_field_scales
 
+   !> Scales of the profiles (n, 2) under /input/profiles: `column` ('y', 'z') and the point
+   !> indices `wheel_point`, `rail_point` (0, 1, ...); again after a copy between files.
+   subroutine attach_profile_scales(file, error)
+      type(h5_file_type), intent(in) :: file
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: group = 'input/profiles'
+      call attach_scale(file, group, 'column', 'y, z', [character(len=5) :: 'wheel', 'rail'], &
+         1, error)
+      if (.not. allocated(error)) call attach_scale(file, group, 'wheel_point', &
+         'point of the wheel profile', ['wheel'], 2, error, keep=.true.)
+      if (.not. allocated(error)) call attach_scale(file, group, 'rail_point', &
+         'point of the rail profile', ['rail'], 2, error, keep=.true.)
+   end subroutine attach_profile_scales
+
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
    subroutine write_profile(file, path, profile, error)
       type(h5_file_type), intent(in) :: file
@@ -307,7 +325,7 @@ contains
       type(profile_type), intent(in) :: profile
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: yz(:, :)
-      integer :: n
+      integer :: n, i
       n = profile%size()
       allocate (yz(2, n))
       if (n > 0) then
@@ -315,6 +333,8 @@ contains
          yz(2, :) = profile%z
       end if
       call h5_write(file, path, yz, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'_point', [(i - 1, i = 1, n)], '1', &
+         error)
       if (allocated(error)) return
       call h5_write_attribute(file, path, 'columns', 'y (lateral, to the field side), '// &
          'z (vertical, positive downward)', error)
@@ -847,6 +867,7 @@ contains
       call h5_open(src, inputs(1)%text, error)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
       if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
+      if (.not. allocated(error)) call attach_profile_scales(out, error)
       if (.not. allocated(error) .and. h5_exists(src, 'geometry')) then
          call h5_copy(src, 'geometry', out, 'geometry', error)
          k = 1
