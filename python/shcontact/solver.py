@@ -61,10 +61,7 @@ class Contact:
 
     def __init__(self, wheel="builtin:S1002", rail="builtin:UIC60", side="right", *,
                  material=None, track=None, options=None, fields=False, library=None):
-        self._lib = load_library(library)
-        self._handle = ctypes.c_void_p()
-        self._fields = False
-        self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
+        self._start(library)
         self._check(self._lib.shcontact_create(ctypes.byref(self._handle), wheel.encode(),
                                                rail.encode(), self._side(side)))
         self._configure(material, track, options, fields)
@@ -76,10 +73,7 @@ class Contact:
         of ``shcontact_create_arrays``: y towards the field side, z down; the wheel from the field
         side to the flange back, the rail from the track centre to the field side)."""
         self = cls.__new__(cls)
-        self._lib = load_library(library)
-        self._handle = ctypes.c_void_p()
-        self._fields = False
-        self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
+        self._start(library)
         wy, pwy = _c_double_array(wheel_y)
         wz, pwz = _c_double_array(wheel_z)
         ry, pry = _c_double_array(rail_y)
@@ -93,6 +87,12 @@ class Contact:
         return self
 
     # --- set-up --------------------------------------------------------------------------------
+
+    def _start(self, library):
+        self._lib = load_library(library)
+        self._handle = ctypes.c_void_p()
+        self._fields = False
+        self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
 
     @staticmethod
     def _side(side):
@@ -126,8 +126,9 @@ class Contact:
                             f"expected {sorted(DEFAULT_TRACK)}")
         t = dict(DEFAULT_TRACK, **track)
         self._check(self._lib.shcontact_set_track(
-            self._ptr(), t["gauge"], t["gauge_height"], t["inclination"], int(bool(t["rail_canted"])),
-            t["flange_back_distance"], t["flange_back_position"], t["nominal_radius"]))
+            self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
+            int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
+            t["nominal_radius"]))
         self._nominal_radius = float(t["nominal_radius"])
 
     def set_option(self, key, value):

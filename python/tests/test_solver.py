@@ -146,3 +146,25 @@ def test_errors(contact):
         shcontact.Contact().fields()
     with pytest.raises(shcontact.ShcontactError):
         contact.set_option("no%such", "option")
+
+
+def test_material_track_and_options():
+    """The set-up calls reach the library: the defaults given again change nothing, other
+    values change what they should."""
+    with shcontact.Contact() as c:
+        base = c.solve(T_Y, **HEADLINE)
+        c.set_material()
+        c.set_track()
+        again = c.solve(T_Y, **HEADLINE)
+        assert all(again[key] == base[key] for key in layout.RESULT)
+        c.set_material(friction=0.2)
+        # Friction bounds the traction: |f| <= 1 relative to mu F_n with the new mu.
+        low = c.solve(T_Y, **HEADLINE)
+        assert abs(low["fx"]) < abs(base["fx"])
+        assert np.hypot(low["fx"], low["fy"]) <= 0.2 * low["fn"] * (1 + 1e-12)
+        c.set_track(inclination=1.0 / 20.0)
+        assert c.solve(T_Y, **HEADLINE)["gamma0"] != low["gamma0"]
+    with shcontact.Contact(options={"tangential%bound": "clipped"}) as c:
+        assert c.solve(T_Y, **HEADLINE)["fx"] != base["fx"]
+    with pytest.raises(TypeError, match="unknown keyword"):
+        shcontact.Contact(track={"gage": 1435.0})
