@@ -24,8 +24,9 @@
 !> their `y`, the element fields (pn, px, py, slip, state, x, xy) to the strip centres `y`
 !> along their strip dimension and to `element` along the other (xy's components to
 !> `component`): every dimension has its scale (xarray opens the groups). Every dimension is
-!> labelled, and the fields' `coordinates` attribute names x (2-D) and y. `xy` holds the element centres (x, y) interleaved, the mesh
-!> of the XDMF sidecar. The root also records provenance:
+!> labelled, and the fields' `coordinates` attribute names x (2-D) and y. `xy` holds the
+!> element centres (x, y) interleaved, the mesh of the XDMF sidecar. The root also records
+!> provenance:
 !> git_revision, compiler, compiler_options, host, threads (shcontact_io_provenance).
 !> The final file of a run (a merge) gets an XDMF sidecar NAME.xmf (shcontact_io_xdmf) when it
 !> holds element fields, so ParaView opens them directly. A merge
