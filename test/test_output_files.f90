@@ -151,6 +151,8 @@ contains
             src, group//'/patch_1/normal', out, group//'/patch_1/normal', e)
          if (.not. allocated(e)) call h5_copy(src, tangential//'/xy', out, tangential//'/xy', e)
          if (.not. allocated(e)) call h5_copy(src, tangential//'/y', out, tangential//'/y', e)
+         if (.not. allocated(e) .and. h5_exists(src, tangential//'/dx')) call h5_copy(src, &
+            tangential//'/dx', out, tangential//'/dx', e)
          if (.not. allocated(e)) call h5_read(src, tangential//'/pn', pn, e)
          if (.not. allocated(e)) call h5_write(out, tangential//'/pn', pn(:, 1:1), 'MPa', e)
       end do
