@@ -35,8 +35,10 @@ contains
       type(error_type), allocatable :: error
       type(cli_type) :: plain
       real(wp) :: reach
+      integer :: n_rows
 
       status = 0
+      n_rows = 0
       plain = cli
       plain%output = ''
       call configure(plain, config, error)
@@ -60,6 +62,7 @@ contains
             return
          end if
          call print_table(table)
+         n_rows = size(table)
       end if
       if (allocated(cli%amplitudes)) then
          reach = maxval(cli%amplitudes) + conicity_margin
@@ -70,9 +73,10 @@ contains
             return
          end if
          call print_conicity(table, cli%amplitudes, status)
+         n_rows = n_rows + size(table)
       end if
       if (.not. cli%quiet .and. status == 0) write (error_unit, '(a)') 'shcontact: wheelset '// &
-         'geometry of '//str_int(size(table))//' lateral shift(s) computed'
+         'geometry at '//str_int(n_rows)//' lateral shift(s) computed'
    end function wheelset_command
 
    !> y_min, y_min + step, ... up to y_max (included when it lies on the grid to 1e-9 mm).
@@ -91,12 +95,12 @@ contains
       write (output_unit, '(a)') '# per wheel (R right, L left): contact point on the rail '// &
          '(track y, from the track centre line), on the wheel (wheel profile y), rolling '// &
          'radius, contact angle (side frame, < 0 on the tread), number of contact patches'
-      write (output_unit, '(a)') '#    y_mm  roll_mrad    z_ws_mm  rail_yR_mm  rail_yL_mm  '// &
-         'wheel_yR_mm  wheel_yL_mm      r_R_mm      r_L_mm    dr_mm  gamma_R_rad  '// &
-         'gamma_L_rad  n_R  n_L'
+      write (output_unit, '(a)') '#    y_mm  roll_mrad    z_ws_mm  rail_yR_mm  rail_yL_mm  whe'// &
+         'el_yR_mm  wheel_yL_mm      r_R_mm      r_L_mm      dr_mm  ga'// &
+         'mma_R_rad  gamma_L_rad  n_R  n_L'
       do i = 1, size(table)
          associate (t => table(i))
-            write (output_unit, '(f9.3,f11.5,f11.5,2f12.4,2f13.4,2f12.5,f9.5,2f13.6,2i5)') &
+            write (output_unit, '(f9.3,2(1x,f10.5),2(1x,f11.4),2(1x,f12.4),2(1x,f11.5),1x,f10.5,2(1x,f12.6),2i5)') &
                t%y, 1.0e3_wp*t%roll, t%z_centre, t%rail_y, t%wheel_y, t%radius, t%delta_r(), &
                t%gamma, t%patches
          end associate

@@ -307,12 +307,37 @@ contains
             tan_en <= secant_max + 1.0e-6_wp, 'conicity within the secant slopes')
          if (allocated(error)) return
       end do
+      ! The contact jumps doc/geometry.md describes: Δr steps by > 0.3 mm first between 0.2 and
+      ! 0.3 mm, by > 1 mm between 4.8 and 4.9 mm; the flange (γ < −1 rad) from 6.3 mm.
+      call check(error, first_y(0.3_wp, 0.0_wp), 0.2_wp, thr=1.0e-9_wp, message='central jump')
+      if (allocated(error)) return
+      call check(error, first_y(1.0_wp, 0.0_wp), 4.8_wp, thr=1.0e-9_wp, message='flange root')
+      if (allocated(error)) return
+      call check(error, first_y(huge(1.0_wp), -1.0_wp), 6.3_wp, thr=1.0e-9_wp, message='flange')
+      if (allocated(error)) return
       ! σ of a rigid roll about the contact points: positive, below the conicity's order.
       call check(error, roll_angle_parameter(table, 3.0_wp) > 0.0_wp .and. &
          roll_angle_parameter(table, 3.0_wp) < 0.1_wp, 'roll-angle parameter')
       if (allocated(error)) return
       call check(error, contact_distance(table), 1506.5_wp, thr=0.1_wp, &
          message='contact-point distance e0 at y = 0')
+   contains
+      !> The first y ≥ 0 of the table after which Δr steps by more than `step` (mm), or, with
+      !> `step` = huge, the first y whose right contact angle is below `gamma` (rad).
+      real(wp) function first_y(step, gamma) result(y)
+         real(wp), intent(in) :: step, gamma
+         integer :: j
+         y = huge(1.0_wp)
+         do j = i0, n - 1
+            if (step < huge(1.0_wp)) then
+               if (table(j + 1)%delta_r() - table(j)%delta_r() <= step) cycle
+            else
+               if (table(j)%gamma(1) >= gamma) cycle
+            end if
+            y = table(j)%y
+            return
+         end do
+      end function first_y
    end subroutine test_s1002_bounds
 
    !> The Manchester benchmark's sampled S1002 and pre-canted UIC60 files give the built-in
@@ -361,9 +386,13 @@ contains
       if (allocated(error)) return
       text = file_text(dir//'/out.txt')
       ! doc/geometry.md, "Wheelset contact geometry and equivalent conicity".
-      call expect_in(error, text, '    3.000   -0.18368 -459.90953    739.9802   -757.3659     '// &
-         '-13.1044      10.4504   460.78061   459.78664  0.99397    -0.092203    -0.010576'// &
-         '    1    1', 'row y = 3 mm')
+      call expect_in(error, text, '    3.000   -0.18368 -459.90953    739.9802   -757.3659'// &
+         '     -13.1044      10.4504   460.78061   459.78664    0.99397    -0.092203'// &
+         '    -0.010576    1    1', 'row y = 3 mm')
+      if (allocated(error)) return
+      call expect_in(error, text, '    6.000   -0.65102 -460.23731    725.0611   -758.1122'// &
+         '     -31.2411      14.4117   464.42744   459.74957    4.67787    -0.423583'// &
+         '    -0.008088    1    1', 'row y = 6 mm')
       if (allocated(error)) return
       call expect_in(error, text, '         3.000              0.18360               0.18511'// &
          '         8.631      0.04500', 'conicity at 3 mm')
