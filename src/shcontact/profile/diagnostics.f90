@@ -221,7 +221,8 @@ contains
 
    !> Lateral distance (mm) from the crown's highest point (vertex of a parabola fitted to the
    !> points within 0.5 mm of the top) to the gauge point 14 mm below it, walking from the top
-   !> towards the first point; ok = .false. when the profile does not reach that deep there.
+   !> towards the first point; ok = .false. when the profile does not reach that deep there or
+   !> does not fall by 0.5 mm on both sides of its highest point.
    pure subroutine head_offset(y, z, offset, ok)
       !> Rail points (mm, z down), gauge side first.
       real(wp), intent(in) :: y(:), z(:)
@@ -243,6 +244,8 @@ contains
          if (z(last + 1) > z(top) + crown_depth) exit
          last = last + 1
       end do
+      ! A crown falls away on both sides; a top at the end of the points is no crown.
+      if (first == 1 .or. last == size(z)) return
       y_top = y(top)
       z_top = z(top)
       if (last - first >= 4) then
