@@ -3,6 +3,7 @@
 !> and the smoothing length it calls for.
 module shcontact_app_profile_advice
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_format
    use shcontact_profile_points, only: profile_type, profile_kind_wheel
    use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
@@ -39,21 +40,21 @@ contains
          text = 'cant       not estimated (no crown with a gauge face 14 mm below it)'
          return
       end if
-      evidence = ' (crown top '//fmt(cant%offset, '(f0.1)')//' mm from the gauge point; '// &
-         'upright 60E1 head: '//fmt(cant%offset_upright, '(f0.1)')//' mm)'
+      evidence = ' (crown top '//str_format(cant%offset, '(f0.1)')//' mm from the gauge point; '// &
+         'upright 60E1 head: '//str_format(cant%offset_upright, '(f0.1)')//' mm)'
       if (cant%slope >= upright_band) then
          text = 'cant       the rail head looks inclined by about 1:'// &
-            fmt(1.0_wp/cant%slope, '(f0.0)')//' towards the track centre'//evidence// &
+            str_format(1.0_wp/cant%slope, '(f0.0)')//' towards the track centre'//evidence// &
             ': the points look already canted; set the rail cant with track%rail_canted '// &
             '= .true. (--set track%rail_canted=.true.) so that rail_inclination is not '// &
             'applied again'
       else if (cant%slope <= -upright_band) then
          text = 'cant       the rail head looks inclined by about 1:'// &
-            fmt(-1.0_wp/cant%slope, '(f0.0)')//' away from the track centre'//evidence// &
+            str_format(-1.0_wp/cant%slope, '(f0.0)')//' away from the track centre'//evidence// &
             ': check the side (--mirror-y) and the measurement'
       else
          text = 'cant       the rail head looks upright (inclination below 1:'// &
-            fmt(1.0_wp/upright_band, '(f0.0)')//')'//evidence//': keep track%rail_canted '// &
+            str_format(1.0_wp/upright_band, '(f0.0)')//')'//evidence//': keep track%rail_canted '// &
             '= .false.; the track''s rail_inclination (1:40 by default) sets the rail cant'
       end if
    end function cant_line
@@ -72,30 +73,19 @@ contains
       variable = 'profiles%rail_smoothing'
       if (kind == profile_kind_wheel) variable = 'profiles%wheel_smoothing'
       l_filt = suggested_smoothing(noise%sigma, noise%spacing)
-      text = 'noise      '//fmt(noise%sigma, '(es9.2)')//' mm rms normal to the profile '// &
-         '(cubic fits over 7 points), point spacing '//fmt(noise%spacing, '(f0.2)')//' mm'// &
+      text = 'noise      '//str_format(noise%sigma, '(es9.2)')//' mm rms normal to the profile '// &
+         '(cubic fits over 7 points), point spacing '//str_format(noise%spacing, '(f0.2)')//' mm'// &
          new_line('a')
       if (l_filt < negligible_smoothing) then
          text = text//'smoothing  not needed: the curvature noise is below '// &
-            fmt(default_curvature_tolerance, '(es8.1)')//' 1/mm already with L_filt = '// &
-            fmt(l_filt, '(f0.2)')//' mm (doc/profiles.md)'
+            str_format(default_curvature_tolerance, '(es8.1)')//' 1/mm already with L_filt = '// &
+            str_format(l_filt, '(f0.2)')//' mm (doc/profiles.md)'
       else
-         text = text//'smoothing  '//variable//' = '//fmt(l_filt, '(f0.1)')//' mm keeps the '// &
-            'curvature noise below '//fmt(default_curvature_tolerance, '(es8.1)')// &
-            ' 1/mm (10 % of a 300 mm crown; '//fmt(curvature_noise(noise%sigma, &
+         text = text//'smoothing  '//variable//' = '//str_format(l_filt, '(f0.1)')//' mm keeps the '// &
+            'curvature noise below '//str_format(default_curvature_tolerance, '(es8.1)')// &
+            ' 1/mm (10 % of a 300 mm crown; '//str_format(curvature_noise(noise%sigma, &
             noise%spacing, 2.0_wp), '(es8.1)')//' 1/mm at 2 mm); doc/profiles.md'
       end if
    end function noise_lines
-
-   function fmt(x, form) result(text)
-      real(wp), intent(in) :: x
-      character(len=*), intent(in) :: form
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      write (buf, form) x
-      text = trim(adjustl(buf))
-      if (text(len(text):len(text)) == '.') text = text(:len(text) - 1)
-      if (text(1:1) == '.') text = '0'//text
-   end function fmt
 
 end module shcontact_app_profile_advice

@@ -5,7 +5,7 @@ module shcontact_app_wheelset
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, str_format
    use shcontact_io_config, only: case_config_type
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_geometry_wheelset_table, only: wheelset_contact_type, &
@@ -22,6 +22,9 @@ module shcontact_app_wheelset
    !> Step of the internal table the conicity is computed on (mm), and its margin beyond the
    !> largest amplitude (mm; the motion's centre may move off y = 0 on asymmetric pairs).
    real(wp), parameter :: conicity_step = 0.05_wp, conicity_margin = 2.0_wp
+   !> One row of the contact table (the widths of the header's columns).
+   character(len=*), parameter :: row_format = '(f9.3,2(1x,f10.5),2(1x,f11.4),2(1x,f12.4),'// &
+      '2(1x,f11.5),1x,f10.5,2(1x,f12.6),2i5)'
 
 contains
 
@@ -49,9 +52,10 @@ contains
       end if
       write (output_unit, '(a)') '# wheelset contact geometry: wheel '// &
          trim(config%profiles%wheel)//', rail '//trim(config%profiles%rail)//'; gauge '// &
-         num(setup%prepared%track%gauge, '(f0.2)')//' mm, flange-back distance '// &
-         num(setup%prepared%track%flange_back_distance, '(f0.2)')//' mm, rail inclination '// &
-         num(setup%prepared%track%rail_inclination, '(f0.4)')// &
+         str_format(setup%prepared%track%gauge, '(f0.2)')//' mm, flange-back distance '// &
+         str_format(setup%prepared%track%flange_back_distance, '(f0.2)')// &
+         ' mm, rail inclination '// &
+         str_format(setup%prepared%track%rail_inclination, '(f0.4)')// &
          trim(merge(' (profile already canted)', '                         ', &
          setup%prepared%track%rail_canted))
       if (cli%wheelset_given) then
@@ -100,7 +104,7 @@ contains
          'mma_R_rad  gamma_L_rad  n_R  n_L'
       do i = 1, size(table)
          associate (t => table(i))
-            write (output_unit, '(f9.3,2(1x,f10.5),2(1x,f11.4),2(1x,f12.4),2(1x,f11.5),1x,f10.5,2(1x,f12.6),2i5)') &
+            write (output_unit, row_format) &
                t%y, 1.0e3_wp*t%roll, t%z_centre, t%rail_y, t%wheel_y, t%radius, t%delta_r(), &
                t%gamma, t%patches
          end associate
@@ -122,7 +126,7 @@ contains
       r0 = centre_radius(table)
       write (output_unit, '(a)') '# equivalent conicity: EN 15302 (wavelength of the '// &
          'kinematic motion) and first-harmonic balance of dr; Klingel wavelength with '// &
-         'e0 = '//num(e0, '(f0.2)')//' mm, r0 = '//num(r0, '(f0.3)')//' mm; roll-angle '// &
+         'e0 = '//str_format(e0, '(f0.2)')//' mm, r0 = '//str_format(r0, '(f0.3)')//' mm; roll-angle '// &
          'parameter sigma (roll = -sigma*y/(e0/2), first harmonic)'
       write (output_unit, '(a)') '# amplitude_mm  tan_gamma_e_EN15302  tan_gamma_e_harmonic  '// &
          'wavelength_m        sigma'
@@ -139,15 +143,5 @@ contains
             roll_angle_parameter(table, amplitudes(k))
       end do
    end subroutine print_conicity
-
-   !> A number as text in a format.
-   function num(x, fmt) result(text)
-      real(wp), intent(in) :: x
-      character(len=*), intent(in) :: fmt
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      write (buf, fmt) x
-      text = trim(adjustl(buf))
-   end function num
 
 end module shcontact_app_wheelset

@@ -100,8 +100,8 @@ contains
       real(wp), intent(in) :: y(:), z(:)
       real(wp), intent(out) :: variance
       logical, intent(out) :: ok
-      real(wp) :: c, s, length, xi(size(y)), zeta(size(y)), a(4, 4), b(4), coef(4), basis(4)
-      integer :: i, j
+      real(wp) :: c, s, length, xi(size(y)), zeta(size(y)), coef(4)
+      integer :: i
       variance = 0.0_wp
       length = hypot(y(size(y)) - y(1), z(size(z)) - z(1))
       ok = length > 0.0_wp
@@ -112,16 +112,7 @@ contains
       zeta = -s*(y - y(1)) + c*(z - z(1))
       ok = all(xi(2:) > xi(:size(xi) - 1))
       if (.not. ok) return
-      a = 0.0_wp
-      b = 0.0_wp
-      do i = 1, size(y)
-         basis = [1.0_wp, xi(i), xi(i)**2, xi(i)**3]
-         do j = 1, 4
-            a(:, j) = a(:, j) + basis*basis(j)
-         end do
-         b = b + basis*zeta(i)
-      end do
-      call solve4(a, b, coef, ok)
+      call polynomial_fit(xi, zeta, coef, ok)
       if (.not. ok) return
       do i = 1, size(y)
          variance = variance + (zeta(i) - (coef(1) + xi(i)*(coef(2) + xi(i)*(coef(3) + &
@@ -130,33 +121,45 @@ contains
       variance = variance/real(size(y) - 4, wp)
    end subroutine window_variance
 
-   !> Gaussian elimination with partial pivoting for the 4×4 normal equations.
-   pure subroutine solve4(a_in, b_in, x, ok)
-      real(wp), intent(in) :: a_in(4, 4), b_in(4)
-      real(wp), intent(out) :: x(4)
+   !> Least-squares polynomial f ≈ Σ coef(k) x^(k−1) of degree size(coef) − 1 (normal
+   !> equations, Gaussian elimination with partial pivoting; a few coefficients only);
+   !> ok = .false. when they are singular.
+   pure subroutine polynomial_fit(x, f, coef, ok)
+      real(wp), intent(in) :: x(:), f(:)
+      real(wp), intent(out) :: coef(:)
       logical, intent(out) :: ok
-      real(wp) :: a(4, 4), b(4), row(4), t, f
-      integer :: k, p, i
-      a = a_in
-      b = b_in
-      x = 0.0_wp
+      real(wp) :: a(size(coef), size(coef)), b(size(coef)), basis(size(coef)), row(size(coef)), &
+         t, factor, scale
+      integer :: i, k, p, n
+      n = size(coef)
+      a = 0.0_wp
+      b = 0.0_wp
+      do i = 1, size(x)
+         basis = [(x(i)**(k - 1), k=1, n)]
+         do k = 1, n
+            a(:, k) = a(:, k) + basis*basis(k)
+         end do
+         b = b + basis*f(i)
+      end do
+      coef = 0.0_wp
       ok = .false.
-      do k = 1, 4
+      scale = maxval(abs(a))
+      do k = 1, n
          p = k - 1 + maxloc(abs(a(k:, k)), 1)
-         if (.not. abs(a(p, k)) > 1.0e-14_wp*maxval(abs(a_in))) return
+         if (.not. abs(a(p, k)) > 1.0e-14_wp*scale) return
          row = a(k, :); a(k, :) = a(p, :); a(p, :) = row
          t = b(k); b(k) = b(p); b(p) = t
-         do i = k + 1, 4
-            f = a(i, k)/a(k, k)
-            a(i, :) = a(i, :) - f*a(k, :)
-            b(i) = b(i) - f*b(k)
+         do i = k + 1, n
+            factor = a(i, k)/a(k, k)
+            a(i, :) = a(i, :) - factor*a(k, :)
+            b(i) = b(i) - factor*b(k)
          end do
       end do
-      do k = 4, 1, -1
-         x(k) = (b(k) - dot_product(a(k, k + 1:), x(k + 1:)))/a(k, k)
+      do k = n, 1, -1
+         coef(k) = (b(k) - dot_product(a(k, k + 1:), coef(k + 1:)))/a(k, k)
       end do
       ok = .true.
-   end subroutine solve4
+   end subroutine polynomial_fit
 
    !> Curvature noise (1/mm, rms) left by smoothing white noise σ at spacing h with L_filt.
    elemental real(wp) function curvature_noise(sigma, spacing, l_filt) result(sigma_kappa)
@@ -229,8 +232,8 @@ contains
       !> The distance (mm).
       real(wp), intent(out) :: offset
       logical, intent(out) :: ok
-      real(wp) :: y_top, z_top, level, a(3, 3), b(3), basis(3), t, y0
-      integer :: top, first, last, i, j
+      real(wp) :: y_top, z_top, level, basis(3), t, y0
+      integer :: top, first, last, i
       offset = 0.0_wp
       ok = .false.
       top = minloc(z, 1)
@@ -250,16 +253,7 @@ contains
       z_top = z(top)
       if (last - first >= 4) then
          y0 = y(top)
-         a = 0.0_wp
-         b = 0.0_wp
-         do i = first, last
-            basis = [1.0_wp, y(i) - y0, (y(i) - y0)**2]
-            do j = 1, 3
-               a(:, j) = a(:, j) + basis*basis(j)
-            end do
-            b = b + basis*z(i)
-         end do
-         call solve3(a, b, basis, ok)
+         call polynomial_fit(y(first:last) - y0, z(first:last), basis, ok)
          if (ok .and. basis(3) > 0.0_wp) then
             t = -basis(2)/(2.0_wp*basis(3))
             if (y0 + t >= y(first) .and. y0 + t <= y(last)) then
@@ -278,31 +272,6 @@ contains
          end if
       end do
    end subroutine head_offset
-
-   !> The 3×3 normal equations by Cramer's rule.
-   pure subroutine solve3(a, b, x, ok)
-      real(wp), intent(in) :: a(3, 3), b(3)
-      real(wp), intent(out) :: x(3)
-      logical, intent(out) :: ok
-      real(wp) :: det, m(3, 3)
-      integer :: k
-      det = determinant(a)
-      ok = abs(det) > 1.0e-300_wp
-      x = 0.0_wp
-      if (.not. ok) return
-      do k = 1, 3
-         m = a
-         m(:, k) = b
-         x(k) = determinant(m)/det
-      end do
-   end subroutine solve3
-
-   pure real(wp) function determinant(a)
-      real(wp), intent(in) :: a(3, 3)
-      determinant = a(1, 1)*(a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)) &
-         - a(1, 2)*(a(2, 1)*a(3, 3) - a(2, 3)*a(3, 1)) &
-         + a(1, 3)*(a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1))
-   end function determinant
 
    !> The median of a few thousand values (insertion sort of a copy).
    pure real(wp) function median(values)
