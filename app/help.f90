@@ -124,8 +124,11 @@ contains
          'MiniProf'//nl// &
          '.ban/.whl), check and clean it as a case does (point order, duplicates, loops, '// &
          'spikes,'//nl// &
-         'running surface) and print a summary (points, range, units) on stdout. With '// &
-         '--write,'//nl// &
+         'running surface) and print a summary (points, range, units) on stdout, with '// &
+         'whether'//nl// &
+         'a rail looks canted already, the noise of the points and the smoothing length '// &
+         'it calls'//nl// &
+         'for (doc/profiles.md). With --write,'//nl// &
          'write the built-in profiles (S1002.txt, UIC60.txt) into DIR instead.'//nl//nl// &
          'Options:'//nl// &
          '  -o, --output OUT         write the cleaned profile as a 2-column file (y z in mm,'// &

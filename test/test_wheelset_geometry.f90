@@ -15,7 +15,7 @@ module test_wheelset_geometry
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles
    use shcontact_geometry_wheelset_table, only: wheelset_contact_type, wheelset_geometry_table, &
-      roll_angle_parameter, contact_distance
+      roll_angle_parameter, contact_distance, wheelset_contact
    use shcontact_geometry_conicity, only: equivalent_conicity, conicity_en15302, &
       conicity_harmonic, first_harmonic_slope
    use test_geometry, only: arc_rail, cone_wheel, upright_track
@@ -140,6 +140,26 @@ contains
          call check(error, all(table(i)%patches == 1), 'one patch per wheel')
          if (allocated(error)) return
       end do
+      call single_row(error)
+   contains
+      !> One shift from prepared profiles (wheelset_contact) gives the table's row.
+      subroutine single_row(error)
+         type(error_type), allocatable, intent(out) :: error
+         type(prepared_profiles_type), target :: prepared
+         type(wheelset_contact_type) :: row
+         type(lib_error), allocatable :: err
+         call prepare_profiles(cone_wheel(-cone_angle, 40.0_wp, 161), &
+            arc_rail(head_radius, -0.7_wp, 0.5_wp, 481), upright_track(), &
+            contact_options_type(), prepared, err)
+         if (.not. allocated(err)) call wheelset_contact(prepared, table(7)%y, row, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message)
+            return
+         end if
+         call check(error, row%roll, table(7)%roll, thr=1.0e-12_wp, message='single row roll')
+         if (allocated(error)) return
+         call check(error, all(abs(row%radius - table(7)%radius) < 1.0e-9_wp), 'single row radii')
+      end subroutine single_row
    end subroutine test_cone_closed_form
 
    !> The cone's Δr is linear in y to 1e-6 relative (its roll is), so both methods give its slope
