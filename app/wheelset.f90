@@ -105,7 +105,8 @@ contains
       do i = 1, size(table)
          associate (t => table(i))
             write (output_unit, row_format) &
-               t%y, 1.0e3_wp*t%roll, t%z_centre, t%rail_y, t%wheel_y, t%radius, t%delta_r(), &
+               t%y, tidy(1.0e3_wp*t%roll), t%z_centre, t%rail_y, t%wheel_y, t%radius, &
+               tidy(t%delta_r()), &
                t%gamma, t%patches
          end associate
       end do
@@ -143,5 +144,11 @@ contains
             roll_angle_parameter(table, amplitudes(k))
       end do
    end subroutine print_conicity
+
+   !> 0 for values that print as ±0.00000 (5 decimals), so that y = 0 shows no "-0.00000".
+   elemental real(wp) function tidy(x)
+      real(wp), intent(in) :: x
+      tidy = merge(0.0_wp, x, abs(x) < 5.0e-6_wp)
+   end function tidy
 
 end module shcontact_app_wheelset
