@@ -22,7 +22,7 @@ module shcontact_app_commands
    private
 
    public :: run_command, merge_command, geometry_command, report_error
-   public :: exit_some_failed
+   public :: exit_some_failed, configure
 
    !> Exit status when some (not all) cases of a sweep failed.
    integer, parameter :: exit_some_failed = 4
@@ -48,8 +48,11 @@ contains
 
    !> Defaults + case file + --set + -o.
    subroutine configure(cli, config, error)
+      !> The command line.
       type(cli_type), intent(in) :: cli
+      !> The configuration.
       type(case_config_type), intent(out) :: config
+      !> Set on a bad case file or --set.
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: sets(:)
       integer :: i, longest, n
