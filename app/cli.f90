@@ -41,6 +41,8 @@ module shcontact_app_cli
       logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
+      !> --force: output files that exist may be replaced (shcontact_app_output_guard).
+      logical :: force = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
@@ -187,6 +189,8 @@ contains
             cli%check = .true.
          case ('--resume')
             cli%resume = .true.
+         case ('--force')
+            cli%force = .true.
          case ('-q', '--quiet')
             cli%quiet = .true.
          case ('-v', '--verbose')
@@ -221,6 +225,8 @@ contains
       case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &
             '--mirror-z')
          accepts = command == 'profiles'
+      case ('--force')
+         accepts = command == 'profiles' .or. command == 'geometry'
       case default
          accepts = .false.
       end select
