@@ -108,7 +108,6 @@ contains
       type(profile_type), intent(in) :: read, cleaned
       character(len=:), allocatable :: text, units
       character(len=1), parameter :: nl = new_line('a')
-      integer :: n
       if (cli%scale > 0.0_wp) then
          units = 'mm (file lengths x '//mm(cli%scale)//', --scale)'
       else if (profile_file_format(cli%profile_file, cli%file_format) == 'simpack') then
@@ -116,12 +115,11 @@ contains
       else
          units = 'mm (as in the file; --scale F converts other units)'
       end if
-      n = read%size() - cleaned%size()
       text = 'profile    '//cli%profile_file//': '//kind_name(cleaned%kind)//', format '// &
          profile_file_format(cli%profile_file, cli%file_format)//nl// &
          'points     '//str_int(read%size())//' read, '//str_int(cleaned%size())// &
-         ' after clean-up ('//str_int(n)//' merged or dropped: duplicates, zigzags, '// &
-         'collinear points)'//nl// &
+         ' after clean-up (zig-zags merged, points on a chord dropped, straight pieces '// &
+         'sampled evenly)'//nl// &
          'y          '//mm(minval(cleaned%y))//' to '//mm(maxval(cleaned%y))// &
          ' mm (right side, towards the field side)'//nl// &
          'z          '//mm(minval(cleaned%z))//' to '//mm(maxval(cleaned%z))// &

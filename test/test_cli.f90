@@ -510,7 +510,8 @@ contains
       if (allocated(error)) return
       call expect_in(error, out, 'built-in/S1002.txt: wheel, format plain', 'summary: kind')
       if (allocated(error)) return
-      call expect_in(error, out, 'after clean-up', 'summary: points')
+      call expect_in(error, out, 'points     1597 read, 1603 after clean-up', &
+         'summary: points (doc/app.md)')
       if (allocated(error)) return
       call expect_in(error, out, 'y          -70.000 to 60.000 mm', 'summary: range')
       if (allocated(error)) return
