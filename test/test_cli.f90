@@ -57,6 +57,7 @@ contains
          new_unittest('profiles_output_never_the_input', test_profiles_own_input), &
          new_unittest('profiles_geometry_never_overwrite', test_no_overwrite), &
          new_unittest('miniprof_wheel_written_same_contact', test_miniprof_written), &
+         new_unittest('collinear_points_same_forces', test_collinear_points), &
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
          ]
    end subroutine collect_cli
@@ -690,6 +691,41 @@ contains
          message='the contact differs: '//a//' vs '//b)
       call shell('rm -rf '//dir)
    end subroutine test_miniprof_written
+
+   !> The reproducer of issue 24, item 5: two and nine points added on every chord of
+   !> data/profiles/S1002.txt (awk, 17 significant digits) moved F_x from −5846.8 to −5729.9 N and
+   !> −6938.8 N; the text summary (forces, moment, pressure, γ₀; 5 digits) must be the same.
+   subroutine test_collinear_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, s1002, out, err, a, b
+      character(len=2) :: k
+      integer :: i
+      if (unavailable(error, .false.)) return
+      s1002 = current_directory()//'/data/profiles/S1002.txt'
+      if (.not. file_exists(s1002)) then
+         call skip_test(error, s1002//' is not available')
+         return
+      end if
+      dir = scratch_directory('cli_collinear')
+      call run_expect(error, dir, 'run -q --format text -o a.h5 --set profiles%wheel='//s1002, &
+         0, a, err)
+      if (allocated(error)) return
+      do i = 1, 2
+         k = merge(' 2', ' 9', i == 1)
+         call shell('awk -v k='//trim(adjustl(k))//' ''/^#/ { print; next } NF >= 2 { if '// &
+            '(n++) for (j = 1; j <= k; j++) printf "%.17g %.17g\n", py + j*($1 - py)/(k + 1), '// &
+            'pz + j*($2 - pz)/(k + 1); print; py = $1; pz = $2 }'' '//s1002//' > '//dir// &
+            '/dense.txt')
+         call run_expect(error, dir, 'run -q --format text -o b.h5 --set '// &
+            'profiles%wheel=dense.txt', 0, b, err)
+         if (allocated(error)) return
+         call check(error, a(index(a, new_line('a')):) == b(index(b, new_line('a')):), &
+            message='k ='//k//' points added per interval: the forces differ: '//a//' vs '//b)
+         if (allocated(error)) return
+         call shell('rm -f '//dir//'/b.h5')
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_collinear_points
 
    !> The README's and doc/app.md's `fpm run ... -- run` commands name an output under build/
    !> or /tmp (never the default shcontact.h5 in the repository root), and .gitignore keeps
