@@ -19,9 +19,9 @@
 !>    lie on it to their rounding (10 significant digits, 5·10⁻⁹ mm for coordinates below
 !>    100 mm, leave a margin for the rounding of both chord ends), genuine samples of a curve
 !>    lie off the chord of their neighbours by its sagitta, which is far larger unless the curve
-!>    is straight there (R > 25 km for 0.1 mm samples). Where a curve is that straight over a
-!>    few samples (near an inflection), the skeleton may keep a point added on a chord next to
-!>    a sample instead of the sample: both lie on the curve to that distance;
+!>    is straight there (R > 25 m for neighbouring samples 0.1 mm apart). Where a curve is that
+!>    straight over a few samples (near an inflection), the skeleton may keep a point added on
+!>    a chord next to a sample instead of the sample: both lie on the curve to that distance;
 !> 2. a skeleton segment longer than [[long_segment_ratio]] (4) times the longer of its
 !>    neighbouring segments — a straight piece of the profile, such as S1002's field-side cone
 !>    or a rail's 1:20 flank — gets equally spaced points again, about as far apart as the
