@@ -42,8 +42,9 @@ module shcontact_app_cli
       logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
-      !> run, merge --force: replace an output (or sidecar) that shcontact did not write, start
-      !> afresh in the work folder of an interrupted run.
+      !> --force: replace an output (or sidecar) that shcontact did not write (run, merge,
+      !> profiles, geometry; shcontact_app_output_guard), start afresh in the work folder of an
+      !> interrupted run (run).
       logical :: force = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
@@ -233,7 +234,8 @@ contains
       case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
          accepts = command == 'run'
       case ('--force')
-         accepts = command == 'run' .or. command == 'merge'
+         accepts = command == 'run' .or. command == 'merge' .or. command == 'profiles' .or. &
+            command == 'geometry'
       case ('--wheelset', '--conicity')
          accepts = command == 'geometry'
       case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &

@@ -14,6 +14,7 @@ module shcontact_app_commands
    use shcontact_case_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_contact, only: write_geometry_table
+   use shcontact_app_output_guard, only: check_output_file
    use shcontact_app_cli, only: cli_type
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
@@ -241,16 +242,22 @@ contains
       type(run_setup_type) :: setup
       type(patch_geometry_type), allocatable :: patches(:)
       type(error_type), allocatable :: error
-      character(len=:), allocatable :: name
+      character(len=:), allocatable :: name, what
       type(cli_type) :: plain
       status = 0
       plain = cli
       plain%output = ''
-      call configure(plain, config, error)
+      name = 'geometry.txt'
+      what = 'the default output (no -o)'
+      if (len(cli%output) > 0) then
+         name = cli%output
+         what = '-o'
+      end if
+      ! Refused before anything is computed: never over a file this run did not write.
+      call check_output_file(name, what, cli%force, [cli%case_file], error)
+      if (.not. allocated(error)) call configure(plain, config, error)
       if (.not. allocated(error)) call prepare_run(config, setup, error)
       if (.not. allocated(error)) call solve_geometry(setup, config%case_point(1), patches, error)
-      name = 'geometry.txt'
-      if (len(cli%output) > 0) name = cli%output
       if (.not. allocated(error)) call write_geometry_table(patches, name, error)
       if (allocated(error)) then
          status = report_error(error)

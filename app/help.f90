@@ -22,7 +22,7 @@ contains
          nl// &
          '  shcontact profiles --write DIR        write the built-in profiles as 2-column files'// &
          nl// &
-         '  shcontact geometry [CASE.nml] [-o FILE] [--set ...]'//nl// &
+         '  shcontact geometry [CASE.nml] [-o FILE] [--set ...] [--force]'//nl// &
          '                                        write the strip geometry table of the case'// &
          nl// &
          '  shcontact geometry --wheelset -10,10,0.5 --conicity 1,2,3'//nl// &
@@ -153,6 +153,9 @@ contains
          '  --mirror-y yes|no        mirror y (y -> -y), replacing the file''s or format''s '// &
          'setting'//nl// &
          '  --mirror-z yes|no        mirror z (z -> -z), likewise'//nl// &
+         '  --force                  replace OUT, SCRIPT.gp or DIR/S1002.txt, DIR/UIC60.txt'// &
+         nl// &
+         '                           when they exist (never the profile read)'//nl// &
          '  -q, --quiet              no summary; errors only'
    end function profiles_help
 
@@ -184,6 +187,8 @@ contains
          nl// &
          '                           Klingel wavelength, roll-angle parameter '// &
          '(doc/geometry.md)'//nl// &
+         '  --force                  replace the table when it exists (never the case file)'// &
+         nl// &
          '  -q, --quiet              errors only on stderr'
    end function geometry_help
 

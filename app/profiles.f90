@@ -7,16 +7,18 @@
 module shcontact_app_profiles
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, stat_io
+   use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_usage
    use shcontact_core_strings, only: str_int
-   use shcontact_io_files, only: make_directory
+   use shcontact_io_files, only: make_directory, join_path
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
    use shcontact_profile_reader, only: read_profile, profile_file_format
    use shcontact_profile_source, only: load_profile
-   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
+   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles, &
+      written_builtins
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: report_error
    use shcontact_app_profile_advice, only: profile_advice
+   use shcontact_app_output_guard, only: check_output_file, same_file
    implicit none
    private
 
@@ -30,9 +32,14 @@ contains
       type(cli_type), intent(in) :: cli
       type(error_type), allocatable :: error
       type(profile_type) :: read, cleaned
+      integer :: k
       status = 0
       if (len(cli%write_dir) > 0) then
          call make_directory(cli%write_dir, error)
+         do k = 1, size(written_builtins)
+            if (.not. allocated(error)) call check_output_file(join_path(cli%write_dir, &
+               trim(written_builtins(k))//'.txt'), '--write', cli%force, [''], error)
+         end do
          if (.not. allocated(error)) call write_builtin_profiles(cli%write_dir, error)
          if (allocated(error)) then
             status = report_error(error)
@@ -43,7 +50,8 @@ contains
          return
       end if
 
-      call load_file(cli, read, cleaned, error)
+      call check_outputs(cli, error)
+      if (.not. allocated(error)) call load_file(cli, read, cleaned, error)
       if (.not. allocated(error) .and. len(cli%output) > 0) &
          call write_profile_plain(cleaned, cli%output, error)
       if (.not. allocated(error) .and. len(cli%plot_file) > 0) &
@@ -55,6 +63,25 @@ contains
       if (.not. cli%quiet) write (output_unit, '(a)') profile_summary(cli, read, cleaned)// &
          new_line('a')//profile_advice(read, cleaned)
    end function profiles_command
+
+   !> -o OUT and --plot SCRIPT: neither the profile read, nor one another, nor (without --force)
+   !> a file that exists.
+   subroutine check_outputs(cli, error)
+      type(cli_type), intent(in) :: cli
+      type(error_type), allocatable, intent(out) :: error
+      if (len(cli%output) > 0 .and. len(cli%plot_file) > 0) then
+         if (cli%output == cli%plot_file .or. same_file(cli%output, cli%plot_file)) then
+            call fatal_error(error, cli%output//': -o and --plot name the same file; give '// &
+               'them different names', stat_usage)
+            return
+         end if
+      end if
+      if (len(cli%output) > 0) call check_output_file(cli%output, '-o', cli%force, &
+         [cli%profile_file], error)
+      if (allocated(error)) return
+      if (len(cli%plot_file) > 0) call check_output_file(cli%plot_file, '--plot', cli%force, &
+         [cli%profile_file], error)
+   end subroutine check_outputs
 
    !> The points as read (canonical form, not cleaned) and the profile a case would use.
    subroutine load_file(cli, read, cleaned, error)
@@ -83,7 +110,6 @@ contains
       type(profile_type), intent(in) :: read, cleaned
       character(len=:), allocatable :: text, units
       character(len=1), parameter :: nl = new_line('a')
-      integer :: n
       if (cli%scale > 0.0_wp) then
          units = 'mm (file lengths x '//mm(cli%scale)//', --scale)'
       else if (profile_file_format(cli%profile_file, cli%file_format) == 'simpack') then
@@ -91,12 +117,11 @@ contains
       else
          units = 'mm (as in the file; --scale F converts other units)'
       end if
-      n = read%size() - cleaned%size()
       text = 'profile    '//cli%profile_file//': '//kind_name(cleaned%kind)//', format '// &
          profile_file_format(cli%profile_file, cli%file_format)//nl// &
          'points     '//str_int(read%size())//' read, '//str_int(cleaned%size())// &
-         ' after clean-up ('//str_int(n)//' merged or dropped: duplicates, zigzags, '// &
-         'collinear points)'//nl// &
+         ' after clean-up (zig-zags merged, points on a chord dropped, straight pieces '// &
+         'sampled evenly)'//nl// &
          'y          '//mm(minval(cleaned%y))//' to '//mm(maxval(cleaned%y))// &
          ' mm (right side, towards the field side)'//nl// &
          'z          '//mm(minval(cleaned%z))//' to '//mm(maxval(cleaned%z))// &
@@ -108,6 +133,9 @@ contains
       if (len(cli%output) > 0) text = text//nl//'written    '//cli%output// &
          ' (y z in mm, z down; a case reads it as '//kind_name(cleaned%kind)//' = '''// &
          cli%output//''')'
+      if (len(cli%output) > 0 .and. cleaned%origin_at_flange_back) text = text//nl// &
+         '           y moved by -70 mm: origin from the flange back (MiniProf) to the tape '// &
+         'circle, where a plain file has it'
       if (len(cli%plot_file) > 0) text = text//nl//'plot       '//cli%plot_file// &
          ' (gnuplot '//cli%plot_file//' writes '//png_name(cli%plot_file)//')'
    end function profile_summary

@@ -113,10 +113,13 @@ int shcontact_create_arrays(shcontact_contact **handle, int n_wheel, const doubl
 
 /* The points of the contact's wheel (kind SHCONTACT_PROFILE_WHEEL) or rail
  * (SHCONTACT_PROFILE_RAIL) profile as created: a file's read and cleaned, a built-in one as it is
- * (mm, the canonical form of shcontact_create_arrays). *n receives the number of points and y, z
+ * (mm, the canonical form of shcontact_create_arrays: a MiniProf wheel, whose origin is at its
+ * flange back, comes moved by -70 mm to the arrays' origin on the tape circle, flange back at
+ * -70 mm as the default track has it). *n receives the number of points and y, z
  * (`capacity` values each) the points; when *n exceeds capacity nothing is copied and the status
  * is SHCONTACT_USAGE (call with capacity 0 and NULL arrays to ask for *n). Passing the points to
- * shcontact_create_arrays gives a contact with the same results, bit for bit. */
+ * shcontact_create_arrays gives a contact with the same results (bit for bit; to round-off for a
+ * moved MiniProf wheel). */
 int shcontact_get_profile(shcontact_contact *handle, int kind, int capacity, int *n, double *y,
                           double *z);
 

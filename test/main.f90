@@ -21,6 +21,7 @@ program tester
    use test_normal_loading, only: collect_normal_loading
    use test_normal_loading_patches, only: collect_normal_loading_patches
    use test_profile_reader, only: collect_profile_reader
+   use test_profile_invariance, only: collect_profile_invariance
    use test_profile_cleanup, only: collect_profile_cleanup
    use test_profile_builtin, only: collect_profile_builtin
    use test_spline, only: collect_spline
@@ -64,6 +65,7 @@ program tester
       new_testsuite('normal_loading', collect_normal_loading), &
       new_testsuite('normal_loading_patches', collect_normal_loading_patches), &
       new_testsuite('profile_reader', collect_profile_reader), &
+      new_testsuite('profile_invariance', collect_profile_invariance), &
       new_testsuite('profile_cleanup', collect_profile_cleanup), &
       new_testsuite('profile_builtin', collect_profile_builtin), &
       new_testsuite('spline', collect_spline), &

@@ -18,7 +18,7 @@ module test_cli
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_io_files, only: file_exists
    use test_app, only: scratch_directory, shell, run_program, file_text, write_lines, &
-      unavailable, expect_in, program_path
+      unavailable, expect_in, program_path, current_directory
    implicit none
    private
    public :: collect_cli
@@ -54,6 +54,10 @@ contains
          new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
          new_unittest('patches_found_and_loaded', test_patch_counts), &
          new_unittest('profiles_file', test_profiles_file), &
+         new_unittest('profiles_output_never_the_input', test_profiles_own_input), &
+         new_unittest('profiles_geometry_never_overwrite', test_no_overwrite), &
+         new_unittest('miniprof_wheel_written_same_contact', test_miniprof_written), &
+         new_unittest('collinear_points_same_forces', test_collinear_points), &
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
          ]
    end subroutine collect_cli
@@ -507,7 +511,8 @@ contains
       if (allocated(error)) return
       call expect_in(error, out, 'built-in/S1002.txt: wheel, format plain', 'summary: kind')
       if (allocated(error)) return
-      call expect_in(error, out, 'after clean-up', 'summary: points')
+      call expect_in(error, out, 'points     1597 read, 1603 after clean-up', &
+         'summary: points (doc/app.md)')
       if (allocated(error)) return
       call expect_in(error, out, 'y          -70.000 to 60.000 mm', 'summary: range')
       if (allocated(error)) return
@@ -556,6 +561,171 @@ contains
       call run_expect(error, dir, 'profiles --write x --plot p.gp', 1, out, err)
       call shell('rm -rf '//dir)
    end subroutine test_profiles_file
+
+   !> `profiles F -o F` overwrote its own input (issue 24, item 12), also through ./F, a
+   !> symbolic link or a hard link, and with --force: refused with status 3 and one message,
+   !> the file unchanged.
+   subroutine test_profiles_own_input(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, before
+      character(len=16), parameter :: targets(5) = [character(len=16) :: 'F.txt', './F.txt', &
+         'link.txt', 'hard.txt', 'F.txt --force']
+      integer :: i
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_own_input')
+      call run_expect(error, dir, 'profiles --write built-in', 0, out, err)
+      if (allocated(error)) return
+      call shell('cd '//dir//' && cp built-in/S1002.txt F.txt && ln -s F.txt link.txt && '// &
+         'ln F.txt hard.txt')
+      before = file_text(dir//'/F.txt')
+      do i = 1, size(targets)
+         call run_expect(error, dir, 'profiles F.txt -o '//trim(targets(i)), 3, out, err)
+         if (allocated(error)) return
+         call expect_in(error, err, 'names the input file F.txt', '-o '//trim(targets(i)))
+         if (allocated(error)) return
+         call check(error, file_text(dir//'/F.txt') == before, message='-o '// &
+            trim(targets(i))//': the input changed')
+         if (allocated(error)) return
+         call check(error, count_lines(err), 1, message='one message: '//err)
+         if (allocated(error)) return
+      end do
+      ! --plot too, and -o and --plot naming one file (status 1).
+      call run_expect(error, dir, 'profiles F.txt --plot ./F.txt', 3, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles F.txt -o a.txt --plot a.txt', 1, out, err)
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/F.txt') == before .and. &
+         .not. file_exists(dir//'/a.txt'), message='nothing written')
+      call shell('rm -rf '//dir)
+   end subroutine test_profiles_own_input
+
+   !> `geometry` without -o replaced ./geometry.txt and `profiles --write DIR` DIR/S1002.txt
+   !> (issue 24, item 14); `profiles F -o OUT` and `--plot` likewise. A file that exists and was
+   !> not written by this run is refused (status 3, unchanged, nothing else written) unless
+   !> --force is given; the case file never.
+   subroutine test_no_overwrite(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_no_overwrite')
+      ! profiles --write DIR
+      call shell('mkdir -p '//dir//'/built-in && echo mine > '//dir//'/built-in/S1002.txt')
+      call run_expect(error, dir, 'profiles --write built-in', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'built-in/S1002.txt: --write exists', 'the message')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/built-in/S1002.txt') == 'mine'//new_line('a') .and. &
+         .not. file_exists(dir//'/built-in/UIC60.txt'), message='--write: nothing replaced')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles --write built-in --force', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/built-in/S1002.txt'), '# kind = wheel', &
+         '--write --force replaced it')
+      if (allocated(error)) return
+      ! profiles FILE -o OUT, --plot SCRIPT
+      call shell('echo mine > '//dir//'/out.prof && echo mine > '//dir//'/p.gp')
+      call run_expect(error, dir, 'profiles built-in/S1002.txt -o out.prof', 3, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles built-in/S1002.txt --plot p.gp', 3, out, err)
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/out.prof') == 'mine'//new_line('a') .and. &
+         file_text(dir//'/p.gp') == 'mine'//new_line('a'), message='-o, --plot: unchanged')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles built-in/S1002.txt -o out.prof --plot p.gp '// &
+         '--force', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.prof'), '# kind = wheel', '-o --force')
+      if (allocated(error)) return
+      ! geometry: the default geometry.txt, -o FILE, the case file
+      call shell('echo mine > '//dir//'/geometry.txt')
+      call run_expect(error, dir, 'geometry', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'geometry.txt: the default output (no -o) exists', 'message')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/geometry.txt') == 'mine'//new_line('a'), &
+         message='geometry.txt unchanged')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'geometry -o geometry.txt', 3, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'geometry --force', 0, out, err)
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/geometry.txt') /= 'mine'//new_line('a'), &
+         message='geometry --force replaced it')
+      if (allocated(error)) return
+      call write_lines(dir//'/case.nml', [character(len=24) :: '&position t_y = 2.0 /'])
+      call run_expect(error, dir, 'geometry case.nml -o ./case.nml --force', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'names the input file case.nml', 'the case file')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/case.nml') == '&position t_y = 2.0 /'//new_line('a'), &
+         message='the case file unchanged')
+      call shell('rm -rf '//dir)
+   end subroutine test_no_overwrite
+
+   !> The reproducer of issue 24, item 2: `profiles Car7216_0001r.whl -o clean.txt`, then a case
+   !> reading clean.txt as a plain file gives the contact of the .whl (γ₀ −0.068, not +0.088;
+   !> 2 patches, not 3; p_max 1734 MPa, not 4805; to the 5 digits of the text summary).
+   subroutine test_miniprof_written(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, whl, out, err, a, b
+      character(len=*), parameter :: whl_name = '../shared/profiles/Car7216_0001r.whl'
+      if (unavailable(error, .false.)) return
+      if (.not. file_exists(whl_name)) then
+         call skip_test(error, whl_name//' is not available')
+         return
+      end if
+      whl = current_directory()//'/'//whl_name
+      dir = scratch_directory('cli_miniprof_written')
+      call run_expect(error, dir, 'profiles '//whl//' -o clean.txt', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/clean.txt'), '# origin: on the tape circle', &
+         'the header says where the origin is')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format text -o a.h5 --set profiles%wheel='//whl, &
+         0, a, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --format text -o b.h5 --set profiles%wheel=clean.txt', &
+         0, b, err)
+      if (allocated(error)) return
+      call check(error, a(index(a, new_line('a')):) == b(index(b, new_line('a')):), &
+         message='the contact differs: '//a//' vs '//b)
+      call shell('rm -rf '//dir)
+   end subroutine test_miniprof_written
+
+   !> The reproducer of issue 24, item 5: two and nine points added on every chord of
+   !> data/profiles/S1002.txt (awk, 17 significant digits) moved F_x from −5846.8 to −5729.9 N and
+   !> −6938.8 N; the text summary (forces, moment, pressure, γ₀; 5 digits) must be the same.
+   subroutine test_collinear_points(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, s1002, out, err, a, b
+      character(len=2) :: k
+      integer :: i
+      if (unavailable(error, .false.)) return
+      s1002 = current_directory()//'/data/profiles/S1002.txt'
+      if (.not. file_exists(s1002)) then
+         call skip_test(error, s1002//' is not available')
+         return
+      end if
+      dir = scratch_directory('cli_collinear')
+      call run_expect(error, dir, 'run -q --format text -o a.h5 --set profiles%wheel='//s1002, &
+         0, a, err)
+      if (allocated(error)) return
+      do i = 1, 2
+         k = merge(' 2', ' 9', i == 1)
+         call shell('awk -v k='//trim(adjustl(k))//' ''/^#/ { print; next } NF >= 2 { if '// &
+            '(n++) for (j = 1; j <= k; j++) printf "%.17g %.17g\n", py + j*($1 - py)/(k + 1), '// &
+            'pz + j*($2 - pz)/(k + 1); print; py = $1; pz = $2 }'' '//s1002//' > '//dir// &
+            '/dense.txt')
+         call run_expect(error, dir, 'run -q --format text -o b.h5 --set '// &
+            'profiles%wheel=dense.txt', 0, b, err)
+         if (allocated(error)) return
+         call check(error, a(index(a, new_line('a')):) == b(index(b, new_line('a')):), &
+            message='k ='//k//' points added per interval: the forces differ: '//a//' vs '//b)
+         if (allocated(error)) return
+         call shell('rm -f '//dir//'/b.h5')
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_collinear_points
 
    !> The README's and doc/app.md's `fpm run ... -- run` commands name an output under build/
    !> or /tmp (never the default shcontact.h5 in the repository root), and .gitignore keeps

@@ -16,7 +16,8 @@ module shcontact_api_context
       parse_spin_model
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail, &
+      tape_circle_origin
    use shcontact_profile_source, only: profile_from_points
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
@@ -387,7 +388,10 @@ contains
 
    !> The points of the wheel (kind = profile_kind_wheel, 1) or rail (profile_kind_rail, 0)
    !> profile of the contact, as it was created (read and cleaned; mm, canonical form), e.g. to
-   !> pass them to [[context_create_arrays]] after a change. n receives the number of points
+   !> pass them to [[context_create_arrays]] after a change. A MiniProf wheel, whose origin is at
+   !> its flange back, comes moved by −70 mm to the origin arrays have (tape circle; flange back
+   !> at −70 mm, the default flange-back position: shcontact_profile_points' tape_circle_origin),
+   !> so that the arrays with the default track give the contact of the file. n receives the number of points
    !> also when it exceeds the capacity of y and z (then nothing is copied and the status is 1).
    integer function context_get_profile(ctx, kind, n, y, z) result(stat)
       !> The context.
@@ -409,6 +413,7 @@ contains
             '0 (rail)', stat_usage)
       else if (usable(ctx, error)) then
          call ctx%solver%get_profiles(wheel, rail)
+         wheel = tape_circle_origin(wheel)
          if (kind == profile_kind_rail) wheel = rail
          n = wheel%size()
          if (n > min(size(y), size(z))) then

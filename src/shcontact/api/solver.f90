@@ -30,8 +30,7 @@ module shcontact_api_solver
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_no_contact, stat_usage, stat_numerical
-   use shcontact_core_strings, only: str_int, str_real, to_lower
-   use shcontact_profile_reader, only: profile_file_format
+   use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
@@ -241,7 +240,8 @@ contains
       type(profile_type), intent(in) :: wheel, rail
       !> Set for invalid data; the solver is then not ready.
       type(error_type), allocatable, intent(out) :: error
-      !> Track and wheelset dimensions (default: track_type(), the Manchester benchmark).
+      !> Track and wheelset dimensions (default: track_type(), the Manchester benchmark; with a
+      !> MiniProf wheel, whose origin is at its flange back, flange_back_position = 0).
       type(track_type), intent(in), optional :: track
       !> G, ν, μ (default: material_type(), the seed's steel with μ = 0.3).
       type(material_type), intent(in), optional :: material
@@ -258,7 +258,14 @@ contains
       call reset(self)
       self%wheel = wheel
       self%rail = rail
-      if (present(track)) self%track = track
+      if (present(track)) then
+         self%track = track
+      else if (wheel%origin_at_flange_back) then
+         ! A MiniProf wheel has its origin at the flange back: without a track given, its flange
+         ! back is at 0 (the default −70 mm is S1002's, whose origin is on the tape circle), as
+         ! in the app (doc/app.md).
+         self%track%flange_back_position = 0.0_wp
+      end if
       if (present(material)) self%material = material
       if (present(side)) self%side = side
       if (present(contact_options)) self%contact_options = contact_options
@@ -308,27 +315,14 @@ contains
       !> File formats: 'auto' (default), 'plain', 'simpack', 'miniprof'.
       character(len=*), intent(in), optional :: wheel_format, rail_format
       type(profile_type) :: wheel_profile, rail_profile
-      type(track_type) :: wheel_track
-      character(len=:), allocatable :: fmt
 
       call reset(self)
       call load_profile(wheel, profile_kind_wheel, wheel_profile, error, wheel_format)
       if (allocated(error)) return
       call load_profile(rail, profile_kind_rail, rail_profile, error, rail_format)
       if (allocated(error)) return
-      ! A MiniProf wheel has its origin at the flange back: without a track given, its flange
-      ! back is at 0 (the default −70 mm is S1002's, whose origin is on the tape circle), as in
-      ! the app (doc/app.md).
-      wheel_track = track_type()
-      if (present(track)) then
-         wheel_track = track
-      else if (index(to_lower(adjustl(wheel)), 'builtin:') /= 1) then
-         fmt = 'auto'
-         if (present(wheel_format)) fmt = trim(wheel_format)
-         if (profile_file_format(trim(adjustl(wheel)), fmt) == 'miniprof') &
-            wheel_track%flange_back_position = 0.0_wp
-      end if
-      call self%init_profiles(wheel_profile, rail_profile, error, wheel_track, material, side, &
+      ! Without a track, a MiniProf wheel's flange back is at 0 ([[init_profiles]]).
+      call self%init_profiles(wheel_profile, rail_profile, error, track, material, side, &
          contact_options, normal_options, tangential_options)
    end subroutine init_names
 

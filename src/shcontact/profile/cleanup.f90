@@ -19,9 +19,8 @@
 !>    [[kink_quiet_angle]] (π/30) within [[kink_window]] (2 mm) of the point is a true corner,
 !>    flagged in `profile%kink` so that smoothing splits there.
 !>
-!> [[drop_collinear]] (run on profiles from files, after these steps) drops a point within
-!> [[collinear_distance]] of the chord of its neighbours (never two in a row), so that points
-!> added between the samples give the same profile.
+!> Points on the chord of their neighbours are dropped afterwards, for profiles from files, by
+!> shcontact_profile_collinear's drop_collinear.
 !>
 !> Every rejection names the profile's source, the file line (when `line_of_point` is given)
 !> or the point number, and the reason.
@@ -35,16 +34,14 @@ module shcontact_profile_cleanup
    implicit none
    private
 
-   public :: clean_profile, drop_collinear, is_finite_value
+   public :: clean_profile, is_finite_value
    public :: min_profile_points, duplicate_distance, min_arc_length, max_arc_length
-   public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window, collinear_distance
+   public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window
 
    !> Fewest points a profile may have.
    integer, parameter :: min_profile_points = 4
    !> Consecutive points closer than this are duplicates (mm).
    real(wp), parameter :: duplicate_distance = 1.0e-6_wp
-   !> A point closer than this (mm) to the chord of its neighbours is dropped.
-   real(wp), parameter :: collinear_distance = 1.0e-5_wp
    !> Shortest total arc length accepted (mm); CONTACT's bound.
    real(wp), parameter :: min_arc_length = 5.0_wp
    !> Longest total arc length accepted (mm); CONTACT's bound.
@@ -246,43 +243,6 @@ contains
       lines = new_lines(:m)
       call profile%update_arc_length()
    end subroutine merge_zigzags
-
-   !> Drop points that lie on the chord of their neighbours (within [[collinear_distance]]),
-   !> never two in a row: points added between the samples of a profile do not change it, but
-   !> an interpolating spline through them would bend between them (issue 14). One pass; a
-   !> straight stretch keeps every other point. For profiles read from files, after
-   !> [[clean_profile]] (kink flags are kept with their points).
-   subroutine drop_collinear(profile, lines)
-      !> A cleaned profile.
-      type(profile_type), intent(inout) :: profile
-      !> File line of each point, kept in step.
-      integer, allocatable, intent(inout) :: lines(:)
-      logical, allocatable :: keep(:)
-      real(wp) :: c(2), p(2), t
-      integer :: i, n
-      n = profile%size()
-      allocate (keep(n), source=.true.)
-      i = 2
-      do while (i <= n - 1)
-         c = [profile%y(i + 1) - profile%y(i - 1), profile%z(i + 1) - profile%z(i - 1)]
-         p = [profile%y(i) - profile%y(i - 1), profile%z(i) - profile%z(i - 1)]
-         t = dot_product(p, c)/dot_product(c, c)
-         if (t > 0.0_wp .and. t < 1.0_wp) then
-            if (norm2(p - t*c) < collinear_distance) then
-               keep(i) = .false.
-               i = i + 2
-               cycle
-            end if
-         end if
-         i = i + 1
-      end do
-      if (all(keep)) return
-      profile%y = pack(profile%y, keep)
-      profile%z = pack(profile%z, keep)
-      if (allocated(profile%kink)) profile%kink = pack(profile%kink, keep)
-      if (allocated(lines)) lines = pack(lines, keep)
-      call profile%update_arc_length()
-   end subroutine drop_collinear
 
    !> Reject crossing or touching non-adjacent segments. Brute force with a bounding-box
    !> filter: profiles have a few thousand points and this runs once per profile.

@@ -5,11 +5,17 @@ module shcontact_profile_points
    private
 
    public :: profile_type, profile_kind_rail, profile_kind_wheel, option_hint, array_hints
+   public :: tape_circle_origin, flange_back_to_tape_circle
 
    !> The profile is a rail profile.
    integer, parameter :: profile_kind_rail = 0
    !> The profile is a wheel profile.
    integer, parameter :: profile_kind_wheel = 1
+
+   !> Lateral distance from a wheel's flange back to its tape circle (mm; EN 13715: 70): a wheel
+   !> with its origin on the tape circle has its flange back at y = −70 mm (S1002), the default
+   !> flange-back position of the track.
+   real(wp), parameter :: flange_back_to_tape_circle = 70.0_wp
 
    !> The `option_prefix` of profiles given as arrays (shcontact_profile_source's
    !> profile_from_points): [[option_hint]] then says what to do to the arrays.
@@ -36,6 +42,9 @@ module shcontact_profile_points
       real(wp), allocatable :: s(:)
       !> True at points kept as genuine corners (kinks) by the clean-up, where smoothing splits.
       logical, allocatable :: kink(:)
+      !> A wheel whose origin is at its flange back (a MiniProf `.whl` file), not on the tape
+      !> circle; [[tape_circle_origin]] moves it there.
+      logical :: origin_at_flange_back = .false.
    contains
       !> Number of points.
       procedure :: size => profile_size
@@ -65,6 +74,20 @@ contains
          self%s(i) = self%s(i - 1) + hypot(self%y(i) - self%y(i - 1), self%z(i) - self%z(i - 1))
       end do
    end subroutine update_arc_length
+
+   !> The profile with its origin on the tape circle, where a profile given as points or as a
+   !> plain file has it (flange back at y = −70 mm, the track's default flange-back position): a
+   !> wheel with its origin at the flange back (MiniProf) is moved by −[[flange_back_to_tape_circle]]
+   !> in y; any other profile is returned as it is.
+   pure function tape_circle_origin(profile) result(moved)
+      !> The profile.
+      type(profile_type), intent(in) :: profile
+      type(profile_type) :: moved
+      moved = profile
+      if (.not. (profile%origin_at_flange_back .and. allocated(profile%y))) return
+      moved%y = profile%y - flange_back_to_tape_circle
+      moved%origin_at_flange_back = .false.
+   end function tape_circle_origin
 
    !> How to set a reading option in a message: the library's argument (`mirror_z = .true.`)
    !> or, with `prefix` (e.g. '&profiles wheel_'), the caller's variable

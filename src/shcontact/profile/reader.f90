@@ -160,6 +160,9 @@ contains
 
       profile%source = filename
       profile%kind = profile_kind
+      ! A MiniProf wheel has its origin at the flange back (module text).
+      profile%origin_at_flange_back = file_format == format_miniprof .and. &
+         profile_kind == profile_kind_wheel
       profile%y = points%y(:points%n)
       profile%z = points%z(:points%n)
       allocate (profile%kink(points%n), source=.false.)

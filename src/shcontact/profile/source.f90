@@ -13,7 +13,8 @@ module shcontact_profile_source
    use shcontact_core_strings, only: to_lower
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, array_hints
    use shcontact_profile_reader, only: read_profile
-   use shcontact_profile_cleanup, only: clean_profile, drop_collinear
+   use shcontact_profile_cleanup, only: clean_profile
+   use shcontact_profile_collinear, only: drop_collinear
    use shcontact_profile_builtin, only: builtin_profile
    implicit none
    private

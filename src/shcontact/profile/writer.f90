@@ -3,15 +3,21 @@
 !> The file starts with `#` comment lines (source, units, convention, and `# kind = rail` or
 !> `# kind = wheel`, which the reader uses when no kind is given), then one `y z` pair per line
 !> with 15 significant digits: reading a written file and writing it again gives the same text.
+!>
+!> The points are written with the origin a plain file has (shcontact_profile_points'
+!> tape_circle_origin): a MiniProf wheel, whose origin is at its flange back, is written moved
+!> by −70 mm (flange back at y = −70, the default flange-back position), and a header line says
+!> so, so that a case reading the file places the wheel where the MiniProf file put it.
 module shcontact_profile_writer
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_invalid_input
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, tape_circle_origin, &
+      flange_back_to_tape_circle
    use shcontact_profile_builtin, only: builtin_profile
    implicit none
    private
 
-   public :: write_profile_plain, write_builtin_profiles
+   public :: write_profile_plain, write_builtin_profiles, written_builtins
 
    !> Names of the built-in profiles written by [[write_builtin_profiles]], and their files.
    character(len=*), parameter :: written_builtins(3) = [character(len=12) :: 'S1002', 'UIC60', &
@@ -20,9 +26,9 @@ module shcontact_profile_writer
 contains
 
    !> Write a profile as plain `y z` text with a commented header.
-   subroutine write_profile_plain(profile, filename, error)
+   subroutine write_profile_plain(read_profile, filename, error)
       !> The profile (canonical form).
-      type(profile_type), intent(in) :: profile
+      type(profile_type), intent(in) :: read_profile
       !> The file to create or replace.
       character(len=*), intent(in) :: filename
       !> stat_io when the file cannot be written; stat_invalid_input for an empty profile.
@@ -30,8 +36,10 @@ contains
 
       character(len=256) :: message
       character(len=:), allocatable :: source, order
+      type(profile_type) :: profile
       integer :: unit, stat, i
 
+      profile = tape_circle_origin(read_profile)
       if (profile%size() == 0 .or. .not. allocated(profile%z)) then
          call fatal_error(error, filename//': refusing to write a profile without points', &
             stat_invalid_input)
@@ -55,7 +63,12 @@ contains
          '# shcontact profile, source: '//source, &
          '# kind = '//trim(merge('wheel', 'rail ', profile%kind == profile_kind_wheel)), &
          '# units: mm; right-side profile, y towards the field side, z positive downward', &
-         '# points ordered '//order//' (material on the right)', &
+         '# points ordered '//order//' (material on the right)'
+      if (stat == 0 .and. read_profile%origin_at_flange_back) write (unit, '(a)', iostat=stat, &
+         iomsg=message) '# origin: on the tape circle, flange back at y = -'// &
+         mm_text(flange_back_to_tape_circle)//' mm (the source had its origin at the flange '// &
+         'back, MiniProf: y moved by -'//mm_text(flange_back_to_tape_circle)//' mm)'
+      if (stat == 0) write (unit, '(a)', iostat=stat, iomsg=message) &
          '#                    y                      z'
       do i = 1, profile%size()
          if (stat /= 0) exit
@@ -70,6 +83,19 @@ contains
       if (stat /= 0) call fatal_error(error, filename//': cannot close the file: '// &
          trim(message), stat_io)
    end subroutine write_profile_plain
+
+   !> A length in mm, as few digits as it needs (70 → '70').
+   pure function mm_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=32) :: buf
+      write (buf, '(g0)') x
+      text = trim(adjustl(buf))
+      do while (len(text) > 1 .and. index(text, '.') > 0 .and. text(len(text):) == '0')
+         text = text(:len(text) - 1)
+      end do
+      if (text(len(text):) == '.') text = text(:len(text) - 1)
+   end function mm_text
 
    !> Write the built-in S1002 and upright UIC60 profiles as `S1002.txt` and `UIC60.txt`.
    subroutine write_builtin_profiles(directory, error)
