@@ -31,6 +31,7 @@ module shcontact_api_solver
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_no_contact, stat_usage, stat_numerical
    use shcontact_core_strings, only: str_int, str_real, to_lower
+   use shcontact_core_ranges, only: max_grid_cells
    use shcontact_profile_reader, only: profile_file_format
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
@@ -276,6 +277,8 @@ contains
       call check_normal_options(self%normal_options, error)
       if (allocated(error)) return
       call check_tangential_options(self%tangential_options, error)
+      if (allocated(error)) return
+      call check_grid_cells(self%normal_options, self%tangential_options, error)
       if (allocated(error)) return
       call prepare_profiles(self%wheel, self%rail, self%track, self%contact_options, &
          self%prepared, error)
@@ -1022,6 +1025,14 @@ contains
          call check_tangential_options(tangential, error)
          if (allocated(error)) return
       end if
+      if (present(normal) .and. present(tangential)) then
+         call check_grid_cells(normal, tangential, error)
+      else if (present(normal)) then
+         call check_grid_cells(normal, self%tangential_options, error)
+      else if (present(tangential)) then
+         call check_grid_cells(self%normal_options, tangential, error)
+      end if
+      if (allocated(error)) return
       if (present(normal)) then
          self%normal_options = normal
          call forget_normal(self)
@@ -1083,6 +1094,19 @@ contains
       normal = self%normal_options
       tangential = self%tangential_options
    end subroutine get_options
+
+   !> n_strips × n_elements within max_grid_cells (shcontact_core_ranges), as the app checks.
+   pure subroutine check_grid_cells(normal, tangential, error)
+      type(normal_options_type), intent(in) :: normal
+      type(tangential_options_type), intent(in) :: tangential
+      type(error_type), allocatable, intent(out) :: error
+      integer(i8) :: cells
+      cells = int(normal%n_strips, i8)*int(tangential%n_elements, i8)
+      if (cells <= max_grid_cells) return
+      call fatal_error(error, 'options n_strips x n_elements = '//str_int(normal%n_strips)// &
+         ' x '//str_int(tangential%n_elements)//' = '//str_int(cells)//' grid cells per '// &
+         'patch; at most '//str_int(max_grid_cells)//' are allowed', stat_invalid_input)
+   end subroutine check_grid_cells
 
    !> Reject NaN or Inf in the material or the track before the range checks compare them
    !> (a comparison with NaN would raise the invalid-operation exception).

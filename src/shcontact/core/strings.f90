@@ -1,6 +1,7 @@
 !> Small text helpers for messages and option parsing.
 module shcontact_core_strings
    use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_buffer, only: text_buffer_type
    implicit none
    private
 
@@ -75,17 +76,18 @@ contains
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: shown
       character(len=*), parameter :: hex = '0123456789ABCDEF'
+      type(text_buffer_type) :: built
       integer :: i, code
-      shown = ''
       do i = 1, len(text)
          code = iachar(text(i:i))
          if ((code < 32 .and. code /= 10 .and. code /= 9) .or. code == 127) then
-            shown = shown//'<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
-               mod(code, 16) + 1)//'>'
+            call built%add('<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
+               mod(code, 16) + 1)//'>')
          else
-            shown = shown//text(i:i)
+            call built%add(text(i:i))
          end if
       end do
+      shown = built%text()
    end function visible
 
 end module shcontact_core_strings
