@@ -10,7 +10,7 @@ module shcontact_api_context
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
    use shcontact_geometry_track, only: track_type
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type, new_normal_options
@@ -162,6 +162,12 @@ contains
       character(len=:), allocatable :: name
 
       if (.not. usable(ctx, error)) then
+         stat = record(ctx, error)
+         return
+      end if
+      if (scan(value, control_characters) > 0) then
+         call fatal_error(error, "option '"//trim(key)//"' = '"//visible(value)// &
+            "': a control character in the value", stat_invalid_input)
          stat = record(ctx, error)
          return
       end if

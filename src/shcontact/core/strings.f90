@@ -5,7 +5,15 @@ module shcontact_core_strings
    implicit none
    private
 
-   public :: to_lower, str_int, str_real, visible
+   public :: to_lower, str_int, str_real, visible, control_characters
+
+   !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
+   !> file's tabs and line ends are taken by the line reader first).
+   character(len=*), parameter :: control_characters = achar(0)//achar(1)//achar(2)// &
+      achar(3)//achar(4)//achar(5)//achar(6)//achar(7)//achar(8)//achar(9)//achar(10)// &
+      achar(11)//achar(12)//achar(13)//achar(14)//achar(15)//achar(16)//achar(17)//achar(18)// &
+      achar(19)//achar(20)//achar(21)//achar(22)//achar(23)//achar(24)//achar(25)//achar(26)// &
+      achar(27)//achar(28)//achar(29)//achar(30)//achar(31)//achar(127)
 
    !> An integer (default or 64-bit) as text without blanks.
    interface str_int

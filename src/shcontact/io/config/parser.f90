@@ -4,7 +4,7 @@
 !> line override `group%var=value` becomes an assignment the same way.
 module shcontact_io_config_parser
    use shcontact_core_error, only: error_type, fatal_error
-   use shcontact_core_strings, only: to_lower, str_int, visible
+   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
    use shcontact_core_textfile, only: text_line_type, read_text_lines
    use shcontact_core_buffer, only: text_buffer_type
    use shcontact_io_text, only: quote_string, strip_quotes
@@ -29,14 +29,6 @@ module shcontact_io_config_parser
       type(assignment_type), allocatable :: items(:)
       integer :: n = 0
    end type assignment_list_type
-
-   !> Bytes no case file holds: the ASCII control characters but tab, CR and LF (which the
-   !> line reader has taken), and DEL.
-   character(len=*), parameter :: control_characters = achar(0)//achar(1)//achar(2)// &
-      achar(3)//achar(4)//achar(5)//achar(6)//achar(7)//achar(8)//achar(11)//achar(12)// &
-      achar(14)//achar(15)//achar(16)//achar(17)//achar(18)//achar(19)//achar(20)// &
-      achar(21)//achar(22)//achar(23)//achar(24)//achar(25)//achar(26)//achar(27)// &
-      achar(28)//achar(29)//achar(30)//achar(31)//achar(127)
 
 contains
 
