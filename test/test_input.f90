@@ -627,10 +627,10 @@ contains
       if (unavailable(error, .false.)) return
       dir = scratch_directory('in_long')
       call write_long_list(dir//'/long.nml', 100000)
-      call shell('cd '//dir//' && timeout 120 '//program_path()//' run long.nml --check '// &
+      call shell('cd '//dir//' && timeout 60 '//program_path()//' run long.nml --check '// &
          '> out.txt 2> err.txt', stat)
       call check(error, stat, 0, message='100 000 values: status '//int_text(stat)// &
-         ' (124: over 120 s); '//file_text(dir//'/err.txt'))
+         ' (124: over 60 s); '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), '(100000 case(s))', '100 000 values')
       if (allocated(error)) return
