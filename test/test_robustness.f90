@@ -605,13 +605,14 @@ contains
    subroutine test_fuzz(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, base_case, base_rail, text, args, name
-      integer :: seed, i, stat, runs, n_real, ir, setter_calls, counts(0:6), n_pipe
+      integer :: seed, seed0, i, stat, runs, n_real, ir, setter_calls, counts(0:6), n_pipe
       integer :: real_vars(size(variables))
       real :: seconds
       logical :: campaign
       integer(kind=8) :: t0, t1, rate
       if (unavailable(error, .false.)) return
       call fuzz_settings(seconds, runs, seed, campaign)
+      seed0 = seed
       dir = scratch_directory('rob_fuzz')
       stat = run_program(dir, 'profiles --write builtin')
       call check(error, stat, 0, message='profiles --write')
@@ -678,10 +679,10 @@ contains
          call system_clock(t1)
          if (real(t1 - t0)/real(rate) > seconds) exit
       end do
-      if (campaign) print '(a,i0,a,i0,a,i0,a,i0,a,7(1x,i0),a,i0)', 'fuzz campaign: ', &
+      if (campaign) print '(a,i0,a,i0,a,i0,a,7(1x,i0),a,i0)', 'fuzz campaign: ', &
          min(i, runs), ' case runs (', n_pipe, ' through a pipe) and as many profile runs, ', &
          setter_calls, ' option-setter calls; program runs by status 0..6:', counts, &
-         '; seed ', seed
+         '; seed ', seed0
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_fuzz
@@ -759,6 +760,10 @@ contains
       end if
       named = index(err, name) > 0
       if (present(also)) named = named .or. index(err, also) > 0
+      ! A value given with --set is named as such; a file the input names (a mutated profile
+      ! name) may be named instead.
+      if (index(args, ' --set ') > 0) named = named .or. index(err, 'command line --set ') > 0
+      named = named .or. names_input_file(err, input)
       if (stat >= 1 .and. stat <= 3 .and. .not. named) then
          call test_failed(error, 'status '//trim(str(stat))//': the message does not name '// &
             name//': '//err//'; input:'//new_line('a')//input)
@@ -786,6 +791,19 @@ contains
       end if
       call shell('cd '//dir//' && rm -rf *.h5 *.h5.* out.txt err.txt')
    end subroutine check_fuzz_run
+
+   !> True when the message starts with a file name (`error: NAME:`) that the input holds.
+   pure logical function names_input_file(err, input) result(yes)
+      character(len=*), intent(in) :: err, input
+      integer :: start, colon
+      yes = .false.
+      start = index(err, 'error: ')
+      if (start == 0) return
+      start = start + 7
+      colon = index(err(start:), ':')
+      if (colon < 2) return
+      yes = index(input, err(start:start + colon - 2)) > 0
+   end function names_input_file
 
    pure function str(i) result(text)
       integer, intent(in) :: i
