@@ -10,7 +10,8 @@ module test_robustness
    use shcontact_io_files, only: file_exists
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in, expect_failure, current_directory
-   use test_input, only: library_option_fuzz
+   use test_fuzz_support, only: next_random, fuzz_settings, repeated, names_input_file, &
+      library_option_fuzz
    use shcontact_io_config_variables, only: variables, k_real
    implicit none
    private
@@ -611,7 +612,7 @@ contains
       logical :: campaign
       integer(kind=8) :: t0, t1, rate
       if (unavailable(error, .false.)) return
-      call fuzz_settings(seconds, runs, seed, campaign)
+      call fuzz_settings(fuzz_seconds, fuzz_runs, seconds, runs, seed, campaign)
       seed0 = seed
       dir = scratch_directory('rob_fuzz')
       stat = run_program(dir, 'profiles --write builtin')
@@ -687,46 +688,6 @@ contains
       call shell('rm -rf '//dir)
    end subroutine test_fuzz
 
-   !> The fuzz test's bounds: SHCONTACT_FUZZ_SECONDS (a campaign without a run limit) and
-   !> SHCONTACT_FUZZ_SEED, else the suite's few seconds.
-   subroutine fuzz_settings(seconds, runs, seed, campaign)
-      real, intent(out) :: seconds
-      integer, intent(out) :: runs, seed
-      logical, intent(out) :: campaign
-      character(len=32) :: buf
-      integer :: length, stat
-      seconds = fuzz_seconds
-      runs = fuzz_runs
-      seed = 20260514
-      call get_environment_variable('SHCONTACT_FUZZ_SECONDS', buf, length, stat)
-      campaign = stat == 0 .and. length > 0
-      if (campaign) then
-         read (buf, *, iostat=stat) seconds
-         if (stat /= 0) seconds = fuzz_seconds
-         runs = huge(1)
-      end if
-      call get_environment_variable('SHCONTACT_FUZZ_SEED', buf, length, stat)
-      if (stat == 0 .and. length > 0) then
-         read (buf, *, iostat=stat) seed
-         if (stat /= 0) seed = 20260514
-      end if
-   end subroutine fuzz_settings
-
-   !> The text with `assignment` ('&group|name = value') added again after the group's
-   !> name, when the text has that group.
-   function repeated(text, assignment) result(m)
-      character(len=*), intent(in) :: text, assignment
-      character(len=:), allocatable :: m, group
-      integer :: bar, at
-      m = text
-      bar = index(assignment, '|')
-      group = assignment(1:bar - 1)
-      at = index(m, group//' ')
-      if (at == 0) return
-      at = at + len(group)
-      m = m(:at)//trim(assignment(bar + 1:))//', '//m(at + 1:)
-   end function repeated
-
    !> One fuzz run and its checks (test_fuzz).
    subroutine check_fuzz_run(error, dir, args, name, input, also, pipe, status)
       type(error_type), allocatable, intent(out) :: error
@@ -792,33 +753,11 @@ contains
       call shell('cd '//dir//' && rm -rf *.h5 *.h5.* out.txt err.txt')
    end subroutine check_fuzz_run
 
-   !> True when the message starts with a file name (`error: NAME:`) that the input holds.
-   pure logical function names_input_file(err, input) result(yes)
-      character(len=*), intent(in) :: err, input
-      integer :: start, colon
-      yes = .false.
-      start = index(err, 'error: ')
-      if (start == 0) return
-      start = start + 7
-      colon = index(err(start:), ':')
-      if (colon < 2) return
-      yes = index(input, err(start:start + colon - 2)) > 0
-   end function names_input_file
-
    pure function str(i) result(text)
       integer, intent(in) :: i
       character(len=12) :: text
       write (text, '(i0)') i
    end function str
-
-   !> Next value of a 31-bit linear congruential generator (reproducible on every compiler).
-   integer function next_random(seed, n) result(k)
-      integer, intent(inout) :: seed
-      !> The value is in 1..n.
-      integer, intent(in) :: n
-      seed = int(mod(1103515245_8*int(seed, 8) + 12345_8, 2147483648_8))
-      k = 1 + int(mod(int(seed, 8)/65536_8, int(n, 8)))
-   end function next_random
 
    !> The text with 1 to 3 random mutations: delete, insert or replace a byte, duplicate,
    !> delete or swap a line, replace a number by an extreme one, truncate.
