@@ -14,7 +14,8 @@ module test_input
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_api_context, only: contact_context_type, context_set_option, &
-      context_set_material, context_set_track, context_message
+      context_set_material, context_set_track, context_message, context_solve
+   use shcontact_api_values, only: result_value_count
    use shcontact_io_config, only: case_config_type, load_config, read_config_text, &
       config_namelist
    use shcontact_io_report, only: report_line
@@ -362,6 +363,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(contact_context_type) :: ctx
       type(track_type) :: t
+      real(wp) :: values(result_value_count)
       call new_library(error, ctx)
       if (allocated(error)) return
       call check(error, context_set_option(ctx, 'normal%n_strips', '100000'), 2, &
@@ -382,6 +384,16 @@ contains
       if (allocated(error)) return
       call check(error, context_set_material(ctx, 82670.0_wp, 0.27_wp, 1.0e-300_wp), 2, &
          message='mu = 1e-300')
+      if (allocated(error)) return
+      ! The per-call inputs of a solve: the program's load and creepage ranges.
+      call check(error, context_solve(ctx, 4.733_wp, 0.0_wp, 1, 1.0e-300_wp, 5.8e-4_wp, &
+         6.1e-5_wp, 2.74e-4_wp, values), 2, message='normal force 1e-300 N')
+      if (allocated(error)) return
+      call check(error, context_solve(ctx, 4.733_wp, 0.0_wp, 2, 4.9e-324_wp, 5.8e-4_wp, &
+         6.1e-5_wp, 2.74e-4_wp, values), 2, message='vertical force 4.9e-324 N')
+      if (allocated(error)) return
+      call check(error, context_solve(ctx, 4.733_wp, 0.0_wp, 1, 64700.0_wp, 2.0_wp, &
+         6.1e-5_wp, 2.74e-4_wp, values), 2, message='nu_x = 2')
       if (allocated(error)) return
       ! Accepted values still work, and the grid limit holds for the pair.
       call check(error, context_set_option(ctx, 'normal%n_strips', '200'), 0, &

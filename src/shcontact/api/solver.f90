@@ -31,7 +31,7 @@ module shcontact_api_solver
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_no_contact, stat_usage, stat_numerical
    use shcontact_core_strings, only: str_int, str_real, to_lower
-   use shcontact_core_ranges, only: max_grid_cells
+   use shcontact_core_ranges, only: max_grid_cells, check_range
    use shcontact_profile_reader, only: profile_file_format
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
@@ -655,8 +655,22 @@ contains
          call fatal_error(error, trim(load_mode_names(load%mode))//' = '// &
             str_real(load%value)//' N: expected a positive force', stat_invalid_input)
          return
+      else if (load%mode == load_normal_force) then
+         ! The program's range (shcontact_core_ranges): 1 N to 1e7 N.
+         call check_range('load%normal_force', load%value, 'normal force', error)
+         if (allocated(error)) return
+      else if (load%mode == load_vertical_force) then
+         call check_range('load%vertical_force', load%value, 'vertical force', error)
+         if (allocated(error)) return
       end if
       call check_creepage(creepage, error)
+      if (allocated(error)) return
+      ! The program's ranges of prescribed creepages (shcontact_core_ranges).
+      call check_range('creepage%nu_x', creepage%nu_x, 'creepage nu_x', error)
+      if (.not. allocated(error)) call check_range('creepage%nu_y', creepage%nu_y, &
+         'creepage nu_y', error)
+      if (.not. allocated(error)) call check_range('creepage%phi', creepage%phi, &
+         'spin creepage phi', error)
    end subroutine check_call
 
    !> The contact patches at (t_y, roll, yaw), unless they are those of the last call. With a yaw
