@@ -4,6 +4,8 @@
 module test_fuzz_support
    use testdrive, only: error_type, check, test_failed
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
    use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
    use shcontact_core_material, only: material_type
@@ -13,7 +15,7 @@ module test_fuzz_support
    implicit none
    private
    public :: next_random, fuzz_settings, repeated, names_input_file, library_option_fuzz
-   public :: real_text, int_text, library_status, reset_library, samples, new_library
+   public :: library_status, reset_library, samples, new_library
 
 contains
 
@@ -82,23 +84,6 @@ contains
       yes = index(input, err(start:start + colon - 2)) > 0
    end function names_input_file
 
-   !> A real as text that reads back exactly.
-   pure function real_text(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      write (buf, '(es25.17e3)') x
-      text = trim(adjustl(buf))
-   end function real_text
-
-   pure function int_text(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function int_text
-
    !> 0 when the library accepts the value for `key` (option setter, set_material, or the
    !> track check), else its status; -1 when the library has no such input.
    integer function library_status(ctx, key, x, message) result(stat)
@@ -113,10 +98,10 @@ contains
       select case (key)
       case ('normal%epsilon', 'normal%b_min', 'profiles%wheel_smoothing', &
             'profiles%rail_smoothing')
-         stat = context_set_option(ctx, key, real_text(x))
+         stat = context_set_option(ctx, key, format_real(x))
          message = context_message(ctx)
       case ('normal%n_strips', 'tangential%n_elements')
-         stat = context_set_option(ctx, key, int_text(nint(x)))
+         stat = context_set_option(ctx, key, str_int(nint(x)))
          message = context_message(ctx)
       case ('material%shear_modulus', 'material%poisson', 'material%friction')
          select case (key)
@@ -233,9 +218,9 @@ contains
             if (ranges(ir)%whole) then
                if (abs(x) > 1.0e9_wp) x = 1.0e9_wp
                x = anint(x)
-               text = int_text(nint(x))
+               text = str_int(nint(x))
             else
-               text = real_text(x)
+               text = format_real(x)
             end if
             expect_ok = in_range(ranges(ir), x)
             if (key == 'normal%n_strips') expect_ok = expect_ok .and. &
@@ -259,13 +244,13 @@ contains
             if (index(text, ',') > 0 .or. index(text, ' ') > 0) expect_ok = stat == 0
             if (expect_ok .neqv. (stat == 0)) then
                call test_failed(error, 'set_option('//key//', '//text//'): status '// &
-                  int_text(stat)//', expected '//trim(merge('accepted', 'refused ', &
+                  str_int(stat)//', expected '//trim(merge('accepted', 'refused ', &
                   expect_ok))//'; '//message)
                return
             end if
             if (stat /= 0 .and. (stat /= 2 .or. len(message) == 0)) then
                call test_failed(error, 'set_option('//key//', '//text//'): status '// &
-                  int_text(stat)//' without the invalid-input code and a message')
+                  str_int(stat)//' without the invalid-input code and a message')
                return
             end if
             if (stat == 0) call reset_library(ctx)
@@ -276,8 +261,8 @@ contains
             x = s(next_random(seed, size(s)))
             stat = library_status(ctx, trim(ranges(ir)%key), x, message)
             if (in_range(ranges(ir), x) .neqv. (stat == 0)) then
-               call test_failed(error, trim(ranges(ir)%key)//' = '//real_text(x)// &
-                  ': library status '//int_text(stat)//'; '//message)
+               call test_failed(error, trim(ranges(ir)%key)//' = '//format_real(x)// &
+                  ': library status '//str_int(stat)//'; '//message)
                return
             end if
             if (stat == 0) call reset_library(ctx)

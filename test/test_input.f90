@@ -5,6 +5,8 @@ module test_input
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
+   use shcontact_io_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
    use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
    use shcontact_core_material, only: material_type
@@ -21,7 +23,7 @@ module test_input
    use shcontact_io_report, only: report_line
    use shcontact_io_config_sweep, only: axis_index
    use shcontact_case_result, only: case_summary_type
-   use test_fuzz_support, only: real_text, int_text, library_status, reset_library, samples, &
+   use test_fuzz_support, only: library_status, reset_library, samples, &
       new_library, library_option_fuzz
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in
@@ -67,22 +69,14 @@ contains
       character(len=*), intent(in) :: dir, fragment, what
       integer, intent(in) :: stat, status
       character(len=:), allocatable :: err
+      integer :: i
       err = file_text(dir//'/err.txt')
       call check(error, stat, status, message=what//': exit status; stderr: '//err)
       if (allocated(error)) return
       call expect_in(error, err, fragment, what)
       if (allocated(error)) return
-      if (count_lines(err) /= 1) call test_failed(error, what//': expected one message: '//err)
+      if (count([(err(i:i) == new_line('a'), i=1, len(err))]) /= 1) call test_failed(error, what//': expected one message: '//err)
    end subroutine expect_one_message
-
-   pure integer function count_lines(text) result(n)
-      character(len=*), intent(in) :: text
-      integer :: i
-      n = 0
-      do i = 1, len(text)
-         if (text(i:i) == new_line('a')) n = n + 1
-      end do
-   end function count_lines
 
    !> True when the app accepts `key=value` as the only override of the default case.
    logical function app_accepts(key, value, message)
@@ -399,7 +393,7 @@ contains
       call check(error, context_set_option(ctx, 'normal%n_strips', '200'), 0, &
          message='n_strips = 200: '//context_message(ctx))
       if (allocated(error)) return
-      call check(error, context_set_option(ctx, 'tangential%n_elements', int_text( &
+      call check(error, context_set_option(ctx, 'tangential%n_elements', str_int( &
          max_grid_cells/200 + 1)), 2, message='200 strips x too many elements')
    end subroutine test_setter_reproducers
 
@@ -422,9 +416,9 @@ contains
          do i = 1, size(x)
             if (ranges(ir)%whole) then
                if (abs(x(i)) > real(huge(1), wp)) cycle
-               text = int_text(nint(x(i)))
+               text = str_int(nint(x(i)))
             else
-               text = real_text(x(i))
+               text = format_real(x(i))
             end if
             app = app_accepts(key, text, app_message)
             ! The app refuses what is outside the table's range, and accepts what is inside
@@ -452,7 +446,7 @@ contains
          end do
       end do
       ! 17 library inputs, about a dozen samples each.
-      call check(error, n_lib > 17*10, message='too few library samples: '//int_text(n_lib))
+      call check(error, n_lib > 17*10, message='too few library samples: '//str_int(n_lib))
       if (allocated(error)) return
       call check(error, ranges(find_range('kinematics%yaw'))%hi, max_yaw, &
          message='yaw range = the library''s max_yaw')
@@ -496,7 +490,7 @@ contains
          checked = checked + 1
       end do
       call check(error, checked >= size(ranges) - 1, message='defaults found in the namelist: '// &
-         int_text(checked))
+         str_int(checked))
       if (allocated(error)) return
       call check(error, all([m%shear_modulus, m%poisson, m%friction, t%gauge, t%gauge_height, &
          t%rail_inclination, t%flange_back_distance, t%flange_back_position, t%nominal_radius, &
@@ -537,7 +531,7 @@ contains
       call write_long_list(dir//'/long.nml', 100000)
       call shell('cd '//dir//' && timeout 60 '//program_path()//' run long.nml --check '// &
          '> out.txt 2> err.txt', stat)
-      call check(error, stat, 0, message='100 000 values: status '//int_text(stat)// &
+      call check(error, stat, 0, message='100 000 values: status '//str_int(stat)// &
          ' (124: over 60 s); '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), '(100000 case(s))', '100 000 values')
@@ -596,7 +590,7 @@ contains
       integer :: n
       call library_option_fuzz(error, 20260524, 2.0, n)
       if (allocated(error)) return
-      call check(error, n > 50, message='too few setter calls: '//int_text(n))
+      call check(error, n > 50, message='too few setter calls: '//str_int(n))
    end subroutine test_option_fuzz
 
 end module test_input
