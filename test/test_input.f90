@@ -22,6 +22,7 @@ module test_input
       config_namelist
    use shcontact_io_report, only: report_line
    use shcontact_io_config_sweep, only: axis_index
+   use shcontact_io_config_variables, only: variables, k_real, k_int
    use shcontact_case_result, only: case_summary_type
    use test_fuzz_support, only: library_status, reset_library, samples, &
       new_library, library_option_fuzz
@@ -444,6 +445,15 @@ contains
             end if
             if (lib == 0) call reset_library(ctx)
          end do
+      end do
+      ! Every real and integer variable of the case files has its entry (but the sweep's).
+      do ir = 1, size(variables)
+         if (variables(ir)%group == 'sweep' .or. .not. (variables(ir)%kind == k_real .or. &
+             variables(ir)%kind == k_int)) cycle
+         call check(error, find_range(trim(variables(ir)%group)//'%'// &
+            trim(variables(ir)%name)) > 0, message=trim(variables(ir)%group)//'%'// &
+            trim(variables(ir)%name)//' has no entry in the range table')
+         if (allocated(error)) return
       end do
       ! 17 library inputs, about a dozen samples each.
       call check(error, n_lib > 17*10, message='too few library samples: '//str_int(n_lib))
