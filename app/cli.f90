@@ -5,6 +5,7 @@ module shcontact_app_cli
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
    use shcontact_case_sweep, only: max_threads
+   use shcontact_io_files, only: control_character
    implicit none
    private
 
@@ -41,12 +42,20 @@ module shcontact_app_cli
       logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
+      !> run, merge --force: replace an output (or sidecar) that shcontact did not write, start
+      !> afresh in the work folder of an interrupted run.
+      logical :: force = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
       integer :: shard = 0, n_shards = 0
       !> --shard slurm: I/N from the Slurm job-array variables.
       logical :: shard_slurm = .false.
+      !> geometry: --wheelset Y_MIN,Y_MAX,STEP (mm; wheelset_given when set) and --conicity
+      !> AMPLITUDE[,...] (mm; empty when not given).
+      real(wp) :: wheelset_range(3) = 0.0_wp
+      logical :: wheelset_given = .false.
+      real(wp), allocatable :: amplitudes(:)
    end type cli_type
 
 contains
@@ -183,10 +192,15 @@ contains
          case ('--scale')
             call option_value(i, arg, value, has_value, error)
             if (.not. allocated(error)) call read_positive(value, '--scale', cli%scale, error)
+         case ('--wheelset', '--conicity')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) call wheelset_option(cli, arg, value, error)
          case ('--check')
             cli%check = .true.
          case ('--resume')
             cli%resume = .true.
+         case ('--force')
+            cli%force = .true.
          case ('-q', '--quiet')
             cli%quiet = .true.
          case ('-v', '--verbose')
@@ -218,6 +232,10 @@ contains
          accepts = command == 'run' .or. command == 'geometry'
       case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
          accepts = command == 'run'
+      case ('--force')
+         accepts = command == 'run' .or. command == 'merge'
+      case ('--wheelset', '--conicity')
+         accepts = command == 'geometry'
       case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &
             '--mirror-z')
          accepts = command == 'profiles'
@@ -298,11 +316,33 @@ contains
                '--mirror-y/z are options of "profiles FILE", not of "profiles --write DIR"', &
                stat_usage)
          end if
+      case ('geometry')
+         if ((cli%wheelset_given .or. allocated(cli%amplitudes)) .and. len(cli%output) > 0) &
+            call fatal_error(error, '-o writes the strip geometry table; with --wheelset or '// &
+            '--conicity the tables go to stdout (redirect them: > FILE)', stat_usage)
       case ('run')
          if (cli%csv_units .and. cli%format /= 'csv') call fatal_error(error, &
             '--csv-units needs --format csv', stat_usage)
       end select
+      if (allocated(error)) return
+      if (cli%command == 'merge') then
+         call check_output_name(cli%inputs%items(1)%text, 'merge OUT.h5', error)
+      else if (cli%command == 'run') then
+         call check_output_name(cli%output, '-o', error)
+      end if
    end subroutine check_combination
+
+   !> An output name without control characters (a newline in `-o` was dropped on the way
+   !> and another file written).
+   subroutine check_output_name(name, what, error)
+      character(len=*), intent(in) :: name, what
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+      k = control_character(name)
+      if (k > 0) call fatal_error(error, what//' "'//name(1:k - 1)//'?'//name(k + 1:)// &
+         '": the name holds a control character (byte '//str_int(iachar(name(k:k)))// &
+         '); choose a name without one', stat_usage)
+   end subroutine check_output_name
 
    function argument(i) result(arg)
       integer, intent(in) :: i
@@ -374,6 +414,66 @@ contains
          call fatal_error(error, name//' '//text//': expected a positive number', stat_usage)
       end if
    end subroutine read_positive
+
+   !> geometry --wheelset Y_MIN,Y_MAX,STEP (Y_MIN < Y_MAX, 0 < STEP) or --conicity A[,A...]
+   !> (each A > 0).
+   subroutine wheelset_option(cli, name, text, error)
+      type(cli_type), intent(inout) :: cli
+      character(len=*), intent(in) :: name, text
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), allocatable :: values(:)
+      logical :: ok
+      call read_real_list(text, values, ok)
+      if (name == '--wheelset') then
+         ok = ok .and. size(values) == 3
+         if (ok) ok = values(1) < values(2) .and. values(3) > 0.0_wp .and. &
+            values(3) <= values(2) - values(1) .and. (values(2) - values(1))/values(3) <= 1.0e5_wp
+         if (.not. ok) then
+            call fatal_error(error, '--wheelset '//text//': expected Y_MIN,Y_MAX,STEP in mm '// &
+               'with Y_MIN < Y_MAX and 0 < STEP <= Y_MAX - Y_MIN (at most 100000 steps), '// &
+               'e.g. --wheelset -10,10,0.5', stat_usage)
+            return
+         end if
+         cli%wheelset_range = values
+         cli%wheelset_given = .true.
+      else
+         if (ok) ok = size(values) >= 1 .and. all(values > 0.0_wp .and. values < 100.0_wp)
+         if (.not. ok) then
+            call fatal_error(error, '--conicity '//text//': expected amplitudes in mm '// &
+               '(0 < A < 100), separated by commas, e.g. --conicity 3 or --conicity 1,2,3,4,5', &
+               stat_usage)
+            return
+         end if
+         cli%amplitudes = values
+      end if
+   end subroutine wheelset_option
+
+   !> Finite reals separated by commas ("1,2.5,-3"); ok = .false. on anything else.
+   subroutine read_real_list(text, values, ok)
+      character(len=*), intent(in) :: text
+      real(wp), allocatable, intent(out) :: values(:)
+      logical, intent(out) :: ok
+      integer :: first, comma, stat
+      real(wp) :: x
+      allocate (values(0))
+      ok = .false.
+      first = 1
+      do
+         comma = index(text(first:), ',')
+         if (comma == 0) then
+            comma = len(text) + 1
+         else
+            comma = first + comma - 1
+         end if
+         if (comma == first .or. verify(text(first:comma - 1), '0123456789+-.eE') /= 0) return
+         read (text(first:comma - 1), *, iostat=stat) x
+         if (stat /= 0 .or. .not. abs(x) <= huge(x)) return
+         values = [values, x]
+         if (comma > len(text)) exit
+         first = comma + 1
+      end do
+      ok = .true.
+   end subroutine read_real_list
 
    !> `I/N` with 1 ≤ I ≤ N.
    subroutine read_shard(text, shard, n_shards, error)

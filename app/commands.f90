@@ -22,7 +22,7 @@ module shcontact_app_commands
    private
 
    public :: run_command, merge_command, geometry_command, report_error
-   public :: exit_some_failed
+   public :: exit_some_failed, configure
 
    !> Exit status when some (not all) cases of a sweep failed.
    integer, parameter :: exit_some_failed = 4
@@ -48,8 +48,11 @@ contains
 
    !> Defaults + case file + --set + -o.
    subroutine configure(cli, config, error)
+      !> The command line.
       type(cli_type), intent(in) :: cli
+      !> The configuration.
       type(case_config_type), intent(out) :: config
+      !> Set on a bad case file or --set.
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: sets(:)
       integer :: i, longest, n
@@ -100,6 +103,7 @@ contains
 
       options%threads = cli%threads
       options%resume = cli%resume
+      options%force = cli%force
       options%command_line = command_line()
       call choose_shard(cli, options%shard, options%n_shards, error)
       if (allocated(error)) then
@@ -219,7 +223,7 @@ contains
       type(error_type), allocatable :: error
       status = 0
       call merge_result_files(cli%inputs%items(1)%text, cli%inputs%items(2:cli%inputs%n), &
-         command_line(), iso_timestamp(), error)
+         command_line(), iso_timestamp(), error, force=cli%force)
       if (allocated(error)) then
          status = report_error(error)
          return

@@ -25,6 +25,9 @@ contains
          '  shcontact geometry [CASE.nml] [-o FILE] [--set ...]'//nl// &
          '                                        write the strip geometry table of the case'// &
          nl// &
+         '  shcontact geometry --wheelset -10,10,0.5 --conicity 1,2,3'//nl// &
+         '                                        wheelset contact table, equivalent conicity'// &
+         nl// &
          '  shcontact --help | --version'//nl//nl// &
          '`shcontact COMMAND --help` shows the options of a command. Documentation: doc/app.md.'// &
          nl//nl//exit_status_text()
@@ -94,7 +97,11 @@ contains
          nl// &
          '                           (without --shard the Slurm variables are ignored)'//nl// &
          '  --resume                 complete an interrupted run from its checkpoint '// &
-         'OUT.h5.partial/'//nl//nl// &
+         'OUT.h5.partial/'//nl// &
+         '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
+         'write, or'//nl// &
+         '                           start afresh over an interrupted run''s checkpoint'// &
+         nl//nl// &
          'Progress goes to stderr: a bar on a terminal, else a line (cases done, rate, ETA)'// &
          nl// &
          'every 10 % of the cases or 10 s.'
@@ -109,6 +116,8 @@ contains
          'file of an unsharded run. The shards must come from the same configuration and'//nl// &
          'hold every case exactly once; OUT.h5 must not be one of them.'//nl//nl// &
          'Options:'//nl// &
+         '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
+         'write'//nl// &
          '  -q, --quiet              errors only on stderr'
    end function merge_help
 
@@ -121,9 +130,12 @@ contains
          'MiniProf'//nl// &
          '.ban/.whl), check and clean it as a case does (point order, duplicates, loops, '// &
          'spikes,'//nl// &
-         'running surface) and print a summary (points, range, units) on stdout. With '// &
-         '--write,'//nl// &
-         'write the built-in profiles (S1002.txt, UIC60.txt) into DIR instead.'//nl//nl// &
+         'running surface) and print a summary (points, range, units) on stdout, with '// &
+         'whether'//nl// &
+         'a rail looks canted already, the noise of the points and the smoothing length '// &
+         'it calls'//nl// &
+         'for (doc/profiles.md). With --write,'//nl// &
+         'write the built-in profiles (S1002.txt, UIC60.txt, UIC60-canted.txt) into DIR instead.'//nl//nl// &
          'Options:'//nl// &
          '  -o, --output OUT         write the cleaned profile as a 2-column file (y z in mm,'// &
          nl// &
@@ -147,7 +159,9 @@ contains
    function geometry_help() result(text)
       character(len=:), allocatable :: text
       text = &
-         'Usage: shcontact geometry [CASE.nml] [-o FILE] [--set GROUP%VAR=VALUE]...'//nl//nl// &
+         'Usage: shcontact geometry [CASE.nml] [-o FILE] [--set GROUP%VAR=VALUE]...'//nl// &
+         '       shcontact geometry [CASE.nml] [--wheelset Y_MIN,Y_MAX,STEP] '// &
+         '[--conicity A[,A...]] [--set ...]'//nl//nl// &
          'Write the contact-patch geometry of the case''s wheel position (gap, A(y), B(y),'// &
          nl// &
          'gamma(y), r_w(y), delta r per table point) as a text table, for plots of the '// &
@@ -157,6 +171,19 @@ contains
          '  -o, --output FILE        the table (default geometry.txt in the working '// &
          'directory)'//nl// &
          '  --set GROUP%VAR=VALUE    override a namelist variable (repeatable)'//nl// &
+         '  --wheelset Y_MIN,Y_MAX,STEP'//nl// &
+         '                           instead: the wheelset contact geometry on stdout, one '// &
+         'line per'//nl// &
+         '                           lateral shift y (mm): roll, contact points on rail and '// &
+         'wheel,'//nl// &
+         '                           rolling radii, dr = r_R - r_L, contact angles of both '// &
+         'wheels'//nl// &
+         '  --conicity A[,A...]      the equivalent conicity for these amplitudes (mm) on '// &
+         'stdout:'//nl// &
+         '                           EN 15302 wavelength method and first-harmonic balance,'// &
+         nl// &
+         '                           Klingel wavelength, roll-angle parameter '// &
+         '(doc/geometry.md)'//nl// &
          '  -q, --quiet              errors only on stderr'
    end function geometry_help
 

@@ -8,6 +8,7 @@ program shcontact_main
    use shcontact_app_help, only: usage_text, command_help
    use shcontact_app_commands, only: run_command, merge_command, geometry_command, report_error
    use shcontact_app_profiles, only: profiles_command
+   use shcontact_app_wheelset, only: wheelset_command
    implicit none
    type(cli_type) :: cli
    type(error_type), allocatable :: error
@@ -37,7 +38,11 @@ program shcontact_main
    case ('profiles')
       status = profiles_command(cli)
    case ('geometry')
-      status = geometry_command(cli)
+      if (cli%wheelset_given .or. allocated(cli%amplitudes)) then
+         status = wheelset_command(cli)
+      else
+         status = geometry_command(cli)
+      end if
    case default
       status = run_command(cli)
    end select

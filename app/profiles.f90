@@ -16,6 +16,7 @@ module shcontact_app_profiles
    use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: report_error
+   use shcontact_app_profile_advice, only: profile_advice
    implicit none
    private
 
@@ -51,7 +52,8 @@ contains
          status = report_error(error)
          return
       end if
-      if (.not. cli%quiet) write (output_unit, '(a)') profile_summary(cli, read, cleaned)
+      if (.not. cli%quiet) write (output_unit, '(a)') profile_summary(cli, read, cleaned)// &
+         new_line('a')//profile_advice(read, cleaned)
    end function profiles_command
 
    !> The points as read (canonical form, not cleaned) and the profile a case would use.

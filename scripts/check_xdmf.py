@@ -9,7 +9,8 @@ references exists in the HDF5 file with the declared dimensions and number type 
 Char 1, Int 4); each grid's geometry and attributes have the shape of its topology. With
 --attributes, also: every dataset of the HDF5 file has `units` and `long_name`, every element
 field (x, xy, pn, px, py, slip, state) has dimension scales attached (its strip dimension to
-the strip centres `y`), and the root carries the provenance attributes.
+the strip centres `y`), every dimension of every dataset has a scale, and the root carries
+the provenance attributes.
 
 With --paraview, run by ParaView's pvbatch (or pvpython): the sidecar is opened with
 ParaView's default XDMF reader and the point count and field names are printed; give an
@@ -98,6 +99,13 @@ def check_attributes(h5, problems):
             if name.startswith("summary/") and base != "case":
                 if not [s for s in obj.dims[0].values() if s.name == "/summary/case"]:
                     problems.append(f"{h5}: /{name}: no dimension scale summary/case")
+            # Every dimension of every table has a scale (netCDF readers such as xarray refuse
+            # a variable mixing labelled and unlabelled dimensions).
+            is_scale = obj.attrs.get("CLASS", b"") in (b"DIMENSION_SCALE", "DIMENSION_SCALE")
+            if not is_scale:
+                for k, dim in enumerate(obj.dims):
+                    if len(dim) == 0:
+                        problems.append(f"{h5}: /{name}: dimension {k} has no scale")
         f.visititems(visit)
 
 

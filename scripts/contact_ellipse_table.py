@@ -4,8 +4,8 @@
   1. `shcontact-ellipse-table decks WORK EXACT` writes the CONTACT decks of every table node that
      data/exact/ellipse_table.csv lacks (Hertz ellipses with prescribed semi-axes, module 3,
      exact solver, 50 x 50 elements) and WORK/cases.csv;
-  2. CONTACT runs the two decks in parallel (CONTACT_EXE, default /tmp/contact-src/bin/contact_O2;
-     build CONTACT from github.com/eve70a/CONTACT, the -O2 build: -O3 gave NaN at times);
+  2. CONTACT runs the two decks in parallel (CONTACT_EXE, default build/contact/contact,
+     built by scripts/contact_build.sh from CONTACT's public source at a pinned revision);
   3. its FX/(mu FN), FY/(mu FN) are added to data/exact/ellipse_table.csv
      (i_ratio,k_x,k_y,t_phi,fx,fy; CONTACT's sign);
   4. `shcontact-ellipse-table source` writes src/shcontact/tangential/ellipse_table.f90.

@@ -32,11 +32,10 @@ def main():
         s = summary(folder)
         work = '/tmp/contact-gap-rows/%s' % name
         os.makedirs(work, exist_ok=True)
-        for p in cr.PROFILES:
-            shutil.copy(p, work)
+        rail_file, wheel_file, cant = cr.write_profiles(work)
         with open(os.path.join(work, 'm1.inp'), 'w') as f:
             f.write(cr.module1_deck(float(s['y_ws']), float(s['fz_vertical_input']),
-                                    float(s['vpitch'])))
+                                    float(s['vpitch']), rail_file, wheel_file, cant))
         ok, _, _, _ = cr.run_contact(work, 'm1')
         mats = sorted(f for f in os.listdir(work) if re.match(r'm1\.0001[a-z]?\.mat$', f))
         if not ok or not mats:

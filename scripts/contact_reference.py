@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Generate exact-theory (CONTACT) reference data at a wheelset lateral position Y_WS.
 
-Procedure (mirrors ../shared/reference/README.md):
-  1. CONTACT module 1 (S1002 / UIC60 mbench set-up, right wheel), zero yaw, VY=VYAW=0,
+Procedure (data/exact/README.md):
+  0. Profiles: the built-in S1002 and UIC60 written by `shcontact profiles --write` (default),
+     or CONTACT_PROFILES=mbench for the Manchester-benchmark files from an external-data folder.
+  1. CONTACT module 1 (S1002 / UIC60 1:40 Manchester set-up, right wheel), zero yaw, VY=VYAW=0,
      VPITCH adjusted so that CKSI ~ 0 ("pure-rolling-ish"), FZ iterated by secant so that the
      normal force of the largest patch (integrated pn*dx*dy from the .mat file) is 64700 N.
   2. h(x,y) of that patch exported from the module-1 .mat file (same grid); geometric point G
@@ -11,35 +13,109 @@ Procedure (mirrors ../shared/reference/README.md):
   3. Module 3, IPOTCN=3, IBASE=9 with h inline, FN=64700 prescribed, spin centre at G,
      exact solver (B=0, M=0); DOE over (xi, eta, phi); CSVs in the shared formats.
 
-usage: genref.py YWS OUTDIR [--cases corner|doe6|both] [--n 6] [--workdir DIR]
+usage: scripts/contact_reference.py YWS OUTDIR [--corner] [--n 6] [--workdir DIR]
+  CONTACT_EXE: the CONTACT program (scripts/contact_build.sh); SHCONTACT_EXE: shcontact (else fpm run)
 """
 import argparse, csv, math, os, re, shutil, subprocess, sys, time
 import numpy as np
 
-CONTACT = os.environ.get('CONTACT_EXE', '/tmp/contact-src/bin/contact_O2')
+CONTACT = os.environ.get('CONTACT_EXE', os.path.join(os.path.dirname(__file__), '..', 'build',
+                                                     'contact', 'contact'))  # scripts/contact_build.sh
 FN_TARGET = 64700.0
 MU = 0.3
 VS = 2000.0
 RNOM = 460.0
 
-SHARED = os.environ.get('SHCONTACT_SHARED', os.path.join(os.path.dirname(__file__), '..', '..',
-                                                           'shared'))
+# Profiles: 'builtin' (default) writes the project's built-in S1002 and UIC60-canted (the 1:40
+# inclination in the profile, origin at its highest point, as in the Manchester file) with
+# `shcontact profiles --write`; 'mbench' takes the Manchester-benchmark files MBench_S1002_v3.prw / MBench_UIC60_v3.prr (inclination
+# in the file) from $SHCONTACT_EXTERNAL_DATA/profiles, the set the committed data/exact was made
+# with. The two agree to 6.5e-4 mm on the running surfaces (doc/profiles.md, "Built-in
+# profiles"), and CONTACT's forces with them to about 1e-4 of mu*Fn (data/exact/README.md).
+PROFILE_SOURCE = os.environ.get('CONTACT_PROFILES', 'builtin')
+EXTERNAL = os.environ.get('SHCONTACT_EXTERNAL_DATA',
+                          os.path.join(os.path.dirname(__file__), '..', '..', 'shared'))
+# CONTACT's module 1 stops with NaN in its vertical-position iteration on profiles sampled at
+# 0.1 mm (the built-in sampling); at chords of 0.2 mm and more it converges, so the written
+# profiles are thinned to this spacing for CONTACT.
+CONTACT_MIN_CHORD = 0.2   # mm
 
-PROFILES = [os.path.join(SHARED, 'profiles', n) for n in ('MBench_S1002_v3.prw',
-                                                         'MBench_UIC60_v3.prr')]
+
+def shcontact_command():
+    """The shcontact program: $SHCONTACT_EXE, else `fpm run --profile release --`."""
+    exe = os.environ.get('SHCONTACT_EXE')
+    return [exe] if exe else ['fpm', 'run', '--profile', 'release', '--']
 
 
-def module1_deck(y, fz, vpitch):
-    """The shared module-1 deck (../shared/reference/ty5p8_literal/inp/module1_headline.inp,
-    read, never copied) with the wheelset line and the velocity line replaced: Y_WS = y, FZ = fz,
-    no roll or yaw, VS = 2000 mm/s, no lateral or yaw velocity, pitch rate vpitch."""
-    path = os.path.join(SHARED, 'reference', 'ty5p8_literal', 'inp', 'module1_headline.inp')
-    lines = open(path).read().splitlines()
-    for i, line in enumerate(lines):
-        if line.rstrip().endswith('S, Y, FZ, ROLL, YAW, PITCH'):
-            lines[i] = '  0.0  %.6f  %.4f  0.0000000000  0.0  0.0          S, Y, FZ, ROLL, YAW, PITCH' % (y, fz)
-        elif line.rstrip().endswith('VS,VY,VZ, VROLL,VYAW,VPITCH'):
-            lines[i] = '  2000.0  0.0  0.0  0.0  0.0  %.11f   VS,VY,VZ, VROLL,VYAW,VPITCH' % vpitch
+def thin_profile(src, dst, min_chord):
+    """Copy a 2-column profile file, keeping comment lines, the first and last point, and
+    the points at least min_chord (mm) from the last one kept."""
+    comments, pts = [], []
+    for line in open(src):
+        if line.lstrip().startswith('#') or not line.strip():
+            comments.append(line)
+        else:
+            pts.append(tuple(float(v) for v in line.split()[:2]))
+    kept = [pts[0]]
+    for q in pts[1:-1]:
+        if math.hypot(q[0] - kept[-1][0], q[1] - kept[-1][1]) >= min_chord:
+            kept.append(q)
+    kept.append(pts[-1])
+    with open(dst, 'w') as f:
+        f.writelines(comments)
+        f.writelines('%24.14e %24.14e\n' % q for q in kept)
+
+
+def write_profiles(workdir):
+    """Put the wheel and rail files in workdir; returns (rail file, wheel file, cant [rad])."""
+    if PROFILE_SOURCE == 'mbench':
+        names = ('MBench_UIC60_v3.prr', 'MBench_S1002_v3.prw')
+        for n in names:
+            shutil.copy(os.path.join(EXTERNAL, 'profiles', n), workdir)
+        return names[0], names[1], 0.0
+    if PROFILE_SOURCE != 'builtin':
+        sys.exit("CONTACT_PROFILES must be 'builtin' or 'mbench', not '%s'" % PROFILE_SOURCE)
+    raw = os.path.join(workdir, 'builtin')   # this script's own folder: written anew each run
+    shutil.rmtree(raw, ignore_errors=True)
+    os.makedirs(raw)
+    subprocess.run(shcontact_command() + ['profiles', '--write', raw], check=True,
+                   stdout=subprocess.DEVNULL)
+    for n in ('UIC60-canted.txt', 'S1002.txt'):
+        thin_profile(os.path.join(raw, n), os.path.join(workdir, n), CONTACT_MIN_CHORD)
+    return 'UIC60-canted.txt', 'S1002.txt', 0.0
+
+
+def module1_deck(y, fz, vpitch, rail_file, wheel_file, cant):
+    """CONTACT module-1 input (wheel-rail, one case): the Manchester-benchmark set-up of
+    data/exact/README.md. Right wheel; Y_WS = y (mm), vertical force FZ = fz (N), no roll or
+    yaw, forward speed VS, no lateral or yaw velocity, pitch rate vpitch (rad/s)."""
+    control = [
+        # C P B T N F S: wheel-rail config, steady rolling, 0/1/2 tangential/normal flags,
+        # N=1 vertical force prescribed, F=0, S=0 (CONTACT user guide, control digits)
+        ('1203100', 'C-P-B-T-N-F-S   CONFIG, PVTIME, BOUND,  TANG,   NORM,   FORCE,  STRESS'),
+        # V L D C M Z E: Coulomb friction, contact approach D=2 (weighted centre), influence
+        # coefficients C=2 (piecewise constant), elastic material, track/wheel input given
+        ('0022033', 'V-L-D-C-M-Z-E   VARFRC, FRCLAW, DISCNS, INFLCF, MATER,  ZTRACK, EWHEEL'),
+        ('0002321', 'H-G-I-A-O-W-R     HEAT, GAUSEI, IESTIM, MATFIL, OUTPUT, FLOW,   RETURN'),
+    ]
+    lines = ['  1 MODULE']
+    lines += [' %s    %s' % c for c in control]
+    lines += [
+        '    999     100    30    1     1e-05         MAXGS , MAXIN , MAXNR , MAXOUT, EPS',
+        '  %.3f   %.3f                                 FSTAT, FKIN' % (MU, MU),
+        '  0.270   0.270   82670.0  82670.0                POISS 1,2,  GG 1,2',
+        # grid 0.2 mm, patches separated at 8 mm and combined below 4 mm
+        '  0.2000   0.2000   1.000   90d   8.0   4.0      DX, DS, DQREL, A_SEP, D_SEP, D_COMB',
+        '   14.0     0    1435.0   %.10f                GAUGHT, GAUGSQ, GAUGWD, CANT' % cant,
+        "  '%s'   0     1.0   0.0       RFNAME, MIRRORY, SCALE, SMOOTH" % rail_file,
+        '     0.0    0.0   0.000   0.0   0.0   0.000     DY, DZ, ROLL, VY, VZ, VROLL',
+        '  1360.0  -70.0   %.1f                         FBDIST, FBPOS, NOMRAD' % RNOM,
+        "  '%s'   0     1.0   0.0       WFNAME, MIRRORY, SCALE, SMOOTH" % wheel_file,
+        '  0.0  %.6f  %.4f  0.0000000000  0.0  0.0          S, Y, FZ, ROLL, YAW, PITCH' % (y, fz),
+        '  %.1f  0.0  0.0  0.0  0.0  %.11f   VS,VY,VZ, VROLL,VYAW,VPITCH' % (VS, vpitch),
+        '',
+        '  0 MODULE',
+    ]
     return '\n'.join(lines) + '\n'
 
 FLOAT = r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?'
@@ -185,8 +261,7 @@ def run_contact(workdir, name, log=None, timestamps=False):
 # module 1 with FZ (secant) and VPITCH iteration
 
 def module1(yws, workdir, log):
-    for p in PROFILES:
-        shutil.copy(p, workdir)
+    rail_file, wheel_file, cant = write_profiles(workdir)
     vpitch = -VS / RNOM
     fz_hist, fn_hist = [], []
     fz = FN_TARGET * 0.98
@@ -197,7 +272,7 @@ def module1(yws, workdir, log):
             if fn_.startswith(name + '.') and fn_.endswith('.mat'):
                 os.remove(os.path.join(workdir, fn_))
         with open(os.path.join(workdir, name + '.inp'), 'w') as f:
-            f.write(module1_deck(yws, fz, vpitch))
+            f.write(module1_deck(yws, fz, vpitch, rail_file, wheel_file, cant))
         ok, _, _, _ = run_contact(workdir, name)
         out = parse_out1(os.path.join(workdir, name + '.out'))
         mats = sorted(fn_ for fn_ in os.listdir(workdir) if re.match(r'm1\.0001[a-z]?\.mat$', fn_))

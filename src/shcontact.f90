@@ -23,6 +23,10 @@ module shcontact
       check_contact_options, prepare_profiles, find_contact_patches, positioned_profiles, &
       write_geometry_table
    use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
+   use shcontact_geometry_wheelset_table, only: wheelset_contact_type, wheelset_geometry_table, &
+      wheelset_contact
+   use shcontact_geometry_conicity, only: equivalent_conicity, conicity_en15302, &
+      conicity_harmonic, first_harmonic_slope, klingel_wavelength
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
       pure_rolling_pitch_rate, yawed_wheel_profile, contact_lead
    ! normal
@@ -72,6 +76,9 @@ module shcontact
       check_position, contact_options_type, prepared_profiles_type, check_contact_options, &
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
       patch_geometry_type, geometry_sample_type
+   public :: wheelset_contact_type, wheelset_geometry_table, wheelset_contact, &
+      equivalent_conicity, conicity_en15302, conicity_harmonic, first_harmonic_slope, &
+      klingel_wavelength
    public :: wheelset_state_type, check_wheelset_state, pure_rolling_pitch_rate, &
       yawed_wheel_profile, contact_lead, contact_point_type, rigid_creepages
    public :: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, hertz_from_approach, &

@@ -32,6 +32,7 @@ program tester
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
    use test_app, only: collect_app
+   use test_output_files, only: collect_output_files
    use test_cli, only: collect_cli
    use test_api, only: collect_api
    use test_kinematics, only: collect_kinematics
@@ -43,6 +44,8 @@ program tester
    use test_performance_invariants, only: collect_performance_invariants
    use test_robustness, only: collect_robustness
    use test_input, only: collect_input
+   use test_wheelset_geometry, only: collect_wheelset_geometry
+   use test_profile_diagnostics, only: collect_profile_diagnostics
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -73,6 +76,7 @@ program tester
       new_testsuite('config', collect_config), &
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app), &
+      new_testsuite('output_files', collect_output_files), &
       new_testsuite('cli', collect_cli), &
       new_testsuite('api', collect_api), &
       new_testsuite('kinematics', collect_kinematics), &
@@ -83,6 +87,8 @@ program tester
       new_testsuite('vertical_approach', collect_vertical_approach), &
       new_testsuite('performance_invariants', collect_performance_invariants), &
       new_testsuite('input', collect_input), &
+      new_testsuite('wheelset_geometry', collect_wheelset_geometry), &
+      new_testsuite('profile_diagnostics', collect_profile_diagnostics), &
       new_testsuite('robustness', collect_robustness) &
       ]
 

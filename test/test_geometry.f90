@@ -23,6 +23,8 @@ module test_geometry
    implicit none
    private
    public :: collect_geometry
+   ! Analytic profiles shared with the wheelset suite (test_wheelset_geometry).
+   public :: arc_rail, cone_wheel, upright_track
 
    !> Nominal rolling radius used by the analytic cases (mm).
    real(wp), parameter :: r_nom = 460.0_wp

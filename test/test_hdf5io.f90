@@ -364,6 +364,8 @@ contains
       character(len=*), parameter :: tan = 'cases/000005/patch_1/tangential/'
       character(len=*), parameter :: described(5) = [character(len=40) :: 'summary/fx', &
          'summary/nu_x', tan//'px', tan//'state', 'input/namelist']
+      character(len=*), parameter :: field_scales(3) = [character(len=9) :: 'y', 'element', &
+         'component']
       character(len=*), parameter :: root(5) = [character(len=16) :: 'git_revision', &
          'compiler', 'compiler_options', 'host', 'version']
       type(h5_file_type) :: f
@@ -380,11 +382,13 @@ contains
          call check(error, len(text) > 10, message=trim(described(i))//': empty long_name')
          if (allocated(error)) exit
       end do
-      if (.not. allocated(lerr) .and. .not. allocated(error)) then
-         call h5_read_attribute(f, tan//'y', 'CLASS', text, lerr)
+      ! Every dimension of the element fields has its scale (strips, elements, xy's components).
+      do i = 1, size(field_scales)
+         if (allocated(lerr) .or. allocated(error)) exit
+         call h5_read_attribute(f, tan//trim(field_scales(i)), 'CLASS', text, lerr)
          if (.not. allocated(lerr)) call check(error, text, 'DIMENSION_SCALE', &
-            message=tan//'y is not a dimension scale')
-      end if
+            message=tan//trim(field_scales(i))//' is not a dimension scale')
+      end do
       if (.not. allocated(lerr) .and. .not. allocated(error)) then
          call h5_read_attribute(f, 'summary/case', 'CLASS', text, lerr)
          if (.not. allocated(lerr)) call check(error, text, 'DIMENSION_SCALE', &

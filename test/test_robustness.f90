@@ -265,6 +265,7 @@ contains
    ! ------------------------------------------------------------------------------------------
 
    !> A fresh run deleted whatever OUT.h5.partial/blocks.txt listed, even outside the folder.
+   !> (An existing folder is now only taken over with --resume or --force: issue 24 item 13.)
    subroutine test_foreign_checkpoint(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir
@@ -274,7 +275,8 @@ contains
       call shell('mkdir -p '//dir//'/x.h5.partial && cd '//dir//' && echo precious > '// &
          'victim.txt && echo precious > x.h5.partial/mine.txt && printf "victim.txt\n'// &
          '../victim.txt\n'//dir//'/victim.txt\nmine.txt\n" > x.h5.partial/blocks.txt')
-      stat = run_program(dir, 'run -q -o x.h5 --set sweep%phi=0,1e-3 --set sweep%phi_points=5')
+      stat = run_program(dir, 'run -q -o x.h5 --set sweep%phi=0,1e-3 --set sweep%phi_points=5'// &
+         ' --force')
       call check(error, stat, 0, message='run: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       call check(error, file_text(dir//'/victim.txt') == 'precious'//new_line('a') .and. &

@@ -13,7 +13,10 @@
 !>   complete) and a list of them, `blocks.txt`. A run that is killed keeps every finished
 !>   block readable; `resume` solves only the missing cases. At the end the blocks are merged
 !>   into OUT.h5 (again through a temporary name) and the directory is removed, so a failed
-!>   or interrupted run never leaves a partial file under the final name.
+!>   or interrupted run never leaves a partial file under the final name. The directory is
+!>   made by the run (mkdir, atomic) and locked (flock on OUT.h5.partial/lock) while it is
+!>   used: a second run with the same output is refused, an existing directory is only taken
+!>   over with `resume` or `force`, and a symbolic link is never followed.
 !> * **Shards.** Shard I of N solves the contiguous slice of cases
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
@@ -27,9 +30,10 @@ module shcontact_case_sweep
       axis_geometry, axis_load
    use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
       read_result_summary, check_output_file
-   use shcontact_core_textfile, only: is_directory, text_line_type, read_text_lines
-   use shcontact_io_files, only: make_directory, remove_directory, delete_file, file_exists, &
-      rename_file, canonical_path
+   use shcontact_core_textfile, only: text_line_type, read_text_lines
+   use shcontact_io_files, only: remove_directory, delete_file, file_exists, &
+      rename_file, canonical_path, path_kind, open_work_folder, unlock_file, folder_made, &
+      folder_existing, folder_busy, folder_unlocked, folder_link, folder_not_directory
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
@@ -69,6 +73,9 @@ module shcontact_case_sweep
       integer :: shard = 1, n_shards = 1
       !> Continue from the checkpoint of an interrupted run.
       logical :: resume = .false.
+      !> Replace an output (and sidecar) that is not shcontact's, and start afresh in the work
+      !> folder of an interrupted run (only shcontact's own files in it are removed).
+      logical :: force = .false.
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
       !> Progress report (optional).
@@ -98,6 +105,8 @@ module shcontact_case_sweep
    character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
    !> The configuration of the run that made the checkpoint (see [[checkpoint_key]]).
    character(len=*), parameter :: key_name = 'configuration.txt'
+   !> The lock file of the work folder, held (flock) while a run uses the folder.
+   character(len=*), parameter :: lock_name = 'lock'
    !> Suffix of a block file being written.
    character(len=*), parameter :: temp_suffix = '.tmp'
    !> Automatic block size: aim at this many seconds per block.
@@ -177,15 +186,9 @@ contains
       type(run_setup_type) :: setup
       type(run_info_type) :: info
       type(geometry_set_type) :: common
-      type(march_workspace_type), allocatable :: workspaces(:)
-      type(thread_solutions_type), allocatable :: solutions(:)
-      type(case_result_type), allocatable :: results(:)
       character(len=:), allocatable :: dir
-      type(string_list_type) :: blocks
-      integer, allocatable :: todo(:)
       logical :: common_geometry, fields
-      integer :: n, n_done, next, block, nb, i
-      real(wp) :: t0, per_case
+      integer :: n, lock, state
 
       n = config%n_cases()
       outcome%n_cases = n
@@ -217,13 +220,18 @@ contains
          config%wants_field('state') .or. config%wants_field('slip')
 
       ! Everything that can fail before any file is touched.
-      call check_output_file(outcome%output, error)
+      call check_output_file(outcome%output, error, force=options%force)
       if (allocated(error)) return
-      if (file_exists(dir) .and. .not. is_directory(dir)) then
-         call fatal_error(error, 'cannot write the output "'//outcome%output//'": "'//dir// &
-            '" (its checkpoint directory) exists and is not a directory', stat_io)
+      ! The work folder's name, refused early (open_work_folder checks again).
+      select case (path_kind(dir))
+      case ('none', 'directory')
+      case ('link')
+         call work_folder_error(folder_link, outcome%output, dir, error)
          return
-      end if
+      case default
+         call work_folder_error(folder_not_directory, outcome%output, dir, error)
+         return
+      end select
       call prepare_run(config, setup, error)
       if (allocated(error)) return
       info%namelist = config_namelist(config)
@@ -247,11 +255,63 @@ contains
          info%geometry = common%patches
       end if
 
-      call make_directory(dir, error)
-      if (allocated(error)) then
-         call prefix_error(error, 'cannot write the output "'//outcome%output//'"')
+      call open_work_folder(dir, lock_name, options%resume .or. options%force, lock, state)
+      if (state /= folder_made .and. state /= folder_existing) then
+         call work_folder_error(state, outcome%output, dir, error)
          return
       end if
+      call sweep_in_folder(config, options, setup, info, common_geometry, common, fields, &
+         dir, outcome, error)
+      call unlock_file(lock)
+   end subroutine run_sweep
+
+   !> The message for a work folder that cannot be used.
+   subroutine work_folder_error(state, output, dir, error)
+      integer, intent(in) :: state
+      character(len=*), intent(in) :: output, dir
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: why
+      select case (state)
+      case (folder_busy)
+         call fatal_error(error, 'another run is writing "'//output//'" (its work folder "'// &
+            dir//'" is locked); wait for it to finish or choose another output name', stat_io)
+         return
+      case (folder_unlocked)
+         why = 'exists (the checkpoint of an interrupted run?); continue it with --resume, '// &
+            'or start afresh with --force or after removing it'
+      case (folder_link)
+         why = 'is a symbolic link, which shcontact does not follow for its work folder; '// &
+            'remove it'
+      case (folder_not_directory)
+         why = 'exists and is not a directory; remove it or choose another output name'
+      case default
+         why = 'cannot be created (does its parent exist, and is it writable?)'
+      end select
+      call fatal_error(error, 'cannot write the output "'//output//'": its work folder "'// &
+         dir//'" '//why, stat_io)
+   end subroutine work_folder_error
+
+   !> Solve the cases in the (locked) work folder `dir` and merge them into the output.
+   subroutine sweep_in_folder(config, options, setup, info, common_geometry, common, fields, &
+                              dir, outcome, error)
+      type(case_config_type), intent(in) :: config
+      type(sweep_options_type), intent(in) :: options
+      type(run_setup_type), intent(inout) :: setup
+      type(run_info_type), intent(inout) :: info
+      logical, intent(in) :: common_geometry, fields
+      type(geometry_set_type), intent(in) :: common
+      character(len=*), intent(in) :: dir
+      type(sweep_outcome_type), intent(inout) :: outcome
+      type(error_type), allocatable, intent(out) :: error
+      type(march_workspace_type), allocatable :: workspaces(:)
+      type(thread_solutions_type), allocatable :: solutions(:)
+      type(case_result_type), allocatable :: results(:)
+      type(string_list_type) :: blocks
+      integer, allocatable :: todo(:)
+      integer :: n, n_done, next, block, nb, i
+      real(wp) :: t0, per_case
+
+      n = outcome%n_cases
       if (options%resume) then
          ! The blocks of a resumed run carry the namelist of the run that started it (which may
          ! differ in the output name or the spelling of the profile paths).
@@ -259,6 +319,7 @@ contains
             error)
          if (allocated(error)) return
       else
+         ! A new folder, or one taken over with --force: shcontact's own files only go.
          call clear_checkpoint(dir, keep_directory=.true.)
          blocks%n = 0
          call write_text_file(dir//'/'//key_name, checkpoint_key(config), error)
@@ -315,10 +376,10 @@ contains
       end if
       call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
          info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
-         temp_name=dir//'/'//merged_temp_name)
+         temp_name=dir//'/'//merged_temp_name, force=options%force)
       if (allocated(error)) return
       call clear_checkpoint(dir, keep_directory=.false.)
-   end subroutine run_sweep
+   end subroutine sweep_in_folder
 
    !> "case i: message" (just the message for a one-case run).
    function failure_text(outcome, failure) result(text)
@@ -647,7 +708,8 @@ contains
       character(len=*), intent(in) :: dir
       type(error_type), allocatable, intent(out) :: error
       call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made with '// &
-         'another configuration; run without --resume to start again', stat_invalid_input)
+         'another configuration; start again with --force (or after removing it)', &
+         stat_invalid_input)
    end subroutine another_configuration
 
    !> The configuration as the checkpoint knows it: the resolved namelist without the output
@@ -734,6 +796,8 @@ contains
       if (delete_file(dir//'/'//manifest_name//temp_suffix)) continue
       if (delete_file(dir//'/'//manifest_name)) continue
       if (.not. keep_directory) then
+         ! The lock goes last, while still held (the caller closes it).
+         if (delete_file(dir//'/'//lock_name)) continue
          if (remove_directory(dir)) continue
       end if
    end subroutine clear_checkpoint

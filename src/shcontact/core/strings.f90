@@ -5,7 +5,7 @@ module shcontact_core_strings
    implicit none
    private
 
-   public :: to_lower, str_int, str_real, visible, control_characters
+   public :: to_lower, str_int, str_real, visible, str_format, control_characters
 
    !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
    !> file's tabs and line ends are taken by the line reader first).
@@ -76,6 +76,25 @@ contains
          text = trim(adjustl(buffer))
       end if
    end function str_real
+
+   !> A real written with an edit descriptor for tables and messages ('(f0.1)', '(es9.2)'),
+   !> without blanks, with a leading 0 before a bare decimal point and no trailing one
+   !> (f0.0 of 48 gives 48).
+   pure function str_format(x, form) result(text)
+      !> The number.
+      real(wp), intent(in) :: x
+      !> The format, with parentheses.
+      character(len=*), intent(in) :: form
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer
+      write (buffer, form) x
+      text = trim(adjustl(buffer))
+      if (len(text) > 1 .and. text(len(text):len(text)) == '.') text = text(:len(text) - 1)
+      if (text(1:1) == '.') text = '0'//text
+      if (len(text) > 1) then
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      end if
+   end function str_format
 
    !> Text with control characters (other than line feed and tab) shown as `<0xNN>`, so that
    !> a message quoting a stray byte of an input file shows it.

@@ -56,6 +56,9 @@ contains
          case ('namelist'); text = 'the resolved configuration of the run, as namelist text'
          case ('wheel'); text = 'wheel profile used, (y, z) points in profile coordinates'
          case ('rail'); text = 'rail profile used, (y, z) points in profile coordinates'
+         case ('wheel_point', 'rail_point'); text = 'index of the profile point (0, 1, ...): '// &
+            'dimension scale of the points of the profile'
+         case ('column'); text = 'the columns (y, z) of the profiles: their dimension scale'
          case default; text = ''
          end select
       case default
@@ -178,6 +181,9 @@ contains
       case ('xy'); text = 'element centres (x, y) interleaved: the mesh of the XDMF sidecar '// &
          '(ParaView)'
       case ('dx'); text = 'element length dx_i of each strip'
+      case ('element'); text = 'element index j along the strip, 0 at the leading edge: '// &
+         'dimension scale of the element dimension of the element fields'
+      case ('component'); text = 'the components (x, y) of xy: its dimension scale'
       case ('dy'); text = 'strip width'
       case ('pn'); text = 'normal pressure p_n on the element (semi-ellipsoidal)'
       case ('px'); text = 'longitudinal traction on the wheel'

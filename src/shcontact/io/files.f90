@@ -11,6 +11,10 @@ module shcontact_io_files
 
    public :: rename_file, delete_file, make_directory, remove_directory, file_exists
    public :: directory_part, join_path, is_absolute, process_id, canonical_path
+   public :: path_kind, control_character, lock_file, unlock_file, pause_briefly
+   public :: lock_taken, lock_busy, lock_missing
+   public :: open_work_folder, folder_made, folder_existing, folder_busy, folder_unlocked, &
+      folder_link, folder_not_directory, folder_cannot_create
 
    interface
       function c_rename(from, to) bind(c, name='rename') result(stat)
@@ -48,7 +52,31 @@ module shcontact_io_files
          import :: c_int
          integer(c_int) :: pid
       end function c_getpid
+      function c_flock(fd, operation) bind(c, name='flock') result(stat)
+         import :: c_int
+         integer(c_int), value :: fd, operation
+         integer(c_int) :: stat
+      end function c_flock
+      function c_errno_location() bind(c, name='__errno_location') result(p)
+         import :: c_ptr
+         type(c_ptr) :: p
+      end function c_errno_location
+      function c_usleep(microseconds) bind(c, name='usleep') result(stat)
+         import :: c_int
+         integer(c_int), value :: microseconds
+         integer(c_int) :: stat
+      end function c_usleep
    end interface
+
+   !> Outcomes of [[lock_file]]: the lock is held, another process holds it, no lock file.
+   integer, parameter :: lock_taken = 0, lock_busy = 1, lock_missing = 2
+   !> Outcomes of [[open_work_folder]].
+   integer, parameter :: folder_made = 0, folder_existing = 1, folder_busy = 2, &
+      folder_unlocked = 3, folder_link = 4, folder_not_directory = 5, folder_cannot_create = 6
+   !> flock(2) operations (Linux and the BSDs): exclusive, do not wait.
+   integer(c_int), parameter :: lock_ex = 2, lock_nb = 4
+   !> errno of a lock held by another process (EWOULDBLOCK = EAGAIN on Linux).
+   integer(c_int), parameter :: errno_would_block = 11
 
 contains
 
@@ -168,6 +196,198 @@ contains
       end do
       call c_free(p)
    end function canonical_path
+
+   !> What a path names, without following a symbolic link (unless `follow`): 'none' (nothing), 'file' (a
+   !> regular file), 'directory', 'link' (a symbolic link, whatever it points to), 'pipe',
+   !> 'device', 'socket' or 'other'.
+   function path_kind(path, follow) result(kind)
+      !> The path.
+      character(len=*), intent(in) :: path
+      !> Follow a symbolic link (say what it points to; 'none' for a dangling one).
+      logical, intent(in), optional :: follow
+      character(len=:), allocatable :: kind
+      integer :: values(13), status, mode
+      ! lstat and stat are GNU Fortran intrinsics (POSIX lstat, stat): values(3) is st_mode.
+      if (present(follow)) then
+         if (follow) then
+            call stat(path, values, status)
+         else
+            call lstat(path, values, status)
+         end if
+      else
+         call lstat(path, values, status)
+      end if
+      if (status /= 0) then
+         kind = 'none'
+         return
+      end if
+      mode = iand(values(3), int(o'170000'))
+      select case (mode)
+      case (int(o'100000'))
+         kind = 'file'
+      case (int(o'040000'))
+         kind = 'directory'
+      case (int(o'120000'))
+         kind = 'link'
+      case (int(o'010000'))
+         kind = 'pipe'
+      case (int(o'020000'), int(o'060000'))
+         kind = 'device'
+      case (int(o'140000'))
+         kind = 'socket'
+      case default
+         kind = 'other'
+      end select
+   end function path_kind
+
+   !> Position of the first control character (bytes 0-31 and 127) of a text, 0 when none.
+   pure integer function control_character(text) result(position)
+      !> The text.
+      character(len=*), intent(in) :: text
+      integer :: i
+      position = 0
+      do i = 1, len(text)
+         if (iachar(text(i:i)) < 32 .or. iachar(text(i:i)) == 127) then
+            position = i
+            return
+         end if
+      end do
+   end function control_character
+
+   !> Open the lock file `name` (created when `create`, which fails when it exists) and take
+   !> an exclusive advisory lock on it (flock, not waiting). The lock lasts while `unit` is
+   !> open and goes with the process, so a killed run leaves no stale lock.
+   subroutine lock_file(name, create, unit, state)
+      !> The lock file.
+      character(len=*), intent(in) :: name
+      !> Create it (exclusively) rather than open an existing one.
+      logical, intent(in) :: create
+      !> Its unit while the lock is held (-1 otherwise).
+      integer, intent(out) :: unit
+      !> lock_taken, lock_busy (another process holds it) or lock_missing (it does not exist,
+      !> or, with `create`, it exists already or cannot be created).
+      integer, intent(out) :: state
+      integer :: stat
+      unit = -1
+      state = lock_missing
+      if (create) then
+         open (newunit=unit, file=name, status='new', action='readwrite', iostat=stat)
+      else
+         if (path_kind(name) /= 'file') return
+         open (newunit=unit, file=name, status='old', action='readwrite', iostat=stat)
+      end if
+      if (stat /= 0) then
+         unit = -1
+         return
+      end if
+      ! fnum (GNU Fortran intrinsic): the POSIX file descriptor of the unit. A file system
+      ! without flock (some Lustre or NFS mounts: ENOLCK, ENOSYS, EOPNOTSUPP) counts as
+      ! locked: the atomic mkdir of the work folder still keeps two new runs apart.
+      if (c_flock(int(fnum(unit), c_int), ior(lock_ex, lock_nb)) == 0) then
+         state = lock_taken
+      else if (last_errno() /= errno_would_block) then
+         state = lock_taken
+      else
+         state = lock_busy
+         close (unit)
+         unit = -1
+      end if
+   end subroutine lock_file
+
+   !> errno of the last failed C library call of this thread (glibc).
+   function last_errno() result(code)
+      integer :: code
+      integer(c_int), pointer :: p
+      call c_f_pointer(c_errno_location(), p)
+      code = int(p)
+   end function last_errno
+
+   !> Make a work folder and hold its lock file `dir/lock_name`, or, with `take_over`, hold the
+   !> lock of an existing one. A symbolic link is never followed. The creation (mkdir) is
+   !> atomic, so of two processes making the same folder one makes it and the other finds it
+   !> locked (it waits up to a second for the maker to create the lock file).
+   subroutine open_work_folder(dir, lock_name, take_over, unit, state)
+      !> The folder.
+      character(len=*), intent(in) :: dir
+      !> Name of the lock file inside it.
+      character(len=*), intent(in) :: lock_name
+      !> Take an existing folder whose lock is free (otherwise folder_unlocked is returned).
+      logical, intent(in) :: take_over
+      !> The lock file's unit while the lock is held (-1 otherwise).
+      integer, intent(out) :: unit
+      !> folder_made (new, this process made it), folder_existing (taken over), folder_busy
+      !> (another process holds it), folder_unlocked (exists, not taken over), folder_link,
+      !> folder_not_directory, folder_cannot_create.
+      integer, intent(out) :: state
+      integer :: attempt, lock
+      character(len=:), allocatable :: kind
+      unit = -1
+      do attempt = 1, 20
+         kind = path_kind(dir)
+         select case (kind)
+         case ('none')
+            if (c_mkdir(dir//c_null_char, int(o'777', c_int)) == 0) then
+               call lock_file(dir//'/'//lock_name, .true., unit, lock)
+               state = folder_made
+               if (lock /= lock_taken) then
+                  ! The folder this call made goes again.
+                  state = folder_cannot_create
+                  if (remove_directory(dir)) continue
+               end if
+               return
+            end if
+            if (path_kind(dir) == 'none') then
+               state = folder_cannot_create
+               return
+            end if
+         case ('directory')
+            call lock_file(dir//'/'//lock_name, .false., unit, lock)
+            if (lock == lock_missing .and. take_over) call lock_file(dir//'/'//lock_name, &
+               .true., unit, lock)
+            if (lock == lock_busy) then
+               state = folder_busy
+               return
+            else if (lock == lock_taken) then
+               ! Still the folder's lock file (not one its maker just removed)?
+               if (path_kind(dir//'/'//lock_name) == 'file') then
+                  state = folder_existing
+                  if (take_over) return
+                  call unlock_file(unit)
+                  state = folder_unlocked
+                  return
+               end if
+               call unlock_file(unit)
+            end if
+            ! No lock file: an older or foreign folder, or one being made this instant.
+            if (attempt >= 20) then
+               state = folder_unlocked
+               return
+            end if
+            call pause_briefly()
+         case ('link')
+            state = folder_link
+            return
+         case default
+            state = folder_not_directory
+            return
+         end select
+      end do
+      state = folder_busy
+   end subroutine open_work_folder
+
+   !> Release a lock taken by [[lock_file]] (nothing when `unit` < 0).
+   subroutine unlock_file(unit)
+      !> The lock file's unit; -1 on return.
+      integer, intent(inout) :: unit
+      integer :: stat
+      if (unit >= 0) close (unit, iostat=stat)
+      unit = -1
+   end subroutine unlock_file
+
+   !> Wait a twentieth of a second.
+   subroutine pause_briefly()
+      if (c_usleep(50000_c_int) /= 0) continue
+   end subroutine pause_briefly
 
    !> The process id (for unique temporary names).
    function process_id() result(pid)

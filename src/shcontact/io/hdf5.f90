@@ -9,9 +9,9 @@
 !> content written in the same order gives the same bytes. Fortran arrays keep their memory
 !> order: a Fortran (n1, n2) array is seen by C and h5py as shape (n2, n1).
 module shcontact_io_hdf5
-   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr, c_int, c_char, c_null_char
+   use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
-      h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
+      h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
       H5P_DATASET_CREATE_F, H5P_LINK_CREATE_F, H5P_GROUP_CREATE_F, h5pset_chunk_f, &
       h5pset_deflate_f, h5pset_obj_track_times_f, h5pset_create_inter_group_f, h5screate_f, &
       h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, h5dcreate_f, h5dopen_f, h5dclose_f, &
@@ -21,10 +21,13 @@ module shcontact_io_hdf5
       H5T_NATIVE_INTEGER, H5T_STD_I8LE, H5T_STD_I32LE, H5T_IEEE_F64LE, h5kind_to_type, &
       H5_INTEGER_KIND, h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, &
       h5aexists_by_name_f, h5aget_type_f, h5gcreate_f, h5gclose_f, h5ocopy_f, h5lexists_f, &
-      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE, h5tget_class_f, H5T_FLOAT_F, h5adelete_f
+      h5oopen_f, h5oclose_f, H5T_IEEE_F32LE, h5tget_class_f, H5T_FLOAT_F, h5adelete_f, &
+      H5T_INTEGER_F, H5T_STRING_F, h5tis_variable_str_f
+   ! HDF5's high-level Fortran library (libhdf5hl_fortran, linked by fpm's hdf5 metapackage).
+   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f, h5dsset_label_f
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
-   use shcontact_io_files, only: rename_file, delete_file, process_id
+   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_core_strings, only: str_int
    implicit none
    private
@@ -34,34 +37,6 @@ module shcontact_io_hdf5
    public :: h5_read, h5_read_attribute, h5_dataset_size
    public :: h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_dataset_info, h5_delete_attribute
    public :: description_function
-
-   ! HDF5's high-level dimension-scale functions, called in C directly: fpm 0.12's hdf5
-   ! metapackage links the high-level libraries but does not know their Fortran module h5ds.
-   interface
-      !> H5DSset_scale: make a dataset a dimension scale.
-      function c_h5ds_set_scale(dsid, dimname) result(status) bind(C, name='H5DSset_scale')
-         import :: hid_t, c_char, c_int
-         integer(hid_t), value, intent(in) :: dsid
-         character(kind=c_char), intent(in) :: dimname(*)
-         integer(c_int) :: status
-      end function c_h5ds_set_scale
-      !> H5DSattach_scale: attach a scale to dimension idx (C order) of a dataset.
-      function c_h5ds_attach_scale(did, dsid, idx) result(status) &
-         bind(C, name='H5DSattach_scale')
-         import :: hid_t, c_int
-         integer(hid_t), value, intent(in) :: did, dsid
-         integer(c_int), value, intent(in) :: idx
-         integer(c_int) :: status
-      end function c_h5ds_attach_scale
-      !> H5DSset_label: label dimension idx (C order) of a dataset.
-      function c_h5ds_set_label(did, idx, label) result(status) bind(C, name='H5DSset_label')
-         import :: hid_t, c_char, c_int
-         integer(hid_t), value, intent(in) :: did
-         integer(c_int), value, intent(in) :: idx
-         character(kind=c_char), intent(in) :: label(*)
-         integer(c_int) :: status
-      end function c_h5ds_set_label
-   end interface
 
    abstract interface
       !> The `long_name` of the dataset at `path` ('' for none).
@@ -152,19 +127,34 @@ contains
       character(len=*), intent(in), optional :: temp_name
       !> The description of each dataset, written as its `long_name` attribute.
       procedure(description_function), optional :: describe
-      integer :: stat
+      integer :: stat, access
 
       call start_library(error)
       if (allocated(error)) return
       if (present(describe)) file%describe => describe
       file%name = name
+      ! The default temporary name is created exclusively (a file of that name is never
+      ! overwritten); a given one is the caller's own name (e.g. in its work folder).
       file%temp_name = name//'.tmp'//str_int(process_id())
-      if (present(temp_name)) file%temp_name = temp_name
+      access = H5F_ACC_EXCL_F
+      if (present(temp_name)) then
+         file%temp_name = temp_name
+         access = H5F_ACC_TRUNC_F
+      end if
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
-      call h5fcreate_f(file%temp_name, H5F_ACC_TRUNC_F, file%id, stat)
+      if (access == H5F_ACC_EXCL_F .and. path_kind(file%temp_name) /= 'none') then
+         call fatal_error(error, 'cannot write "'//name//'": its temporary name "'// &
+            file%temp_name//'" is taken (by a file shcontact does not overwrite)', stat_io)
+         file%id = -1
+         file%temp_name = ''
+         return
+      end if
+      call h5fcreate_f(file%temp_name, access, file%id, stat)
       if (stat /= 0) then
          file%id = -1
+         ! Not ours: never removed by h5_discard.
+         file%temp_name = ''
          call fatal_error(error, 'cannot create the output file "'//name// &
             '" (is the directory there and writable?)', stat_io)
       end if
@@ -213,14 +203,19 @@ contains
       !> Set when it cannot be opened as HDF5.
       type(error_type), allocatable, intent(out) :: error
       integer :: stat
-      logical :: exists
+      character(len=:), allocatable :: kind
       call start_library(error)
       if (allocated(error)) return
       file%name = name
       file%temp_name = ''
-      inquire (file=name, exist=exists)
-      if (.not. exists) then
+      ! Only a regular file (opening a pipe would wait for a writer).
+      kind = path_kind(name, follow=.true.)
+      if (kind == 'none') then
          call fatal_error(error, 'cannot open "'//name//'": no such file', stat_io)
+         return
+      else if (kind /= 'file') then
+         call fatal_error(error, 'cannot open "'//name//'": it is a '//kind//', not a '// &
+            'regular file', stat_io)
          return
       end if
       call h5fopen_f(name, H5F_ACC_RDONLY_F, file%id, stat)
@@ -687,7 +682,7 @@ contains
          call fail(error, file, path, 'cannot open the dataset')
          return
       end if
-      stat = int(c_h5ds_set_scale(dset, c_text(name)))
+      call h5dsset_scale_f(dset, stat, name)
       call h5dclose_f(dset, s)
       if (stat /= 0) call fail(error, file, path, 'cannot make it a dimension scale')
    end subroutine h5_set_scale
@@ -713,7 +708,7 @@ contains
       end if
       call h5dopen_f(file%id, scale_path, scale, stat)
       if (stat == 0) then
-         stat = int(c_h5ds_attach_scale(dset, scale, c_dimension(dset, dim)))
+         call h5dsattach_scale_f(dset, scale, h5ds_index(dset, dim), stat)
          call h5dclose_f(scale, s)
       end if
       call h5dclose_f(dset, s)
@@ -740,13 +735,14 @@ contains
          call fail(error, file, path, 'cannot open the dataset')
          return
       end if
-      stat = int(c_h5ds_set_label(dset, c_dimension(dset, dim), c_text(label)))
+      call h5dsset_label_f(dset, h5ds_index(dset, dim), label, stat)
       call h5dclose_f(dset, s)
       if (stat /= 0) call fail(error, file, path, 'cannot label dimension '//str_int(dim))
    end subroutine h5_set_dim_label
 
-   !> The C index (0-based, slowest first) of dimension `dim` (Fortran order) of a dataset.
-   integer(c_int) function c_dimension(dset, dim)
+   !> The index that HDF5's Fortran H5DS routines take for dimension `dim` (Fortran order) of a
+   !> dataset: they count from 1 in C order (slowest first), unlike the rest of the Fortran API.
+   integer function h5ds_index(dset, dim)
       integer(hid_t), intent(in) :: dset
       integer, intent(in) :: dim
       integer(hid_t) :: space
@@ -754,22 +750,11 @@ contains
       call h5dget_space_f(dset, space, s)
       call h5sget_simple_extent_ndims_f(space, rank, s)
       call h5sclose_f(space, s)
-      c_dimension = int(rank - dim, c_int)
-   end function c_dimension
-
-   !> A NUL-terminated copy of a text, for C.
-   pure function c_text(text) result(c)
-      character(len=*), intent(in) :: text
-      character(kind=c_char) :: c(len(text) + 1)
-      integer :: i
-      do i = 1, len(text)
-         c(i) = text(i:i)
-      end do
-      c(len(text) + 1) = c_null_char
-   end function c_text
+      h5ds_index = rank - dim + 1
+   end function h5ds_index
 
    !> Shape (Fortran order), element size in bytes and kind (float or not) of a dataset.
-   subroutine h5_dataset_info(file, path, dims, type_size, is_float, error)
+   subroutine h5_dataset_info(file, path, dims, type_size, is_float, error, type_class)
       !> The file.
       type(h5_file_type), intent(in) :: file
       !> Dataset path.
@@ -782,12 +767,16 @@ contains
       logical, intent(out) :: is_float
       !> Set when it does not exist or cannot be read.
       type(error_type), allocatable, intent(out) :: error
+      !> 'integer', 'float', 'text' (fixed-length strings), 'variable-length text' or 'other'.
+      character(len=:), allocatable, intent(out), optional :: type_class
       integer(hid_t) :: dset, space, dtype
       integer(hsize_t) :: d(8), maxd(8)
       integer(size_t) :: n
       integer :: stat, s, ndims, class
+      logical :: variable
       type_size = 0
       is_float = .false.
+      if (present(type_class)) type_class = 'other'
       allocate (dims(0))
       if (.not. h5_exists(file, path)) then
          call fail(error, file, path, 'no such dataset')
@@ -809,6 +798,16 @@ contains
       call h5tget_class_f(dtype, class, s)
       type_size = int(n)
       is_float = class == H5T_FLOAT_F
+      if (present(type_class)) then
+         if (class == H5T_INTEGER_F) type_class = 'integer'
+         if (class == H5T_FLOAT_F) type_class = 'float'
+         if (class == H5T_STRING_F) then
+            variable = .false.
+            call h5tis_variable_str_f(dtype, variable, s)
+            type_class = 'text'
+            if (variable) type_class = 'variable-length text'
+         end if
+      end if
       call h5tclose_f(dtype, s)
       call h5dclose_f(dset, s)
    end subroutine h5_dataset_info

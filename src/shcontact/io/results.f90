@@ -7,7 +7,8 @@
 !>                           sign_convention, n_cases (cases of the whole run), cases_in_file
 !>                           (and shard = 'I/N' in a shard file)
 !>     /input/namelist       the resolved configuration (namelist text)
-!>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`
+!>     /input/profiles/wheel, rail       (n, 2) arrays of y, z (mm), attribute `source`; scales
+!>                           wheel_point, rail_point, column
 !>     /geometry/patch_K/... the patch geometry tables, when every case shares them
 !>     /summary/...          one row per case: case, status, n_patches (found), n_loaded
 !>                           (solved; /cases/.../patch_1..n_loaded), main_patch, a column
@@ -21,9 +22,11 @@
 !> `long_name` saying what it is (shcontact_io_descriptions). Dimension scales (HDF5 H5DS) tie
 !> the tables to their coordinate: the summary columns to `summary/case`, the strip tables to
 !> their `y`, the element fields (pn, px, py, slip, state, x, xy) to the strip centres `y`
-!> along their strip dimension; their element dimension is labelled, and their `coordinates`
-!> attribute names x (2-D) and y. `xy` holds the element centres (x, y) interleaved, the mesh
-!> of the XDMF sidecar. The root also records provenance:
+!> along their strip dimension and to `element` along the other (xy's components to
+!> `component`): every dimension has its scale (xarray opens the groups). Every dimension is
+!> labelled, and the fields' `coordinates` attribute names x (2-D) and y. `xy` holds the
+!> element centres (x, y) interleaved, the mesh of the XDMF sidecar. The root also records
+!> provenance:
 !> git_revision, compiler, compiler_options, host, threads (shcontact_io_provenance).
 !> The final file of a run (a merge) gets an XDMF sidecar NAME.xmf (shcontact_io_xdmf) when it
 !> holds element fields, so ParaView opens them directly. A merge
@@ -31,10 +34,7 @@
 !> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
 module shcontact_io_results
    use shcontact_core_kinds, only: wp, i1
-   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
-      stat_usage
-   use shcontact_core_textfile, only: is_directory
-   use shcontact_io_files, only: file_exists, canonical_path
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_version_info, only: shcontact_version
    use shcontact_profile_points, only: profile_type
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -50,6 +50,8 @@ module shcontact_io_results
    use shcontact_io_provenance, only: git_revision, build_compiler, build_flags, host_name, &
       available_threads
    use shcontact_io_xdmf, only: write_xdmf_sidecar
+   use shcontact_io_files, only: delete_file
+   use shcontact_io_output_checks, only: check_output_file, check_layout
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
@@ -176,6 +178,9 @@ contains
                info%profiles(k), error)
             if (allocated(error)) return
          end do
+         call h5_write(file, 'input/profiles/column', [character(len=1) :: 'y', 'z'], error)
+         if (.not. allocated(error)) call attach_profile_scales(file, error)
+         if (allocated(error)) return
       end if
       if (allocated(info%geometry)) then
          do k = 1, size(info%geometry)
@@ -228,16 +233,21 @@ contains
    end subroutine write_provenance
 
    !> Make `group/scale` a dimension scale and attach it to dimension `dim` of those datasets
-   !> of `names` that exist in the group.
-   subroutine attach_scale(file, group, scale, dimension_name, names, dim, error)
+   !> of `names` that exist in the group (their earlier attachments are dropped first, unless
+   !> `keep` is true: a second dimension of the same datasets).
+   subroutine attach_scale(file, group, scale, dimension_name, names, dim, error, keep)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: group, scale, dimension_name
       character(len=*), intent(in) :: names(:)
       integer, intent(in) :: dim
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: keep
       character(len=*), parameter :: scale_attributes(3) = [character(len=14) :: &
          'REFERENCE_LIST', 'CLASS', 'NAME']
       integer :: i
+      logical :: keep_attached
+      keep_attached = .false.
+      if (present(keep)) keep_attached = keep
       if (.not. h5_exists(file, group//'/'//scale)) return
       ! A group copied from another file keeps its attributes but not the objects their
       ! references point to: start afresh.
@@ -249,7 +259,8 @@ contains
       do i = 1, size(names)
          if (allocated(error)) return
          if (.not. h5_exists(file, group//'/'//trim(names(i)))) cycle
-         call h5_delete_attribute(file, group//'/'//trim(names(i)), 'DIMENSION_LIST', error)
+         if (.not. keep_attached) call h5_delete_attribute(file, group//'/'//trim(names(i)), &
+            'DIMENSION_LIST', error)
          if (.not. allocated(error)) call h5_attach_scale(file, group//'/'//trim(names(i)), &
             group//'/'//scale, dim, error)
       end do
@@ -270,17 +281,42 @@ contains
       if (.not. allocated(error)) call attach_field_scales(file, patch//'/tangential', error)
    end subroutine attach_patch_scales
 
-   !> Scales of the element fields of a tangential group: y on the strip dimension.
+   !> Scales of the element fields of a tangential group: y on the strip dimension (and dx's),
+   !> `element` on the element dimension, `component` on the first dimension of `xy` (every
+   !> dimension has its scale, so netCDF readers such as xarray open the group).
    subroutine attach_field_scales(file, path, error)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: error
       if (.not. h5_exists(file, path//'/xy')) return
       call attach_scale(file, path, 'y', 'strip (y, lateral)', element_fields, 2, error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'element', &
+         'element (j from the leading edge)', element_fields, 1, error, keep=.true.)
       if (allocated(error)) return
       call h5_delete_attribute(file, path//'/xy', 'DIMENSION_LIST', error)
       if (.not. allocated(error)) call h5_attach_scale(file, path//'/xy', path//'/y', 3, error)
+      if (.not. allocated(error)) call h5_delete_attribute(file, path//'/dx', 'DIMENSION_LIST', &
+         error)
+      if (.not. allocated(error)) call h5_attach_scale(file, path//'/dx', path//'/y', 1, error)
+      if (.not. allocated(error) .and. h5_exists(file, path//'/element')) &
+         call h5_attach_scale(file, path//'/xy', path//'/element', 2, error)
+      if (.not. allocated(error)) call attach_scale(file, path, 'component', 'x, y', &
+         [character(len=2) :: 'xy'], 1, error, keep=.true.)
    end subroutine attach_field_scales
+
+   !> Scales of the profiles (n, 2) under /input/profiles: `column` ('y', 'z') and the point
+   !> indices `wheel_point`, `rail_point` (0, 1, ...); again after a copy between files.
+   subroutine attach_profile_scales(file, error)
+      type(h5_file_type), intent(in) :: file
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: group = 'input/profiles'
+      call attach_scale(file, group, 'column', 'y, z', [character(len=5) :: 'wheel', 'rail'], &
+         1, error)
+      if (.not. allocated(error)) call attach_scale(file, group, 'wheel_point', &
+         'point of the wheel profile', ['wheel'], 2, error, keep=.true.)
+      if (.not. allocated(error)) call attach_scale(file, group, 'rail_point', &
+         'point of the rail profile', ['rail'], 2, error, keep=.true.)
+   end subroutine attach_profile_scales
 
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
    subroutine write_profile(file, path, profile, error)
@@ -289,7 +325,7 @@ contains
       type(profile_type), intent(in) :: profile
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: yz(:, :)
-      integer :: n
+      integer :: n, i
       n = profile%size()
       allocate (yz(2, n))
       if (n > 0) then
@@ -297,6 +333,8 @@ contains
          yz(2, :) = profile%z
       end if
       call h5_write(file, path, yz, 'mm', error)
+      if (.not. allocated(error)) call h5_write(file, path//'_point', [(i - 1, i = 1, n)], '1', &
+         error)
       if (allocated(error)) return
       call h5_write_attribute(file, path, 'columns', 'y (lateral, to the field side), '// &
          'z (vertical, positive downward)', error)
@@ -596,8 +634,9 @@ contains
 
    !> The element grid of the fields: `xy`, the element centres (x, y) interleaved (the mesh
    !> geometry of the XDMF sidecar: ParaView's XDMF reader wants the coordinates of a point
-   !> together), y as the dimension scale of the strip dimension of every field, the element
-   !> dimension labelled, and a `coordinates` attribute (x, y) on every field.
+   !> together), y as the dimension scale of the strip dimension of every field, `element`
+   !> (j = 0, 1, ...) that of the element dimension, `component` ('x', 'y') that of xy's first,
+   !> every dimension labelled, and a `coordinates` attribute (x, y) on every field.
    subroutine write_field_grid(file, path, t, error)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
@@ -611,6 +650,10 @@ contains
       xy(1, :, :) = t%x
       xy(2, :, :) = spread(t%y, 1, size(t%x, 1))
       call h5_write(file, path//'/xy', xy, 'mm', error, compress=.true.)
+      if (.not. allocated(error)) call h5_write(file, path//'/element', &
+         [(i - 1, i = 1, size(t%x, 1))], '1', error)
+      if (.not. allocated(error)) call h5_write(file, path//'/component', &
+         [character(len=1) :: 'x', 'y'], error)
       if (.not. allocated(error)) call attach_field_scales(file, path, error)
       if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 1, 'x, y', error)
       if (.not. allocated(error)) call h5_set_dim_label(file, path//'/xy', 2, &
@@ -667,6 +710,7 @@ contains
       end if
       call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
       if (.not. allocated(error)) call h5_read(file, 'input/namelist', config_text, error)
+      if (.not. allocated(error)) call check_layout(file, name, error)
       if (.not. allocated(error)) call h5_read(file, 'summary/case', indices, error)
       if (allocated(error)) then
          call h5_close(file)
@@ -716,7 +760,7 @@ contains
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
    subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
-                                 shard, temp_name, threads)
+                                 shard, temp_name, threads, force)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
@@ -733,6 +777,8 @@ contains
       character(len=*), intent(in), optional :: temp_name
       !> OpenMP threads of the run, recorded in the file (default: those available now).
       integer, intent(in), optional :: threads
+      !> Replace an output (or sidecar) that shcontact did not write ([[check_output_file]]).
+      logical, intent(in), optional :: force
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
@@ -752,7 +798,7 @@ contains
          call fatal_error(error, 'merge: no input files', stat_invalid_input)
          return
       end if
-      call check_output_file(output, error, inputs)
+      call check_output_file(output, error, inputs, force)
       if (allocated(error)) return
       n_first = 0
       n_fail = 0
@@ -824,6 +870,7 @@ contains
       call h5_open(src, inputs(1)%text, error)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
       if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
+      if (.not. allocated(error)) call attach_profile_scales(out, error)
       if (.not. allocated(error) .and. h5_exists(src, 'geometry')) then
          call h5_copy(src, 'geometry', out, 'geometry', error)
          k = 1
@@ -878,56 +925,11 @@ contains
          groups(i)%text = case_group_name(order(i), n_first)
       end do
       call write_xdmf_sidecar(output, order, groups, error)
+      ! No output from a failed command: the file this call has just written goes too.
+      if (allocated(error)) then
+         if (delete_file(output)) continue
+      end if
    end subroutine merge_result_files
-
-   !> An output name that may be written: not a directory, not one of `inputs`, and not an
-   !> existing file other than a shcontact result file (which a new run replaces). Nothing that
-   !> is not ours is overwritten.
-   subroutine check_output_file(output, error, inputs)
-      !> The output file.
-      character(len=*), intent(in) :: output
-      !> stat_io (directory, foreign file) or stat_usage (also an input), naming the file.
-      type(error_type), allocatable, intent(out) :: error
-      !> Files read to make the output.
-      type(string_type), intent(in), optional :: inputs(:)
-      character(len=:), allocatable :: target
-      integer :: f
-      if (is_directory(output)) then
-         call fatal_error(error, 'cannot write the output "'//output//'": it is a directory', &
-            stat_io)
-         return
-      end if
-      if (.not. file_exists(output)) return
-      target = canonical_path(output)
-      if (present(inputs)) then
-         do f = 1, size(inputs)
-            if (canonical_path(inputs(f)%text) == target) then
-               call fatal_error(error, 'the output "'//output//'" is also an input; give '// &
-                  'a new name for the merged file', stat_usage)
-               return
-            end if
-         end do
-      end if
-      if (.not. is_result_file(output)) then
-         call fatal_error(error, 'the output "'//output//'" exists and is not a shcontact '// &
-            'result file; it is not overwritten (remove it or choose another name)', stat_io)
-      end if
-   end subroutine check_output_file
-
-   !> True for an HDF5 file written by shcontact.
-   function is_result_file(name) result(yes)
-      character(len=*), intent(in) :: name
-      logical :: yes
-      type(h5_file_type) :: file
-      type(error_type), allocatable :: error
-      character(len=:), allocatable :: software
-      yes = .false.
-      call h5_open(file, name, error)
-      if (allocated(error)) return
-      call h5_read_attribute(file, '/', 'software', software, error)
-      yes = .not. allocated(error)
-      call h5_close(file)
-   end function is_result_file
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)

@@ -9,17 +9,18 @@
 !> X_Y geometry of two separate arrays), with the fields as node values. Datasets are referenced by
 !> path, with the shapes and number types read from the HDF5 file itself, so the sidecar always
 !> matches the file it is written for. It is written under a temporary name and renamed when
-!> complete; a file without fields gets no sidecar (and loses a stale one).
+!> complete; a file without fields gets no sidecar (and loses a stale one, when that is a regular
+!> file written by shcontact: [[is_xdmf_sidecar]]; anything else is left alone).
 module shcontact_io_xdmf
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    use shcontact_core_strings, only: str_int
-   use shcontact_io_files, only: rename_file, delete_file, file_exists, process_id
+   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, h5_dataset_info
    use shcontact_io_text, only: string_type
    implicit none
    private
 
-   public :: write_xdmf_sidecar, xdmf_name
+   public :: write_xdmf_sidecar, xdmf_name, is_xdmf_sidecar
 
    !> The element fields a patch grid can carry, in the order they are listed.
    character(len=*), parameter :: field_names(5) = [character(len=5) :: 'pn', 'px', 'py', &
@@ -64,7 +65,8 @@ contains
       ref = h5_name(index(h5_name, '/', back=.true.) + 1:)
       call h5_open(file, h5_name, error)
       if (allocated(error)) return
-      open (newunit=unit, file=temp, status='replace', action='write', iostat=stat, &
+      ! status 'new': never overwrite a file of that name.
+      open (newunit=unit, file=temp, status='new', action='write', iostat=stat, &
          iomsg=iomsg)
       if (stat /= 0) then
          call h5_close(file)
@@ -102,8 +104,9 @@ contains
       if (stat == 0) stat = cstat
       if (allocated(error) .or. stat /= 0 .or. n_grids == 0) then
          if (delete_file(temp)) continue
-         ! No sidecar, and none left over from an earlier run under this name.
-         if (file_exists(name)) then
+         ! No sidecar, and none left over from an earlier run under this name (only one that
+         ! shcontact wrote).
+         if (is_xdmf_sidecar(name)) then
             if (delete_file(name)) continue
          end if
          if (stat /= 0 .and. .not. allocated(error)) then
@@ -117,6 +120,27 @@ contains
          if (delete_file(temp)) continue
       end if
    end subroutine write_xdmf_sidecar
+
+   !> True for a regular file (not a link) that is an XDMF sidecar written by shcontact: its
+   !> first lines hold the `<Xdmf` element and the comment naming shcontact.
+   function is_xdmf_sidecar(name) result(yes)
+      !> The file.
+      character(len=*), intent(in) :: name
+      logical :: yes
+      character(len=400) :: head
+      integer :: unit, stat, size_
+      yes = .false.
+      if (path_kind(name) /= 'file') return
+      open (newunit=unit, file=name, status='old', action='read', access='stream', &
+         form='unformatted', iostat=stat)
+      if (stat /= 0) return
+      inquire (unit=unit, size=size_)
+      head = ''
+      if (size_ > 0) read (unit, iostat=stat) head(1:min(size_, len(head)))
+      close (unit)
+      yes = index(head, '<?xml') == 1 .and. index(head, ' (shcontact); ') > 0 .and. &
+         index(head, '<Xdmf ') > 0
+   end function is_xdmf_sidecar
 
    !> True when a patch group holds the element grid.
    logical function has_fields(file, patch)

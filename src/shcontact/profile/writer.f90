@@ -14,7 +14,8 @@ module shcontact_profile_writer
    public :: write_profile_plain, write_builtin_profiles
 
    !> Names of the built-in profiles written by [[write_builtin_profiles]], and their files.
-   character(len=*), parameter :: written_builtins(2) = [character(len=5) :: 'S1002', 'UIC60']
+   character(len=*), parameter :: written_builtins(3) = [character(len=12) :: 'S1002', 'UIC60', &
+      'UIC60-canted']
 
 contains
 

@@ -1,0 +1,91 @@
+!> `shcontact profiles FILE`: what the points suggest for a case (doc/profiles.md, *Measured
+!> profiles: cant and smoothing*): whether a rail looks canted already, the noise of the points
+!> and the smoothing length it calls for.
+module shcontact_app_profile_advice
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_format
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel
+   use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
+      suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
+      default_curvature_tolerance
+   implicit none
+   private
+
+   public :: profile_advice
+
+   !> A head within this slope of upright (mm/mm) looks upright; half of the usual 1:40.
+   real(wp), parameter :: upright_band = 0.0125_wp
+   !> Suggested smoothing below this length (mm) is not worth setting.
+   real(wp), parameter :: negligible_smoothing = 0.5_wp
+
+contains
+
+   !> The advice lines ("cant ...", "noise ...", "smoothing ..."), newline-separated.
+   function profile_advice(read, cleaned) result(text)
+      !> The points as read (canonical form, before the clean-up) and the cleaned profile.
+      type(profile_type), intent(in) :: read, cleaned
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: nl = new_line('a')
+      text = ''
+      if (cleaned%kind /= profile_kind_wheel) text = cant_line(cleaned)//nl
+      text = text//noise_lines(read, cleaned%kind)
+   end function profile_advice
+
+   function cant_line(rail) result(text)
+      type(profile_type), intent(in) :: rail
+      character(len=:), allocatable :: text, evidence
+      type(rail_cant_type) :: cant
+      call estimate_rail_cant(rail, cant)
+      if (.not. cant%found) then
+         text = 'cant       not estimated (no crown with a gauge face 14 mm below it)'
+         return
+      end if
+      evidence = ' (crown top '//str_format(cant%offset, '(f0.1)')//' mm from the gauge point; '// &
+         'upright 60E1 head: '//str_format(cant%offset_upright, '(f0.1)')//' mm)'
+      if (cant%slope >= upright_band) then
+         text = 'cant       the rail head looks inclined by about 1:'// &
+            str_format(1.0_wp/cant%slope, '(f0.0)')//' towards the track centre'//evidence// &
+            ': the points look already canted; set the rail cant with track%rail_canted '// &
+            '= .true. (--set track%rail_canted=.true.) so that rail_inclination is not '// &
+            'applied again'
+      else if (cant%slope <= -upright_band) then
+         text = 'cant       the rail head looks inclined by about 1:'// &
+            str_format(-1.0_wp/cant%slope, '(f0.0)')//' away from the track centre'//evidence// &
+            ': check the side (--mirror-y) and the measurement'
+      else
+         text = 'cant       the rail head looks upright (inclination below 1:'// &
+            str_format(1.0_wp/upright_band, '(f0.0)')//')'//evidence//': keep track%rail_canted '// &
+            '= .false.; the track''s rail_inclination (1:40 by default) sets the rail cant'
+      end if
+   end function cant_line
+
+   function noise_lines(read, kind) result(text)
+      type(profile_type), intent(in) :: read
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: text, variable
+      type(noise_estimate_type) :: noise
+      real(wp) :: l_filt
+      call estimate_noise(read, noise)
+      if (noise%windows == 0) then
+         text = 'noise      not estimated (too few points)'
+         return
+      end if
+      variable = 'profiles%rail_smoothing'
+      if (kind == profile_kind_wheel) variable = 'profiles%wheel_smoothing'
+      l_filt = suggested_smoothing(noise%sigma, noise%spacing)
+      text = 'noise      '//str_format(noise%sigma, '(es9.2)')//' mm rms normal to the profile '// &
+         '(cubic fits over 7 points), point spacing '//str_format(noise%spacing, '(f0.2)')//' mm'// &
+         new_line('a')
+      if (l_filt < negligible_smoothing) then
+         text = text//'smoothing  not needed: the curvature noise is below '// &
+            str_format(default_curvature_tolerance, '(es8.1)')//' 1/mm already with L_filt = '// &
+            str_format(l_filt, '(f0.2)')//' mm (doc/profiles.md)'
+      else
+         text = text//'smoothing  '//variable//' = '//str_format(l_filt, '(f0.1)')//' mm keeps the '// &
+            'curvature noise below '//str_format(default_curvature_tolerance, '(es8.1)')// &
+            ' 1/mm (10 % of a 300 mm crown; '//str_format(curvature_noise(noise%sigma, &
+            noise%spacing, 2.0_wp), '(es8.1)')//' 1/mm at 2 mm); doc/profiles.md'
+      end if
+   end function noise_lines
+
+end module shcontact_app_profile_advice

@@ -1,0 +1,325 @@
+"""numpy interface to the solver: one :class:`Contact` per wheel, vectorised over arrays of cases.
+
+Units: mm, N, MPa (N/mm^2), rad; spin creepage rad/mm; velocities mm/s, rates rad/s. Creepages
+are those of the wheel relative to the rail at the geometric contact point; forces act on the
+wheel (doc/api.md, README "Units and signs").
+
+    >>> import numpy as np, shcontact
+    >>> c = shcontact.Contact("builtin:S1002", "builtin:UIC60")
+    >>> r = c.solve(t_y=np.linspace(0, 6, 7), normal_force=64.7e3, nu_x=0.58e-3)
+    >>> r["fx"].shape
+    (7,)
+
+Every input of :meth:`Contact.solve` and :meth:`Contact.solve_kinematic` may be an array; they
+are broadcast against each other and each element is one call of the C library (a loop in
+Python; the library keeps what it can between calls at the same position). The result is a dict
+of arrays of the broadcast shape, keyed by the names of :mod:`shcontact.layout`, plus
+``status`` (0 for a solved case).
+"""
+import ctypes
+
+import numpy as np
+
+from . import layout
+from ._library import load_library, library_version
+
+__all__ = ["Contact", "ShcontactError"]
+
+#: The defaults of the library (Manchester benchmark track, rail canted 1:40 by the track).
+DEFAULT_TRACK = {
+    "gauge": 1435.0, "gauge_height": 14.0, "inclination": 1.0 / 40.0, "rail_canted": False,
+    "flange_back_distance": 1360.0, "flange_back_position": -70.0, "nominal_radius": 460.0,
+}
+
+
+class ShcontactError(RuntimeError):
+    """A call of the library failed: ``status`` (the C status code), ``message`` (its text),
+    ``case`` (the index of the failed case in the input arrays, or None)."""
+
+    def __init__(self, status, message, case=None):
+        where = "" if case is None else f" (case {case})"
+        super().__init__(f"shcontact: status {status}{where}: {message}")
+        self.status, self.message, self.case = status, message, case
+
+
+def _c_double_array(values):
+    array = np.ascontiguousarray(values, dtype=np.float64)
+    return array, array.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+
+
+class Contact:
+    """One wheel on its rail: a handle of the C API (``shcontact_create``).
+
+    ``wheel``, ``rail``: profile names (``builtin:S1002``, ``builtin:UIC60``,
+    ``builtin:UIC60-canted``) or file names. ``side``: ``"right"`` or ``"left"``.
+    ``material``: dict of ``shear_modulus`` (MPa), ``poisson``, ``friction``; ``track``: dict of
+    the keywords of :meth:`set_track`; ``options``: dict of option keys (``"tangential%method"``,
+    ... as in doc/api.md) to values; ``fields=True`` keeps the element fields of every solve for
+    :meth:`fields`. ``library``: path of libshcontact.so (else found as
+    :mod:`shcontact._library` says).
+    """
+
+    def __init__(self, wheel="builtin:S1002", rail="builtin:UIC60", side="right", *,
+                 material=None, track=None, options=None, fields=False, library=None):
+        self._start(library)
+        self._check(self._lib.shcontact_create(ctypes.byref(self._handle), wheel.encode(),
+                                               rail.encode(), self._side(side)))
+        self._configure(material, track, options, fields)
+
+    @classmethod
+    def from_arrays(cls, wheel_y, wheel_z, rail_y, rail_z, side="right", *, material=None,
+                    track=None, options=None, fields=False, library=None):
+        """A contact from profiles given as arrays of points (mm; the right-side canonical form
+        of ``shcontact_create_arrays``: y towards the field side, z down; the wheel from the field
+        side to the flange back, the rail from the track centre to the field side)."""
+        self = cls.__new__(cls)
+        self._start(library)
+        wy, pwy = _c_double_array(wheel_y)
+        wz, pwz = _c_double_array(wheel_z)
+        ry, pry = _c_double_array(rail_y)
+        rz, prz = _c_double_array(rail_z)
+        if wy.shape != wz.shape or ry.shape != rz.shape or wy.ndim != 1 or ry.ndim != 1:
+            raise ValueError("shcontact: wheel_y/wheel_z and rail_y/rail_z must be 1-D arrays of "
+                             "equal length each")
+        self._check(self._lib.shcontact_create_arrays(ctypes.byref(self._handle), wy.size, pwy,
+                                                      pwz, ry.size, pry, prz, cls._side(side)))
+        self._configure(material, track, options, fields)
+        return self
+
+    # --- set-up --------------------------------------------------------------------------------
+
+    def _start(self, library):
+        self._lib = load_library(library)
+        self._handle = ctypes.c_void_p()
+        self._fields = False
+        self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
+
+    @staticmethod
+    def _side(side):
+        if side not in layout.SIDES:
+            raise ValueError(f"shcontact: side '{side}': expected 'right' or 'left'")
+        return layout.SIDES[side]
+
+    def _configure(self, material, track, options, fields):
+        if material:
+            self.set_material(**material)
+        if track:
+            self.set_track(**track)
+        for key, value in (options or {}).items():
+            self.set_option(key, value)
+        if fields:
+            self.set_option("output%fields", "all")
+
+    def set_material(self, shear_modulus=82670.0, poisson=0.27, friction=0.3):
+        """Shear modulus G (MPa), Poisson's ratio, friction coefficient."""
+        self._check(self._lib.shcontact_set_material(self._ptr(), shear_modulus, poisson,
+                                                     friction))
+
+    def set_track(self, **track):
+        """Track: ``gauge``, ``gauge_height`` (mm), ``inclination`` (slope, 1:40 = 0.025),
+        ``rail_canted`` (the rail profile is already canted), ``flange_back_distance``,
+        ``flange_back_position``, ``nominal_radius`` (mm); those not given keep the library's
+        defaults (:data:`DEFAULT_TRACK`), not earlier calls' values."""
+        unknown = set(track) - set(DEFAULT_TRACK)
+        if unknown:
+            raise TypeError(f"shcontact: set_track: unknown keyword(s) {sorted(unknown)}; "
+                            f"expected {sorted(DEFAULT_TRACK)}")
+        t = dict(DEFAULT_TRACK, **track)
+        self._check(self._lib.shcontact_set_track(
+            self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
+            int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
+            t["nominal_radius"]))
+        self._nominal_radius = float(t["nominal_radius"])
+
+    def set_option(self, key, value):
+        """One option as in the app's case files (``"tangential%bound"``, ``"clipped"``)."""
+        self._check(self._lib.shcontact_set_option(self._ptr(), key.encode(), str(value).encode()))
+        if key == "output%fields":
+            self._fields = str(value).strip().lower() in ("all", "1")
+
+    def profile(self, kind):
+        """The points (y, z) in mm of the contact's ``"wheel"`` or ``"rail"`` profile, as created
+        (the form :meth:`from_arrays` takes)."""
+        if kind not in layout.PROFILE_KINDS:
+            raise ValueError(f"shcontact: profile '{kind}': expected 'wheel' or 'rail'")
+        n = ctypes.c_int()
+        self._lib.shcontact_get_profile(self._ptr(), layout.PROFILE_KINDS[kind], 0,
+                                        ctypes.byref(n), None, None)
+        y, py = _c_double_array(np.zeros(n.value))
+        z, pz = _c_double_array(np.zeros(n.value))
+        self._check(self._lib.shcontact_get_profile(self._ptr(), layout.PROFILE_KINDS[kind],
+                                                    n.value, ctypes.byref(n), py, pz))
+        return y, z
+
+    @property
+    def library_version(self):
+        """The version the loaded library reports."""
+        return library_version(self._lib)
+
+    # --- solving -------------------------------------------------------------------------------
+
+    def solve(self, t_y, *, nu_x=0.0, nu_y=0.0, phi=0.0, roll=0.0, normal_force=None,
+              vertical_force=None, approach=None, vertical_position=None, errors="raise"):
+        """Contact with prescribed creepages (``shcontact_solve``): lateral wheelset shift
+        ``t_y`` (mm, CONTACT's Y_WS), creepages ``nu_x``, ``nu_y``, spin ``phi`` (rad/mm), wheelset
+        ``roll`` (rad), and exactly one load: ``normal_force`` (N, on the deepest patch),
+        ``vertical_force`` (N, the wheel load shared by the patches), ``approach`` (mm, of the
+        deepest patch) or ``vertical_position`` (mm, of the wheel). Arrays broadcast.
+
+        ``errors="raise"`` raises :class:`ShcontactError` at the first failed case;
+        ``errors="nan"`` gives NaN values (0 counts) and the status in ``status``."""
+        mode, load = self._load(normal_force, vertical_force, approach, vertical_position)
+        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64)
+                                       for v in (t_y, roll, load, nu_x, nu_y, phi)])
+        function = self._lib.shcontact_solve
+
+        def call(handle, values, t_y, roll, load, nu_x, nu_y, phi):
+            return function(handle, t_y, roll, mode, load, nu_x, nu_y, phi, values)
+
+        return self._loop(call, inputs, layout.RESULT, errors)
+
+    def solve_kinematic(self, y_ws, *, v_forward, yaw=0.0, roll=0.0, v_lateral=0.0,
+                        v_vertical=0.0, roll_rate=0.0, yaw_rate=0.0, pitch_rate=None,
+                        vertical_force=None, normal_force=None, approach=None,
+                        vertical_position=None, errors="raise"):
+        """One wheel from the wheelset's position and velocities (``shcontact_solve_kinematic``,
+        CONTACT's module 1; track frame x forward, y to the right, z down): ``y_ws`` (mm),
+        ``yaw``, ``roll`` (rad), ``v_forward`` (> 0), ``v_lateral``, ``v_vertical`` (mm/s),
+        ``roll_rate``, ``yaw_rate``, ``pitch_rate`` (rad/s; default pure rolling,
+        -v_forward / nominal_radius) and one load (``vertical_force``, N, is what a vehicle code
+        gives). The result adds the main patch's creepages ``nu_x``, ``nu_y``, ``phi`` and
+        ``x_track``. Arrays broadcast; ``errors`` as in :meth:`solve`."""
+        mode, load = self._load(normal_force, vertical_force, approach, vertical_position)
+        if pitch_rate is None:
+            pitch_rate = -np.asarray(v_forward, dtype=np.float64) / self._nominal_radius
+        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
+            y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate,
+            load)])
+        function = self._lib.shcontact_solve_kinematic
+
+        def call(handle, values, *state):
+            return function(handle, *state[:9], mode, state[9], values)
+
+        return self._loop(call, inputs, layout.KINEMATIC, errors)
+
+    def patch(self, patch):
+        """The values of patch ``patch`` (1-based) of the last solve, as a dict of floats
+        (:data:`layout.PATCH`; after :meth:`solve_kinematic` with the creepages and x_track)."""
+        values = (ctypes.c_double * len(layout.KINEMATIC))()
+        if self._last_kinematic:
+            self._check(self._lib.shcontact_patch_kinematic(self._ptr(), patch, values))
+            names = layout.PATCH + layout.KINEMATIC[len(layout.RESULT):]
+            offsets = list(range(len(layout.PATCH))) + list(range(len(layout.RESULT),
+                                                                  len(layout.KINEMATIC)))
+        else:
+            self._check(self._lib.shcontact_patch(self._ptr(), patch, values))
+            names, offsets = layout.PATCH, range(len(layout.PATCH))
+        return {name: values[i] for name, i in zip(names, offsets)}
+
+    def fields(self, patch=None):
+        """The element fields of patch ``patch`` (1-based; default the main patch) of the last
+        solve, which must have been made with fields on (``Contact(..., fields=True)``): a dict of
+        (n_strips, n_elements) arrays, row i a strip, column j an element from the leading
+        edge, in the patch's contact frame: ``x`` (rolling direction, mm), ``y`` (strip centre,
+        mm), ``area`` (mm^2), ``pn`` (pressure, MPa), ``px``, ``py`` (tractions on the wheel,
+        MPa), ``slip`` (slip magnitude, 0 in adhesion), ``state`` (0 exterior, 1 adhesion,
+        2 slip). Sum(px * area) is the patch's F_x."""
+        if not self._fields:
+            raise ShcontactError(layout.STATUS["usage"], "no element fields: create the contact "
+                                 "with fields=True (option output%fields = all) before the solve")
+        if patch is None:
+            patch = self._main_patch
+        nx, ny = ctypes.c_int(), ctypes.c_int()
+        self._check(self._lib.shcontact_field_size(self._ptr(), patch, ctypes.byref(nx),
+                                                   ctypes.byref(ny)))
+        shape = (ny.value, nx.value)
+        arrays = {name: np.zeros(shape) for name in ("x", "y", "area", "pn", "px", "py", "slip")}
+        state = np.zeros(shape, dtype=np.intc)
+        pointers = [arrays[name].ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+                    for name in ("x", "y", "area", "pn", "px", "py", "slip")]
+        self._check(self._lib.shcontact_fields(
+            self._ptr(), patch, nx.value, ny.value, *pointers,
+            state.ctypes.data_as(ctypes.POINTER(ctypes.c_int))))
+        arrays["state"] = state.astype(np.int8)
+        return arrays
+
+    # --- internals -----------------------------------------------------------------------------
+
+    _last_kinematic = False
+    _main_patch = 1
+
+    @staticmethod
+    def _load(normal_force, vertical_force, approach, vertical_position):
+        given = {name: value for name, value in (
+            ("normal_force", normal_force), ("vertical_force", vertical_force),
+            ("approach", approach), ("vertical_position", vertical_position))
+            if value is not None}
+        if len(given) != 1:
+            raise TypeError("shcontact: give exactly one load: normal_force, vertical_force, "
+                            f"approach or vertical_position (got {sorted(given) or 'none'})")
+        (name, value), = given.items()
+        return layout.LOAD_MODES[name], value
+
+    def _loop(self, call, inputs, names, errors):
+        if errors not in ("raise", "nan"):
+            raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
+        shape = inputs[0].shape
+        out = np.full(shape + (len(names),), np.nan)
+        status = np.zeros(shape, dtype=np.int32)
+        values = (ctypes.c_double * len(names))()
+        handle = self._ptr()
+        flat = [a.ravel() for a in inputs]
+        stat = None
+        out_flat = out.reshape(-1, len(names))
+        status_flat = status.reshape(-1)
+        for k in range(out_flat.shape[0]):
+            stat = call(handle, values, *[float(a[k]) for a in flat])
+            if stat == 0:
+                out_flat[k] = values[:]
+            else:
+                status_flat[k] = stat
+                if errors == "raise":
+                    case = np.unravel_index(k, shape) if shape else None
+                    raise ShcontactError(stat, self._message(), case)
+        self._last_kinematic = len(names) == len(layout.KINEMATIC)
+        self._main_patch = int(values[names.index("main_patch")]) if stat == 0 else 1
+        result = {}
+        for i, name in enumerate(names):
+            column = out[..., i]
+            if name in layout.INTEGER:
+                column = np.where(np.isnan(column), 0, column).astype(np.int64)
+            result[name] = column[()] if column.ndim == 0 else column
+        result["status"] = status[()] if status.ndim == 0 else status
+        return result
+
+    def _ptr(self):
+        if not self._handle:
+            raise ShcontactError(layout.STATUS["usage"], "the contact was closed")
+        return self._handle
+
+    def _message(self):
+        buffer = ctypes.create_string_buffer(1024)
+        self._lib.shcontact_last_error(self._handle, buffer, len(buffer))
+        return buffer.value.decode(errors="replace")
+
+    def _check(self, stat):
+        if stat != 0:
+            raise ShcontactError(stat, self._message())
+
+    def close(self):
+        """Release the handle (also done when the object is collected)."""
+        if getattr(self, "_handle", None):
+            self._lib.shcontact_destroy(self._handle)
+            self._handle = ctypes.c_void_p()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # interpreter shutdown
+            pass

@@ -1,0 +1,91 @@
+"""The reader of result files, and xarray on them: every group opens, every dimension named."""
+import numpy as np
+import pytest
+
+import shcontact
+from conftest import SUMMARY_OF_LAYOUT
+
+
+def test_summary_equals_csv(run_app):
+    path, rows = run_app("ksweep", "examples/kinematic_sweep.nml", "--set", "output%fields=all")
+    f = shcontact.ResultFile(path)
+    s = f.summary()
+    assert list(s["case"]) == list(range(1, 35))
+    for column in list(SUMMARY_OF_LAYOUT.values()) + ["t_y", "yaw", "x_track", "nu_x"]:
+        np.testing.assert_array_equal(s[column], [float(row[column]) for row in rows],
+                                      err_msg=column)
+    assert f.units()["fx"] == "N" and f.units()["phi"] == "rad/mm"
+    assert f.attrs["software"] == "shcontact" and int(f.attrs["n_cases"]) == 34
+    assert "&kinematics" in f.namelist
+    assert f.failures()["case"].size == 0
+    assert f.cases() == list(range(1, 35))
+    profiles = f.profiles()
+    assert set(profiles) == {"wheel", "rail"} and profiles["rail"].shape[1] == 2
+
+
+def test_fields_of_a_case(run_app):
+    path, rows = run_app("ksweep", "examples/kinematic_sweep.nml", "--set", "output%fields=all")
+    f = shcontact.ResultFile(path)
+    # Cases with two loaded patches, both carrying a load (a loaded patch may carry none: then
+    # it has forces but no fields).
+    cases = [k for k, row in enumerate(rows, 1) if row["n_loaded"] == "2"]
+    both = [k for k in cases if all("px" in f.fields(k, p) for p in (1, 2))]
+    assert len(both) >= 1 and all(f.patches(k) == [1, 2] for k in cases)
+    for patch in (1, 2):
+        t = f.fields(both[0], patch)
+        area = t["dx"][:, None] * t["dy"]
+        assert t["px"].shape == (t["y"].size, t["element"].size)
+        assert np.sum(t["px"] * area) == pytest.approx(t["fx"], rel=1e-9)
+        assert np.sum(t["py"] * area) == pytest.approx(t["fy"], rel=1e-9)
+    with pytest.raises(KeyError, match="no group of case 99"):
+        f.fields(99, 1)
+
+
+def test_to_xarray(run_app):
+    pytest.importorskip("xarray")
+    path, rows = run_app("ksweep", "examples/kinematic_sweep.nml", "--set", "output%fields=all")
+    f = shcontact.ResultFile(path)
+    s = f.to_xarray("summary")
+    assert dict(s.sizes) == {"case": 34} and s["fx"].attrs["units"] == "N"
+    t = f.to_xarray(f.group(1, 1, "tangential"))
+    assert t["px"].dims == ("y", "element") and t["xy"].dims == ("y", "element", "component")
+    assert list(t["component"].values) == ["x", "y"]
+    assert list(t["element"].values) == list(range(t.sizes["element"]))
+    assert t["dx"].dims == ("y",)
+    n = f.to_xarray(f.group(1, 1, "normal"))
+    assert n["p0"].dims == ("y",)
+
+
+def test_xarray_opens_every_group(run_app):
+    """Every dimension has its HDF5 dimension scale, so xarray (h5netcdf) opens every group of
+    the file with named dimensions: the tangential groups used to fail with "mixing of labeled
+    and unlabeled dimensions", the profiles got phony dimensions."""
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("h5netcdf")
+    import h5py
+    path, _ = run_app("ksweep", "examples/kinematic_sweep.nml", "--set", "output%fields=all")
+    groups = []
+    with h5py.File(path) as f:
+        f.visititems(lambda name, obj: groups.append(name) if isinstance(obj, h5py.Group)
+                     else None)
+        # Every dimension of every dataset has a scale.
+        unscaled = []
+        f.visititems(lambda name, obj: unscaled.extend(
+            f"{name}[{k}]" for k, dim in enumerate(obj.dims) if len(dim) == 0)
+            if isinstance(obj, h5py.Dataset) and obj.attrs.get("CLASS") != b"DIMENSION_SCALE"
+            else None)
+    assert unscaled == []
+    # Opening is slow (~0.4 s a group): the groups outside /cases, and those of two cases, one
+    # of them with two loaded patches (cases 19 to 22 of this sweep).
+    groups = [g for g in groups if not g.startswith("cases/")
+              or g.startswith(("cases/000001", "cases/000021"))]
+    assert sum(g.endswith("tangential") for g in groups) == 3
+    for group in groups:
+        with xr.open_dataset(path, group=group, engine="h5netcdf") as ds:
+            if group.endswith("tangential") and "px" in ds:
+                assert ds["px"].dims == ("y", "element")
+                assert ds["state"].dims == ("y", "element")
+            if group == "summary":
+                assert ds["fx"].dims == ("case",)
+            if group == "input/profiles":
+                assert ds["wheel"].dims == ("wheel_point", "column")

@@ -1,0 +1,170 @@
+"""The numpy interface to the solver against the shcontact program (same library, same case):
+the headline case with prescribed creepages, the kinematic case and the kinematic sweep (arrays
+of cases), element fields against the result file's, and the errors."""
+import numpy as np
+import pytest
+
+import shcontact
+from shcontact import layout
+from conftest import KINEMATIC_SUMMARY, SUMMARY_OF_LAYOUT
+
+# The app's default case (README, doc/app.md): S1002 on UIC60 1:40, t_y = 4.733 mm.
+HEADLINE = dict(normal_force=64.7e3, nu_x=0.58e-3, nu_y=0.061e-3, phi=2.74e-4)
+T_Y = 4.733
+# examples/kinematic.nml.
+KINEMATIC = dict(yaw=0.004, v_forward=30000.0, vertical_force=64700.0)
+
+# The program and this package call the same library; a release build of one and a debug build
+# of the other may differ in the last bits (doc/api.md §5), hence not bit for bit.
+RTOL, ATOL = 1e-9, 1e-9
+
+
+def assert_agrees(result, row, names, index=None):
+    for key, column in names.items():
+        value = result[key] if index is None else result[key][index]
+        expected = float(row[column])
+        assert value == pytest.approx(expected, rel=RTOL, abs=ATOL), (key, column)
+
+
+@pytest.fixture(scope="module")
+def contact():
+    with shcontact.Contact("builtin:S1002", "builtin:UIC60", fields=True) as c:
+        yield c
+
+
+def test_headline_equals_program(contact, run_app):
+    _, rows = run_app("headline")
+    assert len(rows) == 1 and rows[0]["status"] == "0"
+    assert float(rows[0]["t_y"]) == T_Y
+    r = contact.solve(T_Y, **HEADLINE)
+    assert r["status"] == 0
+    assert_agrees(r, rows[0], SUMMARY_OF_LAYOUT)
+    # The forces are those the README quotes for the headline case (a change shows here too).
+    assert r["fx"] == pytest.approx(-5846.8, abs=0.1)
+
+
+def test_kinematic_equals_program(contact, run_app):
+    _, rows = run_app("kinematic", "examples/kinematic.nml")
+    r = contact.solve_kinematic(4.733, **KINEMATIC)
+    assert_agrees(r, rows[0], {**SUMMARY_OF_LAYOUT, **KINEMATIC_SUMMARY})
+    assert r["n_loaded"] == 2  # tread and flange root
+
+
+def test_kinematic_sweep_as_arrays(contact, run_app):
+    """The 34 cases of examples/kinematic_sweep.nml as one vectorised call."""
+    _, rows = run_app("ksweep", "examples/kinematic_sweep.nml")
+    t_y = np.array([float(row["t_y"]) for row in rows])
+    yaw = np.array([float(row["yaw"]) for row in rows])
+    assert len(rows) == 34 and len(set(t_y)) == 17 and len(set(yaw)) == 2
+    r = contact.solve_kinematic(t_y, yaw=yaw, v_forward=30000.0, vertical_force=64700.0)
+    assert r["fx"].shape == (34,) and r["n_patches"].dtype.kind == "i"
+    for k, row in enumerate(rows):
+        assert_agrees(r, row, {**SUMMARY_OF_LAYOUT, **KINEMATIC_SUMMARY}, index=k)
+    # Broadcasting: a (17, 2) grid holds the same cases.
+    grid = contact.solve_kinematic(np.unique(t_y)[:, None], yaw=np.unique(yaw)[None, :],
+                                   v_forward=30000.0, vertical_force=64700.0)
+    assert grid["sum_fy"].shape == (17, 2)
+    for k in range(34):
+        i, j = np.searchsorted(np.unique(t_y), t_y[k]), np.searchsorted(np.unique(yaw), yaw[k])
+        assert grid["sum_fy"][i, j] == r["sum_fy"][k]
+
+
+def test_arrays_equal_single_calls(contact):
+    """Each element of a vectorised call is the call made alone (no history)."""
+    t_y = np.linspace(0.0, 6.0, 7)
+    nu_x = np.array([0.0, 0.5e-3, 1e-3])[:, None]
+    r = contact.solve(t_y, nu_x=nu_x, normal_force=64.7e3, nu_y=0.061e-3, phi=2.74e-4)
+    assert r["fx"].shape == (3, 7) and r["status"].shape == (3, 7)
+    with shcontact.Contact() as fresh:
+        for i in range(3):
+            for j in range(7):
+                one = fresh.solve(t_y[j], nu_x=nu_x[i, 0], normal_force=64.7e3,
+                                  nu_y=0.061e-3, phi=2.74e-4)
+                for key in layout.RESULT:
+                    assert r[key][i, j] == one[key], key
+    # F_n as prescribed; F_x grows with nu_x.
+    assert np.allclose(r["fn"], 64.7e3, rtol=1e-12) and np.all(np.diff(r["fx"], axis=0) < 0)
+
+
+def test_fields_sum_to_forces_and_equal_file(contact, run_app):
+    path, _ = run_app("headline")
+    r = contact.solve(T_Y, **HEADLINE)
+    f = contact.fields()
+    ny, nx = f["pn"].shape
+    assert all(f[key].shape == (ny, nx) for key in f) and nx > 10 and ny > 10
+    assert np.sum(f["px"] * f["area"]) == pytest.approx(r["fx"], rel=1e-12)
+    assert np.sum(f["py"] * f["area"]) == pytest.approx(r["fy"], rel=1e-12)
+    # The pressure at the element centres integrates to F_n to the discretisation's accuracy.
+    assert np.sum(f["pn"] * f["area"]) == pytest.approx(r["fn"], rel=2e-3)
+    assert set(np.unique(f["state"])) <= {0, 1, 2}
+    assert np.all((f["state"] == layout.STATE_SLIP) == (f["slip"] > 0))
+    # The same fields as the program's result file (case 1, the main patch).
+    g = shcontact.read_fields(path, case=1, patch=int(r["main_patch"]))
+    for key in ("pn", "px", "py", "slip", "x"):
+        np.testing.assert_allclose(f[key], g[key], rtol=RTOL, atol=1e-9, err_msg=key)
+    np.testing.assert_array_equal(f["state"], g["state"])
+    np.testing.assert_allclose(f["y"][:, 0], g["y"], rtol=RTOL, atol=1e-12)
+
+
+def test_patches_and_kinematic_patch(contact):
+    r = contact.solve_kinematic(4.733, **KINEMATIC)
+    patches = [contact.patch(k) for k in range(1, int(r["n_loaded"]) + 1)]
+    assert sum(p["fz_track"] for p in patches) == pytest.approx(r["sum_fz"], rel=1e-12)
+    main = patches[int(r["main_patch"]) - 1]
+    for key in ("fx", "fy", "fn", "nu_x", "nu_y", "phi", "x_track"):
+        assert main[key] == r[key], key
+
+
+def test_profiles_as_arrays_give_same_results(contact):
+    wheel, rail = contact.profile("wheel"), contact.profile("rail")
+    with shcontact.Contact.from_arrays(*wheel, *rail) as c:
+        a = c.solve(T_Y, **HEADLINE)
+    b = contact.solve(T_Y, **HEADLINE)
+    for key in layout.RESULT:
+        assert a[key] == b[key], key
+
+
+def test_errors(contact):
+    with pytest.raises(shcontact.ShcontactError, match="positive") as info:
+        contact.solve(T_Y, normal_force=-1.0)
+    assert info.value.status == layout.STATUS["invalid_input"]
+    # errors="nan": the failed case is NaN with its status, the others are solved.
+    r = contact.solve(T_Y, nu_x=[0.58e-3, np.nan, 0.58e-3], normal_force=64.7e3, errors="nan")
+    assert list(r["status"]) == [0, layout.STATUS["invalid_input"], 0]
+    assert np.isnan(r["fx"][1]) and r["fx"][0] == r["fx"][2] and r["n_patches"][1] == 0
+    with pytest.raises(shcontact.ShcontactError) as info:
+        contact.solve(T_Y, nu_x=[0.0, np.nan], normal_force=64.7e3)
+    assert info.value.case == (1,)
+    with pytest.raises(TypeError, match="exactly one load"):
+        contact.solve(T_Y, normal_force=1.0, vertical_force=1.0)
+    with pytest.raises(shcontact.ShcontactError, match="v_forward"):
+        contact.solve_kinematic(4.733, v_forward=0.0, vertical_force=64.7e3)
+    with pytest.raises(shcontact.ShcontactError) as info:
+        shcontact.Contact("no/such/profile.txt")
+    assert info.value.status == layout.STATUS["io"]
+    with pytest.raises(shcontact.ShcontactError, match="fields=True"):
+        shcontact.Contact().fields()
+    with pytest.raises(shcontact.ShcontactError):
+        contact.set_option("no%such", "option")
+
+
+def test_material_track_and_options():
+    """The set-up calls reach the library: the defaults given again change nothing, other
+    values change what they should."""
+    with shcontact.Contact() as c:
+        base = c.solve(T_Y, **HEADLINE)
+        c.set_material()
+        c.set_track()
+        again = c.solve(T_Y, **HEADLINE)
+        assert all(again[key] == base[key] for key in layout.RESULT)
+        c.set_material(friction=0.2)
+        # Friction bounds the traction: |f| <= 1 relative to mu F_n with the new mu.
+        low = c.solve(T_Y, **HEADLINE)
+        assert abs(low["fx"]) < abs(base["fx"])
+        assert np.hypot(low["fx"], low["fy"]) <= 0.2 * low["fn"] * (1 + 1e-12)
+        c.set_track(inclination=1.0 / 20.0)
+        assert c.solve(T_Y, **HEADLINE)["gamma0"] != low["gamma0"]
+    with shcontact.Contact(options={"tangential%bound": "clipped"}) as c:
+        assert c.solve(T_Y, **HEADLINE)["fx"] != base["fx"]
+    with pytest.raises(TypeError, match="unknown keyword"):
+        shcontact.Contact(track={"gage": 1435.0})
