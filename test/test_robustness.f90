@@ -725,7 +725,8 @@ contains
       if (present(also)) named = named .or. index(err, also) > 0
       ! A value given with --set is named as such; a file the input names (a mutated profile
       ! name) may be named instead.
-      if (index(args, ' --set ') > 0) named = named .or. index(err, 'command line --set ') > 0
+      if (index(args, ' --set ') > 0) named = named .or. index(err, 'command line --set ') > 0 &
+         .or. index(err, set_variable(args)) > 0
       named = named .or. names_input_file(err, input)
       if (stat >= 1 .and. stat <= 3 .and. .not. named) then
          call test_failed(error, 'status '//trim(str(stat))//': the message does not name '// &
@@ -754,6 +755,22 @@ contains
       end if
       call shell('cd '//dir//' && rm -rf *.h5 *.h5.* out.txt err.txt')
    end subroutine check_fuzz_run
+
+   !> The variable of the first `--set group%name=value` of the arguments ('' when none): a
+   !> message about its value may name it instead of the command line (e.g. a flange-back
+   !> position the wheel profile does not reach).
+   pure function set_variable(args) result(name)
+      character(len=*), intent(in) :: args
+      character(len=:), allocatable :: name
+      integer :: at, pct, eq
+      name = achar(0)
+      at = index(args, ' --set ')
+      if (at == 0) return
+      pct = index(args(at:), '%')
+      eq = index(args(at:), '=')
+      if (pct == 0 .or. eq <= pct + 1) return
+      name = args(at + pct:at + eq - 2)
+   end function set_variable
 
    pure function str(i) result(text)
       integer, intent(in) :: i
