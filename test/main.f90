@@ -44,6 +44,7 @@ program tester
    use test_vertical_approach, only: collect_vertical_approach
    use test_performance_invariants, only: collect_performance_invariants
    use test_robustness, only: collect_robustness
+   use test_input, only: collect_input
    use test_wheelset_geometry, only: collect_wheelset_geometry
    use test_profile_diagnostics, only: collect_profile_diagnostics
    implicit none
@@ -87,6 +88,7 @@ program tester
       new_testsuite('validation_normal', collect_validation_normal), &
       new_testsuite('vertical_approach', collect_vertical_approach), &
       new_testsuite('performance_invariants', collect_performance_invariants), &
+      new_testsuite('input', collect_input), &
       new_testsuite('wheelset_geometry', collect_wheelset_geometry), &
       new_testsuite('profile_diagnostics', collect_profile_diagnostics), &
       new_testsuite('robustness', collect_robustness) &

@@ -10,6 +10,9 @@ module test_robustness
    use shcontact_io_files, only: file_exists
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in, expect_failure, current_directory
+   use test_fuzz_support, only: next_random, fuzz_settings, repeated, names_input_file, &
+      library_option_fuzz
+   use shcontact_io_config_variables, only: variables, k_real
    implicit none
    private
    public :: collect_robustness
@@ -34,12 +37,27 @@ module test_robustness
       "&tangential n_elements = 10, bound = 'weighted' /", &
       "&output fields = 'none', checkpoint_cases = 2 /", &
       '&sweep nu_x = 0.0, 1.0e-3 /']
-   !> Fuzz runs of each kind, and the wall-clock bound of the whole fuzz test (s).
+   !> Fuzz runs of each kind, and the wall-clock bound of the whole fuzz test (s); the
+   !> environment variable SHCONTACT_FUZZ_SECONDS sets a longer campaign (doc/app.md).
    integer, parameter :: fuzz_runs = 150
-   real, parameter :: fuzz_seconds = 60.0
-   !> Bytes a mutation inserts: structure characters, line ends, quotes, a UTF-8 lead byte.
+   real, parameter :: fuzz_seconds = 10.0
+   !> Bytes a mutation inserts: structure characters, line ends, quotes, a UTF-8 lead byte,
+   !> NUL and other control bytes.
    character(len=*), parameter :: fuzz_bytes = '&/=,%''"!# 0123456789.eE+-'// &
-      achar(13)//achar(10)//achar(9)//achar(0)//char(195)//'xyz'
+      achar(13)//achar(10)//achar(9)//achar(0)//achar(1)//achar(12)//achar(27)//achar(127)// &
+      char(195)//'xyz'
+   !> Assignments a mutation repeats inside their group (every kind of variable): the later
+   !> one wins (doc/app.md, "Repeated variables").
+   character(len=*), parameter :: repeats(*) = [character(len=48) :: &
+      '&position|t_y = 3.0', '&position|t_y = -1e-300', '&normal|n_strips = 30', &
+      '&tangential|bound = ''clipped''', '&tangential|n_elements = 12', &
+      '&track|rail_canted = .false.', '&output|fields = ''state'', ''slip''', &
+      '&sweep|nu_x = 1e-4', '&sweep|bound = ''weighted'', ''clipped''', &
+      '&sweep|bound = ''parabolic''', '&material|friction = 1e-3', '&profiles|rail = ''rail.txt''', &
+      '&load|mode = ''force''']
+   !> Extreme values given to every real variable in turn (`--set`).
+   character(len=*), parameter :: extreme_values(*) = [character(len=10) :: '1e-300', &
+      '-1e-300', '4.9e-324', '1e308', '-1e308', '1e309', '0']
 
    !> The sample profiles, relative to the project root (where the tests run).
    character(len=*), parameter :: shared = '../shared/profiles/'
@@ -581,13 +599,23 @@ contains
 
    !> Seeded mutations of a case file and of a rail profile file, each run through the
    !> program: the exit status is a documented one, a failure names the file and has no
-   !> backtrace, and no checkpoint, temporary or (after a failure) output is left.
+   !> backtrace, a success prints no NaN, and no checkpoint, temporary or (after a failure)
+   !> output is left. In turn, a run also repeats a variable of some kind, gives a real
+   !> variable a tiny or huge value (`--set`, every real variable in turn), or reads the case
+   !> through a pipe; the library's option setter is fuzzed as well (test_input).
+   !> SHCONTACT_FUZZ_SECONDS=N makes it an N-second campaign (SHCONTACT_FUZZ_SEED its seed)
+   !> that prints its counts.
    subroutine test_fuzz(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: dir, base_case, base_rail, text
-      integer :: seed, i, stat
+      character(len=:), allocatable :: dir, base_case, base_rail, text, args, name
+      integer :: seed, seed0, i, stat, runs, n_real, ir, setter_calls, counts(0:6), n_pipe
+      integer :: real_vars(size(variables))
+      real :: seconds
+      logical :: campaign
       integer(kind=8) :: t0, t1, rate
       if (unavailable(error, .false.)) return
+      call fuzz_settings(fuzz_seconds, fuzz_runs, seconds, runs, seed, campaign)
+      seed0 = seed
       dir = scratch_directory('rob_fuzz')
       stat = run_program(dir, 'profiles --write builtin')
       call check(error, stat, 0, message='profiles --write')
@@ -602,37 +630,86 @@ contains
          message='the base case: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       call shell('rm -f '//dir//'/out.h5')
-      seed = 20260514
+      ! The library's option setter: a tenth of the time.
+      call library_option_fuzz(error, seed, max(1.0, 0.1*seconds), setter_calls)
+      if (allocated(error)) return
+      n_real = 0
+      do i = 1, size(variables)
+         if (variables(i)%kind /= k_real .or. variables(i)%group == 'sweep') cycle
+         n_real = n_real + 1
+         real_vars(n_real) = i
+      end do
+      counts = 0
+      n_pipe = 0
+      ir = next_random(seed, n_real*size(extreme_values)) - 1
       call system_clock(t0, rate)
-      do i = 1, fuzz_runs
+      do i = 1, runs
          text = mutated(base_case, seed)
+         args = ' -q --format json -o out.h5'
+         name = 'case.nml'
+         select case (mod(i, 3))
+         case (0)
+            text = repeated(text, repeats(next_random(seed, size(repeats))))
+         case (1)
+            ir = mod(ir + 1, n_real*size(extreme_values))
+            associate (v => variables(real_vars(1 + ir/size(extreme_values))))
+               args = args//' --set '//trim(v%group)//'%'//trim(v%name)//'='// &
+                  trim(extreme_values(1 + mod(ir, size(extreme_values))))
+            end associate
+         end select
          call write_bytes_file(dir//'/case.nml', text)
          call write_bytes_file(dir//'/rail.txt', base_rail)
-         ! A mutated case may name another profile file: the message names that one.
-         call check_fuzz_run(error, dir, 'run case.nml -q -o out.h5', 'case.nml', text, &
-            also='rail')
-         if (allocated(error)) exit
+         if (mod(i, 3) == 2) then
+            ! Through a pipe: relative names are taken from the current directory.
+            name = '/dev/stdin'
+            n_pipe = n_pipe + 1
+            call check_fuzz_run(error, dir, 'run /dev/stdin'//args, name, text, &
+               also='rail', pipe='case.nml', status=stat)
+         else
+            call check_fuzz_run(error, dir, 'run case.nml'//args, name, text, also='rail', &
+               status=stat)
+         end if
+         if (allocated(error)) then
+            error%message = error%message//new_line('a')//'arguments:'//args
+            exit
+         end if
+         counts(stat) = counts(stat) + 1
          call write_bytes_file(dir//'/rail.txt', mutated(base_rail, seed))
          call check_fuzz_run(error, dir, 'run base.nml -q -o out.h5', 'rail.txt', &
-            file_text(dir//'/rail.txt'))
+            file_text(dir//'/rail.txt'), status=stat)
          if (allocated(error)) exit
+         counts(stat) = counts(stat) + 1
          call system_clock(t1)
-         if (real(t1 - t0)/real(rate) > fuzz_seconds) exit
+         if (real(t1 - t0)/real(rate) > seconds) exit
       end do
+      if (campaign) print '(a,i0,a,i0,a,i0,a,7(1x,i0),a,i0)', 'fuzz campaign: ', &
+         min(i, runs), ' case runs (', n_pipe, ' through a pipe) and as many profile runs, ', &
+         setter_calls, ' option-setter calls; program runs by status 0..6:', counts, &
+         '; seed ', seed0
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_fuzz
 
    !> One fuzz run and its checks (test_fuzz).
-   subroutine check_fuzz_run(error, dir, args, name, input, also)
+   subroutine check_fuzz_run(error, dir, args, name, input, also, pipe, status)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in) :: dir, args, name, input
       !> Another name a message may give instead.
       character(len=*), intent(in), optional :: also
+      !> A file of dir given to the program's standard input.
+      character(len=*), intent(in), optional :: pipe
+      !> The exit status.
+      integer, intent(out), optional :: status
       logical :: named
       character(len=:), allocatable :: err, listing
       integer :: stat, left
-      stat = run_program(dir, args)
+      if (present(pipe)) then
+         call shell('cd '//dir//' && cat '//pipe//' | OMP_NUM_THREADS=2 '//program_path()// &
+            ' '//args//' > out.txt 2> err.txt', stat)
+      else
+         stat = run_program(dir, args)
+      end if
+      if (present(status)) status = max(0, min(6, stat))
       err = file_text(dir//'/err.txt')
       if (stat < 0 .or. stat > 6) then
          call test_failed(error, 'exit status '//trim(str(stat))//' is not documented; '// &
@@ -646,9 +723,21 @@ contains
       end if
       named = index(err, name) > 0
       if (present(also)) named = named .or. index(err, also) > 0
+      ! A value given with --set is named as such; a file the input names (a mutated profile
+      ! name) may be named instead.
+      if (index(args, ' --set ') > 0) named = named .or. index(err, 'command line --set ') > 0 &
+         .or. index(err, set_variable(args)) > 0
+      named = named .or. names_input_file(err, input)
       if (stat >= 1 .and. stat <= 3 .and. .not. named) then
          call test_failed(error, 'status '//trim(str(stat))//': the message does not name '// &
             name//': '//err//'; input:'//new_line('a')//input)
+         return
+      end if
+      ! A success never prints a NaN (nor JSON's null for one).
+      if ((stat == 0 .or. stat == 4) .and. (index(file_text(dir//'/out.txt'), 'NaN') > 0 .or. &
+          index(file_text(dir//'/out.txt'), 'null') > 0)) then
+         call test_failed(error, 'status '//trim(str(stat))//' with NaN results: '// &
+            file_text(dir//'/out.txt')//'; input:'//new_line('a')//input)
          return
       end if
       ! No checkpoint or temporary ever; no output after a failure of the whole run.
@@ -667,20 +756,27 @@ contains
       call shell('cd '//dir//' && rm -rf *.h5 *.h5.* out.txt err.txt')
    end subroutine check_fuzz_run
 
+   !> The variable of the first `--set group%name=value` of the arguments ('' when none): a
+   !> message about its value may name it instead of the command line (e.g. a flange-back
+   !> position the wheel profile does not reach).
+   pure function set_variable(args) result(name)
+      character(len=*), intent(in) :: args
+      character(len=:), allocatable :: name
+      integer :: at, pct, eq
+      name = achar(0)
+      at = index(args, ' --set ')
+      if (at == 0) return
+      pct = index(args(at:), '%')
+      eq = index(args(at:), '=')
+      if (pct == 0 .or. eq <= pct + 1) return
+      name = args(at + pct:at + eq - 2)
+   end function set_variable
+
    pure function str(i) result(text)
       integer, intent(in) :: i
       character(len=12) :: text
       write (text, '(i0)') i
    end function str
-
-   !> Next value of a 31-bit linear congruential generator (reproducible on every compiler).
-   integer function next_random(seed, n) result(k)
-      integer, intent(inout) :: seed
-      !> The value is in 1..n.
-      integer, intent(in) :: n
-      seed = int(mod(1103515245_8*int(seed, 8) + 12345_8, 2147483648_8))
-      k = 1 + int(mod(int(seed, 8)/65536_8, int(n, 8)))
-   end function next_random
 
    !> The text with 1 to 3 random mutations: delete, insert or replace a byte, duplicate,
    !> delete or swap a line, replace a number by an extreme one, truncate.

@@ -5,10 +5,12 @@
 !> allocates nothing here.
 module shcontact_api_context
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
+      ieee_set_halting_mode, ieee_get_flag, ieee_set_flag
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
    use shcontact_geometry_track, only: track_type
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type, new_normal_options
@@ -161,6 +163,12 @@ contains
       character(len=:), allocatable :: name
 
       if (.not. usable(ctx, error)) then
+         stat = record(ctx, error)
+         return
+      end if
+      if (scan(value, control_characters) > 0) then
+         call fatal_error(error, "option '"//trim(key)//"' = '"//visible(value)// &
+            "': a control character in the value", stat_invalid_input)
          stat = record(ctx, error)
          return
       end if
@@ -519,9 +527,17 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: stat
       real(wp) :: x
+      logical :: halting, overflow
+      ! 1e309 overflows inside the conversion: refused, never trapped (debug builds halt).
+      call ieee_get_halting_mode(ieee_overflow, halting)
+      call ieee_set_halting_mode(ieee_overflow, .false.)
+      call ieee_set_flag(ieee_overflow, .false.)
       read (text, *, iostat=stat) x
+      call ieee_get_flag(ieee_overflow, overflow)
+      call ieee_set_flag(ieee_overflow, .false.)
+      call ieee_set_halting_mode(ieee_overflow, halting)
       if (stat == 0) then
-         if (.not. ieee_is_finite(x)) stat = 1
+         if (overflow .or. .not. ieee_is_finite(x)) stat = 1
       end if
       if (stat /= 0) then
          call fatal_error(error, "option "//key//" = '"//trim(text)// &

@@ -30,7 +30,9 @@ module shcontact_api_solver
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_no_contact, stat_usage, stat_numerical
-   use shcontact_core_strings, only: str_int, str_real
+   use shcontact_core_strings, only: str_int, str_real, to_lower
+   use shcontact_core_ranges, only: max_grid_cells, check_range
+   use shcontact_profile_reader, only: profile_file_format
    use shcontact_core_material, only: material_type, check_material
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
@@ -283,6 +285,8 @@ contains
       call check_normal_options(self%normal_options, error)
       if (allocated(error)) return
       call check_tangential_options(self%tangential_options, error)
+      if (allocated(error)) return
+      call check_grid_cells(self%normal_options, self%tangential_options, error)
       if (allocated(error)) return
       call prepare_profiles(self%wheel, self%rail, self%track, self%contact_options, &
          self%prepared, error)
@@ -646,8 +650,22 @@ contains
          call fatal_error(error, trim(load_mode_names(load%mode))//' = '// &
             str_real(load%value)//' N: expected a positive force', stat_invalid_input)
          return
+      else if (load%mode == load_normal_force) then
+         ! The program's range (shcontact_core_ranges): 1 N to 1e7 N.
+         call check_range('load%normal_force', load%value, 'normal force', error)
+         if (allocated(error)) return
+      else if (load%mode == load_vertical_force) then
+         call check_range('load%vertical_force', load%value, 'vertical force', error)
+         if (allocated(error)) return
       end if
       call check_creepage(creepage, error)
+      if (allocated(error)) return
+      ! The program's ranges of prescribed creepages (shcontact_core_ranges).
+      call check_range('creepage%nu_x', creepage%nu_x, 'creepage nu_x', error)
+      if (.not. allocated(error)) call check_range('creepage%nu_y', creepage%nu_y, &
+         'creepage nu_y', error)
+      if (.not. allocated(error)) call check_range('creepage%phi', creepage%phi, &
+         'spin creepage phi', error)
    end subroutine check_call
 
    !> The contact patches at (t_y, roll, yaw), unless they are those of the last call. With a yaw
@@ -1016,6 +1034,14 @@ contains
          call check_tangential_options(tangential, error)
          if (allocated(error)) return
       end if
+      if (present(normal) .and. present(tangential)) then
+         call check_grid_cells(normal, tangential, error)
+      else if (present(normal)) then
+         call check_grid_cells(normal, self%tangential_options, error)
+      else if (present(tangential)) then
+         call check_grid_cells(self%normal_options, tangential, error)
+      end if
+      if (allocated(error)) return
       if (present(normal)) then
          self%normal_options = normal
          call forget_normal(self)
@@ -1077,6 +1103,19 @@ contains
       normal = self%normal_options
       tangential = self%tangential_options
    end subroutine get_options
+
+   !> n_strips × n_elements within max_grid_cells (shcontact_core_ranges), as the app checks.
+   pure subroutine check_grid_cells(normal, tangential, error)
+      type(normal_options_type), intent(in) :: normal
+      type(tangential_options_type), intent(in) :: tangential
+      type(error_type), allocatable, intent(out) :: error
+      integer(i8) :: cells
+      cells = int(normal%n_strips, i8)*int(tangential%n_elements, i8)
+      if (cells <= max_grid_cells) return
+      call fatal_error(error, 'options n_strips x n_elements = '//str_int(normal%n_strips)// &
+         ' x '//str_int(tangential%n_elements)//' = '//str_int(cells)//' grid cells per '// &
+         'patch; at most '//str_int(max_grid_cells)//' are allowed', stat_invalid_input)
+   end subroutine check_grid_cells
 
    !> Reject NaN or Inf in the material or the track before the range checks compare them
    !> (a comparison with NaN would raise the invalid-operation exception).

@@ -1,7 +1,8 @@
 !> Elastic and friction data of the wheel–rail pair (identical elastic bodies).
 module shcontact_core_material
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error
+   use shcontact_core_error, only: error_type
+   use shcontact_core_ranges, only: check_range
    implicit none
    private
 
@@ -13,7 +14,7 @@ module shcontact_core_material
       real(wp) :: shear_modulus = 82670.0_wp
       !> Poisson's ratio ν (dimensionless), 0 ≤ ν < 0.5.
       real(wp) :: poisson = 0.27_wp
-      !> Coefficient of friction μ (dimensionless), > 0.
+      !> Coefficient of friction μ (dimensionless), 0.001 ≤ μ ≤ 10 (shcontact_core_ranges).
       real(wp) :: friction = 0.3_wp
    contains
       !> Combined modulus E* = G/(1 − ν) of two identical bodies (physics.md §1.2), MPa.
@@ -35,21 +36,13 @@ contains
       type(material_type), intent(in) :: material
       !> Set when a value is out of range.
       type(error_type), allocatable, intent(out) :: error
-      character(len=32) :: buf
-
-      if (.not. (material%shear_modulus > 0.0_wp)) then
-         write (buf, '(es12.4)') material%shear_modulus
-         call fatal_error(error, 'shear modulus G = '//trim(adjustl(buf))// &
-            ' MPa: expected a positive value (steel: about 82000 MPa)')
-      else if (.not. (material%poisson >= 0.0_wp .and. material%poisson < 0.5_wp)) then
-         write (buf, '(es12.4)') material%poisson
-         call fatal_error(error, 'Poisson ratio nu = '//trim(adjustl(buf))// &
-            ': expected 0 <= nu < 0.5 (steel: 0.27-0.3)')
-      else if (.not. (material%friction > 0.0_wp .and. material%friction <= 10.0_wp)) then
-         write (buf, '(es12.4)') material%friction
-         call fatal_error(error, 'friction coefficient mu = '//trim(adjustl(buf))// &
-            ': expected 0 < mu <= 10')
-      end if
+      ! The app's ranges (shcontact_core_ranges): one table for the app and the library.
+      call check_range('material%shear_modulus', material%shear_modulus, 'shear modulus G', &
+         error)
+      if (.not. allocated(error)) call check_range('material%poisson', material%poisson, &
+         'Poisson ratio nu', error)
+      if (.not. allocated(error)) call check_range('material%friction', material%friction, &
+         'friction coefficient mu', error)
    end subroutine check_material
 
 end module shcontact_core_material

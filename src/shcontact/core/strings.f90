@@ -1,10 +1,19 @@
 !> Small text helpers for messages and option parsing.
 module shcontact_core_strings
    use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_buffer, only: text_buffer_type
    implicit none
    private
 
-   public :: to_lower, str_int, str_real, visible, str_format
+   public :: to_lower, str_int, str_real, visible, str_format, control_characters
+
+   !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
+   !> file's tabs and line ends are taken by the line reader first).
+   character(len=*), parameter :: control_characters = achar(0)//achar(1)//achar(2)// &
+      achar(3)//achar(4)//achar(5)//achar(6)//achar(7)//achar(8)//achar(9)//achar(10)// &
+      achar(11)//achar(12)//achar(13)//achar(14)//achar(15)//achar(16)//achar(17)//achar(18)// &
+      achar(19)//achar(20)//achar(21)//achar(22)//achar(23)//achar(24)//achar(25)//achar(26)// &
+      achar(27)//achar(28)//achar(29)//achar(30)//achar(31)//achar(127)
 
    !> An integer (default or 64-bit) as text without blanks.
    interface str_int
@@ -94,17 +103,18 @@ contains
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: shown
       character(len=*), parameter :: hex = '0123456789ABCDEF'
+      type(text_buffer_type) :: built
       integer :: i, code
-      shown = ''
       do i = 1, len(text)
          code = iachar(text(i:i))
          if ((code < 32 .and. code /= 10 .and. code /= 9) .or. code == 127) then
-            shown = shown//'<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
-               mod(code, 16) + 1)//'>'
+            call built%add('<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1: &
+               mod(code, 16) + 1)//'>')
          else
-            shown = shown//text(i:i)
+            call built%add(text(i:i))
          end if
       end do
+      shown = built%text()
    end function visible
 
 end module shcontact_core_strings

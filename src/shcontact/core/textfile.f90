@@ -3,13 +3,51 @@
 !>
 !> Lines end with LF, CRLF or a lone CR (old Mac files, and the ends a fuzzer or a broken editor
 !> leaves); a UTF-8 byte-order mark at the start is dropped; tabs become blanks. A directory is
-!> refused with a message saying so (gfortran would open it and read nothing).
+!> refused with a message saying so (gfortran would open it and read nothing). Any readable
+!> stream is read to its end (pipes, process substitutions, /dev/stdin); a NUL byte or more than
+!> [[max_text_bytes]] bytes refuse it as not text (issue 24 item 1).
 module shcontact_core_textfile
-   use shcontact_core_error, only: error_type, fatal_error, stat_io
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_int, c_size_t, c_null_char, &
+      c_associated
+   use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_invalid_input
+   use shcontact_core_strings, only: str_int
+   use shcontact_core_buffer, only: text_buffer_type
    implicit none
    private
 
-   public :: text_line_type, read_text_lines, is_directory
+   public :: text_line_type, read_text_lines, is_directory, max_text_bytes
+
+   !> Largest text file read (case and profile files; a 2-million-point profile is ~80 MB).
+   integer, parameter :: max_text_bytes = 256*1048576
+
+   interface
+      !> C's fopen (reads any stream: files, pipes, devices).
+      function c_fopen(path, mode) bind(c, name='fopen') result(stream)
+         import :: c_ptr, c_char
+         character(kind=c_char), intent(in) :: path(*), mode(*)
+         type(c_ptr) :: stream
+      end function c_fopen
+      !> C's fread.
+      function c_fread(buffer, size, count, stream) bind(c, name='fread') result(got)
+         import :: c_ptr, c_char, c_size_t
+         character(kind=c_char), intent(out) :: buffer(*)
+         integer(c_size_t), value :: size, count
+         type(c_ptr), value :: stream
+         integer(c_size_t) :: got
+      end function c_fread
+      !> C's ferror.
+      function c_ferror(stream) bind(c, name='ferror') result(stat)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: stat
+      end function c_ferror
+      !> C's fclose.
+      function c_fclose(stream) bind(c, name='fclose') result(stat)
+         import :: c_ptr, c_int
+         type(c_ptr), value :: stream
+         integer(c_int) :: stat
+      end function c_fclose
+   end interface
 
    !> One line, without its end characters.
    type :: text_line_type
@@ -54,37 +92,80 @@ contains
       call split_lines(buffer, lines)
    end subroutine read_text_lines
 
-   !> The whole file as one string.
+   !> The whole file as one string, read in chunks until its end, so that pipes, process
+   !> substitutions and devices (`<(...)`, /dev/stdin) are read as well as plain files. A NUL
+   !> byte or more than [[max_text_bytes]] refuse the file as not text (stat_invalid_input).
    subroutine read_bytes(filename, what, buffer, error)
       character(len=*), intent(in) :: filename, what
       character(len=:), allocatable, intent(out) :: buffer
       type(error_type), allocatable, intent(out) :: error
-      character(len=256) :: message
-      integer :: unit, stat, nbytes
+      integer, parameter :: chunk = 65536
+      character(len=chunk) :: piece
+      type(text_buffer_type) :: text
+      type(c_ptr) :: stream
+      integer :: got, nul
 
+      buffer = ''
       if (is_directory(filename)) then
          call fatal_error(error, filename//': cannot read the '//what//': it is a directory', &
             stat_io)
          return
       end if
-      open (newunit=unit, file=filename, status='old', action='read', access='stream', &
-         form='unformatted', iostat=stat, iomsg=message)
-      if (stat /= 0) then
-         call fatal_error(error, filename//': cannot open the '//what//': '//trim(message), &
-            stat_io)
+      stream = c_fopen(trim(filename)//c_null_char, 'rb'//c_null_char)
+      if (.not. c_associated(stream)) then
+         call open_error(filename, what, error)
          return
       end if
-      inquire (unit=unit, size=nbytes)
-      allocate (character(len=max(nbytes, 0)) :: buffer)
-      stat = 0
-      if (nbytes > 0) read (unit, iostat=stat, iomsg=message) buffer
-      close (unit)
-      if (stat /= 0 .or. nbytes < 0) then
-         if (nbytes < 0) message = 'cannot tell its size'
-         call fatal_error(error, filename//': cannot read the '//what//': '//trim(message), &
-            stat_io)
-      end if
+      do
+         got = int(c_fread(piece, 1_c_size_t, int(chunk, c_size_t), stream))
+         nul = index(piece(1:got), achar(0))
+         if (nul > 0) then
+            call fatal_error(error, filename//':'//str_int(line_of(text%text()// &
+               piece(1:nul)))//': a NUL byte: the '//what//' must be text (is it the '// &
+               'right file?)', stat_invalid_input)
+            exit
+         end if
+         if (text%n + got > max_text_bytes) then
+            call fatal_error(error, filename//': the '//what//' is larger than '// &
+               str_int(max_text_bytes/1048576)//' MiB; expected a text '//what, &
+               stat_invalid_input)
+            exit
+         end if
+         call text%add(piece(1:got))
+         if (got < chunk) exit
+      end do
+      if (.not. allocated(error) .and. c_ferror(stream) /= 0) call fatal_error(error, &
+         filename//': cannot read the '//what//': read error', stat_io)
+      if (c_fclose(stream) /= 0 .and. .not. allocated(error)) call fatal_error(error, &
+         filename//': cannot read the '//what//': close failed', stat_io)
+      if (.not. allocated(error)) buffer = text%text()
    end subroutine read_bytes
+
+   !> Why a file cannot be opened, in the run-time library's words.
+   subroutine open_error(filename, what, error)
+      character(len=*), intent(in) :: filename, what
+      type(error_type), allocatable, intent(out) :: error
+      character(len=256) :: message
+      integer :: unit, stat
+      open (newunit=unit, file=filename, status='old', action='read', access='stream', &
+         form='unformatted', iostat=stat, iomsg=message)
+      if (stat == 0) then
+         close (unit)
+         message = 'the C library cannot open it'
+      end if
+      call fatal_error(error, filename//': cannot open the '//what//': '//trim(message), &
+         stat_io)
+   end subroutine open_error
+
+   !> The line number of the last character of `text`.
+   pure integer function line_of(text) result(line)
+      character(len=*), intent(in) :: text
+      integer :: i
+      line = 1
+      do i = 1, len(text) - 1
+         if (is_line_end(text, i)) line = line + 1
+      end do
+   end function line_of
 
    !> Split at the line ends (module description).
    pure subroutine split_lines(buffer, lines)

@@ -5,6 +5,7 @@
 module shcontact_geometry_prepared
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_ranges, only: check_range
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
       source_name => profile_label
@@ -95,9 +96,13 @@ contains
       !> Set on an invalid value, naming it.
       type(error_type), allocatable, intent(out) :: error
 
-      if (.not. (options%l_filt_wheel >= 0.0_wp .and. options%l_filt_rail >= 0.0_wp)) then
-         call fatal_error(error, 'l_filt_wheel = '//str(options%l_filt_wheel)// &
-            ', l_filt_rail = '//str(options%l_filt_rail)//' mm: expected lengths >= 0')
+      ! The app's ranges (shcontact_core_ranges) for the options the app also sets.
+      call check_range('profiles%wheel_smoothing', options%l_filt_wheel, 'l_filt_wheel', error)
+      if (.not. allocated(error)) call check_range('profiles%rail_smoothing', &
+         options%l_filt_rail, 'l_filt_rail', error)
+      if (.not. allocated(error)) call check_range('normal%b_min', options%b_min, 'b_min', error)
+      if (allocated(error)) then
+         return
       else if (.not. (options%table_step >= 1.0e-4_wp .and. options%table_step <= 1.0_wp)) then
          call fatal_error(error, 'table_step = '//str(options%table_step)// &
             ' mm: expected 1e-4 to 1 mm (0.02-0.05 recommended)')
@@ -111,9 +116,6 @@ contains
          options%kinematic_table_gap <= 100.0_wp)) then
          call fatal_error(error, 'kinematic_table_gap = '//str(options%kinematic_table_gap)// &
             ' mm: expected a positive gap (0.1-1 mm)')
-      else if (.not. (options%b_min > 0.0_wp .and. options%b_min < 1.0_wp)) then
-         call fatal_error(error, 'b_min = '//str(options%b_min)// &
-            ' 1/mm: expected a small positive curvature (1e-4)')
       else if (.not. (options%max_gap >= 0.0_wp .and. options%max_gap <= 100.0_wp)) then
          call fatal_error(error, 'max_gap = '//str(options%max_gap)//' mm: expected 0 to 100 mm')
       else if (.not. (options%merge_gap >= 0.0_wp .and. options%merge_gap <= 1.0_wp)) then

@@ -22,6 +22,7 @@
 module shcontact_geometry_track
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
+   use shcontact_core_ranges, only: check_range
    use shcontact_profile_spline, only: profile_spline_type
    use shcontact_geometry_rigid, only: rigid_map_type, rotation_about, translation
    implicit none
@@ -77,25 +78,20 @@ contains
       !> Set on an invalid value.
       type(error_type), allocatable, intent(out) :: error
 
-      if (.not. (track%gauge > 0.0_wp .and. track%gauge < 1.0e4_wp)) then
-         call fatal_error(error, 'track gauge = '//real_text(track%gauge)// &
-            ' mm: expected a positive width in mm (standard gauge: 1435)')
-      else if (.not. (track%gauge_height >= 0.0_wp .and. track%gauge_height < 100.0_wp)) then
-         call fatal_error(error, 'gauge height = '//real_text(track%gauge_height)// &
-            ' mm: expected 0 to 100 mm below the rail top (usually 14)')
-      else if (.not. (abs(track%rail_inclination) < 0.5_wp)) then
-         call fatal_error(error, 'rail inclination = '//real_text(track%rail_inclination)// &
-            ': expected a slope such as 0.025 (1:40) or 0.05 (1:20)')
-      else if (.not. (track%flange_back_distance > 0.0_wp .and. &
-         track%flange_back_distance < 1.0e4_wp)) then
-         call fatal_error(error, 'flange-back distance = '//real_text(track%flange_back_distance)// &
-            ' mm: expected a positive width in mm (standard: 1360)')
-      else if (.not. (abs(track%flange_back_position) < 1000.0_wp)) then
-         call fatal_error(error, 'flange-back position = '//real_text(track%flange_back_position)// &
-            ' mm: expected the flange back in wheel profile coordinates (S1002: -70)')
-      else if (.not. (track%nominal_radius > 0.0_wp .and. track%nominal_radius < 1.0e4_wp)) then
-         call fatal_error(error, 'nominal wheel radius = '//real_text(track%nominal_radius)// &
-            ' mm: expected a positive radius in mm (e.g. 460)')
+      ! The app's ranges (shcontact_core_ranges): one table for the app and the library.
+      call check_range('track%gauge', track%gauge, 'track gauge', error)
+      if (.not. allocated(error)) call check_range('track%gauge_height', track%gauge_height, &
+         'gauge height', error)
+      if (.not. allocated(error)) call check_range('track%inclination', &
+         track%rail_inclination, 'rail inclination', error)
+      if (.not. allocated(error)) call check_range('track%flange_back_distance', &
+         track%flange_back_distance, 'flange-back distance', error)
+      if (.not. allocated(error)) call check_range('track%flange_back_position', &
+         track%flange_back_position, 'flange-back position', error)
+      if (.not. allocated(error)) call check_range('track%nominal_radius', &
+         track%nominal_radius, 'nominal wheel radius', error)
+      if (allocated(error)) then
+         return
       else if (.not. (track%tape_circle_offset > 0.0_wp .and. &
          track%tape_circle_offset < 1000.0_wp)) then
          call fatal_error(error, 'tape-circle offset = '//real_text(track%tape_circle_offset)// &

@@ -7,6 +7,7 @@
 !> kinematic mode the wheelset inputs), so that lines of separate runs (a shell loop over
 !> `--set`) line up under one header and say what they are.
 module shcontact_io_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
    use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
@@ -171,7 +172,7 @@ contains
             do k = 1, n_summary_columns
                if (.not. summary_column_used(k, config%is_kinematic())) cycle
                line = line//',"'//trim(summary_columns(1, k))//'":'// &
-                  format_real(summary_value(summary, k))
+                  json_number(summary_value(summary, k))
             end do
          end if
          if (present(message)) line = line//',"message":'//json_string(message)
@@ -287,6 +288,17 @@ contains
       end if
       text = format_real(x)
    end function input_text
+
+   !> A number as JSON: `null` for NaN or an infinity (JSON has no such numbers).
+   pure function json_number(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: text
+      if (ieee_is_finite(x)) then
+         text = format_real(x)
+      else
+         text = 'null'
+      end if
+   end function json_number
 
    pure integer function column_index(name)
       character(len=*), intent(in) :: name

@@ -3,6 +3,7 @@
 module shcontact_normal_options
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
+   use shcontact_core_ranges, only: check_range, check_int_range
    implicit none
    private
 
@@ -25,9 +26,6 @@ module shcontact_normal_options
    !> redistributed through the half-space coupling between strips (shcontact_normal_coupling;
    !> about 10 µs per solve; doc/validation.md §6.4).
    integer, parameter :: reduction_coupled = 3
-
-   !> Largest number of strips accepted (a guard against typing errors, not a numerical limit).
-   integer, parameter :: max_strips = 100000
 
    !> The normal-contact options; build them with [[new_normal_options]] or check them with
    !> [[check_normal_options]] before use.
@@ -115,14 +113,11 @@ contains
          call fatal_error(error, 'normal option reduction code '//trim(buf)// &
             ': expected reduction_local_hertz, reduction_constant or reduction_coupled', &
             stat_invalid_input)
-      else if (.not. (options%epsilon > 0.0_wp .and. options%epsilon <= 1.0_wp)) then
-         write (buf, '(es12.4)') options%epsilon
-         call fatal_error(error, 'normal option epsilon = '//trim(adjustl(buf))// &
-            ': expected 0 < epsilon <= 1 (Kik-Piotrowski: 0.55)', stat_invalid_input)
-      else if (options%n_strips < 1 .or. options%n_strips > max_strips) then
-         write (buf, '(i0)') options%n_strips
-         call fatal_error(error, 'normal option n_strips = '//trim(buf)// &
-            ': expected 1 to 100000 (default 100)', stat_invalid_input)
+      else
+         ! The app's ranges (shcontact_core_ranges): one table for the app and the library.
+         call check_range('normal%epsilon', options%epsilon, 'normal option epsilon', error)
+         if (.not. allocated(error)) call check_int_range('normal%n_strips', options%n_strips, &
+            'normal option n_strips', error)
       end if
    end subroutine check_normal_options
 

@@ -3,6 +3,7 @@
 !> and a name function (for outputs).
 module shcontact_tangential_options
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
+   use shcontact_core_ranges, only: check_int_range
    use shcontact_tangential_kalker, only: kalker_scheme_scaled
    implicit none
    private
@@ -84,9 +85,6 @@ module shcontact_tangential_options
    character(len=*), parameter :: correction_names(2) = [character(len=13) :: 'none', &
       'exact-ellipse']
 
-   !> Largest accepted number of elements per strip.
-   integer, parameter :: max_elements = 1000000
-
    !> The validated configuration of the tangential solver.
    type :: tangential_options_type
       !> [[method_fastsim_sh]] (default) or [[method_fastsim]].
@@ -125,7 +123,6 @@ contains
       type(tangential_options_type), intent(in) :: options
       !> Set when an option is invalid.
       type(error_type), allocatable, intent(out) :: error
-      character(len=16) :: buf
 
       call check_code('method', options%method, method_names, error)
       if (allocated(error)) return
@@ -141,11 +138,9 @@ contains
       if (allocated(error)) return
       call check_code('correction', options%correction, correction_names, error)
       if (allocated(error)) return
-      if (options%n_elements < 1 .or. options%n_elements > max_elements) then
-         write (buf, '(i0)') options%n_elements
-         call fatal_error(error, 'tangential option n_elements = '//trim(buf)// &
-            ': expected 1 to 1000000 elements per strip (default 50)', stat_invalid_input)
-      end if
+      ! The app's range (shcontact_core_ranges): one table for the app and the library.
+      call check_int_range('tangential%n_elements', options%n_elements, &
+         'tangential option n_elements', error)
    end subroutine check_tangential_options
 
    !> Parse `method`: 'fastsim-sh' or 'fastsim' (case-insensitive, '_' taken as '-').

@@ -3,6 +3,8 @@
 !> internal file, so that the compiler's namelist reader converts the value and an error names
 !> the file, the line, the group, the variable, the value found and what is allowed.
 module shcontact_io_config_assign
+   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
+      ieee_set_halting_mode, ieee_get_flag, ieee_set_flag
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_material, only: material_type
@@ -40,6 +42,7 @@ contains
       character(len=:), allocatable :: value
       character(len=256) :: msg
       integer :: iv, stat, capacity
+      logical :: halting, overflow
 
       if (index(a%name, '(') > 0 .or. index(a%name, '%') > 0) then
          call fatal_error(error, a%where//': &'//a%group//' '//a%name//': give the whole '// &
@@ -82,12 +85,25 @@ contains
       value = a%value
       if (is_choice(variables(iv))) value = to_lower(a%value)
       msg = ''
+      ! A number beyond the double range (1e309) overflows inside the run-time library's
+      ! conversion: reported below, never trapped (a debug build halts on overflow).
+      call ieee_get_halting_mode(ieee_overflow, halting)
+      call ieee_set_halting_mode(ieee_overflow, .false.)
+      call ieee_set_flag(ieee_overflow, .false.)
       if (a%group == 'sweep') then
          call read_sweep(config%sweep, a%name, variables(iv)%kind, value, stat, msg)
       else
          call read_group_variable(config, a%group, a%name, value, stat, msg)
          if (stat == 0 .and. a%group == 'profiles') &
             call resolve_profile_path(config%profiles, a%name, base_dir)
+      end if
+      call ieee_get_flag(ieee_overflow, overflow)
+      call ieee_set_flag(ieee_overflow, .false.)
+      call ieee_set_halting_mode(ieee_overflow, halting)
+      if (overflow) then
+         call fatal_error(error, value_context(a)//': a number beyond the range of double '// &
+            'precision (|x| < 1.8e308); expected '//type_phrase(variables(iv)))
+         return
       end if
       if (stat /= 0) then
          call fatal_error(error, value_context(a)//': expected '// &
@@ -101,7 +117,13 @@ contains
    pure function value_context(a) result(c)
       type(assignment_type), intent(in) :: a
       character(len=:), allocatable :: c
-      c = a%where//': &'//a%group//' '//a%name//' = '//a%value
+      integer, parameter :: shown = 200
+      c = a%where//': &'//a%group//' '//a%name//' = '
+      if (len(a%value) > shown) then
+         c = c//a%value(1:shown)//' ... ('//str_int(len(a%value))//' characters)'
+      else
+         c = c//a%value
+      end if
    end function value_context
 
    !> A hint for the most common slip of each kind.
@@ -238,6 +260,8 @@ contains
       character(len=*), intent(in) :: labels(:)
       integer :: i, n
       n = count(len_trim(labels) > 0)
+      ! A list given again replaces the whole list (doc/app.md, "Repeated variables").
+      if (allocated(axis%labels)) deallocate (axis%labels)
       allocate (axis%labels(n))
       n = 0
       do i = 1, size(labels)

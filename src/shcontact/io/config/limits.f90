@@ -1,6 +1,7 @@
 !> Size limits of a case configuration: string lengths, list capacities, the most cases of a
 !> run and the most grid cells of a patch (doc/app.md, "Limits").
 module shcontact_io_config_limits
+   use shcontact_core_ranges, only: max_grid_cells
    implicit none
    private
 
@@ -19,9 +20,6 @@ module shcontact_io_config_limits
    integer, parameter :: max_fields = 16
    !> Most cases of one run (a sweep grid).
    integer, parameter :: max_cases = 100000000
-   !> Most cells of one patch grid, &normal n_strips × &tangential n_elements: every thread
-   !> holds a few arrays of this size per patch (doc/app.md, "Limits").
-   integer, parameter :: max_grid_cells = 1000000
    !> Longest line of a case file.
    integer, parameter :: max_line_length = 4095
 

@@ -52,8 +52,17 @@ contains
       config%case_file = filename
       call read_lines(filename, lines, error)
       if (allocated(error)) return
-      call apply_lines(config, lines, filename, directory_part(filename), error)
+      call apply_lines(config, lines, filename, case_directory(filename), error)
    end subroutine read_config_file
+
+   !> The directory relative profile names are taken from: the case file's, or the current
+   !> directory for a stream (/dev/stdin, a process substitution /dev/fd/N, /proc/self/fd/N).
+   pure function case_directory(filename) result(dir)
+      character(len=*), intent(in) :: filename
+      character(len=:), allocatable :: dir
+      dir = directory_part(filename)
+      if (dir == '/dev' .or. index(dir, '/dev/') == 1 .or. index(dir, '/proc/') == 1) dir = ''
+   end function case_directory
 
    !> A configuration from namelist text (as stored in an output file), validated.
    subroutine read_config_text(text, name, config, error)

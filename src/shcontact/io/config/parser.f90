@@ -4,8 +4,9 @@
 !> line override `group%var=value` becomes an assignment the same way.
 module shcontact_io_config_parser
    use shcontact_core_error, only: error_type, fatal_error
-   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
    use shcontact_core_textfile, only: text_line_type, read_text_lines
+   use shcontact_core_buffer, only: text_buffer_type
    use shcontact_io_text, only: quote_string, strip_quotes
    use shcontact_io_config_limits, only: max_line_length
    use shcontact_io_config_variables, only: variables, group_names, find_variable, join_words, &
@@ -37,12 +38,19 @@ contains
       character(len=:), allocatable, intent(out) :: lines(:)
       type(error_type), allocatable, intent(out) :: error
       type(text_line_type), allocatable :: text(:)
-      integer :: i, longest
+      integer :: i, longest, col
 
       call read_text_lines(filename, 'case file', text, error)
       if (allocated(error)) return
       longest = 1
       do i = 1, size(text)
+         col = scan(text(i)%text, control_characters)
+         if (col > 0) then
+            call fatal_error(error, filename//':'//str_int(i)//': a control character '// &
+               visible(text(i)%text(col:col))//' in column '//str_int(col)// &
+               '; a case file is text (is it the right file?)')
+            return
+         end if
          if (len(text(i)%text) > max_line_length) then
             call fatal_error(error, filename//':'//str_int(i)//': line longer than '// &
                str_int(max_line_length)//' characters')
@@ -63,7 +71,9 @@ contains
       character(len=*), intent(in) :: filename
       type(assignment_list_type), intent(inout) :: list
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: group, token, value, vname
+      character(len=:), allocatable :: group, token, vname
+      ! The value of the pending assignment, grown in linear time (long sweep lists).
+      type(text_buffer_type) :: value
       character(len=12) :: seen(size(group_names))
       integer :: seen_line(size(group_names))
       integer :: il, pos, n, kind, vline, nseen, ig, n_items, longest, tok_items
@@ -75,7 +85,6 @@ contains
       nseen = 0
       group = ''
       vname = ''
-      value = ''
       vline = 0
       n_items = 0
       longest = 0
@@ -148,7 +157,7 @@ contains
                   end if
                   call word_items(token, tok_items)
                   n_items = n_items + tok_items
-                  value = value//' '//token
+                  call value%add(' '//token)
                end if
             case (t_string)
                if (len(vname) == 0) then
@@ -158,9 +167,9 @@ contains
                end if
                n_items = n_items + 1
                longest = max(longest, len(strip_quotes(token)))
-               value = value//' '//token
+               call value%add(' '//token)
             case (t_comma)
-               value = value//' ,'
+               call value%add(' ,')
             end select
          end do
       end do
@@ -182,19 +191,19 @@ contains
          type(error_type), allocatable, intent(out) :: error
          type(assignment_type) :: a
          if (len(vname) == 0) return
-         if (len_trim(value) == 0) then
+         if (len_trim(value%text()) == 0) then
             call fatal_error(error, line_ref(vline)//': &'//group//' '//vname//' = has no value')
             return
          end if
          a%group = group
          a%name = vname
-         a%value = trim(adjustl(value))
+         a%value = trim(adjustl(value%text()))
          a%where = line_ref(vline)
          a%n_items = n_items
          a%longest_string = longest
          call push(list, a)
          vname = ''
-         value = ''
+         call value%clear()
          n_items = 0
          longest = 0
       end subroutine finish

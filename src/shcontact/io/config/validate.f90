@@ -8,9 +8,10 @@ module shcontact_io_config_validate
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_io_text, only: format_real
-   use shcontact_geometry_kinematics, only: max_yaw
+   use shcontact_core_ranges, only: range_type, ranges, find_range, in_range, range_text, &
+      max_grid_cells
    use shcontact_profile_reader, only: profile_file_format
-   use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases, max_grid_cells
+   use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases
    use shcontact_io_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
       is_kinematic_input
    use shcontact_io_config_types, only: case_config_type, origin, sweep_origin
@@ -113,7 +114,7 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'normal', 'epsilon', c%normal%epsilon, error)
          if (allocated(error)) return
-         call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, 2, 100000, error)
+         call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, error)
          if (allocated(error)) return
          call check_real_var(c, 'normal', 'b_min', c%normal%b_min, error)
          if (allocated(error)) return
@@ -134,8 +135,7 @@ contains
          call check_choice(c, 'tangential', 'correction', c%tangential%correction, corrections, &
             error)
          if (allocated(error)) return
-         call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, 2, 100000, &
-            error)
+         call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, error)
          if (allocated(error)) return
          call check_grid_size(c, error)
          if (allocated(error)) return
@@ -237,70 +237,22 @@ contains
       if (origin(config, 'load%mode') == 'default') config%load%mode = 'vertical'
    end subroutine resolve_kinematic_mode
 
-   !> Allowed range of each real variable (also used for its sweep values).
-   pure subroutine real_limits(name, lo, hi, lo_open, hi_open)
-      character(len=*), intent(in) :: name
-      real(wp), intent(out) :: lo, hi
-      logical, intent(out) :: lo_open, hi_open
-      lo_open = .false.
-      hi_open = .false.
-      select case (name)
-      case ('wheel_smoothing', 'rail_smoothing')
-         lo = 0.0_wp; hi = 100.0_wp
-      case ('wheel_scale', 'rail_scale')
-         lo = 0.0_wp; hi = 1.0e6_wp
-      case ('gauge')
-         lo = 500.0_wp; hi = 2000.0_wp
-      case ('gauge_height')
-         lo = 0.0_wp; hi = 50.0_wp
-      case ('inclination')
-         lo = -0.2_wp; hi = 0.2_wp
-      case ('b_min')
-         lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
-      case ('flange_back_distance')
-         lo = 400.0_wp; hi = 2000.0_wp
-      case ('flange_back_position')
-         lo = -200.0_wp; hi = 200.0_wp
-      case ('nominal_radius')
-         lo = 100.0_wp; hi = 2000.0_wp
-      case ('t_y')
-         lo = -30.0_wp; hi = 30.0_wp
-      case ('roll')
-         lo = -0.1_wp; hi = 0.1_wp
-      case ('shear_modulus')
-         lo = 0.0_wp; hi = 1.0e6_wp; lo_open = .true.
-      case ('poisson')
-         lo = 0.0_wp; hi = 0.5_wp; hi_open = .true.
-      case ('friction')
-         lo = 0.0_wp; hi = 10.0_wp; lo_open = .true.
-      case ('normal_force', 'vertical_force')
-         lo = 0.0_wp; hi = 1.0e7_wp; lo_open = .true.
-      case ('approach')
-         lo = 0.0_wp; hi = 5.0_wp; lo_open = .true.
-      case ('nu_x', 'nu_y')
-         lo = -1.0_wp; hi = 1.0_wp
-      case ('phi')
-         lo = -0.1_wp; hi = 0.1_wp
-      case ('epsilon')
-         lo = 0.0_wp; hi = 1.0_wp; lo_open = .true.
-      case ('yaw')
-         lo = -max_yaw; hi = max_yaw
-      case ('v_forward')
-         ! Creepages are velocities divided by the rolling speed: V > 0 (720 km/h at most).
-         lo = 0.0_wp; hi = 2.0e5_wp; lo_open = .true.
-      case ('v_lateral', 'v_vertical')
-         lo = -1.0e4_wp; hi = 1.0e4_wp
-      case ('roll_rate', 'yaw_rate')
-         lo = -10.0_wp; hi = 10.0_wp
-      case ('pitch_rate')
-         ! Rolling forward turns the wheel backwards about the axle: −V/r.
-         lo = -2000.0_wp; hi = 0.0_wp; hi_open = .true.
-      case default
-         lo = -huge(1.0_wp); hi = huge(1.0_wp)
-      end select
-   end subroutine real_limits
+   !> The key of a variable's range in shcontact_core_ranges (a sweep list takes the range of
+   !> the variable it sweeps); 0 when it has none.
+   pure integer function range_index(group, name) result(ir)
+      character(len=*), intent(in) :: group, name
+      integer :: i
+      ir = find_range(group//'%'//name)
+      if (ir > 0 .or. group /= 'sweep') return
+      do i = 1, size(ranges)
+         if (ranges(i)%key(index(ranges(i)%key, '%') + 1:) == name) then
+            ir = i
+            return
+         end if
+      end do
+   end function range_index
 
-   !> A real in its allowed range, finite.
+   !> A real in its allowed range (shcontact_core_ranges), finite.
    subroutine check_real(config, group, name, label, x, error)
       type(case_config_type), intent(in) :: config
       !> Group and variable (for the range and the origin).
@@ -309,47 +261,21 @@ contains
       character(len=*), intent(in) :: label
       real(wp), intent(in) :: x
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: lo, hi
-      logical :: lo_open, hi_open, ok
-      integer :: iv
-      character(len=:), allocatable :: units
+      type(range_type) :: r
+      integer :: ir
 
-      call real_limits(name, lo, hi, lo_open, hi_open)
-      ok = ieee_is_finite(x)
-      if (ok) then
-         if (lo_open) then
-            ok = x > lo
-         else
-            ok = x >= lo
-         end if
-         if (hi_open) then
-            ok = ok .and. x < hi
-         else
-            ok = ok .and. x <= hi
-         end if
-      end if
-      if (ok) return
-      iv = find_variable(group, name)
-      units = ''
-      if (iv > 0) then
-         if (len_trim(variables(iv)%units) > 0 .and. variables(iv)%units /= '1') &
-            units = ' '//trim(variables(iv)%units)
+      ir = range_index(group, name)
+      if (ir == 0) then
+         if (ieee_is_finite(x)) return
+         r = range_type(lo=-huge(1.0_wp), hi=huge(1.0_wp))
+      else
+         r = ranges(ir)
+         if (in_range(r, x)) return
       end if
       call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//label// &
-         ' = '//format_real(x)//' is out of range; expected '//format_real(lo)// &
-         less(lo_open)//name//less(hi_open)//format_real(hi)//units)
+         ' = '//format_real(x)//' is out of range; expected '// &
+         range_text(r, name, format_real(r%lo), format_real(r%hi)))
    end subroutine check_real
-
-   !> ' < ' or ' <= '.
-   pure function less(strict) result(op)
-      logical, intent(in) :: strict
-      character(len=:), allocatable :: op
-      if (strict) then
-         op = ' < '
-      else
-         op = ' <= '
-      end if
-   end function less
 
    subroutine check_real_var(config, group, name, x, error)
       type(case_config_type), intent(in) :: config
@@ -359,15 +285,18 @@ contains
       call check_real(config, group, name, name, x, error)
    end subroutine check_real_var
 
-   subroutine check_int_var(config, group, name, i, lo, hi, error)
+   !> An integer in its allowed range (shcontact_core_ranges).
+   subroutine check_int_var(config, group, name, i, error)
       type(case_config_type), intent(in) :: config
       character(len=*), intent(in) :: group, name
-      integer, intent(in) :: i, lo, hi
+      integer, intent(in) :: i
       type(error_type), allocatable, intent(out) :: error
-      if (i >= lo .and. i <= hi) return
+      type(range_type) :: r
+      r = ranges(find_range(group//'%'//name))
+      if (in_range(r, real(i, wp))) return
       call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//name// &
-         ' = '//str_int(i)//' is out of range; expected '//str_int(lo)//' <= '//name// &
-         ' <= '//str_int(hi))
+         ' = '//str_int(i)//' is out of range; expected '// &
+         range_text(r, name, str_int(nint(r%lo)), str_int(nint(r%hi))))
    end subroutine check_int_var
 
    !> A choice among a fixed list.
@@ -428,10 +357,10 @@ contains
       call check_choice(config, 'output', 'precision', config%output%precision, precisions, &
          error)
       if (allocated(error)) return
-      call check_int_var(config, 'output', 'compression', config%output%compression, 0, 9, error)
+      call check_int_var(config, 'output', 'compression', config%output%compression, error)
       if (allocated(error)) return
       call check_int_var(config, 'output', 'checkpoint_cases', config%output%checkpoint_cases, &
-         0, huge(1), error)
+         error)
       if (allocated(error)) return
       n = 0
       do i = 1, max_fields

@@ -2,6 +2,7 @@
 !> units and help as a comment; reading the text back gives the same configuration.
 module shcontact_io_config_writer
    use shcontact_core_strings, only: str_int
+   use shcontact_core_buffer, only: text_buffer_type
    use shcontact_io_text, only: format_real, quote_string
    use shcontact_io_config_limits, only: max_fields
    use shcontact_io_config_sweep, only: sweep_axis_type, axis_index
@@ -187,23 +188,24 @@ contains
       end if
    end function format_logical
 
-   !> The values of an axis as a namelist value list.
+   !> The values of an axis as a namelist value list (built in linear time).
    pure function axis_text(axis) result(value)
       type(sweep_axis_type), intent(in) :: axis
       character(len=:), allocatable :: value
+      type(text_buffer_type) :: list
       integer :: i
-      value = ''
       if (axis%is_label) then
          do i = 1, size(axis%labels)
-            if (i > 1) value = value//', '
-            value = value//quote_string(axis%labels(i))
+            if (i > 1) call list%add(', ')
+            call list%add(quote_string(axis%labels(i)))
          end do
       else
          do i = 1, size(axis%given)
-            if (i > 1) value = value//', '
-            value = value//format_real(axis%given(i))
+            if (i > 1) call list%add(', ')
+            call list%add(format_real(axis%given(i)))
          end do
       end if
+      value = list%text()
    end function axis_text
 
 end module shcontact_io_config_writer
