@@ -4,10 +4,11 @@
 !> backtrace, and nothing left under the output name.
 !>
 !> Runs the program as test_app does (its helpers); tests that read the sample profiles skip
-!> when ../shared/profiles/ is absent.
+!> without the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
 module test_robustness
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_io_files, only: file_exists
+   use test_external_data, only: external_file
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in, expect_failure, current_directory
    implicit none
@@ -40,9 +41,6 @@ module test_robustness
    !> Bytes a mutation inserts: structure characters, line ends, quotes, a UTF-8 lead byte.
    character(len=*), parameter :: fuzz_bytes = '&/=,%''"!# 0123456789.eE+-'// &
       achar(13)//achar(10)//achar(9)//achar(0)//char(195)//'xyz'
-
-   !> The sample profiles, relative to the project root (where the tests run).
-   character(len=*), parameter :: shared = '../shared/profiles/'
 
 contains
 
@@ -80,12 +78,7 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: path
-      path = ''
-      if (.not. file_exists(shared//name)) then
-         call skip_test(error, shared//name//' is not available')
-         return
-      end if
-      path = current_directory()//'/'//shared//name
+      path = external_file('profiles/'//name, error, absolute=.true.)
    end function sample_profile
 
    !> Write raw bytes (printf format) to a file.
