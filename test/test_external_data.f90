@@ -1,10 +1,11 @@
 !> The one place where tests find data that is not the project's own: the sample measured
 !> profiles and CONTACT's reference results, in a folder named by the environment variable
 !> SHCONTACT_EXTERNAL_DATA (the folder that holds `profiles/` and `reference/`; `.ci/run` sets it
-!> to `../shared`). Without the variable a test that needs such data is reported as skipped;
-!> with it, a missing file is a failure (the folder was named, so the data must be there).
+!> to the folder `shared` beside the clone). Without the variable a test that needs such data is
+!> reported as skipped; with it, a missing file is a failure (the folder was named, so the data
+!> must be there).
 !>
-!>     SHCONTACT_EXTERNAL_DATA=../shared fpm test --profile debug --flag "..."
+!>     SHCONTACT_EXTERNAL_DATA=/path/to/data fpm test --profile debug --flag "..."
 !>
 !> A relative folder is taken from the working directory (the project root, where the tests
 !> run); `external_file(..., absolute=.true.)` returns it as an absolute path for tests that run

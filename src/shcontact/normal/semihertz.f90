@@ -7,7 +7,7 @@
 !> integral or allocation. [[ellipse_strips]] gives the strip table of one Hertz ellipse
 !> (`method = 'hertz'`) on the same geometry.
 !>
-!> **The approach is a vertical translation of the wheel** (doc/normal.md "Vertical approach").
+!> **The approach is a vertical translation of the wheel** (doc/geometry.md, "Vertical approach").
 !> The wheelset moves down under its load; it does not move along each strip's normal. Where the
 !> contact angle varies across the patch, such a translation closes the gap along the contact
 !> normal by Δ(1 − c(y)), c = tan γ₀ tan(γ(y) − γ₀), not by Δ, so the interpenetration is
@@ -541,10 +541,10 @@ contains
    !> Refer a solved strip table to the geometric contact point of the loaded state (module
    !> text): the minimum over the table of the undeformed distance g(y) + (δ + g₀)c(y),
    !> refined by a parabola through its neighbours, as CONTACT defines the point where creepages
-   !> are given (../shared/reference README §2). The strips' y is then measured from there, and
-   !> γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the table's
-   !> origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out of
-   !> contact, a Hertz ellipse and a table without strip data keep the table's origin.
+   !> are given (doc/geometry.md, "Vertical approach"). The strips' y is then measured from
+   !> there, and γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the
+   !> table's origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out
+   !> of contact, a Hertz ellipse and a table without strip data keep the table's origin.
    pure subroutine refer_to_loaded_point(prepared, patch)
       !> Prepared geometry.
       type(semihertz_geometry_type), intent(in) :: prepared

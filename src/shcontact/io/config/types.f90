@@ -55,7 +55,7 @@ module shcontact_io_config_types
    type :: position_config_type
       !> Lateral shift (mm), CONTACT's Y_WS (physics.md decision 13). The seed's "t_y = 5.8 mm"
       !> measured between the profile origins corresponds to Y_WS = 10.533 − 5.8 = 4.733 mm,
-      !> where the geometric spin equals the seed's φ = 0.274 1/m (../shared/reference/README.md).
+      !> where the geometric spin equals the seed's φ = 0.274 1/m (doc/app.md, "Why 4.733 mm").
       real(wp) :: t_y = 4.733_wp
       !> Roll angle (rad).
       real(wp) :: roll = 0.0_wp
