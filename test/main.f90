@@ -42,6 +42,7 @@ program tester
    use test_vertical_approach, only: collect_vertical_approach
    use test_performance_invariants, only: collect_performance_invariants
    use test_robustness, only: collect_robustness
+   use test_figures, only: collect_figures
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -81,6 +82,7 @@ program tester
       new_testsuite('validation_normal', collect_validation_normal), &
       new_testsuite('vertical_approach', collect_vertical_approach), &
       new_testsuite('performance_invariants', collect_performance_invariants), &
+      new_testsuite('figures', collect_figures), &
       new_testsuite('robustness', collect_robustness) &
       ]
 
