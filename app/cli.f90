@@ -121,6 +121,9 @@ contains
             cli%output = value
          case ('--set')
             call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error) .and. index(value, '=') == 0) call fatal_error(error, &
+               '--set "'//value//'": expected GROUP%NAME=VALUE, e.g. --set position%t_y=3', &
+               stat_usage)
             if (.not. allocated(error)) call cli%sets%push(value)
          case ('--format')
             call option_value(i, arg, value, has_value, error)
@@ -239,9 +242,31 @@ contains
             return
          end if
       end do
-      message = 'unknown option "'//name//'" for '//command//'; see shcontact '//command// &
-         ' --help'
+      message = 'unknown option "'//name//'" for '//command//'; '//nearest_option(command, name)// &
+         'see shcontact '//command//' --help'
    end function unknown_option
+
+   !> 'did you mean "--threads"? ' when one option of `command` begins with `name` or `name`
+   !> with it (a word cut short or run on: "--thread", "--formats"), else ''.
+   function nearest_option(command, name) result(text)
+      character(len=*), intent(in) :: command, name
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: options(18) = [character(len=12) :: '--quiet', &
+         '--verbose', '--output', '--set', '--format', '--csv-units', '--threads', '--shard', &
+         '--resume', '--check', '--write', '--plot', '--kind', '--file-format', '--scale', &
+         '--mirror-y', '--mirror-z', '--help']
+      integer :: k, n
+      text = ''
+      if (len(name) < 4) return
+      do k = 1, size(options)
+         n = len_trim(options(k))
+         if (.not. accepts(command, options(k)(:n)) .and. options(k)(:n) /= '--help') cycle
+         if (index(options(k)(:n), name) == 1 .or. index(name, options(k)(:n)) == 1) then
+            text = 'did you mean "'//options(k)(:n)//'"? '
+            return
+         end if
+      end do
+   end function nearest_option
 
    !> The commands that have an option, as text ("run", "run and geometry").
    function owners(name) result(text)

@@ -133,7 +133,7 @@ contains
          '                           cleaned profile (gnuplot SCRIPT.gp makes SCRIPT.png)'// &
          nl// &
          '  --kind wheel|rail        the kind of profile, when the file does not say'//nl// &
-         '  --format auto|plain|simpack|miniprof'//nl// &
+         '  --file-format auto|plain|simpack|miniprof'//nl// &
          '                           file format (default auto: by extension)'//nl// &
          '  --scale F                factor from the file''s length unit to mm (default: '// &
          'as the'//nl// &

@@ -112,7 +112,8 @@ contains
 
    ! ------------------------------------------------------------------------------------------
 
-   !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0.
+   !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0; every
+   !> option a command's help lists is one the command accepts.
    subroutine test_help(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: commands(4) = [character(len=8) :: 'run', 'merge', &
@@ -150,12 +151,21 @@ contains
          if (allocated(error)) return
          call run_expect(error, dir, '--help', 0, general, err)
          if (allocated(error)) return
+         call shell('cd '//dir//' && for o in $('//program_path()//' '//trim(commands(k))// &
+            ' --help | sed -nE "s/^  (-[a-zA-Z], )?(--[a-z-]+).*/\2/p"); do '// &
+            program_path()//' '//trim(commands(k))//' -q $o x 2>&1 | grep -qE '// &
+            '"unknown option|belongs to" && echo "$o"; done > refused.txt')
+         call check(error, len(file_text(dir//'/refused.txt')) == 0, message=trim(commands(k))// &
+            ' --help lists options that '//trim(commands(k))//' refuses: '// &
+            file_text(dir//'/refused.txt'))
+         if (allocated(error)) return
       end do
       call expect_in(error, general, 'shcontact COMMAND --help', 'the general help points there')
       call shell('rm -rf '//dir)
    end subroutine test_help
 
-   !> An option of another command is a usage error that names its command.
+   !> An option of another command is a usage error that names its command; a misspelt option
+   !> gets a suggestion, and --set without '=' is refused.
    subroutine test_foreign_options(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, out, err
@@ -179,6 +189,16 @@ contains
       call run_expect(error, dir, 'run --format yaml', 1, out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'expected text, csv, json or none', 'run --format yaml')
+      if (allocated(error)) return
+      ! A word cut short gets the option it was meant to be; --set without '=' is refused
+      ! before its value could be taken for a case file.
+      call run_expect(error, dir, 'run --thread 2', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'did you mean "--threads"?', 'run --thread')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --set position%t_y 3', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'expected GROUP%NAME=VALUE', 'run --set position%t_y 3')
       call shell('rm -rf '//dir)
    end subroutine test_foreign_options
 
