@@ -311,7 +311,16 @@ def plot_traction(group, patch, title, out):
     x, y, dx, dy = tan["x"][...], tan["y"][...], tan["dx"][...], tan["dy"][()]
     px, py, state = tan["px"][...], tan["py"][...], tan["state"][...]
     inside = state.ravel() > 0
-    fig, ax = plt.subplots(figsize=(9, 7))
+    # Constrained layout and a tight bounding box keep the titles, the key above the axes and
+    # the x label inside the image whatever the patch's shape (a tall patch cut the label off).
+    # The height follows the patch's aspect (equal axes), so a flat patch gets no empty band.
+    ny_in = state > 0
+    xc = x[ny_in]
+    half = np.repeat(0.5 * dx[:, None], x.shape[1], axis=1)[ny_in]
+    yc = np.repeat(y[:, None], x.shape[1], axis=1)[ny_in]
+    aspect = (np.ptp(yc) + dy) / max(np.ptp(xc) + 2 * half.max(), 1e-9)
+    fig, ax = plt.subplots(figsize=(9, min(9.0, max(3.5, 2.5 + 6.5 * aspect))),
+                           constrained_layout=True)
     colours = np.where(state.ravel() == 1, 0.0, 1.0)[inside]
     coll = PolyCollection(element_rectangles(x, y, dx, dy)[inside], array=colours,
                           cmap=matplotlib.colors.ListedColormap(["#cfe3f7", "#f9d9b8"]),
@@ -347,8 +356,7 @@ def plot_traction(group, patch, title, out):
                        plt.Line2D([], [], color="C3", lw=2, label="stick/slip boundary")],
               loc="upper right", fontsize=9)
     fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(out, dpi=130)
+    fig.savefig(out, dpi=130, bbox_inches="tight")
     plt.close(fig)
     return True
 

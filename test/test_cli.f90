@@ -18,7 +18,7 @@ module test_cli
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_io_files, only: file_exists
    use test_app, only: scratch_directory, shell, run_program, file_text, write_lines, &
-      unavailable, expect_in, program_path
+      unavailable, expect_in, program_path, current_directory
    implicit none
    private
    public :: collect_cli
@@ -52,6 +52,7 @@ contains
          new_unittest('quiet_and_format_none', test_quiet), &
          new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
          new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
+         new_unittest('kinematic_sample_output_in_app_md', test_kinematic_sample), &
          new_unittest('patches_found_and_loaded', test_patch_counts), &
          new_unittest('profiles_file', test_profiles_file), &
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
@@ -432,6 +433,26 @@ contains
          '"nu_y":-0.001,"phi":0.000274,', 'json inputs')
       call shell('rm -rf '//dir)
    end subroutine test_inputs_and_units
+
+   !> doc/app.md's sample output of `shcontact run examples/kinematic.nml` is what the program
+   !> prints now: every line of the block is a line of the program's stdout.
+   subroutine test_kinematic_sample(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_kin_sample')
+      call run_expect(error, dir, 'run '//current_directory()//'/examples/kinematic.nml', 0, &
+         out, err)
+      if (allocated(error)) return
+      call shell("sed -n '/^\$ shcontact run examples\/kinematic.nml$/,/^```$/p' doc/app.md | "// &
+         "sed '1d;$d' > "//dir//'/doc.txt && test -s '//dir//'/doc.txt && ! grep -vxFf '// &
+         dir//'/out.txt '//dir//'/doc.txt > '//dir//'/stale.txt', stat)
+      call check(error, stat, 0, message='doc/app.md''s kinematic sample output differs from '// &
+         'the program''s: '//file_text(dir//'/stale.txt'))
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_kinematic_sample
 
    !> A kinematic case's lines carry the wheelset inputs, the load and the friction.
    subroutine test_kinematic_inputs(error)

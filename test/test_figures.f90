@@ -11,7 +11,8 @@ module test_figures
    use shcontact_core_kinds, only: wp
    use shcontact_api_solver, only: contact_result_type
    use test_api, only: headline_t_y, headline_load, headline_creepage, headline_result
-   use test_app, only: shell, file_text, scratch_directory
+   use test_app, only: shell, file_text, scratch_directory, run_program, unavailable, &
+      current_directory
    implicit none
    private
    public :: collect_figures
@@ -25,7 +26,8 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('headline_figures_show_current_numbers', test_headline_numbers), &
-         new_unittest('plot_script_without_matplotlib', test_without_matplotlib) &
+         new_unittest('plot_script_without_matplotlib', test_without_matplotlib), &
+         new_unittest('plot_script_patch_and_folder', test_patch_and_folder) &
          ]
    end subroutine collect_figures
 
@@ -45,8 +47,6 @@ contains
       integer :: unit, stat, k, c(4)
 
       call headline_result(result, error)
-      if (allocated(error)) return
-      call check(error, result%n_patches, 1, message='the headline case has one patch')
       if (allocated(error)) return
       open (newunit=unit, file=headline_numbers, status='old', action='read', iostat=stat)
       if (stat /= 0) then
@@ -137,5 +137,67 @@ contains
          index(err_text, "'numpy'") > 0), message='message without matplotlib: '//err_text)
       call shell('rm -rf '//dir)
    end subroutine test_without_matplotlib
+
+   !> The kinematic example (two patches with different creepages) plotted with --patch 2: the
+   !> figures go next to the result file, not into the working directory, and the creepages in
+   !> the title (NAME_numbers.csv) are patch 2's, not patch 1's (nor the case's main patch's).
+   subroutine test_patch_and_folder(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, here
+      real(wp) :: title(3), patch(2, 3)
+      integer :: stat, k
+
+      if (unavailable(error, .false.)) return
+      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
+      if (stat /= 0) then
+         call skip_test(error, 'python3 with h5py, numpy and matplotlib is not available')
+         return
+      end if
+      here = current_directory()
+      dir = scratch_directory('figures_patch')
+      call check(error, run_program(dir, 'run '//here//'/examples/kinematic.nml -q -o k.h5'), 0, &
+         message='the kinematic example did not run')
+      if (allocated(error)) return
+      call shell('python3 scripts/plot_case.py '//dir//'/k.h5 --patch 2 > '//dir// &
+         '/plot.txt 2>&1', stat)
+      call check(error, stat, 0, message='plot_case.py --patch 2: '//file_text(dir//'/plot.txt'))
+      if (allocated(error)) return
+      call shell('test -s '//dir//'/k_traction.png && test -s '//dir//'/k_pressure.png && '// &
+         'test ! -e k_traction.png && test ! -e k_numbers.csv', stat)
+      call check(error, stat, 0, message='the figures are not next to the result file')
+      if (allocated(error)) return
+      call shell('python3 -c "import h5py; f = h5py.File('''//dir//'/k.h5''); '// &
+         '[print(*[f[''cases/000001/patch_%d/tangential/%s'' % (p, q)][()] for q in '// &
+         '(''nu_x'', ''nu_y'', ''phi'')]) for p in (1, 2)]" > '//dir//'/patches.txt && '// &
+         'grep -E "^(nu_x|nu_y|phi)," '//dir//'/k_numbers.csv | cut -d, -f4 > '//dir// &
+         '/title.txt', stat)
+      if (stat == 0) call read_reals(dir//'/patches.txt', patch, stat)
+      if (stat == 0) call read_reals(dir//'/title.txt', title, stat)
+      call check(error, stat, 0, message='cannot read the creepages back')
+      if (allocated(error)) return
+      do k = 1, 3
+         call check(error, abs(title(k) - patch(2, k)) <= 5.0e-3_wp*abs(patch(2, k)) .and. &
+            abs(title(k) - patch(1, k)) > 5.0e-3_wp*abs(patch(1, k)), message= &
+            'the title''s creepages are not patch 2''s')
+         if (allocated(error)) return
+      end do
+      call shell('rm -rf '//dir)
+   contains
+      subroutine read_reals(file, values, stat)
+         character(len=*), intent(in) :: file
+         real(wp), intent(out) :: values(..)
+         integer, intent(out) :: stat
+         integer :: unit
+         open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+         if (stat /= 0) return
+         select rank (values)
+         rank (1)
+            read (unit, *, iostat=stat) values
+         rank (2)
+            read (unit, *, iostat=stat) values(1, :), values(2, :)
+         end select
+         close (unit)
+      end subroutine read_reals
+   end subroutine test_patch_and_folder
 
 end module test_figures
