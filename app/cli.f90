@@ -41,6 +41,8 @@ module shcontact_app_cli
       logical :: csv_units = .false.
       !> --check, --resume, -q, -v.
       logical :: check = .false., resume = .false., quiet = .false., verbose = .false.
+      !> --no-output: solve and print the summary, write no file.
+      logical :: no_output = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
@@ -190,6 +192,8 @@ contains
             cli%check = .true.
          case ('--resume')
             cli%resume = .true.
+         case ('--no-output')
+            cli%no_output = .true.
          case ('-q', '--quiet')
             cli%quiet = .true.
          case ('-v', '--verbose')
@@ -219,7 +223,8 @@ contains
          accepts = command /= 'merge'
       case ('--set')
          accepts = command == 'run' .or. command == 'geometry'
-      case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
+      case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check', &
+            '--no-output')
          accepts = command == 'run'
       case ('--write', '--plot', '--kind', '--file-format', '--scale', '--mirror-y', &
             '--mirror-z')
@@ -251,10 +256,10 @@ contains
    function nearest_option(command, name) result(text)
       character(len=*), intent(in) :: command, name
       character(len=:), allocatable :: text
-      character(len=*), parameter :: options(18) = [character(len=12) :: '--quiet', &
+      character(len=*), parameter :: options(19) = [character(len=12) :: '--quiet', &
          '--verbose', '--output', '--set', '--format', '--csv-units', '--threads', '--shard', &
-         '--resume', '--check', '--write', '--plot', '--kind', '--file-format', '--scale', &
-         '--mirror-y', '--mirror-z', '--help']
+         '--resume', '--check', '--no-output', '--write', '--plot', '--kind', '--file-format', &
+         '--scale', '--mirror-y', '--mirror-z', '--help']
       integer :: k, n
       text = ''
       if (len(name) < 4) return
@@ -326,6 +331,8 @@ contains
       case ('run')
          if (cli%csv_units .and. cli%format /= 'csv') call fatal_error(error, &
             '--csv-units needs --format csv', stat_usage)
+         if (cli%no_output .and. (len(cli%output) > 0 .or. cli%resume)) call fatal_error(error, &
+            '--no-output writes no file: it goes with neither -o nor --resume', stat_usage)
       end select
    end subroutine check_combination
 

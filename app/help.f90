@@ -94,7 +94,9 @@ contains
          nl// &
          '                           (without --shard the Slurm variables are ignored)'//nl// &
          '  --resume                 complete an interrupted run from its checkpoint '// &
-         'OUT.h5.partial/'//nl//nl// &
+         'OUT.h5.partial/'//nl// &
+         '  --no-output              write no result file (e.g. with --format csv in a shell '// &
+         'loop)'//nl//nl// &
          'Progress goes to stderr: a bar on a terminal, else a line (cases done, rate, ETA)'// &
          nl// &
          'every 10 % of the cases or 10 s.'

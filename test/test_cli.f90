@@ -53,6 +53,7 @@ contains
          new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
          new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
          new_unittest('kinematic_sample_output_in_app_md', test_kinematic_sample), &
+         new_unittest('no_output', test_no_output), &
          new_unittest('patches_found_and_loaded', test_patch_counts), &
          new_unittest('profiles_file', test_profiles_file), &
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
@@ -453,6 +454,32 @@ contains
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_kinematic_sample
+
+   !> `run --no-output` solves a sweep and prints its lines but writes no file at all (no
+   !> result, no checkpoint, no sidecar); with -o or --resume it is a usage error.
+   subroutine test_no_output(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_no_output')
+      call run_expect(error, dir, 'run --no-output --format csv --set sweep%t_y=0,4 '// &
+         '--set sweep%t_y_points=3', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(out, new_line('a')//'3,0,') > 0, message='three case lines: '//out)
+      if (allocated(error)) return
+      call expect_in(error, err, 'no result file (--no-output)', 'the closing note')
+      if (allocated(error)) return
+      call shell('test -z "$(ls -A '//dir//' | grep -vxE ''out.txt|err.txt'')"', stat)
+      call check(error, stat, 0, message='--no-output left files in '//dir)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --no-output -o x.h5', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'it goes with neither -o nor --resume', '--no-output -o')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --no-output --resume', 1, out, err)
+      call shell('rm -rf '//dir)
+   end subroutine test_no_output
 
    !> A kinematic case's lines carry the wheelset inputs, the load and the friction.
    subroutine test_kinematic_inputs(error)

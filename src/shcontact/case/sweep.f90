@@ -69,6 +69,9 @@ module shcontact_case_sweep
       integer :: shard = 1, n_shards = 1
       !> Continue from the checkpoint of an interrupted run.
       logical :: resume = .false.
+      !> Write the result file (and its checkpoints); .false. solves and summarises only
+      !> (`--no-output`), and `outcome%output` is then ''.
+      logical :: write_output = .true.
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
       !> Progress report (optional).
@@ -216,10 +219,11 @@ contains
          config%wants_field('pressure') .or. config%wants_field('traction') .or. &
          config%wants_field('state') .or. config%wants_field('slip')
 
+      if (.not. options%write_output) outcome%output = ''
       ! Everything that can fail before any file is touched.
-      call check_output_file(outcome%output, error)
+      if (options%write_output) call check_output_file(outcome%output, error)
       if (allocated(error)) return
-      if (file_exists(dir) .and. .not. is_directory(dir)) then
+      if (options%write_output .and. file_exists(dir) .and. .not. is_directory(dir)) then
          call fatal_error(error, 'cannot write the output "'//outcome%output//'": "'//dir// &
             '" (its checkpoint directory) exists and is not a directory', stat_io)
          return
@@ -247,12 +251,14 @@ contains
          info%geometry = common%patches
       end if
 
-      call make_directory(dir, error)
+      if (options%write_output) call make_directory(dir, error)
       if (allocated(error)) then
          call prefix_error(error, 'cannot write the output "'//outcome%output//'"')
          return
       end if
-      if (options%resume) then
+      if (.not. options%write_output) then
+         blocks%n = 0
+      else if (options%resume) then
          ! The blocks of a resumed run carry the namelist of the run that started it (which may
          ! differ in the output name or the spelling of the profile paths).
          call read_checkpoint(dir, checkpoint_key(config), info%namelist, n, outcome, blocks, &
@@ -289,7 +295,8 @@ contains
             results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
             outcome%last - outcome%first + 1)
          per_case = (wall_seconds() - t0)/nb
-         call commit_block(dir, blocks, info, config, todo(next:next + nb - 1), results, error)
+         if (options%write_output) call commit_block(dir, blocks, info, config, &
+            todo(next:next + nb - 1), results, error)
          if (allocated(error)) return
          do i = 1, nb
             outcome%summaries(todo(next + i - 1)) = results(i)%summary
@@ -310,9 +317,10 @@ contains
          ! Nothing to write: every case failed, and they all tell why.
          call fatal_error(error, failure_text(outcome, outcome%failures(1)), &
             outcome%summaries(outcome%failures(1)%case)%stat)
-         call clear_checkpoint(dir, keep_directory=.false.)
+         if (options%write_output) call clear_checkpoint(dir, keep_directory=.false.)
          return
       end if
+      if (.not. options%write_output) return
       call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
          info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
          temp_name=dir//'/'//merged_temp_name)
