@@ -1,4 +1,4 @@
-!> Tests of the wheel–rail geometry (physics.md §4.1, §5.2–5.4): rail placement, contact search
+!> Tests of the wheel–rail geometry (doc/theory.md §4.1, §5.2–5.4): rail placement, contact search
 !> and strip tables on analytic profiles with exactly known gaps and curvatures.
 module test_geometry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
@@ -776,7 +776,7 @@ contains
    ! ---------------------------------------------------------------- Manchester benchmark
 
    !> S1002 (MBench_S1002_v3.prw) on UIC60 1:40 (MBench_UIC60_v3.prr, already canted) with the
-   !> benchmark's track (physics.md §5.2), read and cleaned as the program does; skipped without
+   !> benchmark's track (doc/theory.md §5.2), read and cleaned as the program does; skipped without
    !> the external data.
    subroutine manchester(prep, error, options)
       type(prepared_profiles_type), intent(out) :: prep
@@ -813,7 +813,7 @@ contains
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine manchester_patches
 
-   !> The gauge rule puts the Manchester rail origin at y = 760.53 mm (physics.md §5.2).
+   !> The gauge rule puts the Manchester rail origin at y = 760.53 mm (doc/theory.md §5.2).
    subroutine test_manchester_rail(error)
       type(error_type), allocatable, intent(out) :: error
       type(prepared_profiles_type) :: prep
@@ -828,7 +828,7 @@ contains
    !> Centred wheelset (y_ws = 0, no yaw): the reference point is CONTACT's geometric contact
    !> point of the same case (the external data's reference/ty0_literal/summary.csv: the weighted
    !> centre ycp_tr plus y_geo along the contact plane at angle delt) within 0.05 mm; γ₀ is the slope of
-   !> the R300 crown (physics.md §5.2, top at the rail origin) at y_rail, atan(y_rail/300),
+   !> the R300 crown (doc/theory.md §5.2, top at the rail origin) at y_rail, atan(y_rail/300),
    !> within 0.3 mrad; A and B at the point agree with CONTACT's local curvatures A1_local
    !> (1 %) and B1_local (3 %: CONTACT fits a quadratic over ±0.6 mm).
    subroutine test_manchester_ty0(error)
@@ -902,7 +902,7 @@ contains
       close (unit)
    end subroutine reference_value
 
-   !> y_ws = 5 mm (cf. physics.md §5.6, where CONTACT finds two regions near this shift): the
+   !> y_ws = 5 mm (cf. doc/theory.md §5.6, where CONTACT finds two regions near this shift): the
    !> tread and the gauge corner both touch or nearly so, and both are found, with basins that
    !> meet at the ridge between them and tables that run on into the neighbour's basin.
    subroutine test_manchester_two_patches(error)
@@ -948,7 +948,7 @@ contains
    !> Scan y_ws = 0…10 mm in steps of 0.05 mm: the deepest contact point moves continuously
    !> (less than 1 mm per step) except at three jumps — inside the tread near 0.25 mm, to the
    !> gauge corner near 5 mm and onto the flange between 6 and 7 mm (CONTACT's yawed rows,
-   !> physics.md §5.6: between 0 and 0.5, 4.5 and 5, 6 and 6.5) — and agrees with the table's
+   !> doc/theory.md §5.6: between 0 and 0.5, 4.5 and 5, 6 and 6.5) — and agrees with the table's
    !> unyawed-like rows on the tread (y_ws = 2, 4) within 1 mm. When the environment variable
    !> SHCONTACT_GEOMETRY_SCAN names a file, the scan is written there (doc/geometry.md).
    subroutine test_manchester_scan(error)

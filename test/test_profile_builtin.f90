@@ -87,7 +87,7 @@ contains
       end do
    end subroutine test_spacing_and_clean
 
-   !> physics.md §5.7: adjacent sections meet (jumps below 1.2e-4 mm at B/C and C/D, 1e-7 mm
+   !> doc/theory.md §5.7: adjacent sections meet (jumps below 1.2e-4 mm at B/C and C/D, 1e-7 mm
    !> elsewhere) with the same slope (to 1e-5).
    subroutine test_s1002_joints(error)
       type(error_type), allocatable, intent(out) :: error

@@ -1,7 +1,7 @@
 !> Keeps the headline validation numbers (doc/validation.md) from regressing: the whole pipeline
 !> (profiles → geometry → semi-Hertzian normal contact → FASTSIM_SH) on the reference case of
 !> the external data's reference/ (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN) against Kalker's
-!> exact theory computed by CONTACT. Tolerances are the project's targets (issue 7, physics.md §6.6)
+!> exact theory computed by CONTACT. Tolerances are the project's targets (issue 7, doc/theory.md §6.6)
 !> and the reference's own values, never outputs of our code. The tests that need the sample
 !> profiles or CONTACT's reference files are skipped when SHCONTACT_EXTERNAL_DATA is unset
 !> (test_external_data).
@@ -9,7 +9,7 @@
 !> The tangential settings are the ones recommended as defaults in doc/validation.md: bound
 !> 'weighted', spin model 'uniform', spin flexibility 'longitudinal', 100 strips × 50 elements.
 !> Signs: the reference is CONTACT's rail side; we solve the same case from the wheel's side
-!> (creepages −ν, forces −F), physics.md decision 2.
+!> (creepages −ν, forces −F), doc/theory.md decision 2.
 module test_validation
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp
@@ -97,7 +97,7 @@ contains
    end subroutine test_normal
 
    !> The 10³ DOE (ξ, η ∈ [0, 2] ‰, φ ∈ [0, 2] 1/m) against the exact theory with the defaults:
-   !> max |Δf| ≤ 0.1 and the 80th percentile of |Δf_y| ≤ 0.04 (issue 7, physics.md §6.6), Table
+   !> max |Δf| ≤ 0.1 and the 80th percentile of |Δf_y| ≤ 0.04 (issue 7, doc/theory.md §6.6), Table
    !> 10's row (issue 13), and the headline case within the same 0.1.
    subroutine test_doe(error)
       type(error_type), allocatable, intent(out) :: error

@@ -18,7 +18,7 @@ C
       IMPLICIT NONE
       INCLUDE 'shcontact.fi'
       DOUBLE PRECISION TY, ROLL, FN, CKSI, CETA, CPHI
-C     Lateral wheelset shift Y_WS (mm): the app's default (physics.md
+C     Lateral wheelset shift Y_WS (mm): the app's default (doc/theory.md
 C     decision 13).
       PARAMETER (TY = 4.733D0, ROLL = 0.0D0, FN = 64.7D3)
       PARAMETER (CKSI = 0.58D-3, CETA = 0.061D-3, CPHI = 2.74D-4)

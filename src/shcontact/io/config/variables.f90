@@ -209,7 +209,7 @@ module shcontact_io_config_variables
       'coupled']
    character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
       'fastsim']
-   !> The traction bounds and spin models (physics.md decisions 9, 10).
+   !> The traction bounds and spin models (doc/theory.md decisions 9, 10).
    character(len=*), parameter :: bounds(*) = [character(len=13) :: 'ellipsoidal', 'parabolic', &
       'weighted', 'weighted-slip', 'clipped']
    character(len=*), parameter :: spin_models(*) = [character(len=9) :: 'additive', 'uniform', &
