@@ -46,6 +46,8 @@ module shcontact_app_cli
       !> profiles, geometry; shcontact_app_output_guard), start afresh in the work folder of an
       !> interrupted run (run).
       logical :: force = .false.
+      !> --no-output: solve and print the summary, write no file.
+      logical :: no_output = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
       !> --shard I/N (0/0 when not given).
@@ -131,6 +133,9 @@ contains
             cli%output = value
          case ('--set')
             call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error) .and. index(value, '=') == 0) call fatal_error(error, &
+               '--set "'//value//'": expected GROUP%NAME=VALUE, e.g. --set position%t_y=3', &
+               stat_usage)
             if (.not. allocated(error)) call cli%sets%push(value)
          case ('--format')
             call option_value(i, arg, value, has_value, error)
@@ -202,6 +207,8 @@ contains
             cli%resume = .true.
          case ('--force')
             cli%force = .true.
+         case ('--no-output')
+            cli%no_output = .true.
          case ('-q', '--quiet')
             cli%quiet = .true.
          case ('-v', '--verbose')
@@ -231,7 +238,8 @@ contains
          accepts = command /= 'merge'
       case ('--set')
          accepts = command == 'run' .or. command == 'geometry'
-      case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check')
+      case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check', &
+            '--no-output')
          accepts = command == 'run'
       case ('--force')
          accepts = command == 'run' .or. command == 'merge' .or. command == 'profiles' .or. &
@@ -259,9 +267,31 @@ contains
             return
          end if
       end do
-      message = 'unknown option "'//name//'" for '//command//'; see shcontact '//command// &
-         ' --help'
+      message = 'unknown option "'//name//'" for '//command//'; '//nearest_option(command, name)// &
+         'see shcontact '//command//' --help'
    end function unknown_option
+
+   !> 'did you mean "--threads"? ' when one option of `command` begins with `name` or `name`
+   !> with it (a word cut short or run on: "--thread", "--formats"), else ''.
+   function nearest_option(command, name) result(text)
+      character(len=*), intent(in) :: command, name
+      character(len=:), allocatable :: text
+      character(len=*), parameter :: options(19) = [character(len=12) :: '--quiet', &
+         '--verbose', '--output', '--set', '--format', '--csv-units', '--threads', '--shard', &
+         '--resume', '--check', '--no-output', '--write', '--plot', '--kind', '--file-format', &
+         '--scale', '--mirror-y', '--mirror-z', '--help']
+      integer :: k, n
+      text = ''
+      if (len(name) < 4) return
+      do k = 1, size(options)
+         n = len_trim(options(k))
+         if (.not. accepts(command, options(k)(:n)) .and. options(k)(:n) /= '--help') cycle
+         if (index(options(k)(:n), name) == 1 .or. index(name, options(k)(:n)) == 1) then
+            text = 'did you mean "'//options(k)(:n)//'"? '
+            return
+         end if
+      end do
+   end function nearest_option
 
    !> The commands that have an option, as text ("run", "run and geometry").
    function owners(name) result(text)
@@ -325,6 +355,8 @@ contains
       case ('run')
          if (cli%csv_units .and. cli%format /= 'csv') call fatal_error(error, &
             '--csv-units needs --format csv', stat_usage)
+         if (cli%no_output .and. (len(cli%output) > 0 .or. cli%resume)) call fatal_error(error, &
+            '--no-output writes no file: it goes with neither -o nor --resume', stat_usage)
       end select
       if (allocated(error)) return
       if (cli%command == 'merge') then

@@ -80,6 +80,7 @@ contains
       type(run_setup_type) :: setup
       type(sweep_options_type) :: options
       type(sweep_outcome_type) :: outcome
+      character(len=:), allocatable :: where_to
       integer :: i, k
 
       status = 0
@@ -105,6 +106,7 @@ contains
       options%threads = cli%threads
       options%resume = cli%resume
       options%force = cli%force
+      options%write_output = .not. cli%no_output
       options%command_line = command_line()
       call choose_shard(cli, options%shard, options%n_shards, error)
       if (allocated(error)) then
@@ -128,17 +130,20 @@ contains
             write (error_unit, '(a)') 'shcontact: case '//str_int(outcome%failures(k)%case)// &
                ' failed: '//outcome%failures(k)%message
          end do
+         where_to = outcome%output
+         if (cli%no_output) where_to = 'the result file of a run without --no-output'
          if (size(outcome%failures) > 10) write (error_unit, '(a)') 'shcontact: ... and '// &
             str_int(size(outcome%failures) - 10)//' more failed cases (see /failures in '// &
-            outcome%output//')'
+            where_to//')'
          status = exit_some_failed
       end if
       if (.not. cli%quiet) then
          i = outcome%last - outcome%first + 1
+         where_to = '; results in '//outcome%output
+         if (cli%no_output) where_to = '; no result file (--no-output)'
          write (error_unit, '(a)') 'shcontact: '//str_int(i - size(outcome%failures))//' of '// &
             str_int(i)//' case(s) solved'//resumed_note(outcome)//', '// &
-            str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())// &
-            '; results in '//outcome%output
+            str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())//where_to
       end if
    end function run_command
 

@@ -101,7 +101,9 @@ contains
          '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
          'write, or'//nl// &
          '                           start afresh over an interrupted run''s checkpoint'// &
-         nl//nl// &
+         nl// &
+         '  --no-output              write no result file (e.g. with --format csv in a shell '// &
+         'loop)'//nl//nl// &
          'Progress goes to stderr: a bar on a terminal, else a line (cases done, rate, ETA)'// &
          nl// &
          'every 10 % of the cases or 10 s.'
@@ -145,7 +147,7 @@ contains
          '                           cleaned profile (gnuplot SCRIPT.gp makes SCRIPT.png)'// &
          nl// &
          '  --kind wheel|rail        the kind of profile, when the file does not say'//nl// &
-         '  --format auto|plain|simpack|miniprof'//nl// &
+         '  --file-format auto|plain|simpack|miniprof'//nl// &
          '                           file format (default auto: by extension)'//nl// &
          '  --scale F                factor from the file''s length unit to mm (default: '// &
          'as the'//nl// &

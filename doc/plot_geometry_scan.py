@@ -5,7 +5,7 @@ written by `SHCONTACT_GEOMETRY_SCAN=scan.dat fpm test -- geometry manchester_sca
 """
 import sys
 rows = [l.split() for l in open(sys.argv[1]) if not l.startswith('#')]
-# CONTACT, physics.md §5.6 (yawed, weighted centre at 10 kN): y_ws, y_r, delta
+# CONTACT, doc/theory.md §5.6 (yawed, weighted centre at 10 kN): y_ws, y_r, delta
 ref = [(0, -8.660, -0.0290), (0.5, -16.030, -0.0568), (1, -18.542, -0.0696), (2, -19.618, -0.0806),
        (4, -21.794, -0.1078), (5, -33.447, -0.2905), (6, -35.395, -0.4176), (6.5, -42.039, -1.1591),
        (10, -39.445, -0.7992)]

@@ -2,14 +2,18 @@
 """Plot a shcontact result file (HDF5): the figures of the seed paper for one case or a sweep,
 and comparisons of two runs.
 
-    python3 scripts/plot_case.py OUT.h5 [--case N] [--patch K] [--outdir DIR] [--prefix NAME]
+    python3 scripts/plot_case.py OUT.h5 [--case N] [--patch K] [-o DIR] [--prefix NAME]
         [--x AXIS] [--fix AXIS=VALUE ...] [--curves AXIS] [--abs] [--compare OTHER.h5]
 
-Writes, when the file holds what they need:
+Writes into DIR (-o/--outdir; default: the folder of OUT.h5), when the file holds what they
+need:
 
     NAME_pressure.png   normal pressure on the patch and the strip table (seed Fig. 4)
     NAME_traction.png   tangential tractions on the wheel as arrows (with a scale key), adhesion
                         and slip areas and the stick/slip boundary (seed Fig. 5)
+    NAME_numbers.csv    the numbers the two figures above print in their titles, each with
+                        its full value and the half unit of its last printed digit (so that a
+                        test can check that a committed figure still shows the current numbers)
     NAME_geometry.png   gap and lateral relative curvature B(y) of the patch (seed Fig. 3)
     NAME_creep.png      normalised creep forces f_x, f_y (signed; --abs for |f|) against a
                         swept input (--x, default the innermost), one curve per bound / spin
@@ -23,21 +27,29 @@ Writes, when the file holds what they need:
 The field figures name the case's position, creepages, load and traction bound in their titles.
 NAME defaults to the file name without .h5. The field figures need a case stored with its
 fields (the default for a single case; `&output fields = 'all'` in a sweep).
-Needs h5py, numpy and matplotlib: `scripts/setup --plot` installs them.
+Needs h5py, numpy and matplotlib: `scripts/setup --plot` installs them (without them the script
+says so and exits with status 1). doc/plots.md shows every figure.
 """
 import argparse
+import csv
 import os
 import re
 import sys
 
-import h5py
-import matplotlib
+try:
+    import h5py
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
-from matplotlib.patches import Patch  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+    from matplotlib.patches import Patch
+except ImportError as missing:  # one clear line instead of a traceback
+    sys.stderr.write(f"plot_case: needs h5py, numpy and matplotlib, and Python cannot import "
+                     f"'{missing.name}'; install them with `scripts/setup --plot` (or "
+                     f"`python3 -m pip install h5py numpy matplotlib`)\n")
+    sys.exit(1)
 
 #: Swept inputs a /summary table can have, in the program's loop order.
 SWEEP_AXES = ["t_y", "roll", "yaw", "normal_force", "approach", "vertical_force", "friction",
@@ -55,6 +67,55 @@ AXIS_DISPLAY = {
     "friction": (r"$\mu$", 1.0), "yaw": (r"yaw $\psi$ [mrad]", 1e3),
     "v_forward": ("V [m/s]", 1e-3), "v_lateral": ("$v_y$ [m/s]", 1e-3),
 }
+
+
+#: The numbers the field figures print: name -> (group under patch_K, dataset, scale to the
+#: printed unit, format, printed unit). NAME_numbers.csv lists them (write_numbers).
+FIELD_NUMBERS = {
+    "fn": ("normal", "load", 1e-3, ".2f", "kN"),
+    "p_max": ("normal", "p_max", 1.0, ".0f", "MPa"),
+    "fx": ("tangential", "fx", 1.0, ".0f", "N"),
+    "fy": ("tangential", "fy", 1.0, ".0f", "N"),
+    "fx_norm": ("tangential", "fx_norm", 1.0, ".3f", "1"),
+    "fy_norm": ("tangential", "fy_norm", 1.0, ".3f", "1"),
+    "adhesion_fraction": ("tangential", "adhesion_fraction", 100.0, ".0f", "%"),
+}
+#: Scale of the title's numbers to their printed unit (title_numbers).
+TITLE_SCALES = {"t_y": 1.0, "normal_force": 1e-3, "vertical_force": 1e-3, "approach": 1.0,
+                "nu_x": 1.0, "nu_y": 1.0, "phi": 1.0}
+
+
+def shown(group, patch, name):
+    """(value, printed text) of one of FIELD_NUMBERS for patch `patch` of a case group."""
+    sub, key, scale, fmt, _ = FIELD_NUMBERS[name]
+    value = float(group[f"patch_{patch}/{sub}/{key}"][()])
+    return value, format(value * scale, fmt)
+
+
+def half_unit(printed):
+    """Half a unit of the last digit of a printed number ('-5847' -> 0.5, '0.00058' -> 5e-6)."""
+    from decimal import Decimal
+    return 0.5 * 10.0 ** Decimal(printed).as_tuple().exponent
+
+
+def write_numbers(f, group, patch, out):
+    """NAME_numbers.csv: every number the field figures of this case and patch print, as
+    `quantity,value,printed,shown,tolerance`: the value (units of the result file), the text on
+    the figure, that text in the value's units, and the half unit of its last printed digit in
+    the value's units. Returns False when the patch has no tangential results."""
+    if f"patch_{patch}/tangential/fx" not in group:
+        return False
+    rows, _ = title_numbers(f, group, patch)
+    rows = {k: (v, t, TITLE_SCALES[k]) for k, (v, t) in rows.items()}
+    for name, spec in FIELD_NUMBERS.items():
+        rows[name] = shown(group, patch, name) + (spec[2],)
+    with open(out, "w", newline="") as stream:
+        w = csv.writer(stream, lineterminator="\n")
+        w.writerow(["quantity", "value", "printed", "shown", "tolerance"])
+        for name, (value, printed, scale) in rows.items():
+            w.writerow([name, repr(value), printed, repr(float(printed) / scale),
+                        f"{half_unit(printed) / scale:.3g}"])
+    return True
 
 
 def text(value):
@@ -107,25 +168,48 @@ def number(value):
         return float("nan")
 
 
-def case_title(f, icase, base):
-    """Title of a field figure: file, case, position, load, creepages, traction bound."""
-    c = case_inputs(f, icase)
-    parts = [f"{base}, case {icase}"]
+def title_numbers(f, group, patch):
+    """{quantity: (value, printed text)} of the case title of the field figures: position,
+    load, and the creepages of the patch drawn (its own, stored with its tangential results in a
+    kinematic run or with several patches; else the case's)."""
+    c = case_inputs(f, int(group.name.split("/")[-1]))
+    out = {}
     if "t_y" in c:
-        parts.append(f"$t_y$ = {number(c['t_y']):g} mm")
+        out["t_y"] = (number(c["t_y"]), f"{number(c['t_y']):g}")
     load = c.get("load_mode", "")
-    if load == "force" and "normal_force" in c:
-        parts.append(f"N = {number(c['normal_force']) / 1e3:g} kN")
-    elif load == "vertical" and "vertical_force" in c:
-        parts.append(f"$F_z$ = {number(c['vertical_force']) / 1e3:g} kN")
-    elif load == "approach" and "approach" in c:
-        parts.append(rf"$\delta$ = {number(c['approach']):g} mm")
+    for mode, key in (("force", "normal_force"), ("vertical", "vertical_force"),
+                      ("approach", "approach")):
+        if load == mode and key in c:
+            scale = 1.0 if key == "approach" else 1e-3
+            out[key] = (number(c[key]), f"{number(c[key]) * scale:g}")
+    tan = group.get(f"patch_{patch}/tangential")
+    for key in ("nu_x", "nu_y", "phi"):
+        if tan is not None and key in tan:
+            value = float(tan[key][()])
+        elif key in c:
+            value = number(c[key])
+        else:
+            continue
+        out[key] = (value, f"{value:.3g}")
+    return out, c
+
+
+def case_title(f, group, patch, base):
+    """Title of a field figure: file, case, patch, position, load, creepages of that patch,
+    traction bound."""
+    icase = int(group.name.split("/")[-1])
+    numbers, c = title_numbers(f, group, patch)
+    parts = [f"{base}, case {icase}, patch {patch}"]
+    if "t_y" in numbers:
+        parts.append(f"$t_y$ = {numbers['t_y'][1]} mm")
+    for key, label, unit in (("normal_force", "N", "kN"), ("vertical_force", "$F_z$", "kN"),
+                             ("approach", r"$\delta$", "mm")):
+        if key in numbers:
+            parts.append(f"{label} = {numbers[key][1]} {unit}")
     line2 = []
-    for key, label, scale in (("nu_x", r"$\nu_x$", 1.0), ("nu_y", r"$\nu_y$", 1.0),
-                              ("phi", r"$\varphi$", 1.0)):
-        if key in c:
-            line2.append(f"{label} = {number(c[key]) * scale:.3g}" +
-                         (" rad/mm" if key == "phi" else ""))
+    for key, label in (("nu_x", r"$\nu_x$"), ("nu_y", r"$\nu_y$"), ("phi", r"$\varphi$")):
+        if key in numbers:
+            line2.append(f"{label} = {numbers[key][1]}" + (" rad/mm" if key == "phi" else ""))
     if "bound" in c:
         line2.append(f"bound {c['bound']}")
     if "spin_model" in c:
@@ -196,8 +280,8 @@ def plot_pressure(group, patch, title, out):
         ax3 = ax2.twinx()
         ax3.plot(ys, a, color="C1", label="half-length $a_i$")
         ax3.set_ylabel("$a_i$ [mm]", color="C1")
-        ax2.set_title(f"strips: N = {nor['load'][()] / 1e3:.2f} kN, "
-                      f"$p_{{max}}$ = {nor['p_max'][()]:.0f} MPa")
+        ax2.set_title(f"strips: N = {shown(group, patch, 'fn')[1]} kN, "
+                      f"$p_{{max}}$ = {shown(group, patch, 'p_max')[1]} MPa")
         ax2.grid(alpha=0.3)
     fig.suptitle(title)
     fig.tight_layout()
@@ -227,7 +311,16 @@ def plot_traction(group, patch, title, out):
     x, y, dx, dy = tan["x"][...], tan["y"][...], tan["dx"][...], tan["dy"][()]
     px, py, state = tan["px"][...], tan["py"][...], tan["state"][...]
     inside = state.ravel() > 0
-    fig, ax = plt.subplots(figsize=(9, 7))
+    # Constrained layout and a tight bounding box keep the titles, the key above the axes and
+    # the x label inside the image whatever the patch's shape (a tall patch cut the label off).
+    # The height follows the patch's aspect (equal axes), so a flat patch gets no empty band.
+    ny_in = state > 0
+    xc = x[ny_in]
+    half = np.repeat(0.5 * dx[:, None], x.shape[1], axis=1)[ny_in]
+    yc = np.repeat(y[:, None], x.shape[1], axis=1)[ny_in]
+    aspect = (np.ptp(yc) + dy) / max(np.ptp(xc) + 2 * half.max(), 1e-9)
+    fig, ax = plt.subplots(figsize=(9, min(9.0, max(3.5, 2.5 + 6.5 * aspect))),
+                           constrained_layout=True)
     colours = np.where(state.ravel() == 1, 0.0, 1.0)[inside]
     coll = PolyCollection(element_rectangles(x, y, dx, dy)[inside], array=colours,
                           cmap=matplotlib.colors.ListedColormap(["#cfe3f7", "#f9d9b8"]),
@@ -253,17 +346,17 @@ def plot_traction(group, patch, title, out):
     ax.set_aspect("equal")
     ax.set_xlabel("x, rolling direction [mm] (leading edge at +x)")
     ax.set_ylabel("y, lateral (field side +) [mm]")
-    forces = (f"$F_x$ = {tan['fx'][()]:.0f} N, $F_y$ = {tan['fy'][()]:.0f} N, "
-              f"$f_x$ = {tan['fx_norm'][()]:.3f}, $f_y$ = {tan['fy_norm'][()]:.3f}, "
-              f"adhesion {100 * tan['adhesion_fraction'][()]:.0f} %")
+    value = {name: shown(group, patch, name)[1] for name in FIELD_NUMBERS}
+    forces = (f"$F_x$ = {value['fx']} N, $F_y$ = {value['fy']} N, "
+              f"$f_x$ = {value['fx_norm']}, $f_y$ = {value['fy_norm']}, "
+              f"adhesion {value['adhesion_fraction']} %")
     ax.set_title("tangential tractions on the wheel\n" + forces, fontsize=10, pad=22)
     ax.legend(handles=[Patch(color="#cfe3f7", label="adhesion"),
                        Patch(color="#f9d9b8", label="slip"),
                        plt.Line2D([], [], color="C3", lw=2, label="stick/slip boundary")],
               loc="upper right", fontsize=9)
     fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(out, dpi=130)
+    fig.savefig(out, dpi=130, bbox_inches="tight")
     plt.close(fig)
     return True
 
@@ -509,7 +602,8 @@ def main():
     parser.add_argument("--case", type=int, help="case to draw the fields of (default: first "
                         "case with fields)")
     parser.add_argument("--patch", type=int, default=1, help="contact patch (default 1)")
-    parser.add_argument("--outdir", default=".", help="directory for the PNGs")
+    parser.add_argument("-o", "--outdir", help="directory for the PNGs (default: the folder "
+                        "of the result file)")
     parser.add_argument("--prefix", help="file name prefix (default: the file name)")
     parser.add_argument("--x", dest="xaxis", help="swept input on the x-axis of the creep "
                         "figure (default: the innermost)")
@@ -523,6 +617,10 @@ def main():
                         "cases with those of another result file")
     args = parser.parse_args()
     prefix = args.prefix or os.path.splitext(os.path.basename(args.file))[0]
+    if args.outdir is None:
+        args.outdir = os.path.dirname(args.file) or "."
+    if not os.path.isfile(args.file):
+        sys.exit(f"plot_case: {args.file}: no such file")
     os.makedirs(args.outdir, exist_ok=True)
     written = []
     with h5py.File(args.file, "r") as f:
@@ -531,11 +629,18 @@ def main():
         group = pick_case(f, args.case)
         title = os.path.basename(args.file)
         if group is not None:
-            title_case = case_title(f, int(group.name.split("/")[-1]), title)
+            if f"patch_{args.patch}" not in group:
+                have = ", ".join(k[6:] for k in group if k.startswith("patch_"))
+                sys.exit(f"plot_case: case {group.name.split('/')[-1]} has no patch "
+                         f"{args.patch} (it has: {have})")
+            title_case = case_title(f, group, args.patch, title)
             for kind, plot in (("pressure", plot_pressure), ("traction", plot_traction)):
                 out = os.path.join(args.outdir, f"{prefix}_{kind}.png")
                 if plot(group, args.patch, title_case, out):
                     written.append(out)
+            out = os.path.join(args.outdir, f"{prefix}_numbers.csv")
+            if write_numbers(f, group, args.patch, out):
+                written.append(out)
         out = os.path.join(args.outdir, f"{prefix}_geometry.png")
         if plot_geometry(f, group, args.patch, title, out):
             written.append(out)

@@ -340,8 +340,10 @@ def fig_cdf(tables, out):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--reference", default="../shared/reference",
-                        help="exact-theory reference folder (default ../shared/reference)")
+    data = os.environ.get("SHCONTACT_EXTERNAL_DATA") or "../shared"
+    parser.add_argument("--reference", default=os.path.join(data, "reference"),
+                        help="exact-theory reference folder (default $SHCONTACT_EXTERNAL_DATA/"
+                        "reference, ../shared/reference without it; doc/install.md)")
     parser.add_argument("--tables", default="doc/validation",
                         help="tables of the validation program (default doc/validation)")
     parser.add_argument("--figures", default="doc/figures",

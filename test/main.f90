@@ -47,6 +47,7 @@ program tester
    use test_input, only: collect_input
    use test_wheelset_geometry, only: collect_wheelset_geometry
    use test_profile_diagnostics, only: collect_profile_diagnostics
+   use test_figures, only: collect_figures
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -91,6 +92,7 @@ program tester
       new_testsuite('input', collect_input), &
       new_testsuite('wheelset_geometry', collect_wheelset_geometry), &
       new_testsuite('profile_diagnostics', collect_profile_diagnostics), &
+      new_testsuite('figures', collect_figures), &
       new_testsuite('robustness', collect_robustness) &
       ]
 

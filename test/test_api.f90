@@ -42,7 +42,7 @@ module test_api
 
    public :: collect_api, headline_t_y, headline_load, headline_creepage, headline_result
 
-   !> Headline case (issue 8): lateral shift Y_WS (mm), the app's default (physics.md decision
+   !> Headline case (issue 8): lateral shift Y_WS (mm), the app's default (doc/theory.md decision
    !> 13), normal force (N) and creepages at the geometric contact point.
    real(wp), parameter :: headline_t_y = 4.733_wp
    real(wp), parameter :: headline_load = 64.7e3_wp
@@ -271,7 +271,7 @@ contains
       call check(error, result%main%fn, headline_load, rel=.true., thr=1.0e-9_wp)
    end subroutine test_cache
 
-   !> Vertical load: Σ_k F_n,k cos γ_k = F_z (physics.md §4.6), and the patches share one
+   !> Vertical load: Σ_k F_n,k cos γ_k = F_z (doc/theory.md §4.6), and the patches share one
    !> rigid approach.
    subroutine test_vertical(error)
       type(error_type), allocatable, intent(out) :: error

@@ -52,6 +52,8 @@ contains
          new_unittest('quiet_and_format_none', test_quiet), &
          new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
          new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
+         new_unittest('kinematic_sample_output_in_app_md', test_kinematic_sample), &
+         new_unittest('no_output', test_no_output), &
          new_unittest('patches_found_and_loaded', test_patch_counts), &
          new_unittest('profiles_file', test_profiles_file), &
          new_unittest('profiles_output_never_the_input', test_profiles_own_input), &
@@ -116,7 +118,8 @@ contains
 
    ! ------------------------------------------------------------------------------------------
 
-   !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0.
+   !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0; every
+   !> option a command's help lists is one the command accepts.
    subroutine test_help(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: commands(4) = [character(len=8) :: 'run', 'merge', &
@@ -154,12 +157,21 @@ contains
          if (allocated(error)) return
          call run_expect(error, dir, '--help', 0, general, err)
          if (allocated(error)) return
+         call shell('cd '//dir//' && for o in $('//program_path()//' '//trim(commands(k))// &
+            ' --help | sed -nE "s/^  (-[a-zA-Z], )?(--[a-z-]+).*/\2/p"); do '// &
+            program_path()//' '//trim(commands(k))//' -q $o x 2>&1 | grep -qE '// &
+            '"unknown option|belongs to" && echo "$o"; done > refused.txt')
+         call check(error, len(file_text(dir//'/refused.txt')) == 0, message=trim(commands(k))// &
+            ' --help lists options that '//trim(commands(k))//' refuses: '// &
+            file_text(dir//'/refused.txt'))
+         if (allocated(error)) return
       end do
       call expect_in(error, general, 'shcontact COMMAND --help', 'the general help points there')
       call shell('rm -rf '//dir)
    end subroutine test_help
 
-   !> An option of another command is a usage error that names its command.
+   !> An option of another command is a usage error that names its command; a misspelt option
+   !> gets a suggestion, and --set without '=' is refused.
    subroutine test_foreign_options(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, out, err
@@ -183,6 +195,16 @@ contains
       call run_expect(error, dir, 'run --format yaml', 1, out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'expected text, csv, json or none', 'run --format yaml')
+      if (allocated(error)) return
+      ! A word cut short gets the option it was meant to be; --set without '=' is refused
+      ! before its value could be taken for a case file.
+      call run_expect(error, dir, 'run --thread 2', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'did you mean "--threads"?', 'run --thread')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --set position%t_y 3', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'expected GROUP%NAME=VALUE', 'run --set position%t_y 3')
       call shell('rm -rf '//dir)
    end subroutine test_foreign_options
 
@@ -416,6 +438,52 @@ contains
          '"nu_y":-0.001,"phi":0.000274,', 'json inputs')
       call shell('rm -rf '//dir)
    end subroutine test_inputs_and_units
+
+   !> doc/app.md's sample output of `shcontact run examples/kinematic.nml` is what the program
+   !> prints now: every line of the block is a line of the program's stdout.
+   subroutine test_kinematic_sample(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_kin_sample')
+      call run_expect(error, dir, 'run '//current_directory()//'/examples/kinematic.nml', 0, &
+         out, err)
+      if (allocated(error)) return
+      call shell("sed -n '/^\$ shcontact run examples\/kinematic.nml$/,/^```$/p' doc/app.md | "// &
+         "sed '1d;$d' > "//dir//'/doc.txt && test -s '//dir//'/doc.txt && ! grep -vxFf '// &
+         dir//'/out.txt '//dir//'/doc.txt > '//dir//'/stale.txt', stat)
+      call check(error, stat, 0, message='doc/app.md''s kinematic sample output differs from '// &
+         'the program''s: '//file_text(dir//'/stale.txt'))
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_kinematic_sample
+
+   !> `run --no-output` solves a sweep and prints its lines but writes no file at all (no
+   !> result, no checkpoint, no sidecar); with -o or --resume it is a usage error.
+   subroutine test_no_output(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_no_output')
+      call run_expect(error, dir, 'run --no-output --format csv --set sweep%t_y=0,4 '// &
+         '--set sweep%t_y_points=3', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(out, new_line('a')//'3,0,') > 0, message='three case lines: '//out)
+      if (allocated(error)) return
+      call expect_in(error, err, 'no result file (--no-output)', 'the closing note')
+      if (allocated(error)) return
+      call shell('test -z "$(ls -A '//dir//' | grep -vxE ''out.txt|err.txt'')"', stat)
+      call check(error, stat, 0, message='--no-output left files in '//dir)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --no-output -o x.h5', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'it goes with neither -o nor --resume', '--no-output -o')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --no-output --resume', 1, out, err)
+      call shell('rm -rf '//dir)
+   end subroutine test_no_output
 
    !> A kinematic case's lines carry the wheelset inputs, the load and the friction.
    subroutine test_kinematic_inputs(error)

@@ -9,6 +9,7 @@ module test_config
       read_config_text, config_namelist, axis_geometry, axis_load, n_sweep_axes, &
       sweep_axis_names
    use shcontact_io_text, only: format_real
+   use shcontact_io_config_variables, only: variables
    use shcontact_io_files, only: delete_file, process_id
    implicit none
    private
@@ -231,6 +232,11 @@ contains
          '  nux = 1e-3', '/'], [character(len=40) :: 'unknown_var.nml:2', '&creepage', &
          'unknown variable "nux"', 'did you mean "nu_x"', 'nu_x, nu_y, phi'], &
          stat_invalid_input)
+      if (allocated(error)) return
+      ! A variable of another group is named as such, not taken for a misspelling.
+      call expect_error(error, 'other_group_var', [character(len=40) :: '&creepage', &
+         '  t_y = 3', '/'], [character(len=40) :: 'other_group_var.nml:2', &
+         'unknown variable "t_y"', 'it belongs to &position'], stat_invalid_input)
    end subroutine test_unknown_variable
 
    subroutine test_unknown_group(error)
@@ -401,6 +407,14 @@ contains
       call check(error, d%profiles%wheel == "it's.prw", message='quotes in strings')
       if (allocated(error)) return
       call check(error, d%n_cases() == 42 .and. d%track%rail_canted, message='sweep and logical')
+      if (allocated(error)) return
+      ! Every help comment is whole: none fills its field (a longer one would be cut), and the
+      ! longest ones end as written.
+      call check(error, all(len_trim(variables%help) < len(variables%help)), &
+         message='a variable''s help text fills its field and may be cut')
+      if (allocated(error)) return
+      call check(error, index(text, "or 'spin' (L_phi, Kalker's FASTSIM)") > 0 .and. &
+         index(text, "or 'none' (the march's forces)") > 0, message='help comments cut')
    end subroutine test_round_trip
 
    subroutine test_format_real(error)

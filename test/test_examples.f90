@@ -96,6 +96,11 @@ contains
          run('ls '//prefix//'/include/shcontact/ | grep -E "^(shcontact_app|bench_|'// &
          'validate_)"') /= 0, message='modules other than the library''s installed in '//prefix)
       if (allocated(error)) return
+      ! One module per source file under src/ (doc/api.md §4 says so).
+      call check(error, run('test $(ls '//prefix//'/include/shcontact/*.mod | wc -l) -eq '// &
+         '$(find src -name "*.[fF]90" | wc -l)') == 0, message='the installed modules are '// &
+         'not one per source file under src/ (doc/api.md §4)')
+      if (allocated(error)) return
       call check(error, exists(prefix//'/lib/cmake/shcontact/shcontactConfig.cmake') .and. &
          exists(prefix//'/lib/cmake/shcontact/shcontactConfigVersion.cmake'), &
          message='CMake package files missing in '//prefix//'/lib/cmake/shcontact')
@@ -218,12 +223,17 @@ contains
          message=name//': fn')
    end subroutine run_headline
 
-   !> The fixed-form Fortran 77 example.
+   !> The fixed-form Fortran 77 example; it ends without gfortran's note on floating-point
+   !> flags on stderr (it ends at END, not at STOP).
    subroutine test_f77(error)
       type(error_type), allocatable, intent(out) :: error
       call example_test('gfortran', 'gfortran examples/legacy_f77/headline.f $('//pkg_config// &
          ' --cflags --libs shcontact) -o '//scratch//'/f77_headline', &
          scratch//'/f77_headline', 'f77', error)
+      if (allocated(error)) return
+      call check(error, run(scratch//'/f77_headline > /dev/null 2> '//output('f77_stderr')// &
+         ' && ! grep -q "floating-point" '//output('f77_stderr')), 0, &
+         message='the F77 example ends with a note on stderr: see '//output('f77_stderr'))
    end subroutine test_f77
 
    !> The C example.
@@ -406,7 +416,8 @@ contains
    !> SHC_SOLVE_KIN) built against the installed library and run for 0.05 s from a 3 mm offset:
    !> no failed contact call, finite forces, each wheel carrying about its 64.7 kN, a lateral
    !> contact force that opposes the offset at the start, and the wheelset moving back towards
-   !> the track centre.
+   !> the track centre; nothing on stderr about floating-point flags; `--help` prints the usage
+   !> with status 0.
    subroutine test_vehicle(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: csv = scratch//'/vehicle.csv'
@@ -421,8 +432,15 @@ contains
          output('vehicle_build'))
       if (allocated(error)) return
       call check(error, run(scratch//'/wheelset --duration 0.05 --dt 2.5e-4 --every 1 --csv '// &
-         csv//' > '//output('vehicle')), 0, message='the vehicle example failed: see '// &
-         output('vehicle'))
+         csv//' > '//output('vehicle')//' 2> '//output('vehicle_stderr')), 0, &
+         message='the vehicle example failed: see '//output('vehicle'))
+      if (allocated(error)) return
+      call check(error, run('! grep -q "floating-point" '//output('vehicle_stderr')), 0, &
+         message='the vehicle example ends with a note on stderr: '//output('vehicle_stderr'))
+      if (allocated(error)) return
+      call check(error, run(scratch//'/wheelset --help > '//output('vehicle_help')//' 2>&1 '// &
+         '&& grep -q "^usage: wheelset" '//output('vehicle_help')), 0, &
+         message='wheelset --help: no usage, or a non-zero status: '//output('vehicle_help'))
       if (allocated(error)) return
       failed = value_of(output('vehicle'), 'failed_calls')
       call check(error, failed, 0.0_wp, message='failed contact calls')

@@ -1,4 +1,4 @@
-!> Tests of classical three-flexibility FASTSIM on a Hertz ellipse (physics.md §3).
+!> Tests of classical three-flexibility FASTSIM on a Hertz ellipse (doc/theory.md §3).
 module test_fastsim
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use testdrive, only: new_unittest, unittest_type, error_type, check
@@ -17,7 +17,7 @@ module test_fastsim
    private
    public :: collect_fastsim
 
-   !> The reference case of physics.md §3.5 (CONTACT examples/fastsim.inp).
+   !> The reference case of doc/theory.md §3.5 (CONTACT examples/fastsim.inp).
    real(wp), parameter :: ref_a = 8.0_wp, ref_b = 4.0_wp, ref_load = 82000.0_wp
    real(wp), parameter :: ref_eta = -6.25e-4_wp, ref_phi = 6.25e-4_wp
    real(wp), parameter :: ref_g = 82000.0_wp
@@ -66,7 +66,7 @@ contains
    end subroutine fastsim_case
 
    !> Unsaturated forces equal Kalker's linear theory F_x = −Gc²c₁₁ν_x, F_y = −Gc²c₂₂ν_y − Gc³c₂₃φ
-   !> (physics.md §2.1, §3.5): within 0.5 % at 50 × 50 and converging as the grid is refined.
+   !> (doc/theory.md §2.1, §3.5): within 0.5 % at 50 × 50 and converging as the grid is refined.
    subroutine test_linear_forces(error)
       type(error_type), allocatable, intent(out) :: error
       call check_linear(error, ref_a, ref_b)
@@ -168,7 +168,7 @@ contains
       end do
    end subroutine test_full_slip
 
-   !> physics.md §3.5: f_y = −0.648 (parabolic) and −0.597 (ellipsoidal) at 200 × 200, ±0.005;
+   !> doc/theory.md §3.5: f_y = −0.648 (parabolic) and −0.597 (ellipsoidal) at 200 × 200, ±0.005;
    !> f_x = 0 by symmetry (spin about the ellipse centre). Both Kalker schemes (a/b = 2 is a node).
    subroutine test_reference_case(error)
       type(error_type), allocatable, intent(out) :: error

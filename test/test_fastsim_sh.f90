@@ -1,4 +1,4 @@
-!> Tests of FASTSIM_SH (physics.md §6), its options, spin models and the multi-patch solver.
+!> Tests of FASTSIM_SH (doc/theory.md §6), its options, spin models and the multi-patch solver.
 module test_fastsim_sh
    use, intrinsic :: iso_c_binding, only: c_loc, c_intptr_t
    use testdrive, only: new_unittest, unittest_type, error_type, check
@@ -26,7 +26,7 @@ module test_fastsim_sh
    private
    public :: collect_fastsim_sh
 
-   !> The Hertz case of physics.md §3.5.
+   !> The Hertz case of doc/theory.md §3.5.
    real(wp), parameter :: ref_a = 8.0_wp, ref_b = 4.0_wp, ref_load = 82000.0_wp
    real(wp), parameter :: ref_g = 82000.0_wp, ref_nu = 0.28_wp, ref_mu = 0.3_wp
    real(wp), parameter :: ref_eta = -6.25e-4_wp, ref_phi = 6.25e-4_wp
@@ -204,7 +204,7 @@ contains
 
    !> On a Hertzian patch (quadratic gap, constant γ, linear δr) FASTSIM_SH equals classical
    !> FASTSIM at the same n_x × n_y to round-off, for every bound, with the additive and uniform
-   !> spin models at any φ and the scaled and geometric ones at φ = φ_geo,0 (physics.md §6.2–6.3).
+   !> spin models at any φ and the scaled and geometric ones at φ = φ_geo,0 (doc/theory.md §6.2–6.3).
    subroutine test_equals_fastsim(error)
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: nx = 30, ny = 24
@@ -246,7 +246,7 @@ contains
       end do
    end subroutine test_equals_fastsim
 
-   !> Unsaturated FASTSIM_SH on a Hertzian patch gives Kalker's linear forces (physics.md §6.5
+   !> Unsaturated FASTSIM_SH on a Hertzian patch gives Kalker's linear forces (doc/theory.md §6.5
    !> test 2) for the bounds that keep the slope (all but W1), within 0.5 % at 50 × 50.
    subroutine test_linear_limit(error)
       type(error_type), allocatable, intent(out) :: error
@@ -276,7 +276,7 @@ contains
       end do
    end subroutine test_linear_limit
 
-   !> W1 raises the small-creepage ν_x and ν_y slopes by 9π²/64 on an ellipse (physics.md §6.4):
+   !> W1 raises the small-creepage ν_x and ν_y slopes by 9π²/64 on an ellipse (doc/theory.md §6.4):
    !> at a/b = 2, n_y = 50 the factor is 1.314 (n_x = 50), 1.351 (200), 1.370 (800); the error
    !> decays like n_x^{-1/2}, so 2 f(800) − f(200) extrapolates to 9π²/64.
    subroutine test_w1_factor(error)
@@ -311,7 +311,7 @@ contains
    end subroutine test_w1_factor
 
    !> The W1 weighting changes the spin force strip by strip (factor 9π/(32 k_i)) but not its
-   !> total on an ellipse (physics.md §6.4): F_y(W1)/F_y(parabolic) → 1 for pure spin.
+   !> total on an ellipse (doc/theory.md §6.4): F_y(W1)/F_y(parabolic) → 1 for pure spin.
    subroutine test_w1_spin(error)
       type(error_type), allocatable, intent(out) :: error
       type(normal_patch_type) :: patch
@@ -337,7 +337,7 @@ contains
 
    !> max|p|/(μ p_n,e) ≤ 1 for ellipsoidal, W1, W2, W3 on a non-Hertzian patch in partial slip;
    !> = 1 for the ellipsoidal bound (some element slips); > 1 for the pure parabolic bound, whose
-   !> peak exceeds the semi-elliptic pressure where k_i > 3/4 (physics.md §6.4).
+   !> peak exceeds the semi-elliptic pressure where k_i > 3/4 (doc/theory.md §6.4).
    subroutine test_coulomb(error)
       type(error_type), allocatable, intent(out) :: error
       type(tangential_patch_type) :: res
@@ -449,7 +449,7 @@ contains
    end function field_coulomb_ratio
 
    !> Full slip: |F| → μF_n for ellipsoidal, W1 and W2 (they coincide in full slip), μ F_n × the
-   !> parabolic load ratio for the pure parabolic bound (physics.md §6.5 test 3). W3 (clip) gives
+   !> parabolic load ratio for the pure parabolic bound (doc/theory.md §6.5 test 3). W3 (clip) gives
    !> μ∬min(p_n,p, p_n,e) < μF_n, contrary to §6.5 test 3 (see doc/tangential.md).
    subroutine test_full_slip(error)
       type(error_type), allocatable, intent(out) :: error
@@ -510,7 +510,7 @@ contains
    end subroutine test_parabolic_ratio
 
    !> Mirror symmetry (ν_y, φ, y) → (−ν_y, −φ, −y) with the mirrored geometry (γ → −γ): F_x and
-   !> the p_x field keep their values, F_y, M_z and p_y change sign (physics.md §6.5 test 4), for
+   !> the p_x field keep their values, F_y, M_z and p_y change sign (doc/theory.md §6.5 test 4), for
    !> every spin model and bound.
    subroutine test_mirror(error)
       type(error_type), allocatable, intent(out) :: error
@@ -595,7 +595,7 @@ contains
          all(d(3, :) < 2e-3_wp), message=trim(msg))
    end subroutine test_convergence_ny
 
-   !> physics.md §6.2 on a curved patch: additive and scaled equal geometric when φ = φ_geo,0;
+   !> doc/theory.md §6.2 on a curved patch: additive and scaled equal geometric when φ = φ_geo,0;
    !> with φ = 0, the uniform model has no spin at all (F_y = 0 against ν_x alone) while the
    !> additive one keeps the geometric spin variation (F_y ≠ 0).
    subroutine test_spin_models(error)

@@ -1,4 +1,4 @@
-!> Tests of the wheel–rail geometry (physics.md §4.1, §5.2–5.4): rail placement, contact search
+!> Tests of the wheel–rail geometry (doc/theory.md §4.1, §5.2–5.4): rail placement, contact search
 !> and strip tables on analytic profiles with exactly known gaps and curvatures.
 module test_geometry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
@@ -20,6 +20,7 @@ module test_geometry
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_prepared, only: sample_block
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
+   use test_external_data, only: external_file
    implicit none
    private
    public :: collect_geometry
@@ -28,9 +29,11 @@ module test_geometry
 
    !> Nominal rolling radius used by the analytic cases (mm).
    real(wp), parameter :: r_nom = 460.0_wp
-   !> Shared data: sample profiles and CONTACT's reference results.
-   character(len=*), parameter :: profiles_dir = '../shared/profiles/'
-   character(len=*), parameter :: reference_dir = '../shared/reference/'
+   !> External data (SHCONTACT_EXTERNAL_DATA, test_external_data): sample profiles and
+   !> CONTACT's reference results.
+   character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
+      mbench_rail = 'profiles/MBench_UIC60_v3.prr', &
+      ty0_summary = 'reference/ty0_literal/summary.csv'
    !> Environment variable naming a file for the Manchester scan table (doc/geometry.md).
    character(len=*), parameter :: scan_file_variable = 'SHCONTACT_GEOMETRY_SCAN'
 
@@ -745,22 +748,18 @@ contains
    !> A measured MiniProf wheel (origin at the flange back) on the built-in UIC60 1:40 at
    !> y_ws = 0 with flange_back_position = 0: a tread contact (γ₀ < 0, |γ₀| < 0.1 rad) with a
    !> rolling radius within 3 mm of the nominal 460 mm (with the tape circle taken at the origin,
-   !> the flange back, r₀ was 479 mm). Skipped when ../shared is absent.
+   !> the flange back, r₀ was 479 mm). Skipped without the external data.
    subroutine test_miniprof_wheel(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: file = profiles_dir//'Car7216_0001r.whl'
+      character(len=:), allocatable :: file
       type(patch_geometry_type), allocatable :: patches(:)
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(lib_error), allocatable :: err
       integer, allocatable :: lines(:)
-      logical :: there
 
-      inquire (file=file, exist=there)
-      if (.not. there) then
-         call skip_test(error, file//' is absent')
-         return
-      end if
+      file = external_file('profiles/Car7216_0001r.whl', error)
+      if (allocated(error)) return
       call read_profile(file, wheel, err, line_of_point=lines)
       if (.not. allocated(err)) call clean_profile(wheel, err, lines)
       if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
@@ -779,8 +778,8 @@ contains
    ! ---------------------------------------------------------------- Manchester benchmark
 
    !> S1002 (MBench_S1002_v3.prw) on UIC60 1:40 (MBench_UIC60_v3.prr, already canted) with the
-   !> benchmark's track (physics.md §5.2), read and cleaned as the program does; skipped when
-   !> ../shared is absent.
+   !> benchmark's track (doc/theory.md §5.2), read and cleaned as the program does; skipped without
+   !> the external data.
    subroutine manchester(prep, error, options)
       type(prepared_profiles_type), intent(out) :: prep
       type(error_type), allocatable, intent(out) :: error
@@ -790,16 +789,14 @@ contains
       type(track_type) :: track
       type(contact_options_type) :: opts
       type(lib_error), allocatable :: err
-      logical :: there
+      character(len=:), allocatable :: wheel_file, rail_file
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, profiles_dir//' is absent')
-         return
-      end if
-      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
+      wheel_file = external_file(mbench_wheel, error)
+      if (.not. allocated(error)) rail_file = external_file(mbench_rail, error)
+      if (allocated(error)) return
+      call read_profile(wheel_file, wheel, err)
       if (.not. allocated(err)) call clean_profile(wheel, err)
-      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
+      if (.not. allocated(err)) call read_profile(rail_file, rail, err)
       if (.not. allocated(err)) call clean_profile(rail, err)
       track%rail_canted = .true.
       if (present(options)) opts = options
@@ -818,7 +815,7 @@ contains
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine manchester_patches
 
-   !> The gauge rule puts the Manchester rail origin at y = 760.53 mm (physics.md §5.2).
+   !> The gauge rule puts the Manchester rail origin at y = 760.53 mm (doc/theory.md §5.2).
    subroutine test_manchester_rail(error)
       type(error_type), allocatable, intent(out) :: error
       type(prepared_profiles_type) :: prep
@@ -831,9 +828,9 @@ contains
    end subroutine test_manchester_rail
 
    !> Centred wheelset (y_ws = 0, no yaw): the reference point is CONTACT's geometric contact
-   !> point of the same case (../shared/reference/ty0_literal/summary.csv: the weighted centre
-   !> ycp_tr plus y_geo along the contact plane at angle delt) within 0.05 mm; γ₀ is the slope of
-   !> the R300 crown (physics.md §5.2, top at the rail origin) at y_rail, atan(y_rail/300),
+   !> point of the same case (the external data's reference/ty0_literal/summary.csv: the weighted
+   !> centre ycp_tr plus y_geo along the contact plane at angle delt) within 0.05 mm; γ₀ is the slope of
+   !> the R300 crown (doc/theory.md §5.2, top at the rail origin) at y_rail, atan(y_rail/300),
    !> within 0.3 mrad; A and B at the point agree with CONTACT's local curvatures A1_local
    !> (1 %) and B1_local (3 %: CONTACT fits a quadratic over ±0.6 mm).
    subroutine test_manchester_ty0(error)
@@ -843,16 +840,19 @@ contains
       real(wp) :: ycp, delt, y_geo, a1, b1, y_expected
       integer :: i0
       logical :: found
+      character(len=:), allocatable :: summary
 
       call manchester(prep, error)
       if (allocated(error)) return
-      call reference_value('ycp_tr', ycp, found)
-      if (found) call reference_value('delt', delt, found)
-      if (found) call reference_value('y_geo', y_geo, found)
-      if (found) call reference_value('A1_local', a1, found)
-      if (found) call reference_value('B1_local', b1, found)
+      summary = external_file(ty0_summary, error)
+      if (allocated(error)) return
+      call reference_value(summary, 'ycp_tr', ycp, found)
+      if (found) call reference_value(summary, 'delt', delt, found)
+      if (found) call reference_value(summary, 'y_geo', y_geo, found)
+      if (found) call reference_value(summary, 'A1_local', a1, found)
+      if (found) call reference_value(summary, 'B1_local', b1, found)
       if (.not. found) then
-         call skip_test(error, reference_dir//'ty0_literal/summary.csv is absent or incomplete')
+         call test_failed(error, summary//' is incomplete')
          return
       end if
       y_expected = ycp + y_geo*cos(delt)
@@ -877,9 +877,9 @@ contains
       end associate
    end subroutine test_manchester_ty0
 
-   !> One value of ty0_literal/summary.csv (`key,value,unit,note`).
-   subroutine reference_value(key, val, found)
-      character(len=*), intent(in) :: key
+   !> One value of a summary.csv of CONTACT's reference (`key,value,unit,note`).
+   subroutine reference_value(file, key, val, found)
+      character(len=*), intent(in) :: file, key
       real(wp), intent(out) :: val
       logical, intent(out) :: found
       character(len=400) :: line
@@ -887,7 +887,7 @@ contains
 
       val = 0.0_wp
       found = .false.
-      open (newunit=unit, file=reference_dir//'ty0_literal/summary.csv', status='old', &
+      open (newunit=unit, file=file, status='old', &
          action='read', iostat=stat)
       if (stat /= 0) return
       do
@@ -904,7 +904,7 @@ contains
       close (unit)
    end subroutine reference_value
 
-   !> y_ws = 5 mm (cf. physics.md §5.6, where CONTACT finds two regions near this shift): the
+   !> y_ws = 5 mm (cf. doc/theory.md §5.6, where CONTACT finds two regions near this shift): the
    !> tread and the gauge corner both touch or nearly so, and both are found, with basins that
    !> meet at the ridge between them and tables that run on into the neighbour's basin.
    subroutine test_manchester_two_patches(error)
@@ -950,7 +950,7 @@ contains
    !> Scan y_ws = 0…10 mm in steps of 0.05 mm: the deepest contact point moves continuously
    !> (less than 1 mm per step) except at three jumps — inside the tread near 0.25 mm, to the
    !> gauge corner near 5 mm and onto the flange between 6 and 7 mm (CONTACT's yawed rows,
-   !> physics.md §5.6: between 0 and 0.5, 4.5 and 5, 6 and 6.5) — and agrees with the table's
+   !> doc/theory.md §5.6: between 0 and 0.5, 4.5 and 5, 6 and 6.5) — and agrees with the table's
    !> unyawed-like rows on the tread (y_ws = 2, 4) within 1 mm. When the environment variable
    !> SHCONTACT_GEOMETRY_SCAN names a file, the scan is written there (doc/geometry.md).
    subroutine test_manchester_scan(error)
@@ -1246,7 +1246,9 @@ contains
    end subroutine check_fast_scan
 
    !> prepare_wheel on profiles prepared with another wheel gives the profiles that
-   !> prepare_profiles gives for the new wheel: the same patches, bit for bit.
+   !> prepare_profiles gives for the new wheel: the same patches, bit for bit. The other wheel
+   !> is the built-in S1002 with every second point and a tread hollowed by up to 0.3 mm (worn):
+   !> other points, another point count, another shape.
    subroutine test_prepare_wheel(error)
       type(error_type), allocatable, intent(out) :: error
       type(prepared_profiles_type) :: swapped, direct
@@ -1254,16 +1256,16 @@ contains
       type(profile_type) :: wheel, other, rail
       type(lib_error), allocatable :: err
       integer :: i, k
-      logical :: there
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, profiles_dir//' is absent')
-         return
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) then
+         other%source = 'worn S1002'
+         other%kind = wheel%kind
+         other%y = wheel%y(1::2)
+         other%z = wheel%z(1::2) + 0.3_wp*exp(-(other%y/20.0_wp)**2)
+         call other%update_arc_length()
+         call clean_profile(other, err)
       end if
-      call read_profile(profiles_dir//'MBench_S1002_v3.prw', other, err)
-      if (.not. allocated(err)) call clean_profile(other, err)
-      if (.not. allocated(err)) call builtin_profile('S1002', wheel, err)
       if (.not. allocated(err)) call builtin_profile('UIC60', rail, err)
       if (.not. allocated(err)) call prepare_profiles(wheel, rail, track_type(), &
          contact_options_type(), swapped, err)

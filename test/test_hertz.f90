@@ -1,4 +1,4 @@
-!> Tests of Hertz theory (physics.md §1.3–1.5) against the published values and the closed forms.
+!> Tests of Hertz theory (doc/theory.md §1.3–1.5) against the published values and the closed forms.
 module test_hertz
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
@@ -36,7 +36,7 @@ contains
          ]
    end subroutine collect_hertz
 
-   !> physics.md §1.4: m, n, r and b/a against θ, cos θ = |B − A|/(A + B), to the table's
+   !> doc/theory.md §1.4: m, n, r and b/a against θ, cos θ = |B − A|/(A + B), to the table's
    !> 4 decimals.
    subroutine test_mnr_table(error)
       type(error_type), allocatable, intent(out) :: error
@@ -72,7 +72,7 @@ contains
       end do
    end subroutine test_mnr_table
 
-   !> physics.md §1.4: a/b (4 significant digits) and ε_a (4 decimals) against A/B ≤ 1.
+   !> doc/theory.md §1.4: a/b (4 significant digits) and ε_a (4 decimals) against A/B ≤ 1.
    subroutine test_eps_table(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: ratio(13) = [0.01_wp, 0.02_wp, 0.05_wp, 0.1_wp, 0.2_wp, 0.3_wp, &
@@ -125,7 +125,7 @@ contains
       end do
    end subroutine test_swapped_ratio
 
-   !> physics.md §1.5, CONTACT examples/fastsim (G = 82 000, ν = 0.28, N = 82 kN): the curvatures
+   !> doc/theory.md §1.5, CONTACT examples/fastsim (G = 82 000, ν = 0.28, N = 82 kN): the curvatures
    !> A = 0.8464e-3, B = 2.406e-3 1/mm give a = 8.0000, b = 4.0001, δ = 0.092668 mm,
    !> p₀ = 1223.46 MPa; the inverse problem from a = 8, b = 4 gives those curvatures back (to their
    !> 4 digits), ρ_eff = 614.9 mm and c = 5.657 mm.
@@ -169,7 +169,7 @@ contains
       call check(error, sol%b, 4.0_wp, thr=1.0e-12_wp, message='b round trip')
    end subroutine test_fastsim_case
 
-   !> physics.md §1.5, seed-like data: A = 1/920, B = 1/600, G = 82 670, ν = 0.27, N = 64.7 kN
+   !> doc/theory.md §1.5, seed-like data: A = 1/920, B = 1/600, G = 82 670, ν = 0.27, N = 64.7 kN
    !> ⇒ a = 6.2329, b = 4.6885, δ = 0.07886, p₀ = 1057.1.
    subroutine test_seed_case(error)
       type(error_type), allocatable, intent(out) :: error
@@ -190,7 +190,7 @@ contains
       call check(error, sol%p0, 1057.1_wp, thr=0.0501_wp, message='p0')
    end subroutine test_seed_case
 
-   !> physics.md §1.5: circle R = 460 mm (A = B = 1/920) ⇒ a = b = 5.8197, δ = 0.07363 = a²/R.
+   !> doc/theory.md §1.5: circle R = 460 mm (A = B = 1/920) ⇒ a = b = 5.8197, δ = 0.07363 = a²/R.
    subroutine test_circle(error)
       type(error_type), allocatable, intent(out) :: error
       type(lib_error), allocatable :: err

@@ -1,4 +1,4 @@
-!> Tests of Kalker's creepage coefficients (physics.md §2).
+!> Tests of Kalker's creepage coefficients (doc/theory.md §2).
 module test_kalker
    use testdrive, only: new_unittest, unittest_type, error_type, check
    use shcontact_core_kinds, only: wp
@@ -70,7 +70,7 @@ contains
    end subroutine check_nodes
 
    !> At ν = 0 the two directions cannot be told apart: c₁₁ = c₂₂ for every a/b (table, blend
-   !> and asymptotes; physics.md §2.2).
+   !> and asymptotes; doc/theory.md §2.2).
    subroutine test_nu_zero(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: ab, c11, c22, c23
@@ -116,7 +116,7 @@ contains
    end subroutine test_blend_continuity
 
    !> Below g = 0.08 the default is the asymptote itself; the asymptotes' values at g = 0.1, ν = 0
-   !> are those of physics.md §2.3 (c₁₁ 2.467 for a/b = 0.1, 10.38 for b/a = 0.1); CONTACT's
+   !> are those of doc/theory.md §2.3 (c₁₁ 2.467 for a/b = 0.1, 10.38 for b/a = 0.1); CONTACT's
    !> scheme switches to them below g = 0.101.
    subroutine test_asymptotes(error)
       type(error_type), allocatable, intent(out) :: error
@@ -147,7 +147,7 @@ contains
          message='CONTACT scheme = asymptote below g = 0.101')
    end subroutine test_asymptotes
 
-   !> physics.md §2.3, CONTACT scheme: (ν, a/b) = (0.27, 1): 4.1903/3.6932/1.4820;
+   !> doc/theory.md §2.3, CONTACT scheme: (ν, a/b) = (0.27, 1): 4.1903/3.6932/1.4820;
    !> (0.28, 2): 5.2037/4.9715/2.6566; (0.27, 1.3294): 4.5151/4.1268/1.8611 (to the printed
    !> 4 decimals); ν = 0.27, a/b = 1.5, 4, 7: the table's 4-digit values.
    subroutine test_samples_contact(error)
@@ -171,7 +171,7 @@ contains
          [10.10_wp, 10.97_wp, 11.35_wp], 5.1e-3_wp)
    end subroutine test_samples_contact
 
-   !> physics.md §2.3, "linear in g of g·c" column (ν = 0.27): a/b = 1.5: 4.681/4.333/2.051,
+   !> doc/theory.md §2.3, "linear in g of g·c" column (ν = 0.27): a/b = 1.5: 4.681/4.333/2.051,
    !> 4: 6.988/7.187/5.274, 7: 9.43/10.15/9.73; at a/b = 1 and 2 (table rows) the schemes agree.
    subroutine test_samples_scaled(error)
       type(error_type), allocatable, intent(out) :: error

@@ -24,6 +24,7 @@ module test_kinematics
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
       wheel_left
+   use test_external_data, only: external_file
    implicit none
    private
 
@@ -527,21 +528,17 @@ contains
 
    !> A MiniProf wheel file through the solver object: without a track, its flange back is at 0
    !> (its origin), as with the explicit track; the S1002 default −70 mm gives another contact.
-   !> Skipped without ../shared/profiles.
+   !> Skipped without the external data (test_external_data).
    subroutine test_miniprof_origin(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: wheel_file = '../shared/profiles/Car7216_0001r.whl'
+      character(len=:), allocatable :: wheel_file
       type(contact_solver_type) :: auto, explicit, s1002_origin
       type(contact_result_type) :: a, e, w
       type(lib_error), allocatable :: err
       type(contact_options_type) :: smoothing
-      logical :: there
 
-      inquire (file=wheel_file, exist=there)
-      if (.not. there) then
-         call skip_test(error, wheel_file//' is absent')
-         return
-      end if
+      wheel_file = external_file('profiles/Car7216_0001r.whl', error)
+      if (allocated(error)) return
       smoothing%l_filt_wheel = 2.0_wp
       call auto%init(wheel_file, 'builtin:UIC60', err, contact_options=smoothing)
       if (.not. allocated(err)) call explicit%init(wheel_file, 'builtin:UIC60', err, &

@@ -12,7 +12,9 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('module_prefix', test_module_prefix), &
-         new_unittest('version_matches_manifest', test_version) &
+         new_unittest('version_matches_manifest', test_version), &
+         new_unittest('cited_docs_exist', test_citations), &
+         new_unittest('citation_check_catches_bad_ones', test_citation_check) &
          ]
    end subroutine collect_layout
 
@@ -57,5 +59,53 @@ contains
       close (unit)
       call test_failed(error, 'no version line in fpm.toml')
    end subroutine test_version
+
+   !> Every doc/*.md path cited in a source (src/, app/, test/, examples/, include/, scripts/)
+   !> exists, with the cited heading (§N) or decision when one is given; nothing cites the
+   !> team's former physics notes outside the repository, and src/, app/, test/, include/ do
+   !> not refer to the external data's folder (scripts/check_citations prints each bad one).
+   subroutine test_citations(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat, cmdstat
+      call execute_command_line('bash scripts/check_citations', exitstat=stat, cmdstat=cmdstat)
+      if (cmdstat /= 0) then
+         call skip_test(error, 'no shell to run scripts/check_citations')
+         return
+      end if
+      call check(error, stat, 0, message='a source cites a missing doc, heading or decision, '// &
+         'or a file outside the repository (see the lines above)')
+   end subroutine test_citations
+
+   !> The check itself fails on a scratch tree with one bad citation of each kind (a missing
+   !> file, a missing heading, a missing decision, the former physics notes) and passes on the
+   !> same tree with the good ones only. (The citations are built from pieces here so that this
+   !> file does not cite them itself.)
+   subroutine test_citation_check(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: tree = 'build/citation_check'
+      character(len=*), parameter :: doc = 'doc/', t = doc//'t.md'
+      character(len=*), parameter :: bad(4) = [character(len=40) :: '! see '//doc//'none.md', &
+         '! see '//t//' §1.3', '! see '//t//' decision 2', '! see physics'//'.md §1.2']
+      integer :: stat, cmdstat, k
+      call execute_command_line('rm -rf '//tree//' && mkdir -p '//tree//'/src '//tree// &
+         '/doc && printf ''## 1. One\n### 1.2 Two\n## Project decisions\n\n1. **A**\n'' > '// &
+         tree//'/'//t//' && printf ''! '//t//' §1.2, '//t//' decision 1, '//t//'\n'' > '// &
+         tree//'/src/good.f90 && bash scripts/check_citations '//tree, exitstat=stat, &
+         cmdstat=cmdstat)
+      if (cmdstat /= 0) then
+         call skip_test(error, 'no shell to run scripts/check_citations')
+         return
+      end if
+      call check(error, stat, 0, message='check_citations refuses good citations')
+      if (allocated(error)) return
+      do k = 1, size(bad)
+         call execute_command_line('printf ''%s\n'' '''//trim(bad(k))//''' > '//tree// &
+            '/src/bad.f90 && bash scripts/check_citations '//tree//' 2> /dev/null', &
+            exitstat=stat)
+         call check(error, stat /= 0, message='check_citations accepts: '//trim(bad(k)))
+         if (allocated(error)) return
+      end do
+      call execute_command_line('rm -rf '//tree)
+   end subroutine test_citation_check
 
 end module test_layout

@@ -1,4 +1,4 @@
-!> Tests of the normal loading cases (physics.md §4.5–4.6): the Hertz method on a patch, and a
+!> Tests of the normal loading cases (doc/theory.md §4.5–4.6): the Hertz method on a patch, and a
 !> vertical wheel load shared by several patches through one rigid approach.
 module test_normal_loading
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
@@ -26,7 +26,7 @@ module test_normal_loading
    private
    public :: collect_normal_loading
 
-   !> Tread patch: seed-like curvatures (physics.md §1.5), contact angle −0.03 rad.
+   !> Tread patch: seed-like curvatures (doc/theory.md §1.5), contact angle −0.03 rad.
    real(wp), parameter :: tread_a = 1.0_wp/920, tread_b = 1.0_wp/600, tread_gamma = -0.03_wp
    !> Flange-root patch: sharper lateral curvature, contact angle −0.9 rad, 0.01 mm gap.
    real(wp), parameter :: flange_a = 0.62_wp/920, flange_b = 1.0_wp/60, flange_gamma = -0.9_wp

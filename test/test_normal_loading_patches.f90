@@ -1,5 +1,5 @@
 !> Tests of a vertical wheel load shared by more patches than the coupled reduction solves
-!> together (physics.md §4.6, shcontact_normal_coupling): beyond [[max_patches]] the least loaded
+!> together (doc/theory.md §4.6, shcontact_normal_coupling): beyond [[max_patches]] the least loaded
 !> patches are coupled alone, and beyond the patches the loading can place along the profile
 !> every patch is. The vertical balance holds in every case.
 module test_normal_loading_patches
@@ -19,7 +19,7 @@ module test_normal_loading_patches
    private
    public :: collect_normal_loading_patches
 
-   !> Tread-like patches (seed curvatures, physics.md §1.5) in a row along the profile.
+   !> Tread-like patches (seed curvatures, doc/theory.md §1.5) in a row along the profile.
    real(wp), parameter :: tread_a = 1.0_wp/920, tread_b = 1.0_wp/600
    !> Spacing of the reference points along the profile (mm): neighbours' loaded extents are
    !> within the combination distance, so placed patches press each other.

@@ -28,7 +28,7 @@ module test_performance_invariants
    private
    public :: collect_performance_invariants
 
-   !> Seed-like tread patch (physics.md §1.5) with a cubic term, and the seed's load.
+   !> Seed-like tread patch (doc/theory.md §1.5) with a cubic term, and the seed's load.
    real(wp), parameter :: tread_a = 1.0_wp/920, tread_b = 1.0_wp/600, tread_c3 = 4.0e-5_wp
    real(wp), parameter :: seed_load = 64700.0_wp
    integer, parameter :: all_bounds(5) = [bound_ellipsoidal, bound_parabolic, bound_weighted, &
@@ -432,7 +432,7 @@ contains
    !> from the first-contact point while cover < δ; it holds every table point in contact
    !> (touch < δ), also when the gap is not monotonic (a second basin at |y| = 6 mm that comes
    !> into contact before the bump between them), and where cover = touch at both points of its
-   !> end cell it ends where ψ = ε_b δ − g, linear on each cell, crosses zero (physics.md §4.3).
+   !> end cell it ends where ψ = ε_b δ − g, linear on each cell, crosses zero (doc/theory.md §4.3).
    subroutine test_interval(error)
       type(error_type), allocatable, intent(out) :: error
       type(patch_geometry_type) :: geom

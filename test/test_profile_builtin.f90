@@ -1,6 +1,6 @@
 !> Tests of the built-in analytic profiles: the S1002 section definition (joints, flange tip,
 !> slopes), the UIC60 arcs, the 1:40 cant, and both against the Manchester samples in
-!> ../shared/profiles (skipped when absent).
+!> the external data's profiles/ (skipped without SHCONTACT_EXTERNAL_DATA).
 !>
 !> Set SHCONTACT_TEST_VERBOSE=1 to print the deviations from the Manchester samples:
 !>     SHCONTACT_TEST_VERBOSE=1 fpm test -- profile_builtin s1002_vs_mbench
@@ -13,11 +13,11 @@ module test_profile_builtin
       s1002_bounds, s1002_section_count, s1002_tip_s, uic60_cant
    use shcontact_profile_reader, only: read_profile
    use shcontact_profile_cleanup, only: clean_profile
+   use test_external_data, only: external_file
    implicit none
    private
    public :: collect_profile_builtin
 
-   character(len=*), parameter :: shared = '../shared/profiles/'
    !> Bound on the vertical deviation from the Manchester samples (mm), issue 3.
    real(wp), parameter :: mbench_tolerance = 0.01_wp
 
@@ -87,7 +87,7 @@ contains
       end do
    end subroutine test_spacing_and_clean
 
-   !> physics.md §5.7: adjacent sections meet (jumps below 1.2e-4 mm at B/C and C/D, 1e-7 mm
+   !> doc/theory.md §5.7: adjacent sections meet (jumps below 1.2e-4 mm at B/C and C/D, 1e-7 mm
    !> elsewhere) with the same slope (to 1e-5).
    subroutine test_s1002_joints(error)
       type(error_type), allocatable, intent(out) :: error
@@ -227,7 +227,7 @@ contains
       if (.not. have_shared(error)) return
       call builtin_profile('S1002', built, err)
       if (lib_failed(error, err)) return
-      call read_profile(shared//'MBench_S1002_v3.prw', sample, err)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), sample, err)
       if (lib_failed(error, err)) return
       worst = max_vertical_deviation(built, sample, [0.0_wp, 0.0_wp], s1002_bounds(8), 60.0_wp)
       call report('S1002 vs MBench_S1002_v3.prw, max |dz| (mm) on -62.76 <= y <= 60', worst)
@@ -258,7 +258,7 @@ contains
       if (.not. have_shared(error)) return
       call builtin_profile('UIC60-canted', built, err)
       if (lib_failed(error, err)) return
-      call read_profile(shared//'MBench_UIC60_v3.prr', sample, err)
+      call read_profile(sample_file('MBench_UIC60_v3.prr'), sample, err)
       if (lib_failed(error, err)) return
       top = parabola_vertex(sample)
       worst = max_vertical_deviation(built, sample, top, -43.1_wp, 18.5_wp)
@@ -336,11 +336,22 @@ contains
       write (*, '(4x,a,": ",es10.3)') label, value
    end subroutine report
 
+   !> Whether the external data's sample profiles are there (test_external_data); the test is
+   !> skipped when SHCONTACT_EXTERNAL_DATA is unset, failed when the folder lacks them.
    logical function have_shared(error)
       type(error_type), allocatable, intent(out) :: error
-      inquire (file=shared//'MBench_UIC60_v3.prr', exist=have_shared)
-      if (.not. have_shared) call skip_test(error, shared//' is absent')
+      character(len=:), allocatable :: path
+      path = external_file('profiles/MBench_UIC60_v3.prr', error)
+      have_shared = .not. allocated(error)
    end function have_shared
+
+   !> A sample profile of the external data, once have_shared has let the test run.
+   function sample_file(name) result(path)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      type(error_type), allocatable :: missing
+      path = external_file('profiles/'//name, missing)
+   end function sample_file
 
    logical function lib_failed(error, err)
       type(error_type), allocatable, intent(out) :: error

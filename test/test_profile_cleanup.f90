@@ -1,4 +1,4 @@
-!> Tests of the profile clean-up (physics.md §5.1): every rejection names the source, the line
+!> Tests of the profile clean-up (doc/theory.md §5.1): every rejection names the source, the line
 !> and the reason; zig-zag pairs are merged, true kinks kept and flagged.
 module test_profile_cleanup
    use, intrinsic :: iso_fortran_env, only: int64

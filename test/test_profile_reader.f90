@@ -1,5 +1,5 @@
 !> Tests of the profile readers and the plain writer: canonical orientation of every format read
-!> from ../shared/profiles (skipped when absent), robustness to real-file variations, the
+!> from the external data's profiles/ (skipped without SHCONTACT_EXTERNAL_DATA), robustness to real-file variations, the
 !> diagnostics for bad files, and the write → read round trip.
 module test_profile_reader
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
@@ -10,11 +10,11 @@ module test_profile_reader
    use shcontact_profile_cleanup, only: clean_profile
    use shcontact_profile_builtin, only: builtin_profile
    use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
+   use test_external_data, only: external_file
    implicit none
    private
    public :: collect_profile_reader
 
-   character(len=*), parameter :: shared = '../shared/profiles/'
    character(len=*), parameter :: tmp = 'build/test_profile_reader_'
 
 contains
@@ -38,7 +38,7 @@ contains
          ]
    end subroutine collect_profile_reader
 
-   ! --- files of ../shared ---------------------------------------------------------------------
+   ! --- files of the external data -----------------------------------------------------------
 
    !> S1002 (.prw, mirror.y = 1, inversion = 1): flange at negative y, tip z ≈ +28, field side
    !> first.
@@ -48,7 +48,7 @@ contains
       type(lib_error), allocatable :: err
       integer :: n, itip
       if (.not. have_shared(error)) return
-      call read_profile(shared//'MBench_S1002_v3.prw', p, err)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), p, err)
       if (failed(error, err)) return
       n = p%size()
       call check(error, p%kind, profile_kind_wheel, 'kind from type = 1')
@@ -66,7 +66,7 @@ contains
       if (allocated(error)) return
       call check(error, p%y(itip), -55.0_wp, 'flange tip at y ≈ −55', thr=0.5_wp)
       if (allocated(error)) return
-      call check(error, p%source, shared//'MBench_S1002_v3.prw')
+      call check(error, p%source, sample_file('MBench_S1002_v3.prw'))
    end subroutine test_simpack_wheel
 
    !> UIC60 (.prr, canted, no flags): crown near y = 0 at z ≈ 0, z growing away from it, gauge
@@ -77,7 +77,7 @@ contains
       type(lib_error), allocatable :: err
       integer :: n, itop
       if (.not. have_shared(error)) return
-      call read_profile(shared//'MBench_UIC60_v3.prr', p, err)
+      call read_profile(sample_file('MBench_UIC60_v3.prr'), p, err)
       if (failed(error, err)) return
       n = p%size()
       call check(error, p%kind, profile_kind_rail)
@@ -108,9 +108,9 @@ contains
       integer :: i, j, last
       real(wp) :: worst, d
       if (.not. have_shared(error)) return
-      call read_profile(shared//'MBench_UIC60_v3.ban', ban, err)
+      call read_profile(sample_file('MBench_UIC60_v3.ban'), ban, err)
       if (failed(error, err)) return
-      call read_profile(shared//'MBench_UIC60_v3.prr', prr, err)
+      call read_profile(sample_file('MBench_UIC60_v3.prr'), prr, err)
       if (failed(error, err)) return
       call check(error, ban%kind, profile_kind_rail)
       if (allocated(error)) return
@@ -142,7 +142,7 @@ contains
       if (.not. have_shared(error)) return
 
       ! Wheel: X from the flange back (≈ 0) to the field side (131 mm), Y down: only reversed.
-      call read_profile(shared//'Car7216_0001r.whl', p, err, line_of_point=lines)
+      call read_profile(sample_file('Car7216_0001r.whl'), p, err, line_of_point=lines)
       if (failed(error, err)) return
       call clean_profile(p, err, lines)
       if (failed(error, err)) return
@@ -160,7 +160,7 @@ contains
       if (allocated(error)) return
 
       ! Rail: MiniProf X points to the track centre (mirrored), Y up (mirror detected).
-      call read_profile(shared//'avg_HR.BAN', p, err, line_of_point=lines)
+      call read_profile(sample_file('avg_HR.BAN'), p, err, line_of_point=lines)
       if (failed(error, err)) return
       call clean_profile(p, err, lines)
       if (failed(error, err)) return
@@ -226,13 +226,13 @@ contains
       character(len=*), parameter :: copy = tmp//'crlf.prw'
       integer :: stat
       if (.not. have_shared(error)) return
-      call execute_command_line("sed 's/$/\r/' "//shared//'MBench_S1002_v3.prw > '//copy, &
+      call execute_command_line("sed 's/$/\r/' "//sample_file('MBench_S1002_v3.prw')//' > '//copy, &
          exitstat=stat)
       if (stat /= 0) then
          call skip_test(error, 'no sed to make the CRLF copy')
          return
       end if
-      call read_profile(shared//'MBench_S1002_v3.prw', a, err)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), a, err)
       if (failed(error, err)) return
       call read_profile(copy, b, err)
       if (failed(error, err)) return
@@ -284,10 +284,10 @@ contains
       type(profile_type) :: p, q
       type(lib_error), allocatable :: err
       if (.not. have_shared(error)) return
-      call read_profile(shared//'MBench_S1002_v3.prw', p, err)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), p, err)
       if (failed(error, err)) return
       ! mirror_y = .false. keeps the file's y: flange at positive y, no flange-side check.
-      call read_profile(shared//'MBench_S1002_v3.prw', q, err, mirror_y=.false., scale=0.5_wp)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), q, err, mirror_y=.false., scale=0.5_wp)
       if (failed(error, err)) return
       call check(error, q%size() == p%size(), 'same points')
       if (allocated(error)) return
@@ -295,12 +295,12 @@ contains
          all(abs(q%z(q%size():1:-1) - 0.5_wp*p%z) < 1.0e-12_wp), &
          'unmirrored y, scale 0.5 instead of units.len.f')
       if (allocated(error)) return
-      call read_profile(shared//'MBench_S1002_v3.prw', q, err, kind=profile_kind_rail)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), q, err, kind=profile_kind_rail)
       call expect_error(error, err, stat_invalid_input, [character(len=40) :: &
          'MBench_S1002_v3.prw, line 12:', 'wheel profile', 'rail profile was asked'])
       if (allocated(error)) return
       ! The .prw without its mirror.y is a wheel with its flange on the field side.
-      call read_profile(shared//'MBench_S1002_v3.prw', q, err, format='plain', &
+      call read_profile(sample_file('MBench_S1002_v3.prw'), q, err, format='plain', &
          kind=profile_kind_wheel)
       call expect_error(error, err, stat_invalid_input, [character(len=40) :: &
          'MBench_S1002_v3.prw, line 10:', "expected two numbers 'y z'"])
@@ -468,7 +468,7 @@ contains
       type(profile_type) :: original, again
       type(lib_error), allocatable :: err
       if (.not. have_shared(error)) return
-      call read_profile(shared//'MBench_S1002_v3.prw', original, err)
+      call read_profile(sample_file('MBench_S1002_v3.prw'), original, err)
       if (failed(error, err)) return
       call write_profile_plain(original, tmp//'prw.txt', err)
       if (failed(error, err)) return
@@ -519,11 +519,22 @@ contains
 
    ! --- helpers --------------------------------------------------------------------------------
 
+   !> Whether the external data's sample profiles are there (test_external_data); the test is
+   !> skipped when SHCONTACT_EXTERNAL_DATA is unset, failed when the folder lacks them.
    logical function have_shared(error)
       type(error_type), allocatable, intent(out) :: error
-      inquire (file=shared//'MBench_UIC60_v3.prr', exist=have_shared)
-      if (.not. have_shared) call skip_test(error, shared//' is absent')
+      character(len=:), allocatable :: path
+      path = external_file('profiles/MBench_UIC60_v3.prr', error)
+      have_shared = .not. allocated(error)
    end function have_shared
+
+   !> A sample profile of the external data, once have_shared has let the test run.
+   function sample_file(name) result(path)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      type(error_type), allocatable :: missing
+      path = external_file('profiles/'//name, missing)
+   end function sample_file
 
    !> Turn a library error into a test failure; true when there was one.
    logical function failed(error, err)

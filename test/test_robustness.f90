@@ -4,10 +4,11 @@
 !> backtrace, and nothing left under the output name.
 !>
 !> Runs the program as test_app does (its helpers); tests that read the sample profiles skip
-!> when ../shared/profiles/ is absent.
+!> without the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
 module test_robustness
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_io_files, only: file_exists
+   use test_external_data, only: external_file
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in, expect_failure, current_directory
    use test_fuzz_support, only: next_random, fuzz_settings, repeated, names_input_file, &
@@ -59,9 +60,6 @@ module test_robustness
    character(len=*), parameter :: extreme_values(*) = [character(len=10) :: '1e-300', &
       '-1e-300', '4.9e-324', '1e308', '-1e308', '1e309', '0']
 
-   !> The sample profiles, relative to the project root (where the tests run).
-   character(len=*), parameter :: shared = '../shared/profiles/'
-
 contains
 
    subroutine collect_robustness(testsuite)
@@ -98,12 +96,7 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: path
-      path = ''
-      if (.not. file_exists(shared//name)) then
-         call skip_test(error, shared//name//' is not available')
-         return
-      end if
-      path = current_directory()//'/'//shared//name
+      path = external_file('profiles/'//name, error, absolute=.true.)
    end function sample_profile
 
    !> Write raw bytes (printf format) to a file.

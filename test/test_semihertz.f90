@@ -1,4 +1,4 @@
-!> Tests of the semi-Hertzian strip method (physics.md §4.3) and of its options, on patch
+!> Tests of the semi-Hertzian strip method (doc/theory.md §4.3) and of its options, on patch
 !> geometries built from analytic gaps.
 module test_semihertz
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
@@ -19,7 +19,7 @@ module test_semihertz
    private
    public :: collect_semihertz, polynomial_patch
 
-   !> Seed-like curvatures (physics.md §1.5): A = 1/920, B = 1/600 1/mm, N = 64.7 kN.
+   !> Seed-like curvatures (doc/theory.md §1.5): A = 1/920, B = 1/600 1/mm, N = 64.7 kN.
    real(wp), parameter :: seed_a = 1.0_wp/920, seed_b = 1.0_wp/600, seed_load = 64700.0_wp
 
 contains
@@ -116,7 +116,7 @@ contains
    end subroutine seed_quadratic
 
    !> The local-Hertz strips on g = B y² (no coupling): k_i = √(1 − y_i²/b²) within 0.005 on
-   !> every strip, the seed's requirement, exactly as physics.md §4.3's "Hertz check" states.
+   !> every strip, the seed's requirement, exactly as doc/theory.md §4.3's "Hertz check" states.
    subroutine test_quadratic_local_hertz_k(error)
       type(error_type), allocatable, intent(out) :: error
       type(normal_contact_type) :: contact

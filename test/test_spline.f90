@@ -1,4 +1,4 @@
-!> Tests of the profile smoothing spline (physics.md §5.5): exact interpolation of cubics,
+!> Tests of the profile smoothing spline (doc/theory.md §5.5): exact interpolation of cubics,
 !> curvature of a circle, the low-pass response of the smoothing, kinks, and bad input.
 module test_spline
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
@@ -140,7 +140,7 @@ contains
    end subroutine test_z_of_y
 
    !> A wave of wavelength L on a straight line, smoothed with L_filt: the amplitude is scaled
-   !> by 1/(1 + (L_filt/L)⁴) (continuous response, physics.md §5.5), within 2 % of the input
+   !> by 1/(1 + (L_filt/L)⁴) (continuous response, doc/theory.md §5.5), within 2 % of the input
    !> amplitude on fine sampling away from the ends.
    subroutine test_low_pass(error)
       type(error_type), allocatable, intent(out) :: error

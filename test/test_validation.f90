@@ -1,13 +1,15 @@
 !> Keeps the headline validation numbers (doc/validation.md) from regressing: the whole pipeline
 !> (profiles → geometry → semi-Hertzian normal contact → FASTSIM_SH) on the reference case of
-!> ../shared/reference/ (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN) against Kalker's exact
-!> theory computed by CONTACT. Tolerances are the project's targets (issue 7, physics.md §6.6) and
-!> the reference's own values, never outputs of our code. Skipped when ../shared is absent.
+!> the external data's reference/ (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN) against Kalker's
+!> exact theory computed by CONTACT. Tolerances are the project's targets (issue 7, doc/theory.md §6.6)
+!> and the reference's own values, never outputs of our code. The tests that need the sample
+!> profiles or CONTACT's reference files are skipped when SHCONTACT_EXTERNAL_DATA is unset
+!> (test_external_data).
 !>
 !> The tangential settings are the ones recommended as defaults in doc/validation.md: bound
 !> 'weighted', spin model 'uniform', spin flexibility 'longitudinal', 100 strips × 50 elements.
 !> Signs: the reference is CONTACT's rail side; we solve the same case from the wheel's side
-!> (creepages −ν, forces −F), physics.md decision 2.
+!> (creepages −ν, forces −F), doc/theory.md decision 2.
 module test_validation
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp
@@ -32,18 +34,21 @@ module test_validation
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
       contact_result_type, load_vertical_force
+   use test_external_data, only: external_file
    implicit none
    private
-   public :: collect_validation, percentile, read_columns, manchester_profiles, profiles_dir, &
+   public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
       skip_without_profiles
 
-   character(len=*), parameter :: profiles_dir = '../shared/profiles/'
-   character(len=*), parameter :: reference_dir = '../shared/reference/ty0_literal/'
-   character(len=*), parameter :: ty5p8_doe = '../shared/reference/ty5p8_literal/'// &
+   !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
+   character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
+      mbench_rail = 'profiles/MBench_UIC60_v3.prr'
+   character(len=*), parameter :: reference_dir = 'reference/ty0_literal/'
+   character(len=*), parameter :: ty5p8_doe = 'reference/ty5p8_literal/'// &
       'doe_20x20x20_exact_nonhertz.csv'
    character(len=*), parameter :: kinematic_file = &
-      '../shared/reference/kinematic_sample/kinematic_sample.csv'
+      'reference/kinematic_sample/kinematic_sample.csv'
    !> The reference case (README §2).
    real(wp), parameter :: normal_force = 64700.0_wp
 
@@ -92,7 +97,7 @@ contains
    end subroutine test_normal
 
    !> The 10³ DOE (ξ, η ∈ [0, 2] ‰, φ ∈ [0, 2] 1/m) against the exact theory with the defaults:
-   !> max |Δf| ≤ 0.1 and the 80th percentile of |Δf_y| ≤ 0.04 (issue 7, physics.md §6.6), Table
+   !> max |Δf| ≤ 0.1 and the 80th percentile of |Δf_y| ≤ 0.04 (issue 7, doc/theory.md §6.6), Table
    !> 10's row (issue 13), and the headline case within the same 0.1.
    subroutine test_doe(error)
       type(error_type), allocatable, intent(out) :: error
@@ -102,11 +107,14 @@ contains
       type(tangential_patch_type) :: result
       type(lib_error), allocatable :: err
       real(wp), allocatable :: cases(:, :), ex(:), ey(:)
+      character(len=:), allocatable :: doe
       integer :: i, n
 
+      doe = external_file(reference_dir//'doe_10x10x10_exact_nonhertz.csv', error)
+      if (allocated(error)) return
       call reference_patch(patch, error)
       if (allocated(error)) return
-      call read_columns(reference_dir//'doe_10x10x10_exact_nonhertz.csv', &
+      call read_columns(doe, &
          [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'fx', 'fy'], cases, error)
       if (allocated(error)) return
       call recommended_options(options)
@@ -179,22 +187,20 @@ contains
       real(wp), allocatable :: rows(:, :), ex(:), ey(:), en(:)
       real(wp) :: phi_t, y_g, x_g, nux_t, nuy_t, tol_xi
       integer :: i, n
-      logical :: there
+      character(len=:), allocatable :: sample
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (there) inquire (file=kinematic_file, exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared (profiles or kinematic sample) is absent')
-         return
-      end if
-      call read_columns(kinematic_file, names, rows, error, row_tag='ok')
+      call skip_without_profiles(error)
+      if (allocated(error)) return
+      sample = external_file(kinematic_file, error)
+      if (allocated(error)) return
+      call read_columns(sample, names, rows, error, row_tag='ok')
       if (allocated(error)) return
       n = size(rows, 1)
       call check(error, n, 35, message='kinematic sample: cases CONTACT solved')
       if (allocated(error)) return
       track%rail_canted = .true.
-      call solver%init(profiles_dir//'MBench_S1002_v3.prw', profiles_dir// &
-         'MBench_UIC60_v3.prr', err, track=track, material=material_type( &
+      call solver%init(external(mbench_wheel), external(mbench_rail), &
+         err, track=track, material=material_type( &
          shear_modulus=82670.0_wp, poisson=0.27_wp, friction=0.3_wp))
       if (allocated(err)) then
          call test_failed(error, err%message)
@@ -256,7 +262,10 @@ contains
    subroutine test_doe_ty5p8(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
-      call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
+      character(len=:), allocatable :: doe
+      doe = external_file(ty5p8_doe, error)
+      if (allocated(error)) return
+      call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
       if (allocated(error) .or. .not. allocated(ex)) return
       call check_row(ex, ey, [0.013_wp, 0.024_wp, 0.006_wp, 0.006_wp], 'ty5p8 defaults', error)
       if (allocated(error)) return
@@ -271,7 +280,10 @@ contains
    subroutine test_doe_ty5p8_local_hertz(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
-      call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
+      character(len=:), allocatable :: doe
+      doe = external_file(ty5p8_doe, error)
+      if (allocated(error)) return
+      call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
          reduction='local-hertz', correction=correction_none)
       if (allocated(error) .or. .not. allocated(ex)) return
       call check_row(ex, ey, [0.035_wp, 0.033_wp, 0.027_wp, 0.010_wp], 'ty5p8 local-hertz', &
@@ -283,7 +295,10 @@ contains
    subroutine test_doe_ty5p8_carter(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: ex(:), ey(:)
-      call doe_errors(ty5p8_doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
+      character(len=:), allocatable :: doe
+      doe = external_file(ty5p8_doe, error)
+      if (allocated(error)) return
+      call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
          flexibility=flexibility_carter)
       if (allocated(error) .or. .not. allocated(ex)) return
       call check_row(ex, ey, [0.036_wp, 0.042_wp, 0.024_wp, 0.015_wp], 'ty5p8 carter', error)
@@ -292,7 +307,7 @@ contains
    !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
    !> doc/validation.md §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max
    !> |Δf_y|, P80 |Δf_x| / P80 |Δf_y|), and the targets of issue 13 at each.
-   !> Needs ../shared/profiles.
+   !> Needs the external data's sample profiles.
    subroutine test_doe_positions(error)
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: n_positions = 19
@@ -412,7 +427,7 @@ contains
       call skip_without_profiles(error)
       if (allocated(error)) return
       track%rail_canted = .true.
-      call solver%init(profiles_dir//'MBench_S1002_v3.prw', profiles_dir//'MBench_UIC60_v3.prr', &
+      call solver%init(external(mbench_wheel), external(mbench_rail), &
          err, track=track, material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, &
          friction=0.3_wp))
       if (allocated(err)) then
@@ -479,7 +494,7 @@ contains
          inquire (file='data/exact/'//names(ip)//'/doe_6x6x6_exact_nonhertz_per_lobe.csv', &
             exist=there)
          if (.not. there) then
-            call skip_test(error, 'data/exact/'//names(ip)//' is absent')
+            call test_failed(error, 'data/exact/'//names(ip)//' is absent')
             return
          end if
          call two_patch_solution(y_ws(ip), geometry, patches, error)
@@ -526,8 +541,8 @@ contains
    end subroutine test_lobe_doe
 
    !> Our patches at y_ws with the default options under the vertical load for which their
-   !> normal forces add up to 64.7 kN (patches unallocated and the test skipped without
-   !> ../shared).
+   !> normal forces add up to 64.7 kN (patches unallocated and the test skipped without the
+   !> external data).
    subroutine two_patch_solution(y_ws, geometry, patches, error)
       real(wp), intent(in) :: y_ws
       type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
@@ -609,7 +624,7 @@ contains
 
       inquire (file=doe, exist=there)
       if (.not. there) then
-         call skip_test(error, doe//' is absent')
+         call test_failed(error, doe//' is absent')
          return
       end if
       call reference_patch(patch, error, y_ws=y_ws, y_ref=y_ref, reduction=reduction)
@@ -673,16 +688,11 @@ contains
       type(normal_options_type) :: options
       type(normal_contact_type) :: contact
       type(lib_error), allocatable :: err
-      logical :: there
       real(wp) :: shift
       integer :: k, best
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (there) inquire (file=reference_dir//'doe_10x10x10_exact_nonhertz.csv', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared (profiles or exact-theory reference) is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       call manchester_profiles(wheel, rail, track, err)
       shift = 0.0_wp
       if (present(y_ws)) shift = y_ws
@@ -708,34 +718,46 @@ contains
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine reference_patch
 
-   !> The Manchester profiles of ../shared/profiles, read and cleaned, on the track with the rail
-   !> already canted (README §2).
-   !> Mark the test skipped (error allocated, as skip_test does) when ../shared/profiles is absent.
+   !> Mark the test skipped (error allocated, as skip_test does) when SHCONTACT_EXTERNAL_DATA is
+   !> unset, failed when it names a folder without the Manchester sample profiles.
    subroutine skip_without_profiles(error)
       type(error_type), allocatable, intent(out) :: error
-      logical :: there
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) call skip_test(error, '../shared/profiles is absent')
+      character(len=:), allocatable :: path
+      path = external_file(mbench_wheel, error)
+      if (.not. allocated(error)) path = external_file(mbench_rail, error)
    end subroutine skip_without_profiles
 
+   !> The Manchester profiles of the external data (profiles/), read and cleaned, on the track
+   !> with the rail already canted (README §2). Call skip_without_profiles first.
    subroutine manchester_profiles(wheel, rail, track, err)
       type(profile_type), intent(out) :: wheel, rail
       type(track_type), intent(out) :: track
       type(lib_error), allocatable, intent(out) :: err
-      call read_profile(profiles_dir//'MBench_S1002_v3.prw', wheel, err)
+      call read_profile(external(mbench_wheel), wheel, err)
       if (.not. allocated(err)) call clean_profile(wheel, err)
-      if (.not. allocated(err)) call read_profile(profiles_dir//'MBench_UIC60_v3.prr', rail, err)
+      if (.not. allocated(err)) call read_profile(external(mbench_rail), rail, err)
       if (.not. allocated(err)) call clean_profile(rail, err)
       track%rail_canted = .true.
    end subroutine manchester_profiles
+
+   !> Path of a file of the external data, once skip_without_profiles has let the test run.
+   function external(relative) result(path)
+      character(len=*), intent(in) :: relative
+      character(len=:), allocatable :: path
+      type(error_type), allocatable :: missing
+      path = external_file(relative, missing)
+   end function external
 
    !> CONTACT's exact normal results (headline_summary.csv, row module3_exact_nonhertz).
    subroutine reference_normal(approach, area, length, width, error)
       real(wp), intent(out) :: approach, area, length, width
       type(error_type), allocatable, intent(out) :: error
       real(wp), allocatable :: rows(:, :)
+      character(len=:), allocatable :: summary
 
-      call read_columns(reference_dir//'../headline_summary.csv', [character(len=17) :: &
+      summary = external_file('reference/headline_summary.csv', error)
+      if (allocated(error)) return
+      call read_columns(summary, [character(len=17) :: &
          'pen_mm', 'contact_area_mm2', 'contact_length_mm', 'contact_width_mm'], rows, error, &
          row_tag='module3_exact_nonhertz')
       if (allocated(error)) return

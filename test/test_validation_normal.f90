@@ -2,7 +2,8 @@
 !> of our columns is recomputed with the library as `shcontact-validate` computes
 !> doc/validation/manchester_10kN.csv (default normal options, G = 82 000 MPa, ν = 0.28, the
 !> vertical load shared by the patches of the right wheel) and must equal the printed value to
-!> its last digit (within half a unit of it). Skipped when ../shared is absent.
+!> its last digit (within half a unit of it). Skipped without the external data
+!> (test_external_data).
 module test_validation_normal
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
@@ -17,7 +18,7 @@ module test_validation_normal
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
-   use test_validation, only: manchester_profiles, profiles_dir, skip_without_profiles
+   use test_validation, only: manchester_profiles, skip_without_profiles
    implicit none
    private
    public :: collect_validation_normal

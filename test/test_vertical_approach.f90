@@ -17,7 +17,7 @@ module test_vertical_approach
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_semihertz, only: vertical_tilt
    use test_semihertz, only: polynomial_patch
-   use test_validation, only: read_columns, manchester_profiles, profiles_dir, &
+   use test_validation, only: read_columns, manchester_profiles, &
       skip_without_profiles, summary_values
    implicit none
    private

@@ -114,7 +114,7 @@ static void report_bad_call(const char *name, shcontact_contact *contact, int st
 
 int main(int argc, char **argv)
 {
-    /* Lateral wheelset shift Y_WS (mm): the app's default (physics.md decision 13). */
+    /* Lateral wheelset shift Y_WS (mm): the app's default (doc/theory.md decision 13). */
     const double t_y = argc > 1 ? atof(argv[1]) : 4.733;
     const double roll = 0.0, normal_force = 64.7e3;
     const double nu_x = 0.58e-3, nu_y = 0.061e-3, phi = 2.74e-4;

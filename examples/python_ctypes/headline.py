@@ -85,7 +85,7 @@ def find_library(explicit):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--lib", help="path of libshcontact.so")
-    # Lateral wheelset shift Y_WS (mm): the app's default (physics.md decision 13).
+    # Lateral wheelset shift Y_WS (mm): the app's default (doc/theory.md decision 13).
     parser.add_argument("--t-y", type=float, default=4.733, help="lateral shift (mm)")
     args = parser.parse_args()
     api = Shcontact(find_library(args.lib))

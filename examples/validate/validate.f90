@@ -3,8 +3,10 @@
 !>     fpm run --example shcontact-validate --profile release [-- REFERENCE PROFILES OUTPUT]
 !>     fpm run --example shcontact-validate --profile release -- --kinematic [DIR PROFILES OUTPUT]
 !>
-!> Defaults: REFERENCE = ../shared/reference/, PROFILES = ../shared/profiles/, OUTPUT =
-!> doc/validation/ (all relative to the worktree root), DIR = REFERENCE/kinematic_sample/. Runs
+!> Defaults: REFERENCE = DATA/reference/, PROFILES = DATA/profiles/, OUTPUT = doc/validation/
+!> (relative to the repository root), DIR = REFERENCE/kinematic_sample/, where DATA is the
+!> folder the environment variable SHCONTACT_EXTERNAL_DATA names (doc/install.md §5), ../shared
+!> without it. Runs
 !> our cases matching the reference (S1002 on UIC60 1:40, Y_WS = 0, F_n = 64.7 kN, G = 82670 MPa,
 !> ν = 0.27, μ = 0.3; README §2) and writes the CSV tables that doc/validation.md quotes and
 !> scripts/validation_figures.py draws; the DOE on every shared patch (validate_patches); then
@@ -111,8 +113,9 @@ contains
             'last. --kinematic: only solve_kinematic against the kinematic sample', &
             '(kinematic_cases.csv, kinematic_summary.csv, kinematic.md). --patches: only', &
             'the DOE on every shared patch (patches_doe.csv, .md, patches_strips_*.csv).', &
-            'Defaults: REFERENCE ../shared/reference/, PROFILES ../shared/profiles/,', &
-            'OUTPUT doc/validation/, DIR ../shared/reference/kinematic_sample/.'
+            'Defaults: REFERENCE DATA/reference/, PROFILES DATA/profiles/, OUTPUT', &
+            'doc/validation/, DIR DATA/reference/kinematic_sample/, where DATA is', &
+            '$SHCONTACT_EXTERNAL_DATA (../shared when it is not set).'
          stop
       end if
       kinematic_only = first == '--kinematic'
@@ -124,13 +127,27 @@ contains
       end if
       shift = merge(1, 0, kinematic_only .or. patches_only)
       if (kinematic_only) then
-         ref_root = directory_argument(1 + shift, '../shared/reference/kinematic_sample/')
+         ref_root = directory_argument(1 + shift, external_data()//'reference/kinematic_sample/')
       else
-         ref_root = directory_argument(1 + shift, '../shared/reference/')
+         ref_root = directory_argument(1 + shift, external_data()//'reference/')
       end if
-      profiles_dir = directory_argument(2 + shift, '../shared/profiles/')
+      profiles_dir = directory_argument(2 + shift, external_data()//'profiles/')
       out_dir = directory_argument(3 + shift, 'doc/validation/')
    end subroutine arguments
+
+   !> The external-data folder with a trailing '/': $SHCONTACT_EXTERNAL_DATA, else ../shared/.
+   function external_data() result(dir)
+      character(len=:), allocatable :: dir
+      integer :: length, stat
+      call get_environment_variable('SHCONTACT_EXTERNAL_DATA', length=length, status=stat)
+      if (stat /= 0 .or. length == 0) then
+         dir = '../shared/'
+         return
+      end if
+      allocate (character(len=length) :: dir)
+      call get_environment_variable('SHCONTACT_EXTERNAL_DATA', dir)
+      if (dir(length:length) /= '/') dir = dir//'/'
+   end function external_data
 
    !> Argument i as a directory with a trailing '/', or the default.
    function directory_argument(i, default) result(dir)

@@ -14,7 +14,7 @@ module validate_case
 
 contains
 
-   !> Read and clean both profiles and prepare them on the Manchester track (physics.md §5.2).
+   !> Read and clean both profiles and prepare them on the Manchester track (doc/theory.md §5.2).
    subroutine load_manchester(profiles_dir, prepared, error)
       !> Directory holding MBench_S1002_v3.prw and MBench_UIC60_v3.prr (with a trailing '/').
       character(len=*), intent(in) :: profiles_dir

@@ -1,6 +1,6 @@
 !> Normal contact against the exact theory (issue 4): the ty0 patch under F_n = 64.7 kN against
 !> CONTACT's module-3 solution (../shared/reference/, README §2), and the Manchester 10 kN rows of
-!> physics.md §4.7 / §5.6 with our 2-D, no-yaw geometry.
+!> doc/theory.md §4.7 / §5.6 with our 2-D, no-yaw geometry.
 module validate_normal
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, material_type, &
       prepared_profiles_type, element_pressure, &
@@ -28,7 +28,7 @@ module validate_normal
       real(wp) :: y_min = 0.0_wp, y_max = 0.0_wp, y_centre = 0.0_wp
    end type patch_summary_type
 
-   !> Manchester benchmark, CONTACT exact at F_z = 10 kN (physics.md §4.7 table and §5.6): y_ws,
+   !> Manchester benchmark, CONTACT exact at F_z = 10 kN (doc/theory.md §4.7 table and §5.6): y_ws,
    !> approach (mm), p_max (MPa), contact angle δ (rad), rail reference point y_r (mm).
    real(wp), parameter :: manchester_y_ws(3) = [0.0_wp, 0.5_wp, 5.0_wp]
    real(wp), parameter :: manchester_approach(3) = [0.01596_wp, 0.01948_wp, 0.02719_wp]
@@ -36,7 +36,7 @@ module validate_normal
    real(wp), parameter :: manchester_delta(3) = [-0.0290_wp, -0.0568_wp, -0.2905_wp]
    real(wp), parameter :: manchester_y_r(3) = [-8.660_wp, -16.030_wp, -33.447_wp]
    !> The same rows by CONTACT's ANALYN (B = 6, the local-Hertz strip method) and KPEC (B = 5):
-   !> approach (mm), p_max (MPa) (physics.md §4.7).
+   !> approach (mm), p_max (MPa) (doc/theory.md §4.7).
    real(wp), parameter :: analyn_approach(3) = [0.01646_wp, 0.02055_wp, 0.02905_wp]
    real(wp), parameter :: analyn_p_max(3) = [352.1_wp, 710.3_wp, 1627.0_wp]
    real(wp), parameter :: kpec_approach(3) = [0.01344_wp, 0.02017_wp, 0.02993_wp]
@@ -162,7 +162,7 @@ contains
       call out%close()
    end subroutine write_strips
 
-   !> The Manchester rows (physics.md §4.7, §5.6): F_z = 10 kN shared by all patches of the
+   !> The Manchester rows (doc/theory.md §4.7, §5.6): F_z = 10 kN shared by all patches of the
    !> right wheel through one rigid approach (§4.6), G = 82000 MPa, ν = 0.28, our geometry (2-D,
    !> no yaw: CONTACT's rows at y_ws > 0 are yawed 2.4 mrad/mm). One CSV row per loaded patch.
    subroutine manchester_rows(prepared, path, error)

@@ -3,7 +3,7 @@
 !> FASTSIM on the Hertz ellipse, and the error statistics against the exact theory.
 !>
 !> **Sign mapping.** The reference gives CONTACT's rail side: creepages of the rail relative to
-!> the wheel, forces on the rail. We solve the same physical case from the wheel's side (physics.md
+!> the wheel, forces on the rail. We solve the same physical case from the wheel's side (doc/theory.md
 !> decision 2): creepages −ν_ref, and compare −F (the force on the rail) with F_ref. With the
 !> uniform spin model the solver is odd in the creepages, so this equals "same numbers in, same
 !> numbers out" to round-off; the other spin models add the geometric spin variation of the wheel

@@ -185,7 +185,10 @@ C
          CALL SHC_DESTROY(IH(IW), ISTAT)
   220 CONTINUE
       IF (NFAIL .GT. 0) STOP 2
-      STOP
+C     The normal end falls through to END: a STOP would make gfortran
+C     print a note on the floating-point flags the solver left raised
+C     (underflow, harmless).
+      GOTO 999
 C
   900 CALL SHC_ERRMSG(IH(IW), MSG)
       WRITE (*, '(A,I3,2A)') 'error: status', ISTAT, ': ',
@@ -195,6 +198,7 @@ C
      &        3(',', 1PE15.7), ',', I2, 2(',', 1PE15.7))
   400 FORMAT (A, 1X, 1PE15.7)
   500 FORMAT (A, 1X, I10)
+  999 CONTINUE
       END
 C
 C     One wheel: SHC_SOLVE_KIN at the wheelset state (SI units in, the
@@ -266,6 +270,23 @@ C
       NEVERY = 4
       CSV = 'wheelset.csv'
       N = COMMAND_ARGUMENT_COUNT()
+      DO 5 I = 1, N
+         CALL GET_COMMAND_ARGUMENT(I, KEY)
+         IF (KEY .EQ. '--help' .OR. KEY .EQ. '-h') THEN
+            WRITE (*, '(A)') 'usage: wheelset [--duration S] [--dt S]'
+     &         // ' [--speed M/S] [--y0 MM] [--ky N/M] [--kpsi NM/RAD]'
+            WRITE (*, '(A)') '                [--cy NS/M]'
+     &         // ' [--cpsi NMS/RAD] [--every N] [--csv FILE]'
+            WRITE (*, '(A)') 'A wheelset integrated in time through'
+     &         // ' SHC_SOLVE_KIN (doc/vehicle.md). Defaults:'
+     &         // ' --duration 20 --dt 2.5e-4 --speed 40 --y0 3'
+            WRITE (*, '(A)') '  --ky 0.5e6 --kpsi 0.4e6 --cy 0'
+     &         // ' --cpsi 0 --every 4 --csv wheelset.csv. Exit'
+     &         // ' status: 1 library error, 2 failed calls, 3 bad'
+     &         // ' option.'
+            STOP
+         END IF
+    5 CONTINUE
       I = 1
    10 IF (I + 1 .GT. N) GOTO 20
       CALL GET_COMMAND_ARGUMENT(I, KEY)

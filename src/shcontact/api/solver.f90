@@ -9,9 +9,9 @@
 !> 1. contact search at (t_y, roll) → candidate patches, deepest first;
 !> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, or a
 !>    prescribed vertical wheel load shared by all patches through one rigid approach
-!>    (physics.md §4.5–4.6);
+!>    (doc/theory.md §4.5–4.6);
 !> 3. tangential problem of every loaded patch with the same creepages (prescribed at the
-!>    geometric contact point, physics.md decision 13), forces on the wheel (decision 2);
+!>    geometric contact point, doc/theory.md decision 13), forces on the wheel (decision 2);
 !> 4. summary: the most loaded ("main") patch, every patch, and the totals in the track frame.
 !>
 !> **The call path.** [[solve]] prints nothing, opens no file, touches no global state (the
@@ -67,12 +67,12 @@ module shcontact_api_solver
 
    !> Load mode: normal force N (N) on the first (deepest) patch.
    integer, parameter :: load_normal_force = 1
-   !> Load mode: vertical wheel load F_z (N) shared by all patches (physics.md §4.6).
+   !> Load mode: vertical wheel load F_z (N) shared by all patches (doc/theory.md §4.6).
    integer, parameter :: load_vertical_force = 2
    !> Load mode: approach δ (mm) of the first patch.
    integer, parameter :: load_approach = 3
    !> Load mode: vertical position, the rigid vertical approach Δz (mm) of the wheel from first
-   !> contact, shared by all patches (physics.md §4.6).
+   !> contact, shared by all patches (doc/theory.md §4.6).
    integer, parameter :: load_vertical_position = 4
    character(len=*), parameter :: load_mode_names(4) = [character(len=17) :: 'normal force', &
       'vertical force', 'approach', 'vertical position']
@@ -92,7 +92,7 @@ module shcontact_api_solver
       real(wp) :: value = 0.0_wp
    end type contact_load_type
 
-   !> The solution of one patch (forces on the wheel, physics.md decision 2).
+   !> The solution of one patch (forces on the wheel, doc/theory.md decision 2).
    type :: patch_result_type
       !> Tangential forces F_x, F_y (N, contact frame) and spin moment M_z about the reference
       !> point (N·mm).
@@ -147,7 +147,7 @@ module shcontact_api_solver
       type(patch_result_type) :: patch(max_patches)
    end type contact_result_type
 
-   !> Copies of the fields of one solve (physics.md decision 12): per patch its strip tables, the
+   !> Copies of the fields of one solve (doc/theory.md decision 12): per patch its strip tables, the
    !> normal strips and the tangential element fields. The arrays are reused from call to call and
    !> reallocated only when their size changes.
    type :: contact_fields_type
@@ -238,7 +238,7 @@ contains
          normal_options, tangential_options)
       !> The solver (any earlier content is replaced).
       class(contact_solver_type), intent(inout) :: self
-      !> Wheel and rail profiles (right-side canonical form, physics.md §5.1).
+      !> Wheel and rail profiles (right-side canonical form, doc/theory.md §5.1).
       type(profile_type), intent(in) :: wheel, rail
       !> Set for invalid data; the solver is then not ready.
       type(error_type), allocatable, intent(out) :: error
@@ -335,7 +335,7 @@ contains
    subroutine solve(self, t_y, roll, load, creepage, result, error, fields)
       !> The solver, from [[init]].
       class(contact_solver_type), intent(inout) :: self
-      !> Lateral wheelset shift (mm), CONTACT's Y_WS (physics.md decision 13).
+      !> Lateral wheelset shift (mm), CONTACT's Y_WS (doc/theory.md decision 13).
       real(wp), intent(in) :: t_y
       !> Wheelset roll (rad), positive lowers the right wheel.
       real(wp), intent(in) :: roll
@@ -371,7 +371,7 @@ contains
       if (present(fields)) call copy_fields(self, fields)
    end subroutine solve
 
-   !> Solve one wheel from the wheelset's kinematics (physics.md decision 14): the contact
+   !> Solve one wheel from the wheelset's kinematics (doc/theory.md decision 14): the contact
    !> search at the wheelset's lateral shift, roll and yaw (the yawed wheel's contact locus,
    !> shcontact_geometry_kinematics), the normal problem for the load (a vertical wheel load
    !> shared by all patches is what a vehicle code wants), then every loaded patch with the
@@ -1156,7 +1156,7 @@ contains
    pure subroutine get_profiles(self, wheel, rail)
       !> The solver.
       class(contact_solver_type), intent(in) :: self
-      !> The profiles (canonical form, physics.md §5.1).
+      !> The profiles (canonical form, doc/theory.md §5.1).
       type(profile_type), intent(out) :: wheel, rail
       wheel = self%wheel
       rail = self%rail

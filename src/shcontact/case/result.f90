@@ -16,7 +16,7 @@ module shcontact_case_result
    integer, parameter :: case_not_run = -1
 
    !> The numbers of one case that go into the `/summary` table (forces on the wheel,
-   !> physics.md decision 2). The totals are summed over the loaded patches; the other values
+   !> doc/theory.md decision 2). The totals are summed over the loaded patches; the other values
    !> are those of the main patch (the one carrying the largest normal force).
    type :: case_summary_type
       !> 0 when solved; otherwise the error status ([[case_not_run]] before it runs).

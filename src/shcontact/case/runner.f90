@@ -311,7 +311,7 @@ contains
 
    !> Normal solution for one (t_y, roll, load) on its geometry. Loading 'force' and
    !> 'approach' act on the first (deepest) patch, 'vertical' on all patches at once
-   !> (physics.md §4.6).
+   !> (doc/theory.md §4.6).
    subroutine solve_stage(setup, point, geometry, stage)
       !> Shared data.
       type(run_setup_type), intent(in) :: setup

@@ -76,6 +76,9 @@ module shcontact_case_sweep
       !> Replace an output (and sidecar) that is not shcontact's, and start afresh in the work
       !> folder of an interrupted run (only shcontact's own files in it are removed).
       logical :: force = .false.
+      !> Write the result file (and its checkpoints); .false. solves and summarises only
+      !> (`--no-output`), and `outcome%output` is then ''.
+      logical :: write_output = .true.
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
       !> Progress report (optional).
@@ -219,19 +222,22 @@ contains
          config%wants_field('pressure') .or. config%wants_field('traction') .or. &
          config%wants_field('state') .or. config%wants_field('slip')
 
+      if (.not. options%write_output) outcome%output = ''
       ! Everything that can fail before any file is touched.
-      call check_output_file(outcome%output, error, force=options%force)
-      if (allocated(error)) return
-      ! The work folder's name, refused early (open_work_folder checks again).
-      select case (path_kind(dir))
-      case ('none', 'directory')
-      case ('link')
-         call work_folder_error(folder_link, outcome%output, dir, error)
-         return
-      case default
-         call work_folder_error(folder_not_directory, outcome%output, dir, error)
-         return
-      end select
+      if (options%write_output) then
+         call check_output_file(outcome%output, error, force=options%force)
+         if (allocated(error)) return
+         ! The work folder's name, refused early (open_work_folder checks again).
+         select case (path_kind(dir))
+         case ('none', 'directory')
+         case ('link')
+            call work_folder_error(folder_link, outcome%output, dir, error)
+            return
+         case default
+            call work_folder_error(folder_not_directory, outcome%output, dir, error)
+            return
+         end select
+      end if
       call prepare_run(config, setup, error)
       if (allocated(error)) return
       info%namelist = config_namelist(config)
@@ -255,6 +261,11 @@ contains
          info%geometry = common%patches
       end if
 
+      if (.not. options%write_output) then
+         call sweep_in_folder(config, options, setup, info, common_geometry, common, fields, &
+            '', outcome, error)
+         return
+      end if
       call open_work_folder(dir, lock_name, options%resume .or. options%force, lock, state)
       if (state /= folder_made .and. state /= folder_existing) then
          call work_folder_error(state, outcome%output, dir, error)
@@ -291,7 +302,8 @@ contains
          dir//'" '//why, stat_io)
    end subroutine work_folder_error
 
-   !> Solve the cases in the (locked) work folder `dir` and merge them into the output.
+   !> Solve the cases in the (locked) work folder `dir` and merge them into the output (with
+   !> `--no-output`, dir is '' and nothing is written).
    subroutine sweep_in_folder(config, options, setup, info, common_geometry, common, fields, &
                               dir, outcome, error)
       type(case_config_type), intent(in) :: config
@@ -312,7 +324,9 @@ contains
       real(wp) :: t0, per_case
 
       n = outcome%n_cases
-      if (options%resume) then
+      if (.not. options%write_output) then
+         blocks%n = 0
+      else if (options%resume) then
          ! The blocks of a resumed run carry the namelist of the run that started it (which may
          ! differ in the output name or the spelling of the profile paths).
          call read_checkpoint(dir, checkpoint_key(config), info%namelist, n, outcome, blocks, &
@@ -350,7 +364,8 @@ contains
             results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
             outcome%last - outcome%first + 1)
          per_case = (wall_seconds() - t0)/nb
-         call commit_block(dir, blocks, info, config, todo(next:next + nb - 1), results, error)
+         if (options%write_output) call commit_block(dir, blocks, info, config, &
+            todo(next:next + nb - 1), results, error)
          if (allocated(error)) return
          do i = 1, nb
             outcome%summaries(todo(next + i - 1)) = results(i)%summary
@@ -371,9 +386,10 @@ contains
          ! Nothing to write: every case failed, and they all tell why.
          call fatal_error(error, failure_text(outcome, outcome%failures(1)), &
             outcome%summaries(outcome%failures(1)%case)%stat)
-         call clear_checkpoint(dir, keep_directory=.false.)
+         if (options%write_output) call clear_checkpoint(dir, keep_directory=.false.)
          return
       end if
+      if (.not. options%write_output) return
       call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
          info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
          temp_name=dir//'/'//merged_temp_name, force=options%force)

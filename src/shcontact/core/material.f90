@@ -8,7 +8,7 @@ module shcontact_core_material
 
    public :: material_type, check_material
 
-   !> Steel on steel: both bodies share G and ν (quasi-identity, physics.md §0), Coulomb friction.
+   !> Steel on steel: both bodies share G and ν (quasi-identity, doc/theory.md §0), Coulomb friction.
    type :: material_type
       !> Shear modulus G (N/mm² = MPa).
       real(wp) :: shear_modulus = 82670.0_wp
@@ -17,13 +17,13 @@ module shcontact_core_material
       !> Coefficient of friction μ (dimensionless), 0.001 ≤ μ ≤ 10 (shcontact_core_ranges).
       real(wp) :: friction = 0.3_wp
    contains
-      !> Combined modulus E* = G/(1 − ν) of two identical bodies (physics.md §1.2), MPa.
+      !> Combined modulus E* = G/(1 − ν) of two identical bodies (doc/theory.md §1.2), MPa.
       procedure :: e_star
    end type material_type
 
 contains
 
-   !> E* = G/(1 − ν) = E/(2(1 − ν²)) (physics.md §1.2), MPa.
+   !> E* = G/(1 − ν) = E/(2(1 − ν²)) (doc/theory.md §1.2), MPa.
    elemental function e_star(self) result(es)
       class(material_type), intent(in) :: self
       real(wp) :: es

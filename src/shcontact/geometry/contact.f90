@@ -1,5 +1,5 @@
 !> Wheel on rail: the contact search and the strip geometry of every candidate patch
-!> (physics.md §4.1, §4.6, §5.3–5.4).
+!> (doc/theory.md §4.1, §4.6, §5.3–5.4).
 !>
 !> Two steps, so that a scan over many wheel positions smooths the profiles only once:
 !>
@@ -600,7 +600,7 @@ contains
    end subroutine reserve_patch
 
    !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
-   !> followed outwards in steps h up to table_gap (physics.md §5.4), into patch k of `patches`.
+   !> followed outwards in steps h up to table_gap (doc/theory.md §5.4), into patch k of `patches`.
    !> `covered` returns the rail arc-length range of the patch's own basin (up to the maxima
    !> that separate it from its neighbours), which the tables may overrun.
    pure subroutine build_table(prepared, wheel_map, side, pair, patches, k, covered, error)
@@ -714,7 +714,7 @@ contains
          return
       end if
       write (unit, '(a)', iostat=stat) &
-         '# shcontact contact-patch geometry (physics.md §4.1, §5.4); y from the reference '// &
+         '# shcontact contact-patch geometry (doc/theory.md §4.1, §5.4); y from the reference '// &
          'point towards the field side, in the tangent plane', &
          '# gamma: local contact angle, CONTACT sign (right wheel tread < 0); '// &
          'delta_r = r_w - r0', &

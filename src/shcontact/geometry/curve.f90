@@ -1,5 +1,5 @@
 !> A profile spline seen through a rigid map: its points, slopes and curvatures as the graph
-!> ζ(η) in some frame (track coordinates, or a contact patch's frame, physics.md §5.4).
+!> ζ(η) in some frame (track coordinates, or a contact patch's frame, doc/theory.md §5.4).
 !>
 !> Profiles are splines in arc length, so they may be multi-valued in y; in a frame they are
 !> read as graphs only locally, by following them from a known point ([[locate_eta]]).

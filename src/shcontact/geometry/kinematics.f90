@@ -1,4 +1,4 @@
-!> Wheelset kinematics (physics.md decision 14, CONTACT's module 1): the wheelset's position and
+!> Wheelset kinematics (doc/theory.md decision 14, CONTACT's module 1): the wheelset's position and
 !> velocities, and what its yaw angle does to the contact geometry.
 !>
 !> **Frames.** Track frame: x along the track (forward), y lateral towards the right field side,
@@ -49,7 +49,7 @@ module shcontact_geometry_kinematics
    !> ≤ max_slope·sin ψ).
    real(wp), parameter :: max_slope = 10.0_wp
 
-   !> Position and velocities of a wheelset (CONTACT module 1 meaning, physics.md decision 14).
+   !> Position and velocities of a wheelset (CONTACT module 1 meaning, doc/theory.md decision 14).
    !> Track frame: x forward, y towards the right field side, z down; mm, mm/s, rad, rad/s.
    type :: wheelset_state_type
       !> Lateral shift of the wheelset (mm), CONTACT's Y_WS.

@@ -1,4 +1,4 @@
-!> Point pairs on the wheel and the rail (physics.md §5.3–5.4): the common-normal refinement of
+!> Point pairs on the wheel and the rail (doc/theory.md §5.3–5.4): the common-normal refinement of
 !> a candidate contact point, and the walk along both profiles in a patch frame that gives the
 !> rows of the strip tables.
 !>

@@ -1,4 +1,4 @@
-!> The geometry of one candidate contact patch, as the normal solver needs it (physics.md §4.1,
+!> The geometry of one candidate contact patch, as the normal solver needs it (doc/theory.md §4.1,
 !> §5.4): the gap and the curvatures as functions of the lateral coordinate in the contact plane.
 module shcontact_geometry_patch
    use shcontact_core_kinds, only: wp
@@ -17,7 +17,7 @@ module shcontact_geometry_patch
       real(wp) :: curv_b = 0.0_wp
       !> Local contact angle γ(y) (rad), CONTACT's sign: γ = atan(dz_rail/dy) in the track frame
       !> (z down, y to the field side), so the right wheel's tread contact has γ < 0 and
-      !> dr_w/dy ≈ tan γ. (physics.md §6.1's γ has the opposite sign: sin γ_§6.1 = −dr_w/dy.)
+      !> dr_w/dy ≈ tan γ. (doc/theory.md §6.1's γ has the opposite sign: sin γ_§6.1 = −dr_w/dy.)
       real(wp) :: gamma = 0.0_wp
       !> Local wheel rolling radius r_w(y) (mm).
       real(wp) :: r_wheel = 0.0_wp

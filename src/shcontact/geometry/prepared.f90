@@ -1,4 +1,4 @@
-!> Profiles ready for the contact search (physics.md §5.2–5.5): the contact options, the
+!> Profiles ready for the contact search (doc/theory.md §5.2–5.5): the contact options, the
 !> smoothed profiles, the placed rail, the wheel's tape circle and dense samples of both
 !> profiles ([[prepare_profiles]], or [[prepare_wheel]] to redo only the wheel). The search
 !> itself is [[shcontact_geometry_contact]]'s `find_contact_patches`.
@@ -28,7 +28,7 @@ module shcontact_geometry_prepared
 
    !> Options of the contact search and the strip tables.
    type :: contact_options_type
-      !> Smoothing length of the wheel and the rail profile (mm, physics.md §5.5); 0
+      !> Smoothing length of the wheel and the rail profile (mm, doc/theory.md §5.5); 0
       !> interpolates (analytic profiles), 1–3 mm suits measured ones.
       real(wp) :: l_filt_wheel = 0.0_wp
       real(wp) :: l_filt_rail = 0.0_wp
@@ -127,7 +127,7 @@ contains
    !> Smooth the profiles, place the rail and sample both profiles, once for all wheel
    !> positions.
    subroutine prepare_profiles(wheel, rail, track, options, prepared, error)
-      !> Wheel and rail profiles (right-side canonical form, physics.md §5.1).
+      !> Wheel and rail profiles (right-side canonical form, doc/theory.md §5.1).
       type(profile_type), intent(in) :: wheel, rail
       !> Track and wheelset dimensions.
       type(track_type), intent(in) :: track
@@ -173,7 +173,7 @@ contains
    !> its section for yaw) calls it again. `track` and `options` must be those the profiles were
    !> prepared with (only the wheel's smoothing, the sampling step and the tape circle are used).
    subroutine prepare_wheel(wheel, track, options, prepared, error)
-      !> Wheel profile (right-side canonical form, physics.md §5.1).
+      !> Wheel profile (right-side canonical form, doc/theory.md §5.1).
       type(profile_type), intent(in) :: wheel
       !> Track and wheelset dimensions.
       type(track_type), intent(in) :: track

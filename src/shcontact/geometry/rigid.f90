@@ -1,5 +1,5 @@
 !> Rigid motions of the lateral (y, z) plane: how profiles are canted, placed on the track, rolled
-!> and turned into the frame of a contact patch (physics.md §5.3–5.4).
+!> and turned into the frame of a contact patch (doc/theory.md §5.3–5.4).
 !>
 !> A map sends X = (y, z) to R(angle)·X + d with R = [cos −sin; sin cos]. With z pointing down,
 !> a positive angle turns +y towards +z: a point on the field side goes down.
@@ -51,7 +51,7 @@ contains
 
    !> The map into a frame whose origin is (y0, z0) and whose lateral axis makes the angle θ
    !> with +y: the plane is rotated by −θ about (y0, z0), which is then moved to the origin.
-   !> A line through (y0, z0) with slope tan θ becomes the horizontal axis (physics.md §5.4).
+   !> A line through (y0, z0) with slope tan θ becomes the horizontal axis (doc/theory.md §5.4).
    elemental type(rigid_map_type) function to_frame(theta, y0, z0) result(map)
       !> Angle of the frame's lateral axis (rad).
       real(wp), intent(in) :: theta

@@ -1,5 +1,5 @@
 !> First look for contact: the vertical gap between two positioned profiles sampled on a uniform
-!> lateral grid, and its separate local minima, the candidate contact patches (physics.md §4.6,
+!> lateral grid, and its separate local minima, the candidate contact patches (doc/theory.md §4.6,
 !> §5.3 step 4–5).
 !>
 !> The profiles come as dense polylines in one frame. Each is reduced to the envelope that

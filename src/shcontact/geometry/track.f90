@@ -1,8 +1,8 @@
 !> Track and wheelset: where the rail and the wheel profiles sit in track coordinates
-!> (physics.md §5.2–5.3, project decision 13).
+!> (doc/theory.md §5.2–5.3, project decision 13).
 !>
 !> Track coordinates: y lateral from the track centre line, z down, mm. Every case is solved as a
-!> right-side case (CONTACT mirrors the problem, not the profiles, physics.md §5.1): the "side
+!> right-side case (CONTACT mirrors the problem, not the profiles, doc/theory.md §5.1): the "side
 !> frame" is the track frame for the right wheel and its mirror image y ↦ −y for the left one,
 !> so y in the side frame always points to the field side and both profiles are used as given
 !> (right-side canonical form).
@@ -37,7 +37,7 @@ module shcontact_geometry_track
    !> The left wheel and rail (track y < 0), solved as the mirrored right-side case.
    integer, parameter :: side_left = -1
 
-   !> Track and wheelset dimensions (defaults: the Manchester benchmark, physics.md §5.2).
+   !> Track and wheelset dimensions (defaults: the Manchester benchmark, doc/theory.md §5.2).
    type :: track_type
       !> Track gauge (mm), between the gauge points of the two rails.
       real(wp) :: gauge = 1435.0_wp
@@ -122,7 +122,7 @@ contains
 
    !> The map from rail profile coordinates to the side frame: cant about the profile origin
    !> (unless already canted; the field side rises, the head leans towards the track centre),
-   !> then the gauge point to y = gauge/2 and the rail top to z = 0 (physics.md §5.2–5.3).
+   !> then the gauge point to y = gauge/2 and the rail top to z = 0 (doc/theory.md §5.2–5.3).
    pure subroutine rail_placement(track, rail, map, error)
       !> Track dimensions.
       type(track_type), intent(in) :: track

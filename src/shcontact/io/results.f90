@@ -63,10 +63,10 @@ module shcontact_io_results
    public :: check_output_file
    public :: case_group_name, units_text, sign_convention_text
 
-   !> The units system, stored as a root attribute (physics.md decision 1).
+   !> The units system, stored as a root attribute (doc/theory.md decision 1).
    character(len=*), parameter :: units_text = 'mm, N, MPa (N/mm^2), rad; creepages '// &
       'dimensionless, spin creepage rad/mm; forces N, moments N mm'
-   !> The sign convention, stored as a root attribute (physics.md decision 2).
+   !> The sign convention, stored as a root attribute (doc/theory.md decision 2).
    character(len=*), parameter :: sign_convention_text = 'body 1 = wheel, body 2 = rail. '// &
       'Creepages: velocity of the wheel surface relative to the rail surface at the '// &
       'geometric contact point divided by the rolling speed, in the contact frame (x rolling '// &

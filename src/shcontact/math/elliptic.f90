@@ -1,4 +1,4 @@
-!> Complete elliptic integrals through Carlson's symmetric forms (physics.md §1.3, §1.5).
+!> Complete elliptic integrals through Carlson's symmetric forms (doc/theory.md §1.3, §1.5).
 !>
 !> Everything is parameterised by the complementary parameter `mc` = g² = 1 − k² (k the modulus),
 !> so that neither the circle (mc → 1) nor the slender ellipse (mc → 0) suffers cancellation:
@@ -91,7 +91,7 @@ contains
       real(wp), intent(in) :: mc
       !> K(k), E(k): complete integrals of the first and second kinds.
       real(wp), intent(out) :: kk, ee
-      !> 𝔅(k), 𝔇(k): the associated integrals of physics.md §1.3.
+      !> 𝔅(k), 𝔇(k): the associated integrals of doc/theory.md §1.3.
       real(wp), intent(out) :: bb, dd
 
       kk = carlson_rf(0.0_wp, mc, 1.0_wp)

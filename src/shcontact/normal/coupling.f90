@@ -1,7 +1,7 @@
 !> Elastic coupling between the strips of a semi-Hertzian patch (`reduction = 'coupled'`,
 !> issue 13; doc/validation.md §6.4).
 !>
-!> The local-Hertz strips (physics.md §4.3) are elastically independent: each strip takes the
+!> The local-Hertz strips (doc/theory.md §4.3) are elastically independent: each strip takes the
 !> deflection of its own local Hertz ellipse. Where the gap is nearly flat (B at its clamp) that
 !> ellipse is a construct much wider than the patch, and the lateral load distribution goes wrong:
 !> on the ty0 tread too little load in the conformal middle, at the ty5p8 flange root a tail of

@@ -1,4 +1,4 @@
-!> Hertz theory of an elliptical contact between identical elastic bodies (physics.md §1.3–1.5).
+!> Hertz theory of an elliptical contact between identical elastic bodies (doc/theory.md §1.3–1.5).
 !>
 !> The ellipse shape depends only on the curvature ratio A/B; it is solved by [[hertz_shape]]
 !> (a bracketed root search on the shape equation) and then scaled by the load or the approach
@@ -50,7 +50,7 @@ module shcontact_normal_hertz
       type(hertz_shape_type) :: shape
    end type hertz_type
 
-   !> The residual of the shape equation g² 𝔇/𝔅 − ρ (physics.md §1.3 item 1), increasing in g.
+   !> The residual of the shape equation g² 𝔇/𝔅 − ρ (doc/theory.md §1.3 item 1), increasing in g.
    type, extends(scalar_function_type) :: shape_residual
       !> ρ = min(A,B)/max(A,B).
       real(wp) :: rho = 1.0_wp
@@ -65,7 +65,7 @@ module shcontact_normal_hertz
 contains
 
    !> The Hertz shape at the curvature ratio A/B > 0: g from the shape equation, then ε_a, ε_b,
-   !> m, n, r in closed form (physics.md §1.3–1.5). ρ = 1 gives the circle without iteration.
+   !> m, n, r in closed form (doc/theory.md §1.3–1.5). ρ = 1 gives the circle without iteration.
    subroutine hertz_shape(ratio, shape, error)
       !> A/B, positive.
       real(wp), intent(in) :: ratio
@@ -163,7 +163,7 @@ contains
    end subroutine hertz_shape_fast
 
    !> What the strip method needs of the Hertz shape at every point of a geometry table
-   !> (physics.md §4.3 steps 2, 5 and 7): ε_a, ε_b, m, n and the pressure factor
+   !> (doc/theory.md §4.3 steps 2, 5 and 7): ε_a, ε_b, m, n and the pressure factor
    !> √((A+B)/(E(k)K(k))) at the ratios A_i/B_i, as [[hertz_shape_fast]] gives them, in one
    !> loop: no call and no division but ρ per point, so that the points' independent polynomial
    !> sums overlap in the processor (≈ 10 ns a point).
@@ -245,7 +245,7 @@ contains
       end do
    end subroutine tabulated_shape
 
-   !> Everything else from g and the orientation (physics.md §1.3 items 3, 6 and §1.4).
+   !> Everything else from g and the orientation (doc/theory.md §1.3 items 3, 6 and §1.4).
    pure subroutine shape_from_g(g, ratio, shape)
       !> minor/major, in (0, 1].
       real(wp), intent(in) :: g
@@ -303,7 +303,7 @@ contains
       end if
    end subroutine orient
 
-   !> Hertz solution for curvatures A, B and a normal force N (physics.md §1.4):
+   !> Hertz solution for curvatures A, B and a normal force N (doc/theory.md §1.4):
    !> L = [3N/(4E*(A+B))]^{1/3}, a = mL, b = nL, δ = rL²(A+B), p₀ = 3N/(2πab).
    subroutine hertz_from_load(curv_a, curv_b, load, material, sol, error, shape)
       !> Relative curvatures A (x) and B (y), 1/mm, positive.
@@ -330,7 +330,7 @@ contains
       call scale_by_load(curv_a, curv_b, load, material%e_star(), sol)
    end subroutine hertz_from_load
 
-   !> Hertz solution for curvatures A, B and an approach δ (physics.md §1.3 item 5):
+   !> Hertz solution for curvatures A, B and an approach δ (doc/theory.md §1.3 item 5):
    !> L = √(δ/(r(A+B))), N = 4E*(A+B)L³/3.
    subroutine hertz_from_approach(curv_a, curv_b, approach, material, sol, error, shape)
       !> Relative curvatures A (x) and B (y), 1/mm, positive.
@@ -365,7 +365,7 @@ contains
 
    !> Hertz solution for given semi-axes a, b and normal force N: the curvatures follow from
    !> the shape equation at g = min(a,b)/max(a,b) and from c³ = 3N·E(k)/(2πE*(A+B)√g)
-   !> (physics.md §1.3 items 1–2; CONTACT `hzcalc3d`).
+   !> (doc/theory.md §1.3 items 1–2; CONTACT `hzcalc3d`).
    subroutine hertz_from_semiaxes(a, b, load, material, sol, error)
       !> Semi-axes along x and y (mm), positive.
       real(wp), intent(in) :: a, b
@@ -414,7 +414,7 @@ contains
       end if
    end subroutine set_shape
 
-   !> Sizes from the shape and the load (physics.md §1.4); `sol%shape` must be set.
+   !> Sizes from the shape and the load (doc/theory.md §1.4); `sol%shape` must be set.
    pure subroutine scale_by_load(curv_a, curv_b, load, e_star, sol)
       real(wp), intent(in) :: curv_a, curv_b, load, e_star
       type(hertz_type), intent(inout) :: sol

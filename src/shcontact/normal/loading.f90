@@ -1,4 +1,4 @@
-!> Loading of the normal problem (physics.md §4.5–4.6): a prescribed approach, a prescribed
+!> Loading of the normal problem (doc/theory.md §4.5–4.6): a prescribed approach, a prescribed
 !> normal force on one patch, or a prescribed vertical wheel load shared by several patches
 !> through one rigid approach of the wheel.
 !>
@@ -67,7 +67,7 @@ module shcontact_normal_loading
    end type patch_residual
 
    !> F_z(Δz)^{2/3} − F_z,target^{2/3} of several patches, with Δz = origin + x and
-   !> δ_k = Δz cos γ_k − g₀,k (physics.md §4.6). The patches are filled only when `fill` (the
+   !> δ_k = Δz cos γ_k − g₀,k (doc/theory.md §4.6). The patches are filled only when `fill` (the
    !> search needs the forces alone).
    type, extends(scalar_function_type) :: vertical_residual
       type(normal_contact_type), pointer :: contacts(:) => null()
@@ -148,7 +148,7 @@ contains
    end subroutine solve_approach
 
    !> The normal solution for a prescribed normal force N on one patch: δ such that
-   !> Σ N_i = N to a relative 1e-10 (physics.md §4.5).
+   !> Σ N_i = N to a relative 1e-10 (doc/theory.md §4.5).
    subroutine solve_load(contact, load, patch, error)
       !> The prepared patch.
       type(normal_contact_type), intent(in), target :: contact
@@ -238,7 +238,7 @@ contains
    end subroutine patches_coupled_if_asked
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
-   !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (physics.md §4.6). Patches that do
+   !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (doc/theory.md §4.6). Patches that do
    !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
    !> stays inside its own basin ([[confine_to_basin]]): neighbours that meet under load split
    !> the merged region at the ridge between them, and no region is counted twice.
@@ -326,7 +326,7 @@ contains
    end subroutine solve_vertical_load
 
    !> Several patches at a prescribed rigid vertical approach Δz of the wheel (a vertical
-   !> position, physics.md §4.6): δ_k = Δz cos γ_k − g₀,k, Δz measured from the height where the
+   !> position, doc/theory.md §4.6): δ_k = Δz cos γ_k − g₀,k, Δz measured from the height where the
    !> smallest gap is zero (the `dz` of [[solve_vertical_load]]). Patches that do not touch come
    !> back cleared; `f_z` = Σ_k N_k cos γ_k is the vertical load the position implies.
    subroutine solve_vertical_approach(contacts, dz, patches, f_z, error)
@@ -379,7 +379,7 @@ contains
       end do
    end subroutine refer_patches
 
-   !> The tables of a patch confined to its own basin (physics.md §4.6, doc/geometry.md
+   !> The tables of a patch confined to its own basin (doc/theory.md §4.6, doc/geometry.md
    !> "Neighbouring patches under load"): past a basin limit the table runs into a neighbouring
    !> patch's basin, which that patch carries, so it is cut one point beyond the limit and that
    !> point is raised to the table's largest gap. The strip method's contact interval then stops

@@ -1,4 +1,4 @@
-!> Options of the normal-contact solver (physics.md decisions 5, 6 and 11), validated once into
+!> Options of the normal-contact solver (doc/theory.md decisions 5, 6 and 11), validated once into
 !> a typed configuration that the solvers then trust.
 module shcontact_normal_options
    use shcontact_core_kinds, only: wp
@@ -12,7 +12,7 @@ module shcontact_normal_options
       reduction_coupled
    public :: method_name, reduction_name
 
-   !> `method = 'semi-hertz'`: the strip algorithm of physics.md §4.3 (default).
+   !> `method = 'semi-hertz'`: the strip algorithm of doc/theory.md §4.3 (default).
    integer, parameter :: method_semi_hertz = 1
    !> `method = 'hertz'`: one Hertz ellipse from the curvatures at the reference point.
    integer, parameter :: method_hertz = 2

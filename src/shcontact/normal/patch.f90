@@ -1,5 +1,5 @@
 !> The normal solution of one contact patch: the strip table of the semi-Hertzian method
-!> (physics.md §4.3), which is also everything FASTSIM_SH needs (§6.5).
+!> (doc/theory.md §4.3), which is also everything FASTSIM_SH needs (§6.5).
 module shcontact_normal_patch
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi

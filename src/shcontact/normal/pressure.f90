@@ -1,5 +1,5 @@
 !> The normal pressure on the strip-adapted element grid of the tangential solver
-!> (physics.md §3.2, §6.5 step 3): n_x elements per strip of length Δx_i = 2a_i/n_x, centres
+!> (doc/theory.md §3.2, §6.5 step 3): n_x elements per strip of length Δx_i = 2a_i/n_x, centres
 !> x_j = a_i − (j − ½)Δx_i, numbered from the leading edge x = +a_i.
 module shcontact_normal_pressure
    use shcontact_core_kinds, only: wp
@@ -11,7 +11,7 @@ module shcontact_normal_pressure
 
 contains
 
-   !> Semi-elliptic strip pressure p₀,ᵢ √(1 − x_j²/a_i²) at the element centres (physics.md §4.3
+   !> Semi-elliptic strip pressure p₀,ᵢ √(1 − x_j²/a_i²) at the element centres (doc/theory.md §4.3
    !> step 6). n_x = size(pn, 1); column i is strip i; columns beyond the patch's strips, and
    !> strips with a_i = 0, get zero.
    pure subroutine element_pressure(patch, pn, x)

@@ -1,4 +1,4 @@
-!> The semi-Hertzian strip method (physics.md §4.3) on one patch, for a given approach.
+!> The semi-Hertzian strip method (doc/theory.md §4.3) on one patch, for a given approach.
 !>
 !> The geometry tables are first reduced once, by [[prepare_semihertz]], to what every load
 !> iteration needs: the penetration split ε_a(y), ε_b(y) (which depends only on A(y)/B(y),
@@ -7,7 +7,7 @@
 !> integral or allocation. [[ellipse_strips]] gives the strip table of one Hertz ellipse
 !> (`method = 'hertz'`) on the same geometry.
 !>
-!> **The approach is a vertical translation of the wheel** (doc/normal.md "Vertical approach").
+!> **The approach is a vertical translation of the wheel** (doc/geometry.md, "Vertical approach").
 !> The wheelset moves down under its load; it does not move along each strip's normal. Where the
 !> contact angle varies across the patch, such a translation closes the gap along the contact
 !> normal by Δ(1 − c(y)), c = tan γ₀ tan(γ(y) − γ₀), not by Δ, so the interpenetration is
@@ -81,7 +81,7 @@ module shcontact_normal_semihertz
       real(wp), allocatable :: cover(:)
       !> Local Hertz coefficients m(y), n(y).
       real(wp), allocatable :: m(:), n(:)
-      !> Pressure factor √((A+B)/(E(k)K(k))) (1/√mm²): p₀ = E*·factor·√δ (physics.md §4.3
+      !> Pressure factor √((A+B)/(E(k)K(k))) (1/√mm²): p₀ = E*·factor·√δ (doc/theory.md §4.3
       !> step 5 with §1.3 items 3–4).
       real(wp), allocatable :: p_factor(:)
    end type semihertz_geometry_type
@@ -146,7 +146,7 @@ contains
          prepared%p_factor(1:n), error)
       if (allocated(error)) return
       if (options%reduction == reduction_constant) then
-         ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (physics.md §4.2).
+         ! Kik–Piotrowski: the virtual penetration ε·δ in both directions (doc/theory.md §4.2).
          prepared%eps_a(1:n) = options%epsilon
          prepared%eps_b(1:n) = options%epsilon
       end if
@@ -169,7 +169,7 @@ contains
    !> The approach from which the strips cover each table point, on one side of the
    !> first-contact point (`touch(1)`, the smallest value) outwards.
    !>
-   !> Every table point with δ_j = δ − touch_j > 0 carries load (physics.md §4.3 step 3), also
+   !> Every table point with δ_j = δ − touch_j > 0 carries load (doc/theory.md §4.3 step 3), also
    !> beyond a point that does not: touch = g/ε_b is not monotonic where ε_b changes faster than
    !> the gap (a jump of B between profile arcs), nor where the basin holds a second, shallower
    !> minimum. The strips must then reach past the points out of contact, and their interval
@@ -316,7 +316,7 @@ contains
       end do
    end subroutine check_geometry
 
-   !> The strips of the semi-Hertzian method for approach δ (physics.md §4.3 steps 3–8):
+   !> The strips of the semi-Hertzian method for approach δ (doc/theory.md §4.3 steps 3–8):
    !> `n_strips` strips of equal width cover every table point where
    !> δ_i = δ − (g(y) + (δ + g₀)c(y))/ε_b(y) > 0 (c the tilt term of the vertical approach)
    !> (strips over a point out of contact carry no load), on an interval that grows continuously
@@ -453,7 +453,7 @@ contains
       t = max(t, min(1.0_wp, (approach - c_in)/(c_out - c_in)))
    end function end_fraction
 
-   !> Steps 4–6 on the strip centred at y (physics.md §4.3): δ_i = max(0, ψ/ε_b),
+   !> Steps 4–6 on the strip centred at y (doc/theory.md §4.3): δ_i = max(0, ψ/ε_b),
    !> a_i = √(ε_a δ_i/A_i), p₀,ᵢ = the local Hertz peak at δ_i, N_i = (π/2) p₀,ᵢ a_i δy; also the
    !> table cell c and fraction t of y.
    pure subroutine strip_load(prepared, e_star, approach, y, dy, c, t, delta_i, eps_a, a, p0, &
@@ -541,10 +541,10 @@ contains
    !> Refer a solved strip table to the geometric contact point of the loaded state (module
    !> text): the minimum over the table of the undeformed distance g(y) + (δ + g₀)c(y),
    !> refined by a parabola through its neighbours, as CONTACT defines the point where creepages
-   !> are given (../shared/reference README §2). The strips' y is then measured from there, and
-   !> γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the table's
-   !> origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out of
-   !> contact, a Hertz ellipse and a table without strip data keep the table's origin.
+   !> are given (doc/geometry.md, "Vertical approach"). The strips' y is then measured from
+   !> there, and γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the
+   !> table's origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out
+   !> of contact, a Hertz ellipse and a table without strip data keep the table's origin.
    pure subroutine refer_to_loaded_point(prepared, patch)
       !> Prepared geometry.
       type(semihertz_geometry_type), intent(in) :: prepared

@@ -1,9 +1,9 @@
-!> Built-in analytic profiles, selectable by name instead of a file (physics.md decision 3):
+!> Built-in analytic profiles, selectable by name instead of a file (doc/theory.md decision 3):
 !>
-!> * `S1002`: the EN 13715 wheel from its section definition (physics.md §5.7), y = S, z = F(S),
+!> * `S1002`: the EN 13715 wheel from its section definition (doc/theory.md §5.7), y = S, z = F(S),
 !>   flange at negative y, flange back at y = −70 mm, origin on the tape circle;
 !> * `UIC60`: the 60E1 rail head, upright, origin at the crown top, built from the arcs
-!>   R300 / R80 / R13 with tangency and the 1:20 flank (physics.md §5.2, §5.7);
+!>   R300 / R80 / R13 with tangency and the 1:20 flank (doc/theory.md §5.2, §5.7);
 !> * `UIC60-canted`: the same head rotated 1:40 towards the track centre, origin moved to the
 !>   highest point of the canted rail, like `MBench_UIC60_v3.prr`.
 !>
@@ -35,7 +35,7 @@ module shcontact_profile_builtin
 
    !> Number of S1002 sections (A … H).
    integer, parameter :: s1002_section_count = 8
-   !> Section k of S1002 spans S from s1002_bounds(k+1) to s1002_bounds(k) (mm, physics.md §5.7).
+   !> Section k of S1002 spans S from s1002_bounds(k+1) to s1002_bounds(k) (mm, doc/theory.md §5.7).
    real(wp), parameter :: s1002_bounds(s1002_section_count + 1) = [60.0_wp, 32.15796_wp, &
       -26.0_wp, -35.0_wp, -38.426669071_wp, -39.764473993_wp, -49.662510381_wp, &
       -62.764705882_wp, -70.0_wp]
@@ -48,14 +48,14 @@ module shcontact_profile_builtin
    real(wp), parameter :: uic60_head_width = 72.0_wp
    !> UIC60: depth below the crown top where the described head ends (mm).
    real(wp), parameter :: uic60_head_depth = 37.5_wp
-   !> Rail inclination of the canted UIC60, 1:40 (rad, physics.md §5.2).
+   !> Rail inclination of the canted UIC60, 1:40 (rad, doc/theory.md §5.2).
    real(wp), parameter :: uic60_cant = atan(1.0_wp/40.0_wp)
 
    real(wp), parameter :: r_crown = 300.0_wp, r_side = 80.0_wp, r_corner = 13.0_wp
    !> The flank rises 1 mm laterally per 20 mm vertically.
    real(wp), parameter :: flank_slope = 1.0_wp/20.0_wp
 
-   ! S1002 coefficients (physics.md §5.7).
+   ! S1002 coefficients (doc/theory.md §5.7).
    real(wp), parameter :: a_a = 1.364323640_wp, b_a = 0.066666667_wp
    real(wp), parameter :: coef_b(0:8) = [0.0_wp, 3.358537058e-2_wp, 1.565681624e-3_wp, &
       2.810427944e-5_wp, 5.844240864e-8_wp, 1.562379023e-8_wp, 5.309217349e-15_wp, &
@@ -118,7 +118,7 @@ contains
    end subroutine builtin_profile
 
    !> Height F(S) and slope dF/dS of S1002 section `section` (1 = A … 8 = H) at S
-   !> (physics.md §5.7). Arcs are evaluated with S clamped to their circle; where the tangent
+   !> (doc/theory.md §5.7). Arcs are evaluated with S clamped to their circle; where the tangent
    !> is vertical (S1002 flange back) the slope is returned as ±huge.
    pure subroutine s1002_section(section, s, height, slope)
       !> Section number, 1 (A, field side) to 8 (H, flange back).
@@ -223,7 +223,7 @@ contains
    end function arc_angle
 
    !> The upright UIC60 head from the gauge-side flank foot to the field-side one (ascending y),
-   !> crown top at the origin. Construction (physics.md §5.2): the R300 crown centred at
+   !> crown top at the origin. Construction (doc/theory.md §5.2): the R300 crown centred at
    !> (0, 300) ends at |y| = 10.5; each R80 arc is tangent to it (centre on the line from the
    !> crown centre through the joint, 220 mm from it); each R13 corner is tangent inside the R80
    !> arc (centres 67 mm apart) and tangent to the 1:20 flank, which touches it where the head
@@ -374,7 +374,7 @@ contains
 
    !> Rotate the upright rail 1:40 towards the track centre and move the origin to the highest
    !> point: the crown point at angle α = atan(1/40) on the field side of the top, which then
-   !> lies straight above the crown centre (physics.md §5.2).
+   !> lies straight above the crown centre (doc/theory.md §5.2).
    pure subroutine cant_to_highest_point(profile)
       type(profile_type), intent(inout) :: profile
       real(wp) :: c, s, apex(2), top(2), y_new

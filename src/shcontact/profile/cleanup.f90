@@ -1,4 +1,4 @@
-!> Checks and repairs of a profile before smoothing (physics.md §5.1, CONTACT's curation).
+!> Checks and repairs of a profile before smoothing (doc/theory.md §5.1, CONTACT's curation).
 !>
 !> [[clean_profile]] runs, in this order:
 !>
@@ -204,7 +204,7 @@ contains
    end subroutine check_arc_length
 
    !> Replace each zig-zag pair — points i and i+1 where the direction turns by more than
-   !> [[zigzag_angle]] at both — by the mean of the two (physics.md §5.1). One pass.
+   !> [[zigzag_angle]] at both — by the mean of the two (doc/theory.md §5.1). One pass.
    subroutine merge_zigzags(profile, lines)
       type(profile_type), intent(inout) :: profile
       integer, allocatable, intent(inout) :: lines(:)
@@ -303,7 +303,7 @@ contains
          r(2) >= min(p(2), q(2)) .and. r(2) <= max(p(2), q(2))
    end function within_box
 
-   !> Flag true corners (physics.md §5.1): a turn above [[kink_angle]] at point i with no turn
+   !> Flag true corners (doc/theory.md §5.1): a turn above [[kink_angle]] at point i with no turn
    !> above [[kink_quiet_angle]] at any other point closer than [[kink_window]] to it.
    subroutine flag_kinks(profile)
       type(profile_type), intent(inout) :: profile

@@ -1,4 +1,4 @@
-!> A wheel or rail profile as a list of points (the project's canonical form, physics.md §5.1).
+!> A wheel or rail profile as a list of points (the project's canonical form, doc/theory.md §5.1).
 module shcontact_profile_points
    use shcontact_core_kinds, only: wp
    implicit none
@@ -61,7 +61,7 @@ contains
       if (allocated(self%y)) profile_size = size(self%y)
    end function profile_size
 
-   !> s₁ = 0, s_{i+1} = s_i + √(Δy² + Δz²) (physics.md §5.1).
+   !> s₁ = 0, s_{i+1} = s_i + √(Δy² + Δz²) (doc/theory.md §5.1).
    pure subroutine update_arc_length(self)
       class(profile_type), intent(inout) :: self
       integer :: i, n

@@ -1,5 +1,5 @@
 !> Profile files in: plain 2-column text, SIMPACK-style `.prr`/`.prw`, MiniProf `.ban`/`.whl`
-!> (physics.md §5.1, decision 3). [[read_profile]] returns the points in the canonical form of
+!> (doc/theory.md §5.1, decision 3). [[read_profile]] returns the points in the canonical form of
 !> [[profile_type]]: right side, y towards the field side, z downward, mm, rail points from the
 !> track centre to the field side, wheel points from the field side to the flange back.
 !> The points are not cleaned: pass them (with `line_of_point`) to `clean_profile`.
@@ -50,7 +50,7 @@ module shcontact_profile_reader
    !> overflow, which traps under -ffpe-trap=overflow).
    integer, parameter :: max_decimal_exponent = 300
 
-   !> SIMPACK spline-section keys (physics.md §5.1; CONTACT's reader).
+   !> SIMPACK spline-section keys (doc/theory.md §5.1; CONTACT's reader).
    character(len=*), parameter :: simpack_spline_keys(20) = [character(len=14) :: &
       'approx.smooth', 'file', 'file.mtime', 'comment', 'type', 'point.dist.min', 'shift.y', &
       'shift.z', 'rotate', 'bound.y.min', 'bound.y.max', 'bound.z.min', 'bound.z.max', &

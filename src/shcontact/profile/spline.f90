@@ -1,4 +1,4 @@
-!> Weighted smoothing spline of a profile in arc length (physics.md §5.5, project decision 4).
+!> Weighted smoothing spline of a profile in arc length (doc/theory.md §5.5, project decision 4).
 !>
 !> Both coordinates y(s) and z(s) are fitted as functions of the summed chord length s of the
 !> raw points. With L_filt > 0 each minimises
@@ -12,7 +12,7 @@
 !> spline would not). The spline splits at the profile's kink points, so genuine corners survive.
 !>
 !> Curvature sign: κ = (y'z'' − z'y'')/(y'² + z'²)^{3/2}. Walking the points with the material on
-!> the right (physics.md §5.1), κ > 0 where the surface is convex (bulges away from its
+!> the right (doc/theory.md §5.1), κ > 0 where the surface is convex (bulges away from its
 !> material), for the rail and the wheel alike.
 module shcontact_profile_spline
    use shcontact_core_kinds, only: wp
@@ -127,7 +127,7 @@ contains
          if (size(profile%kink) == n) self%kink(2:n - 1) = profile%kink(2:n - 1)
       end if
 
-      ! One independent spline per piece between kinks (physics.md §5.5: kinks survive).
+      ! One independent spline per piece between kinks (doc/theory.md §5.5: kinks survive).
       first = 1
       do last = 2, n
          if (last < n .and. .not. self%kink(last)) cycle
@@ -142,7 +142,7 @@ contains
       end do
    end subroutine fit
 
-   !> λ = (L_filt/2π)⁴ (physics.md §5.5).
+   !> λ = (L_filt/2π)⁴ (doc/theory.md §5.5).
    pure real(wp) function smoothing_weight(l_filt)
       real(wp), intent(in) :: l_filt
       smoothing_weight = (l_filt/two_pi)**4

@@ -1,4 +1,4 @@
-!> Creepages of one contact patch at its reference point (physics.md §0, decision 2).
+!> Creepages of one contact patch at its reference point (doc/theory.md §0, decision 2).
 module shcontact_tangential_creepage
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
@@ -10,7 +10,7 @@ module shcontact_tangential_creepage
 
    !> Velocity of the wheel surface relative to the rail surface at the reference point, divided
    !> by the rolling speed, in the contact frame (x rolling, y lateral towards the field side):
-   !> rigid slip w(x, y) = (ν_x − φ y, ν_y + φ x) (physics.md §0). CONTACT reports the rail's side
+   !> rigid slip w(x, y) = (ν_x − φ y, ν_y + φ x) (doc/theory.md §0). CONTACT reports the rail's side
    !> (rail relative to wheel): all three signs flip.
    type :: creepage_type
       !> Longitudinal creepage ν_x (dimensionless).

@@ -92,7 +92,7 @@ contains
    end subroutine prepare_ellipse_correction
 
    !> The force defect f_exact − f_FASTSIM_SH of the equivalent ellipse at the creepages of the
-   !> load centre, normalised by μF_n (our sign convention, physics.md §0).
+   !> load centre, normalised by μF_n (our sign convention, doc/theory.md §0).
    pure subroutine ellipse_defect(correction, nu_x, nu_y, phi, dfx, dfy)
       !> The prepared correction.
       type(ellipse_correction_type), intent(in) :: correction

@@ -1,4 +1,4 @@
-!> Classical FASTSIM (Kalker 1982) with three flexibilities on a Hertz ellipse (physics.md §3,
+!> Classical FASTSIM (Kalker 1982) with three flexibilities on a Hertz ellipse (doc/theory.md §3,
 !> decision 8: `method = 'fastsim'`).
 !>
 !> The ellipse |x/a|² + |y/b|² ≤ 1 is cut into n_y strips of width 2b/n_y; strip i (centre y_i
@@ -33,7 +33,7 @@ module shcontact_tangential_fastsim
 contains
 
    !> Kalker's three flexibilities L₁ = 8a/(3c₁₁G), L₂ = 8a/(3c₂₂G), L₃ = πa√(a/b)/(4c₂₃G)
-   !> (physics.md §3.1), in mm/MPa.
+   !> (doc/theory.md §3.1), in mm/MPa.
    elemental subroutine fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3, scheme)
       !> Semi-axes a (rolling direction) and b (lateral) (mm), > 0.
       real(wp), intent(in) :: semi_a, semi_b

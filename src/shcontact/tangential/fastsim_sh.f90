@@ -1,8 +1,8 @@
-!> FASTSIM_SH (seed §2.2; physics.md §6, decision 8: `method = 'fastsim-sh'`): FASTSIM on the
+!> FASTSIM_SH (seed §2.2; doc/theory.md §6, decision 8: `method = 'fastsim-sh'`): FASTSIM on the
 !> strips of a semi-Hertzian normal patch, each strip with the three Kalker flexibilities of its
 !> local Hertz ellipse.
 !>
-!> For loaded strip i (a_i > 0) of the [[normal_patch_type]] (physics.md §6.3, §6.5):
+!> For loaded strip i (a_i > 0) of the [[normal_patch_type]] (doc/theory.md §6.3, §6.5):
 !>
 !> * local coefficients c₁₁ᵢ, c₂₂ᵢ, c₂₃ᵢ at a/b = m_i/n_i, s_i = √(n_i/m_i);
 !> * rates R_x = (3/8) G c₁₁ᵢ k_i ν_x,c/a_i − R_xφ φ_x y_i, R_y = (3/8) G c₂₂ᵢ k_i ν_yi/a_i and
@@ -105,12 +105,12 @@ contains
             options%kalker_scheme)
          s_ratio = sqrt(patch%n(i)/patch%m(i))
 
-         ! physics.md §6.3/§6.5 step 2, each rate multiplied by a_i (a_i² for R_φ).
+         ! doc/theory.md §6.3/§6.5 step 2, each rate multiplied by a_i (a_i² for R_φ).
          ws%y(s) = y
          ws%a(s) = a
          if (options%flexibility == flexibility_patch) then
             ! The patch's own linear theory: L_x = 8a_e/(3Gc₁₁), L_y = 8a_e/(3Gc₂₂),
-            ! L_φ = πa_e√(a_e/b_e)/(4Gc₂₃) at a_e/b_e (physics.md §3.1), the same on every strip.
+            ! L_φ = πa_e√(a_e/b_e)/(4Gc₂₃) at a_e/b_e (doc/theory.md §3.1), the same on every strip.
             ws%akx(s) = 0.375_wp*g*c11e*a/ae
             ws%aky(s) = 0.375_wp*g*c22e*a/ae
             akphi = 4.0_wp/pi*g*c23e*sqrt(be/ae)*a/ae
@@ -128,7 +128,7 @@ contains
          ws%flex_x(s) = a/ws%akx(s)
          ws%flex_y(s) = a/ws%aky(s)
 
-         ! physics.md §6.4: semi-elliptic and parabolic strip pressures (seed eqs 28, 27).
+         ! doc/theory.md §6.4: semi-elliptic and parabolic strip pressures (seed eqs 28, 27).
          pe = 2.0_wp*strip_load/(pi*a*patch%dy)
          pp = 8.0_wp/(3.0_wp*pi)*k*strip_load/(a*patch%dy)
          ws%pe_peak(s) = pe

@@ -1,10 +1,10 @@
 !> Kalker's creepage coefficients c₁₁, c₂₂, c₂₃ of the linear theory of rolling contact for an
-!> elliptical contact with semi-axes a (rolling direction) and b (lateral), physics.md §2.
+!> elliptical contact with semi-axes a (rolling direction) and b (lateral), doc/theory.md §2.
 !>
-!> Linear theory (physics.md §2.1, forces on the wheel, decision 2), with c = √(ab):
+!> Linear theory (doc/theory.md §2.1, forces on the wheel, decision 2), with c = √(ab):
 !> F_x = −G c² c₁₁ ν_x,  F_y = −G c² c₂₂ ν_y − G c³ c₂₃ φ.
 !>
-!> Two interpolation schemes of Kalker's Table E.3 (physics.md §2.2) are offered:
+!> Two interpolation schemes of Kalker's Table E.3 (doc/theory.md §2.2) are offered:
 !>
 !> * [[kalker_scheme_scaled]] (default, decision 7): g = min(a/b, b/a). On the a > b branch the
 !>   scaled quantities g·c₁₁, g·c₂₂ and g^{3/2}·c₂₃, which stay bounded as g → 0, are interpolated
@@ -16,7 +16,7 @@
 !>   g < 0.101 (so the g = 0.1 table rows are *not* reproduced by this scheme).
 !>
 !> Both interpolate in ν with a quadratic Lagrange polynomial through ν = 0, 0.25, 0.5 of the
-!> reciprocals 1/c (physics.md §2.3), after the interpolation in g.
+!> reciprocals 1/c (doc/theory.md §2.3), after the interpolation in g.
 module shcontact_tangential_kalker
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
@@ -46,7 +46,7 @@ module shcontact_tangential_kalker
    real(wp), parameter :: kalker_g_min = 1.0e-8_wp
 
    !> Kalker 1990 Table E.3, branch a ≤ b (row r: a/b = r/10): index (ν column, coefficient
-   !> c₁₁/c₂₂/c₂₃, row), physics.md §2.2.
+   !> c₁₁/c₂₂/c₂₃, row), doc/theory.md §2.2.
    real(wp), parameter :: kalker_table_short(3, 3, 10) = reshape([ &
       2.51_wp, 3.31_wp, 4.85_wp, 2.51_wp, 2.52_wp, 2.53_wp, 0.334_wp, 0.473_wp, 0.731_wp, &
       2.59_wp, 3.37_wp, 4.81_wp, 2.59_wp, 2.63_wp, 2.66_wp, 0.483_wp, 0.603_wp, 0.809_wp, &
@@ -61,7 +61,7 @@ module shcontact_tangential_kalker
       [3, 3, 10])
 
    !> Kalker 1990 Table E.3, branch a ≥ b (row r: b/a = r/10; row 10 is the circle, as in
-   !> [[kalker_table_short]]): index (ν column, coefficient, row), physics.md §2.2.
+   !> [[kalker_table_short]]): index (ν column, coefficient, row), doc/theory.md §2.2.
    real(wp), parameter :: kalker_table_long(3, 3, 10) = reshape([ &
       10.7_wp, 11.7_wp, 12.9_wp, 10.7_wp, 12.8_wp, 16.0_wp, 12.2_wp, 14.6_wp, 18.0_wp, &
       6.96_wp, 7.78_wp, 8.82_wp, 6.96_wp, 8.14_wp, 9.79_wp, 5.72_wp, 6.63_wp, 7.89_wp, &
@@ -80,7 +80,7 @@ module shcontact_tangential_kalker
 
 contains
 
-   !> Kalker's coefficients c₁₁, c₂₂, c₂₃ at ellipticity a/b and Poisson ratio ν (physics.md §2.3).
+   !> Kalker's coefficients c₁₁, c₂₂, c₂₃ at ellipticity a/b and Poisson ratio ν (doc/theory.md §2.3).
    !> a/b is clamped to [g_min, 1/g_min] (see [[kalker_g_min]]); callers validate a/b > 0.
    elemental subroutine kalker_coefficients(a_over_b, poisson, c11, c22, c23, scheme)
       !> Ellipticity a/b (semi-axis along x over semi-axis along y), > 0.
@@ -113,7 +113,7 @@ contains
       else if (g <= kalker_blend_start) then
          call asymptotes(g, poisson, long, c)
       else
-         ! physics.md §2.3, decision 7: blend over [0.08, 0.1] with the table's first interval
+         ! doc/theory.md §2.3, decision 7: blend over [0.08, 0.1] with the table's first interval
          ! extended below g = 0.1, so the coefficients are continuous at both ends.
          call table_interpolation(g, poisson, long, long, c)
          call asymptotes(g, poisson, long, c_asym)
@@ -125,7 +125,7 @@ contains
       c23 = c(3)
    end subroutine kalker_coefficients
 
-   !> Kalker's slender-ellipse asymptotes (physics.md §2.3; Kalker 1990 App. E) on the branch of
+   !> Kalker's slender-ellipse asymptotes (doc/theory.md §2.3; Kalker 1990 App. E) on the branch of
    !> a/b: a/b → 0 when a/b ≤ 1, b/a → 0 otherwise. Valid for small g = min(a/b, b/a).
    elemental subroutine kalker_asymptotes(a_over_b, poisson, c11, c22, c23)
       !> Ellipticity a/b, > 0.
@@ -177,7 +177,7 @@ contains
          lo = kalker_table_short(:, :, row)
          hi = kalker_table_short(:, :, row + 1)
       end if
-      ! Linear weights in g, of g·c₁₁, g·c₂₂, g^{3/2}·c₂₃ when scaled (physics.md §2.3).
+      ! Linear weights in g, of g·c₁₁, g·c₂₂, g^{3/2}·c₂₃ when scaled (doc/theory.md §2.3).
       w_lo = 1.0_wp - t
       w_hi = t
       if (scaled) then
@@ -192,14 +192,14 @@ contains
       c = poisson_interpolation(c_nu, poisson)
    end subroutine table_interpolation
 
-   !> The scale factors g, g, g^{3/2} of c₁₁, c₂₂, c₂₃ on the a > b branch (physics.md §2.3).
+   !> The scale factors g, g, g^{3/2} of c₁₁, c₂₂, c₂₃ on the a > b branch (doc/theory.md §2.3).
    pure function scaling(g) result(f)
       real(wp), intent(in) :: g
       real(wp) :: f(3)
       f = [g, g, g*sqrt(g)]
    end function scaling
 
-   !> Quadratic Lagrange interpolation in ν of 1/c through ν = 0, 0.25, 0.5 (physics.md §2.3).
+   !> Quadratic Lagrange interpolation in ν of 1/c through ν = 0, 0.25, 0.5 (doc/theory.md §2.3).
    pure function poisson_interpolation(c_nu, poisson) result(c)
       !> Coefficients at the three table columns: index (ν column, coefficient).
       real(wp), intent(in) :: c_nu(3, 3)
@@ -214,7 +214,7 @@ contains
       c = 1.0_wp/(l0/c_nu(1, :) + l1/c_nu(2, :) + l2/c_nu(3, :))
    end function poisson_interpolation
 
-   !> The asymptotes of physics.md §2.3 at g (> 0) on the chosen branch.
+   !> The asymptotes of doc/theory.md §2.3 at g (> 0) on the chosen branch.
    pure subroutine asymptotes(g, poisson, long, c)
       real(wp), intent(in) :: g, poisson
       logical, intent(in) :: long

@@ -1,4 +1,4 @@
-!> The strip march shared by classical FASTSIM and FASTSIM_SH (physics.md §3.2, §6.5).
+!> The strip march shared by classical FASTSIM and FASTSIM_SH (doc/theory.md §3.2, §6.5).
 !>
 !> A [[march_workspace_type]] holds everything that does not depend on the creepages: per loaded
 !> strip the flexibility rates, the bound peaks and the geometric spin terms, and per element the
@@ -56,7 +56,7 @@ module shcontact_tangential_march
       real(wp) :: y_offset = 0.0_wp
       !> Reference contact angle γ₀ (rad) and geometric spin φ_geo,0 (rad/mm).
       real(wp) :: gamma0 = 0.0_wp, phi_geo0 = 0.0_wp
-      !> (32/(9π)) Σ k_i N_i / F_n (physics.md §6.4).
+      !> (32/(9π)) Σ k_i N_i / F_n (doc/theory.md §6.4).
       real(wp) :: parabolic_load_ratio = 0.0_wp
       !> n_x and ellipsoidal shape (or not) of the element grid held in xn … inv_ell; 0 when
       !> none: [[set_element_grid]] recomputes the grid only when they change.
@@ -157,7 +157,7 @@ contains
       call reserve(ws%inv_ell, nx)
    end subroutine reserve_workspace
 
-   !> Element centres, steps and bound shapes of the strip-adapted grid (physics.md §3.2, §6.5
+   !> Element centres, steps and bound shapes of the strip-adapted grid (doc/theory.md §3.2, §6.5
    !> step 3), for ws%nx elements and ws%bound; kept when n_x and the bound shape are unchanged.
    pure subroutine set_element_grid(ws)
       !> The workspace (nx and bound set).
@@ -190,7 +190,7 @@ contains
       ws%grid_ellipsoidal = ellipsoidal
    end subroutine set_element_grid
 
-   !> Solve one set of creepages on a prepared workspace (physics.md §6.5): local creepages per
+   !> Solve one set of creepages on a prepared workspace (doc/theory.md §6.5): local creepages per
    !> strip, the march, the output weighting, totals, and the per-element fields when ws%fields.
    pure subroutine solve_prepared(ws, creepage, result, error)
       !> The prepared workspace (its buffers are overwritten).
@@ -369,7 +369,7 @@ contains
    end subroutine carter_stiffening
 
    !> March the m strips b0 … b0 + m − 1 from the leading edge and sum their output tractions
-   !> (physics.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.
+   !> (doc/theory.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.
    pure subroutine march_block(ws, b0, m, result, sx, sy, sxy, cmax, n_adh)
       type(march_workspace_type), intent(inout) :: ws
       integer, intent(in) :: b0, m
@@ -452,7 +452,7 @@ contains
       end do
    end subroutine march_step
 
-   !> Output tractions o from the march tractions t for the weighted bounds (physics.md §6.4;
+   !> Output tractions o from the march tractions t for the weighted bounds (doc/theory.md §6.4;
    !> the ellipsoidal and parabolic bounds report t itself): W1 multiplies all by p_n,e/p_n,p = weight/√(1 − x'²); W2
    !> does so in slip elements (f < 1) and clips adhesion elements to μp_n,e; W3 clips all to
    !> μp_n,e.
@@ -512,7 +512,7 @@ contains
    end subroutine accumulate_step
 
    !> Store one element of every strip of a block in the fields: output tractions, state and the
-   !> slip magnitude |s| = |L (p_pred − p)|/h (physics.md §3.4), with p_pred − p = (1/f − 1) p
+   !> slip magnitude |s| = |L (p_pred − p)|/h (doc/theory.md §3.4), with p_pred − p = (1/f − 1) p
    !> = ((1 − f)/f) p, exactly 0 in adhesion (f = 1).
    pure subroutine keep_step(m, j, hn, a, flex_x, flex_y, strip, px, py, f, qx, qy, result)
       integer, intent(in) :: m, j

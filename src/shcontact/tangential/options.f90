@@ -1,4 +1,4 @@
-!> Options of the tangential solver (physics.md decisions 8–11): method, traction bound, spin
+!> Options of the tangential solver (doc/theory.md decisions 8–11): method, traction bound, spin
 !> model, discretisation. Each switch is an integer code with a string parser (for the namelist)
 !> and a name function (for outputs).
 module shcontact_tangential_options
@@ -20,7 +20,7 @@ module shcontact_tangential_options
    public :: method_name, bound_name, spin_model_name, kalker_scheme_name, spin_flexibility_name, &
       flexibility_name, correction_name, corrected_model
 
-   !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (physics.md §6.5).
+   !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (doc/theory.md §6.5).
    integer, parameter :: method_fastsim_sh = 1
    !> `method = 'fastsim'`: classical three-flexibility FASTSIM on the Hertz ellipse (§3).
    integer, parameter :: method_fastsim = 2
@@ -36,7 +36,7 @@ module shcontact_tangential_options
    !> `bound = 'clipped'` (W3): parabolic march, tractions clipped to μp_n,e.
    integer, parameter :: bound_clipped = 5
 
-   !> `spin_model = 'additive'` (C): φ_i = φ + (φ_geo,i − φ_geo,0) (physics.md §6.2).
+   !> `spin_model = 'additive'` (C): φ_i = φ + (φ_geo,i − φ_geo,0) (doc/theory.md §6.2).
    integer, parameter :: spin_additive = 1
    !> `spin_model = 'uniform'` (D): φ_i = φ, ν_xi = ν_x − φ y_i, ν_yi = ν_y.
    integer, parameter :: spin_uniform = 2
@@ -53,7 +53,7 @@ module shcontact_tangential_options
    integer, parameter :: spin_flexibility_longitudinal = 2
 
    !> `flexibility = 'strip'`: each strip's flexibilities L_x, L_y, L_φ are those of its own local
-   !> Hertz ellipse (physics.md §6.3, seed eq 21).
+   !> Hertz ellipse (doc/theory.md §6.3, seed eq 21).
    integer, parameter :: flexibility_strip = 1
    !> `flexibility = 'patch'`: one set L_x, L_y, L_φ for the whole patch, Kalker's linear theory of
    !> the patch's equivalent ellipse (doc/tangential.md, "Flexibilities").
@@ -92,7 +92,7 @@ module shcontact_tangential_options
       !> Traction bound, `bound_*` (default [[bound_weighted]], decision 9).
       integer :: bound = bound_weighted
       !> Local spin model, `spin_*`. Default [[spin_uniform]]: it fits the exact theory best for
-      !> prescribed creepages (doc/validation.md); use [[spin_additive]] (physics.md decision 10)
+      !> prescribed creepages (doc/validation.md); use [[spin_additive]] (doc/theory.md decision 10)
       !> when the creepages come from wheelset kinematics.
       integer :: spin_model = spin_uniform
       !> Elements per strip n_x (default 50, decision 11).

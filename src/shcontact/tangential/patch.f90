@@ -1,4 +1,4 @@
-!> The tangential solution of one contact patch: element fields and totals (physics.md decision 12).
+!> The tangential solution of one contact patch: element fields and totals (doc/theory.md decision 12).
 module shcontact_tangential_patch
    use shcontact_core_kinds, only: wp, i1
    implicit none
@@ -15,7 +15,7 @@ module shcontact_tangential_patch
    integer(i1), parameter :: state_slip = 2_i1
 
    !> Fields on the strip-adapted grid: element (j, i) is element j (from the leading edge) of
-   !> strip i. Forces act on the wheel (physics.md decision 2).
+   !> strip i. Forces act on the wheel (doc/theory.md decision 2).
    type :: tangential_patch_type
       !> Elements per strip and strips.
       integer :: nx = 0, ny = 0
@@ -29,7 +29,7 @@ module shcontact_tangential_patch
       real(wp) :: coulomb_ratio = 0.0_wp
       !> Adhesion area / contact area.
       real(wp) :: adhesion_fraction = 0.0_wp
-      !> Parabolic-bound load ratio (32/(9π)) Σ k_i N_i / F_n (physics.md §6.4): the full-slip
+      !> Parabolic-bound load ratio (32/(9π)) Σ k_i N_i / F_n (doc/theory.md §6.4): the full-slip
       !> force of the pure parabolic bound over μF_n (1 on a Hertz ellipse).
       real(wp) :: parabolic_load_ratio = 0.0_wp
       !> Forces on the wheel in the track frame (x rolling, y lateral towards the field side,

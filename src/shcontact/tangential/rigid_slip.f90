@@ -1,4 +1,4 @@
-!> Creepages of a contact patch from the wheelset's rigid-body motion (physics.md decision 14;
+!> Creepages of a contact patch from the wheelset's rigid-body motion (doc/theory.md decision 14;
 !> CONTACT module 1's definitions, so that the same kinematics give comparable creepages).
 !>
 !> The wheel is a rigid body turning with ω = Ω a + ψ̇ e_z + ρ̇ e_x about its centre C, which
@@ -9,9 +9,9 @@
 !>
 !> is the velocity of the wheel surface relative to the rail. The contact frame of a patch with
 !> contact angle γ₀ has x along the track, the tangent t = (0, cos γ₀, sin γ₀) and the normal
-!> n = (0, −sin γ₀, cos γ₀) into the rail (physics.md §0). The rolling speed is CONTACT's: the
+!> n = (0, −sin γ₀, cos γ₀) into the rail (doc/theory.md §0). The rolling speed is CONTACT's: the
 !> mean of the speeds at which the rail and the wheel surface pass through the contact point,
-!> V_r = (V − (ω × r)_x)/2. Then (wheel relative to rail, physics.md decision 2):
+!> V_r = (V − (ω × r)_x)/2. Then (wheel relative to rail, doc/theory.md decision 2):
 !>
 !>     ν_x = s_x/V_r,   ν_y = s·t/V_r,   φ = ω·n/V_r.
 !>

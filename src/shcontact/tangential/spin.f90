@@ -1,8 +1,8 @@
-!> Local creepages of FASTSIM_SH per strip: the spin models of physics.md §6.2, written in the
+!> Local creepages of FASTSIM_SH per strip: the spin models of doc/theory.md §6.2, written in the
 !> project's sign convention.
 !>
 !> **Sign of γ.** The contact angle γ follows CONTACT (γ = atan(dz_rail/dy), z down, y towards
-!> the field side; right-wheel tread γ₀ ≈ −0.029 rad; dr_w/dy ≈ tan γ). physics.md §6.1 uses the
+!> the field side; right-wheel tread γ₀ ≈ −0.029 rad; dr_w/dy ≈ tan γ). doc/theory.md §6.1 uses the
 !> opposite sign (sin γ_§6.1 = −dr_w/dy), so its eq 19 φ_i = −sin γ_i/R₀ reads here
 !>
 !>     φ_geo,i = +sin γ_i / r₀,
@@ -72,7 +72,7 @@ contains
    end subroutine strip_spin_terms
 
    !> λ = φ/φ_geo,0 of the scaled model B; an error when the geometric spin at the reference point
-   !> vanishes (tread contact with γ₀ ≈ 0), where model B is singular (physics.md §6.2).
+   !> vanishes (tread contact with γ₀ ≈ 0), where model B is singular (doc/theory.md §6.2).
    pure subroutine scaled_spin_factor(phi, phi_geo0, lambda, error)
       !> Input spin φ (rad/mm).
       real(wp), intent(in) :: phi

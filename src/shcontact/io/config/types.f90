@@ -35,7 +35,7 @@ module shcontact_io_config_types
       real(wp) :: wheel_scale = 0.0_wp, rail_scale = 0.0_wp
    end type profiles_config_type
 
-   !> `&track`: track and wheelset dimensions (physics.md §5.2).
+   !> `&track`: track and wheelset dimensions (doc/theory.md §5.2).
    type :: track_config_type
       !> 'right' or 'left'.
       character(len=name_len) :: side = 'right'
@@ -53,15 +53,15 @@ module shcontact_io_config_types
 
    !> `&position`: wheelset position.
    type :: position_config_type
-      !> Lateral shift (mm), CONTACT's Y_WS (physics.md decision 13). The seed's "t_y = 5.8 mm"
+      !> Lateral shift (mm), CONTACT's Y_WS (doc/theory.md decision 13). The seed's "t_y = 5.8 mm"
       !> measured between the profile origins corresponds to Y_WS = 10.533 − 5.8 = 4.733 mm,
-      !> where the geometric spin equals the seed's φ = 0.274 1/m (../shared/reference/README.md).
+      !> where the geometric spin equals the seed's φ = 0.274 1/m (doc/app.md, "Why 4.733 mm").
       real(wp) :: t_y = 4.733_wp
       !> Roll angle (rad).
       real(wp) :: roll = 0.0_wp
    end type position_config_type
 
-   !> `&kinematics`: the wheelset's motion (CONTACT's module 1, physics.md decision 14). With
+   !> `&kinematics`: the wheelset's motion (CONTACT's module 1, doc/theory.md decision 14). With
    !> mode 'on' the creepages of every patch come from the rigid-body motion of the wheelset
    !> (the library's `solve_kinematic`) instead of `&creepage`; the lateral shift and the roll
    !> are those of `&position`. Track frame: x forward, y towards the right field side, z down.
@@ -91,7 +91,7 @@ module shcontact_io_config_types
       real(wp) :: normal_force = 64700.0_wp, approach = 0.05_wp, vertical_force = 64700.0_wp
    end type load_config_type
 
-   !> `&creepage`: creepages at the geometric contact point (physics.md decision 2).
+   !> `&creepage`: creepages at the geometric contact point (doc/theory.md decision 2).
    type :: creepage_config_type
       !> ν_x, ν_y (dimensionless), φ (rad/mm).
       real(wp) :: nu_x = 0.58e-3_wp, nu_y = 0.061e-3_wp, phi = 2.74e-4_wp
@@ -103,7 +103,7 @@ module shcontact_io_config_types
       character(len=name_len) :: reduction = 'coupled'
       real(wp) :: epsilon = 0.55_wp
       integer :: n_strips = 100
-      !> Clamp of B(y) (1/mm), physics.md decision 4.
+      !> Clamp of B(y) (1/mm), doc/theory.md decision 4.
       real(wp) :: b_min = 1.0e-4_wp
       !> 'local' (cos γ(y)) or 'reference' (cos γ₀) in A(y).
       character(len=name_len) :: longitudinal_curvature = 'local'

@@ -24,7 +24,7 @@ module shcontact_io_config_variables
       character(len=24) :: name = ''
       integer :: kind = k_real
       character(len=12) :: units = ''
-      character(len=100) :: help = ''
+      character(len=200) :: help = ''
    end type variable_info_type
 
    type(variable_info_type), parameter :: variables(*) = [ &
@@ -209,7 +209,7 @@ module shcontact_io_config_variables
       'coupled']
    character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
       'fastsim']
-   !> The traction bounds and spin models (physics.md decisions 9, 10).
+   !> The traction bounds and spin models (doc/theory.md decisions 9, 10).
    character(len=*), parameter :: bounds(*) = [character(len=13) :: 'ellipsoidal', 'parabolic', &
       'weighted', 'weighted-slip', 'clipped']
    character(len=*), parameter :: spin_models(*) = [character(len=9) :: 'additive', 'uniform', &
@@ -275,12 +275,25 @@ contains
          string_capacity(v) == name_len
    end function is_choice
 
-   !> "; did you mean X?" for a close variable name of the group.
+   !> " (it belongs to &position)" when other groups have a variable of that name, else
+   !> " (did you mean X?)" for a close variable name of the group.
    pure function suggestion(group, name) result(s)
       character(len=*), intent(in) :: group, name
       character(len=:), allocatable :: s
       integer :: i, best, d, dbest
       s = ''
+      do i = 1, size(variables)
+         if (variables(i)%group == group .or. trim(variables(i)%name) /= name) cycle
+         if (len(s) == 0) then
+            s = ' (it belongs to &'//trim(variables(i)%group)
+         else
+            s = s//', &'//trim(variables(i)%group)
+         end if
+      end do
+      if (len(s) > 0) then
+         s = s//')'
+         return
+      end if
       best = 0
       dbest = 3
       do i = 1, size(variables)

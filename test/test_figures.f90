@@ -1,0 +1,203 @@
+!> The committed figures show what the library computes now, and the plot script fails cleanly.
+!>
+!> `scripts/plot_case.py` writes, beside the field figures of a case, NAME_numbers.csv: every
+!> number the figures print (`quantity,value,printed,shown,tolerance`: the full value, the text
+!> on the figure, that text in the value's units, half a unit of its last printed digit). The
+!> headline figures doc/figures/plot_headline_*.png come with doc/figures/plot_headline_numbers.csv
+!> (regenerated with them by `scripts/plot_figures`, doc/plots.md); the test solves the headline
+!> case and requires each printed number to be the current value to its last printed digit.
+module test_figures
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use shcontact_core_kinds, only: wp
+   use shcontact_api_solver, only: contact_result_type
+   use test_api, only: headline_t_y, headline_load, headline_creepage, headline_result
+   use test_app, only: shell, file_text, scratch_directory, run_program, unavailable, &
+      current_directory
+   implicit none
+   private
+   public :: collect_figures
+
+   !> The numbers of the committed headline figures.
+   character(len=*), parameter :: headline_numbers = 'doc/figures/plot_headline_numbers.csv'
+
+contains
+
+   subroutine collect_figures(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('headline_figures_show_current_numbers', test_headline_numbers), &
+         new_unittest('plot_script_without_matplotlib', test_without_matplotlib), &
+         new_unittest('plot_script_patch_and_folder', test_patch_and_folder) &
+         ]
+   end subroutine collect_figures
+
+   !> Every number printed on the committed headline figures (case title, strip table title,
+   !> traction title) equals the headline case solved now to within half a unit of its last
+   !> printed digit, and the file has all twelve of them.
+   subroutine test_headline_numbers(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: expected(12) = [character(len=17) :: 't_y', &
+         'normal_force', 'nu_x', 'nu_y', 'phi', 'fn', 'p_max', 'fx', 'fy', 'fx_norm', &
+         'fy_norm', 'adhesion_fraction']
+      type(contact_result_type) :: result
+      character(len=256) :: line
+      character(len=32) :: quantity, printed
+      real(wp) :: value, shown, tolerance, current
+      logical :: seen(size(expected))
+      integer :: unit, stat, k, c(4)
+
+      call headline_result(result, error)
+      if (allocated(error)) return
+      open (newunit=unit, file=headline_numbers, status='old', action='read', iostat=stat)
+      if (stat /= 0) then
+         call test_failed(error, headline_numbers//' is missing (scripts/plot_figures)')
+         return
+      end if
+      read (unit, '(a)', iostat=stat) line
+      seen = .false.
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         c(1) = index(line, ',')
+         c(2) = c(1) + index(line(c(1) + 1:), ',')
+         c(3) = c(2) + index(line(c(2) + 1:), ',')
+         c(4) = c(3) + index(line(c(3) + 1:), ',')
+         quantity = line(:c(1) - 1)
+         printed = line(c(2) + 1:c(3) - 1)
+         read (line(c(1) + 1:c(2) - 1), *, iostat=stat) value
+         if (stat == 0) read (line(c(3) + 1:c(4) - 1), *, iostat=stat) shown
+         if (stat == 0) read (line(c(4) + 1:), *, iostat=stat) tolerance
+         if (stat /= 0 .or. c(4) <= c(3)) then
+            call test_failed(error, headline_numbers//': cannot read the line '//trim(line))
+            exit
+         end if
+         select case (trim(quantity))
+         case ('t_y'); current = headline_t_y
+         case ('normal_force'); current = headline_load
+         case ('nu_x'); current = headline_creepage%nu_x
+         case ('nu_y'); current = headline_creepage%nu_y
+         case ('phi'); current = headline_creepage%phi
+         case ('fn'); current = result%main%fn
+         case ('p_max'); current = result%main%p_max
+         case ('fx'); current = result%main%fx
+         case ('fy'); current = result%main%fy
+         case ('fx_norm'); current = result%main%fx_norm
+         case ('fy_norm'); current = result%main%fy_norm
+         case ('adhesion_fraction'); current = result%main%adhesion_fraction
+         case default
+            call test_failed(error, headline_numbers//': unknown quantity '//trim(quantity)// &
+               ' (teach this test what it is)')
+            exit
+         end select
+         where (expected == quantity) seen = .true.
+         call check(error, abs(current - shown) <= tolerance*(1.0_wp + 1.0e-9_wp), &
+            message='the headline figures show '//trim(quantity)//' = '//trim(printed)// &
+            '; it is now '//real_text(current)//': regenerate them (scripts/plot_figures)')
+         if (allocated(error)) exit
+      end do
+      close (unit)
+      if (allocated(error)) return
+      do k = 1, size(expected)
+         call check(error, seen(k), message=headline_numbers//' lacks '//trim(expected(k)))
+         if (allocated(error)) return
+      end do
+   contains
+      function real_text(x) result(text)
+         real(wp), intent(in) :: x
+         character(len=:), allocatable :: text
+         character(len=32) :: buf
+         write (buf, '(g0.8)') x
+         text = trim(adjustl(buf))
+      end function real_text
+   end subroutine test_headline_numbers
+
+   !> Without matplotlib (made unimportable) the plot script prints one line naming what is
+   !> missing and how to install it, no traceback, and exits with status 1.
+   subroutine test_without_matplotlib(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, err_text
+      integer :: stat
+
+      call shell('python3 -c "import sys" > /dev/null 2>&1', stat)
+      if (stat /= 0) then
+         call skip_test(error, 'no python3')
+         return
+      end if
+      dir = scratch_directory('figures_nompl')
+      call shell('python3 -c "import sys; sys.modules[''matplotlib''] = None; '// &
+         'sys.argv = [''plot_case.py'', ''x.h5'']; '// &
+         'exec(open(''scripts/plot_case.py'').read())" > '//dir//'/out.txt 2> '//dir// &
+         '/err.txt', stat)
+      err_text = file_text(dir//'/err.txt')
+      call check(error, stat, 1, message='exit status without matplotlib')
+      if (allocated(error)) return
+      call check(error, index(err_text, 'Traceback') == 0 .and. &
+         index(err_text, 'scripts/setup --plot') > 0 .and. &
+         (index(err_text, "'matplotlib'") > 0 .or. index(err_text, "'h5py'") > 0 .or. &
+         index(err_text, "'numpy'") > 0), message='message without matplotlib: '//err_text)
+      call shell('rm -rf '//dir)
+   end subroutine test_without_matplotlib
+
+   !> The kinematic example (two patches with different creepages) plotted with --patch 2: the
+   !> figures go next to the result file, not into the working directory, and the creepages in
+   !> the title (NAME_numbers.csv) are patch 2's, not patch 1's (nor the case's main patch's).
+   subroutine test_patch_and_folder(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, here
+      real(wp) :: title(3), patch(2, 3)
+      integer :: stat, k
+
+      if (unavailable(error, .false.)) return
+      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
+      if (stat /= 0) then
+         call skip_test(error, 'python3 with h5py, numpy and matplotlib is not available')
+         return
+      end if
+      here = current_directory()
+      dir = scratch_directory('figures_patch')
+      call check(error, run_program(dir, 'run '//here//'/examples/kinematic.nml -q -o k.h5'), 0, &
+         message='the kinematic example did not run')
+      if (allocated(error)) return
+      call shell('python3 scripts/plot_case.py '//dir//'/k.h5 --patch 2 > '//dir// &
+         '/plot.txt 2>&1', stat)
+      call check(error, stat, 0, message='plot_case.py --patch 2: '//file_text(dir//'/plot.txt'))
+      if (allocated(error)) return
+      call shell('test -s '//dir//'/k_traction.png && test -s '//dir//'/k_pressure.png && '// &
+         'test ! -e k_traction.png && test ! -e k_numbers.csv', stat)
+      call check(error, stat, 0, message='the figures are not next to the result file')
+      if (allocated(error)) return
+      call shell('python3 -c "import h5py; f = h5py.File('''//dir//'/k.h5''); '// &
+         '[print(*[f[''cases/000001/patch_%d/tangential/%s'' % (p, q)][()] for q in '// &
+         '(''nu_x'', ''nu_y'', ''phi'')]) for p in (1, 2)]" > '//dir//'/patches.txt && '// &
+         'grep -E "^(nu_x|nu_y|phi)," '//dir//'/k_numbers.csv | cut -d, -f4 > '//dir// &
+         '/title.txt', stat)
+      if (stat == 0) call read_reals(dir//'/patches.txt', patch, stat)
+      if (stat == 0) call read_reals(dir//'/title.txt', title, stat)
+      call check(error, stat, 0, message='cannot read the creepages back')
+      if (allocated(error)) return
+      do k = 1, 3
+         call check(error, abs(title(k) - patch(2, k)) <= 5.0e-3_wp*abs(patch(2, k)) .and. &
+            abs(title(k) - patch(1, k)) > 5.0e-3_wp*abs(patch(1, k)), message= &
+            'the title''s creepages are not patch 2''s')
+         if (allocated(error)) return
+      end do
+      call shell('rm -rf '//dir)
+   contains
+      subroutine read_reals(file, values, stat)
+         character(len=*), intent(in) :: file
+         real(wp), intent(out) :: values(..)
+         integer, intent(out) :: stat
+         integer :: unit
+         open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+         if (stat /= 0) return
+         select rank (values)
+         rank (1)
+            read (unit, *, iostat=stat) values
+         rank (2)
+            read (unit, *, iostat=stat) values(1, :), values(2, :)
+         end select
+         close (unit)
+      end subroutine read_reals
+   end subroutine test_patch_and_folder
+
+end module test_figures
