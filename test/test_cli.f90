@@ -8,6 +8,7 @@
 !> so stderr is not a terminal, as in a batch log.
 module test_cli
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use test_external_data, only: external_file
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_case_result, only: case_summary_type
    use shcontact_io_results, only: read_result_summary
@@ -736,13 +737,9 @@ contains
    subroutine test_miniprof_written(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, whl, out, err, a, b
-      character(len=*), parameter :: whl_name = '../shared/profiles/Car7216_0001r.whl'
       if (unavailable(error, .false.)) return
-      if (.not. file_exists(whl_name)) then
-         call skip_test(error, whl_name//' is not available')
-         return
-      end if
-      whl = current_directory()//'/'//whl_name
+      whl = external_file('profiles/Car7216_0001r.whl', error, absolute=.true.)
+      if (allocated(error)) return
       dir = scratch_directory('cli_miniprof_written')
       call run_expect(error, dir, 'profiles '//whl//' -o clean.txt', 0, out, err)
       if (allocated(error)) return

@@ -4,6 +4,7 @@
 !> curvature noise the suggested smoothing length leaves.
 module test_profile_diagnostics
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use test_external_data, only: external_file
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_profile_points, only: profile_type, profile_kind_rail
@@ -19,7 +20,6 @@ module test_profile_diagnostics
    private
    public :: collect_profile_diagnostics
 
-   character(len=*), parameter :: profiles_dir = '../shared/profiles/'
 
 contains
 
@@ -175,7 +175,7 @@ contains
       rms = sqrt(total/n)
    end function curvature_rms
 
-   !> The sample files (when ../shared/profiles is present): the Manchester UIC60, canted 1:40,
+   !> The sample files (with the external data, SHCONTACT_EXTERNAL_DATA): the Manchester UIC60, canted 1:40,
    !> reads 1:41; the measured avg_HR.BAN 1:48 with 0.0030 mm noise (its 0.01 mm digits:
    !> 0.01/√12 = 0.0029) and the program's lines doc/profiles.md quotes.
    subroutine test_sample_files(error)
@@ -183,14 +183,10 @@ contains
       type(profile_type) :: rail
       type(rail_cant_type) :: cant
       type(lib_error), allocatable :: err
-      character(len=:), allocatable :: dir, text
-      logical :: there
+      character(len=:), allocatable :: dir, text, profiles_dir
       integer :: stat
-      inquire (file=profiles_dir//'avg_HR.BAN', exist=there)
-      if (.not. there) then
-         call skip_test(error, profiles_dir//' is absent')
-         return
-      end if
+      profiles_dir = external_file('profiles/', error, absolute=.true.)
+      if (allocated(error)) return
       call load_profile(profiles_dir//'MBench_UIC60_v3.prr', profile_kind_rail, rail, err)
       if (allocated(err)) then
          call test_failed(error, err%message)
@@ -201,7 +197,7 @@ contains
       if (allocated(error)) return
       if (unavailable(error, .false.)) return
       dir = scratch_directory('profile_advice')
-      stat = run_program(dir, 'profiles '//current_directory()//'/'//profiles_dir//'avg_HR.BAN')
+      stat = run_program(dir, 'profiles '//profiles_dir//'avg_HR.BAN')
       call check(error, stat, 0, message='profiles avg_HR.BAN: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       text = file_text(dir//'/out.txt')

@@ -8,6 +8,7 @@
 !> compared with a relative tolerance stated at each test.
 module test_profile_invariance
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use test_external_data, only: external_file
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail, &
@@ -23,7 +24,6 @@ module test_profile_invariance
    private
    public :: collect_profile_invariance
 
-   character(len=*), parameter :: shared = '../shared/profiles/'
    character(len=*), parameter :: tmp = 'build/test_profile_invariance_'
    !> The repository's S1002 samples (0.1 mm chords).
    character(len=*), parameter :: s1002_file = 'data/profiles/S1002.txt'
@@ -44,7 +44,7 @@ contains
 
    ! --- item 2 ---------------------------------------------------------------------------------
 
-   !> Every sample file of ../shared (and S1002.txt) loaded, written by write_profile_plain and
+   !> Every sample file of the external data (and S1002.txt) loaded, written by write_profile_plain and
    !> loaded again from the plain file: the same points (15 printed digits; a MiniProf wheel
    !> moved by −70 mm to the origin a plain file has) and the same contact to 1e-9 (the written
    !> digits; before the fix the MiniProf wheel landed 70 mm off: γ₀ +0.088 instead of −0.068,
@@ -53,14 +53,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=24), parameter :: files(5) = [character(len=24) :: 'Car7216_0001r.whl', &
          'MBench_S1002_v3.prw', 'MBench_UIC60_v3.prr', 'MBench_UIC60_v3.ban', 'avg_HR.BAN']
+      character(len=:), allocatable :: shared
       integer :: i
       call round_trip(error, s1002_file)
       if (allocated(error)) return
-      if (.not. file_exists(shared//'Car7216_0001r.whl')) then
-         call skip_test(error, 'S1002.txt checked; the sample files of '//shared// &
-            ' are not here')
-         return
-      end if
+      shared = external_file('profiles/', error)
+      if (allocated(error)) return
       do i = 1, size(files)
          call round_trip(error, shared//trim(files(i)))
          if (allocated(error)) return
@@ -99,13 +97,12 @@ contains
    !> moves), and the MiniProf wheel's points are the file's moved by −70 mm.
    subroutine test_arrays(error)
       type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: whl
       call arrays_round_trip(error, s1002_file, .true.)
       if (allocated(error)) return
-      if (.not. file_exists(shared//'Car7216_0001r.whl')) then
-         call skip_test(error, 'S1002.txt checked; '//shared//'Car7216_0001r.whl is not here')
-         return
-      end if
-      call arrays_round_trip(error, shared//'Car7216_0001r.whl', .false.)
+      whl = external_file('profiles/Car7216_0001r.whl', error)
+      if (allocated(error)) return
+      call arrays_round_trip(error, whl, .false.)
    end subroutine test_arrays
 
    subroutine arrays_round_trip(error, wheel, bitwise)

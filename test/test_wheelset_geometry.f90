@@ -5,6 +5,7 @@
 !> numbers doc/geometry.md quotes from the program).
 module test_wheelset_geometry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use test_external_data, only: external_file
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: lib_error => error_type
@@ -364,17 +365,13 @@ contains
    !> pair's conicity within EN 15302's acceptance tolerance ±min(0.05, 0.5 tan γ_e).
    subroutine test_manchester_files(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: dir = '../shared/profiles/'
+      character(len=:), allocatable :: dir
       type(wheelset_contact_type), allocatable :: built(:), files(:)
       type(lib_error), allocatable :: err
       real(wp) :: y(101), tan_b, tan_f
-      logical :: there
       integer :: i, k
-      inquire (file=dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, dir//' is absent')
-         return
-      end if
+      dir = external_file('profiles/', error)
+      if (allocated(error)) return
       y = [(-5.0_wp + 0.1_wp*i, i=0, 100)]
       call s1002_table(y, built, error)
       if (.not. allocated(error)) call s1002_table(y, files, error, &

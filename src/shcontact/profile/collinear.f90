@@ -1,7 +1,7 @@
 !> Points on a straight line between others: the same curve gives the same profile however
 !> densely its straight pieces are sampled (issue 24, item 5).
 !>
-!> The profile spline interpolates its points (physics.md §5.5), so it depends on the points,
+!> The profile spline interpolates its points (doc/theory.md §5.5), so it depends on the points,
 !> not only on the curve they sample: a point added on the chord between two samples of a curved
 !> profile lies off the curve by up to the chord's sagitta (4·10⁻⁶ mm for 0.1 mm chords on
 !> R = 330 mm), and the spline forced through it swings its curvature by about six sagittas over
