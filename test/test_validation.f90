@@ -236,12 +236,12 @@ contains
       ! doc/validation.md Table 9, "all".
       call check(error, maxval(ex), 0.049_wp, thr=0.002_wp, message='max |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp), 0.022_wp, thr=0.002_wp, &
+      call check(error, percentile(ex, 0.8_wp), 0.018_wp, thr=0.002_wp, &
          message='P80 |Delta f_x|')
       if (allocated(error)) return
       call check(error, maxval(ey), 0.020_wp, thr=0.002_wp, message='max |Delta f_y|')
       if (allocated(error)) return
-      call check(error, percentile(ey, 0.8_wp), 0.008_wp, thr=0.002_wp, &
+      call check(error, percentile(ey, 0.8_wp), 0.006_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
       if (allocated(error)) return
       call check(error, maxval(en), 0.039_wp, thr=0.005_wp, message='max |Delta F_n|/F_n')
