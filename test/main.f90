@@ -30,6 +30,7 @@ program tester
    use test_fastsim, only: collect_fastsim
    use test_fastsim_sh, only: collect_fastsim_sh
    use test_ellipse_correction, only: collect_ellipse_correction
+   use test_coulomb, only: collect_coulomb
    use test_config, only: collect_config
    use test_hdf5io, only: collect_hdf5io
    use test_app, only: collect_app
@@ -76,6 +77,7 @@ program tester
       new_testsuite('fastsim', collect_fastsim), &
       new_testsuite('fastsim_sh', collect_fastsim_sh), &
       new_testsuite('ellipse_correction', collect_ellipse_correction), &
+      new_testsuite('coulomb', collect_coulomb), &
       new_testsuite('config', collect_config), &
       new_testsuite('hdf5io', collect_hdf5io), &
       new_testsuite('app', collect_app), &

@@ -87,8 +87,11 @@ contains
       ! The DOE per lobe: each of our patches with the creepages carried to its point.
       write (unit, '(a)') '', 'DOE per lobe (defaults; creepages carried from CONTACT''s '// &
          'geometric point to each patch''s by the rigid slip): max \|Δf_x\| / max '// &
-         '\|Δf_y\| ; P80 \|Δf_x\| / P80 \|Δf_y\|', '', '| position | lobe 1 '// &
-         '(flange side) | lobe 2 (tread) |', '|---|---|---|'
+         '\|Δf_y\| ; P80 \|Δf_x\| / P80 \|Δf_y\|. Last two columns: against CONTACT''s '// &
+         'joined patch (its one f for both lobes), the wheel''s Σ F/(μ Σ F_n) over our patches '// &
+         '(tangential forces added as they are, each in its own plane) and the most loaded '// &
+         'patch''s own f', '', '| position | lobe 1 (flange side) | lobe 2 (tread) | '// &
+         'wheel Σ vs joined | most loaded vs joined |', '|---|---|---|---|---|'
       do ip = 1, size(lobe_positions)
          call lobe_doe(prepared, lobe_positions(ip), md, error)
          if (allocated(error)) return
@@ -117,10 +120,12 @@ contains
       type(error_stats_type) :: ex, ey
       real(wp), allocatable :: y_lobe(:), nux(:), nuy(:), phi(:), lobe(:), fx(:), fy(:), &
          gx(:), gy(:)
-      real(wp) :: y_ws, f_z, y_ref, delta, y_geo, y_k
+      real(wp), allocatable :: jx(:), jy(:), wx(:), wy(:), mx(:), my(:)
+      real(wp) :: y_ws, f_z, y_ref, delta, y_geo, y_k, n_main
       character(len=64) :: cell
       integer :: il, best, it
       logical, allocatable :: mine(:)
+      type(csv_table_type) :: joined
 
       call read_csv(extra_root//trim(name)//'/summary.csv', summary, error)
       if (.not. allocated(error)) call summary_value(summary, 'y_ws', y_ws, error)
@@ -138,7 +143,15 @@ contains
       if (.not. allocated(error)) call column(doe, 'lobe', lobe, error)
       if (.not. allocated(error)) call column(doe, 'fx', fx, error)
       if (.not. allocated(error)) call column(doe, 'fy', fy, error)
+      if (.not. allocated(error)) call read_csv(extra_root//trim(name)// &
+         '/doe_6x6x6_exact_nonhertz.csv', joined, error)
+      if (.not. allocated(error)) call column(joined, 'fx', jx, error)
+      if (.not. allocated(error)) call column(joined, 'fy', jy, error)
       if (allocated(error)) return
+      allocate (wx(size(jx)), wy(size(jx)), mx(size(jx)), my(size(jx)))
+      wx = 0.0_wp
+      wy = 0.0_wp
+      n_main = 0.0_wp
       ! The vertical load for which our normal forces add up to CONTACT's 64.7 kN.
       f_z = 64700.0_wp
       do it = 1, 4
@@ -170,7 +183,27 @@ contains
          write (cell, '(f5.3,a,f5.3,a,f5.3,a,f5.3)') ex%max, ' / ', ey%max, ' ; ', ex%p80, &
             ' / ', ey%p80
          row = trim(row)//' '//trim(cell)//' |'
+         ! The lobe files hold the joined DOE's cases in its order, one row per lobe.
+         wx = wx + patches(best)%load*gx/sum(patches%load)
+         wy = wy + patches(best)%load*gy/sum(patches%load)
+         if (patches(best)%load > n_main) then
+            n_main = patches(best)%load
+            mx = gx
+            my = gy
+         end if
       end do
+      call add_cell(wx, wy)
+      call add_cell(mx, my)
+   contains
+      !> One cell against the joined patch's forces.
+      subroutine add_cell(ox, oy)
+         real(wp), intent(in) :: ox(:), oy(:)
+         ex = error_stats(abs(ox - jx))
+         ey = error_stats(abs(oy - jy))
+         write (cell, '(f5.3,a,f5.3,a,f5.3,a,f5.3)') ex%max, ' / ', ey%max, ' ; ', ex%p80, &
+            ' / ', ey%p80
+         row = trim(row)//' '//trim(cell)//' |'
+      end subroutine add_cell
    end subroutine lobe_doe
 
    !> A real as short text.

@@ -93,7 +93,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(error_stats_type) :: ex(n_configs, size(patch_names)), ey(n_configs, size(patch_names))
       real(wp) :: bx(n_configs, size(patch_names)), by(n_configs, size(patch_names))
-      real(wp) :: cost(n_configs, size(patch_names))
+      real(wp) :: cost(n_configs, size(patch_names)), fmax(n_configs, size(patch_names))
       character(len=24) :: doe_names(size(patch_names))
       integer :: n_cases(size(patch_names))
       type(csv_writer_type) :: out
@@ -103,12 +103,12 @@ contains
       do ip = 1, size(patch_names)
          call run_patch(patch_dir(ref_root, ip), prepared, out_dir// &
             'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
-            by(:, ip), cost(:, ip), doe_names(ip), n_cases(ip), error)
+            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error)
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
          'spin_flexibility,flexibility,reduction,pressure,correction,n_cases,dfx_max,dfx_p80,'// &
-         'dfx_mean,dfx_bias,dfy_max,dfy_p80,dfy_mean,dfy_bias,us_per_case', &
+         'dfx_mean,dfx_bias,dfy_max,dfy_p80,dfy_mean,dfy_bias,f_max,us_per_case', &
          error)
       if (allocated(error)) return
       do ip = 1, size(patch_names)
@@ -127,7 +127,7 @@ contains
             cells(10) = c_correction(ic)
             call out%row([real(n_cases(ip), wp), ex(ic, ip)%max, ex(ic, ip)%p80, &
                ex(ic, ip)%mean, bx(ic, ip), ey(ic, ip)%max, ey(ic, ip)%p80, ey(ic, ip)%mean, &
-               by(ic, ip), cost(ic, ip)], text=cells, digits=4)
+               by(ic, ip), fmax(ic, ip), cost(ic, ip)], text=cells, digits=4)
          end do
       end do
       call out%close()
@@ -140,7 +140,8 @@ contains
 
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
    !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
-   subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, doe_name, n, error)
+   subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, fmax, doe_name, &
+      n, error)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
       character(len=*), intent(in) :: strips_base
@@ -150,6 +151,8 @@ contains
       real(wp), intent(out) :: bx(n_configs), by(n_configs)
       !> Wall time of one tangential solve (µs per case, best of three runs of the set).
       real(wp), intent(out) :: cost(n_configs)
+      !> Largest |f| = |F_t|/(μF_n) over the cases.
+      real(wp), intent(out) :: fmax(n_configs)
       character(len=24), intent(out) :: doe_name
       integer, intent(out) :: n
       type(error_type), allocatable, intent(out) :: error
@@ -224,6 +227,7 @@ contains
             call system_clock(t1)
             cost(ic) = min(cost(ic), 1.0e6_wp*real(t1 - t0, wp)/real(rate, wp)/n)
          end do
+         fmax(ic) = maxval(hypot(fx, fy))
          ex(ic) = error_stats(abs(fx - set%fx))
          ey(ic) = error_stats(abs(fy - set%fy))
          if (c_pressure(ic) == 'contact' .and. .not. has_grid) then

@@ -111,8 +111,8 @@ contains
       case ('mz'); text = 'spin moment on the wheel about the reference point, main patch'
       case ('fx_norm'); text = 'normalised longitudinal force F_x/(mu F_n), main patch'
       case ('fy_norm'); text = 'normalised lateral force F_y/(mu F_n), main patch'
-      case ('coulomb_ratio'); text = 'largest |p|/(mu p_n) over contact elements (<= 1 when '// &
-         'the traction bound holds)'
+      case ('coulomb_ratio'); text = 'largest |p|/(mu p_n) over contact elements, of the '// &
+         'corrected tractions (the totals keep |F_t| <= mu F_n)'
       case ('adhesion_fraction'); text = 'adhesion (stick) area / contact area, main patch'
       case ('delta'); text = 'approach delta of the main patch'
       case ('area'); text = 'contact area of the main patch'

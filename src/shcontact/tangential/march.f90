@@ -20,6 +20,7 @@
 !> in stages (march, output weighting, sums, fields), each a simple loop the compiler vectorises.
 module shcontact_tangential_march
    use shcontact_core_kinds, only: wp, i1
+   use shcontact_core_constants, only: half_pi
    use shcontact_core_error, only: error_type, fatal_error, stat_usage
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_adhesion, &
       state_slip
@@ -96,6 +97,11 @@ module shcontact_tangential_march
       !> Per element: x'_j, step h_j/a, step times midpoint h_j x_mid,j/a², bound shape s_j,
       !> √(1 − x'²), 1 − x'², 1/√(1 − x'²).
       real(wp), allocatable :: xn(:), hn(:), hm(:), shape(:), ell(:), par(:), inv_ell(:)
+      !> (π/2)/Σ_j (2/n_x) √(1 − x'_j²): the element pressures p_n,e of a strip sum to its load N_s
+      !> times 1/field_ratio (the midpoint rule of the semi-ellipse, 1.0009 at n_x = 50), so a
+      !> force ΔF spread in proportion to p_n adds field_ratio ΔF/(μF_n) times μp_n to each
+      !> element.
+      real(wp) :: field_ratio = 1.0_wp
       !> The exact-ellipse correction of the totals (inactive unless the preparation set it).
       type(ellipse_correction_type) :: correction
       !> Load-weighted means of the strips' local creepages ν_x − φ_x y, ν_y, φ for the case
@@ -186,6 +192,7 @@ contains
       else
          ws%shape(1:ws%nx) = ws%par(1:ws%nx)
       end if
+      ws%field_ratio = half_pi/(step*sum(ws%ell(1:ws%nx)))
       ws%grid_nx = ws%nx
       ws%grid_ellipsoidal = ellipsoidal
    end subroutine set_element_grid
@@ -202,8 +209,8 @@ contains
       !> Set for an unprepared workspace, non-finite creepages, or a singular scaled spin model.
       type(error_type), allocatable, intent(out) :: error
       real(wp), dimension(max_block) :: sx, sy, sxy, cmax, n_adh
-      real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu, fy_s, fy_track, &
-         fz_track, dfx, dfy
+      real(wp) :: lambda, strip_area, fx, fy, mz, area, area_adh, coulomb2, mu, fy_s, dfx, dfy, &
+         tan_y, tan_z, normal_y, normal_z, shift(2), c
       integer :: b0, s, l, m, nx, n_blocks, block
 
       if (ws%n_active < 1) then
@@ -222,12 +229,24 @@ contains
       mu = ws%friction
       call size_result(result, nx, ws%n_strips, ws%fields)
       call strip_increments(ws, creepage, lambda)
+      ! The exact-ellipse defect (units of μF_n) depends only on the creepages of the load centre,
+      ! so it is known before the march. Its share of each element's traction, spread in
+      ! proportion to p_n ([[spread_defect]]), is the same fraction of μp_n everywhere: shift =
+      ! D times [[march_workspace_type]]%field_ratio. The Coulomb check is taken on the
+      ! corrected tractions, march output plus shift.
+      dfx = 0.0_wp
+      dfy = 0.0_wp
+      if (ws%correction%active) call ellipse_defect(ws%correction, ws%centre_nu_x, &
+         ws%centre_nu_y, ws%centre_phi, dfx, dfy)
+      shift = ws%field_ratio*[dfx, dfy]
 
       fx = 0.0_wp
       fy = 0.0_wp
       mz = 0.0_wp
-      fy_track = 0.0_wp
-      fz_track = 0.0_wp
+      tan_y = 0.0_wp
+      tan_z = 0.0_wp
+      normal_y = 0.0_wp
+      normal_z = 0.0_wp
       area = 0.0_wp
       area_adh = 0.0_wp
       coulomb2 = 0.0_wp
@@ -236,15 +255,17 @@ contains
       block = (ws%n_active + n_blocks - 1)/n_blocks
       do b0 = 1, ws%n_active, block
          m = min(block, ws%n_active - b0 + 1)
-         call march_block(ws, b0, m, result, sx, sy, sxy, cmax, n_adh)
+         call march_block(ws, b0, m, shift, result, sx, sy, sxy, cmax, n_adh)
          do l = 1, m
             s = b0 + l - 1
             strip_area = 2.0_wp*ws%a(s)/real(nx, wp)*ws%dy
             fx = fx + strip_area*sx(l)
             fy_s = strip_area*sy(l)
             fy = fy + fy_s
-            fy_track = fy_track + fy_s*ws%cos_gamma(s) + ws%strip_normal(s)*ws%sin_gamma(s)
-            fz_track = fz_track + fy_s*ws%sin_gamma(s) - ws%strip_normal(s)*ws%cos_gamma(s)
+            tan_y = tan_y + fy_s*ws%cos_gamma(s)
+            tan_z = tan_z + fy_s*ws%sin_gamma(s)
+            normal_y = normal_y + ws%strip_normal(s)*ws%sin_gamma(s)
+            normal_z = normal_z - ws%strip_normal(s)*ws%cos_gamma(s)
             mz = mz + strip_area*(ws%a(s)*sxy(l) - (ws%y_offset + ws%y(s))*sx(l))
             area = area + 2.0_wp*ws%a(s)
             area_adh = area_adh + 2.0_wp*ws%a(s)*n_adh(l)/real(nx, wp)
@@ -254,21 +275,33 @@ contains
       end do
       if (ws%fields) call store_inactive(ws, result)
       if (ws%correction%active) then
-         call correct_totals(ws, fx, fy, mz, fy_track, fz_track, dfx, dfy)
+         ! The defect in N: F_x's acts at the load centre, F_y's along the load-weighted tangent.
+         dfx = mu*ws%load*dfx
+         dfy = mu*ws%load*dfy
+         fx = fx + dfx
+         fy = fy + dfy
+         mz = mz - ws%correction%y_centre*dfx
+         tan_y = tan_y + dfy*ws%correction%cos_gamma
+         tan_z = tan_z + dfy*ws%correction%sin_gamma
          if (ws%fields) call spread_defect(ws, dfx, dfy, result)
       end if
+      c = coulomb_scale(fx, fy, mu*ws%load)
+      if (ws%fields .and. c < 1.0_wp) then
+         result%px = c*result%px
+         result%py = c*result%py
+      end if
 
-      result%fx = fx
-      result%fy = fy
-      result%mz = mz
+      result%fx = c*fx
+      result%fy = c*fy
+      result%mz = c*mz
       result%fn = ws%load
-      result%fx_norm = fx/(mu*ws%load)
-      result%fy_norm = fy/(mu*ws%load)
-      result%coulomb_ratio = sqrt(coulomb2)
+      result%fx_norm = result%fx/(mu*ws%load)
+      result%fy_norm = result%fy/(mu*ws%load)
+      result%coulomb_ratio = c*sqrt(coulomb2)
       result%adhesion_fraction = area_adh/area
       result%parabolic_load_ratio = ws%parabolic_load_ratio
-      result%fy_track = fy_track
-      result%fz_track = fz_track
+      result%fy_track = c*tan_y + normal_y
+      result%fz_track = c*tan_z + normal_z
       result%dy = ws%dy
    end subroutine solve_prepared
 
@@ -303,26 +336,22 @@ contains
       if (ws%flexibility == flexibility_carter) call carter_stiffening(ws)
    end subroutine strip_increments
 
-   !> Add the exact-ellipse defect (shcontact_tangential_ellipse_correction) at the creepages of
-   !> the load centre to the totals: F_x, F_y, M_z (F_x acting at the load centre) and the
-   !> track-frame forces (F_y along the load-weighted mean tangent).
-   pure subroutine correct_totals(ws, fx, fy, mz, fy_track, fz_track, dfx, dfy)
-      type(march_workspace_type), intent(in) :: ws
-      real(wp), intent(inout) :: fx, fy, mz, fy_track, fz_track
-      !> The corrections ΔF_x, ΔF_y (N).
-      real(wp), intent(out) :: dfx, dfy
-      real(wp) :: scale
-
-      call ellipse_defect(ws%correction, ws%centre_nu_x, ws%centre_nu_y, ws%centre_phi, dfx, dfy)
-      scale = ws%friction*ws%load
-      dfx = scale*dfx
-      dfy = scale*dfy
-      fx = fx + dfx
-      fy = fy + dfy
-      mz = mz - ws%correction%y_centre*dfx
-      fy_track = fy_track + dfy*ws%correction%cos_gamma
-      fz_track = fz_track + dfy*ws%correction%sin_gamma
-   end subroutine correct_totals
+   !> Never past Coulomb (doc/tangential.md): the factor c ≤ 1 that brings the total traction
+   !> F_t = (F_x, F_y) onto the traction bound when it lies outside, |c F_t| ≤ μF_n. Any traction
+   !> field within Coulomb's law, |p_t| ≤ μp_n, has |F_t| ≤ ∫|p_t| ≤ μF_n, and so has the exact
+   !> theory's; a total outside (the exact-ellipse correction added to a nearly saturated patch,
+   !> the parabolic bound, the midpoint rule of p_n at full slip) is moved radially onto the bound,
+   !> its direction (at saturation the rigid slip's) kept.
+   pure real(wp) function coulomb_scale(fx, fy, limit) result(c)
+      !> Total tangential force (N).
+      real(wp), intent(in) :: fx, fy
+      !> μF_n (N).
+      real(wp), intent(in) :: limit
+      real(wp) :: t
+      c = 1.0_wp
+      t = hypot(fx, fy)
+      if (t > limit) c = limit/t
+   end function coulomb_scale
 
    !> The fields' share of the exact-ellipse correction: each loaded strip takes the part
    !> N_s/F_n of ΔF_x and ΔF_y, spread over its elements in proportion to p_n. The fields then
@@ -370,9 +399,11 @@ contains
 
    !> March the m strips b0 … b0 + m − 1 from the leading edge and sum their output tractions
    !> (doc/theory.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.
-   pure subroutine march_block(ws, b0, m, result, sx, sy, sxy, cmax, n_adh)
+   pure subroutine march_block(ws, b0, m, shift, result, sx, sy, sxy, cmax, n_adh)
       type(march_workspace_type), intent(inout) :: ws
       integer, intent(in) :: b0, m
+      !> The correction's share of every traction, in units of μp_n (0 without a correction).
+      real(wp), intent(in) :: shift(2)
       !> The solution, whose element fields are filled when ws%fields.
       type(tangential_patch_type), intent(inout) :: result
       !> Per strip: Σ o_x, Σ o_y, Σ x' o_y, max |o|²/(1 − x'²) and the number of adhesion
@@ -385,14 +416,14 @@ contains
       call march_strips(ws%bound, ws%fields, m, ws%nx, ws%hn, ws%hm, ws%shape, ws%xn, &
          ws%inv_ell, ws%par, ws%cx(b0:b1), ws%cy(b0:b1), ws%cphi(b0:b1), ws%bound_peak(b0:b1), &
          ws%weight(b0:b1), ws%mu_pe(b0:b1), ws%a(b0:b1), ws%flex_x(b0:b1), ws%flex_y(b0:b1), &
-         ws%strip(b0:b1), ws%tx(b0:b1), ws%ty(b0:b1), result, sx, sy, sxy, cmax, n_adh)
+         ws%strip(b0:b1), ws%tx(b0:b1), ws%ty(b0:b1), shift, result, sx, sy, sxy, cmax, n_adh)
    end subroutine march_block
 
    !> The element loop of [[march_block]] on the block's own arrays (distinct dummies: the
    !> compiler knows they do not overlap).
    pure subroutine march_strips(bound, fields, m, nx, hn, hm, shape, xn, inv_ell, par, cx, cy, &
-      cphi, peak, weight, mu_pe, a, flex_x, flex_y, strip, tx, ty, result, sx, sy, sxy, cmax, &
-      n_adh)
+      cphi, peak, weight, mu_pe, a, flex_x, flex_y, strip, tx, ty, shift, result, sx, sy, sxy, &
+      cmax, n_adh)
       integer, intent(in) :: bound, m, nx
       logical, intent(in) :: fields
       real(wp), dimension(nx), intent(in) :: hn, hm, shape, xn, inv_ell, par
@@ -400,6 +431,7 @@ contains
       integer, intent(in) :: strip(m)
       !> The march tractions of the block's strips.
       real(wp), dimension(m), intent(out) :: tx, ty
+      real(wp), intent(in) :: shift(2)
       type(tangential_patch_type), intent(inout) :: result
       real(wp), dimension(max_block), intent(out) :: sx, sy, sxy, cmax, n_adh
       real(wp), dimension(max_block) :: f, qx, qy
@@ -419,11 +451,13 @@ contains
          call march_step(m, hn(j), hm(j), shape(j), cx, cy, cphi, peak, tx, ty, f)
          if (weighted) then
             call output_step(bound, m, inv_ell(j), par(j), weight, mu_pe, tx, ty, f, qx, qy)
-            call accumulate_step(m, xn(j), inv_ell(j), qx, qy, f, sx, sy, sxy, cmax, n_adh)
+            call accumulate_step(m, xn(j), inv_ell(j), qx, qy, f, shift, mu_pe, sx, sy, sxy, &
+               cmax, n_adh)
             if (fields) call keep_step(m, j, hn(j), a, flex_x, flex_y, strip, tx, ty, f, qx, &
                qy, result)
          else
-            call accumulate_step(m, xn(j), inv_ell(j), tx, ty, f, sx, sy, sxy, cmax, n_adh)
+            call accumulate_step(m, xn(j), inv_ell(j), tx, ty, f, shift, mu_pe, sx, sy, sxy, &
+               cmax, n_adh)
             if (fields) call keep_step(m, j, hn(j), a, flex_x, flex_y, strip, tx, ty, f, tx, &
                ty, result)
          end if
@@ -493,11 +527,16 @@ contains
       end select
    end subroutine output_step
 
-   !> Add the output tractions of one element to the sums of every strip of a block.
-   pure subroutine accumulate_step(m, xn, inv_ell, qx, qy, f, sx, sy, sxy, cmax, n_adh)
+   !> Add the output tractions of one element to the sums of every strip of a block; cmax takes
+   !> |q/√(1 − x'²) + shift μp̂_n,e|², the corrected traction over the semi-elliptic shape.
+   pure subroutine accumulate_step(m, xn, inv_ell, qx, qy, f, shift, mu_pe, sx, sy, sxy, cmax, &
+      n_adh)
       integer, intent(in) :: m
       real(wp), intent(in) :: xn, inv_ell
       real(wp), dimension(m), intent(in) :: qx, qy, f
+      !> The correction's share of the traction in units of μp_n, and μ p̂_n,e per strip.
+      real(wp), intent(in) :: shift(2)
+      real(wp), dimension(m), intent(in) :: mu_pe
       real(wp), dimension(m), intent(inout) :: sx, sy, sxy, cmax, n_adh
       integer :: l
 
@@ -506,7 +545,8 @@ contains
          sx(l) = sx(l) + qx(l)
          sy(l) = sy(l) + qy(l)
          sxy(l) = sxy(l) + xn*qy(l)
-         cmax(l) = max(cmax(l), (qx(l)*qx(l) + qy(l)*qy(l))*(inv_ell*inv_ell))
+         cmax(l) = max(cmax(l), (qx(l)*inv_ell + shift(1)*mu_pe(l))**2 + &
+            (qy(l)*inv_ell + shift(2)*mu_pe(l))**2)
          n_adh(l) = n_adh(l) + merge(1.0_wp, 0.0_wp, f(l) >= 1.0_wp)
       end do
    end subroutine accumulate_step

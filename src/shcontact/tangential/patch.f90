@@ -25,7 +25,8 @@ module shcontact_tangential_patch
       real(wp) :: fn = 0.0_wp
       !> Normalised forces f = F/(μ F_n).
       real(wp) :: fx_norm = 0.0_wp, fy_norm = 0.0_wp
-      !> Coulomb check max |p|/(μ p_n,e) over contact elements.
+      !> Coulomb check max |p|/(μ p_n,e) over contact elements, of the tractions as reported:
+      !> after the exact-ellipse correction and the Coulomb limit of the totals (doc/tangential.md).
       real(wp) :: coulomb_ratio = 0.0_wp
       !> Adhesion area / contact area.
       real(wp) :: adhesion_fraction = 0.0_wp
