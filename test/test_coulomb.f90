@@ -1,11 +1,11 @@
 !> Never past Coulomb (issue 28): the tangential force of every patch stays inside the traction
 !> bound, |f| = |F_t|/(μF_n) ≤ 1 + 1e-12, on every case of the exact-theory sets of the repository
 !> (data/exact/: the Hertz ellipses of the correction table and its check, and, when
-!> ../shared/profiles is present, every patch of the 21 wheel positions and the shared DOEs) and
+!> the external data are there (SHCONTACT_EXTERNAL_DATA), every patch of the 21 wheel positions and the shared DOEs) and
 !> on a seeded random DOE near full slip over every bound and correction; and the Coulomb check
 !> `coulomb_ratio` is that of the corrected tractions (doc/tangential.md "Never past Coulomb").
 module test_coulomb
-   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_error, only: lib_error => error_type
@@ -28,7 +28,9 @@ module test_coulomb
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use shcontact_tangential_ellipse_correction, only: table_node_case
    use shcontact_tangential_ellipse_table, only: table_t_phi
-   use test_validation, only: read_columns, manchester_profiles, profiles_dir, summary_values
+   use test_validation, only: read_columns, manchester_profiles, skip_without_profiles, &
+      summary_values
+   use test_external_data, only: external_file
    implicit none
    private
    public :: collect_coulomb
@@ -118,21 +120,19 @@ contains
 
    !> Every patch our geometry finds at each position of data/exact/ (one or two), each under
    !> F_n = 64.7 kN, with every case of its DOE (216), and the shared DOEs of ty0 (10³) and ty5p8
-   !> (20³) when present: the defaults and without the correction. Needs ../shared/profiles.
+   !> (20³): the defaults and without the correction. Needs the external data (Manchester
+   !> profiles, CONTACT's shared DOEs; SHCONTACT_EXTERNAL_DATA).
    subroutine test_position_sets(error)
       type(error_type), allocatable, intent(out) :: error
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(lib_error), allocatable :: err
       real(wp) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr
-      logical :: there
+      character(len=:), allocatable :: doe
       integer :: k
 
-      inquire (file=profiles_dir//'MBench_S1002_v3.prw', exist=there)
-      if (.not. there) then
-         call skip_test(error, '../shared/profiles is absent')
-         return
-      end if
+      call skip_without_profiles(error)
+      if (allocated(error)) return
       call manchester_profiles(wheel, rail, track, err)
       if (allocated(err)) then
          call test_failed(error, err%message)
@@ -146,15 +146,11 @@ contains
             '/doe_6x6x6_exact_nonhertz.csv', 216, error)
          if (allocated(error)) return
       end do
-      inquire (file='../shared/reference/ty0_literal/doe_10x10x10_exact_nonhertz.csv', &
-         exist=there)
-      if (there) call position_doe(0.0_wp, &
-         '../shared/reference/ty0_literal/doe_10x10x10_exact_nonhertz.csv', 1000, error)
+      doe = external_file('reference/ty0_literal/doe_10x10x10_exact_nonhertz.csv', error)
+      if (.not. allocated(error)) call position_doe(0.0_wp, doe, 1000, error)
       if (allocated(error)) return
-      inquire (file='../shared/reference/ty5p8_literal/doe_20x20x20_exact_nonhertz.csv', &
-         exist=there)
-      if (there) call position_doe(5.8_wp, &
-         '../shared/reference/ty5p8_literal/doe_20x20x20_exact_nonhertz.csv', 8000, error)
+      doe = external_file('reference/ty5p8_literal/doe_20x20x20_exact_nonhertz.csv', error)
+      if (.not. allocated(error)) call position_doe(5.8_wp, doe, 8000, error)
    contains
       subroutine position_doe(y_ws, doe, n_expected, error)
          real(wp), intent(in) :: y_ws
