@@ -38,6 +38,7 @@ program tester
    use test_cli, only: collect_cli
    use test_api, only: collect_api
    use test_kinematics, only: collect_kinematics
+   use test_kinematic_balance, only: collect_kinematic_balance
    use test_api_kinematic, only: collect_api_kinematic
    use test_examples, only: collect_examples
    use test_validation, only: collect_validation
@@ -85,6 +86,7 @@ program tester
       new_testsuite('cli', collect_cli), &
       new_testsuite('api', collect_api), &
       new_testsuite('kinematics', collect_kinematics), &
+      new_testsuite('kinematic_balance', collect_kinematic_balance), &
       new_testsuite('api_kinematic', collect_api_kinematic), &
       new_testsuite('examples', collect_examples), &
       new_testsuite('validation', collect_validation), &

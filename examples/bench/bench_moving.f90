@@ -10,17 +10,27 @@ module bench_moving
    implicit none
    private
 
-   public :: kinematic_kernel, hunting_states, scan_positions
+   public :: kinematic_kernel, hunting_states, flange_states, scan_positions
 
    !> Vehicle speed (mm/s), nominal radius (mm) and vertical wheel load (N) of the items.
    real(wp), parameter :: speed = 30000.0_wp, r_nom = 460.0_wp, wheel_load = 64700.0_wp
 
-   !> One kinematic call per run(k): state k of the list (cyclically), or always state 1.
+   !> Step through a 1000-state trajectory: coprime with 1000, and 201 = 1000/5 + 1, so that
+   !> five consecutive calls visit the five amplitude blocks of [[hunting_states]] and 1000
+   !> calls visit every state once.
+   integer, parameter :: trajectory_stride = 201
+
+   !> One kinematic call per run(k): the next state of the list, taken with the stride
+   !> trajectory_stride and continued from batch to batch (so every batch covers every part of
+   !> the trajectory, and the batches together the whole of it), or always state 1.
    type, extends(kernel_type) :: kinematic_kernel
       type(contact_solver_type) :: solver
       type(wheelset_state_type), allocatable :: states(:)
       logical :: moving = .true.
       integer :: failures = 0
+      !> Calls made, calls with two or more loaded patches, calls whose main patch has
+      !> |γ₀| > 0.9 rad (flange contact).
+      integer :: calls = 0, two_patches = 0, flange = 0
       real(wp) :: checksum = 0.0_wp
    contains
       procedure :: run => run_kinematic
@@ -37,7 +47,8 @@ contains
       integer :: i
 
       i = 1
-      if (self%moving) i = modulo(k - 1, size(self%states)) + 1
+      if (self%moving) i = modulo(self%calls*trajectory_stride, size(self%states)) + 1
+      self%calls = self%calls + 1
       call self%solver%solve_kinematic(self%states(i), &
          contact_load_type(load_vertical_force, wheel_load), result, error)
       if (allocated(error)) then
@@ -46,6 +57,9 @@ contains
          self%message = error%message
          return
       end if
+      if (count(result%patch(1:result%n_loaded)%fn > 0.0_wp) >= 2) &
+         self%two_patches = self%two_patches + 1
+      if (abs(result%main%gamma0) > 0.9_wp) self%flange = self%flange + 1
       self%checksum = self%checksum + result%track%fy
    end subroutine run_kinematic
 
@@ -72,6 +86,28 @@ contains
             pitch_rate=pure_rolling_pitch_rate(speed, r_nom)*(1.0_wp + 2.0e-4_wp))
       end do
    end function hunting_states
+
+   !> A wheelset approaching the flange: t_y = 7 + 2 sin(ω₁t) mm (5–9 mm) and yaw =
+   !> 10 sin(ω₂t) mrad with two incommensurate frequencies, so that the states cover the
+   !> rectangle of t_y and yaw, with the velocities of the motion and a small longitudinal creep.
+   !> Tread and flange patches are loaded together on part of it, the flange alone on the rest.
+   pure function flange_states(n) result(states)
+      integer, intent(in) :: n
+      type(wheelset_state_type) :: states(n)
+      real(wp), parameter :: two_pi = 6.283185307179586_wp, dt = 1.0e-3_wp, f1 = 2.5_wp, &
+         f2 = 1.6180339887_wp, centre = 7.0_wp, a = 2.0_wp, psi = 0.01_wp
+      real(wp) :: t, w1, w2
+      integer :: i
+
+      w1 = two_pi*f1
+      w2 = two_pi*f2
+      do i = 1, n
+         t = (i - 1)*dt
+         states(i) = wheelset_state_type(y_ws=centre + a*sin(w1*t), yaw=psi*sin(w2*t), &
+            v_forward=speed, v_lateral=a*w1*cos(w1*t), yaw_rate=psi*w2*cos(w2*t), &
+            pitch_rate=pure_rolling_pitch_rate(speed, r_nom)*(1.0_wp + 2.0e-4_wp))
+      end do
+   end function flange_states
 
    !> Solve every position t_y = −10 … 10 mm in steps of 0.01 mm at the given yaw angles
    !> (pure rolling, vertical load) and report the failed calls with their messages.

@@ -8,7 +8,7 @@ module bench_moving_items
    use shcontact_tangential_options, only: tangential_options_type, correction_none
    use bench_timing, only: timing_type, time_kernel, time_side_by_side, wall_time
    use bench_kernels, only: full_case_kernel
-   use bench_moving, only: kinematic_kernel, hunting_states, scan_positions
+   use bench_moving, only: kinematic_kernel, hunting_states, flange_states, scan_positions
    use bench_config, only: bench_config_type, sizes
    use bench_case, only: bench_case_type
    use bench_results, only: summary_type
@@ -22,16 +22,18 @@ contains
 
    !> The kinematic call (issue 12), 100 strips x 50 elements, vertical load 64.7 kN, 30 m/s:
    !> at one fixed wheelset position with the trajectory's velocities (new creepages at every
-   !> call; the geometry and the prepared normal problem are reused) and along a hunting
-   !> trajectory whose t_y and yaw change at every call (amplitudes 0.01-8 mm, up to 10 mrad),
-   !> measured in the same run, with the ratio.
+   !> call; the geometry and the prepared normal problem are reused), along the whole hunting
+   !> trajectory (t_y and yaw new every call, amplitudes 0.01-8 mm, up to 10 mrad, taken with a
+   !> stride so that every batch covers every amplitude, issue 25), and along a wheelset
+   !> approaching the flange (t_y 5-9 mm, yaw +-10 mrad: two patches and flange contact),
+   !> measured in the same run, with the ratios to the fixed call.
    subroutine moving_section(config, summary)
       !> The options of the run.
       type(bench_config_type), intent(in) :: config
       !> The figures of the targets.
       type(summary_type), intent(inout) :: summary
-      type(kinematic_kernel) :: fixed, moving
-      type(timing_type) :: t_fixed, t_moving
+      type(kinematic_kernel) :: fixed, moving, flange
+      type(timing_type) :: t_fixed, t_moving, t_flange
       type(error_type), allocatable :: error
       real(wp) :: t_init
 
@@ -43,7 +45,14 @@ contains
       call stop_on(error, 'solver init')
       call fixed%solver%init('builtin:S1002', 'builtin:UIC60', error)
       call stop_on(error, 'solver init')
+      call flange%solver%init('builtin:S1002', 'builtin:UIC60', error)
+      call stop_on(error, 'solver init')
       moving%states = hunting_states(1000)
+      flange%states = flange_states(1000)
+      ! At least 50 calls per batch: with the stride every 9 consecutive calls cover all five
+      ! amplitudes, and the 15 batches together 750 states spread over the whole trajectory.
+      moving%min_calls = 50
+      flange%min_calls = 50
       ! Same position (that of state 200), the velocities of the trajectory: new creepages at
       ! every call, as a vehicle code's call when the wheelset has not moved.
       fixed%states = moving%states
@@ -56,12 +65,22 @@ contains
       t_init = wall_time() - t_init
       write (output_unit, '(2x,a,f8.1,a)') 'first yawed call (also prepares the yaw table): ', &
          1.0e6_wp*t_init, ' us, once per wheel'
+      call flange%run(1)
       t_fixed = time_kernel(fixed, config%runs, config%batch_time)
       call report(fixed, t_fixed, 'same position, new velocities (creepages) every call')
       t_moving = time_kernel(moving, config%runs, config%batch_time)
-      call report(moving, t_moving, 'hunting trajectory, t_y and yaw new every call')
-      write (output_unit, '(2x,a,f7.2,a,i0)') 'ratio moving/fixed: ', &
-         t_moving%median/t_fixed%median, '; failed calls: ', moving%failures + fixed%failures
+      call report(moving, t_moving, 'whole hunting trajectory, t_y and yaw new every call')
+      t_flange = time_kernel(flange, config%runs, config%batch_time)
+      call report(flange, t_flange, 'approaching the flange, t_y 5-9 mm, yaw +-10 mrad')
+      write (output_unit, '(2x,a,i0,a,i0,a)') 'hunting: ', moving%calls, ' calls (', &
+         min(moving%calls, size(moving%states)), ' distinct states)'
+      write (output_unit, '(2x,a,i0,a,f5.1,a,f5.1,a)') 'flange: ', flange%calls, &
+         ' calls, two or more loaded patches in ', 100.0_wp*flange%two_patches/flange%calls, &
+         ' %, main patch on the flange (|gamma0| > 0.9 rad) in ', &
+         100.0_wp*flange%flange/flange%calls, ' %'
+      write (output_unit, '(2x,a,f7.2,a,f7.2,a,i0)') 'ratio moving/fixed: hunting ', &
+         t_moving%median/t_fixed%median, ', flange ', t_flange%median/t_fixed%median, &
+         '; failed calls: ', moving%failures + fixed%failures + flange%failures
       summary%moving = t_moving%median
       summary%moving_ratio = t_moving%median/t_fixed%median
    end subroutine moving_section

@@ -13,6 +13,9 @@ module bench_timing
    !> may vary its input with k. `failed` is set by the kernel when the library reported an error.
    type, abstract :: kernel_type
       logical :: failed = .false.
+      !> Fewest calls in a timed batch (a trajectory kernel needs enough calls per batch to
+      !> cover the whole trajectory's range in every batch).
+      integer :: min_calls = 1
       character(len=:), allocatable :: message
    contains
       procedure(run_interface), deferred :: run
@@ -131,7 +134,7 @@ contains
          call kernel%run(k)
       end do
       t_one = max((wall_time() - t0)/batch, 1.0e-9_wp)
-      batch = max(1, min(10000000, nint(min_batch_time/t_one)))
+      batch = max(kernel%min_calls, 1, min(10000000, nint(min_batch_time/t_one)))
    end function calibrated_batch
 
    !> Median of a sample (the mean of the two middle values for an even count).

@@ -74,6 +74,10 @@ module shcontact_normal_coupling
    !> Most groups that one factorisation holds out of contact by the capacitance method
    !> ([[hold_negative_groups]]); beyond them the system is factorised again without them.
    integer, parameter :: max_held = 8
+   !> Peak, relative to the largest group peak of the first solve, below which a group's
+   !> length step is damped (weight peak/(entry_weight peak_max)): it makes the loads
+   !> continuous where a group enters the contact ([[consistent_lengths]]).
+   real(wp), parameter :: entry_weight = 1.0e-3_wp
 
    !> The factorised linear system of the groups in contact ([[solve_groups]]): the peaks and
    !> the shift Δ solve it, and [[chord_step]] reuses its LU factors as the lengths change.
@@ -317,7 +321,7 @@ contains
          weight(max_patches, max_patches)
       real(wp), dimension(max_total) :: ac_fill, log_a_fill, stretch_log
       type(group_system_type) :: system
-      real(wp) :: peak, log_a, log_peak, step, take
+      real(wp) :: peak, log_a, log_peak, step, take, peak_ref
       integer :: it, g, n
 
       n = set%n
@@ -328,12 +332,22 @@ contains
       stretch_log(1:n) = 0.0_wp
       call solve_groups(set, kern, slope, stretch_log, system, error)
       if (allocated(error)) return
+      ! A group's step is weighted by min(1, peak/p_ref): the step in ln a grows like ln(peak)
+      ! as a group's peak tends to 0, so a full step for any positive peak and none at 0 made
+      ! the coupled loads jump where a group enters the contact (the kinematic call's vertical
+      ! balance then had no root). The weight goes to 0 with the peak (peak ln peak → 0) and is
+      ! exactly 1 for every group above p_ref, so those keep the plain iteration.
+      peak_ref = 0.0_wp
+      do g = 1, n
+         peak_ref = max(peak_ref, set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g)))
+      end do
+      peak_ref = max(entry_weight*peak_ref, tiny(1.0_wp))
       do it = 1, length_iterations
          ! Loops without branches over the groups (their log and exp vectorise): a group
          ! without a positive peak takes no step (take = 0).
          do g = 1, n
             peak = set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g))
-            take = 0.5_wp + sign(0.5_wp, peak - tiny(1.0_wp))
+            take = min(1.0_wp, max(peak, 0.0_wp)/peak_ref)
             log_a = log_a_fill(g) + stretch_log(g)
             log_peak = log(set%length_per_peak(g)*max(peak, tiny(1.0_wp)))
             step = (log_peak - log_a)/(1.0_wp - length_sensitivity)
