@@ -21,7 +21,7 @@ module test_kinematic_balance
    real(wp), parameter :: speed = 30000.0_wp, r_nom = 460.0_wp, f_z = 64700.0_wp, &
       rtol = 1.0e-5_wp
    !> The six kinematic sets (ξ, η, ω) of the kinematic sample
-   !> (../shared/reference/kinematic_sample/README.md): v_y = η V, yaw rate = ω V/750 mm,
+   !> (the external data's reference/kinematic_sample/README.md): v_y = η V, yaw rate = ω V/750 mm,
    !> pitch rate = −(V/R₀)(1 + ξ).
    real(wp), parameter :: kinematic_sets(3, 6) = reshape([0.0_wp, 0.0_wp, 0.0_wp, &
       1.0e-3_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0e-3_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0e-3_wp, &
