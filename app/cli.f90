@@ -1,7 +1,7 @@
 !> The command line of the shcontact program: commands, options, usage text.
 module shcontact_app_cli
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, stat_usage
+   use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
    use shcontact_case_sweep, only: max_threads
@@ -136,6 +136,11 @@ contains
             if (.not. allocated(error) .and. index(value, '=') == 0) call fatal_error(error, &
                '--set "'//value//'": expected GROUP%NAME=VALUE, e.g. --set position%t_y=3', &
                stat_usage)
+            ! The override is read as a namelist line: a line break would be dropped on the
+            ! way (output%file=$'a\nb.h5' wrote ab.h5), so it is refused here.
+            if (.not. allocated(error) .and. scan(value, achar(10)//achar(13)) > 0) &
+               call fatal_error(error, '--set "'//line_breaks_shown(value)//'": the value '// &
+               'holds a line break; an override is one line', stat_invalid_input)
             if (.not. allocated(error)) call cli%sets%push(value)
          case ('--format')
             call option_value(i, arg, value, has_value, error)
@@ -377,6 +382,17 @@ contains
          '": the name holds a control character (byte '//str_int(iachar(name(k:k)))// &
          '); choose a name without one', stat_usage)
    end subroutine check_output_name
+
+   !> The text with each line break (LF, CR) shown as '?'.
+   pure function line_breaks_shown(text) result(shown)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: shown
+      integer :: k
+      shown = text
+      do k = 1, len(text)
+         if (text(k:k) == achar(10) .or. text(k:k) == achar(13)) shown(k:k) = '?'
+      end do
+   end function line_breaks_shown
 
    function argument(i) result(arg)
       integer, intent(in) :: i

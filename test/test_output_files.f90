@@ -393,6 +393,16 @@ contains
       if (allocated(error)) return
       call check(error, holds(dir, 'test -z "$(ls | grep -v -e out.txt -e err.txt)"'), &
          message='no file written for a name with a tab')
+      if (allocated(error)) return
+      ! A line break through --set was dropped by the namelist reading: ab.h5 was written.
+      stat = run_program(dir, 'run -q --set output%file="$(printf ''a\nb.h5'')"')
+      call check(error, stat, 2, message='newline in --set: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '--set "output%file=a?b.h5": the '// &
+         'value holds a line break', 'newline in --set')
+      if (allocated(error)) return
+      call check(error, holds(dir, 'test -z "$(ls | grep -v -e out.txt -e err.txt)"'), &
+         message='no file written for a --set value with a newline')
       call shell('rm -rf '//dir)
    end subroutine test_control_characters
 

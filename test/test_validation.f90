@@ -17,6 +17,8 @@ module test_validation
    use shcontact_core_material, only: material_type
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_reader, only: read_profile
+   use shcontact_profile_builtin, only: builtin_profile
+   use shcontact_core_strings, only: str_real
    use shcontact_profile_cleanup, only: clean_profile
    use shcontact_geometry_track, only: track_type, wheelset_position_type
    use shcontact_geometry_contact, only: contact_options_type, find_contact_patches
@@ -65,6 +67,7 @@ contains
          new_unittest('doe_ty5p8_local_hertz_vs_exact', test_doe_ty5p8_local_hertz), &
          new_unittest('doe_ty5p8_carter_vs_exact', test_doe_ty5p8_carter), &
          new_unittest('doe_project_positions_vs_exact', test_doe_positions), &
+         new_unittest('doe_positions_builtin_profiles_vs_exact', test_doe_positions_builtin), &
          new_unittest('plateau_load_centre_vs_exact', test_plateau_load_centre), &
          new_unittest('two_lobe_load_split_vs_exact', test_lobes), &
          new_unittest('two_lobe_doe_per_lobe_vs_exact', test_lobe_doe) &
@@ -361,6 +364,40 @@ contains
       end do
    end subroutine test_doe_positions
 
+   !> The exact-theory positions of data/exact/ with the project's own built-in S1002 and
+   !> UIC60-canted instead of the Manchester files, so that the validation against the exact
+   !> theory runs on a clone with nothing beside it: CONTACT gives the same forces on both pairs
+   !> to 1e-4 in f (data/exact/README.md), so the data are the exact theory of the built-in pair
+   !> too. The targets of issue 13 at every position: max |Δf| ≤ 0.05, P80 |Δf_x|, |Δf_y| ≤ 0.02.
+   subroutine test_doe_positions_builtin(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: names(19) = [character(len=7) :: &
+         'yws-6p0', 'yws-4p0', 'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', &
+         'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', &
+         'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', 'yws7p0']
+      real(wp), allocatable :: ex(:), ey(:)
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
+      integer :: k
+      do k = 1, size(names)
+         call summary_values('data/exact/'//trim(names(k))//'/summary.csv', y_ws, y_geo, pen, &
+            ycp_r, delt, y_ref, error)
+         if (allocated(error)) return
+         call doe_errors('data/exact/'//trim(names(k))//'/doe_6x6x6_exact_nonhertz.csv', &
+            y_ws, y_ref, 216, ex, ey, error, builtin=.true.)
+         if (allocated(error)) return
+         call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, &
+            message=trim(names(k))//' (built-in profiles): max |Delta f| '// &
+            str_real(max(maxval(ex), maxval(ey)))//' above the target 0.05')
+         if (allocated(error)) return
+         call check(error, &
+            percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
+            message=trim(names(k))//' (built-in profiles): P80 |Delta f_x|, |Delta f_y| '// &
+            str_real(percentile(ex, 0.8_wp))//', '//str_real(percentile(ey, 0.8_wp))// &
+            ' above the target 0.02')
+         if (allocated(error)) return
+      end do
+   end subroutine test_doe_positions_builtin
+
    !> The plateau positions Y_WS = 0.75, 1 and 1.25 mm (doc/validation.md §6.4, "Twelve more
    !> positions"): the lateral load centre of our patch against CONTACT's (its module-3 pressure,
    !> grid_module3_exact_nonhertz.csv, about its geometric point), ours minus CONTACT's within
@@ -622,7 +659,7 @@ contains
    !> reference point y_ref (track y) with the given normal reduction (default: the library's);
    !> ex unallocated (and the test skipped) without the data.
    subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, flexibility, &
-      correction)
+      correction, builtin)
       character(len=*), intent(in) :: doe
       real(wp), intent(in) :: y_ws, y_ref
       integer, intent(in) :: n_expected
@@ -632,6 +669,8 @@ contains
       integer, intent(in), optional :: flexibility
       !> Tangential `correction_*` (default: the library's, `exact-ellipse`).
       integer, intent(in), optional :: correction
+      !> The built-in S1002 and UIC60-canted instead of the Manchester files (default .false.).
+      logical, intent(in), optional :: builtin
       type(normal_patch_type) :: patch
       type(tangential_options_type) :: options
       type(march_workspace_type) :: ws
@@ -646,7 +685,8 @@ contains
          call test_failed(error, doe//' is absent')
          return
       end if
-      call reference_patch(patch, error, y_ws=y_ws, y_ref=y_ref, reduction=reduction)
+      call reference_patch(patch, error, y_ws=y_ws, y_ref=y_ref, reduction=reduction, &
+         builtin=builtin)
       if (allocated(error)) return
       call read_columns(doe, [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'fx', 'fy'], &
          cases, error)
@@ -693,7 +733,7 @@ contains
    !> The normal solution of the reference case: Manchester profiles, Y_WS = 0, semi-Hertz with
    !> the default (coupled) reduction, 100 strips, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27 (the
    !> material_type defaults). Skips when the shared data is absent.
-   subroutine reference_patch(patch, error, y_ws, y_ref, reduction)
+   subroutine reference_patch(patch, error, y_ws, y_ref, reduction, builtin)
       type(normal_patch_type), intent(out) :: patch
       type(error_type), allocatable, intent(out) :: error
       !> Normal reduction (default: the library's, `coupled`).
@@ -701,6 +741,9 @@ contains
       !> Y_WS (default 0) and CONTACT's reference point (track y): the patch nearest it is taken
       !> (default: the deepest).
       real(wp), intent(in), optional :: y_ws, y_ref
+      !> The built-in S1002 and UIC60-canted (on the same track, no external data needed) instead
+      !> of the Manchester files (default .false.).
+      logical, intent(in), optional :: builtin
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(patch_geometry_type), allocatable :: geometry(:)
@@ -710,9 +753,16 @@ contains
       real(wp) :: shift
       integer :: k, best
 
-      call skip_without_profiles(error)
-      if (allocated(error)) return
-      call manchester_profiles(wheel, rail, track, err)
+      if (present(builtin)) then
+         if (builtin) then
+            call builtin_profiles(wheel, rail, track, err)
+         end if
+      end if
+      if (.not. (allocated(err) .or. builtin_chosen())) then
+         call skip_without_profiles(error)
+         if (allocated(error)) return
+         call manchester_profiles(wheel, rail, track, err)
+      end if
       shift = 0.0_wp
       if (present(y_ws)) shift = y_ws
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
@@ -735,7 +785,25 @@ contains
          material_type(), err)
       if (.not. allocated(err)) call solve_load(contact, normal_force, patch, err)
       if (allocated(err)) call test_failed(error, err%message)
+   contains
+      logical function builtin_chosen()
+         builtin_chosen = .false.
+         if (present(builtin)) builtin_chosen = builtin
+      end function builtin_chosen
    end subroutine reference_patch
+
+   !> The built-in S1002 and UIC60-canted (1:40 in the profile, origin at its top, as the
+   !> Manchester rail file), cleaned as a case cleans them, on the Manchester track.
+   subroutine builtin_profiles(wheel, rail, track, err)
+      type(profile_type), intent(out) :: wheel, rail
+      type(track_type), intent(out) :: track
+      type(lib_error), allocatable, intent(out) :: err
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call clean_profile(wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60-canted', rail, err)
+      if (.not. allocated(err)) call clean_profile(rail, err)
+      track%rail_canted = .true.
+   end subroutine builtin_profiles
 
    !> Mark the test skipped (error allocated, as skip_test does) when SHCONTACT_EXTERNAL_DATA is
    !> unset, failed when it names a folder without the Manchester sample profiles.
