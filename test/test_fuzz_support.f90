@@ -82,7 +82,19 @@ contains
       colon = index(err(start:), ':')
       if (colon < 2) return
       yes = index(input, err(start:start + colon - 2)) > 0
+      ! A case file's tabs count as blanks, inside quoted names too (doc/app.md, Case files).
+      if (.not. yes) yes = index(tabs_as_blanks(input), err(start:start + colon - 2)) > 0
    end function names_input_file
+
+   pure function tabs_as_blanks(text) result(blanked)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: blanked
+      integer :: k
+      blanked = text
+      do k = 1, len(text)
+         if (text(k:k) == achar(9)) blanked(k:k) = ' '
+      end do
+   end function tabs_as_blanks
 
    !> 0 when the library accepts the value for `key` (option setter, set_material, or the
    !> track check), else its status; -1 when the library has no such input.
