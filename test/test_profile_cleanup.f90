@@ -7,7 +7,7 @@ module test_profile_cleanup
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_usage
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_reader, only: read_profile
-   use shcontact_profile_cleanup, only: clean_profile, is_finite_value
+   use shcontact_profile_cleanup, only: clean_profile, is_finite_value, max_profile_points
    implicit none
    private
    public :: collect_profile_cleanup
@@ -23,6 +23,7 @@ contains
          new_unittest('finite_by_bits', test_finite_bits), &
          new_unittest('nan_inf_rejected', test_nan_inf), &
          new_unittest('too_few_points', test_too_few), &
+         new_unittest('too_many_points', test_too_many), &
          new_unittest('duplicate_rejected', test_duplicate), &
          new_unittest('loop_rejected', test_loop), &
          new_unittest('unit_mistake_rejected', test_units), &
@@ -76,6 +77,20 @@ contains
       call expect_error(error, err, stat_invalid_input, [character(len=50) :: &
          'memory, line 7:', 'after 3 point(s)', 'at least 4'])
    end subroutine test_too_few
+
+   !> Issue 24 item 9: a 2-million-point profile ran for minutes (pairwise loop checks); more
+   !> than max_profile_points points are refused at once, with the count and the bound.
+   subroutine test_too_many(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: p
+      type(lib_error), allocatable :: err
+      integer, allocatable :: lines(:)
+      p = line_profile(max_profile_points + 1)
+      allocate (lines(max_profile_points + 1), source=0)
+      call clean_profile(p, err, lines)
+      call expect_error(error, err, stat_invalid_input, [character(len=50) :: &
+         'the profile has 50001 points', 'at most 50000 are accepted'])
+   end subroutine test_too_many
 
    !> A repeated line in a file: both lines named.
    subroutine test_duplicate(error)

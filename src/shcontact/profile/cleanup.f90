@@ -2,7 +2,7 @@
 !>
 !> [[clean_profile]] runs, in this order:
 !>
-!> 1. at least [[min_profile_points]] points;
+!> 1. at least [[min_profile_points]] and at most [[max_profile_points]] points;
 !> 2. every coordinate finite. The test looks at the IEEE exponent bits, never compares or
 !>    computes with the value, so it holds under `-ffast-math` (where `x /= x` and
 !>    `ieee_is_finite` may be folded away) and under `-ffpe-trap=invalid`;
@@ -35,11 +35,15 @@ module shcontact_profile_cleanup
    private
 
    public :: clean_profile, is_finite_value
-   public :: min_profile_points, duplicate_distance, min_arc_length, max_arc_length
+   public :: min_profile_points, max_profile_points, duplicate_distance, min_arc_length, max_arc_length
    public :: zigzag_angle, kink_angle, kink_quiet_angle, kink_window
 
    !> Fewest points a profile may have.
    integer, parameter :: min_profile_points = 4
+   !> Most points a profile may have: 0.01 mm steps over a 500 mm profile. The loop and kink
+   !> checks compare segments pairwise, so a bound keeps a mistaken input (a 2-million-point
+   !> file took minutes) to seconds.
+   integer, parameter :: max_profile_points = 50000
    !> Consecutive points closer than this are duplicates (mm).
    real(wp), parameter :: duplicate_distance = 1.0e-6_wp
    !> Shortest total arc length accepted (mm); CONTACT's bound.
@@ -129,6 +133,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: n
       n = profile%size()
+      if (n > max_profile_points) then
+         call fatal_error(error, source_name(profile)//': the profile has '//str_int(n)// &
+            ' points; at most '//str_int(max_profile_points)//' are accepted (0.01 mm steps '// &
+            'over 500 mm): resample it more coarsely', stat_invalid_input)
+         return
+      end if
       if (n >= min_profile_points) return
       if (n == 0) then
          call fatal_error(error, source_name(profile)//': the profile has no points; at least '// &
