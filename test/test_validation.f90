@@ -352,14 +352,7 @@ contains
          if (allocated(error) .or. .not. allocated(ex)) return
          call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
          if (allocated(error)) return
-         ! The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤
-         ! 0.05, P80 |Δf_x|, |Δf_y| ≤ 0.02.
-         call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, &
-            message=trim(names(k))//': max |Delta f| above the target 0.05')
-         if (allocated(error)) return
-         call check(error, &
-            percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
-            message=trim(names(k))//': P80 |Delta f_x| or |Delta f_y| above the target 0.02')
+         call check_position_targets(ex, ey, trim(names(k)), error)
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions
@@ -385,18 +378,25 @@ contains
          call doe_errors('data/exact/'//trim(names(k))//'/doe_6x6x6_exact_nonhertz.csv', &
             y_ws, y_ref, 216, ex, ey, error, builtin=.true.)
          if (allocated(error)) return
-         call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, &
-            message=trim(names(k))//' (built-in profiles): max |Delta f| '// &
-            str_real(max(maxval(ex), maxval(ey)))//' above the target 0.05')
-         if (allocated(error)) return
-         call check(error, &
-            percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
-            message=trim(names(k))//' (built-in profiles): P80 |Delta f_x|, |Delta f_y| '// &
-            str_real(percentile(ex, 0.8_wp))//', '//str_real(percentile(ey, 0.8_wp))// &
-            ' above the target 0.02')
+         call check_position_targets(ex, ey, trim(names(k))//' (built-in profiles)', error)
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions_builtin
+
+   !> The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤ 0.05,
+   !> P80 |Δf_x|, |Δf_y| ≤ 0.02.
+   subroutine check_position_targets(ex, ey, label, error)
+      real(wp), intent(in) :: ex(:), ey(:)
+      character(len=*), intent(in) :: label
+      type(error_type), allocatable, intent(out) :: error
+      call check(error, max(maxval(ex), maxval(ey)) <= 0.05_wp, message=label// &
+         ': max |Delta f| '//str_real(max(maxval(ex), maxval(ey)))//' above the target 0.05')
+      if (allocated(error)) return
+      call check(error, &
+         percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= 0.02_wp, &
+         message=label//': P80 |Delta f_x|, |Delta f_y| '//str_real(percentile(ex, 0.8_wp))// &
+         ', '//str_real(percentile(ey, 0.8_wp))//' above the target 0.02')
+   end subroutine check_position_targets
 
    !> The plateau positions Y_WS = 0.75, 1 and 1.25 mm (doc/validation.md §6.4, "Twelve more
    !> positions"): the lateral load centre of our patch against CONTACT's (its module-3 pressure,
