@@ -1,5 +1,5 @@
 !> The kinematic call against the exact theory (issue 12): `solve_kinematic` on the 36 cases of
-!> ../shared/reference/kinematic_sample/ (CONTACT module 1, wheelset position and velocities
+!> the external data's reference/kinematic_sample/ (CONTACT module 1, wheelset position and velocities
 !> prescribed, F_z = 64.7 kN vertical; README there). Writes kinematic_cases.csv (one row per
 !> case), kinematic_summary.csv (statistics per position/yaw group and overall) and kinematic.md
 !> (the same as Markdown tables) to the output directory.
@@ -450,7 +450,7 @@ contains
       end do
       write (unit, '(a)') '', 'Creepages (‰; φ in 1/m): ours at our geometric point, ours '// &
          'transferred to CONTACT''s reference point, and that minus CONTACT''s (Δ; CONTACT''s '// &
-         'values are in ../shared/reference/kinematic_sample).', '', &
+         'values are in the external data''s reference/kinematic_sample).', '', &
          '| case | Y_WS | yaw (mrad) | ξ_k, η_k, ω_k (‰) | y_g (mm) | x_g (mm) | '// &
          'ξ ours / transf. / Δ | η ours / transf. / Δ | φ ours / transf. / Δ |', &
          '|---|---|---|---|---|---|---|---|---|'
