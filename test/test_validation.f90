@@ -54,6 +54,13 @@ module test_validation
    !> The reference case (README §2).
    real(wp), parameter :: normal_force = 64700.0_wp
 
+
+   !> The single-lobe exact-theory positions of data/exact/ (doc/validation.md §6.4).
+   character(len=*), parameter :: exact_positions(19) = [character(len=7) :: &
+      'yws-6p0', 'yws-4p0', 'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', &
+      'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', &
+      'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', 'yws7p0']
+
 contains
 
    !> Collect the tests.
@@ -313,12 +320,7 @@ contains
    !> Needs the external data's sample profiles.
    subroutine test_doe_positions(error)
       type(error_type), allocatable, intent(out) :: error
-      integer, parameter :: n_positions = 19
-      character(len=*), parameter :: names(n_positions) = [character(len=7) :: &
-         'yws-6p0', 'yws-4p0', 'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', &
-         'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', &
-         'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', &
-         'yws7p0']
+      integer, parameter :: n_positions = size(exact_positions)
       real(wp), parameter :: rows(4, n_positions) = reshape([ &
          0.009_wp, 0.008_wp, 0.002_wp, 0.002_wp, &
          0.008_wp, 0.008_wp, 0.003_wp, 0.002_wp, &
@@ -340,19 +342,14 @@ contains
          0.016_wp, 0.015_wp, 0.012_wp, 0.009_wp, &
          0.010_wp, 0.011_wp, 0.003_wp, 0.010_wp], [4, n_positions])
       real(wp), allocatable :: ex(:), ey(:)
-      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
       integer :: k
 
-      do k = 1, size(names)
-         call summary_values('data/exact/'//trim(names(k))//'/summary.csv', y_ws, y_geo, pen, &
-            ycp_r, delt, y_ref, error)
-         if (allocated(error)) return
-         call doe_errors('data/exact/'//trim(names(k))//'/doe_6x6x6_exact_nonhertz.csv', &
-            y_ws, y_ref, 216, ex, ey, error)
+      do k = 1, n_positions
+         call position_errors(trim(exact_positions(k)), ex, ey, error, builtin=.false.)
          if (allocated(error) .or. .not. allocated(ex)) return
-         call check_row(ex, ey, rows(:, k), trim(names(k))//' defaults', error)
+         call check_row(ex, ey, rows(:, k), trim(exact_positions(k))//' defaults', error)
          if (allocated(error)) return
-         call check_position_targets(ex, ey, trim(names(k)), error)
+         call check_position_targets(ex, ey, trim(exact_positions(k)), error)
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions
@@ -364,24 +361,31 @@ contains
    !> too. The targets of issue 13 at every position: max |Δf| ≤ 0.05, P80 |Δf_x|, |Δf_y| ≤ 0.02.
    subroutine test_doe_positions_builtin(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: names(19) = [character(len=7) :: &
-         'yws-6p0', 'yws-4p0', 'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', &
-         'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', 'yws2p5', 'yws3p0', &
-         'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5', 'yws7p0']
       real(wp), allocatable :: ex(:), ey(:)
-      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
       integer :: k
-      do k = 1, size(names)
-         call summary_values('data/exact/'//trim(names(k))//'/summary.csv', y_ws, y_geo, pen, &
-            ycp_r, delt, y_ref, error)
+      do k = 1, size(exact_positions)
+         call position_errors(trim(exact_positions(k)), ex, ey, error, builtin=.true.)
          if (allocated(error)) return
-         call doe_errors('data/exact/'//trim(names(k))//'/doe_6x6x6_exact_nonhertz.csv', &
-            y_ws, y_ref, 216, ex, ey, error, builtin=.true.)
-         if (allocated(error)) return
-         call check_position_targets(ex, ey, trim(names(k))//' (built-in profiles)', error)
+         call check_position_targets(ex, ey, trim(exact_positions(k))//' (built-in profiles)', &
+            error)
          if (allocated(error)) return
       end do
    end subroutine test_doe_positions_builtin
+
+   !> |Δf_x|, |Δf_y| of the defaults over the DOE of the data/exact/ folder `name`, on the patch
+   !> nearest CONTACT's reference point, with the Manchester or the built-in profiles.
+   subroutine position_errors(name, ex, ey, error, builtin)
+      character(len=*), intent(in) :: name
+      real(wp), allocatable, intent(out) :: ex(:), ey(:)
+      type(error_type), allocatable, intent(out) :: error
+      logical, intent(in) :: builtin
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
+      call summary_values('data/exact/'//name//'/summary.csv', y_ws, y_geo, pen, ycp_r, delt, &
+         y_ref, error)
+      if (allocated(error)) return
+      call doe_errors('data/exact/'//name//'/doe_6x6x6_exact_nonhertz.csv', y_ws, y_ref, 216, &
+         ex, ey, error, builtin=builtin)
+   end subroutine position_errors
 
    !> The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤ 0.05,
    !> P80 |Δf_x|, |Δf_y| ≤ 0.02.
