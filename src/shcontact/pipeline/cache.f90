@@ -15,20 +15,19 @@ module shcontact_pipeline_cache
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       contact_patches_type, find_contact_patches, extract_patch, prepare_wheel
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
-   use shcontact_geometry_kinematics, only: yawed_wheel_profile, axle_offset, contact_lead, &
-      true_radius_scale, scale_to_true_radius
+   use shcontact_geometry_kinematics, only: yawed_wheel_profile, axle_offset, true_radius_scale, &
+      scale_to_true_radius
    use shcontact_normal_options, only: normal_options_type
-   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load, solve_vertical_approach
+   use shcontact_normal_loading, only: normal_contact_type
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
-   use shcontact_tangential_solver, only: solve_tangential
-   use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach, load_vertical_position
+   use shcontact_pipeline_load, only: contact_load_type
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
+   use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
+      solve_patch_stage, reference_axle_of, summarise_stages
    implicit none
    private
 
@@ -76,8 +75,6 @@ module shcontact_pipeline_cache
       type(tangential_patch_type) :: tangential(max_patches)
       !> Creepages of each solved patch at its reference point.
       type(creepage_type) :: creepage(max_patches)
-      !> Longitudinal position of each patch's reference point (mm, track frame).
-      real(wp) :: x_track(max_patches) = 0.0_wp
    end type contact_cache_type
 
 contains
@@ -134,17 +131,15 @@ contains
             ' patches; the solver holds at most '//str_int(max_patches), stat_usage)
          return
       end if
-      sin_yaw = sin(yaw)
-      do k = 1, self%patches%count
-         associate (g => self%patches%patch(k), n => self%patches%points(k))
-            if (yaw /= 0.0_wp) then
+      if (yaw /= 0.0_wp) then
+         sin_yaw = sin(yaw)
+         do k = 1, self%patches%count
+            associate (g => self%patches%patch(k), n => self%patches%points(k))
                call scale_to_true_radius(g%gamma(1:n), sin_yaw, g%r_wheel(1:n))
                g%r0 = g%r0*true_radius_scale(g%gamma0, sin_yaw)
-            end if
-            self%x_track(k) = contact_lead(g%y_wheel + axle_offset(self%track), g%r0, &
-               g%gamma0, yaw)
-         end associate
-      end do
+            end associate
+         end do
+      end if
       self%t_y = t_y
       self%roll = roll
       self%yaw = yaw
@@ -196,38 +191,16 @@ contains
       type(contact_cache_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: vertical
-      integer :: k, n
+      integer :: n
 
       if (self%has_normal .and. load%mode == self%load%mode .and. &
          same(load%value, self%load%value)) return
       self%has_normal = .false.
-      n = 1
-      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position) &
-         n = self%patches%count
-      do k = self%n_prepared + 1, n
-         call prepare_normal_contact(self%contacts(k), self%patches%patch(k), &
-            self%normal_options, self%material, error, n_points=self%patches%points(k))
-         if (allocated(error)) then
-            if (n > 1) call prefix_error(error, 'patch '//str_int(k))
-            return
-         end if
-         self%n_prepared = k
-      end do
-      self%dz = 0.0_wp
-      select case (load%mode)
-      case (load_normal_force)
-         call solve_load(self%contacts(1), load%value, self%normal(1), error)
-      case (load_approach)
-         call solve_approach(self%contacts(1), load%value, self%normal(1), error)
-      case (load_vertical_position)
-         call solve_vertical_approach(self%contacts(1:n), load%value, self%normal(1:n), &
-            vertical, error)
-         self%dz = load%value
-      case default
-         call solve_vertical_load(self%contacts(1:n), load%value, self%normal(1:n), self%dz, &
-            error)
-      end select
+      n = loaded_count(load, self%patches%count)
+      call prepare_normal_stage(self%patches%patch, self%normal_options, self%material, &
+         self%contacts, self%n_prepared, n, error, self%patches%points)
+      if (allocated(error)) return
+      call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error)
       if (allocated(error)) return
       self%load = load
       self%n_loaded = n
@@ -243,82 +216,30 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       if (.not. (self%normal(k)%load > 0.0_wp)) return
-      call solve_tangential(self%ws, self%normal(k), self%material, creepage, options, &
-         self%tangential(k), error)
-      if (allocated(error)) then
-         if (self%n_loaded > 1) call prefix_error(error, 'patch '//str_int(k))
-         return
-      end if
+      call solve_patch_stage(self%ws, self%normal(k), self%material, creepage, options, &
+         self%tangential(k), k, self%n_loaded, error)
+      if (allocated(error)) return
       self%creepage(k) = creepage
    end subroutine solve_patch
 
-   !> Axle coordinate L (mm) of loaded patch k's reference point: the first contact's, moved by
-   !> y_shift cos γ_plane along the contact plane (shcontact_normal_semihertz's
-   !> refer_to_loaded_point).
+   !> Axle coordinate L (mm) of loaded patch k's reference point (shcontact_pipeline_stages).
    pure real(wp) function reference_axle(self, k) result(axle)
       type(contact_cache_type), intent(in) :: self
       integer, intent(in) :: k
-      axle = self%patches%patch(k)%y_wheel + axle_offset(self%track) + &
-         self%normal(k)%lateral_offset()
+      axle = reference_axle_of(self%patches%patch(k), axle_offset(self%track), self%normal(k))
    end function reference_axle
 
-   !> The result: every patch, the most loaded one and the track-frame totals.
+   !> The result of the last call: the summary stage (shcontact_pipeline_stages) of the cached
+   !> stage results.
    pure subroutine summarise(self, result)
       type(contact_cache_type), intent(in) :: self
       type(contact_result_type), intent(inout) :: result
-      integer :: k, m
+      integer :: n
 
-      result%n_patches = self%patches%count
-      result%n_loaded = self%n_loaded
-      result%dz = self%dz
-      do k = 1, result%n_patches
-         associate (p => result%patch(k), g => self%patches%patch(k))
-            p%gamma0 = g%gamma0
-            p%gamma_plane = g%gamma0
-            p%r0 = g%r0
-            p%y_track = g%y_track
-            p%z_track = g%z_track
-            p%x_track = self%x_track(k)
-         end associate
-      end do
-      m = 1
-      do k = 1, self%n_loaded
-         associate (p => result%patch(k), n => self%normal(k), t => self%tangential(k))
-            p%fn = n%load
-            if (n%load > 0.0_wp) then
-               p%gamma0 = n%gamma0
-               p%r0 = n%r0
-               ! Along the contact plane towards the wheel's field side (y_track is in the
-               ! track frame: towards −y on the left wheel).
-               p%y_track = p%y_track + self%side*n%lateral_offset()
-               p%z_track = p%z_track + n%vertical_offset()
-               p%x_track = contact_lead(reference_axle(self, k), n%r0, n%gamma0, self%yaw)
-            end if
-            p%approach = n%approach
-            p%area = n%area
-            p%p_max = n%p_max
-            if (.not. (n%load > 0.0_wp)) cycle
-            p%fx = t%fx
-            p%fy = t%fy
-            p%mz = t%mz
-            p%fx_norm = t%fx_norm
-            p%fy_norm = t%fy_norm
-            p%fy_track = t%fy_track
-            p%fz_track = t%fz_track
-            p%coulomb_ratio = t%coulomb_ratio
-            p%adhesion_fraction = t%adhesion_fraction
-            p%nu_x = self%creepage(k)%nu_x
-            p%nu_y = self%creepage(k)%nu_y
-            p%phi = self%creepage(k)%phi
-            result%track%fx = result%track%fx + t%fx
-            result%track%fy = result%track%fy + t%fy_track
-            result%track%fz = result%track%fz + t%fz_track
-            result%track%fn = result%track%fn + n%load
-         end associate
-         if (self%normal(k)%load > self%normal(m)%load) m = k
-      end do
-      result%main_patch = m
-      result%main = result%patch(m)
+      n = self%n_loaded
+      call summarise_stages(self%patches%patch(1:self%patches%count), self%normal(1:n), &
+         self%tangential(1:n), self%creepage(1:n), self%side, axle_offset(self%track), &
+         self%yaw, self%dz, result)
    end subroutine summarise
 
    !> Copy the fields of the loaded patches, reusing the arrays of `fields`.
