@@ -837,17 +837,20 @@ contains
    end subroutine test_kinematic_sweep
 
    !> The program equals the library bit for bit in every /summary column it writes, and in the
-   !> patch counts, for both wheels (the left one is the mirror image: y_track < 0), with
-   !> prescribed creepages (`solve`) and kinematic (`solve_kinematic`), on the headline case
-   !> (t_y = 4.733 mm, 64.7 kN). Both go through the same pipeline stages
+   !> patch counts, for both wheels, with prescribed creepages (`solve`) and kinematic
+   !> (`solve_kinematic`), on the headline case (t_y = 4.733 mm, 64.7 kN; the left wheel at the
+   !> mirrored t_y = -4.733 mm, y_track < 0). Both go through the same pipeline stages
    !> (shcontact_pipeline_stages); before they did, the program's left wheel had y_track
-   !> without the side factor.
+   !> without the side factor (-737.785 mm instead of the library's -737.822 mm).
    subroutine test_both_wheels(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: side_names(2) = ['right', 'left ']
       integer, parameter :: sides(2) = [side_right, side_left]
+      ! The left wheel's case is the right one's mirror image.
+      character(len=*), parameter :: t_y_text(2) = ['4.733 ', '-4.733']
+      real(wp), parameter :: t_y(2) = [4.733_wp, -4.733_wp]
       character(len=:), allocatable :: dir, name
-      character(len=72) :: track_line
+      character(len=72) :: track_line, position_line
       type(case_summary_type), allocatable :: s(:)
       type(contact_solver_type) :: solver
       type(contact_result_type) :: r
@@ -861,10 +864,12 @@ contains
             kinematic = mode == 2
             name = trim(side_names(iside))//merge('_kinematic ', '_prescribed', kinematic)
             track_line = "&track side = '"//trim(side_names(iside))//"' /"
+            position_line = '&position t_y = '//trim(t_y_text(iside))//' /'
             if (kinematic) then
-               call write_lines(dir//'/'//trim(name)//'.nml', [kinematic_case, track_line])
+               call write_lines(dir//'/'//trim(name)//'.nml', [position_line, &
+                  kinematic_case(2:), track_line])
             else
-               call write_lines(dir//'/'//trim(name)//'.nml', [track_line])
+               call write_lines(dir//'/'//trim(name)//'.nml', [position_line, track_line])
             end if
             stat = run_program(dir, 'run '//trim(name)//'.nml -q -o '//trim(name)//'.h5')
             call check(error, stat, 0, message=name//': '//file_text(dir//'/err.txt'))
@@ -875,11 +880,11 @@ contains
             call solver%init('builtin:S1002', 'builtin:UIC60', lerr, side=sides(iside))
             if (.not. allocated(lerr)) then
                if (kinematic) then
-                  call solver%solve_kinematic(wheelset_state_type(y_ws=4.733_wp, yaw=0.004_wp, &
+                  call solver%solve_kinematic(wheelset_state_type(y_ws=t_y(iside), yaw=0.004_wp, &
                      v_forward=30000.0_wp, pitch_rate=pure_rolling_pitch_rate(30000.0_wp, &
                      460.0_wp)), contact_load_type(load_vertical_force, 64.7e3_wp), r, lerr)
                else
-                  call solver%solve(4.733_wp, 0.0_wp, contact_load_type(load_normal_force, &
+                  call solver%solve(t_y(iside), 0.0_wp, contact_load_type(load_normal_force, &
                      64.7e3_wp), creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp), r, lerr)
                end if
             end if
