@@ -150,8 +150,8 @@ contains
       if (allocated(error)) return
       call check_grid_cells(self%cache%normal_options, self%cache%tangential_options, error)
       if (allocated(error)) return
-      call prepare_profiles(self%cache%wheel, self%cache%rail, self%cache%track, self%cache%contact_options, &
-         self%cache%prepared, error)
+      call prepare_profiles(self%cache%wheel, self%cache%rail, self%cache%track, &
+         self%cache%contact_options, self%cache%prepared, error)
       if (allocated(error)) return
       self%ready = .true.
    end subroutine init_profiles
@@ -463,7 +463,8 @@ contains
       if (present(contact_options)) new_options = contact_options
       call check_finite_data(self%cache%material, new_track, error)
       if (allocated(error)) return
-      call prepare_profiles(self%cache%wheel, self%cache%rail, new_track, new_options, prepared, error)
+      call prepare_profiles(self%cache%wheel, self%cache%rail, new_track, new_options, prepared, &
+         error)
       if (allocated(error)) return
       self%cache%track = new_track
       self%cache%contact_options = new_options
