@@ -15,31 +15,32 @@
 !> solver reuses the geometry and the normal solution of consecutive cases that share them.
 module shcontact_case_runner
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: str_int
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles, find_contact_patches
+   use shcontact_geometry_kinematics, only: wheelset_state_type, axle_offset
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load
+   use shcontact_normal_loading, only: normal_contact_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
       parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
-   use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
+      load_approach
+   use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
+   use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
+      solve_patch_stage, summarise_stages
    use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
       spin_model_choices
-   use shcontact_case_result, only: case_result_type, case_summary_type
-   use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      contact_fields_type, load_normal_force, load_vertical_force, load_approach
+   use shcontact_case_result, only: case_result_type, case_summary
+   use shcontact_api_solver, only: contact_solver_type
    implicit none
    private
 
@@ -81,6 +82,8 @@ module shcontact_case_runner
       type(patch_geometry_type), allocatable :: geometry(:)
       !> The normal solution of each loaded patch.
       type(normal_patch_type), allocatable :: normal(:)
+      !> Rigid vertical approach Δz of the wheel (mm), vertical load only.
+      real(wp) :: dz = 0.0_wp
    end type stage_type
 
 contains
@@ -221,14 +224,7 @@ contains
          call solver%set_options(error, tangential=options)
       end if
       if (.not. allocated(error)) then
-         select case (setup%load_mode)
-         case ('force')
-            load = contact_load_type(load_normal_force, point%normal_force)
-         case ('approach')
-            load = contact_load_type(load_approach, point%approach)
-         case default
-            load = contact_load_type(load_vertical_force, point%vertical_force)
-         end select
+         load = case_load(setup, point)
          if (fields) then
             allocate (copies)
             call solver%solve_kinematic(kinematic_state(point), load, contact, error, copies)
@@ -241,7 +237,7 @@ contains
          result%message = error%message
          return
       end if
-      call summarise_contact(contact, result%summary)
+      result%summary = case_summary(contact)
       if (fields) then
          n = contact%n_loaded
          result%geometry = copies%geometry(1:n)
@@ -253,42 +249,6 @@ contains
          result%x_track = contact%patch(1:n)%x_track
       end if
    end subroutine solve_kinematic_case
-
-   !> Summary numbers of a solver result: the track-frame totals and the main patch.
-   pure subroutine summarise_contact(contact, s)
-      type(contact_result_type), intent(in) :: contact
-      type(case_summary_type), intent(inout) :: s
-      s%stat = 0
-      s%n_patches = contact%n_patches
-      s%n_loaded = contact%n_loaded
-      s%main_patch = contact%main_patch
-      s%fn_total = contact%track%fn
-      s%fx_total = contact%track%fx
-      s%fy_total = contact%track%fy
-      s%fz_total = contact%track%fz
-      associate (m => contact%main)
-         s%fn = m%fn
-         s%fx = m%fx
-         s%fy = m%fy
-         s%mz = m%mz
-         s%fx_norm = m%fx_norm
-         s%fy_norm = m%fy_norm
-         s%coulomb_ratio = m%coulomb_ratio
-         s%adhesion_fraction = m%adhesion_fraction
-         s%approach = m%approach
-         s%area = m%area
-         s%p_max = m%p_max
-         s%gamma0 = m%gamma0
-         s%r0 = m%r0
-         s%y_track = m%y_track
-         s%x_track = m%x_track
-         s%nu_x = m%nu_x
-         s%nu_y = m%nu_y
-         s%phi = m%phi
-      end associate
-   end subroutine summarise_contact
-
-   !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
 
    !> The contact patches of one wheelset position.
    subroutine solve_geometry(setup, point, geometry, error)
@@ -322,30 +282,38 @@ contains
       !> The result; stage%stat > 0 on failure.
       type(stage_type), intent(out) :: stage
       type(normal_contact_type), allocatable :: contacts(:)
+      type(contact_load_type) :: load
       type(error_type), allocatable :: error
-      real(wp) :: dz
-      integer :: k, n
+      integer :: n, n_prepared
 
       stage%geometry = geometry
-      n = 1
-      if (setup%load_mode == 'vertical') n = size(geometry)
+      load = case_load(setup, point)
+      n = loaded_count(load, size(geometry))
       allocate (contacts(n), stage%normal(n))
-      do k = 1, n
-         call prepare_normal_contact(contacts(k), geometry(k), setup%normal, setup%material, &
-            error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
-         if (failed(stage, error)) return
-      end do
-      select case (setup%load_mode)
-      case ('force')
-         call solve_load(contacts(1), point%normal_force, stage%normal(1), error)
-      case ('approach')
-         call solve_approach(contacts(1), point%approach, stage%normal(1), error)
-      case default
-         call solve_vertical_load(contacts, point%vertical_force, stage%normal, dz, error)
-      end select
+      n_prepared = 0
+      call prepare_normal_stage(geometry, setup%normal, setup%material, contacts, n_prepared, n, &
+         error)
+      if (failed(stage, error)) return
+      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error)
       if (failed(stage, error)) return
    end subroutine solve_stage
+
+   !> The load of a case: `&load mode` 'force', 'approach' or 'vertical' and its value.
+   pure function case_load(setup, point) result(load)
+      !> Shared data (the load mode).
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (the load's value).
+      type(case_point_type), intent(in) :: point
+      type(contact_load_type) :: load
+      select case (setup%load_mode)
+      case ('force')
+         load = contact_load_type(load_normal_force, point%normal_force)
+      case ('approach')
+         load = contact_load_type(load_approach, point%approach)
+      case default
+         load = contact_load_type(load_vertical_force, point%vertical_force)
+      end select
+   end function case_load
 
    !> Record an error in the stage; true when there was one.
    logical function failed(stage, error)
@@ -377,7 +345,8 @@ contains
       type(error_type), allocatable :: error
       type(tangential_options_type) :: options
       type(material_type) :: material
-      type(creepage_type) :: creepage
+      type(creepage_type) :: creepage, creepages(max_patches)
+      type(contact_result_type) :: contact
       integer :: k, n
 
       if (stage%stat /= 0) then
@@ -409,67 +378,23 @@ contains
             tangential(k) = tangential_patch_type()
             cycle
          end if
-         call solve_tangential(ws, stage%normal(k), material, creepage, options, &
-            tangential(k), error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+         call solve_patch_stage(ws, stage%normal(k), material, creepage, options, &
+            tangential(k), k, n, error)
       end do
       if (allocated(error)) then
          result%summary%stat = error%stat
          result%message = error%message
          return
       end if
-      call summarise(stage, tangential(1:n), result%summary)
+      creepages(1:n) = creepage
+      call summarise_stages(stage%geometry, stage%normal, tangential(1:n), creepages(1:n), &
+         setup%position%side, axle_offset(setup%prepared%track), 0.0_wp, stage%dz, contact)
+      result%summary = case_summary(contact)
       if (fields) then
          result%geometry = stage%geometry
          result%normal = stage%normal
          result%tangential = tangential(1:n)
       end if
    end subroutine solve_case
-
-   !> Summary numbers: totals over the patches and the values of the main (most loaded) patch.
-   pure subroutine summarise(stage, tangential, s)
-      type(stage_type), intent(in) :: stage
-      type(tangential_patch_type), intent(in) :: tangential(:)
-      type(case_summary_type), intent(inout) :: s
-      integer :: m, k
-      s%stat = 0
-      s%n_patches = size(stage%geometry)
-      s%n_loaded = size(stage%normal)
-      m = 1
-      do k = 2, size(stage%normal)
-         if (stage%normal(k)%load > stage%normal(m)%load) m = k
-      end do
-      s%main_patch = m
-      s%fn_total = 0.0_wp
-      do k = 1, size(stage%normal)
-         s%fn_total = s%fn_total + stage%normal(k)%load
-      end do
-      ! Track-frame totals over the loaded patches, summed as the library's solver does.
-      s%fx_total = 0.0_wp
-      s%fy_total = 0.0_wp
-      s%fz_total = 0.0_wp
-      do k = 1, size(stage%normal)
-         if (.not. (stage%normal(k)%load > 0.0_wp)) cycle
-         s%fx_total = s%fx_total + tangential(k)%fx
-         s%fy_total = s%fy_total + tangential(k)%fy_track
-         s%fz_total = s%fz_total + tangential(k)%fz_track
-      end do
-      s%fn = stage%normal(m)%load
-      s%fx = tangential(m)%fx
-      s%fy = tangential(m)%fy
-      s%mz = tangential(m)%mz
-      s%fx_norm = tangential(m)%fx_norm
-      s%fy_norm = tangential(m)%fy_norm
-      s%coulomb_ratio = tangential(m)%coulomb_ratio
-      s%adhesion_fraction = tangential(m)%adhesion_fraction
-      s%approach = stage%normal(m)%approach
-      s%area = stage%normal(m)%area
-      s%p_max = stage%normal(m)%p_max
-      ! The reference point where the creepages are given: the geometric contact point of the
-      ! loaded state (doc/geometry.md "Vertical approach").
-      s%gamma0 = stage%normal(m)%gamma0
-      s%r0 = stage%normal(m)%r0
-      s%y_track = stage%geometry(m)%y_track + stage%normal(m)%lateral_offset()
-   end subroutine summarise
 
 end module shcontact_case_runner
