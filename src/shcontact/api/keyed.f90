@@ -16,12 +16,13 @@ module shcontact_api_keyed
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_strings, only: to_lower, str_int, visible
    use shcontact_io_text, only: format_real
-   use shcontact_io_config, only: case_point_type
+   use shcontact_io_config, only: case_config_type, case_point_type, validate_config
+   use shcontact_io_config_types, only: output_config_type
    use shcontact_io_config_variables, only: variables, k_int, k_real, k_real_list
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
    use shcontact_api_wheelset, only: wheel_right, wheel_left
    use shcontact_api_settings, only: config_load, config_state
-   use shcontact_api_values, only: kinematic_value_count, kinematic_values, value_fx, value_fy, &
+   use shcontact_api_values, only: kinematic_value_count, result_value_count, kinematic_values, value_fx, value_fy, &
       value_mz, value_fn, value_fx_norm, value_fy_norm, value_fy_track, value_fz_track, &
       value_approach, value_area, value_p_max, value_gamma0, value_r0, value_y_track, &
       value_z_track, value_coulomb, value_adhesion, value_n_patches, value_n_loaded, &
@@ -173,28 +174,41 @@ contains
 
    !> Solve the state set by key: the wheelset position and velocities (`&position`,
    !> `&kinematics`), the load (`&load`) and, unless `kinematics%mode` is 'on', the creepages
-   !> (`&creepage`), with the result of context_solve (or context_solve_kinematic). On a
-   !> wheelset handle both wheels get the same load (context_solve_wheelset).
+   !> (`&creepage`), with the result of context_solve (or context_solve_kinematic). The settings
+   !> are first checked as the app checks a case file (validate_config: its ranges, and in
+   !> kinematic mode no `&creepage` and the load 'vertical' unless given); the profiles were
+   !> checked at creation. On a wheelset handle both wheels get the same load
+   !> (context_solve_wheelset).
    integer function context_solve_state(ctx) result(stat)
       !> The context.
       type(contact_context_type), intent(inout) :: ctx
+      type(case_config_type) :: config
       type(case_point_type) :: p
+      type(contact_load_type) :: load
+      type(error_type), allocatable :: error
       real(wp) :: values(kinematic_value_count), totals(4)
-      type(contact_load_type) :: l
-      integer :: mode
-      real(wp) :: load
 
-      p = ctx%config%case_point(1)
-      l = config_load(ctx%config, p)
-      mode = l%mode
-      load = l%value
+      config = ctx%config
+      config%profiles%wheel = 'builtin:S1002'
+      config%profiles%rail = 'builtin:UIC60'
+      config%output = output_config_type()
+      call validate_config(config, error)
+      if (allocated(error)) then
+         ctx%has_result = .false.
+         ctx%has_fields = .false.
+         stat = context_record(ctx, error)
+         return
+      end if
+      p = config%case_point(1)
+      load = config_load(config, p)
       if (ctx%is_wheelset) then
-         stat = context_solve_wheelset(ctx, config_state(p), mode, load, load, totals)
-      else if (ctx%config%is_kinematic()) then
-         stat = context_solve_kinematic(ctx, config_state(p), mode, load, values)
+         stat = context_solve_wheelset(ctx, config_state(p), load%mode, load%value, &
+            load%value, totals)
+      else if (config%is_kinematic()) then
+         stat = context_solve_kinematic(ctx, config_state(p), load%mode, load%value, values)
       else
-         stat = context_solve(ctx, p%t_y, p%roll, mode, load, p%nu_x, p%nu_y, p%phi, &
-            values(1:25))
+         stat = context_solve(ctx, p%t_y, p%roll, load%mode, load%value, p%nu_x, p%nu_y, &
+            p%phi, values(1:result_value_count))
       end if
    end function context_solve_state
 

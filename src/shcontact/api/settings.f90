@@ -22,7 +22,7 @@ module shcontact_api_settings
    use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
       parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_io_config, only: case_config_type, case_point_type, apply_override
-   use shcontact_io_config_types, only: origin
+   use shcontact_io_config_types, only: set_origin
    use shcontact_io_config_variables, only: variables, find_variable, curvature_modes, &
       join_words, k_real, k_real_list
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
@@ -210,7 +210,8 @@ contains
          error%stat = stat_invalid_input
          return
       end if
-      trial%kinematics%pitch_rate_given = origin(trial, 'kinematics%pitch_rate') /= 'default'
+      ! Messages of a later check (context_solve_state) name the option, not a command line.
+      call set_origin(trial, group//'%'//name, prefix)
       config = trial
    end subroutine set_config_value
 
