@@ -24,7 +24,7 @@ module test_flat_keys
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
       config_state, key_use, key_solver, key_state, key_creation, key_app
-   use shcontact_api_keyed, only: output_keys
+   use shcontact_api_keyed, only: output_keys, wheelset_keys, field_keys, output_key_type
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_set_option, &
       shcontact_set_value, shcontact_solve_state, shcontact_get_value, shcontact_last_error, &
       shcontact_create_wheelset, shcontact_solve_wheelset, shcontact_wheelset_wheel, &
@@ -77,7 +77,8 @@ contains
          new_unittest('every_layout_value_named', test_output_names), &
          new_unittest('bad_keys_and_values', test_bad_keys), &
          new_unittest('wheelset_from_c_and_f77', test_wheelset), &
-         new_unittest('field_by_name', test_field_by_name) &
+         new_unittest('field_by_name', test_field_by_name), &
+         new_unittest('doc_lists_every_key', test_doc_keys) &
          ]
    end subroutine collect_flat_keys
 
@@ -623,5 +624,79 @@ contains
       if (allocated(error)) return
       call check(error, shcontact_destroy(handle), 0_c_int)
    end subroutine test_field_by_name
+
+   !> doc/api.md lists every input key a handle takes with its units (those of the variable
+   !> table) and every output, wheelset and field key with its units.
+   subroutine test_doc_keys(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: doc, units
+      integer :: iv, use
+      call read_whole('doc/api.md', doc, error)
+      if (allocated(error)) return
+      do iv = 1, size(variables)
+         if (variables(iv)%group == 'sweep') cycle
+         use = key_use(trim(variables(iv)%group), trim(variables(iv)%name))
+         if (use /= key_solver .and. use /= key_state) cycle
+         units = trim(variables(iv)%units)
+         if (len(units) == 0) units = '—'
+         call check(error, index(doc, new_line('a')//'| `'//trim(variables(iv)%group)//'%'// &
+            trim(variables(iv)%name)//'` | ') > 0 .and. index(doc, '%'// &
+            trim(variables(iv)%name)//'` | '//kind_word(variables(iv)%kind)//' | '//units// &
+            ' |') > 0, message='doc/api.md: no row of input key '// &
+            trim(variables(iv)%group)//'%'//trim(variables(iv)%name)//' with units '//units)
+         if (allocated(error)) return
+      end do
+      call check_rows(output_keys)
+      if (allocated(error)) return
+      call check_rows(wheelset_keys)
+      if (allocated(error)) return
+      call check_rows(field_keys)
+   contains
+      subroutine check_rows(keys)
+         type(output_key_type), intent(in) :: keys(:)
+         integer :: i
+         character(len=:), allocatable :: u
+         do i = 1, size(keys)
+            u = trim(keys(i)%units)
+            if (u == 'mm^2') u = 'mm²'
+            if (u == 'N mm') u = 'N·mm'
+            call check(error, index(doc, new_line('a')//'| `'//trim(keys(i)%name)//'` | '//u// &
+               ' |') > 0, message='doc/api.md: no row of output key '//trim(keys(i)%name)// &
+               ' with units '//u)
+            if (allocated(error)) return
+         end do
+      end subroutine check_rows
+      pure function kind_word(kind) result(w)
+         integer, intent(in) :: kind
+         character(len=:), allocatable :: w
+         select case (kind)
+         case (k_real); w = 'number'
+         case (k_int); w = 'whole number'
+         case (k_string); w = 'text'
+         case default; w = 'logical'
+         end select
+      end function kind_word
+   end subroutine test_doc_keys
+
+   !> A text file as one string (lines joined by new-line characters).
+   subroutine read_whole(file, text, error)
+      character(len=*), intent(in) :: file
+      character(len=:), allocatable, intent(out) :: text
+      type(error_type), allocatable, intent(out) :: error
+      character(len=2000) :: line
+      integer :: unit, stat
+      text = new_line('a')
+      open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+      if (stat /= 0) then
+         call test_failed(error, file//' not found (run from the root)')
+         return
+      end if
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         text = text//trim(line)//new_line('a')
+      end do
+      close (unit)
+   end subroutine read_whole
 
 end module test_flat_keys
