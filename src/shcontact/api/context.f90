@@ -4,18 +4,13 @@
 !> the message in the context. The message lives in a fixed buffer, so a successful call
 !> allocates nothing here.
 module shcontact_api_context
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
-      ieee_set_halting_mode, ieee_get_flag, ieee_set_flag
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
+   use shcontact_core_strings, only: to_lower, str_int
    use shcontact_geometry_track, only: track_type, side_left
-   use shcontact_geometry_contact, only: contact_options_type
-   use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail, &
@@ -661,49 +656,6 @@ contains
       end if
       stat = ctx%stat
    end function record
-
-   !> A real option value from text.
-   subroutine read_real(key, text, value, error)
-      character(len=*), intent(in) :: key, text
-      real(wp), intent(inout) :: value
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat
-      real(wp) :: x
-      logical :: halting, overflow
-      ! 1e309 overflows inside the conversion: refused, never trapped (debug builds halt).
-      call ieee_get_halting_mode(ieee_overflow, halting)
-      call ieee_set_halting_mode(ieee_overflow, .false.)
-      call ieee_set_flag(ieee_overflow, .false.)
-      read (text, *, iostat=stat) x
-      call ieee_get_flag(ieee_overflow, overflow)
-      call ieee_set_flag(ieee_overflow, .false.)
-      call ieee_set_halting_mode(ieee_overflow, halting)
-      if (stat == 0) then
-         if (overflow .or. .not. ieee_is_finite(x)) stat = 1
-      end if
-      if (stat /= 0) then
-         call fatal_error(error, "option "//key//" = '"//trim(text)// &
-            "': expected a finite number", &
-            stat_invalid_input)
-         return
-      end if
-      value = x
-   end subroutine read_real
-
-   !> An integer option value from text.
-   subroutine read_int(key, text, value, error)
-      character(len=*), intent(in) :: key, text
-      integer, intent(inout) :: value
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat, i
-      read (text, *, iostat=stat) i
-      if (stat /= 0) then
-         call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected an integer", &
-            stat_invalid_input)
-         return
-      end if
-      value = i
-   end subroutine read_int
 
    !> The value of option `output%fields`: 'all' or '1' keeps the fields of every solve, 'none'
    !> or '0' none (the app's names for all and none of them).

@@ -188,8 +188,8 @@ contains
       call split_key(key, group, name)
       iv = find_variable(group, name)
       if (iv == 0 .or. group == 'sweep') then
-         call fatal_error(error, "option '"//trim(visible(key))//"': unknown; expected one "// &
-            'of '//handle_key_list(), stat_invalid_input)
+         call fatal_error(error, "option '"//trim(visible(key))//"': unknown; expected "// &
+            handle_key_list(group)//' (doc/api.md, "Option keys")', stat_invalid_input)
          return
       end if
       prefix = 'option '//group//'%'//name
@@ -243,16 +243,29 @@ contains
       if (index(message, old) == 1) message = new//message(len(old) + 1:)
    end subroutine reword
 
-   !> The keys a handle accepts (every namelist variable but the sweep's), comma-separated.
-   pure function handle_key_list() result(text)
+   !> The keys a handle accepts (every namelist variable but the sweep's), comma-separated: those
+   !> of `group` when it has any, else the groups.
+   pure function handle_key_list(group) result(text)
+      !> The group of the key given.
+      character(len=*), intent(in) :: group
       character(len=:), allocatable :: text
       integer :: i
       text = ''
-      do i = 1, size(variables)
-         if (variables(i)%group == 'sweep') cycle
-         if (len(text) > 0) text = text//', '
-         text = text//trim(variables(i)%group)//'%'//trim(variables(i)%name)
-      end do
+      if (group /= 'sweep' .and. any(variables%group == group)) then
+         do i = 1, size(variables)
+            if (variables(i)%group /= group) cycle
+            if (len(text) > 0) text = text//', '
+            text = text//trim(variables(i)%group)//'%'//trim(variables(i)%name)
+         end do
+         text = 'one of '//text
+      else
+         do i = 1, size(variables)
+            if (variables(i)%group == 'sweep') cycle
+            if (index(text, ' '//trim(variables(i)%group)//'%') > 0) cycle
+            text = text//' '//trim(variables(i)%group)//'%...'
+         end do
+         text = 'group%variable, group one of'//text
+      end if
    end function handle_key_list
 
 end module shcontact_api_settings
