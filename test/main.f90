@@ -40,6 +40,7 @@ program tester
    use test_kinematics, only: collect_kinematics
    use test_kinematic_balance, only: collect_kinematic_balance
    use test_api_kinematic, only: collect_api_kinematic
+   use test_flat_keys, only: collect_flat_keys
    use test_examples, only: collect_examples
    use test_validation, only: collect_validation
    use test_validation_normal, only: collect_validation_normal
@@ -88,6 +89,7 @@ program tester
       new_testsuite('kinematics', collect_kinematics), &
       new_testsuite('kinematic_balance', collect_kinematic_balance), &
       new_testsuite('api_kinematic', collect_api_kinematic), &
+      new_testsuite('flat_keys', collect_flat_keys), &
       new_testsuite('examples', collect_examples), &
       new_testsuite('validation', collect_validation), &
       new_testsuite('validation_normal', collect_validation_normal), &
