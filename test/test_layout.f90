@@ -68,15 +68,23 @@ contains
    !> not refer to the external data's folder (scripts/check_citations prints each bad one).
    subroutine test_citations(error)
       type(error_type), allocatable, intent(out) :: error
+      call check_script(error, 'check_citations', 'a source cites a missing doc, heading or '// &
+         'decision, or a file outside the repository (see the lines above)')
+   end subroutine test_citations
+
+   !> Run scripts/NAME on the repository: the test fails with `message` when it exits non-zero
+   !> and is skipped without a shell.
+   subroutine check_script(error, name, message)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: name, message
       integer :: stat, cmdstat
-      call execute_command_line('bash scripts/check_citations', exitstat=stat, cmdstat=cmdstat)
+      call execute_command_line('bash scripts/'//name, exitstat=stat, cmdstat=cmdstat)
       if (cmdstat /= 0) then
-         call skip_test(error, 'no shell to run scripts/check_citations')
+         call skip_test(error, 'no shell to run scripts/'//name)
          return
       end if
-      call check(error, stat, 0, message='a source cites a missing doc, heading or decision, '// &
-         'or a file outside the repository (see the lines above)')
-   end subroutine test_citations
+      call check(error, stat, 0, message=message)
+   end subroutine check_script
 
    !> The check itself fails on a scratch tree with one bad citation of each kind (a missing
    !> file, a missing heading, a missing decision, the former physics notes) and passes on the
@@ -118,13 +126,7 @@ contains
    !> (scripts/check_layers lists the order and prints each upward use; doc/architecture.md).
    subroutine test_layers(error)
       type(error_type), allocatable, intent(out) :: error
-      integer :: stat, cmdstat
-      call execute_command_line('bash scripts/check_layers', exitstat=stat, cmdstat=cmdstat)
-      if (cmdstat /= 0) then
-         call skip_test(error, 'no shell to run scripts/check_layers')
-         return
-      end if
-      call check(error, stat, 0, message='a module uses a module of a higher layer, or a '// &
+      call check_script(error, 'check_layers', 'a module uses a module of a higher layer, or a '// &
          'source is in no layer (see the lines above)')
    end subroutine test_layers
 

@@ -3,8 +3,9 @@
 !>
 !> [[contact_solver_type]] holds the prepared profiles (smoothing splines, placed rail, dense
 !> samples), the patch geometry, the prepared normal problems, the normal and tangential solutions
-!> and the tangential workspace. [[solve]] runs the same pipeline as the app's case runner
-!> (`src/shcontact/case/runner.f90`):
+!> and the tangential workspace (a cache over the pipeline's stages, shcontact_pipeline_cache).
+!> [[solve]] runs the stages of shcontact_pipeline_stages, the same the app's case runner
+!> (`src/shcontact/case/runner.f90`) calls (doc/architecture.md):
 !>
 !> 1. contact search at (t_y, roll) → candidate patches, deepest first;
 !> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, or a

@@ -4,7 +4,9 @@
 !> [[prepare_run]] does everything that is the same for every case of a run (reading and
 !> smoothing the profiles, placing the rail, translating the options). A sweep then solves the
 !> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
-!> tangential problem once per case ([[solve_case]]). None of these procedures print or touch
+!> tangential problem and the summary once per case ([[solve_case]]), through the stages of
+!> shcontact_pipeline_stages that the library's solver object calls too (doc/architecture.md),
+!> so a case gives the library's numbers bit for bit. None of these procedures print or touch
 !> global state, so cases can be solved by several threads at once.
 !>
 !> **Kinematic cases** (`&kinematics mode = 'on'`) are solved by the library's solver object

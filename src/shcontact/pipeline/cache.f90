@@ -10,7 +10,6 @@ module shcontact_pipeline_cache
    use shcontact_core_strings, only: str_int, str_real
    use shcontact_core_material, only: material_type
    use shcontact_profile_points, only: profile_type
-   use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       contact_patches_type, find_contact_patches, extract_patch, prepare_wheel
