@@ -4,11 +4,12 @@
 !> the message in the context. The message lives in a fixed buffer, so a successful call
 !> allocates nothing here.
 module shcontact_api_context
-   use shcontact_core_kinds, only: wp, i1
+   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_geometry_track, only: track_type, side_left
+   use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
@@ -294,21 +295,49 @@ contains
       end if
       call library_setup(ctx%config, old, error)
       if (allocated(error)) return
-      if (any(transfer(setup%track, [0_i1]) /= transfer(old%track, [0_i1])) .or. &
-          any(transfer(setup%contact_options, [0_i1]) /= &
-              transfer(old%contact_options, [0_i1]))) then
+      if (differ(setup%track, old%track) .or. &
+          differ(setup%contact_options, old%contact_options)) then
          call ctx%solver%set_track(error, track=setup%track, &
             contact_options=setup%contact_options)
          if (allocated(error)) return
       end if
       call ctx%solver%get_options(normal, tangential)
-      if (any(transfer(setup%normal, [0_i1]) /= transfer(normal, [0_i1])) .or. &
-          any(transfer(setup%tangential, [0_i1]) /= transfer(tangential, [0_i1]))) then
+      if (differ(setup%normal, normal) .or. differ(setup%tangential, tangential)) then
          call ctx%solver%set_options(error, normal=setup%normal, tangential=setup%tangential)
          if (allocated(error)) return
       end if
       call ctx%solver%set_material(setup%material, error)
    end subroutine apply_config
+
+   !> True when two option objects (derived types without allocatable parts) differ in any
+   !> component: compared as list-directed text, which shows every component (no padding).
+   logical function differ(a, b)
+      class(*), intent(in) :: a, b
+      character(len=2048) :: ta, tb
+      ta = ''
+      tb = ''
+      select type (a)
+      type is (track_type)
+         write (ta, *) a
+      type is (contact_options_type)
+         write (ta, *) a
+      type is (normal_options_type)
+         write (ta, *) a
+      type is (tangential_options_type)
+         write (ta, *) a
+      end select
+      select type (b)
+      type is (track_type)
+         write (tb, *) b
+      type is (contact_options_type)
+         write (tb, *) b
+      type is (normal_options_type)
+         write (tb, *) b
+      type is (tangential_options_type)
+         write (tb, *) b
+      end select
+      differ = ta /= tb
+   end function differ
 
    !> Solve one contact and return the flat result ([[result_values]]).
    integer function context_solve(ctx, t_y, roll, load_mode, load, nu_x, nu_y, phi, values) &
