@@ -180,7 +180,7 @@ contains
       if (usable(ctx, error, wheelset=.true.)) then
          config = ctx%config
          config%material = material_type(shear_modulus, poisson, friction)
-         call apply_config(ctx, config, error)
+         call apply_config(ctx, config, error, material_only=.true.)
          if (.not. allocated(error)) ctx%config = config
       end if
       stat = record(ctx, error)
@@ -252,7 +252,7 @@ contains
          call split_key(key, group, name)
          select case (key_use(group, name))
          case (key_solver)
-            call apply_config(ctx, config, error)
+            call apply_config(ctx, config, error, material_only=group == 'material')
          case (key_fields)
             keep = ctx%keep_fields
             call read_fields_choice(group//'%'//name, value, keep, error)
@@ -274,10 +274,13 @@ contains
    !> Give the solver (or both wheels of a wheelset handle) the data of a configuration:
    !> only what changed is set again (a new track or contact-search option prepares the
    !> profiles again).
-   subroutine apply_config(ctx, config, error)
+   subroutine apply_config(ctx, config, error, material_only)
       type(contact_context_type), intent(inout) :: ctx
       type(case_config_type), intent(in) :: config
       type(error_type), allocatable, intent(out) :: error
+      !> Only the material changed (the library takes the configuration's material_type as it
+      !> is): a one-wheel solver just gets it, with no other comparison (a few µs).
+      logical, intent(in), optional :: material_only
       type(library_setup_type) :: setup, old
       type(normal_options_type) :: normal
       type(tangential_options_type) :: tangential
@@ -292,6 +295,12 @@ contains
             tangential_options=setup%tangential)
          ctx%wheelset_ready = .not. allocated(error)
          return
+      end if
+      if (present(material_only)) then
+         if (material_only) then
+            call ctx%solver%set_material(setup%material, error)
+            return
+         end if
       end if
       call library_setup(ctx%config, old, error)
       if (allocated(error)) return
