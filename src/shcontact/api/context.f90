@@ -2,7 +2,10 @@
 !> points, C API) need: every operation takes plain integers, reals and strings and returns an
 !> integer status, 0 on success or one of the `stat_*` codes of shcontact_core_error, and keeps
 !> the message in the context. The message lives in a fixed buffer, so a successful call
-!> allocates nothing here.
+!> allocates nothing here. The context keeps its settings as the app's configuration
+!> (shcontact_api_settings): options by key take the case files' one-assignment reader, and
+!> every setter gives the solver what the configuration translates to. A wheelset context
+!> ([[context_create_wheelset]]) holds both wheels of shcontact_api_wheelset instead.
 module shcontact_api_context
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
