@@ -2,13 +2,17 @@
 !> points, C API) need: every operation takes plain integers, reals and strings and returns an
 !> integer status, 0 on success or one of the `stat_*` codes of shcontact_core_error, and keeps
 !> the message in the context. The message lives in a fixed buffer, so a successful call
-!> allocates nothing here.
+!> allocates nothing here. The context keeps its settings as the app's configuration
+!> (shcontact_api_settings): options by key take the case files' one-assignment reader, and
+!> every setter gives the solver what the configuration translates to. A wheelset context
+!> ([[context_create_wheelset]]) holds both wheels of shcontact_api_wheelset instead.
 module shcontact_api_context
-   use shcontact_core_kinds, only: wp, i1
+   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_geometry_track, only: track_type, side_left
+   use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
@@ -179,7 +183,7 @@ contains
       if (usable(ctx, error, wheelset=.true.)) then
          config = ctx%config
          config%material = material_type(shear_modulus, poisson, friction)
-         call apply_config(ctx, config, error)
+         call apply_config(ctx, config, error, material_only=.true.)
          if (.not. allocated(error)) ctx%config = config
       end if
       stat = record(ctx, error)
@@ -251,7 +255,7 @@ contains
          call split_key(key, group, name)
          select case (key_use(group, name))
          case (key_solver)
-            call apply_config(ctx, config, error)
+            call apply_config(ctx, config, error, material_only=group == 'material')
          case (key_fields)
             keep = ctx%keep_fields
             call read_fields_choice(group//'%'//name, value, keep, error)
@@ -273,10 +277,13 @@ contains
    !> Give the solver (or both wheels of a wheelset handle) the data of a configuration:
    !> only what changed is set again (a new track or contact-search option prepares the
    !> profiles again).
-   subroutine apply_config(ctx, config, error)
+   subroutine apply_config(ctx, config, error, material_only)
       type(contact_context_type), intent(inout) :: ctx
       type(case_config_type), intent(in) :: config
       type(error_type), allocatable, intent(out) :: error
+      !> Only the material changed (the library takes the configuration's material_type as it
+      !> is): a one-wheel solver just gets it, with no other comparison (a few µs).
+      logical, intent(in), optional :: material_only
       type(library_setup_type) :: setup, old
       type(normal_options_type) :: normal
       type(tangential_options_type) :: tangential
@@ -292,23 +299,57 @@ contains
          ctx%wheelset_ready = .not. allocated(error)
          return
       end if
+      if (present(material_only)) then
+         if (material_only) then
+            call ctx%solver%set_material(setup%material, error)
+            return
+         end if
+      end if
       call library_setup(ctx%config, old, error)
       if (allocated(error)) return
-      if (any(transfer(setup%track, [0_i1]) /= transfer(old%track, [0_i1])) .or. &
-          any(transfer(setup%contact_options, [0_i1]) /= &
-              transfer(old%contact_options, [0_i1]))) then
+      if (differ(setup%track, old%track) .or. &
+          differ(setup%contact_options, old%contact_options)) then
          call ctx%solver%set_track(error, track=setup%track, &
             contact_options=setup%contact_options)
          if (allocated(error)) return
       end if
       call ctx%solver%get_options(normal, tangential)
-      if (any(transfer(setup%normal, [0_i1]) /= transfer(normal, [0_i1])) .or. &
-          any(transfer(setup%tangential, [0_i1]) /= transfer(tangential, [0_i1]))) then
+      if (differ(setup%normal, normal) .or. differ(setup%tangential, tangential)) then
          call ctx%solver%set_options(error, normal=setup%normal, tangential=setup%tangential)
          if (allocated(error)) return
       end if
       call ctx%solver%set_material(setup%material, error)
    end subroutine apply_config
+
+   !> True when two option objects (derived types without allocatable parts) differ in any
+   !> component: compared as list-directed text, which shows every component (no padding).
+   logical function differ(a, b)
+      class(*), intent(in) :: a, b
+      character(len=2048) :: ta, tb
+      ta = ''
+      tb = ''
+      select type (a)
+      type is (track_type)
+         write (ta, *) a
+      type is (contact_options_type)
+         write (ta, *) a
+      type is (normal_options_type)
+         write (ta, *) a
+      type is (tangential_options_type)
+         write (ta, *) a
+      end select
+      select type (b)
+      type is (track_type)
+         write (tb, *) b
+      type is (contact_options_type)
+         write (tb, *) b
+      type is (normal_options_type)
+         write (tb, *) b
+      type is (tangential_options_type)
+         write (tb, *) b
+      end select
+      differ = ta /= tb
+   end function differ
 
    !> Solve one contact and return the flat result ([[result_values]]).
    integer function context_solve(ctx, t_y, roll, load_mode, load, nu_x, nu_y, phi, values) &

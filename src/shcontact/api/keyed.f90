@@ -41,9 +41,13 @@ module shcontact_api_keyed
    !> A result value by name: its index in the kinematic layout (shcontact_api_values), its
    !> units and what it is.
    type :: output_key_type
+      !> The name (lower case).
       character(len=12) :: name = ''
+      !> Index in the kinematic layout (a total's or a field's position in its own list).
       integer :: index = 0
+      !> Units ('1': dimensionless).
       character(len=8) :: units = ''
+      !> What it is.
       character(len=72) :: help = ''
    end type output_key_type
 

@@ -43,10 +43,15 @@ module shcontact_api_settings
 
    !> The library's objects of a configuration.
    type :: library_setup_type
+      !> Track and wheelset dimensions.
       type(track_type) :: track
+      !> Contact-search options (smoothing, B clamp, longitudinal curvature).
       type(contact_options_type) :: contact_options
+      !> Normal options.
       type(normal_options_type) :: normal
+      !> Tangential options (bound and spin model those of the configuration).
       type(tangential_options_type) :: tangential
+      !> G, ν, μ.
       type(material_type) :: material
       !> side_right or side_left.
       integer :: side = side_right
