@@ -885,7 +885,7 @@ contains
       do k = 1, self%patches%count
          associate (g => self%patches%patch(k), n => self%patches%points(k))
             if (yaw /= 0.0_wp) then
-               call scale_to_true_radius(g%gamma(1:n), sin_yaw, g%r_wheel(1:n))
+               call scale_to_true_radius(g%tan_gamma(1:n), sin_yaw, g%r_wheel(1:n))
                g%r0 = g%r0*true_radius_scale(g%gamma0, sin_yaw)
             end if
             self%x_track(k) = contact_lead(g%y_wheel + axle_offset(self%track), g%r0, &
