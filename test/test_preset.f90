@@ -14,6 +14,10 @@ module test_preset
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       load_vertical_force
    use shcontact_api_preset, only: set_preset, apply_preset, preset_names
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_track, only: track_type
+   use test_external_data, only: external_file
+   use test_validation, only: read_columns, percentile, skip_without_profiles
    implicit none
    private
 
@@ -31,7 +35,8 @@ contains
       testsuite = [ &
          new_unittest('vehicle_preset_options', test_options), &
          new_unittest('unknown_preset_rejected', test_unknown), &
-         new_unittest('vehicle_forces_near_default', test_forces) &
+         new_unittest('vehicle_forces_near_default', test_forces), &
+         new_unittest('vehicle_kinematic_sample_vs_exact', test_exact) &
          ]
    end subroutine collect_preset
 
@@ -130,6 +135,69 @@ contains
          end do
       end do
    end subroutine test_forces
+
+   !> The vehicle preset on CONTACT's kinematic sample (external data; doc/validation.md §6, the
+   !> 35 cases CONTACT solved): the targets of doc/validation.md for the kinematic call, max |Δf|
+   !> ≤ 0.1 and P80 |Δf_y| ≤ 0.04 (f = F/(μF_n) of the most loaded patch, CONTACT's sign), and
+   !> the normal force of that patch within 5 % (the default: 3.9 %, Table 9). The preset gave
+   !> max |Δf_x| 0.049, P80 0.018, max |Δf_y| 0.022, P80 0.006, |ΔF_n|/F_n max 0.039 (the
+   !> default's Table 9: 0.049, 0.018, 0.020, 0.006, 0.039).
+   subroutine test_exact(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=12), parameter :: names(7) = [character(len=12) :: 'y_ws_mm', 'yaw_rad', &
+         'vs_mm_s', 'vy_mm_s', 'vyaw_rad_s', 'vpitch_rad_s', 'fn_N']
+      character(len=12), parameter :: forces(2) = [character(len=12) :: 'fx_norm', 'fs_norm']
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(track_type) :: track
+      type(lib_error), allocatable :: lib
+      real(wp), allocatable :: rows(:, :), f(:, :), ex(:), ey(:), en(:)
+      character(len=:), allocatable :: sample, wheel, rail
+      character(len=80) :: stats
+      integer :: i, n
+
+      call skip_without_profiles(error)
+      if (allocated(error)) return
+      sample = external_file('reference/kinematic_sample/kinematic_sample.csv', error)
+      if (.not. allocated(error)) wheel = external_file('profiles/MBench_S1002_v3.prw', error)
+      if (.not. allocated(error)) rail = external_file('profiles/MBench_UIC60_v3.prr', error)
+      if (allocated(error)) return
+      call read_columns(sample, names, rows, error, row_tag='ok')
+      if (.not. allocated(error)) call read_columns(sample, forces, f, error, row_tag='ok')
+      if (allocated(error)) return
+      n = size(rows, 1)
+      call check(error, n == 35, 'kinematic sample: 35 cases CONTACT solved')
+      if (allocated(error)) return
+      track%rail_canted = .true.
+      call solver%init(wheel, rail, lib, track=track, material=material_type( &
+         shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu))
+      if (.not. allocated(lib)) call set_preset(solver, 'vehicle', lib)
+      call check(error, .not. allocated(lib), 'init and preset')
+      if (allocated(error)) return
+      allocate (ex(n), ey(n), en(n))
+      do i = 1, n
+         associate (r => rows(i, :))
+            call solver%solve_kinematic(wheelset_state_type(y_ws=r(1), yaw=r(2), &
+               v_forward=r(3), v_lateral=r(4), yaw_rate=r(5), pitch_rate=r(6)), &
+               contact_load_type(load_vertical_force, wheel_load), result, lib)
+            call check(error, .not. allocated(lib), 'kinematic call')
+            if (allocated(error)) return
+            ! CONTACT's sign: rail side.
+            ex(i) = abs(-result%main%fx_norm - f(i, 1))
+            ey(i) = abs(-result%main%fy_norm - f(i, 2))
+            en(i) = abs(result%main%fn - r(7))/r(7)
+         end associate
+      end do
+      write (stats, '(a,4f8.4)') 'max |dfx|, P80 |dfx|, max |dfy|, P80 |dfy| =', maxval(ex), &
+         percentile(ex, 0.8_wp), maxval(ey), percentile(ey, 0.8_wp)
+      call check(error, max(maxval(ex), maxval(ey)) <= 0.1_wp, 'max |Delta f| > 0.1', more=stats)
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp) <= 0.04_wp, 'P80 |Delta f_y| > 0.04', more=stats)
+      if (allocated(error)) return
+      write (stats, '(a,2f8.4)') 'max, P80 |dF_n|/F_n =', maxval(en), percentile(en, 0.8_wp)
+      call check(error, maxval(en) <= 0.05_wp, 'max |Delta F_n|/F_n > 0.05', more=stats)
+
+   end subroutine test_exact
 
    !> f_x (c = 1) or f_y (c = 2): the loaded patches' tangential forces over μΣF_n.
    pure real(wp) function f_of(r, c) result(f)
