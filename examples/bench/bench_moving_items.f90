@@ -3,7 +3,8 @@
 !> scan of every 0.01 mm position (kernels in [[bench_moving]]).
 module bench_moving_items
    use, intrinsic :: iso_fortran_env, only: output_unit
-   use shcontact, only: wp, error_type, normal_options_type, contact_solver_type, set_preset
+   use shcontact, only: wp, error_type, normal_options_type, contact_solver_type, set_preset, &
+      wheelset_state_type
    use shcontact_normal_options, only: reduction_local_hertz
    use shcontact_tangential_options, only: tangential_options_type, correction_none
    use bench_timing, only: timing_type, time_kernel, time_side_by_side, wall_time
@@ -36,8 +37,9 @@ contains
       type(summary_type), intent(inout) :: summary
       !> The forces of the checked cases.
       type(force_record_type), intent(inout) :: record
-      type(kinematic_kernel) :: fixed, moving, flange, vehicle(2)
-      type(timing_type) :: t_fixed, t_moving, t_flange, t_vehicle(2)
+      type(kinematic_kernel) :: fixed, moving, flange, vehicle(2, 2)
+      type(timing_type) :: t_fixed, t_moving, t_flange, t_vehicle(2, 2)
+      real(wp) :: r_vehicle(3, 2, 2)
       type(error_type), allocatable :: error
       real(wp), allocatable :: forces(:), preset_forces(:)
       real(wp) :: t_init
@@ -92,40 +94,53 @@ contains
       forces = [trajectory_forces(moving%solver, moving%states), &
          trajectory_forces(flange%solver, flange%states)]
       call record%keep_array(forces)
-      ! The vehicle preset (set_preset), both trajectories, and its forces against the default's.
+      ! The vehicle preset (set_preset) against the default, side by side (batch after batch in
+      ! turn, so that a change of the shared machine's speed reaches both), on both
+      ! trajectories; then its forces against the default's on every state.
       do k = 1, 2
-         call vehicle(k)%solver%init('builtin:S1002', 'builtin:UIC60', error)
+         call vehicle(1, k)%solver%init('builtin:S1002', 'builtin:UIC60', error)
          call stop_on(error, 'solver init')
-         call set_preset(vehicle(k)%solver, 'vehicle', error)
+         call set_preset(vehicle(1, k)%solver, 'vehicle', error)
          call stop_on(error, 'set_preset')
-         vehicle(k)%min_calls = 50
+         call vehicle(2, k)%solver%init('builtin:S1002', 'builtin:UIC60', error)
+         call stop_on(error, 'solver init')
+         vehicle(:, k)%min_calls = 50
       end do
-      vehicle(1)%states = moving%states
-      vehicle(2)%states = flange%states
-      call vehicle(1)%run(1)
-      call vehicle(2)%run(1)
-      t_vehicle(1) = time_kernel(vehicle(1), config%runs, config%batch_time)
-      call report(vehicle(1), t_vehicle(1), 'vehicle preset (60 x 40, tables 0.05 mm): '// &
+      vehicle(1, 1)%states = moving%states
+      vehicle(2, 1)%states = moving%states
+      vehicle(1, 2)%states = flange%states
+      vehicle(2, 2)%states = flange%states
+      do k = 1, 2
+         call vehicle(1, k)%run(1)
+         call vehicle(2, k)%run(1)
+         call time_side_by_side(vehicle(:, k), config%runs, config%batch_time, t_vehicle(:, k), &
+            r_vehicle(:, :, k))
+      end do
+      call report(vehicle(1, 1), t_vehicle(1, 1), 'vehicle preset (60 x 40, tables 0.05 mm): '// &
          'hunting')
-      t_vehicle(2) = time_kernel(vehicle(2), config%runs, config%batch_time)
-      call report(vehicle(2), t_vehicle(2), 'vehicle preset (60 x 40, tables 0.05 mm): '// &
+      call report(vehicle(2, 1), t_vehicle(2, 1), '  default, side by side with it: hunting')
+      call report(vehicle(1, 2), t_vehicle(1, 2), 'vehicle preset (60 x 40, tables 0.05 mm): '// &
          'flange')
-      preset_forces = [trajectory_forces(vehicle(1)%solver, moving%states), &
-         trajectory_forces(vehicle(2)%solver, flange%states)]
-      write (output_unit, '(2x,a,f6.2,a,f6.2,a,i0)') 'vehicle preset / default: hunting ', &
-         t_vehicle(1)%median/t_moving%median, ', flange ', t_vehicle(2)%median/t_flange%median, &
-         '; failed calls: ', vehicle(1)%failures + vehicle(2)%failures
+      call report(vehicle(2, 2), t_vehicle(2, 2), '  default, side by side with it: flange')
+      write (output_unit, '(2x,a,3(f5.2,a),a,3(f5.2,a),a,i0)') 'ratio preset/default, median '// &
+         '[min, max] of the rounds: hunting ', r_vehicle(1, 1, 1), ' [', r_vehicle(2, 1, 1), &
+         ',', r_vehicle(3, 1, 1), ']', ', flange ', r_vehicle(1, 1, 2), ' [', &
+         r_vehicle(2, 1, 2), ',', r_vehicle(3, 1, 2), ']', '; failed calls: ', &
+         sum(vehicle%failures)
+      preset_forces = [trajectory_forces(vehicle(1, 1)%solver, moving%states), &
+         trajectory_forces(vehicle(1, 2)%solver, flange%states)]
       k = values_per_state*size(moving%states)
-      call compare_forces('hunting', forces(:k), preset_forces(:k))
-      call compare_forces('flange', forces(k + 1:), preset_forces(k + 1:))
+      call compare_forces('hunting', moving%states, forces(:k), preset_forces(:k))
+      call compare_forces('flange', flange%states, forces(k + 1:), preset_forces(k + 1:))
    end subroutine moving_section
 
    !> Largest difference of the preset's tangential forces f_x, f_y (patches, contact planes,
    !> f = F/(μF_n)) from the default's over the states of a trajectory, their 99th
    !> percentile, the states beyond 0.01, and the largest difference of F_z in F_z.
-   subroutine compare_forces(label, default, preset)
-      !> The trajectory.
+   subroutine compare_forces(label, states, default, preset)
+      !> The trajectory and its states.
       character(len=*), intent(in) :: label
+      type(wheelset_state_type), intent(in) :: states(:)
       !> [[trajectory_forces]] of the default and of the preset.
       real(wp), intent(in) :: default(:), preset(:)
       real(wp) :: df(size(default)/values_per_state), dz
@@ -140,10 +155,12 @@ contains
          end associate
       end do
       worst = maxloc(df, 1)
-      write (output_unit, '(2x,a,a,a,f7.4,a,i0,a,f7.4,a,i0,a,i0,a,es9.2)') 'vehicle preset '// &
-         'vs default, ', label, ': max |df| ', df(worst), ' (state ', worst, '), 99 % within ', &
-         percentile_99(df), ', beyond 0.01 in ', count(df > 0.01_wp), ' of ', size(df), &
-         ' states; max |dF_z|/F_z ', dz
+      write (output_unit, '(2x,a,a,a,f7.4,a,i0,a,f6.3,a,f7.3,a)') 'vehicle preset vs '// &
+         'default, ', label, ': max |df| ', df(worst), ' (state ', worst, ', t_y ', &
+         states(worst)%y_ws, ' mm, yaw ', 1.0e3_wp*states(worst)%yaw, ' mrad)'
+      write (output_unit, '(4x,a,f7.4,a,i0,a,i0,a,es9.2)') '99 % of the states within ', &
+         percentile_99(df), ', beyond 0.01: ', count(df > 0.01_wp), ' of ', size(df), &
+         '; max |dF_z|/F_z ', dz
    end subroutine compare_forces
 
    !> The 99th percentile (the value below which 99 % of the values lie).
