@@ -94,6 +94,7 @@ contains
       forces = [trajectory_forces(moving%solver, moving%states), &
          trajectory_forces(flange%solver, flange%states)]
       call record%keep_array(forces)
+      call check_history(forces, [moving%states, flange%states])
       ! The vehicle preset (set_preset) against the default, side by side (batch after batch in
       ! turn, so that a change of the shared machine's speed reaches both), on both
       ! trajectories; then its forces against the default's on every state.
@@ -133,6 +134,32 @@ contains
       call compare_forces('hunting', moving%states, forces(:k), preset_forces(:k))
       call compare_forces('flange', flange%states, forces(k + 1:), preset_forces(k + 1:))
    end subroutine moving_section
+
+   !> The same forces from a fresh solver that takes the states in reverse order (each call then
+   !> follows another state than before): the results must not depend on the call history.
+   subroutine check_history(forces, states)
+      !> [[trajectory_forces]] of the states in their order.
+      real(wp), intent(in) :: forces(:)
+      type(wheelset_state_type), intent(in) :: states(:)
+      type(contact_solver_type) :: solver
+      type(error_type), allocatable :: error
+      real(wp) :: again(size(forces))
+      integer :: i, j, n
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', error)
+      call stop_on(error, 'solver init')
+      n = values_per_state
+      again = trajectory_forces(solver, states(size(states):1:-1))
+      j = 0
+      do i = 1, size(states)
+         associate (a => forces(n*(i - 1) + 1:n*i), &
+                    b => again(n*(size(states) - i) + 1:n*(size(states) - i + 1)))
+            j = j + count(a == b)
+         end associate
+      end do
+      write (output_unit, '(2x,a,i0,a,i0,a)') 'history: a fresh solver, the states in reverse '// &
+         'order: ', j, ' of ', size(forces), ' values bitwise equal'
+   end subroutine check_history
 
    !> Largest difference of the preset's tangential forces f_x, f_y (patches, contact planes,
    !> f = F/(μF_n)) from the default's over the states of a trajectory, their 99th
