@@ -51,6 +51,7 @@ program tester
    use test_wheelset_geometry, only: collect_wheelset_geometry
    use test_profile_diagnostics, only: collect_profile_diagnostics
    use test_figures, only: collect_figures
+   use test_preset, only: collect_preset
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -60,6 +61,7 @@ program tester
 
    suites = [ &
       new_testsuite('testdrive', collect_testdrive), &
+      new_testsuite('preset', collect_preset), &
       new_testsuite('layout', collect_layout), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &

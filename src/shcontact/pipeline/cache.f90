@@ -134,7 +134,7 @@ contains
          sin_yaw = sin(yaw)
          do k = 1, self%patches%count
             associate (g => self%patches%patch(k), n => self%patches%points(k))
-               call scale_to_true_radius(g%gamma(1:n), sin_yaw, g%r_wheel(1:n))
+               call scale_to_true_radius(g%tan_gamma(1:n), sin_yaw, g%r_wheel(1:n))
                g%r0 = g%r0*true_radius_scale(g%gamma0, sin_yaw)
             end associate
          end do
