@@ -96,7 +96,7 @@ contains
       if (present(gamma0)) ws%gamma0 = gamma0
       ws%phi_geo0 = 0.0_wp
 
-      call fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3, options%kalker_scheme)
+      call fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3)
       p0 = 3.0_wp*load/(2.0_wp*pi*semi_a*semi_b)
       dy = 2.0_wp*semi_b/real(n_strips, wp)
       ws%dy = dy
