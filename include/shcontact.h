@@ -137,13 +137,41 @@ int shcontact_set_track(shcontact_contact *handle, double gauge, double gauge_he
                         double inclination, int rail_canted, double flange_back_distance,
                         double flange_back_position, double nominal_radius);
 
-/* One option as in the app's case files: key "group%variable", value as text. Keys:
- * normal%method (semi-hertz, hertz), normal%reduction (local-hertz, constant), normal%epsilon,
- * normal%n_strips, normal%b_min, tangential%method (fastsim-sh, fastsim), tangential%bound
- * (ellipsoidal, parabolic, weighted, weighted-slip, clipped), tangential%spin_model (additive,
- * uniform, scaled, geometric), tangential%n_elements, profiles%wheel_smoothing,
- * profiles%rail_smoothing, output%fields (all or 1: every later solve keeps the element fields
- * for shcontact_fields; none or 0, the default: no fields, no cost). */
+/* One option as in the app's case files: key "group%variable", value as text. The options, each
+ * with its default and its choices or range (the lines between the markers come from the option
+ * registries; test registry/header_option_lists checks them):
+ * -- options --
+ * normal%method = 'semi-hertz'
+ *   one of 'semi-hertz', 'hertz'
+ * normal%reduction = 'coupled'
+ *   one of 'coupled', 'local-hertz', 'constant'
+ * normal%epsilon = 0.55 [-]
+ *   0.01 <= epsilon <= 1.0
+ * normal%n_strips = 100
+ *   2 <= n_strips <= 100000
+ * normal%b_min = 0.0001 [1/mm]
+ *   1.0e-8 <= b_min <= 1.0 1/mm
+ * normal%longitudinal_curvature = 'local'
+ *   one of 'local', 'reference'
+ * tangential%method = 'fastsim-sh'
+ *   one of 'fastsim-sh', 'fastsim'
+ * tangential%bound = 'weighted'
+ *   one of 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip', 'clipped'
+ * tangential%spin_model = 'uniform'
+ *   one of 'additive', 'uniform', 'scaled', 'geometric'
+ * tangential%spin_flexibility = 'longitudinal'
+ *   one of 'longitudinal', 'spin'
+ * tangential%correction = 'exact-ellipse'
+ *   one of 'exact-ellipse', 'none'
+ * tangential%n_elements = 50
+ *   2 <= n_elements <= 100000
+ * profiles%wheel_smoothing = 0.0 [mm]
+ *   0.0 <= wheel_smoothing <= 100.0 mm
+ * profiles%rail_smoothing = 0.0 [mm]
+ *   0.0 <= rail_smoothing <= 100.0 mm
+ * -- end options --
+ * And output%fields: all or 1: every later solve keeps the element fields for shcontact_fields;
+ * none or 0, the default: no fields, no cost. */
 int shcontact_set_option(shcontact_contact *handle, const char *key, const char *value);
 
 /* Solve one contact: lateral wheelset shift t_y (mm, CONTACT's Y_WS), roll (rad), load mode and

@@ -20,7 +20,7 @@ module shcontact_io_config_variables
    public :: variable_info_type, variables, group_names, find_variable
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list, k_choice
    public :: type_phrase, string_capacity, is_choice, suggestion, group_variable_list, join_words
-   public :: variable_choices
+   public :: variable_choices, header_option_keys
 
    !> Kinds of namelist variables.
    !> k_choice: one of a registry's choices, held as its integer code after reading.
@@ -53,13 +53,13 @@ module shcontact_io_config_variables
       "wheel file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
       variable_info_type('profiles', 'wheel_mirror_z', k_string, '', &
       "wheel file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
-      variable_info_type('profiles', 'wheel_scale', k_real, '', &
+      variable_info_type('profiles', 'wheel_scale', k_real, '1', &
       'wheel file: factor from its units to mm (0 = as the file/format says)'), &
       variable_info_type('profiles', 'rail_mirror_y', k_string, '', &
       "rail file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
       variable_info_type('profiles', 'rail_mirror_z', k_string, '', &
       "rail file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
-      variable_info_type('profiles', 'rail_scale', k_real, '', &
+      variable_info_type('profiles', 'rail_scale', k_real, '1', &
       'rail file: factor from its units to mm (0 = as the file/format says)'), &
       variable_info_type('track', 'side', k_choice, '', 'wheel and rail of this side'), &
       variable_info_type('track', 'gauge', k_real, 'mm', 'track gauge'), &
@@ -195,6 +195,14 @@ module shcontact_io_config_variables
       variable_info_type('sweep', 'phi_points', k_int, '', &
       'phi = first, last with this many points') &
       ]
+
+   !> The options listed in the headers' option lists (include/shcontact.h, include/shcontact.fi:
+   !> the keys of the C and Fortran 77 option setters, "group%variable" as in a case file).
+   character(len=*), parameter :: header_option_keys(*) = [character(len=30) :: &
+      'normal%method', 'normal%reduction', 'normal%epsilon', 'normal%n_strips', 'normal%b_min', &
+      'normal%longitudinal_curvature', 'tangential%method', 'tangential%bound', &
+      'tangential%spin_model', 'tangential%spin_flexibility', 'tangential%correction', &
+      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing']
 
    character(len=*), parameter :: group_names(*) = [character(len=12) :: 'profiles', 'track', &
       'position', 'kinematics', 'material', 'load', 'creepage', 'normal', 'tangential', &
