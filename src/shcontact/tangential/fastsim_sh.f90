@@ -21,7 +21,7 @@ module shcontact_tangential_fastsim_sh
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_core_material, only: material_type, check_material
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_tangential_kalker, only: kalker_coefficients, kalker_scheme_scaled
+   use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
       bound_ellipsoidal, spin_flexibility_spin, corrected_model
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
@@ -155,8 +155,8 @@ contains
          end do
          be = max(sqrt(5.0_wp*spread/ws%load), 0.5_wp*ws%dy)
          ae = area/(pi*be)
-         call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, &
-            kalker_scheme_scaled, y_c, load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
+         call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, y_c, &
+            load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
       end if
 
    contains
