@@ -21,6 +21,8 @@ module test_registry
    use shcontact_io_config_variables, only: variables, find_variable, variable_choices, &
       k_real, k_int, k_choice, k_real_list, header_option_keys
    use shcontact_io_config_writer, only: variable_value_text, option_list
+   use shcontact_io_config_types, only: choice_value
+   use shcontact_io_config_assign, only: read_group_variable, stat_unknown_choice
    implicit none
    private
    public :: collect_registry
@@ -33,7 +35,8 @@ contains
          new_unittest('library_defaults', test_library_defaults), &
          new_unittest('config_defaults_and_units', test_config_defaults), &
          new_unittest('doc_app_tables', test_doc_tables), &
-         new_unittest('header_option_lists', test_header_lists) &
+         new_unittest('header_option_lists', test_header_lists), &
+         new_unittest('every_choice_from_text', test_every_choice) &
          ]
    end subroutine collect_registry
 
@@ -379,5 +382,53 @@ contains
       end subroutine check_block
 
    end subroutine test_header_lists
+
+   !> Every choice of every choice variable is set from its text by read_group_variable (the
+   !> entry point of the case files, `--set` and the option setters), quoted or not and in any
+   !> case, to the registry's code; an unknown name is refused with the list of the choices.
+   subroutine test_every_choice(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      type(choice_type), allocatable :: choices(:)
+      character(len=256) :: msg
+      character(len=:), allocatable :: key
+      integer :: i, k, stat
+      do i = 1, size(variables)
+         if (variables(i)%kind /= k_choice) cycle
+         key = trim(variables(i)%group)//'%'//trim(variables(i)%name)
+         choices = variable_choices(variables(i)%group, variables(i)%name)
+         do k = 1, size(choices)
+            msg = ''
+            call read_group_variable(c, trim(variables(i)%group), trim(variables(i)%name), &
+               "'"//trim(choices(k)%name)//"'", stat, msg)
+            call check(error, stat == 0 .and. choice_value(c, variables(i)%group, &
+               variables(i)%name) == choices(k)%code, message=key//" = '"// &
+               trim(choices(k)%name)//"' not read: "//trim(msg))
+            if (allocated(error)) return
+            call read_group_variable(c, trim(variables(i)%group), trim(variables(i)%name), &
+               upper(trim(choices(k)%name)), stat, msg)
+            call check(error, stat == 0 .and. choice_value(c, variables(i)%group, &
+               variables(i)%name) == choices(k)%code, message=key//' = '// &
+               upper(trim(choices(k)%name))//' (unquoted) not read: '//trim(msg))
+            if (allocated(error)) return
+         end do
+         call read_group_variable(c, trim(variables(i)%group), trim(variables(i)%name), &
+            "'no-such-choice'", stat, msg)
+         call check(error, stat == stat_unknown_choice .and. &
+            index(msg, choice_list(choices)) > 0, message=key//': unknown choice accepted or '// &
+            'reported without the choices: '//trim(msg))
+         if (allocated(error)) return
+      end do
+   end subroutine test_every_choice
+
+   pure function upper(text) result(t)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: t
+      integer :: i
+      t = text
+      do i = 1, len(t)
+         if (t(i:i) >= 'a' .and. t(i:i) <= 'z') t(i:i) = achar(iachar(t(i:i)) - 32)
+      end do
+   end function upper
 
 end module test_registry

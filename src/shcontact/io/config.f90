@@ -16,9 +16,10 @@
 !> `io/config/`: [[shcontact_io_config_limits]] (sizes), [[shcontact_io_config_sweep]] (axes
 !> and cases of a sweep), [[shcontact_io_config_types]] (the typed configuration and its
 !> defaults), [[shcontact_io_config_choices]] (the registry of the case file's own choices),
-!> [[shcontact_io_config_variables]] (the registry of the groups' variables), [[shcontact_io_config_parser]]
-!> (namelist text into assignments), [[shcontact_io_config_assign]] (one assignment into the
-!> configuration), [[shcontact_io_config_validate]] (checks and derived settings),
+!> [[shcontact_io_config_variables]] (the registry of the groups' variables),
+!> [[shcontact_io_config_parser]] (namelist text into assignments), [[shcontact_io_config_assign]]
+!> (one assignment into the configuration: [[read_group_variable]], the one entry point that
+!> sets a variable from text), [[shcontact_io_config_validate]] (checks and derived settings),
 !> [[shcontact_io_config_writer]] (the resolved namelist) and [[shcontact_io_config_load]] (the
 !> entry points).
 module shcontact_io_config

@@ -160,9 +160,9 @@ contains
 
    !> Read `group%name = value` (every group but `&sweep`, and the `&sweep mode`) through a
    !> one-assignment namelist whose objects are copies of the groups, written back only when the
-   !> read succeeds. A choice variable (kind `k_choice`) is read as a string and stored as the
-   !> code of the registry's choice of that name (case-insensitive, '_' read as '-'); an unknown
-   !> name gives `stat` = [[stat_unknown_choice]]. The one entry point that sets a case-file
+   !> read succeeds. A choice variable (kind `k_choice`) is read as a string (quoted, or the
+   !> unquoted text itself) and stored as the code of the registry's choice of that name
+   !> (case-insensitive, '_' read as '-'); an unknown name gives `stat` = [[stat_unknown_choice]]. The one entry point that sets a case-file
    !> variable from text: the case files, `--set` and the option setters of the C and Fortran 77
    !> interfaces all go through it. Ranges are checked afterwards (validate_config), not here.
    subroutine read_group_variable(config, group, name, value, stat, msg)
@@ -228,9 +228,16 @@ contains
       namelist /choices_nml/ choice
 
       choice = ''
-      text = '&choices_nml choice = '//value//' /'
-      read (text, nml=choices_nml, iostat=stat, iomsg=msg)
-      if (stat /= 0) return
+      text = trim(adjustl(value))
+      if (index("'"//'"', text(1:min(1, len(text)))) == 0 .or. len(text) == 0) then
+         ! Unquoted (an option setter's value): the text itself.
+         stat = 0
+         choice = text
+      else
+         text = '&choices_nml choice = '//text//' /'
+         read (text, nml=choices_nml, iostat=stat, iomsg=msg)
+         if (stat /= 0) return
+      end if
       choices = variable_choices(group, name)
       code = choice_code(choices, choice)
       if (code == 0) then

@@ -1,7 +1,8 @@
 !> The typed configuration of a run: one derived type per namelist group, with the defaults of
 !> the seed's headline case (the registries' defaults: shcontact_core_ranges and the option
-!> registries; choices are held as their integer codes, test `registry`), the whole configuration with where each value was set, and the
-!> questions downstream code asks of it (number of cases, inputs of a case, fields to store).
+!> registries; choices are held as their integer codes; test `registry`), the whole
+!> configuration with where each value was set, and the questions downstream code asks of it
+!> (number of cases, inputs of a case, fields to store, the library's options).
 module shcontact_io_config_types
    use shcontact_core_kinds, only: wp
    use shcontact_core_material, only: material_type
