@@ -379,9 +379,60 @@ contains
          close (unit)
          call check(error, found == expected, message=file//': the option list differs '// &
             'from the registry; it should read'//new_line('a')//expected)
+         if (allocated(error)) return
+         call check_mentions(file, error)
       end subroutine check_block
 
    end subroutine test_header_lists
+
+   !> Anywhere in a header, a choice option named with its choices in parentheses,
+   !> "tangential%bound (ellipsoidal, parabolic, ...)", names exactly the registry's choices.
+   subroutine check_mentions(file, error)
+      character(len=*), intent(in) :: file
+      type(error_type), allocatable, intent(out) :: error
+      type(choice_type), allocatable :: choices(:)
+      character(len=:), allocatable :: text, key, list, item
+      character(len=400) :: line
+      integer :: unit, stat, i, at, close_at, n, comma
+      text = ''
+      open (newunit=unit, file=file, status='old', action='read', iostat=stat)
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         ! Comment markers and line breaks read as blanks.
+         if (line(1:3) == ' * ') line(1:3) = ''
+         if (line(1:1) == '!') line(1:1) = ''
+         text = text//' '//trim(adjustl(line))
+      end do
+      close (unit)
+      do i = 1, size(variables)
+         if (variables(i)%kind /= k_choice) cycle
+         key = trim(variables(i)%group)//'%'//trim(variables(i)%name)//' ('
+         choices = variable_choices(variables(i)%group, variables(i)%name)
+         at = index(text, key)
+         do while (at > 0)
+            list = text(at + len(key):)
+            close_at = index(list, ')')
+            list = list(1:close_at - 1)//','
+            n = 0
+            do
+               comma = index(list, ',')
+               if (comma == 0) exit
+               item = trim(adjustl(list(1:comma - 1)))
+               list = list(comma + 1:)
+               n = n + 1
+               call check(error, choice_code(choices, item) /= 0, message=file//': '//key// &
+                  '...): '//item//' is none of the registry''s choices '//choice_list(choices))
+               if (allocated(error)) return
+            end do
+            call check(error, n == size(choices), message=file//': '//key//'...) names '// &
+               'not all of the registry''s choices '//choice_list(choices))
+            if (allocated(error)) return
+            text = text(at + len(key):)
+            at = index(text, key)
+         end do
+      end do
+   end subroutine check_mentions
 
    !> Every choice of every choice variable is set from its text by read_group_variable (the
    !> entry point of the case files, `--set` and the option setters), quoted or not and in any

@@ -196,13 +196,22 @@ module shcontact_io_config_variables
       'phi = first, last with this many points') &
       ]
 
-   !> The options listed in the headers' option lists (include/shcontact.h, include/shcontact.fi:
-   !> the keys of the C and Fortran 77 option setters, "group%variable" as in a case file).
+   !> The options listed in the headers' option lists (include/shcontact.h, include/shcontact.fi):
+   !> every choice and every number with a range that the option setters of the C and Fortran
+   !> 77 interfaces take ("group%variable" as in a case file): all of the case file's but the
+   !> profile files', the side's (both given at creation), the output's and the sweep's.
    character(len=*), parameter :: header_option_keys(*) = [character(len=30) :: &
-      'normal%method', 'normal%reduction', 'normal%epsilon', 'normal%n_strips', 'normal%b_min', &
-      'normal%longitudinal_curvature', 'tangential%method', 'tangential%bound', &
-      'tangential%spin_model', 'tangential%spin_flexibility', 'tangential%correction', &
-      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing']
+      'profiles%wheel_smoothing', 'profiles%rail_smoothing', 'track%gauge', &
+      'track%gauge_height', 'track%inclination', 'track%flange_back_distance', &
+      'track%flange_back_position', 'track%nominal_radius', 'position%t_y', 'position%roll', &
+      'kinematics%mode', 'kinematics%yaw', 'kinematics%v_forward', 'kinematics%v_lateral', &
+      'kinematics%v_vertical', 'kinematics%roll_rate', 'kinematics%yaw_rate', &
+      'kinematics%pitch_rate', 'material%shear_modulus', 'material%poisson', 'material%friction', &
+      'load%mode', 'load%normal_force', 'load%approach', 'load%vertical_force', 'creepage%nu_x', &
+      'creepage%nu_y', 'creepage%phi', 'normal%method', 'normal%reduction', 'normal%epsilon', &
+      'normal%n_strips', 'normal%b_min', 'normal%longitudinal_curvature', 'tangential%method', &
+      'tangential%bound', 'tangential%spin_model', 'tangential%spin_flexibility', &
+      'tangential%correction', 'tangential%n_elements']
 
    character(len=*), parameter :: group_names(*) = [character(len=12) :: 'profiles', 'track', &
       'position', 'kinematics', 'material', 'load', 'creepage', 'normal', 'tangential', &

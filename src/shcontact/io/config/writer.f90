@@ -191,8 +191,8 @@ contains
 
    !> The option list of the headers (the comment blocks of include/shcontact.h and
    !> include/shcontact.fi, test `registry`): for each key `group%name`, its default (its value
-   !> in `config`) and units, then its choices or its range, each line `prefix` followed by at
-   !> most `width` − len(prefix) characters.
+   !> in `config`; the pitch rate's is pure rolling) and units, then its choices or its range, on
+   !> one line when it fits in `width` columns, else wrapped; every line starts with `prefix`.
    function option_list(config, keys, prefix, width) result(text)
       !> The configuration whose values are shown as defaults.
       type(case_config_type), intent(in) :: config
@@ -205,7 +205,7 @@ contains
       character(len=:), allocatable :: text
       character(len=1), parameter :: nl = new_line('a')
       type(choice_type), allocatable :: choices(:)
-      character(len=:), allocatable :: key, group, name, line, units
+      character(len=:), allocatable :: key, group, name, line, units, word
       integer :: k, iv, ir, i
 
       text = ''
@@ -215,35 +215,49 @@ contains
          name = key(index(key, '%') + 1:)
          iv = find_variable(group, name)
          if (iv == 0) cycle
-         units = trim(variables(iv)%units)
-         if (units == '1') units = '-'
-         line = key//' = '//variable_value_text(config, variables(iv))
-         if (len(units) > 0) line = line//' ['//units//']'
-         text = text//prefix//line//nl
+         if (key == 'kinematics%pitch_rate') then
+            line = key//' = pure rolling'
+         else
+            line = key//' = '//variable_value_text(config, variables(iv))
+         end if
          choices = variable_choices(group, name)
          ir = find_range(key)
+         ! The units: those of the range's text, '[-]' for a dimensionless number.
+         units = trim(variables(iv)%units)
+         if (units == '1') line = line//' [-]'
+         if (ir == 0 .and. len(units) > 0 .and. units /= '1') line = line//' ['//units//']'
+         line = line//':'
          if (size(choices) > 0) then
-            line = '  one of'
             do i = 1, size(choices)
-               if (len(prefix) + len(line) + len(trim(choices(i)%name)) + 4 > width) then
-                  text = text//prefix//line//nl
-                  line = '   '
-               end if
-               line = line//" '"//trim(choices(i)%name)//"'"
-               if (i < size(choices)) line = line//','
+               word = " '"//trim(choices(i)%name)//"'"
+               if (i < size(choices)) word = word//','
+               call add_word(word)
             end do
-            text = text//prefix//line//nl
          else if (ir > 0) then
             if (ranges(ir)%whole) then
-               line = range_text(ranges(ir), name, str_int(nint(ranges(ir)%lo)), &
+               word = ' '//range_text(ranges(ir), name, str_int(nint(ranges(ir)%lo)), &
                   str_int(nint(ranges(ir)%hi)))
             else
-               line = range_text(ranges(ir), name, format_real(ranges(ir)%lo), &
+               word = ' '//range_text(ranges(ir), name, format_real(ranges(ir)%lo), &
                   format_real(ranges(ir)%hi))
             end if
-            text = text//prefix//'  '//line//nl
+            call add_word(word)
          end if
+         text = text//prefix//line//nl
       end do
+
+   contains
+
+      !> Append to the line, or start a continuation line when it would be too long.
+      subroutine add_word(w)
+         character(len=*), intent(in) :: w
+         if (len(prefix) + len(line) + len(w) > width) then
+            text = text//prefix//line//nl
+            line = '   '
+         end if
+         line = line//w
+      end subroutine add_word
+
    end function option_list
 
    pure function format_logical(flag) result(text)
