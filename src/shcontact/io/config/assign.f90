@@ -95,7 +95,10 @@ contains
       call ieee_get_halting_mode(ieee_overflow, halting)
       call ieee_set_halting_mode(ieee_overflow, .false.)
       call ieee_set_flag(ieee_overflow, .false.)
-      if (a%group == 'sweep' .and. variables(iv)%kind /= k_choice) then
+      if (variables(iv)%kind == k_choice .and. scan(adjustl(value), "'"//'"') /= 1) then
+         ! A case file quotes every string (the option setters may leave a choice unquoted).
+         stat = 1
+      else if (a%group == 'sweep' .and. variables(iv)%kind /= k_choice) then
          call read_sweep(config%sweep, a%name, variables(iv)%kind, value, stat, msg)
       else
          call read_group_variable(config, a%group, a%name, value, stat, msg)
