@@ -442,7 +442,7 @@ contains
       type(case_config_type) :: c
       type(choice_type), allocatable :: choices(:)
       character(len=256) :: msg
-      character(len=:), allocatable :: key
+      character(len=:), allocatable :: key, text
       integer :: i, k, stat
       do i = 1, size(variables)
          if (variables(i)%kind /= k_choice) cycle
@@ -456,11 +456,13 @@ contains
                variables(i)%name) == choices(k)%code, message=key//" = '"// &
                trim(choices(k)%name)//"' not read: "//trim(msg))
             if (allocated(error)) return
+            ! Unquoted, its first letter in upper case, '-' written '_'.
+            text = capitalised(trim(choices(k)%name))
             call read_group_variable(c, trim(variables(i)%group), trim(variables(i)%name), &
-               upper(trim(choices(k)%name)), stat, msg)
+               text, stat, msg)
             call check(error, stat == 0 .and. choice_value(c, variables(i)%group, &
-               variables(i)%name) == choices(k)%code, message=key//' = '// &
-               upper(trim(choices(k)%name))//' (unquoted) not read: '//trim(msg))
+               variables(i)%name) == choices(k)%code, message=key//' = '//text// &
+               ' (unquoted) not read: '//trim(msg))
             if (allocated(error)) return
          end do
          call read_group_variable(c, trim(variables(i)%group), trim(variables(i)%name), &
@@ -470,16 +472,18 @@ contains
             'reported without the choices: '//trim(msg))
          if (allocated(error)) return
       end do
-   end subroutine test_every_choice
 
-   pure function upper(text) result(t)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: t
-      integer :: i
-      t = text
-      do i = 1, len(t)
-         if (t(i:i) >= 'a' .and. t(i:i) <= 'z') t(i:i) = achar(iachar(t(i:i)) - 32)
-      end do
-   end function upper
+   contains
+
+      pure function capitalised(name) result(t)
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: t
+         integer :: dash
+         t = achar(iachar(name(1:1)) - 32)//name(2:)
+         dash = index(t, '-')
+         if (dash > 0) t(dash:dash) = '_'
+      end function capitalised
+
+   end subroutine test_every_choice
 
 end module test_registry
