@@ -88,6 +88,54 @@ extern "C" {
 #define SHCONTACT_STATE_ADHESION 1 /* adhesion (stick) */
 #define SHCONTACT_STATE_SLIP 2     /* slip */
 
+/* Options (shcontact_set_option): key "group%variable" as in the app's case files, its default
+ * and units, and its choices or range. The lines between the markers come from the option
+ * registries (test registry/header_option_lists checks them; on a change it prints them).
+ * -- options --
+ * profiles%wheel_smoothing = 0.0: 0.0 <= wheel_smoothing <= 100.0 mm
+ * profiles%rail_smoothing = 0.0: 0.0 <= rail_smoothing <= 100.0 mm
+ * track%gauge = 1435.0: 500.0 <= gauge <= 2000.0 mm
+ * track%gauge_height = 14.0: 0.0 <= gauge_height <= 50.0 mm
+ * track%inclination = 0.025 [-]: -0.2 <= inclination <= 0.2
+ * track%flange_back_distance = 1360.0: 400.0 <= flange_back_distance <= 2000.0 mm
+ * track%flange_back_position = -70.0: -200.0 <= flange_back_position <= 200.0 mm
+ * track%nominal_radius = 460.0: 100.0 <= nominal_radius <= 2000.0 mm
+ * position%t_y = 4.733: -30.0 <= t_y <= 30.0 mm
+ * position%roll = 0.0: -0.1 <= roll <= 0.1 rad
+ * kinematics%mode = 'off': 'off', 'on'
+ * kinematics%yaw = 0.0: -0.1 <= yaw <= 0.1 rad
+ * kinematics%v_forward = 30000.0: 0.0 < v_forward <= 200000.0 mm/s
+ * kinematics%v_lateral = 0.0: -10000.0 <= v_lateral <= 10000.0 mm/s
+ * kinematics%v_vertical = 0.0: -10000.0 <= v_vertical <= 10000.0 mm/s
+ * kinematics%roll_rate = 0.0: -10.0 <= roll_rate <= 10.0 rad/s
+ * kinematics%yaw_rate = 0.0: -10.0 <= yaw_rate <= 10.0 rad/s
+ * kinematics%pitch_rate = pure rolling: -2000.0 <= pitch_rate < 0.0 rad/s
+ * material%shear_modulus = 82670.0: 1000.0 <= shear_modulus <= 1000000.0 MPa
+ * material%poisson = 0.27 [-]: 0.0 <= poisson < 0.5
+ * material%friction = 0.3 [-]: 0.001 <= friction <= 10.0
+ * load%mode = 'force': 'force', 'approach', 'vertical'
+ * load%normal_force = 64700.0: 1.0 <= normal_force <= 1.0e7 N
+ * load%approach = 0.05: 0.0 < approach <= 5.0 mm
+ * load%vertical_force = 64700.0: 1.0 <= vertical_force <= 1.0e7 N
+ * creepage%nu_x = 0.00058 [-]: -1.0 <= nu_x <= 1.0
+ * creepage%nu_y = 6.1e-5 [-]: -1.0 <= nu_y <= 1.0
+ * creepage%phi = 0.000274: -0.1 <= phi <= 0.1 rad/mm
+ * normal%method = 'semi-hertz': 'semi-hertz', 'hertz'
+ * normal%reduction = 'coupled': 'coupled', 'local-hertz', 'constant'
+ * normal%epsilon = 0.55 [-]: 0.01 <= epsilon <= 1.0
+ * normal%n_strips = 100: 2 <= n_strips <= 100000
+ * normal%b_min = 0.0001: 1.0e-8 <= b_min <= 1.0 1/mm
+ * normal%longitudinal_curvature = 'local': 'local', 'reference'
+ * tangential%method = 'fastsim-sh': 'fastsim-sh', 'fastsim'
+ * tangential%bound = 'weighted': 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip',
+ *     'clipped'
+ * tangential%spin_model = 'uniform': 'additive', 'uniform', 'scaled', 'geometric'
+ * tangential%spin_flexibility = 'longitudinal': 'longitudinal', 'spin'
+ * tangential%correction = 'exact-ellipse': 'exact-ellipse', 'none'
+ * tangential%n_elements = 50: 2 <= n_elements <= 100000
+ * -- end options --
+ */
+
 /* An opaque contact (one wheel on its rail). */
 typedef struct shcontact_contact shcontact_contact;
 
@@ -142,12 +190,8 @@ int shcontact_set_track(shcontact_contact *handle, double gauge, double gauge_he
  * (doc/app.md); they set the track, material, smoothing, normal and tangential options, or the
  * state of shcontact_solve_state (&position, &kinematics, &load, &creepage). Profile files and
  * track%side are given at creation, the output file and the sweep are the app's (status 2).
- * Among them: normal%method (semi-hertz, hertz), normal%reduction (local-hertz, constant), normal%epsilon,
- * normal%n_strips, normal%b_min, tangential%method (fastsim-sh, fastsim), tangential%bound
- * (ellipsoidal, parabolic, weighted, weighted-slip, clipped), tangential%spin_model (additive,
- * uniform, scaled, geometric), tangential%n_elements, profiles%wheel_smoothing,
- * profiles%rail_smoothing, output%fields (all or 1: every later solve keeps the element fields
- * for shcontact_fields; none or 0, the default: no fields, no cost). */
+ * The choices of each option: the "Options" block above; output%fields (all or 1: every later
+ * solve keeps the element fields for shcontact_fields; none or 0, the default: no fields). */
 int shcontact_set_option(shcontact_contact *handle, const char *key, const char *value);
 
 /* Solve one contact: lateral wheelset shift t_y (mm, CONTACT's Y_WS), roll (rad), load mode and

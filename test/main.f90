@@ -15,6 +15,7 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_registry, only: collect_registry
    use test_hertz, only: collect_hertz
    use test_semihertz, only: collect_semihertz
    use test_strip_influence, only: collect_strip_influence
@@ -63,6 +64,7 @@ program tester
       new_testsuite('testdrive', collect_testdrive), &
       new_testsuite('preset', collect_preset), &
       new_testsuite('layout', collect_layout), &
+      new_testsuite('registry', collect_registry), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
       new_testsuite('lapack', collect_lapack), &

@@ -19,8 +19,8 @@ module test_coulomb
    use shcontact_normal_patch, only: normal_patch_type, ellipse_strip_patch
    use shcontact_tangential_options, only: tangential_options_type, method_fastsim, &
       bound_ellipsoidal, bound_clipped, spin_additive, spin_geometric, &
-      spin_flexibility_spin, spin_flexibility_longitudinal, flexibility_strip, &
-      flexibility_carter, correction_none, correction_exact_ellipse
+      spin_flexibility_spin, spin_flexibility_longitudinal, correction_none, &
+      correction_exact_ellipse
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
@@ -235,7 +235,7 @@ contains
    !> A seeded random DOE near full slip: on six patches (Hertz ellipses of a/b = 0.2, 1, 4 and
    !> 20, an ellipse with an uneven load and a two-lobe patch), creepages whose linear force is
    !> 0.5 to 20 times μF_n in random directions, with and without spin, every bound × correction
-   !> (and classical FASTSIM on the ellipses), spin model, spin flexibility, flexibility and n_x
+   !> (and classical FASTSIM on the ellipses), spin model, spin flexibility and n_x
    !> (10 or 50) drawn per case: |f| ≤ 1 + 1e-12 everywhere.
    subroutine test_random_doe(error)
       type(error_type), allocatable, intent(out) :: error
@@ -285,7 +285,6 @@ contains
                      options%spin_model = spin_additive + int(4*uniform(seed))
                      options%spin_flexibility = merge(spin_flexibility_spin, &
                         spin_flexibility_longitudinal, uniform(seed) < 0.5_wp)
-                     options%flexibility = flexibility_strip + int(3*uniform(seed))
                      options%n_elements = merge(10, 50, uniform(seed) < 0.5_wp)
                      if (imethod == 2) then
                         call prepare_fastsim(ws, a, b, 64700.0_wp, material, options, 60, err, &

@@ -18,8 +18,7 @@ module test_flat_keys
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
       wheel_left
    use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_io_config, only: case_config_type, case_point_type, read_config_text, &
-      bound_choices
+   use shcontact_io_config, only: case_config_type, case_point_type, read_config_text
    use shcontact_io_config_variables, only: variables, find_variable, k_string, k_real, k_int
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
@@ -350,7 +349,7 @@ contains
       type(run_setup_type) :: app
       character(len=72), allocatable :: items(:)
       character(len=2000) :: a, b
-      integer :: is, ib
+      integer :: is
       character(len=:), allocatable :: key, value
 
       do is = 0, size(samples)
@@ -370,10 +369,7 @@ contains
             return
          end if
          ! The app takes the bound and the spin model per case.
-         ib = findloc(bound_choices, config%tangential%bound, 1)
-         call check(error, ib > 0, message='bound not among the choices')
-         if (allocated(error)) return
-         call check(error, app%bound_codes(ib), lib%tangential%bound, message='bound')
+         call check(error, config%tangential%bound, lib%tangential%bound, message='bound')
          if (allocated(error)) return
          lib%tangential%bound = app%tangential%bound
          lib%tangential%spin_model = app%tangential%spin_model

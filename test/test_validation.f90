@@ -27,7 +27,7 @@ module test_validation
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
       solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_tangential_options, only: tangential_options_type, flexibility_carter, &
+   use shcontact_tangential_options, only: tangential_options_type, &
       correction_none, parse_bound, parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
@@ -72,7 +72,6 @@ contains
          new_unittest('kinematic_sample_vs_exact', test_kinematic), &
          new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8), &
          new_unittest('doe_ty5p8_local_hertz_vs_exact', test_doe_ty5p8_local_hertz), &
-         new_unittest('doe_ty5p8_carter_vs_exact', test_doe_ty5p8_carter), &
          new_unittest('doe_project_positions_vs_exact', test_doe_positions), &
          new_unittest('doe_positions_builtin_profiles_vs_exact', test_doe_positions_builtin), &
          new_unittest('plateau_load_centre_vs_exact', test_plateau_load_centre), &
@@ -299,20 +298,6 @@ contains
       call check_row(ex, ey, [0.035_wp, 0.033_wp, 0.027_wp, 0.010_wp], 'ty5p8 local-hertz', &
          error)
    end subroutine test_doe_ty5p8_local_hertz
-
-   !> Tangential `flexibility = 'carter'` on ty5p8_literal, Table 10's row within ±0.002 (max
-   !> 0.036 / 0.042, P80 0.024 / 0.015): worse than the defaults here, one reason it is not one.
-   subroutine test_doe_ty5p8_carter(error)
-      type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: ex(:), ey(:)
-      character(len=:), allocatable :: doe
-      doe = external_file(ty5p8_doe, error)
-      if (allocated(error)) return
-      call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
-         flexibility=flexibility_carter)
-      if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.036_wp, 0.042_wp, 0.024_wp, 0.015_wp], 'ty5p8 carter', error)
-   end subroutine test_doe_ty5p8_carter
 
    !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
    !> doc/validation.md §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max
@@ -658,11 +643,11 @@ contains
          message=label//' P80 |Delta f_y|')
    end subroutine check_row
 
-   !> |Δf_x|, |Δf_y| of the recommended tangential settings (or another `flexibility_*`) over an
+   !> |Δf_x|, |Δf_y| of the recommended tangential settings over an
    !> exact-theory DOE file (the shared columns) at Y_WS, on the patch nearest CONTACT's
    !> reference point y_ref (track y) with the given normal reduction (default: the library's);
    !> ex unallocated (and the test skipped) without the data.
-   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, flexibility, &
+   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, &
       correction, builtin)
       character(len=*), intent(in) :: doe
       real(wp), intent(in) :: y_ws, y_ref
@@ -670,7 +655,6 @@ contains
       real(wp), allocatable, intent(out) :: ex(:), ey(:)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in), optional :: reduction
-      integer, intent(in), optional :: flexibility
       !> Tangential `correction_*` (default: the library's, `exact-ellipse`).
       integer, intent(in), optional :: correction
       !> The built-in S1002 and UIC60-canted instead of the Manchester files (default .false.).
@@ -696,7 +680,6 @@ contains
          cases, error)
       if (allocated(error)) return
       call recommended_options(options)
-      if (present(flexibility)) options%flexibility = flexibility
       if (present(correction)) options%correction = correction
       call prepare_fastsim_sh(ws, patch, material_type(), options, err)
       if (allocated(err)) then

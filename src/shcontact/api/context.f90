@@ -578,7 +578,7 @@ contains
       ctx%config = case_config_type()
       ctx%config%profiles%wheel = wheel
       ctx%config%profiles%rail = rail
-      ctx%config%track%side = trim(merge('left ', 'right', side == side_left))
+      ctx%config%track%side = side
       if (.not. ctx%solver%is_ready()) return
       track = ctx%solver%get_track()
       ctx%config%track%flange_back_position = track%flange_back_position

@@ -18,12 +18,13 @@ module shcontact_api_settings
    use shcontact_geometry_track, only: track_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model, parse_spin_flexibility, parse_correction
-   use shcontact_io_config, only: case_config_type, case_point_type, apply_override
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_io_config, only: case_config_type, case_point_type, apply_override, &
+      normal_options_of, tangential_options_of, load_mode_force, load_mode_approach, &
+      curvature_reference
    use shcontact_io_config_types, only: set_origin
-   use shcontact_io_config_variables, only: variables, find_variable, curvature_modes, &
+   use shcontact_io_config_variables, only: variables, find_variable, &
       join_words, k_real, k_real_list
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
       load_vertical_force
@@ -79,34 +80,11 @@ contains
       setup%contact_options%l_filt_wheel = config%profiles%wheel_smoothing
       setup%contact_options%l_filt_rail = config%profiles%rail_smoothing
       setup%contact_options%b_min = config%normal%b_min
-      if (.not. any(curvature_modes == config%normal%longitudinal_curvature)) then
-         call fatal_error(error, "option normal%longitudinal_curvature = '"// &
-            trim(config%normal%longitudinal_curvature)//"': expected "// &
-            join_words(curvature_modes, '', "'"), stat_invalid_input)
-         return
-      end if
       setup%contact_options%a_reference_normal = &
-         config%normal%longitudinal_curvature == 'reference'
-      setup%side = side_right
-      if (config%track%side == 'left') setup%side = side_left
-      call new_normal_options(setup%normal, error, method=trim(config%normal%method), &
-         reduction=trim(config%normal%reduction), epsilon=config%normal%epsilon, &
-         n_strips=config%normal%n_strips)
-      if (allocated(error)) return
-      call parse_method(trim(config%tangential%method), setup%tangential%method, error)
-      if (allocated(error)) return
-      call parse_bound(trim(config%tangential%bound), setup%tangential%bound, error)
-      if (allocated(error)) return
-      call parse_spin_model(trim(config%tangential%spin_model), setup%tangential%spin_model, &
-         error)
-      if (allocated(error)) return
-      call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
-         setup%tangential%spin_flexibility, error)
-      if (allocated(error)) return
-      call parse_correction(trim(config%tangential%correction), setup%tangential%correction, &
-         error)
-      if (allocated(error)) return
-      setup%tangential%n_elements = config%tangential%n_elements
+         config%normal%longitudinal_curvature == curvature_reference
+      setup%side = config%track%side
+      setup%normal = normal_options_of(config)
+      setup%tangential = tangential_options_of(config)
       setup%material = config%material
    end subroutine library_setup
 
@@ -117,10 +95,10 @@ contains
       !> The case inputs.
       type(case_point_type), intent(in) :: point
       type(contact_load_type) :: load
-      select case (trim(config%load%mode))
-      case ('force')
+      select case (config%load%mode)
+      case (load_mode_force)
          load = contact_load_type(load_normal_force, point%normal_force)
-      case ('approach')
+      case (load_mode_approach)
          load = contact_load_type(load_approach, point%approach)
       case default
          load = contact_load_type(load_vertical_force, point%vertical_force)

@@ -27,11 +27,10 @@ module shcontact_case_runner
       prepare_profiles, find_contact_patches
    use shcontact_geometry_kinematics, only: wheelset_state_type, axle_offset
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_options, only: normal_options_type, new_normal_options
+   use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type
    use shcontact_tangential_patch, only: tangential_patch_type
-   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model, parse_spin_flexibility, parse_correction
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
@@ -39,8 +38,9 @@ module shcontact_case_runner
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
       solve_patch_stage, summarise_stages
-   use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
-      spin_model_choices
+   use shcontact_io_config, only: case_config_type, case_point_type, normal_options_of, &
+      tangential_options_of, load_mode_force, load_mode_approach, load_mode_vertical, &
+      curvature_reference
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
    implicit none
@@ -63,11 +63,8 @@ module shcontact_case_runner
       type(tangential_options_type) :: tangential
       !> Elastic constants (the friction comes with each case).
       type(material_type) :: material
-      !> 'force', 'approach' or 'vertical'.
-      character(len=:), allocatable :: load_mode
-      !> Solver codes of the bound and spin-model names (parsed once, looked up per case).
-      integer :: bound_codes(size(bound_choices)) = 0
-      integer :: spin_model_codes(size(spin_model_choices)) = 0
+      !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical` (shcontact_io_config).
+      integer :: load_mode = load_mode_force
       !> Kinematic mode: cases are solved by copies of `solver`, prepared with the run's
       !> profiles, track, material and options (bound and friction come with each case).
       logical :: kinematic = .false.
@@ -119,7 +116,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(track_type) :: track
       type(contact_options_type) :: options
-      integer :: k
 
       call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
          config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
@@ -142,37 +138,18 @@ contains
       options%l_filt_wheel = config%profiles%wheel_smoothing
       options%l_filt_rail = config%profiles%rail_smoothing
       options%b_min = config%normal%b_min
-      options%a_reference_normal = config%normal%longitudinal_curvature == 'reference'
+      options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
       call prepare_profiles(setup%wheel, setup%rail, track, options, setup%prepared, error)
       if (allocated(error)) return
 
-      setup%position%side = side_right
-      if (config%track%side == 'left') setup%position%side = side_left
-      call new_normal_options(setup%normal, error, method=trim(config%normal%method), &
-         reduction=trim(config%normal%reduction), epsilon=config%normal%epsilon, &
-         n_strips=config%normal%n_strips)
-      if (allocated(error)) return
-      call parse_method(trim(config%tangential%method), setup%tangential%method, error)
-      if (allocated(error)) return
-      call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
-         setup%tangential%spin_flexibility, error)
-      if (allocated(error)) return
-      call parse_correction(trim(config%tangential%correction), setup%tangential%correction, error)
-      if (allocated(error)) return
-      setup%tangential%n_elements = config%tangential%n_elements
+      setup%position%side = config%track%side
+      setup%normal = normal_options_of(config)
+      setup%tangential = tangential_options_of(config)
       setup%tangential%fields = config%wants_field('pressure') .or. &
          config%wants_field('traction') .or. config%wants_field('state') .or. &
          config%wants_field('slip')
       setup%material = config%material
-      setup%load_mode = trim(config%load%mode)
-      do k = 1, size(bound_choices)
-         call parse_bound(trim(bound_choices(k)), setup%bound_codes(k), error)
-         if (allocated(error)) return
-      end do
-      do k = 1, size(spin_model_choices)
-         call parse_spin_model(trim(spin_model_choices(k)), setup%spin_model_codes(k), error)
-         if (allocated(error)) return
-      end do
+      setup%load_mode = config%load%mode
       setup%kinematic = config%is_kinematic()
       if (setup%kinematic) then
          call setup%solver%init(setup%wheel, setup%rail, error, track=track, &
@@ -220,9 +197,7 @@ contains
       call solver%set_material(material, error)
       if (.not. allocated(error)) then
          options = setup%tangential
-         do k = 1, size(bound_choices)
-            if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-         end do
+         options%bound = point%bound
          call solver%set_options(error, tangential=options)
       end if
       if (.not. allocated(error)) then
@@ -308,9 +283,9 @@ contains
       type(case_point_type), intent(in) :: point
       type(contact_load_type) :: load
       select case (setup%load_mode)
-      case ('force')
+      case (load_mode_force)
          load = contact_load_type(load_normal_force, point%normal_force)
-      case ('approach')
+      case (load_mode_approach)
          load = contact_load_type(load_approach, point%approach)
       case default
          load = contact_load_type(load_vertical_force, point%vertical_force)
@@ -357,14 +332,8 @@ contains
          return
       end if
       options = setup%tangential
-      ! The names were validated with the configuration: look their codes up.
-      do k = 1, size(bound_choices)
-         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-      end do
-      do k = 1, size(spin_model_choices)
-         if (point%spin_model == spin_model_choices(k)) &
-            options%spin_model = setup%spin_model_codes(k)
-      end do
+      options%bound = point%bound
+      options%spin_model = point%spin_model
       material = setup%material
       material%friction = point%friction
       creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
