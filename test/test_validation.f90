@@ -41,7 +41,7 @@ module test_validation
    private
    public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
-      skip_without_profiles
+      skip_without_profiles, two_patch_solution
 
    !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
    character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
