@@ -41,7 +41,8 @@ module test_validation
    private
    public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
-      skip_without_profiles, two_patch_solution
+      skip_without_profiles, two_patch_solution, position_errors, recommended_options, &
+      exact_positions
 
    !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
    character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
@@ -374,17 +375,20 @@ contains
 
    !> |Δf_x|, |Δf_y| of the defaults over the DOE of the data/exact/ folder `name`, on the patch
    !> nearest CONTACT's reference point, with the Manchester or the built-in profiles.
-   subroutine position_errors(name, ex, ey, error, builtin)
+   subroutine position_errors(name, ex, ey, error, builtin, reduction, correction)
       character(len=*), intent(in) :: name
       real(wp), allocatable, intent(out) :: ex(:), ey(:)
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in) :: builtin
+      !> Normal reduction and `correction_*` (default: the library's).
+      character(len=*), intent(in), optional :: reduction
+      integer, intent(in), optional :: correction
       real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
       call summary_values('data/exact/'//name//'/summary.csv', y_ws, y_geo, pen, ycp_r, delt, &
          y_ref, error)
       if (allocated(error)) return
       call doe_errors('data/exact/'//name//'/doe_6x6x6_exact_nonhertz.csv', y_ws, y_ref, 216, &
-         ex, ey, error, builtin=builtin)
+         ex, ey, error, builtin=builtin, reduction=reduction, correction=correction)
    end subroutine position_errors
 
    !> The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤ 0.05,
@@ -603,11 +607,13 @@ contains
    !> Our patches at y_ws with the default options under the vertical load for which their
    !> normal forces add up to 64.7 kN (patches unallocated and the test skipped without the
    !> external data).
-   subroutine two_patch_solution(y_ws, geometry, patches, error)
+   subroutine two_patch_solution(y_ws, geometry, patches, error, reduction)
       real(wp), intent(in) :: y_ws
       type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
       type(normal_patch_type), allocatable, intent(out) :: patches(:)
       type(error_type), allocatable, intent(out) :: error
+      !> Normal reduction (default: the library's, `coupled`).
+      character(len=*), intent(in), optional :: reduction
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(normal_contact_type), allocatable :: contacts(:)
@@ -621,7 +627,13 @@ contains
       call manchester_profiles(wheel, rail, track, err)
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
          wheelset_position_type(y_ws=y_ws), contact_options_type(), geometry, err)
-      if (.not. allocated(err)) call new_normal_options(options, err)
+      if (.not. allocated(err)) then
+         if (present(reduction)) then
+            call new_normal_options(options, err, reduction=reduction)
+         else
+            call new_normal_options(options, err)
+         end if
+      end if
       if (allocated(err)) then
          call test_failed(error, err%message); return
       end if

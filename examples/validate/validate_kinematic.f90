@@ -34,6 +34,7 @@ module validate_kinematic
       load_vertical_force, wheelset_state_type, creepage_type
    use validate_csv, only: csv_table_type, read_csv, column, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
+   use validate_sets, only: pool_errors
    implicit none
    private
 
@@ -121,6 +122,10 @@ contains
       if (allocated(error)) return
       call write_markdown(out_dir//'kinematic.md', cases, groups, error)
       if (allocated(error)) return
+      ! The summary of every set (validate_sets): the compared patch of every solved case.
+      call pool_errors('kinematic sample: external data, module 1, Y_WS 0 / 4.733 / 8 mm', 1, &
+         pack(abs(cases%fx - cases%fx_ref), cases%ok), pack(abs(cases%fy - cases%fy_ref), &
+         cases%ok), maxval(hypot(cases%fx, cases%fy), mask=cases%ok))
       associate (g => groups(size(groups)))
          write (output_unit, '(a,i0,a,4(f7.4,a),2(f7.4,a))') 'kinematic sample: ', g%n, &
             ' cases; max/P80 |dfx| ', g%fx%max, '/', g%fx%p80, ', |dfy| ', g%fy%max, '/', &
