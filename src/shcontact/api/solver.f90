@@ -51,6 +51,7 @@ module shcontact_api_solver
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: track_forces_type, solve_tangential
    use shcontact_tangential_options, only: spin_additive
+   use shcontact_tangential_lobes, only: joined_lobes_type, join_lobes
    use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
@@ -150,6 +151,10 @@ module shcontact_api_solver
       type(track_forces_type) :: track
       !> Every patch; patches beyond n_loaded carry their geometry only.
       type(patch_result_type) :: patch(max_patches)
+      !> The wheel's contact as the exact theory reports it where it joins close lobes into one
+      !> patch (CONTACT's 4 mm rule; shcontact_tangential_lobes, doc/lobes.md): the main patch and
+      !> the loaded patches within 4 mm of it, forces summed, f = ΣF/(μΣF_n).
+      type(joined_lobes_type) :: wheel
    end type contact_result_type
 
    !> Copies of the fields of one solve (doc/theory.md decision 12): per patch its strip tables, the
@@ -985,6 +990,7 @@ contains
    pure subroutine summarise(self, result)
       type(contact_solver_type), intent(in) :: self
       type(contact_result_type), intent(inout) :: result
+      real(wp) :: offset(max_patches), fx(max_patches), fy(max_patches)
       integer :: k, m
 
       result%n_patches = self%patches%count
@@ -1038,6 +1044,20 @@ contains
       end do
       result%main_patch = m
       result%main = result%patch(m)
+      ! Issue 28 item 3: the joined lobes, the patches placed along the profile as the coupled
+      ! reduction places them (shcontact_normal_loading).
+      offset = 0.0_wp
+      do k = 1, self%n_loaded
+         fx(k) = result%patch(k)%fx
+         fy(k) = result%patch(k)%fy
+         if (k == 1) cycle
+         offset(k) = sign(hypot(self%patches%patch(k)%y_rail - self%patches%patch(1)%y_rail, &
+            self%patches%patch(k)%z_track - self%patches%patch(1)%z_track), &
+            self%patches%patch(k)%y_rail - self%patches%patch(1)%y_rail)
+      end do
+      call join_lobes(self%patches%patch(1:self%n_loaded), self%patches%points(1:self%n_loaded), &
+         self%normal(1:self%n_loaded), offset(1:self%n_loaded), fx(1:self%n_loaded), &
+         fy(1:self%n_loaded), self%material%friction, result%wheel)
    end subroutine summarise
 
    !> Copy the fields of the loaded patches, reusing the arrays of `fields`.
