@@ -18,10 +18,22 @@ module validate_patches
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
       error_stats
    use validate_lobes, only: run_lobes
+   use validate_sets, only: pool_errors, set_all_positions, set_two_lobe, declare_set
    implicit none
    private
 
    public :: run_patches, patch_names, n_configs, config_labels
+
+   !> The sets of the summary (validate_sets): the shared positions one by one, the project's
+   !> single-lobe positions together, and every project position (with the two-lobe ones of
+   !> validate_lobes).
+   character(len=*), parameter :: set_names(2) = [character(len=62) :: &
+      'ty0_literal: external data, Y_WS 0 mm, DOE 10³', &
+      'ty5p8_literal: external data, Y_WS 5.8 mm, DOE 20³']
+   character(len=*), parameter :: set_single = &
+      'data/exact: the 19 single-lobe positions −6 … 7 mm, DOE 6³ each'
+   !> The configurations of the summary: defaults, normal reduction local-hertz, correction none.
+   integer, parameter :: set_configs(3) = [1, 9, 10]
 
    !> The patch folders: the two shared ones (under ../shared/reference/), then the positions of
    !> data/exact/ (doc/validation.md §6.5: CONTACT runs made for this project, same set-up).
@@ -94,10 +106,16 @@ contains
       character(len=48) :: cells(10)
       integer :: ip, ic
 
+      ! The order of the summary's rows (validate_sets).
+      call declare_set(trim(set_names(1)))
+      call declare_set(trim(set_names(2)))
+      call declare_set(set_single)
+      call declare_set(set_two_lobe)
+      call declare_set(set_all_positions)
       do ip = 1, size(patch_names)
          call run_patch(patch_dir(ref_root, ip), prepared, out_dir// &
             'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
-            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error)
+            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error, ip)
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
@@ -135,7 +153,7 @@ contains
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
    !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
    subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, fmax, doe_name, &
-      n, error)
+      n, error, ip)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
       character(len=*), intent(in) :: strips_base
@@ -150,6 +168,8 @@ contains
       character(len=24), intent(out) :: doe_name
       integer, intent(out) :: n
       type(error_type), allocatable, intent(out) :: error
+      !> The patch's index in patch_names (its set in the summary).
+      integer, intent(in) :: ip
       type(csv_table_type) :: summary
       type(patch_geometry_type) :: geometry
       type(normal_patch_type) :: patch, default_patch, contact_patch, coupled_patch
@@ -229,6 +249,17 @@ contains
             ey(ic)%max = -1.0_wp
          end if
          bx(ic) = sum((fx - set%fx)*sign(1.0_wp, set%fx))/n
+         if (any(set_configs == ic)) then
+            if (ip <= n_shared) then
+               call pool_errors(trim(set_names(ip)), findloc(set_configs, ic, 1), &
+                  abs(fx - set%fx), abs(fy - set%fy), fmax(ic))
+            else
+               call pool_errors(set_single, findloc(set_configs, ic, 1), abs(fx - set%fx), &
+                  abs(fy - set%fy), fmax(ic))
+               call pool_errors(set_all_positions, findloc(set_configs, ic, 1), &
+                  abs(fx - set%fx), abs(fy - set%fy), fmax(ic))
+            end if
+         end if
          by(ic) = sum((fy - set%fy)*sign(1.0_wp, set%fy))/n
       end do
    end subroutine run_patch

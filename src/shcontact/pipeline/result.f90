@@ -7,6 +7,7 @@ module shcontact_pipeline_result
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: track_forces_type
+   use shcontact_tangential_lobes, only: joined_lobes_type
    implicit none
    private
 
@@ -68,6 +69,10 @@ module shcontact_pipeline_result
       type(track_forces_type) :: track
       !> Every patch; patches beyond n_loaded carry their geometry only.
       type(patch_result_type) :: patch(max_patches)
+      !> The wheel's contact as the exact theory reports it where it joins close lobes into one
+      !> patch (CONTACT's 4 mm rule; shcontact_tangential_lobes, doc/lobes.md): the main patch and
+      !> the loaded patches within 4 mm of it, forces summed, f = ΣF/(μΣF_n).
+      type(joined_lobes_type) :: wheel
    end type contact_result_type
 
    !> Copies of the fields of one solve (doc/theory.md decision 12): per patch its strip tables, the
