@@ -2,7 +2,8 @@
 !> → normal solution → tangential solution → summary.
 !>
 !> [[prepare_run]] does everything that is the same for every case of a run (reading and
-!> smoothing the profiles, placing the rail, translating the options). A sweep then solves the
+!> smoothing the profiles, placing the rail, and translating the options with the C / Fortran 77
+!> handles' one translation, shcontact_api_settings' library_setup). A sweep then solves the
 !> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
 !> tangential problem and the summary once per case ([[solve_case]]), through the stages of
 !> shcontact_pipeline_stages that the library's solver object calls too (doc/architecture.md),
