@@ -186,14 +186,9 @@ contains
       type(contact_fields_type), allocatable :: copies
       integer :: k, n
 
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       call solver%set_material(material, error)
       if (.not. allocated(error)) then
-         options = setup%tangential
-         do k = 1, size(bound_choices)
-            if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-         end do
          call solver%set_options(error, tangential=options)
       end if
       if (.not. allocated(error)) then
@@ -222,6 +217,30 @@ contains
          result%x_track = contact%patch(1:n)%x_track
       end if
    end subroutine solve_kinematic_case
+
+   !> The tangential options and the material of a case: the run's, with the case's bound, spin
+   !> model and friction (the names were validated with the configuration: their codes are
+   !> looked up). A kinematic solve takes the spin model 'additive' whatever it is given.
+   pure subroutine case_options(setup, point, options, material)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (bound, spin model, friction).
+      type(case_point_type), intent(in) :: point
+      !> The case's options and material.
+      type(tangential_options_type), intent(out) :: options
+      type(material_type), intent(out) :: material
+      integer :: k
+      options = setup%tangential
+      do k = 1, size(bound_choices)
+         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
+      end do
+      do k = 1, size(spin_model_choices)
+         if (point%spin_model == spin_model_choices(k)) &
+            options%spin_model = setup%spin_model_codes(k)
+      end do
+      material = setup%material
+      material%friction = point%friction
+   end subroutine case_options
 
    !> The contact patches of one wheelset position.
    subroutine solve_geometry(setup, point, geometry, error)
@@ -310,17 +329,7 @@ contains
          result%message = stage%message
          return
       end if
-      options = setup%tangential
-      ! The names were validated with the configuration: look their codes up.
-      do k = 1, size(bound_choices)
-         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-      end do
-      do k = 1, size(spin_model_choices)
-         if (point%spin_model == spin_model_choices(k)) &
-            options%spin_model = setup%spin_model_codes(k)
-      end do
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
       n = size(stage%normal)
       if (allocated(tangential)) then
