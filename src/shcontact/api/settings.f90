@@ -31,7 +31,7 @@ module shcontact_api_settings
    implicit none
    private
 
-   public :: library_setup_type, library_setup, config_load, config_state
+   public :: library_setup_type, library_setup, config_load, point_load, config_state
    public :: key_use, key_solver, key_state, key_fields, key_creation, key_app
    public :: set_config_value, split_key, handle_key_list
 
@@ -62,6 +62,7 @@ contains
 
    !> The library's objects of a configuration: track, contact-search options, normal and
    !> tangential options (bound and spin model those of the configuration), material, side.
+   !> The one translation: the handles and the program's runner (`prepare_run`) call it.
    subroutine library_setup(config, setup, error)
       !> The configuration (choices in lower case, as the namelist reader stores them).
       type(case_config_type), intent(in) :: config
@@ -95,7 +96,19 @@ contains
       !> The case inputs.
       type(case_point_type), intent(in) :: point
       type(contact_load_type) :: load
-      select case (config%load%mode)
+      load = point_load(config%load%mode, point)
+   end function config_load
+
+   !> The load of a case for load mode `mode` (load_mode_force, load_mode_approach or
+   !> load_mode_vertical: the configuration's `&load mode`) and the case's value; the one translation of the load that
+   !> the handles and the program's runner (shcontact_case_runner) share.
+   pure function point_load(mode, point) result(load)
+      !> `&load mode`.
+      integer, intent(in) :: mode
+      !> The case inputs.
+      type(case_point_type), intent(in) :: point
+      type(contact_load_type) :: load
+      select case (mode)
       case (load_mode_force)
          load = contact_load_type(load_normal_force, point%normal_force)
       case (load_mode_approach)
@@ -103,9 +116,10 @@ contains
       case default
          load = contact_load_type(load_vertical_force, point%vertical_force)
       end select
-   end function config_load
+   end function point_load
 
-   !> The wheelset state of a case (track frame; the pitch rate resolved by the configuration).
+   !> The wheelset state of a case (track frame; the pitch rate resolved by the configuration);
+   !> the program's runner takes it as its `kinematic_state`.
    pure function config_state(point) result(state)
       !> The case inputs.
       type(case_point_type), intent(in) :: point

@@ -2,7 +2,8 @@
 !> → normal solution → tangential solution → summary.
 !>
 !> [[prepare_run]] does everything that is the same for every case of a run (reading and
-!> smoothing the profiles, placing the rail, translating the options). A sweep then solves the
+!> smoothing the profiles, placing the rail, and translating the options with the C / Fortran 77
+!> handles' one translation, shcontact_api_settings' library_setup). A sweep then solves the
 !> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
 !> tangential problem and the summary once per case ([[solve_case]]), through the stages of
 !> shcontact_pipeline_stages that the library's solver object calls too (doc/architecture.md),
@@ -22,10 +23,10 @@ module shcontact_case_runner
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
-   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
-      prepare_profiles, find_contact_patches
-   use shcontact_geometry_kinematics, only: wheelset_state_type, axle_offset
+   use shcontact_geometry_track, only: wheelset_position_type
+   use shcontact_geometry_contact, only: prepared_profiles_type, prepare_profiles, &
+      find_contact_patches
+   use shcontact_geometry_kinematics, only: axle_offset
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type
@@ -33,16 +34,15 @@ module shcontact_case_runner
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
-   use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach
+   use shcontact_pipeline_load, only: contact_load_type
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
       solve_patch_stage, summarise_stages
-   use shcontact_io_config, only: case_config_type, case_point_type, normal_options_of, &
-      tangential_options_of, load_mode_force, load_mode_approach, load_mode_vertical, &
-      curvature_reference
+   use shcontact_io_config, only: case_config_type, case_point_type, load_mode_force
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
+   use shcontact_api_settings, only: library_setup_type, library_setup, point_load, &
+      kinematic_state => config_state
    implicit none
    private
 
@@ -114,8 +114,7 @@ contains
       type(run_setup_type), intent(out) :: setup
       !> Set for unreadable or bad profiles, or profiles that cannot be placed.
       type(error_type), allocatable, intent(out) :: error
-      type(track_type) :: track
-      type(contact_options_type) :: options
+      type(library_setup_type) :: lib
 
       call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
          config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
@@ -128,46 +127,28 @@ contains
          setup%rail, error)
       if (allocated(error)) return
 
-      track%gauge = config%track%gauge
-      track%gauge_height = config%track%gauge_height
-      track%rail_inclination = config%track%inclination
-      track%rail_canted = config%track%rail_canted
-      track%flange_back_distance = config%track%flange_back_distance
-      track%flange_back_position = config%track%flange_back_position
-      track%nominal_radius = config%track%nominal_radius
-      options%l_filt_wheel = config%profiles%wheel_smoothing
-      options%l_filt_rail = config%profiles%rail_smoothing
-      options%b_min = config%normal%b_min
-      options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
-      call prepare_profiles(setup%wheel, setup%rail, track, options, setup%prepared, error)
+      call library_setup(config, lib, error)
       if (allocated(error)) return
-
-      setup%position%side = config%track%side
-      setup%normal = normal_options_of(config)
-      setup%tangential = tangential_options_of(config)
+      call prepare_profiles(setup%wheel, setup%rail, lib%track, lib%contact_options, &
+         setup%prepared, error)
+      if (allocated(error)) return
+      setup%position%side = lib%side
+      setup%normal = lib%normal
+      ! The bound and the spin model of each case replace the configuration's.
+      setup%tangential = lib%tangential
       setup%tangential%fields = config%wants_field('pressure') .or. &
          config%wants_field('traction') .or. config%wants_field('state') .or. &
          config%wants_field('slip')
-      setup%material = config%material
+      setup%material = lib%material
       setup%load_mode = config%load%mode
       setup%kinematic = config%is_kinematic()
       if (setup%kinematic) then
-         call setup%solver%init(setup%wheel, setup%rail, error, track=track, &
-            material=setup%material, side=setup%position%side, contact_options=options, &
+         call setup%solver%init(setup%wheel, setup%rail, error, track=lib%track, &
+            material=setup%material, side=setup%position%side, &
+            contact_options=lib%contact_options, &
             normal_options=setup%normal, tangential_options=setup%tangential)
       end if
    end subroutine prepare_run
-
-   !> The wheelset state of a kinematic case (track frame; the pitch rate already resolved by
-   !> the configuration).
-   pure function kinematic_state(point) result(state)
-      !> The case inputs.
-      type(case_point_type), intent(in) :: point
-      type(wheelset_state_type) :: state
-      state = wheelset_state_type(y_ws=point%t_y, yaw=point%yaw, roll=point%roll, &
-         v_forward=point%v_forward, v_lateral=point%v_lateral, v_vertical=point%v_vertical, &
-         roll_rate=point%roll_rate, yaw_rate=point%yaw_rate, pitch_rate=point%pitch_rate)
-   end function kinematic_state
 
    !> One kinematic case through the library's solver object (`solve_kinematic`): the geometry
    !> of the yawed wheelset, the normal problem for the load, and every loaded patch with the
@@ -192,16 +173,13 @@ contains
       type(contact_fields_type), allocatable :: copies
       integer :: k, n
 
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       call solver%set_material(material, error)
       if (.not. allocated(error)) then
-         options = setup%tangential
-         options%bound = point%bound
          call solver%set_options(error, tangential=options)
       end if
       if (.not. allocated(error)) then
-         load = case_load(setup, point)
+         load = point_load(setup%load_mode, point)
          if (fields) then
             allocate (copies)
             call solver%solve_kinematic(kinematic_state(point), load, contact, error, copies)
@@ -226,6 +204,24 @@ contains
          result%x_track = contact%patch(1:n)%x_track
       end if
    end subroutine solve_kinematic_case
+
+   !> The tangential options and the material of a case: the run's, with the case's bound, spin
+   !> model (codes since the configuration was read) and friction. A kinematic solve takes the
+   !> spin model 'additive' whatever it is given.
+   pure subroutine case_options(setup, point, options, material)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (bound, spin model, friction).
+      type(case_point_type), intent(in) :: point
+      !> The case's options and material.
+      type(tangential_options_type), intent(out) :: options
+      type(material_type), intent(out) :: material
+      options = setup%tangential
+      options%bound = point%bound
+      options%spin_model = point%spin_model
+      material = setup%material
+      material%friction = point%friction
+   end subroutine case_options
 
    !> The contact patches of one wheelset position.
    subroutine solve_geometry(setup, point, geometry, error)
@@ -264,7 +260,7 @@ contains
       integer :: n, n_prepared
 
       stage%geometry = geometry
-      load = case_load(setup, point)
+      load = point_load(setup%load_mode, point)
       n = loaded_count(load, size(geometry))
       allocate (contacts(n), stage%normal(n))
       n_prepared = 0
@@ -274,23 +270,6 @@ contains
       call solve_normal_stage(contacts, load, stage%normal, stage%dz, error)
       if (failed(stage, error)) return
    end subroutine solve_stage
-
-   !> The load of a case: `&load mode` 'force', 'approach' or 'vertical' and its value.
-   pure function case_load(setup, point) result(load)
-      !> Shared data (the load mode).
-      type(run_setup_type), intent(in) :: setup
-      !> The case inputs (the load's value).
-      type(case_point_type), intent(in) :: point
-      type(contact_load_type) :: load
-      select case (setup%load_mode)
-      case (load_mode_force)
-         load = contact_load_type(load_normal_force, point%normal_force)
-      case (load_mode_approach)
-         load = contact_load_type(load_approach, point%approach)
-      case default
-         load = contact_load_type(load_vertical_force, point%vertical_force)
-      end select
-   end function case_load
 
    !> Record an error in the stage; true when there was one.
    logical function failed(stage, error)
@@ -331,11 +310,7 @@ contains
          result%message = stage%message
          return
       end if
-      options = setup%tangential
-      options%bound = point%bound
-      options%spin_model = point%spin_model
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
       n = size(stage%normal)
       if (allocated(tangential)) then
