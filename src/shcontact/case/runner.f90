@@ -40,7 +40,7 @@ module shcontact_case_runner
       solve_patch_stage, summarise_stages
    use shcontact_io_config, only: case_config_type, case_point_type, normal_options_of, &
       tangential_options_of, load_mode_force, load_mode_approach, load_mode_vertical, &
-      curvature_reference
+      curvature_reference, table_step_of
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
    implicit none
@@ -139,6 +139,7 @@ contains
       options%l_filt_rail = config%profiles%rail_smoothing
       options%b_min = config%normal%b_min
       options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
+      options%table_step = table_step_of(config)
       call prepare_profiles(setup%wheel, setup%rail, track, options, setup%prepared, error)
       if (allocated(error)) return
 
