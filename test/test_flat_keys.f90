@@ -19,7 +19,7 @@ module test_flat_keys
       wheel_left
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_io_config, only: case_config_type, case_point_type, read_config_text
-   use shcontact_io_config_variables, only: variables, find_variable, k_string, k_real, k_int
+   use shcontact_io_config_variables, only: variables, find_variable, k_string, k_choice, k_real, k_int
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
       config_state, key_use, key_solver, key_state, key_creation, key_app
@@ -123,7 +123,7 @@ contains
          p = index(key, '%')
          group = key(1:p - 1)
          iv = find_variable(group, key(p + 1:))
-         if (variables(iv)%kind == k_string) value = "'"//value//"'"
+         if (any(variables(iv)%kind == [k_string, k_choice])) value = "'"//value//"'"
          ! A group appears once in a case file: its variables on one line.
          if (group == last) then
             text = text(1:len(text) - 3)//' '//key(p + 1:)//' = '//value//' /'//new_line('a')
@@ -668,7 +668,7 @@ contains
          select case (kind)
          case (k_real); w = 'number'
          case (k_int); w = 'whole number'
-         case (k_string); w = 'text'
+         case (k_string, k_choice); w = 'text'
          case default; w = 'logical'
          end select
       end function kind_word
