@@ -444,7 +444,8 @@ contains
       call read_config_text("&normal preset = 'fast' /", 'case.nml', config, lib)
       call check(error, allocated(lib), 'an unknown preset is accepted')
       if (allocated(error)) return
-      call check(error, lib%stat == stat_invalid_input .and. index(lib%message, 'preset') > 0 &
+      call check(error, lib%stat == stat_invalid_input .and. &
+         index(lib%message, '&normal preset') > 0 &
          .and. index(lib%message, 'fast') > 0 .and. &
          index(lib%message, "'default', 'vehicle'") > 0, 'case file: '//lib%message)
       if (allocated(error)) return

@@ -44,7 +44,7 @@ contains
 
       k = choice_code(preset_choices, name)
       if (k == 0) then
-         call fatal_error(error, "preset = '"//trim(name)//"': unknown; expected "// &
+         call fatal_error(error, "preset = '"//trim(name)//"': unknown; expected one of "// &
             choice_list(preset_choices), stat_invalid_input)
          return
       end if
