@@ -126,6 +126,7 @@ extern "C" {
  * normal%n_strips = 100: 2 <= n_strips <= 100000
  * normal%b_min = 0.0001: 1.0e-8 <= b_min <= 1.0 1/mm
  * normal%longitudinal_curvature = 'local': 'local', 'reference'
+ * normal%preset = 'default': 'default', 'vehicle'
  * tangential%method = 'fastsim-sh': 'fastsim-sh', 'fastsim'
  * tangential%bound = 'weighted': 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip',
  *     'clipped'

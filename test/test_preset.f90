@@ -2,7 +2,10 @@
 !> preset sets, that the default preset restores the library's defaults, that a bad name is
 !> rejected without changing anything, and that the vehicle preset's kinematic forces stay
 !> within 0.01 in f = F/(μF_n) of the default's on states of the hunting trajectory (tread and
-!> flange, yaw up to 10 mrad) with the vertical load balanced as tightly.
+!> flange, yaw up to 10 mrad) with the vertical load balanced as tightly. The one option
+!> `&normal preset` (case file, C/F77 key `normal%preset`): the app's run and the keyed handle
+!> give set_preset's forces bit for bit, explicit n_strips/n_elements win over it in any order,
+!> and an unknown name is refused with a message naming the option and the choices.
 module test_preset
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
@@ -18,6 +21,16 @@ module test_preset
    use shcontact_geometry_track, only: track_type
    use test_external_data, only: external_file
    use test_validation, only: read_columns, percentile, skip_without_profiles
+   use shcontact_io_config, only: case_config_type, case_point_type, read_config_text, &
+      normal_options_of, tangential_options_of, table_step_of
+   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_kinematic_case
+   use shcontact_case_result, only: case_result_type, case_summary, case_summary_type
+   use shcontact_api_settings, only: library_setup_type, library_setup, set_config_value, &
+      config_state, config_load
+   use shcontact_api_values, only: kinematic_value_count, kinematic_values
+   use shcontact_api_keyed, only: output_keys
+   use test_flat_api, only: shc_create, shc_destroy, shc_set_option, shc_solve_state, &
+      shc_get_value, shc_errmsg, bitwise_equal
    implicit none
    private
 
@@ -25,6 +38,11 @@ module test_preset
 
    !> Vertical wheel load (N), speed (mm/s) and friction coefficient of the default material.
    real(wp), parameter :: wheel_load = 64.7e3_wp, speed = 30.0e3_wp, mu = 0.3_wp
+   !> A kinematic case (off centre, yawed, moving sideways) as keys and values.
+   character(len=*), parameter :: case_keys(*) = [character(len=24) :: 'kinematics%mode', &
+      'position%t_y', 'kinematics%yaw', 'kinematics%v_lateral', 'output%fields']
+   character(len=*), parameter :: case_values(*) = [character(len=8) :: 'on', '3.0', &
+      '0.004', '20.0', 'none']
 
 contains
 
@@ -36,7 +54,11 @@ contains
          new_unittest('vehicle_preset_options', test_options), &
          new_unittest('unknown_preset_rejected', test_unknown), &
          new_unittest('vehicle_forces_near_default', test_forces), &
-         new_unittest('vehicle_kinematic_sample_vs_exact', test_exact) &
+         new_unittest('vehicle_kinematic_sample_vs_exact', test_exact), &
+         new_unittest('namelist_preset_is_set_preset', test_namelist), &
+         new_unittest('keyed_preset_is_set_preset', test_keyed), &
+         new_unittest('explicit_grid_wins_over_preset', test_precedence), &
+         new_unittest('unknown_preset_option_refused', test_unknown_option) &
          ]
    end subroutine collect_preset
 
@@ -220,5 +242,220 @@ contains
       write (text, '(a,f8.4,a,f8.5,a,f8.5)') 't_y = ', state%y_ws, ' mm, yaw = ', state%yaw, &
          ' rad, |df| = ', df
    end function state_text
+
+   !> The case of [[case_keys]] as case-file text (one line per group), with `&normal preset`
+   !> when `preset` /= ''.
+   function case_text(preset) result(text)
+      character(len=*), intent(in) :: preset
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: group
+      integer :: i, k
+      text = ''
+      do i = 1, size(case_keys)
+         group = case_keys(i)(1:index(case_keys(i), '%') - 1)
+         if (index(text, '&'//group//' ') > 0) cycle
+         text = text//'&'//group
+         do k = i, size(case_keys)
+            if (index(case_keys(k), group//'%') /= 1) cycle
+            text = text//' '//trim(case_keys(k)(len(group) + 2:))//' = '// &
+               quoted(case_keys(k), case_values(k))
+         end do
+         text = text//' /'//new_line('a')
+      end do
+      if (len(preset) > 0) text = text//"&normal preset = '"//preset//"' /"
+   end function case_text
+
+   !> A choice value quoted, a number as it is.
+   function quoted(key, value) result(text)
+      character(len=*), intent(in) :: key, value
+      character(len=:), allocatable :: text
+      if (key == 'kinematics%mode' .or. key == 'output%fields') then
+         text = "'"//trim(value)//"'"
+      else
+         text = trim(value)
+      end if
+   end function quoted
+
+   !> The library's kinematic result of the case with `set_preset(solver, 'vehicle')` on a
+   !> solver with the library's defaults, and its configuration (no preset) for state and load.
+   subroutine library_vehicle(result, config, error)
+      type(contact_result_type), intent(out) :: result
+      type(case_config_type), intent(out) :: config
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(case_point_type) :: p
+      type(lib_error), allocatable :: lib
+      call read_config_text(case_text(''), 'case', config, lib)
+      if (.not. allocated(lib)) call solver%init('builtin:S1002', 'builtin:UIC60', lib)
+      if (.not. allocated(lib)) call set_preset(solver, 'vehicle', lib)
+      if (.not. allocated(lib)) then
+         p = config%case_point(1)
+         call solver%solve_kinematic(config_state(p), config_load(config, p), result, lib)
+      end if
+      if (allocated(lib)) call test_failed(error, 'library with set_preset: '//lib%message)
+   end subroutine library_vehicle
+
+   !> The summary values compared bit for bit.
+   pure function summary_values(s) result(v)
+      type(case_summary_type), intent(in) :: s
+      real(wp) :: v(10)
+      v = [s%fn_total, s%fx_total, s%fy_total, s%fz_total, s%fn, s%fx, s%fy, s%mz, s%area, &
+         s%p_max]
+   end function summary_values
+
+   !> The app's run of a case file with `&normal preset = 'vehicle'` (prepare_run,
+   !> solve_kinematic_case) gives the forces of the library's `set_preset(solver, 'vehicle')` bit
+   !> for bit, and differs from the same case without the preset (the option acts).
+   subroutine test_namelist(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_result_type) :: lib_result
+      type(case_config_type) :: config
+      type(case_result_type) :: vehicle, default
+      real(wp) :: expected(10)
+
+      call library_vehicle(lib_result, config, error)
+      if (allocated(error)) return
+      expected = summary_values(case_summary(lib_result))
+      call app_case('vehicle', vehicle, error)
+      if (allocated(error)) return
+      call app_case('', default, error)
+      if (allocated(error)) return
+      call check(error, bitwise_equal(summary_values(vehicle%summary), expected), &
+         'the app with &normal preset differs from set_preset')
+      if (allocated(error)) return
+      call check(error, .not. bitwise_equal(summary_values(default%summary), expected), &
+         'the preset changes nothing')
+   end subroutine test_namelist
+
+   !> One kinematic case of the app (status 0 expected).
+   subroutine app_case(preset, result, error)
+      character(len=*), intent(in) :: preset
+      type(case_result_type), intent(out) :: result
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: config
+      type(run_setup_type) :: setup
+      type(contact_solver_type) :: solver
+      type(lib_error), allocatable :: lib
+      call read_config_text(case_text(preset), 'case', config, lib)
+      if (.not. allocated(lib)) call prepare_run(config, setup, lib)
+      if (allocated(lib)) then
+         call test_failed(error, 'app, preset "'//preset//'": '//lib%message)
+         return
+      end if
+      solver = setup%solver
+      call solve_kinematic_case(setup, config%case_point(1), solver, result, .false.)
+      call check(error, result%summary%stat, 0, 'app case, preset "'//preset//'"')
+   end subroutine app_case
+
+   !> The Fortran 77 keys (SHC_SET_OPTION 'normal%preset', the C API's keyed path beneath)
+   !> give every value of the kinematic layout of `set_preset` bit for bit.
+   subroutine test_keyed(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_result_type) :: lib_result
+      type(case_config_type) :: config
+      real(wp) :: expected(kinematic_value_count), got(kinematic_value_count)
+      character(len=512) :: msg
+      integer :: ih, istat, i, j
+
+      call library_vehicle(lib_result, config, error)
+      if (allocated(error)) return
+      call kinematic_values(lib_result, expected)
+      got = 0.0_wp
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      do i = 1, size(case_keys)
+         if (istat == 0) call shc_set_option(ih, trim(case_keys(i)), trim(case_values(i)), istat)
+      end do
+      if (istat == 0) call shc_set_option(ih, 'normal%preset', 'vehicle', istat)
+      if (istat == 0) call shc_solve_state(ih, istat)
+      do i = 1, size(output_keys)
+         if (istat == 0) call shc_get_value(ih, trim(output_keys(i)%name), 0, &
+            got(output_keys(i)%index), istat)
+      end do
+      call shc_errmsg(ih, msg)
+      call shc_destroy(ih, j)
+      call check(error, istat == 0 .and. bitwise_equal(got, expected), &
+         'SHC_SET_OPTION normal%preset differs from set_preset: '//trim(msg))
+   end subroutine test_keyed
+
+   !> An explicit `&normal n_strips` or `&tangential n_elements` wins over the preset, which
+   !> still sets the rest: in a case file, and through the keys in either order; 'default'
+   !> gives the library's defaults back.
+   subroutine test_precedence(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: config, a, b
+      type(library_setup_type) :: sa, sb
+      type(lib_error), allocatable :: lib
+
+      call read_config_text("&normal preset = 'vehicle' n_strips = 80 /", 'case', config, lib)
+      call check(error, .not. allocated(lib), 'case file')
+      if (allocated(error)) return
+      call check(error, grid_is(config, 80, 40, 0.05_wp) .and. config%normal%n_strips == 80 &
+         .and. config%tangential%n_elements == 40, 'case file: n_strips 80 given, 40 elements '// &
+         'and 0.05 mm tables of the preset')
+      if (allocated(error)) return
+      call read_config_text("&tangential n_elements = 30 /"//new_line('a')// &
+         "&normal preset = 'vehicle' /", 'case', config, lib)
+      call check(error, .not. allocated(lib), 'case file')
+      if (allocated(error)) return
+      call check(error, grid_is(config, 60, 30, 0.05_wp), 'n_elements 30 given')
+      if (allocated(error)) return
+      call set_config_value(a, 'normal%n_strips', '80', lib)
+      if (.not. allocated(lib)) call set_config_value(a, 'normal%preset', 'vehicle', lib)
+      if (.not. allocated(lib)) call set_config_value(b, 'normal%preset', 'Vehicle', lib)
+      if (.not. allocated(lib)) call set_config_value(b, 'normal%n_strips', '80', lib)
+      if (.not. allocated(lib)) call library_setup(a, sa, lib)
+      if (.not. allocated(lib)) call library_setup(b, sb, lib)
+      call check(error, .not. allocated(lib), 'keys')
+      if (allocated(error)) return
+      call check(error, sa%normal%n_strips == 80 .and. sb%normal%n_strips == 80 .and. &
+         sa%tangential%n_elements == 40 .and. sb%tangential%n_elements == 40 .and. &
+         sa%contact_options%table_step == 0.05_wp .and. &
+         sb%contact_options%table_step == 0.05_wp, 'keys: the explicit n_strips wins in '// &
+         'either order')
+      if (allocated(error)) return
+      call set_config_value(b, 'normal%preset', 'default', lib)
+      call check(error, .not. allocated(lib), 'preset default')
+      if (allocated(error)) return
+      call check(error, grid_is(b, 80, 50, 0.025_wp), "keys: preset 'default' after 'vehicle'")
+   end subroutine test_precedence
+
+   !> The grid a configuration gives the library.
+   logical function grid_is(config, n_strips, n_elements, step)
+      type(case_config_type), intent(in) :: config
+      integer, intent(in) :: n_strips, n_elements
+      real(wp), intent(in) :: step
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+      normal = normal_options_of(config)
+      tangential = tangential_options_of(config)
+      grid_is = normal%n_strips == n_strips .and. tangential%n_elements == n_elements .and. &
+         table_step_of(config) == step
+   end function grid_is
+
+   !> An unknown preset, in a case file and as a key: status 2 and a message naming the option
+   !> and the choices.
+   subroutine test_unknown_option(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: config
+      type(lib_error), allocatable :: lib
+      character(len=512) :: msg
+      integer :: ih, istat, j
+
+      call read_config_text("&normal preset = 'fast' /", 'case.nml', config, lib)
+      call check(error, allocated(lib), 'an unknown preset is accepted')
+      if (allocated(error)) return
+      call check(error, lib%stat == stat_invalid_input .and. &
+         index(lib%message, '&normal preset') > 0 &
+         .and. index(lib%message, 'fast') > 0 .and. &
+         index(lib%message, "'default', 'vehicle'") > 0, 'case file: '//lib%message)
+      if (allocated(error)) return
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      if (istat == 0) call shc_set_option(ih, 'normal%preset', 'fast', istat)
+      call shc_errmsg(ih, msg)
+      call shc_destroy(ih, j)
+      call check(error, istat == stat_invalid_input .and. &
+         index(msg, 'normal%preset') > 0 .and. index(msg, "'default', 'vehicle'") > 0, &
+         'F77 key: '//trim(msg))
+   end subroutine test_unknown_option
 
 end module test_preset

@@ -168,3 +168,18 @@ def test_material_track_and_options():
         assert c.solve(T_Y, **HEADLINE)["fx"] != base["fx"]
     with pytest.raises(TypeError, match="unknown keyword"):
         shcontact.Contact(track={"gage": 1435.0})
+
+
+def test_preset_option():
+    """The vehicle preset is one option key (doc/kinematics.md, "The vehicle preset"): it
+    changes the kinematic forces (fewer strips and elements) by little; an unknown preset names
+    the option and the choices."""
+    with shcontact.Contact() as d, shcontact.Contact(options={"normal%preset": "vehicle"}) as v:
+        a = d.solve_kinematic(4.733, **KINEMATIC)
+        b = v.solve_kinematic(4.733, **KINEMATIC)
+        assert a["status"] == 0 and b["status"] == 0
+        assert b["fx"] != a["fx"]
+        assert abs(b["fx_norm"] - a["fx_norm"]) <= 0.01 and abs(b["fy_norm"] - a["fy_norm"]) <= 0.01
+        with pytest.raises(shcontact.ShcontactError, match="normal%preset.*'default', 'vehicle'") as info:
+            v.set_option("normal%preset", "fast")
+        assert info.value.status == layout.STATUS["invalid_input"]

@@ -1,5 +1,7 @@
 !> Named option presets of the contact solver (issue 25): one choice that sets the grid of the
-!> normal and tangential problems and the spacing of the strip tables together.
+!> normal and tangential problems and the spacing of the strip tables together. The presets
+!> and their values are those of the registry shcontact_pipeline_preset, which the case file's
+!> `&normal preset` (and so the C and Fortran 77 key `normal%preset`) applies too.
 !>
 !> * `default`: the library's defaults, 100 strips × 50 elements, tables every 0.025 mm.
 !> * `vehicle`: for the kinematic call of a vehicle code (doc/kinematics.md, "The vehicle
@@ -7,27 +9,24 @@
 !>   forces stay within 0.01 of the default in f = F/(μF_n) on the benchmark's trajectories
 !>   (doc/performance.md) and within doc/validation.md's accuracy goals.
 !>
-!> Only the fields listed in [[preset_values]] change; every other option keeps its value.
+!> Only n_strips, n_elements and table_step change; every other option keeps its value. A
+!> call sets them whatever they were: options set after it (`set_options`) win.
 module shcontact_api_preset
-   use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_core_strings, only: to_lower
+   use shcontact_core_choices, only: choice_code, choice_list
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_pipeline_preset, only: preset_choices, preset_strips, preset_elements, &
+      preset_table_step
    use shcontact_api_solver, only: contact_solver_type
    implicit none
    private
 
    public :: preset_names, apply_preset, set_preset
 
-   !> The presets, in the order of [[preset_values]].
-   character(len=*), parameter :: preset_names(2) = [character(len=7) :: 'default', 'vehicle']
-
-   !> Strips n_y, elements per strip n_x and strip-table spacing (mm) of each preset.
-   integer, parameter :: preset_strips(2) = [100, 60]
-   integer, parameter :: preset_elements(2) = [50, 40]
-   real(wp), parameter :: preset_table_step(2) = [0.025_wp, 0.05_wp]
+   !> The presets' names ('default', 'vehicle').
+   character(len=*), parameter :: preset_names(*) = preset_choices%name
 
 contains
 
@@ -43,10 +42,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: k
 
-      k = preset_index(name)
+      k = choice_code(preset_choices, name)
       if (k == 0) then
-         call fatal_error(error, "preset = '"//trim(name)//"': expected 'default' or "// &
-            "'vehicle'", stat_invalid_input)
+         call fatal_error(error, "preset = '"//trim(name)//"': unknown; expected one of "// &
+            choice_list(preset_choices), stat_invalid_input)
          return
       end if
       normal%n_strips = preset_strips(k)
@@ -75,14 +74,5 @@ contains
       if (allocated(error)) return
       call solver%set_options(error, normal=normal, tangential=tangential)
    end subroutine set_preset
-
-   !> Index of a preset in [[preset_names]], 0 if unknown.
-   pure integer function preset_index(name) result(k)
-      character(len=*), intent(in) :: name
-      do k = 1, size(preset_names)
-         if (to_lower(trim(adjustl(name))) == trim(preset_names(k))) return
-      end do
-      k = 0
-   end function preset_index
 
 end module shcontact_api_preset

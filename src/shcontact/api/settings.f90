@@ -22,7 +22,7 @@ module shcontact_api_settings
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_io_config, only: case_config_type, case_point_type, apply_override, &
       normal_options_of, tangential_options_of, load_mode_force, load_mode_approach, &
-      curvature_reference
+      curvature_reference, table_step_of
    use shcontact_io_config_types, only: set_origin
    use shcontact_io_config_variables, only: variables, find_variable, &
       join_words, k_real, k_real_list
@@ -83,6 +83,7 @@ contains
       setup%contact_options%b_min = config%normal%b_min
       setup%contact_options%a_reference_normal = &
          config%normal%longitudinal_curvature == curvature_reference
+      setup%contact_options%table_step = table_step_of(config)
       setup%side = config%track%side
       setup%normal = normal_options_of(config)
       setup%tangential = tangential_options_of(config)

@@ -29,7 +29,7 @@ module shcontact_io_config
       sweep_axis_names, axis_geometry, axis_load, axis_tangential, case_point_value, &
       case_point_label, is_kinematic_input
    use shcontact_io_config_types, only: case_config_type, normal_options_of, &
-      tangential_options_of
+      tangential_options_of, table_step_of
    use shcontact_io_config_choices, only: load_mode_force, load_mode_approach, &
       load_mode_vertical, curvature_reference, precision_single, precision_double
    use shcontact_io_config_assign, only: read_group_variable, stat_unknown_choice
@@ -46,7 +46,7 @@ module shcontact_io_config
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
    public :: path_len, name_len, max_sweep_values
    public :: case_point_value, case_point_label, is_kinematic_input
-   public :: normal_options_of, tangential_options_of, read_group_variable, stat_unknown_choice
+   public :: normal_options_of, tangential_options_of, table_step_of, read_group_variable, stat_unknown_choice
    public :: load_mode_force, load_mode_approach, load_mode_vertical, curvature_reference
    public :: precision_single, precision_double
    public :: max_cases, max_grid_cells

@@ -17,6 +17,8 @@ module shcontact_io_config_types
    use shcontact_tangential_option_registry, only: default_tangential_method => default_method, &
       default_bound, default_spin_model, default_spin_flexibility, default_correction, &
       default_n_elements
+   use shcontact_pipeline_preset, only: default_preset, preset_strips, preset_elements, &
+      preset_table_step
    use shcontact_io_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
       axis_index, is_kinematic_input
    implicit none
@@ -26,7 +28,7 @@ module shcontact_io_config_types
    public :: kinematics_config_type, load_config_type, creepage_config_type, normal_config_type
    public :: tangential_config_type, output_config_type
    public :: set_origin, origin, sweep_origin, choice_value, set_choice_value
-   public :: normal_options_of, tangential_options_of
+   public :: normal_options_of, tangential_options_of, table_step_of
 
    !> `&profiles`: which profiles, read how.
    type :: profiles_config_type
@@ -120,6 +122,9 @@ module shcontact_io_config_types
       real(wp) :: b_min = 1.0e-4_wp
       !> `curvature_local` (cos γ(y)) or `curvature_reference` (cos γ₀) in A(y).
       integer :: longitudinal_curvature = curvature_local
+      !> `preset_*` of shcontact_pipeline_preset: sets n_strips, tangential n_elements (where
+      !> the case does not give them) and the strip-table spacing.
+      integer :: preset = default_preset
    end type normal_config_type
 
    !> `&tangential`: the tangential solver.
@@ -273,14 +278,24 @@ contains
    end function wants_field
 
    !> The library's normal options of a configuration (`&normal`; b_min and the longitudinal
-   !> curvature are options of the contact search).
+   !> curvature are options of the contact search). `&normal preset` gives n_strips unless the
+   !> case gives it (an explicit value wins, doc/app.md).
    pure function normal_options_of(config) result(options)
       type(case_config_type), intent(in) :: config
       type(normal_options_type) :: options
       options = normal_options_type(method=config%normal%method, &
          reduction=config%normal%reduction, epsilon=config%normal%epsilon, &
          n_strips=config%normal%n_strips)
+      if (origin(config, 'normal%n_strips') == 'default') &
+         options%n_strips = preset_strips(config%normal%preset)
    end function normal_options_of
+
+   !> The strip-table spacing (mm) of the contact search (`contact_options_type%table_step`):
+   !> that of `&normal preset`.
+   pure real(wp) function table_step_of(config) result(step)
+      type(case_config_type), intent(in) :: config
+      step = preset_table_step(config%normal%preset)
+   end function table_step_of
 
    !> The library's tangential options of a configuration (`&tangential`); the bound and the
    !> spin model of a case may come from a sweep (case_point), the fields from `&output`.
@@ -291,6 +306,8 @@ contains
       options%bound = config%tangential%bound
       options%spin_model = config%tangential%spin_model
       options%n_elements = config%tangential%n_elements
+      if (origin(config, 'tangential%n_elements') == 'default') &
+         options%n_elements = preset_elements(config%normal%preset)
       options%spin_flexibility = config%tangential%spin_flexibility
       options%correction = config%tangential%correction
    end function tangential_options_of
@@ -308,6 +325,7 @@ contains
       case ('normal%method'); code = config%normal%method
       case ('normal%reduction'); code = config%normal%reduction
       case ('normal%longitudinal_curvature'); code = config%normal%longitudinal_curvature
+      case ('normal%preset'); code = config%normal%preset
       case ('tangential%method'); code = config%tangential%method
       case ('tangential%bound'); code = config%tangential%bound
       case ('tangential%spin_model'); code = config%tangential%spin_model
@@ -333,6 +351,7 @@ contains
       case ('normal%method'); config%normal%method = code
       case ('normal%reduction'); config%normal%reduction = code
       case ('normal%longitudinal_curvature'); config%normal%longitudinal_curvature = code
+      case ('normal%preset'); config%normal%preset = code
       case ('tangential%method'); config%tangential%method = code
       case ('tangential%bound'); config%tangential%bound = code
       case ('tangential%spin_model'); config%tangential%spin_model = code

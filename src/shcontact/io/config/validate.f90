@@ -14,7 +14,10 @@ module shcontact_io_config_validate
    use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases
    use shcontact_io_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
       is_kinematic_input
-   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin, choice_value
+   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin, choice_value, &
+      normal_options_of, tangential_options_of
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_io_config_variables, only: variables, k_choice
    use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list
    use shcontact_io_config_variables, only: variable_choices
@@ -119,6 +122,7 @@ contains
          if (allocated(error)) return
          call check_codes(c, error)
          if (allocated(error)) return
+         call resolve_preset(c)
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, error)
          if (allocated(error)) return
          call check_grid_size(c, error)
@@ -147,6 +151,20 @@ contains
       if (profile_file_format(trim(config%profiles%wheel), trim(config%profiles%wheel_format)) &
           == 'miniprof') config%track%flange_back_position = 0.0_wp
    end subroutine resolve_wheel_origin
+
+   !> The grid of `&normal preset` where the case does not give n_strips or n_elements, so that
+   !> the grid check, `--check` and the resolved namelist show the grid that is solved (the
+   !> library's options come from normal_options_of and tangential_options_of, which apply the
+   !> same rule).
+   pure subroutine resolve_preset(config)
+      type(case_config_type), intent(inout) :: config
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+      normal = normal_options_of(config)
+      tangential = tangential_options_of(config)
+      config%normal%n_strips = normal%n_strips
+      config%tangential%n_elements = tangential%n_elements
+   end subroutine resolve_preset
 
    !> n_strips × n_elements within [[max_grid_cells]], checked before anything is allocated.
    subroutine check_grid_size(config, error)

@@ -11,6 +11,7 @@ module shcontact_io_config_variables
       reduction_choices
    use shcontact_tangential_option_registry, only: tangential_methods => method_choices, &
       bound_choices, spin_model_choices, spin_flexibility_choices, correction_choices
+   use shcontact_pipeline_preset, only: preset_choices
    use shcontact_io_config_choices, only: side_choices, kinematics_mode_choices, &
       load_mode_choices, curvature_choices, precision_choices, sweep_mode_choices, &
       format_choices, mirror_choices, field_choices
@@ -114,6 +115,9 @@ module shcontact_io_config_variables
       'smallest lateral relative curvature B (concave gap curvature is clamped to it)'), &
       variable_info_type('normal', 'longitudinal_curvature', k_choice, '', &
       'contact angle of A(y) = cos(gamma)/(2 r_w)'), &
+      variable_info_type('normal', 'preset', k_choice, '', &
+      'grid and strip tables at once: n_strips, tangential n_elements (unless given), '// &
+      'table spacing'), &
       variable_info_type('tangential', 'method', k_choice, '', 'tangential contact model'), &
       variable_info_type('tangential', 'bound', k_choice, '', &
       'traction bound (doc/theory.md decision 9)'), &
@@ -209,7 +213,8 @@ module shcontact_io_config_variables
       'kinematics%pitch_rate', 'material%shear_modulus', 'material%poisson', 'material%friction', &
       'load%mode', 'load%normal_force', 'load%approach', 'load%vertical_force', 'creepage%nu_x', &
       'creepage%nu_y', 'creepage%phi', 'normal%method', 'normal%reduction', 'normal%epsilon', &
-      'normal%n_strips', 'normal%b_min', 'normal%longitudinal_curvature', 'tangential%method', &
+      'normal%n_strips', 'normal%b_min', 'normal%longitudinal_curvature', 'normal%preset', &
+      'tangential%method', &
       'tangential%bound', 'tangential%spin_model', 'tangential%spin_flexibility', &
       'tangential%correction', 'tangential%n_elements']
 
@@ -257,6 +262,8 @@ contains
          choices = reduction_choices
       case ('normal%longitudinal_curvature')
          choices = curvature_choices
+      case ('normal%preset')
+         choices = preset_choices
       case ('tangential%method')
          choices = tangential_methods
       case ('tangential%bound', 'sweep%bound')
