@@ -23,8 +23,8 @@
 !>   most of its load and keep its full length (its pressure then too flat in x), and load pushed
 !>   to the end of a long plateau (Y_WS = 1 mm) piled up on the last strips instead of spreading.
 !>   The lengths make the problem nonlinear; [[consistent_lengths]] solves it by a secant
-!>   iteration on ln a_i, with the kernel linear in ln a_i about the local-Hertz lengths and the
-!>   linear systems solved by chord steps on one factorisation. (A plain update a ← c P
+!>   iteration on ln a_i, with the kernel linear in ln a_i about the local-Hertz lengths, run to
+!>   its fixed point with the linear system solved at every step. (A plain update a ← c P
 !>   alternates between two lengths on a narrow patch, where the displacement fixes the load per
 !>   unit width P a rather than P: that was why an earlier attempt "lengthened without bound".)
 !>
@@ -60,13 +60,14 @@ module shcontact_normal_coupling
 
    public :: couple_strips, couple_patches, max_groups, max_patches
 
-   !> Length updates of [[consistent_lengths]]: a fixed number, so that the result is a smooth
-   !> function of the strips (a stopping test would make it jump where the count changes: a
-   !> wheel in motion, the short and full tables of the kinematic call). Three steps give every
-   !> statistic of doc/validation.md Table 10 and Table 11 within 0.002 of the converged
-   !> iteration (with a stopping test at 0.1 % in the lengths), but Y_WS = 1 mm's P80 |Δf_x|
-   !> then goes from 0.019 to 0.021, over the issue's 0.02: four.
-   integer, parameter :: length_iterations = 4
+   !> Most length updates of [[consistent_lengths]], and the change of ln a below which the
+   !> lengths have converged. The iteration is run to its fixed point (each step divides the error
+   !> of ln a by about 3, some 20 steps), so the result is a smooth function of the strips: a
+   !> fixed number of steps (four, before issue 25) left an iterate of an iteration that need not
+   !> have converged, and at flange states (a wide conformal patch) the chord steps on the first
+   !> factorisation diverged, so the loads jumped from one approach to the next.
+   integer, parameter :: max_length_iterations = 60
+   real(wp), parameter :: length_tolerance = 1.0e-10_wp
    !> The sensitivity d ln P/d ln a assumed by the length steps: −1/2, halfway between a narrow
    !> patch (−1) and a wide one (0), so that every step divides the error of ln a by at least 3
    !> ([[consistent_lengths]]).
@@ -75,12 +76,12 @@ module shcontact_normal_coupling
    !> ([[hold_negative_groups]]); beyond them the system is factorised again without them.
    integer, parameter :: max_held = 8
    !> Peak, relative to the largest group peak of the first solve, below which a group's
-   !> length step is damped (weight peak/(entry_weight peak_max)): it makes the loads
-   !> continuous where a group enters the contact ([[consistent_lengths]]).
+   !> length step is damped (weight peak/(entry_weight peak_max)): the step in ln a of a group
+   !> with a tiny peak tends to −∞. The fixed point is the same ([[consistent_lengths]]).
    real(wp), parameter :: entry_weight = 1.0e-3_wp
 
    !> The factorised linear system of the groups in contact ([[solve_groups]]): the peaks and
-   !> the shift Δ solve it, and [[chord_step]] reuses its LU factors as the lengths change.
+   !> the shift Δ solve it.
    type :: group_system_type
       !> Number of groups in contact and their indices in the set.
       integer :: mg
@@ -90,12 +91,6 @@ module shcontact_normal_coupling
       integer :: pivots(max_total + 1)
       !> The solution: peaks P of the groups in contact (MPa), then Δ (mm).
       real(wp) :: x(max_total + 1)
-      !> Kernel K₀ and its slope S of the groups in contact (compact), their gaps δ − g (mm)
-      !> and cos γ of their patches.
-      real(wp) :: kern(max_total, max_total), slope(max_total, max_total)
-      real(wp) :: gap(max_total), cos_contact(max_total)
-      !> How a vertical shift Δ of the wheel reaches each group: cos γ (1 − c) (vertical_tilt).
-      real(wp) :: shift_share(max_total)
       !> Groups of the factorised system held out of contact without a new factorisation
       !> ([[hold_negative_groups]]): their number, their positions in idx, the columns A⁻¹e_h of
       !> the factorised matrix A, and the LU factors of the capacitance matrix C = (A⁻¹)_HH.
@@ -303,14 +298,14 @@ contains
    !> alone (both grow as √δ), and so does a slice y = const of a Hertz ellipse, a(y)/p(0, y) =
    !> a/p₀. The coupling moves load between the strips; their lengths follow it.
    !>
-   !> The fixed point a = c P(a) is found in ln a, group by group, by [[length_iterations]]
-   !> steps (ln(c P) − ln a)/(1 − s) with the assumed sensitivity s = d ln P/d ln a =
+   !> The fixed point a = c P(a) is found in ln a, group by group, by steps
+   !> (ln(c P) − ln a)/(1 − s) with the assumed sensitivity s = d ln P/d ln a =
    !> [[length_sensitivity]], halfway between −1 (a narrow patch, where the displacement fixes the
    !> load per unit width P a, and a ← c P would alternate between two lengths) and 0 (a wide
    !> one, where it fixes P). The kernel is taken linear in ln a about the local-Hertz lengths
-   !> ([[fill_kernel]]'s slope), and the peaks at new lengths come from chord steps on the first
-   !> factorisation ([[chord_step]]); the loads at the final lengths are then solved exactly. The
-   !> strips' lengths follow their loads in [[scale_patch]].
+   !> ([[fill_kernel]]'s slope), and the peaks at new lengths are solved exactly (the set in
+   !> contact checked again), until the steps fall below [[length_tolerance]]: the fixed point,
+   !> not an iterate. The strips' lengths follow their loads in [[scale_patch]].
    pure subroutine consistent_lengths(set, e_star, error, shift)
       type(group_set_type), intent(inout) :: set
       real(wp), intent(in) :: e_star
@@ -321,7 +316,7 @@ contains
          weight(max_patches, max_patches)
       real(wp), dimension(max_total) :: ac_fill, log_a_fill, stretch_log
       type(group_system_type) :: system
-      real(wp) :: peak, log_a, log_peak, step, take, peak_ref
+      real(wp) :: peak, log_a, log_peak, step, take, peak_ref, largest
       integer :: it, g, n
 
       n = set%n
@@ -342,62 +337,30 @@ contains
          peak_ref = max(peak_ref, set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g)))
       end do
       peak_ref = max(entry_weight*peak_ref, tiny(1.0_wp))
-      do it = 1, length_iterations
+      do it = 1, max_length_iterations
          ! Loops without branches over the groups (their log and exp vectorise): a group
          ! without a positive peak takes no step (take = 0).
+         largest = 0.0_wp
          do g = 1, n
             peak = set%ratio(g)*set%local(g)/(0.5_wp*pi*set%ac(g)*set%width(g))
             take = min(1.0_wp, max(peak, 0.0_wp)/peak_ref)
             log_a = log_a_fill(g) + stretch_log(g)
             log_peak = log(set%length_per_peak(g)*max(peak, tiny(1.0_wp)))
-            step = (log_peak - log_a)/(1.0_wp - length_sensitivity)
-            stretch_log(g) = stretch_log(g) + take*step
+            step = take*(log_peak - log_a)/(1.0_wp - length_sensitivity)
+            stretch_log(g) = stretch_log(g) + step
+            largest = max(largest, abs(step))
          end do
+         if (largest <= length_tolerance) exit
          do g = 1, n
             set%ac(g) = ac_fill(g)*exp(stretch_log(g))
          end do
-         ! The peaks at the new lengths by one chord step on the first factorisation (a smooth
-         ! map of the strips: no decision is taken inside the iteration).
-         call chord_step(set, stretch_log, system)
+         ! The peaks at the new lengths, solved exactly with the set in contact checked again
+         ! (chord steps on the first factorisation diverged where the lengths change much).
+         call solve_groups(set, kern, slope, stretch_log, system, error)
+         if (allocated(error)) return
       end do
-      ! The loads at the final lengths, solved exactly with the set in contact checked again
-      ! (chord steps alone leave the load balance off by ~1e-7, and the Hertz check by 2 %).
-      call solve_groups(set, kern, slope, stretch_log, system, error)
-      if (allocated(error)) return
       if (present(shift)) shift = system%x(system%mg + 1)
    end subroutine consistent_lengths
-
-   !> One chord step of the system at new lengths on the factors of the last [[solve_groups]]:
-   !> x ← x + LU⁻¹ (b − M x), with M at the lengths of set%ac (the kernel K₀ + S ln(a/a_fill)
-   !> of the groups in contact, kept compact in `system`). set%ratio follows the new peaks.
-   pure subroutine chord_step(set, stretch_log, system)
-      type(group_set_type), intent(inout) :: set
-      !> ln(a/a_fill) of every group.
-      real(wp), intent(in) :: stretch_log(:)
-      type(group_system_type), intent(inout) :: system
-      real(wp) :: r(max_total + 1), weighted(max_total), vertical
-      integer :: i, mg
-
-      mg = system%mg
-      if (mg < 1) return
-      vertical = sum(set%patch_load(1:set%n_patches)*set%cos_gamma(1:set%n_patches))
-      do i = 1, mg
-         weighted(i) = stretch_log(system%idx(i))*system%x(i)
-      end do
-      r(1:mg) = system%gap(1:mg) + system%shift_share(1:mg)*system%x(mg + 1)
-      ! Column by column (no temporary array, contiguous access).
-      do i = 1, mg
-         r(1:mg) = r(1:mg) - system%kern(1:mg, i)*system%x(i) - system%slope(1:mg, i)*weighted(i)
-      end do
-      r(mg + 1) = vertical
-      do i = 1, mg
-         r(mg + 1) = r(mg + 1) - 0.5_wp*pi*set%ac(system%idx(i))*set%width(system%idx(i))* &
-            system%cos_contact(i)*system%x(i)
-      end do
-      call constrained_solve(system, r)
-      system%x(1:mg + 1) = system%x(1:mg + 1) + r(1:mg + 1)
-      call set_ratios(set, system)
-   end subroutine chord_step
 
    !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in
    !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set, started
@@ -412,7 +375,7 @@ contains
       real(wp), intent(in) :: kern(:, :), slope(:, :), stretch_log(:)
       type(group_system_type), intent(inout) :: system
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: vertical
+      real(wp) :: vertical, cos_contact
       logical :: readmitted, held_all
       integer :: n, i, j, mg, pass
 
@@ -431,17 +394,13 @@ contains
          associate (idx => system%idx, kmat => system%lu, rhs => system%x)
             do i = 1, mg
                do j = 1, mg
-                  system%kern(j, i) = kern(idx(j), idx(i))
-                  system%slope(j, i) = slope(idx(j), idx(i))
-                  kmat(j, i) = system%kern(j, i) + system%slope(j, i)*stretch_log(idx(i))
+                  kmat(j, i) = kern(idx(j), idx(i)) + slope(idx(j), idx(i))*stretch_log(idx(i))
                end do
-               system%gap(i) = set%gc(idx(i))
-               system%cos_contact(i) = set%cos_gamma(set%patch(idx(i)))
-               kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))* &
-                  system%cos_contact(i)
-               system%shift_share(i) = system%cos_contact(i)*set%wc(idx(i))
-               kmat(i, mg + 1) = -system%shift_share(i)
-               rhs(i) = system%gap(i)
+               cos_contact = set%cos_gamma(set%patch(idx(i)))
+               kmat(mg + 1, i) = 0.5_wp*pi*set%ac(idx(i))*set%width(idx(i))*cos_contact
+               ! How a vertical shift Δ of the wheel reaches the group: cos γ (1 − c).
+               kmat(i, mg + 1) = -cos_contact*set%wc(idx(i))
+               rhs(i) = set%gc(idx(i))
             end do
             kmat(mg + 1, mg + 1) = 0.0_wp
             rhs(mg + 1) = vertical
@@ -516,24 +475,6 @@ contains
          call subtract_held(mg, system%held(1:nh), system%inverse_columns, w(1:nh), system%x)
       end do
    end subroutine hold_negative_groups
-
-   !> Solve with the system's factors and its held groups ([[hold_negative_groups]]): v ← the
-   !> solution of the system without them for the right-hand side v (their entries of v are
-   !> free: their equations are relaxed).
-   pure subroutine constrained_solve(system, v)
-      type(group_system_type), intent(in) :: system
-      real(wp), intent(inout), contiguous :: v(:)
-      real(wp) :: w(max_held)
-      integer :: k, nh
-      call solve_factored_leading(system%mg + 1, system%lu, system%pivots, v)
-      nh = system%n_held
-      if (nh < 1) return
-      do k = 1, nh
-         w(k) = v(system%held(k))
-      end do
-      call solve_factored_leading(nh, system%capacitance, system%capacitance_pivots, w)
-      call subtract_held(system%mg, system%held(1:nh), system%inverse_columns, w(1:nh), v)
-   end subroutine constrained_solve
 
    !> v ← v − A⁻¹E_H w over the first mg + 1 entries, with the held entries set to 0 exactly.
    pure subroutine subtract_held(mg, held, inverse_columns, w, v)

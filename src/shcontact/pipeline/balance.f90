@@ -22,11 +22,6 @@ module shcontact_pipeline_balance
    !> (0.65 N of 64.7 kN), within at most max_vertical_iterations solutions.
    real(wp), parameter :: vertical_rtol = 1.0e-5_wp
    integer, parameter :: max_vertical_iterations = 30
-   !> Where the vertical force of a kinematic call jumps across the load as a function of the
-   !> vertical approach (a narrow discontinuity of the coupled normal reduction; the bracket
-   !> closes to round-off on it), the side nearer the load is accepted if it is within this
-   !> relative tolerance (doc/kinematics.md); a larger jump is an error (stat_numerical).
-   real(wp), parameter :: jump_rtol = 1.0e-3_wp
 
 contains
 
@@ -71,9 +66,11 @@ contains
    !> come from the geometry: the normal problem alone carrying F_z, then carrying F_z²/C (the
    !> tangential share taken proportional to the load). No state of an earlier call is used.
    !>
-   !> Where C(Δz) jumps across F_z (a narrow discontinuity of the `coupled` normal reduction) the
-   !> bracket closes to round-off on the jump; the side nearer F_z is then accepted if it is
-   !> within jump_rtol, otherwise the call fails with stat_numerical.
+   !> C(Δz) is continuous (the normal force of a contact is a continuous function of the
+   !> approach, and so are the tangential forces at fixed creepages; doc/kinematics.md), so the
+   !> bracket always holds a root. Should the bracket close to round-off without meeting
+   !> vertical_rtol (C jumping across F_z, a defect of the model), the call fails with
+   !> stat_numerical and names the bracket: no state outside the tolerance is returned.
    !>
    !> If C stays below F_z up to the end of the strip tables (the contact cannot carry the load:
    !> friction on the flange lifts the wheel), `climbs` is set, the error has stat_no_contact
@@ -183,18 +180,11 @@ contains
          end if
          if (x_hi - x_lo <= 4.0_wp*spacing(x_hi)) exit
       end do
-      ! The bracket closed on a jump of C(Δz) across F_z (a discontinuity of the model, not of
-      ! the root finder): the side nearer F_z, when the jump is small.
+      ! The bracket closed without a root: C(Δz) jumps across F_z there (a defect of the model).
       if (abs(c_at_lo - f_z) <= abs(c_at_hi - f_z)) then
-         x = x_lo
          c = c_at_lo
       else
-         x = x_hi
          c = c_at_hi
-      end if
-      if (abs(c - f_z) <= jump_rtol*f_z) then
-         call tangential_at(x, c, r, error)
-         return
       end if
       call fatal_error(error, 'vertical load matching with tangential forces did not '// &
          'converge: '//str_real(c)//' N instead of '//str_real(f_z)//' N (vertical approach '// &
