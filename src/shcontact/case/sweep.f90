@@ -17,15 +17,23 @@
 !>   made by the run (mkdir, atomic) and locked (flock on OUT.h5.partial/lock) while it is
 !>   used: a second run with the same output is refused, an existing directory is only taken
 !>   over with `resume` or `force`, and a symbolic link is never followed.
+!> * **Memory.** A block holds at most `block_bytes` of results (element fields, strip
+!>   tables) besides its summaries: its size is the smaller of what takes about 5 s and what
+!>   fits in that budget at the largest size per case seen so far, so a sweep that stores the
+!>   fields runs in bounded memory whatever its length and thread count. A result keeps only
+!>   what the file stores (the shared geometry and unstored strip tables are dropped as soon
+!>   as the case is solved).
 !> * **Shards.** Shard I of N solves the contiguous slice of cases
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
 module shcontact_case_sweep
    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+   use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
    use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_normal_patch, only: normal_patch_type
    use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
    use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
@@ -47,6 +55,10 @@ module shcontact_case_sweep
 
    public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
    public :: shard_range, shard_output_name, checkpoint_directory, max_threads
+   public :: default_block_bytes, result_bytes
+
+   !> Default of [[sweep_options_type]]%block_bytes: 64 MiB.
+   integer(int64), parameter :: default_block_bytes = 64_int64*1024*1024
 
    !> Most OpenMP threads of a run (--threads, OMP_NUM_THREADS): each thread holds its own
    !> workspaces, and creating many more threads than cores only costs memory.
@@ -79,6 +91,9 @@ module shcontact_case_sweep
       !> Write the result file (and its checkpoints); .false. solves and summarises only
       !> (`--no-output`), and `outcome%output` is then ''.
       logical :: write_output = .true.
+      !> Most bytes of per-case results (fields) held in memory at once: the checkpoint block
+      !> is cut to fit (at least one case per thread).
+      integer(int64) :: block_bytes = default_block_bytes
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
       !> Progress report (optional).
@@ -121,6 +136,22 @@ module shcontact_case_sweep
       character(len=:), allocatable :: message
       type(patch_geometry_type), allocatable :: patches(:)
    end type geometry_set_type
+
+   !> The normal stage of the last case of the last block, by its key (the first case of the
+   !> run with the same t_y, roll and load): the next block, which in a grid usually starts on
+   !> the same stage, takes it instead of solving it again.
+   type :: stage_cache_type
+      integer :: key = 0
+      type(stage_type) :: stage
+   end type stage_cache_type
+
+   !> A solved block whose checkpoint file is still to be written: the first thread writes it
+   !> while the others solve the next block.
+   type :: pending_block_type
+      logical :: waiting = .false.
+      integer, allocatable :: cases(:)
+      type(case_result_type), allocatable :: results(:)
+   end type pending_block_type
 
    !> Per-thread tangential solutions (and solver object of a kinematic run).
    type :: thread_solutions_type
@@ -319,8 +350,12 @@ contains
       type(thread_solutions_type), allocatable :: solutions(:)
       type(case_result_type), allocatable :: results(:)
       type(string_list_type) :: blocks
+      type(stage_cache_type) :: cache
+      type(pending_block_type) :: pending
       integer, allocatable :: todo(:)
       integer :: n, n_done, next, block, nb, i
+      integer(int64) :: block_used, per_case_bytes
+      logical :: keep_geometry, keep_strips
       real(wp) :: t0, per_case
 
       n = outcome%n_cases
@@ -352,35 +387,65 @@ contains
             solutions(i)%solver = setup%solver
          end do
       end if
+      ! A result keeps what the file stores: per-case geometry only when it varies.
+      keep_geometry = config%wants_field('geometry') .and. .not. common_geometry
+      keep_strips = config%wants_field('strips')
+      per_case_bytes = 0
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
+      ! Until the size of a result is known, a run with fields starts with a small block.
+      if (fields) block = min(block, max(16, 4*outcome%n_threads))
       do while (next <= size(todo))
          nb = min(block, size(todo) - next + 1)
          if (allocated(results)) deallocate (results)
          allocate (results(nb))
          t0 = wall_seconds()
+         ! The previous block's file is written by the first thread meanwhile.
          call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
             results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
-            outcome%last - outcome%first + 1)
-         per_case = (wall_seconds() - t0)/nb
-         if (options%write_output) call commit_block(dir, blocks, info, config, &
-            todo(next:next + nb - 1), results, error)
+            outcome%last - outcome%first + 1, keep_geometry, keep_strips, cache, block_used, &
+            pending, dir, blocks, info, error)
          if (allocated(error)) return
+         per_case = (wall_seconds() - t0)/nb
+         ! The largest share of a case seen so far (its fields and its stage's).
+         per_case_bytes = max(per_case_bytes, block_used/nb + 1)
+         if (pending%waiting) then
+            pending%waiting = .false.
+            if (associated(options%progress)) call options%progress(n_done, &
+               outcome%last - outcome%first + 1, .true.)
+         end if
          do i = 1, nb
             outcome%summaries(todo(next + i - 1)) = results(i)%summary
             if (results(i)%summary%stat > 0) call add_failure(outcome%failures, &
                todo(next + i - 1), message_of(results(i)))
          end do
          n_done = n_done + nb
+         if (options%write_output) then
+            pending%cases = todo(next:next + nb - 1)
+            call move_alloc(results, pending%results)
+            pending%waiting = .true.
+         else if (associated(options%progress)) then
+            call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
+         end if
          next = next + nb
+         if (config%output%checkpoint_cases == 0 .and. per_case > 0.0_wp) then
+            ! About block_seconds per block, and at least 8 blocks, so that writing a block
+            ! overlaps with solving the next.
+            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
+               min(block_seconds/per_case, real(size(todo), wp)/8.0_wp))))
+         end if
+         ! The block being solved and the one being written together within block_bytes.
+         block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
+            options%block_bytes/(2*per_case_bytes))))
+      end do
+      if (pending%waiting) then
+         call commit_block(dir, blocks, info, config, pending%cases, pending%results, error)
+         if (allocated(error)) return
+         deallocate (pending%results)
          if (associated(options%progress)) call options%progress(n_done, &
             outcome%last - outcome%first + 1, .true.)
-         if (config%output%checkpoint_cases == 0 .and. per_case > 0.0_wp) then
-            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
-               block_seconds/per_case)))
-         end if
-      end do
+      end if
 
       if (size(outcome%failures) == outcome%last - outcome%first + 1) then
          ! Nothing to write: every case failed, and they all tell why.
@@ -426,7 +491,9 @@ contains
    !> Solve the cases of one block: shared geometry and normal stages first, then every case,
    !> each by one thread.
    subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
-                          solutions, fields, n_threads, options, done_before, total)
+                          solutions, fields, n_threads, options, done_before, total, &
+                          keep_geometry, keep_strips, cache, bytes, pending, dir, blocks, &
+                          info, write_error)
       type(run_setup_type), intent(in) :: setup
       type(case_config_type), intent(in) :: config
       logical, intent(in) :: common_geometry
@@ -439,11 +506,26 @@ contains
       integer, intent(in) :: n_threads
       type(sweep_options_type), intent(in) :: options
       integer, intent(in) :: done_before, total
+      !> Keep the per-case geometry and the strip tables in the results (what the file stores).
+      logical, intent(in) :: keep_geometry, keep_strips
+      !> The stage of the last case of the previous block; on return that of this block.
+      type(stage_cache_type), intent(inout) :: cache
+      !> Bytes of the block's results and stages.
+      integer(int64), intent(out) :: bytes
+      !> The previous block, written to `dir` (listed in `blocks`) by the first thread while the
+      !> others start on this one, when it is waiting.
+      type(pending_block_type), intent(in) :: pending
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(inout) :: blocks
+      type(run_info_type), intent(in) :: info
+      !> Set when the previous block could not be written.
+      type(error_type), allocatable, intent(out) :: write_error
 
       integer, allocatable :: geometry_keys(:), load_keys(:), stage_of(:), geometry_of(:)
       type(geometry_set_type), allocatable :: geometries(:)
       type(stage_type), allocatable :: stages(:)
       type(error_type), allocatable :: error
+      logical, allocatable :: cached(:), needed(:)
       integer :: i, k, nb, done, me, report
       logical :: has_progress
 
@@ -452,21 +534,28 @@ contains
       has_progress = associated(options%progress)
       if (setup%kinematic) then
          ! Each case through its thread's solver object (shcontact_case_runner).
-         !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+         !$omp parallel default(none) num_threads(n_threads) &
          !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
-         !$omp has_progress, nb) private(i, me, report)
+         !$omp has_progress, nb, keep_geometry, keep_strips, pending, dir, blocks, info, &
+         !$omp write_error) private(i, me, report)
+         me = 1
+         !$ me = omp_get_thread_num() + 1
+         if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
+            pending%cases, pending%results, write_error)
+         !$omp do schedule(dynamic, 4)
          do i = 1, nb
-            me = 1
-            !$ me = omp_get_thread_num() + 1
             call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
                results(i), fields)
+            call keep_stored(results(i), keep_geometry, keep_strips)
             !$omp atomic capture
             done = done + 1
             report = done
             !$omp end atomic
             if (has_progress .and. me == 1) call options%progress(report, total, .false.)
          end do
-         !$omp end parallel do
+         !$omp end do
+         !$omp end parallel
+         bytes = sum(result_bytes(results))
          return
       end if
       allocate (stage_of(nb))
@@ -476,6 +565,17 @@ contains
       allocate (geometry_of(size(load_keys)))
       geometry_keys = [(config%shares_with(load_keys(k), axis_geometry), k=1, size(load_keys))]
       call unique_keys(geometry_keys, geometry_of)
+      ! The stage the previous block ended on is taken, not solved again.
+      allocate (stages(size(load_keys)), cached(size(load_keys)), needed(size(geometry_keys)))
+      cached = load_keys == cache%key
+      needed = .false.
+      do k = 1, size(load_keys)
+         if (cached(k)) then
+            stages(k) = cache%stage
+         else
+            needed(geometry_of(k)) = .true.
+         end if
+      end do
 
       if (common_geometry) then
          allocate (geometries(1))
@@ -484,8 +584,9 @@ contains
       else
          allocate (geometries(size(geometry_keys)))
          !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-         !$omp shared(geometries, geometry_keys, setup, config) private(k, error)
+         !$omp shared(geometries, geometry_keys, setup, config, needed) private(k, error)
          do k = 1, size(geometry_keys)
+            if (.not. needed(k)) cycle
             call solve_geometry(setup, config%case_point(geometry_keys(k)), &
                geometries(k)%patches, error)
             if (allocated(error)) then
@@ -496,10 +597,10 @@ contains
          !$omp end parallel do
       end if
 
-      allocate (stages(size(load_keys)))
       !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config) private(k)
+      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config, cached) private(k)
       do k = 1, size(load_keys)
+         if (cached(k)) cycle
          if (geometries(geometry_of(k))%stat /= 0) then
             stages(k)%stat = geometries(geometry_of(k))%stat
             stages(k)%message = geometries(geometry_of(k))%message
@@ -510,22 +611,131 @@ contains
       end do
       !$omp end parallel do
 
-      !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+      !$omp parallel default(none) num_threads(n_threads) &
       !$omp shared(cases, stages, stage_of, results, workspaces, solutions, setup, config, &
-      !$omp fields, options, done, total, has_progress, nb) private(i, me, report)
+      !$omp fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
+      !$omp pending, dir, blocks, info, write_error) private(i, me, report)
+      me = 1
+      !$ me = omp_get_thread_num() + 1
+      if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
+         pending%cases, pending%results, write_error)
+      !$omp do schedule(dynamic, 4)
       do i = 1, nb
-         me = 1
-         !$ me = omp_get_thread_num() + 1
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
             workspaces(me), solutions(me)%patches, results(i), fields)
+         call keep_stored(results(i), keep_geometry, keep_strips)
          !$omp atomic capture
          done = done + 1
          report = done
          !$omp end atomic
          if (has_progress .and. me == 1) call options%progress(report, total, .false.)
       end do
-      !$omp end parallel do
+      !$omp end do
+      !$omp end parallel
+      bytes = sum(result_bytes(results))
+      do k = 1, size(stages)
+         bytes = bytes + stage_bytes(stages(k))
+      end do
+      cache%key = load_keys(stage_of(nb))
+      call move_alloc(stages(stage_of(nb))%geometry, cache%stage%geometry)
+      call move_alloc(stages(stage_of(nb))%normal, cache%stage%normal)
+      cache%stage%stat = stages(stage_of(nb))%stat
+      if (allocated(stages(stage_of(nb))%message)) cache%stage%message = &
+         stages(stage_of(nb))%message
    end subroutine solve_block
+
+   !> Drop from a result what the file will not store: the geometry when it is the run's
+   !> common one (or not asked for), the strip tables when `strips` is not asked for.
+   elemental subroutine keep_stored(result, keep_geometry, keep_strips)
+      type(case_result_type), intent(inout) :: result
+      logical, intent(in) :: keep_geometry, keep_strips
+      integer :: k
+      if (.not. keep_geometry .and. allocated(result%geometry)) deallocate (result%geometry)
+      if (keep_strips .or. .not. allocated(result%normal)) return
+      do k = 1, size(result%normal)
+         associate (n => result%normal(k))
+            if (allocated(n%y)) deallocate (n%y)
+            if (allocated(n%a)) deallocate (n%a)
+            if (allocated(n%k)) deallocate (n%k)
+            if (allocated(n%p0)) deallocate (n%p0)
+            if (allocated(n%strip_load)) deallocate (n%strip_load)
+            if (allocated(n%m)) deallocate (n%m)
+            if (allocated(n%n)) deallocate (n%n)
+            if (allocated(n%eps_a)) deallocate (n%eps_a)
+            if (allocated(n%gamma)) deallocate (n%gamma)
+            if (allocated(n%delta_r)) deallocate (n%delta_r)
+            if (allocated(n%r_wheel)) deallocate (n%r_wheel)
+         end associate
+      end do
+   end subroutine keep_stored
+
+   !> Bytes held by a result beyond its summary: the arrays of its geometry, normal and
+   !> tangential solutions, plus a fixed share for the descriptors and message.
+   elemental function result_bytes(result) result(bytes)
+      !> The result.
+      type(case_result_type), intent(in) :: result
+      integer(int64) :: bytes
+      integer :: k
+      bytes = 1024
+      if (allocated(result%geometry)) then
+         do k = 1, size(result%geometry)
+            bytes = bytes + geometry_bytes(result%geometry(k))
+         end do
+      end if
+      if (allocated(result%normal)) then
+         do k = 1, size(result%normal)
+            bytes = bytes + normal_bytes(result%normal(k))
+         end do
+      end if
+      if (allocated(result%tangential)) then
+         do k = 1, size(result%tangential)
+            associate (t => result%tangential(k))
+               if (allocated(t%x)) bytes = bytes + 8_int64*size(t%x, kind=int64)
+               if (allocated(t%y)) bytes = bytes + 8_int64*size(t%y, kind=int64)
+               if (allocated(t%dx)) bytes = bytes + 8_int64*size(t%dx, kind=int64)
+               if (allocated(t%pn)) bytes = bytes + 8_int64*size(t%pn, kind=int64)
+               if (allocated(t%px)) bytes = bytes + 8_int64*size(t%px, kind=int64)
+               if (allocated(t%py)) bytes = bytes + 8_int64*size(t%py, kind=int64)
+               if (allocated(t%slip)) bytes = bytes + 8_int64*size(t%slip, kind=int64)
+               if (allocated(t%state)) bytes = bytes + size(t%state, kind=int64)
+            end associate
+         end do
+      end if
+   end function result_bytes
+
+   !> Bytes of a stage's geometry tables and normal solutions.
+   pure function stage_bytes(stage) result(bytes)
+      type(stage_type), intent(in) :: stage
+      integer(int64) :: bytes
+      integer :: k
+      bytes = 0
+      if (allocated(stage%geometry)) then
+         do k = 1, size(stage%geometry)
+            bytes = bytes + geometry_bytes(stage%geometry(k))
+         end do
+      end if
+      if (allocated(stage%normal)) then
+         do k = 1, size(stage%normal)
+            bytes = bytes + normal_bytes(stage%normal(k))
+         end do
+      end if
+   end function stage_bytes
+
+   !> Bytes of the tables of a patch geometry (six arrays over its lateral points).
+   pure function geometry_bytes(g) result(bytes)
+      type(patch_geometry_type), intent(in) :: g
+      integer(int64) :: bytes
+      bytes = 0
+      if (allocated(g%y)) bytes = 6_int64*8_int64*size(g%y, kind=int64)
+   end function geometry_bytes
+
+   !> Bytes of the strip tables of a normal solution (eleven arrays over its strips).
+   pure function normal_bytes(n) result(bytes)
+      type(normal_patch_type), intent(in) :: n
+      integer(int64) :: bytes
+      bytes = 0
+      if (allocated(n%y)) bytes = 11_int64*8_int64*size(n%y, kind=int64)
+   end function normal_bytes
 
    !> Replace each key by its position in the list of distinct keys (order of appearance) and
    !> shrink the list to the distinct keys.
