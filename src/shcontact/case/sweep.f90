@@ -112,6 +112,10 @@ module shcontact_case_sweep
       type(failure_type), allocatable :: failures(:)
       !> Cases taken from the checkpoint, threads used.
       integer :: n_resumed = 0, n_threads = 1
+      !> The most bytes of results (fields) and stages one block held, and the most cases a
+      !> block had ([[sweep_options_type]]%block_bytes bounds two blocks together).
+      integer(int64) :: most_block_bytes = 0
+      integer :: most_block_cases = 0
    end type sweep_outcome_type
 
    !> Name of the checkpoint list inside the checkpoint directory. It lists the block files by
@@ -394,8 +398,8 @@ contains
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
-      ! Until the size of a result is known, a run with fields starts with a small block.
-      if (fields) block = min(block, max(16, 4*outcome%n_threads))
+      ! Until the size of a result is known, a run with fields starts with one case per thread.
+      if (fields) block = min(block, outcome%n_threads)
       do while (next <= size(todo))
          nb = min(block, size(todo) - next + 1)
          if (allocated(results)) deallocate (results)
@@ -410,6 +414,8 @@ contains
          per_case = (wall_seconds() - t0)/nb
          ! The largest share of a case seen so far (its fields and its stage's).
          per_case_bytes = max(per_case_bytes, block_used/nb + 1)
+         outcome%most_block_bytes = max(outcome%most_block_bytes, block_used)
+         outcome%most_block_cases = max(outcome%most_block_cases, nb)
          if (pending%waiting) then
             pending%waiting = .false.
             if (associated(options%progress)) call options%progress(n_done, &
@@ -429,7 +435,9 @@ contains
             call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
          end if
          next = next + nb
-         if (config%output%checkpoint_cases == 0 .and. per_case > 0.0_wp) then
+         if (config%output%checkpoint_cases > 0) then
+            block = config%output%checkpoint_cases
+         else if (per_case > 0.0_wp) then
             ! About block_seconds per block, and at least 8 blocks, so that writing a block
             ! overlaps with solving the next.
             block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
