@@ -360,7 +360,7 @@ contains
       integer :: n, n_done, next, block, nb, i
       integer(int64) :: block_used, per_case_bytes
       logical :: keep_geometry, keep_strips
-      real(wp) :: t0, per_case
+      real(wp) :: t0, per_case, per_block
 
       n = outcome%n_cases
       if (.not. options%write_output) then
@@ -398,8 +398,10 @@ contains
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
-      ! Until the size of a result is known, a run with fields starts with one case per thread.
-      if (fields) block = min(block, outcome%n_threads)
+      ! Until the size of a result is measured, a run with fields sizes its first block by an
+      ! estimate from the grid.
+      if (fields) block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
+         options%block_bytes/(2*estimated_result_bytes(config)))))
       do while (next <= size(todo))
          nb = min(block, size(todo) - next + 1)
          if (allocated(results)) deallocate (results)
@@ -438,10 +440,12 @@ contains
          if (config%output%checkpoint_cases > 0) then
             block = config%output%checkpoint_cases
          else if (per_case > 0.0_wp) then
-            ! About block_seconds per block, and at least 8 blocks, so that writing a block
-            ! overlaps with solving the next.
-            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
-               min(block_seconds/per_case, real(size(todo), wp)/8.0_wp))))
+            ! About block_seconds per block; with several threads at least 8 blocks, so that
+            ! writing a block overlaps with solving the next (a block file costs about 5 ms,
+            ! which one thread would only add).
+            per_block = block_seconds/per_case
+            if (outcome%n_threads > 1) per_block = min(per_block, real(size(todo), wp)/8.0_wp)
+            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), per_block)))
          end if
          ! The block being solved and the one being written together within block_bytes.
          block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
@@ -711,6 +715,20 @@ contains
       end if
    end function result_bytes
 
+   !> A result's bytes estimated from the grid before any is solved: one patch's element
+   !> fields (five reals and a state byte per element) and strip tables, a quarter more for the
+   !> stage's share and the rest.
+   pure function estimated_result_bytes(config) result(bytes)
+      type(case_config_type), intent(in) :: config
+      integer(int64) :: bytes
+      integer(int64) :: strips, elements
+      strips = config%normal%n_strips
+      elements = config%tangential%n_elements
+      bytes = 1024 + 41*strips*elements + 2*8*strips
+      if (config%wants_field('strips')) bytes = bytes + 11*8*strips
+      bytes = bytes + bytes/4
+   end function estimated_result_bytes
+
    !> Bytes of a stage's geometry tables and normal solutions.
    pure function stage_bytes(stage) result(bytes)
       type(stage_type), intent(in) :: stage
@@ -799,7 +817,7 @@ contains
       if (blocks%n > 0) number = block_number(base_name(blocks%items(blocks%n)%text)) + 1
       name = dir//'/'//block_name(number)
       call write_result_file(name, info, config, cases, results, error, &
-         temp_name=name//temp_suffix)
+         temp_name=name//temp_suffix, checkpoint=.true.)
       if (allocated(error)) return
       call blocks%push(name)
       call write_manifest(dir, blocks, error)

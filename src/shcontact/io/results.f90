@@ -152,7 +152,8 @@ contains
 
    !> Write one result file holding the cases `results` (case numbers `indices`), under a
    !> temporary name renamed when complete.
-   subroutine write_result_file(name, info, config, indices, results, error, temp_name)
+   subroutine write_result_file(name, info, config, indices, results, error, temp_name, &
+                                checkpoint)
       !> File name.
       character(len=*), intent(in) :: name
       !> Run information (header, profiles, common geometry).
@@ -167,15 +168,21 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Temporary name (default `name.tmp<pid>`).
       character(len=*), intent(in), optional :: temp_name
+      !> A checkpoint block: no dimension scales (the merge attaches them in the final file;
+      !> making them was a third of a summary-only block's cost).
+      logical, intent(in), optional :: checkpoint
       type(h5_file_type) :: file
+      logical :: scales
       type(case_summary_type), allocatable :: summaries(:)
       type(field_choice_type) :: fields
       integer :: i
 
       fields = field_choice(config)
+      scales = .true.
+      if (present(checkpoint)) scales = .not. checkpoint
       call h5_create(file, name, error, compression=config%output%compression, &
          single=config%output%precision == 'single', temp_name=temp_name, &
-         describe=describe_dataset)
+         describe=describe_dataset, scales=scales)
       if (allocated(error)) return
       call write_header(file, info, size(indices), error)
       summaries = results%summary
@@ -281,6 +288,7 @@ contains
          'REFERENCE_LIST', 'CLASS', 'NAME']
       integer :: i
       logical :: keep_attached
+      if (.not. file%scales) return
       keep_attached = .false.
       if (present(keep)) keep_attached = keep
       if (.not. h5_exists(file, group//'/'//scale)) return
@@ -323,6 +331,7 @@ contains
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: error
+      if (.not. file%scales) return
       if (.not. h5_exists(file, path//'/xy')) return
       call attach_scale(file, path, 'y', 'strip (y, lateral)', element_fields, 2, error)
       if (.not. allocated(error)) call attach_scale(file, path, 'element', &
