@@ -844,7 +844,7 @@ contains
    !> Issue 27: a sweep that stores every field holds at most --block-memory of results at
    !> once, whatever its length. The 36-case DOE with all fields, run with --block-memory 2
    !> (MiB; two blocks of at most 1 MiB, one being solved and one being written) and with 1024
-   !> (every case after the first two in one block): the same file; the bounded run's largest
+   !> (every case in one block): the same file; the bounded run's largest
    !> block holds at most 1 MiB, and its peak resident memory (VmHWM of the process, which -v
    !> prints) is lower than the unbounded run's by at least half of what the unbounded run's
    !> largest block held (about 7 MB). The number of cases, not the bound, would set the peak
@@ -880,7 +880,7 @@ contains
          'the bounded run (KiB, at most 1024): '//small)
       if (allocated(error)) return
       call check(error, big_block > 5*1024, message='largest block of the unbounded run '// &
-         '(KiB, expected the 34 cases of about 220 KiB): '//big)
+         '(KiB, expected the 36 cases of about 220 KiB): '//big)
       if (allocated(error)) return
       call check(error, big_peak - small_peak >= big_block/2, message='peak memory (KiB) '// &
          'bounded vs unbounded: '//small//' / '//big)

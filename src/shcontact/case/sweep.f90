@@ -33,14 +33,11 @@ module shcontact_case_sweep
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_normal_patch, only: normal_patch_type
    use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
-   use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
-      read_result_summary, check_output_file
-   use shcontact_core_textfile, only: text_line_type, read_text_lines
-   use shcontact_io_files, only: remove_directory, delete_file, file_exists, &
-      rename_file, canonical_path, path_kind, open_work_folder, unlock_file, folder_made, &
+   use shcontact_io_results, only: run_info_type, merge_result_files, read_result_summary, &
+      check_output_file
+   use shcontact_io_files, only: file_exists, canonical_path, path_kind, open_work_folder, unlock_file, folder_made, &
       folder_existing, folder_busy, folder_unlocked, folder_link, folder_not_directory
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
@@ -50,12 +47,16 @@ module shcontact_case_sweep
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
       solve_stage, solve_case, march_workspace_type, tangential_patch_type, &
       solve_kinematic_case, kinematic_state, contact_solver_type
+   use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
+      stage_bytes
+   use shcontact_case_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
+      read_manifest, write_text_file, read_text_file, clear_checkpoint
    implicit none
    private
 
    public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
    public :: shard_range, shard_output_name, checkpoint_directory, max_threads
-   public :: default_block_bytes, result_bytes
+   public :: default_block_bytes
 
    !> Default of [[sweep_options_type]]%block_bytes: 64 MiB.
    integer(int64), parameter :: default_block_bytes = 64_int64*1024*1024
@@ -118,19 +119,6 @@ module shcontact_case_sweep
       integer :: most_block_cases = 0
    end type sweep_outcome_type
 
-   !> Name of the checkpoint list inside the checkpoint directory. It lists the block files by
-   !> their names in the directory (block_NNNNNN.h5), so that a run can be resumed from any
-   !> working directory; entries of any other form are ignored, never opened or deleted.
-   character(len=*), parameter :: manifest_name = 'blocks.txt'
-   !> Temporary name of the merged output inside the checkpoint directory (a kill during the
-   !> final assembly leaves it there, where the next run removes it).
-   character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
-   !> The configuration of the run that made the checkpoint (see [[checkpoint_key]]).
-   character(len=*), parameter :: key_name = 'configuration.txt'
-   !> The lock file of the work folder, held (flock) while a run uses the folder.
-   character(len=*), parameter :: lock_name = 'lock'
-   !> Suffix of a block file being written.
-   character(len=*), parameter :: temp_suffix = '.tmp'
    !> Automatic block size: aim at this many seconds per block.
    real(wp), parameter :: block_seconds = 5.0_wp
 
@@ -656,113 +644,6 @@ contains
          stages(stage_of(nb))%message
    end subroutine solve_block
 
-   !> Drop from a result what the file will not store: the geometry when it is the run's
-   !> common one (or not asked for), the strip tables when `strips` is not asked for.
-   elemental subroutine keep_stored(result, keep_geometry, keep_strips)
-      type(case_result_type), intent(inout) :: result
-      logical, intent(in) :: keep_geometry, keep_strips
-      integer :: k
-      if (.not. keep_geometry .and. allocated(result%geometry)) deallocate (result%geometry)
-      if (keep_strips .or. .not. allocated(result%normal)) return
-      do k = 1, size(result%normal)
-         associate (n => result%normal(k))
-            if (allocated(n%y)) deallocate (n%y)
-            if (allocated(n%a)) deallocate (n%a)
-            if (allocated(n%k)) deallocate (n%k)
-            if (allocated(n%p0)) deallocate (n%p0)
-            if (allocated(n%strip_load)) deallocate (n%strip_load)
-            if (allocated(n%m)) deallocate (n%m)
-            if (allocated(n%n)) deallocate (n%n)
-            if (allocated(n%eps_a)) deallocate (n%eps_a)
-            if (allocated(n%gamma)) deallocate (n%gamma)
-            if (allocated(n%delta_r)) deallocate (n%delta_r)
-            if (allocated(n%r_wheel)) deallocate (n%r_wheel)
-         end associate
-      end do
-   end subroutine keep_stored
-
-   !> Bytes held by a result beyond its summary: the arrays of its geometry, normal and
-   !> tangential solutions, plus a fixed share for the descriptors and message.
-   elemental function result_bytes(result) result(bytes)
-      !> The result.
-      type(case_result_type), intent(in) :: result
-      integer(int64) :: bytes
-      integer :: k
-      bytes = 1024
-      if (allocated(result%geometry)) then
-         do k = 1, size(result%geometry)
-            bytes = bytes + geometry_bytes(result%geometry(k))
-         end do
-      end if
-      if (allocated(result%normal)) then
-         do k = 1, size(result%normal)
-            bytes = bytes + normal_bytes(result%normal(k))
-         end do
-      end if
-      if (allocated(result%tangential)) then
-         do k = 1, size(result%tangential)
-            associate (t => result%tangential(k))
-               if (allocated(t%x)) bytes = bytes + 8_int64*size(t%x, kind=int64)
-               if (allocated(t%y)) bytes = bytes + 8_int64*size(t%y, kind=int64)
-               if (allocated(t%dx)) bytes = bytes + 8_int64*size(t%dx, kind=int64)
-               if (allocated(t%pn)) bytes = bytes + 8_int64*size(t%pn, kind=int64)
-               if (allocated(t%px)) bytes = bytes + 8_int64*size(t%px, kind=int64)
-               if (allocated(t%py)) bytes = bytes + 8_int64*size(t%py, kind=int64)
-               if (allocated(t%slip)) bytes = bytes + 8_int64*size(t%slip, kind=int64)
-               if (allocated(t%state)) bytes = bytes + size(t%state, kind=int64)
-            end associate
-         end do
-      end if
-   end function result_bytes
-
-   !> A result's bytes estimated from the grid before any is solved: one patch's element
-   !> fields (five reals and a state byte per element) and strip tables, a quarter more for the
-   !> stage's share and the rest.
-   pure function estimated_result_bytes(config) result(bytes)
-      type(case_config_type), intent(in) :: config
-      integer(int64) :: bytes
-      integer(int64) :: strips, elements
-      strips = config%normal%n_strips
-      elements = config%tangential%n_elements
-      bytes = 1024 + 41*strips*elements + 2*8*strips
-      if (config%wants_field('strips')) bytes = bytes + 11*8*strips
-      bytes = bytes + bytes/4
-   end function estimated_result_bytes
-
-   !> Bytes of a stage's geometry tables and normal solutions.
-   pure function stage_bytes(stage) result(bytes)
-      type(stage_type), intent(in) :: stage
-      integer(int64) :: bytes
-      integer :: k
-      bytes = 0
-      if (allocated(stage%geometry)) then
-         do k = 1, size(stage%geometry)
-            bytes = bytes + geometry_bytes(stage%geometry(k))
-         end do
-      end if
-      if (allocated(stage%normal)) then
-         do k = 1, size(stage%normal)
-            bytes = bytes + normal_bytes(stage%normal(k))
-         end do
-      end if
-   end function stage_bytes
-
-   !> Bytes of the tables of a patch geometry (six arrays over its lateral points).
-   pure function geometry_bytes(g) result(bytes)
-      type(patch_geometry_type), intent(in) :: g
-      integer(int64) :: bytes
-      bytes = 0
-      if (allocated(g%y)) bytes = 6_int64*8_int64*size(g%y, kind=int64)
-   end function geometry_bytes
-
-   !> Bytes of the strip tables of a normal solution (eleven arrays over its strips).
-   pure function normal_bytes(n) result(bytes)
-      type(normal_patch_type), intent(in) :: n
-      integer(int64) :: bytes
-      bytes = 0
-      if (allocated(n%y)) bytes = 11_int64*8_int64*size(n%y, kind=int64)
-   end function normal_bytes
-
    !> Replace each key by its position in the list of distinct keys (order of appearance) and
    !> shrink the list to the distinct keys.
    pure subroutine unique_keys(keys, position)
@@ -800,102 +681,6 @@ contains
    ! ------------------------------------------------------------------------------------------
    ! Checkpoints
    ! ------------------------------------------------------------------------------------------
-
-   !> Write a block file and add it to the list.
-   subroutine commit_block(dir, blocks, info, config, cases, results, error)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(inout) :: blocks
-      type(run_info_type), intent(in) :: info
-      type(case_config_type), intent(in) :: config
-      integer, intent(in) :: cases(:)
-      type(case_result_type), intent(in) :: results(:)
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: name
-      integer :: number
-      ! After the last listed block (a resumed list may miss some numbers).
-      number = 1
-      if (blocks%n > 0) number = block_number(base_name(blocks%items(blocks%n)%text)) + 1
-      name = dir//'/'//block_name(number)
-      call write_result_file(name, info, config, cases, results, error, &
-         temp_name=name//temp_suffix, checkpoint=.true.)
-      if (allocated(error)) return
-      call blocks%push(name)
-      call write_manifest(dir, blocks, error)
-   end subroutine commit_block
-
-   !> Rewrite the list of block files (through a temporary file and a rename).
-   subroutine write_manifest(dir, blocks, error)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(in) :: blocks
-      type(error_type), allocatable, intent(out) :: error
-      integer :: unit, stat, i
-      character(len=:), allocatable :: name
-      name = dir//'/'//manifest_name
-      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
-         return
-      end if
-      do i = 1, blocks%n
-         write (unit, '(a)', iostat=stat) base_name(blocks%items(i)%text)
-      end do
-      close (unit)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
-         return
-      end if
-      call rename_file(name//temp_suffix, name, error)
-   end subroutine write_manifest
-
-   !> The block files listed in the checkpoint directory, as paths inside it. Only entries
-   !> named like a block file count (an older list's `OUT.h5.partial/block_N.h5` gives
-   !> `block_N.h5` in `dir`); anything else in the list is ignored.
-   subroutine read_manifest(dir, blocks)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(out) :: blocks
-      type(text_line_type), allocatable :: lines(:)
-      type(error_type), allocatable :: error
-      character(len=:), allocatable :: name
-      integer :: i
-      blocks%n = 0
-      if (.not. file_exists(dir//'/'//manifest_name)) return
-      call read_text_lines(dir//'/'//manifest_name, 'checkpoint list', lines, error)
-      if (allocated(error)) return
-      do i = 1, size(lines)
-         name = base_name(trim(adjustl(lines(i)%text)))
-         if (block_number(name) > 0) call blocks%push(dir//'/'//name)
-      end do
-   end subroutine read_manifest
-
-   !> block_NNNNNN.h5 (six digits or more).
-   pure function block_name(number) result(name)
-      integer, intent(in) :: number
-      character(len=:), allocatable :: name
-      character(len=12) :: buf
-      write (buf, '(i6.6)') number
-      name = 'block_'//trim(buf)//'.h5'
-   end function block_name
-
-   !> The number of a block file name, 0 when the name is not one.
-   pure integer function block_number(name) result(number)
-      character(len=*), intent(in) :: name
-      integer :: n, stat
-      number = 0
-      n = len(name)
-      if (n < 15) return
-      if (name(1:6) /= 'block_' .or. name(n - 2:n) /= '.h5') return
-      if (verify(name(7:n - 3), '0123456789') /= 0 .or. n - 9 > 9) return
-      read (name(7:n - 3), *, iostat=stat) number
-      if (stat /= 0) number = 0
-      if (name /= block_name(number)) number = 0
-   end function block_number
-
-   !> The name after the last '/'.
-   pure function base_name(path) result(name)
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable :: name
-      name = path(index(path, '/', back=.true.) + 1:)
-   end function base_name
 
    !> Take the finished cases from the checkpoint of an interrupted run of this configuration.
    subroutine read_checkpoint(dir, key, namelist, n_cases, outcome, blocks, error)
@@ -980,78 +765,10 @@ contains
       key = config_namelist(c)
    end function checkpoint_key
 
-   !> Write a text file whole (through a temporary name).
-   subroutine write_text_file(name, text, error)
-      character(len=*), intent(in) :: name, text
-      type(error_type), allocatable, intent(out) :: error
-      integer :: unit, stat
-      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', &
-         access='stream', form='unformatted', iostat=stat)
-      if (stat == 0) write (unit, iostat=stat) text
-      if (stat == 0) close (unit, iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write "'//name//'"', stat_io)
-         return
-      end if
-      call rename_file(name//temp_suffix, name, error)
-   end subroutine write_text_file
-
-   !> A text file whole ('' when it cannot be read).
-   function read_text_file(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: text
-      integer :: unit, stat, n
-      text = ''
-      open (newunit=unit, file=name, status='old', action='read', access='stream', &
-         form='unformatted', iostat=stat)
-      if (stat /= 0) return
-      inquire (unit=unit, size=n)
-      if (n > 0) then
-         deallocate (text)
-         allocate (character(len=n) :: text)
-         read (unit, iostat=stat) text
-         if (stat /= 0) text = ''
-      end if
-      close (unit)
-   end function read_text_file
-
    function trim_text(text) result(t)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: t
       t = trim(text)
    end function trim_text
-
-   !> Remove the block files, their temporaries, the list and (unless kept) the directory of a
-   !> checkpoint. Only names shcontact gives inside `dir` are removed: block_N.h5 and
-   !> block_N.h5.tmp (N = 1, 2, ... while one exists, and every listed N), the list, the
-   !> merged temporary. A directory holding anything else is left in place.
-   subroutine clear_checkpoint(dir, keep_directory)
-      character(len=*), intent(in) :: dir
-      logical, intent(in) :: keep_directory
-      type(string_list_type) :: blocks
-      integer :: i, last
-      call read_manifest(dir, blocks)
-      last = 0
-      do i = 1, blocks%n
-         last = max(last, block_number(base_name(blocks%items(i)%text)))
-      end do
-      i = 1
-      do while (i <= last .or. file_exists(dir//'/'//block_name(i)) .or. &
-                file_exists(dir//'/'//block_name(i)//temp_suffix))
-         if (delete_file(dir//'/'//block_name(i))) continue
-         if (delete_file(dir//'/'//block_name(i)//temp_suffix)) continue
-         i = i + 1
-      end do
-      if (delete_file(dir//'/'//merged_temp_name)) continue
-      if (delete_file(dir//'/'//key_name)) continue
-      if (delete_file(dir//'/'//key_name//temp_suffix)) continue
-      if (delete_file(dir//'/'//manifest_name//temp_suffix)) continue
-      if (delete_file(dir//'/'//manifest_name)) continue
-      if (.not. keep_directory) then
-         ! The lock goes last, while still held (the caller closes it).
-         if (delete_file(dir//'/'//lock_name)) continue
-         if (remove_directory(dir)) continue
-      end if
-   end subroutine clear_checkpoint
 
 end module shcontact_case_sweep
