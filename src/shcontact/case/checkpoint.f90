@@ -22,7 +22,8 @@ module shcontact_case_checkpoint
    !> Temporary name of the merged output inside the checkpoint directory (a kill during the
    !> final assembly leaves it there, where the next run removes it).
    character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
-   !> The configuration of the run that made the checkpoint (shcontact_case_sweep's `checkpoint_key`).
+   !> The configuration of the run that made the checkpoint (shcontact_case_sweep's
+   !> `checkpoint_key`).
    character(len=*), parameter :: key_name = 'configuration.txt'
    !> The lock file of the work folder, held (flock) while a run uses the folder.
    character(len=*), parameter :: lock_name = 'lock'

@@ -17,12 +17,16 @@
 !>   made by the run (mkdir, atomic) and locked (flock on OUT.h5.partial/lock) while it is
 !>   used: a second run with the same output is refused, an existing directory is only taken
 !>   over with `resume` or `force`, and a symbolic link is never followed.
-!> * **Memory.** A block holds at most `block_bytes` of results (element fields, strip
-!>   tables) besides its summaries: its size is the smaller of what takes about 5 s and what
-!>   fits in that budget at the largest size per case seen so far, so a sweep that stores the
-!>   fields runs in bounded memory whatever its length and thread count. A result keeps only
-!>   what the file stores (the shared geometry and unstored strip tables are dropped as soon
-!>   as the case is solved).
+!> * **Overlap.** While the threads solve a block, the first thread writes the previous
+!>   block's file (shcontact_case_checkpoint) and then joins them; with several threads a run
+!>   has at least 8 blocks so that most of the writing overlaps the solving.
+!> * **Memory.** The block being solved and the block being written hold at most
+!>   `block_bytes` of results (element fields, strip tables, stages) together: a block is the
+!>   smaller of what takes about 5 s (or `checkpoint_cases`) and what fits in half the budget
+!>   at the largest size per case seen so far (shcontact_case_memory), so a sweep that stores
+!>   the fields runs in bounded memory whatever its length and thread count. A result keeps
+!>   only what the file stores (the shared geometry and unstored strip tables are dropped as
+!>   soon as the case is solved).
 !> * **Shards.** Shard I of N solves the contiguous slice of cases
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
@@ -37,8 +41,9 @@ module shcontact_case_sweep
       axis_geometry, axis_load
    use shcontact_io_results, only: run_info_type, merge_result_files, read_result_summary, &
       check_output_file
-   use shcontact_io_files, only: file_exists, canonical_path, path_kind, open_work_folder, unlock_file, folder_made, &
-      folder_existing, folder_busy, folder_unlocked, folder_link, folder_not_directory
+   use shcontact_io_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
+      unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
+      folder_not_directory
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
