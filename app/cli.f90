@@ -2,10 +2,9 @@
 module shcontact_app_cli
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, control_characters
    use shcontact_io_text, only: string_list_type
    use shcontact_case_sweep, only: max_threads
-   use shcontact_io_files, only: control_character
    implicit none
    private
 
@@ -386,7 +385,7 @@ contains
       character(len=*), intent(in) :: name, what
       type(error_type), allocatable, intent(out) :: error
       integer :: k
-      k = control_character(name)
+      k = scan(name, control_characters)
       if (k > 0) call fatal_error(error, what//' "'//name(1:k - 1)//'?'//name(k + 1:)// &
          '": the name holds a control character (byte '//str_int(iachar(name(k:k)))// &
          '); choose a name without one', stat_usage)

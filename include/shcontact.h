@@ -88,6 +88,54 @@ extern "C" {
 #define SHCONTACT_STATE_ADHESION 1 /* adhesion (stick) */
 #define SHCONTACT_STATE_SLIP 2     /* slip */
 
+/* Options (shcontact_set_option): key "group%variable" as in the app's case files, its default
+ * and units, and its choices or range. The lines between the markers come from the option
+ * registries (test registry/header_option_lists checks them; on a change it prints them).
+ * -- options --
+ * profiles%wheel_smoothing = 0.0: 0.0 <= wheel_smoothing <= 100.0 mm
+ * profiles%rail_smoothing = 0.0: 0.0 <= rail_smoothing <= 100.0 mm
+ * track%gauge = 1435.0: 500.0 <= gauge <= 2000.0 mm
+ * track%gauge_height = 14.0: 0.0 <= gauge_height <= 50.0 mm
+ * track%inclination = 0.025 [-]: -0.2 <= inclination <= 0.2
+ * track%flange_back_distance = 1360.0: 400.0 <= flange_back_distance <= 2000.0 mm
+ * track%flange_back_position = -70.0: -200.0 <= flange_back_position <= 200.0 mm
+ * track%nominal_radius = 460.0: 100.0 <= nominal_radius <= 2000.0 mm
+ * position%t_y = 4.733: -30.0 <= t_y <= 30.0 mm
+ * position%roll = 0.0: -0.1 <= roll <= 0.1 rad
+ * kinematics%mode = 'off': 'off', 'on'
+ * kinematics%yaw = 0.0: -0.1 <= yaw <= 0.1 rad
+ * kinematics%v_forward = 30000.0: 0.0 < v_forward <= 200000.0 mm/s
+ * kinematics%v_lateral = 0.0: -10000.0 <= v_lateral <= 10000.0 mm/s
+ * kinematics%v_vertical = 0.0: -10000.0 <= v_vertical <= 10000.0 mm/s
+ * kinematics%roll_rate = 0.0: -10.0 <= roll_rate <= 10.0 rad/s
+ * kinematics%yaw_rate = 0.0: -10.0 <= yaw_rate <= 10.0 rad/s
+ * kinematics%pitch_rate = pure rolling: -2000.0 <= pitch_rate < 0.0 rad/s
+ * material%shear_modulus = 82670.0: 1000.0 <= shear_modulus <= 1000000.0 MPa
+ * material%poisson = 0.27 [-]: 0.0 <= poisson < 0.5
+ * material%friction = 0.3 [-]: 0.001 <= friction <= 10.0
+ * load%mode = 'force': 'force', 'approach', 'vertical'
+ * load%normal_force = 64700.0: 1.0 <= normal_force <= 1.0e7 N
+ * load%approach = 0.05: 0.0 < approach <= 5.0 mm
+ * load%vertical_force = 64700.0: 1.0 <= vertical_force <= 1.0e7 N
+ * creepage%nu_x = 0.00058 [-]: -1.0 <= nu_x <= 1.0
+ * creepage%nu_y = 6.1e-5 [-]: -1.0 <= nu_y <= 1.0
+ * creepage%phi = 0.000274: -0.1 <= phi <= 0.1 rad/mm
+ * normal%method = 'semi-hertz': 'semi-hertz', 'hertz'
+ * normal%reduction = 'coupled': 'coupled', 'local-hertz', 'constant'
+ * normal%epsilon = 0.55 [-]: 0.01 <= epsilon <= 1.0
+ * normal%n_strips = 100: 2 <= n_strips <= 100000
+ * normal%b_min = 0.0001: 1.0e-8 <= b_min <= 1.0 1/mm
+ * normal%longitudinal_curvature = 'local': 'local', 'reference'
+ * tangential%method = 'fastsim-sh': 'fastsim-sh', 'fastsim'
+ * tangential%bound = 'weighted': 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip',
+ *     'clipped'
+ * tangential%spin_model = 'uniform': 'additive', 'uniform', 'scaled', 'geometric'
+ * tangential%spin_flexibility = 'longitudinal': 'longitudinal', 'spin'
+ * tangential%correction = 'exact-ellipse': 'exact-ellipse', 'none'
+ * tangential%n_elements = 50: 2 <= n_elements <= 100000
+ * -- end options --
+ */
+
 /* An opaque contact (one wheel on its rail). */
 typedef struct shcontact_contact shcontact_contact;
 
@@ -137,13 +185,13 @@ int shcontact_set_track(shcontact_contact *handle, double gauge, double gauge_he
                         double inclination, int rail_canted, double flange_back_distance,
                         double flange_back_position, double nominal_radius);
 
-/* One option as in the app's case files: key "group%variable", value as text. Keys:
- * normal%method (semi-hertz, hertz), normal%reduction (local-hertz, constant), normal%epsilon,
- * normal%n_strips, normal%b_min, tangential%method (fastsim-sh, fastsim), tangential%bound
- * (ellipsoidal, parabolic, weighted, weighted-slip, clipped), tangential%spin_model (additive,
- * uniform, scaled, geometric), tangential%n_elements, profiles%wheel_smoothing,
- * profiles%rail_smoothing, output%fields (all or 1: every later solve keeps the element fields
- * for shcontact_fields; none or 0, the default: no fields, no cost). */
+/* One option as in the app's case files: key "group%variable", value as text, as the app's
+ * --set takes it (doc/api.md, "Options"). Keys: every variable of the case files but the sweep's
+ * (doc/app.md); they set the track, material, smoothing, normal and tangential options, or the
+ * state of shcontact_solve_state (&position, &kinematics, &load, &creepage). Profile files and
+ * track%side are given at creation, the output file and the sweep are the app's (status 2).
+ * The choices of each option: the "Options" block above; output%fields (all or 1: every later
+ * solve keeps the element fields for shcontact_fields; none or 0, the default: no fields). */
 int shcontact_set_option(shcontact_contact *handle, const char *key, const char *value);
 
 /* Solve one contact: lateral wheelset shift t_y (mm, CONTACT's Y_WS), roll (rad), load mode and
@@ -184,6 +232,59 @@ int shcontact_field_size(shcontact_contact *handle, int patch, int *nx, int *ny)
  * magnitude (0 in adhesion); state 0 exterior, 1 adhesion, 2 slip. No array may be NULL. */
 int shcontact_fields(shcontact_contact *handle, int patch, int nx, int ny, double *x, double *y,
                      double *area, double *pn, double *px, double *py, double *slip, int *state);
+
+/* Keyed calls (doc/api.md, "Keyed calls"): inputs and outputs by name, so that a new one is a
+ * new key, never a changed signature.
+ *
+ * A number by key: "group%variable" as in shcontact_set_option, or a variable name that only one
+ * group has ("t_y", "yaw", "vertical_force", "friction", ...), in the key's units (mm, rad, mm/s,
+ * rad/s, N, MPa, rad/mm; doc/api.md). Integer variables take whole numbers; text variables
+ * (choices) shcontact_set_option. Goes through the same setter as shcontact_set_option. */
+int shcontact_set_value(shcontact_contact *handle, const char *key, double value);
+
+/* Solve the state set by key: position and velocities (&position, &kinematics; mode "on" gives
+ * the kinematic call), the load (&load mode and value) and, in prescribed mode, the creepages
+ * (&creepage); the settings are checked as the app checks a case file. Defaults: the app's
+ * headline case. On a wheelset handle both wheels get the same load. */
+int shcontact_solve_state(shcontact_contact *handle);
+
+/* A result value of the last solve by name: "fx", "fy", "mz", "fn", "fx_norm", "fy_norm",
+ * "fy_track", "fz_track", "approach", "area", "p_max", "gamma0", "r0", "y_track", "z_track",
+ * "coulomb", "adhesion", "n_patches", "n_loaded", "main_patch", "sum_fx", "sum_fy", "sum_fz",
+ * "sum_fn", "dz", "nu_x", "nu_y", "phi", "x_track" (the kinematic layout's values, units as
+ * there), of the main patch (patch 0, with the result's counts and totals) or of patch `patch`.
+ * A wheelset handle: "wheelset%fx", "wheelset%fy", "wheelset%fz" (N), "wheelset%mz" (N mm), and
+ * "right%NAME", "left%NAME" for a wheel (its side frame). *value receives it (0 on failure). */
+int shcontact_get_value(shcontact_contact *handle, const char *key, int patch, double *value);
+
+/* One element field of patch `patch` of the last solve by name: "x", "y" (mm), "area" (mm^2),
+ * "pn", "px", "py" (MPa), "slip", "state" (0, 1, 2 as doubles); nx*ny values (the sizes of
+ * shcontact_field_size) in the order of shcontact_fields. */
+int shcontact_get_field(shcontact_contact *handle, const char *key, int patch, int nx, int ny,
+                        double *field);
+
+/* Both wheels of a wheelset (the library's wheelset_solver_type): a wheelset handle from profile
+ * names, the left wheel the mirror image of the right one; default track, material and options,
+ * which shcontact_set_option, shcontact_set_material and shcontact_set_track change for both
+ * wheels. *handle as for shcontact_create; the one-wheel solve, patch and field calls refuse it
+ * (SHCONTACT_USAGE). */
+int shcontact_create_wheelset(shcontact_contact **handle, const char *wheel, const char *rail);
+
+/* Solve both wheels for one wheelset state (the arguments of shcontact_solve_kinematic) and the
+ * load of each wheel (load_mode as there; SHCONTACT_LOAD_VERTICAL_FORCE for a vehicle code).
+ * totals[4] receives the forces on the wheelset in the true track frame, F_x, F_y (towards the
+ * right rail's field side), F_z (z down) (N), and their moment M_z about the vertical axis
+ * through the wheelset centre (N mm; the patches' spin moments not included); zeros on failure.
+ */
+int shcontact_solve_wheelset(shcontact_contact *handle, double y_ws, double yaw, double roll,
+                             double v_forward, double v_lateral, double v_vertical,
+                             double roll_rate, double yaw_rate, double pitch_rate, int load_mode,
+                             double load_right, double load_left, double *totals);
+
+/* values[SHCONTACT_KIN_SIZE] of wheel `side` (SHCONTACT_RIGHT, SHCONTACT_LEFT) of the last
+ * wheelset solve: its main patch (patch 0) or patch `patch`, with the wheel's counts and totals,
+ * in its side frame (as shcontact_patch_kinematic). */
+int shcontact_wheelset_wheel(shcontact_contact *handle, int side, int patch, double *values);
 
 /* Status of the last call on handle; its message is copied to buffer (NUL-terminated, cut to
  * length - 1 characters, empty after a success). A NULL handle gives SHCONTACT_USAGE. */

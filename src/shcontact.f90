@@ -61,10 +61,12 @@ module shcontact
       patch_values, result_values, kinematic_values
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
       wheel_left
+   use shcontact_api_preset, only: preset_names, apply_preset, set_preset
    implicit none
    private
 
    public :: wheelset_solver_type, wheelset_result_type, wheel_right, wheel_left
+   public :: preset_names, apply_preset, set_preset
    public :: wp, error_type, fatal_error
    public :: stat_invalid_input, stat_io, stat_numerical, stat_no_contact, stat_usage
    public :: shcontact_version

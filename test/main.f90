@@ -15,6 +15,7 @@ program tester
    use test_lapack, only: collect_lapack
    use test_testdrive, only: collect_testdrive
    use test_layout, only: collect_layout
+   use test_registry, only: collect_registry
    use test_hertz, only: collect_hertz
    use test_semihertz, only: collect_semihertz
    use test_strip_influence, only: collect_strip_influence
@@ -40,9 +41,11 @@ program tester
    use test_kinematics, only: collect_kinematics
    use test_kinematic_balance, only: collect_kinematic_balance
    use test_api_kinematic, only: collect_api_kinematic
+   use test_flat_keys, only: collect_flat_keys
    use test_examples, only: collect_examples
    use test_validation, only: collect_validation
    use test_validation_normal, only: collect_validation_normal
+   use test_validation_sets, only: collect_validation_sets
    use test_vertical_approach, only: collect_vertical_approach
    use test_performance_invariants, only: collect_performance_invariants
    use test_robustness, only: collect_robustness
@@ -50,6 +53,7 @@ program tester
    use test_wheelset_geometry, only: collect_wheelset_geometry
    use test_profile_diagnostics, only: collect_profile_diagnostics
    use test_figures, only: collect_figures
+   use test_preset, only: collect_preset
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -59,7 +63,9 @@ program tester
 
    suites = [ &
       new_testsuite('testdrive', collect_testdrive), &
+      new_testsuite('preset', collect_preset), &
       new_testsuite('layout', collect_layout), &
+      new_testsuite('registry', collect_registry), &
       new_testsuite('elliptic', collect_elliptic), &
       new_testsuite('roots', collect_roots), &
       new_testsuite('lapack', collect_lapack), &
@@ -88,9 +94,11 @@ program tester
       new_testsuite('kinematics', collect_kinematics), &
       new_testsuite('kinematic_balance', collect_kinematic_balance), &
       new_testsuite('api_kinematic', collect_api_kinematic), &
+      new_testsuite('flat_keys', collect_flat_keys), &
       new_testsuite('examples', collect_examples), &
       new_testsuite('validation', collect_validation), &
       new_testsuite('validation_normal', collect_validation_normal), &
+      new_testsuite('validation_sets', collect_validation_sets), &
       new_testsuite('vertical_approach', collect_vertical_approach), &
       new_testsuite('performance_invariants', collect_performance_invariants), &
       new_testsuite('input', collect_input), &

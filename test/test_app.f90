@@ -8,6 +8,7 @@
 !> the environment variable SHCONTACT_EXE. Scratch files go to a fresh directory under $TMPDIR
 !> (default /tmp) that is removed at the end. Tests that need h5dump skip without it.
 module test_app
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_io_files, only: file_exists, process_id
    use shcontact_core_kinds, only: wp, i8
@@ -19,7 +20,9 @@ module test_app
    use shcontact_io_results, only: read_result_summary, case_group_name
    use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_read, h5_exists, &
       h5_read_attribute
-   use shcontact_case_result, only: case_summary_type
+   use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
+      summary_value, summary_column_used
+   use shcontact_geometry_track, only: side_right, side_left
    implicit none
    private
    public :: collect_app
@@ -82,7 +85,8 @@ contains
          new_unittest('prescribed_default_unchanged', test_prescribed_unchanged), &
          new_unittest('kinematic_case_equals_library', test_kinematic_case), &
          new_unittest('kinematic_sweep', test_kinematic_sweep), &
-         new_unittest('sweep_memory_bounded', test_memory_bound) &
+         new_unittest('sweep_memory_bounded', test_memory_bound), &
+         new_unittest('both_wheels_equal_library', test_both_wheels) &
          ]
    end subroutine collect_app
 
@@ -902,5 +906,114 @@ contains
       read (text(i + len(key):), *, iostat=stat) value
       if (stat /= 0) value = -1
    end function integer_after
+
+   !> The program equals the library bit for bit in every /summary column it writes, and in the
+   !> patch counts, for both wheels, with prescribed creepages (`solve`) and kinematic
+   !> (`solve_kinematic`), on the headline case (t_y = 4.733 mm, 64.7 kN; the left wheel at the
+   !> mirrored t_y = -4.733 mm, y_track < 0). Both go through the same pipeline stages
+   !> (shcontact_pipeline_stages); before they did, the program's left wheel had y_track
+   !> without the side factor (-737.785 mm instead of the library's -737.822 mm).
+   subroutine test_both_wheels(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: side_names(2) = ['right', 'left ']
+      integer, parameter :: sides(2) = [side_right, side_left]
+      ! The left wheel's case is the right one's mirror image.
+      character(len=*), parameter :: t_y_text(2) = ['4.733 ', '-4.733']
+      real(wp), parameter :: t_y(2) = [4.733_wp, -4.733_wp]
+      character(len=:), allocatable :: dir, name
+      character(len=72) :: track_line, position_line
+      type(case_summary_type), allocatable :: s(:)
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: lerr
+      logical :: kinematic
+      integer :: stat, iside, mode, k
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('wheels')
+      do iside = 1, 2
+         do mode = 1, 2
+            kinematic = mode == 2
+            name = trim(side_names(iside))//merge('_kinematic ', '_prescribed', kinematic)
+            track_line = "&track side = '"//trim(side_names(iside))//"' /"
+            position_line = '&position t_y = '//trim(t_y_text(iside))//' /'
+            if (kinematic) then
+               call write_lines(dir//'/'//trim(name)//'.nml', [position_line, &
+                  kinematic_case(2:), track_line])
+            else
+               call write_lines(dir//'/'//trim(name)//'.nml', [position_line, track_line])
+            end if
+            stat = run_program(dir, 'run '//trim(name)//'.nml -q -o '//trim(name)//'.h5')
+            call check(error, stat, 0, message=name//': '//file_text(dir//'/err.txt'))
+            if (allocated(error)) return
+            call read_summaries(error, dir//'/'//trim(name)//'.h5', s)
+            if (allocated(error)) return
+            ! The library from its defaults, which are those of the program's case files.
+            call solver%init('builtin:S1002', 'builtin:UIC60', lerr, side=sides(iside))
+            if (.not. allocated(lerr)) then
+               if (kinematic) then
+                  call solver%solve_kinematic(wheelset_state_type(y_ws=t_y(iside), yaw=0.004_wp, &
+                     v_forward=30000.0_wp, pitch_rate=pure_rolling_pitch_rate(30000.0_wp, &
+                     460.0_wp)), contact_load_type(load_vertical_force, 64.7e3_wp), r, lerr)
+               else
+                  call solver%solve(t_y(iside), 0.0_wp, contact_load_type(load_normal_force, &
+                     64.7e3_wp), creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp), r, lerr)
+               end if
+            end if
+            if (allocated(lerr)) then
+               call test_failed(error, name//', library: '//lerr%message)
+               return
+            end if
+            call check(error, s(1)%stat == 0 .and. s(1)%n_patches == r%n_patches .and. &
+               s(1)%n_loaded == r%n_loaded .and. s(1)%main_patch == r%main_patch, &
+               message=name//': status and patches')
+            if (allocated(error)) return
+            call check(error, (r%main%y_track < 0.0_wp) .eqv. (sides(iside) == side_left), &
+               message=name//': the reference point is not on the wheel''s side of the track')
+            if (allocated(error)) return
+            do k = 1, n_summary_columns
+               if (.not. summary_column_used(k, kinematic)) cycle
+               call check(error, same_bits([summary_value(s(1), k)], &
+                  [library_column(r, trim(summary_columns(1, k)))]), message=name//': /summary/'// &
+                  trim(summary_columns(1, k))//' differs from the library')
+               if (allocated(error)) return
+            end do
+         end do
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_both_wheels
+
+   !> The library's value of a /summary column: the track-frame totals or the main patch's
+   !> value (NaN for a column this test does not know, so that a new column fails the test until
+   !> it is added here).
+   function library_column(r, column) result(value)
+      type(contact_result_type), intent(in) :: r
+      character(len=*), intent(in) :: column
+      real(wp) :: value
+      select case (column)
+      case ('fn_total'); value = r%track%fn
+      case ('fx_total'); value = r%track%fx
+      case ('fy_total'); value = r%track%fy
+      case ('fz_total'); value = r%track%fz
+      case ('fn'); value = r%main%fn
+      case ('fx'); value = r%main%fx
+      case ('fy'); value = r%main%fy
+      case ('mz'); value = r%main%mz
+      case ('fx_norm'); value = r%main%fx_norm
+      case ('fy_norm'); value = r%main%fy_norm
+      case ('coulomb_ratio'); value = r%main%coulomb_ratio
+      case ('adhesion_fraction'); value = r%main%adhesion_fraction
+      case ('delta'); value = r%main%approach
+      case ('area'); value = r%main%area
+      case ('p_max'); value = r%main%p_max
+      case ('gamma0'); value = r%main%gamma0
+      case ('r0'); value = r%main%r0
+      case ('y_track'); value = r%main%y_track
+      case ('x_track'); value = r%main%x_track
+      case ('nu_x'); value = r%main%nu_x
+      case ('nu_y'); value = r%main%nu_y
+      case ('phi'); value = r%main%phi
+      case default; value = ieee_value(value, ieee_quiet_nan)
+      end select
+   end function library_column
 
 end module test_app

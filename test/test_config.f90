@@ -9,7 +9,11 @@ module test_config
       read_config_text, config_namelist, axis_geometry, axis_load, n_sweep_axes, &
       sweep_axis_names
    use shcontact_io_text, only: format_real
-   use shcontact_io_config_variables, only: variables
+   use shcontact_io_config_variables, only: variables, variable_choices, k_choice
+   use shcontact_core_choices, only: choice_list
+   use shcontact_io_config_choices, only: load_mode_force, load_mode_vertical
+   use shcontact_tangential_options, only: method_fastsim_sh, bound_clipped, bound_parabolic, &
+      bound_weighted, spin_uniform, spin_additive
    use shcontact_io_files, only: delete_file, process_id
    implicit none
    private
@@ -166,7 +170,7 @@ contains
       if (allocated(error)) return
       call check(error, c%creepage%phi, 2.74e-4_wp)
       if (allocated(error)) return
-      call check(error, c%tangential%method == 'fastsim-sh', message='FASTSIM_SH by default')
+      call check(error, c%tangential%method == method_fastsim_sh, message='FASTSIM_SH by default')
       if (allocated(error)) return
       call check(error, c%wants_field('traction'), message='a single case stores its fields')
    end subroutine test_defaults
@@ -192,7 +196,7 @@ contains
       if (allocated(error)) return
       call check(error, c%creepage%nu_x, 0.58e-3_wp, message='untouched variable keeps default')
       if (allocated(error)) return
-      call check(error, c%tangential%bound == 'clipped', message='choices are case-insensitive')
+      call check(error, c%tangential%bound == bound_clipped, message='choices are case-insensitive')
       if (allocated(error)) return
       call check(error, c%tangential%n_elements, 40)
       if (allocated(error)) return
@@ -212,7 +216,7 @@ contains
       if (allocated(error)) return
       call check(error, c%creepage%nu_x, 1.0e-3_wp)
       if (allocated(error)) return
-      call check(error, c%tangential%bound == 'parabolic', message='unquoted string override')
+      call check(error, c%tangential%bound == bound_parabolic, message='unquoted string override')
       if (allocated(error)) return
       call check(error, c%n_cases(), 3, message='a list override replaces the whole list')
       if (allocated(error)) return
@@ -329,7 +333,7 @@ contains
       if (allocated(error)) return
       ! Loop order: bound, nu_x, phi (phi fastest).
       p = c%case_point(1)
-      call check(error, p%nu_x == 0.0_wp .and. p%phi == 0.0_wp .and. p%bound == 'weighted', &
+      call check(error, p%nu_x == 0.0_wp .and. p%phi == 0.0_wp .and. p%bound == bound_weighted, &
          message='first case')
       if (allocated(error)) return
       p = c%case_point(2)
@@ -341,10 +345,10 @@ contains
       if (allocated(error)) return
       p = c%case_point(60)
       call check(error, p%nu_x == 2.0e-3_wp .and. p%phi == 2.0e-3_wp .and. &
-         p%bound == 'weighted', message='last value of a range is exact')
+         p%bound == bound_weighted, message='last value of a range is exact')
       if (allocated(error)) return
       p = c%case_point(61)
-      call check(error, p%bound == 'clipped' .and. p%nu_x == 0.0_wp, message='outer axis')
+      call check(error, p%bound == bound_clipped .and. p%nu_x == 0.0_wp, message='outer axis')
       if (allocated(error)) return
       call check(error, p%nu_y, 0.061e-3_wp, message='unswept input keeps its base value')
       if (allocated(error)) return
@@ -396,6 +400,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c, d
       character(len=:), allocatable :: text
+      integer :: i
       call load_valid('', [character(len=60) :: 'creepage%nu_x=1.23456789012345e-4', &
          "profiles%wheel=it's.prw", 'sweep%phi=0,2e-3', 'sweep%phi_points=21', &
          'sweep%bound=weighted,clipped', 'track%rail_canted=.true.'], c, error)
@@ -413,8 +418,14 @@ contains
       call check(error, all(len_trim(variables%help) < len(variables%help)), &
          message='a variable''s help text fills its field and may be cut')
       if (allocated(error)) return
-      call check(error, index(text, "or 'spin' (L_phi, Kalker's FASTSIM)") > 0 .and. &
-         index(text, "or 'none' (the march's forces)") > 0, message='help comments cut')
+      ! Every choice variable's line lists the registry's choices (--check shows them).
+      do i = 1, size(variables)
+         if (variables(i)%kind /= k_choice) cycle
+         call check(error, index(text, '  '//trim(variables(i)%name)//' = ') > 0 .and. &
+            index(text, choice_list(variable_choices(variables(i)%group, variables(i)%name))) &
+            > 0, message='choices of '//trim(variables(i)%name)//' not printed')
+         if (allocated(error)) return
+      end do
    end subroutine test_round_trip
 
    subroutine test_format_real(error)
@@ -448,8 +459,8 @@ contains
 
       call load_valid('', no_overrides, c, error)
       if (allocated(error)) return
-      call check(error, .not. c%is_kinematic() .and. c%load%mode == 'force' .and. &
-         c%tangential%spin_model == 'uniform', message='kinematics off by default, unchanged '// &
+      call check(error, .not. c%is_kinematic() .and. c%load%mode == load_mode_force .and. &
+         c%tangential%spin_model == spin_uniform, message='kinematics off by default, unchanged '// &
          'defaults of the prescribed-creepage mode')
       if (allocated(error)) return
       do ia = 1, n_sweep_axes
@@ -470,10 +481,10 @@ contains
       if (allocated(error)) return
       call check(error, c%is_kinematic(), message='mode on')
       if (allocated(error)) return
-      call check(error, c%load%mode == 'vertical', message='kinematic mode loads the wheel '// &
-         "vertically unless &load mode is given: '"//trim(c%load%mode)//"'")
+      call check(error, c%load%mode == load_mode_vertical, message='kinematic mode loads the wheel '// &
+         'vertically unless &load mode is given')
       if (allocated(error)) return
-      call check(error, c%tangential%spin_model == 'additive', message='additive spin model')
+      call check(error, c%tangential%spin_model == spin_additive, message='additive spin model')
       if (allocated(error)) return
       call check(error, .not. c%kinematics%pitch_rate_given, message='pitch rate not given')
       if (allocated(error)) return
@@ -496,7 +507,7 @@ contains
          'kinematics%pitch_rate=-60', 'load%mode=force'], c, error)
       if (allocated(error)) return
       p = c%case_point(1)
-      call check(error, p%pitch_rate == -60.0_wp .and. c%load%mode == 'force' .and. &
+      call check(error, p%pitch_rate == -60.0_wp .and. c%load%mode == load_mode_force .and. &
          p%v_forward == 30000.0_wp, message='given pitch rate and load mode; V = 30 m/s default')
    end subroutine test_kinematics
 

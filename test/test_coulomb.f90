@@ -19,8 +19,8 @@ module test_coulomb
    use shcontact_normal_patch, only: normal_patch_type, ellipse_strip_patch
    use shcontact_tangential_options, only: tangential_options_type, method_fastsim, &
       bound_ellipsoidal, bound_clipped, spin_additive, spin_geometric, &
-      spin_flexibility_spin, spin_flexibility_longitudinal, flexibility_strip, &
-      flexibility_carter, correction_none, correction_exact_ellipse
+      spin_flexibility_spin, spin_flexibility_longitudinal, correction_none, &
+      correction_exact_ellipse
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
@@ -29,7 +29,10 @@ module test_coulomb
    use shcontact_tangential_ellipse_correction, only: table_node_case
    use shcontact_tangential_ellipse_table, only: table_t_phi
    use test_validation, only: read_columns, manchester_profiles, skip_without_profiles, &
-      summary_values
+      summary_values, two_patch_solution
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
+      contact_result_type, load_vertical_force
    use test_external_data, only: external_file
    implicit none
    private
@@ -51,6 +54,9 @@ contains
       testsuite = [ &
          new_unittest('ellipse_sets_within_coulomb', test_ellipse_sets), &
          new_unittest('position_sets_within_coulomb', test_position_sets), &
+         new_unittest('position_sets_alternative_reductions', test_position_alternatives), &
+         new_unittest('two_lobe_positions_within_coulomb', test_two_lobe_positions), &
+         new_unittest('kinematic_sample_within_coulomb', test_kinematic_sample), &
          new_unittest('random_doe_near_full_slip', test_random_doe), &
          new_unittest('coulomb_ratio_of_corrected_tractions', test_ratio_after_correction) &
          ]
@@ -120,9 +126,26 @@ contains
 
    !> Every patch our geometry finds at each position of data/exact/ (one or two), each under
    !> F_n = 64.7 kN, with every case of its DOE (216), and the shared DOEs of ty0 (10³) and ty5p8
-   !> (20³): the defaults and without the correction. Needs the external data (Manchester
+   !> (20³): the defaults (normal reduction `coupled`) and without the correction, as the
+   !> validation runs them (doc/validation.md §6.4). Needs the external data (Manchester
    !> profiles, CONTACT's shared DOEs; SHCONTACT_EXTERNAL_DATA).
    subroutine test_position_sets(error)
+      type(error_type), allocatable, intent(out) :: error
+      call position_sets('coupled', .true., error)
+   end subroutine test_position_sets
+
+   !> The positions of data/exact/ as in test_position_sets with the normal reductions the
+   !> validation compares beside the default, `local-hertz` and `constant` (Table 10).
+   subroutine test_position_alternatives(error)
+      type(error_type), allocatable, intent(out) :: error
+      call position_sets('local-hertz', .false., error)
+      if (.not. allocated(error)) call position_sets('constant', .false., error)
+   end subroutine test_position_alternatives
+
+   !> The DOEs of every position with one normal reduction (and the shared ones when asked).
+   subroutine position_sets(reduction, shared, error)
+      character(len=*), intent(in) :: reduction
+      logical, intent(in) :: shared
       type(error_type), allocatable, intent(out) :: error
       type(profile_type) :: wheel, rail
       type(track_type) :: track
@@ -146,6 +169,7 @@ contains
             '/doe_6x6x6_exact_nonhertz.csv', 216, error)
          if (allocated(error)) return
       end do
+      if (.not. shared) return
       doe = external_file('reference/ty0_literal/doe_10x10x10_exact_nonhertz.csv', error)
       if (.not. allocated(error)) call position_doe(0.0_wp, doe, 1000, error)
       if (allocated(error)) return
@@ -164,28 +188,142 @@ contains
          real(wp), allocatable :: v(:, :)
          integer :: p
 
-         call read_columns(doe, [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m'], v, error)
+         call read_doe(doe, n_expected, v, error)
          if (allocated(error)) return
-         call check(error, size(v, 1) == n_expected, message=doe//': cases read')
-         if (allocated(error)) return
-         ! CONTACT's creepages (rail relative to wheel) → ours: −ν; φ in rad/mm.
-         v(:, 1:2) = -v(:, 1:2)
-         v(:, 3) = -1.0e-3_wp*v(:, 3)
          call find_contact_patches(wheel, rail, track, wheelset_position_type(y_ws=y_ws), &
             contact_options_type(), geometry, err)
          if (.not. allocated(err)) call new_normal_options(options, err, &
-            method='semi-hertz', n_strips=100)
+            method='semi-hertz', reduction=reduction, n_strips=100)
          do p = 1, size(geometry)
             if (allocated(err)) exit
             call prepare_normal_contact(contact, geometry(p), options, material_type(), err)
             if (.not. allocated(err)) call solve_load(contact, 64700.0_wp, patch, err)
             if (allocated(err)) exit
-            call check_cases(patch, material_type(), v, doe//', patch '//str_int(p), error)
+            call check_cases(patch, material_type(), v, doe//', '//reduction//', patch '// &
+               str_int(p), error)
             if (allocated(error)) return
          end do
          if (allocated(err)) call test_failed(error, doe//': '//err%message)
       end subroutine position_doe
-   end subroutine test_position_sets
+   end subroutine position_sets
+
+   !> A DOE file's creepages in our sign: CONTACT's (rail relative to wheel) → −ν; φ in rad/mm.
+   subroutine read_doe(doe, n_expected, v, error)
+      character(len=*), intent(in) :: doe
+      integer, intent(in) :: n_expected
+      real(wp), allocatable, intent(out) :: v(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      call read_columns(doe, [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m'], v, error)
+      if (allocated(error)) return
+      call check(error, size(v, 1) == n_expected, message=doe//': cases read')
+      if (allocated(error)) return
+      v(:, 1:2) = -v(:, 1:2)
+      v(:, 3) = -1.0e-3_wp*v(:, 3)
+   end subroutine read_doe
+
+   !> The two-lobe positions of data/exact/ (5.0 and 5.3 mm) as the validation solves them
+   !> (doc/validation.md §6.5): both patches under the vertical load for which their normal
+   !> forces add up to 64.7 kN, the DOE's creepages carried to each patch's reference point by
+   !> the rigid slip, ν_x,k = ν_x − φ (y_k − y_G); the defaults and without the correction.
+   subroutine test_two_lobe_positions(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: names(2) = [character(len=6) :: 'yws5p0', 'yws5p3']
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(normal_patch_type), allocatable :: patches(:)
+      real(wp), allocatable :: v(:, :), c(:, :)
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr, y_k
+      integer :: ip, k
+
+      do ip = 1, size(names)
+         call summary_values('data/exact/'//names(ip)//'/summary.csv', y_ws, y_geo, pen, &
+            ycp_r, delt, ycp_tr, error)
+         if (allocated(error)) return
+         call two_patch_solution(y_ws, geometry, patches, error)
+         if (allocated(error)) return
+         call check(error, size(patches) == 2, message=names(ip)//': two patches expected')
+         if (allocated(error)) return
+         call read_doe('data/exact/'//names(ip)//'/doe_6x6x6_exact_nonhertz.csv', 216, v, &
+            error)
+         if (allocated(error)) return
+         do k = 1, size(patches)
+            ! Our sign: ν_x,k = ν_x − φ (y_k − y_G) holds in both signs (ν and φ flip together).
+            y_k = (geometry(k)%y_track - ycp_tr)/cos(delt)
+            c = v
+            c(:, 1) = v(:, 1) - v(:, 3)*(y_k - y_geo)
+            call check_cases(patches(k), material_type(), c, names(ip)//', patch '// &
+               str_int(k), error)
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_two_lobe_positions
+
+   !> The shared kinematic sample (CONTACT module 1, 35 cases solved by CONTACT) through the
+   !> kinematic call as the validation runs it (doc/validation.md §6): every loaded patch of
+   !> every case within Coulomb, with the defaults, with the additive spin model (the one for
+   !> kinematics), and without the correction.
+   subroutine test_kinematic_sample(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=12), parameter :: names(6) = [character(len=12) :: 'y_ws_mm', 'yaw_rad', &
+         'vs_mm_s', 'vy_mm_s', 'vyaw_rad_s', 'vpitch_rad_s']
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(track_type) :: track
+      type(tangential_options_type) :: options
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: rows(:, :)
+      character(len=:), allocatable :: sample, wheel, rail
+      real(wp) :: f
+      integer :: i, k, ic, n_patches
+
+      call skip_without_profiles(error)
+      if (allocated(error)) return
+      sample = external_file('reference/kinematic_sample/kinematic_sample.csv', error)
+      if (.not. allocated(error)) wheel = external_file('profiles/MBench_S1002_v3.prw', error)
+      if (.not. allocated(error)) rail = external_file('profiles/MBench_UIC60_v3.prr', error)
+      if (allocated(error)) return
+      call read_columns(sample, names, rows, error, row_tag='ok')
+      if (allocated(error)) return
+      track%rail_canted = .true.
+      call solver%init(wheel, rail, err, track=track, material=table_material())
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      n_patches = 0
+      do ic = 1, 3
+         options = tangential_options_type()
+         if (ic == 2) options%spin_model = spin_additive
+         if (ic == 3) options%correction = correction_none
+         call solver%set_options(err, tangential=options)
+         if (allocated(err)) exit
+         do i = 1, size(rows, 1)
+            associate (r => rows(i, :))
+               call solver%solve_kinematic(wheelset_state_type(y_ws=r(1), yaw=r(2), &
+                  v_forward=r(3), v_lateral=r(4), yaw_rate=r(5), pitch_rate=r(6)), &
+                  contact_load_type(load_vertical_force, 64700.0_wp), result, err)
+            end associate
+            if (allocated(err)) exit
+            do k = 1, result%n_loaded
+               if (.not. (result%patch(k)%fn > 0.0_wp)) cycle
+               n_patches = n_patches + 1
+               f = hypot(result%patch(k)%fx_norm, result%patch(k)%fy_norm)
+               if (f > 1.0_wp + slack) then
+                  call test_failed(error, 'kinematic sample case '//str_int(i)// &
+                     ', options '//str_int(ic)//', patch '//str_int(k)//': |f| = '//str_real(f))
+                  return
+               end if
+            end do
+         end do
+         if (allocated(err)) exit
+      end do
+      if (allocated(err)) then
+         call test_failed(error, 'kinematic sample: '//err%message)
+         return
+      end if
+      call check(error, size(rows, 1) == 35 .and. n_patches >= 3*35, message= &
+         'kinematic sample: '//str_int(size(rows, 1))//' cases, '//str_int(n_patches)// &
+         ' loaded patches')
+   end subroutine test_kinematic_sample
 
    !> Solve the creepages (our sign, rows ν_x, ν_y, φ in rad/mm) on a patch with the defaults and
    !> with correction 'none'; fail where |f| > 1 + slack.
@@ -235,7 +373,7 @@ contains
    !> A seeded random DOE near full slip: on six patches (Hertz ellipses of a/b = 0.2, 1, 4 and
    !> 20, an ellipse with an uneven load and a two-lobe patch), creepages whose linear force is
    !> 0.5 to 20 times μF_n in random directions, with and without spin, every bound × correction
-   !> (and classical FASTSIM on the ellipses), spin model, spin flexibility, flexibility and n_x
+   !> (and classical FASTSIM on the ellipses), spin model, spin flexibility and n_x
    !> (10 or 50) drawn per case: |f| ≤ 1 + 1e-12 everywhere.
    subroutine test_random_doe(error)
       type(error_type), allocatable, intent(out) :: error
@@ -285,7 +423,6 @@ contains
                      options%spin_model = spin_additive + int(4*uniform(seed))
                      options%spin_flexibility = merge(spin_flexibility_spin, &
                         spin_flexibility_longitudinal, uniform(seed) < 0.5_wp)
-                     options%flexibility = flexibility_strip + int(3*uniform(seed))
                      options%n_elements = merge(10, 50, uniform(seed) < 0.5_wp)
                      if (imethod == 2) then
                         call prepare_fastsim(ws, a, b, 64700.0_wp, material, options, 60, err, &

@@ -90,7 +90,7 @@ contains
          if (allocated(lerr)) exit
          ! The table's defect at the node, in our sign (D is odd: the same table).
          call prepare_ellipse_correction(node, patch%ellipse_a, patch%ellipse_b, patch%load, &
-            table_material(), 1, 0.0_wp, 1.0_wp, 0.0_wp)
+            table_material(), 0.0_wp, 1.0_wp, 0.0_wp)
          call ellipse_defect(node, creepage%nu_x, creepage%nu_y, creepage%phi, dfx, dfy)
          worst = max(worst, abs((-rows(5, i) - result%fx_norm) - dfx), &
             abs((-rows(6, i) - result%fy_norm) - dfy))
@@ -181,7 +181,7 @@ contains
       real(wp) :: x0, y0, x1, y1
       real(wp), parameter :: nx = 7.0e-4_wp, ny = -4.0e-4_wp, ph = 9.0e-4_wp
 
-      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, 64700.0_wp, table_material(), 1, &
+      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, 64700.0_wp, table_material(), &
          0.0_wp, 1.0_wp, 0.0_wp)
       call ellipse_defect(c, nx, ny, ph, x0, y0)
       call check(error, abs(x0) + abs(y0) > 1.0e-3_wp, message='defect expected here')
@@ -213,7 +213,7 @@ contains
       real(wp), parameter :: s = 0.005_wp, f_linear = -3.0_wp*s
 
       call ellipse_strip_patch(6.0_wp, 4.5_wp, 64700.0_wp, 100, 460.0_wp, patch)
-      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, patch%load, table_material(), 1, &
+      call prepare_ellipse_correction(c, 6.0_wp, 4.5_wp, patch%load, table_material(), &
          0.0_wp, 1.0_wp, 0.0_wp)
       call check(error, all(abs(table_linear(1:2, :)/3.0_wp - 0.31_wp) < 0.005_wp) .and. &
          all(abs(table_linear(3, :))/3.0_wp < 0.001_wp), &

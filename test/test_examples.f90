@@ -66,6 +66,7 @@ contains
          new_unittest('python_ctypes_example', test_python), &
          new_unittest('python_finds_library_by_pkg_config', test_python_pkg_config), &
          new_unittest('flat_examples_fields_and_arrays', test_flat_extras), &
+         new_unittest('flat_examples_wheelset', test_flat_wheelset), &
          new_unittest('interfaces_agree', test_agree), &
          new_unittest('doc_api_numbers', test_doc_numbers), &
          new_unittest('no_allocation_in_solve', test_allocations), &
@@ -302,6 +303,54 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_flat_extras
+
+   !> The F77 and C examples' wheelset call (SHC_SOLVE_WS, shcontact_solve_wheelset and a wheel's
+   !> value by name) prints the Fortran wheelset_solver_type's totals and wheels, the same in both.
+   subroutine test_flat_wheelset(error)
+      use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
+         wheel_left
+      use shcontact_geometry_kinematics, only: wheelset_state_type
+      use shcontact_core_error, only: lib_error => error_type
+      use shcontact_api_solver, only: contact_load_type, load_vertical_force
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: ws_keys(6) = [character(len=17) :: 'ws_fx', 'ws_fy', &
+         'ws_fz', 'ws_mz', 'ws_right_n_loaded', 'ws_left_sum_fy']
+      character(len=3), parameter :: names(2) = ['f77', 'c  ']
+      type(wheelset_solver_type) :: ws
+      type(wheelset_result_type) :: r
+      type(lib_error), allocatable :: err
+      real(wp) :: expected(size(ws_keys)), found(size(ws_keys), 2)
+      integer :: i, j
+
+      call ensure_installed(error)
+      if (allocated(error)) return
+      if (.not. (exists(output('f77')) .and. exists(output('c')))) then
+         call skip_test(error, 'no F77 or C example output (run the suite)')
+         return
+      end if
+      call ws%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call ws%solve(wheelset_state_type(y_ws=5.0_wp, yaw=2.0e-3_wp, &
+         roll=0.0_wp, v_forward=30.0e3_wp, v_lateral=10.0_wp, v_vertical=0.0_wp, &
+         roll_rate=0.0_wp, yaw_rate=0.01_wp, pitch_rate=-30.0e3_wp/460.0_wp), &
+         contact_load_type(load_vertical_force, 64.7e3_wp), &
+         contact_load_type(load_vertical_force, 60.0e3_wp), r, err)
+      if (allocated(err)) then
+         call test_failed(error, 'Fortran wheelset: '//err%message)
+         return
+      end if
+      expected = [r%fx, r%fy, r%fz, r%mz, real(r%wheel(wheel_right)%n_loaded, wp), &
+         r%wheel(wheel_left)%track%fy]
+      do j = 1, size(names)
+         do i = 1, size(ws_keys)
+            found(i, j) = value_of(output(trim(names(j))), trim(ws_keys(i)))
+            call check(error, found(i, j), expected(i), rel=.true., thr=round_off, &
+               message=trim(names(j))//' example: '//trim(ws_keys(i)))
+            if (allocated(error)) return
+         end do
+      end do
+      call check(error, all(transfer(found(:, 1), 0_i8, size(ws_keys)) == &
+         transfer(found(:, 2), 0_i8, size(ws_keys))), message='F77 and C wheelset differ')
+   end subroutine test_flat_wheelset
 
    !> The three interfaces print the same numbers, bit for bit.
    subroutine test_agree(error)

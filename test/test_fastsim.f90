@@ -6,7 +6,7 @@ module test_fastsim
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_core_material, only: material_type
-   use shcontact_tangential_kalker, only: kalker_coefficients, kalker_scheme_contact
+   use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, bound_ellipsoidal, &
       bound_parabolic
    use shcontact_tangential_creepage, only: creepage_type
@@ -192,14 +192,6 @@ contains
          call check(error, abs(res%fx_norm) < 1e-12_wp, message='§3.5 f_x = 0')
          if (allocated(error)) return
       end do
-      options%bound = bound_parabolic
-      options%kalker_scheme = kalker_scheme_contact
-      options%n_elements = 200
-      call solve_fastsim(ws, ref_a, ref_b, ref_load, reference_material(), &
-         creepage_type(nu_y=ref_eta, phi=ref_phi), options, 200, res, lerr)
-      call check(error, .not. allocated(lerr), message='solve_fastsim failed')
-      if (allocated(error)) return
-      call check(error, res%fy_norm, expected(2), thr=5e-3_wp, message='§3.5 f_y, CONTACT scheme')
    end subroutine test_reference_case
 
    !> First-order convergence of the reference case: each doubling of n roughly halves the change.

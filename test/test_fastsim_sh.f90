@@ -12,9 +12,7 @@ module test_fastsim_sh
       method_fastsim, method_fastsim_sh, bound_ellipsoidal, bound_parabolic, bound_weighted, &
       bound_weighted_slip, bound_clipped, spin_additive, spin_uniform, spin_scaled, &
       spin_geometric, spin_flexibility_longitudinal, spin_flexibility_spin, parse_method, parse_bound, &
-      parse_spin_model, parse_kalker_scheme, parse_spin_flexibility, bound_name, method_name, &
-      spin_model_name, flexibility_strip, flexibility_patch, flexibility_carter, &
-      parse_flexibility, flexibility_name
+      parse_spin_model, parse_spin_flexibility, bound_name, method_name, spin_model_name
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
@@ -55,9 +53,7 @@ contains
          new_unittest('option_parsing', test_options), &
          new_unittest('dispatch_and_patches', test_patches), &
          new_unittest('no_reallocation', test_no_reallocation), &
-         new_unittest('invalid_patch', test_invalid_patch), &
-         new_unittest('flexibility_carter', test_flexibility_carter), &
-         new_unittest('flexibility_patch_is_strip_on_hertz', test_flexibility_patch) &
+         new_unittest('invalid_patch', test_invalid_patch) &
          ]
    end subroutine collect_fastsim_sh
 
@@ -367,74 +363,6 @@ contains
       end do
    end subroutine test_coulomb
 
-   !> `flexibility = 'carter'` keeps the linear theory (q − 1 = O(ε): 5e-6 at ν_y = 1e-7),
-   !> stiffens partial slip (|f_y| larger at ν_y = 1 ‰), leaves full slip unchanged and pure spin
-   !> within 5 % (only the strips' longitudinal −φy slip is stiffened);
-   !> the names parse both ways.
-   subroutine test_flexibility_carter(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(normal_patch_type) :: patch
-      type(tangential_patch_type) :: strip, carter
-      type(tangential_options_type) :: opt_strip, opt_carter
-      type(creepage_type) :: cases(4)
-      type(lib_error), allocatable :: err
-      integer :: k, code
-
-      patch = hertz_patch(ref_a, ref_b, ref_load, 50, -0.03_wp)
-      opt_strip = options_with(bound_weighted, 50, spin_uniform)
-      opt_carter = opt_strip
-      opt_carter%flexibility = flexibility_carter
-      cases = [creepage_type(nu_y=1.0e-7_wp), creepage_type(nu_y=1.0e-3_wp), &
-         creepage_type(phi=1.0e-3_wp), creepage_type(nu_x=0.5_wp)]
-      do k = 1, size(cases)
-         call sh_case(patch, cases(k), opt_strip, strip, error)
-         if (allocated(error)) return
-         call sh_case(patch, cases(k), opt_carter, carter, error)
-         if (allocated(error)) return
-         select case (k)
-         case (2)
-            call check(error, abs(carter%fy_norm) > abs(strip%fy_norm) + 0.01_wp, &
-               message='carter: partial slip not stiffened')
-         case (3)
-            ! Only the rigid-spin longitudinal slip −φy_i of each strip is stiffened, not R_φ.
-            call check(error, carter%fy, strip%fy, thr=0.05_wp, rel=.true., &
-               message='carter: pure spin changed by more than 5 %')
-         case (4)
-            call check(error, hypot(carter%fx_norm, carter%fy_norm), &
-               hypot(strip%fx_norm, strip%fy_norm), thr=1e-12_wp, message='carter: full slip')
-         case default
-            call check(error, carter%fy, strip%fy, thr=1e-4_wp, rel=.true., &
-               message='carter: linear theory changed')
-         end select
-         if (allocated(error)) return
-      end do
-      call parse_flexibility('Carter', code, err)
-      call check(error, .not. allocated(err) .and. code == flexibility_carter .and. &
-         flexibility_name(flexibility_strip) == 'strip', message='flexibility names')
-   end subroutine test_flexibility_carter
-
-   !> `flexibility = 'patch'` equals 'strip' on a Hertzian patch (every local ellipse is the
-   !> patch's ellipse), to 1e-3 at 50 strips (the equivalent ellipse is measured on the strips).
-   subroutine test_flexibility_patch(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(normal_patch_type) :: patch
-      type(tangential_patch_type) :: strip, whole
-      type(tangential_options_type) :: options
-      type(creepage_type) :: cr
-
-      patch = hertz_patch(ref_a, ref_b, ref_load, 200, -0.03_wp)
-      cr = creepage_type(nu_x=2.0e-4_wp, nu_y=-3.0e-4_wp, phi=2.0e-4_wp)
-      options = options_with(bound_weighted, 50, spin_uniform)
-      call sh_case(patch, cr, options, strip, error)
-      if (allocated(error)) return
-      options%flexibility = flexibility_patch
-      call sh_case(patch, cr, options, whole, error)
-      if (allocated(error)) return
-      call check(error, whole%fx, strip%fx, thr=1e-3_wp, rel=.true., message='patch: F_x')
-      if (allocated(error)) return
-      call check(error, whole%fy, strip%fy, thr=1e-3_wp, rel=.true., message='patch: F_y')
-   end subroutine test_flexibility_patch
-
    !> max |p|/(μ p_n,e) over the contact elements of the fields (exterior ones have p_n,e = 0).
    pure real(wp) function field_coulomb_ratio(res) result(ratio)
       type(tangential_patch_type), intent(in) :: res
@@ -714,9 +642,6 @@ contains
       if (allocated(error)) return
       call parse_spin_model('geometric', code, lerr)
       call check(error, code == spin_geometric, message='spin model geometric')
-      if (allocated(error)) return
-      call parse_kalker_scheme('contact', code, lerr)
-      call check(error, .not. allocated(lerr), message='kalker scheme contact')
       if (allocated(error)) return
       call parse_spin_flexibility('longitudinal', code, lerr)
       call check(error, code == spin_flexibility_longitudinal, message='spin flexibility')

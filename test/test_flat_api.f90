@@ -12,6 +12,8 @@ module test_flat_api
    public :: shc_create, shc_create_arrays, shc_destroy, shc_errmsg, shc_get_profile
    public :: shc_set_material, shc_set_track, shc_set_option
    public :: shc_solve, shc_patch, shc_solve_kin, shc_patch_kin, shc_field_size, shc_fields
+   public :: shc_set_value, shc_solve_state, shc_get_value, shc_get_field, shc_create_ws, &
+      shc_solve_ws, shc_ws_wheel
    public :: to_chars, from_chars, bitwise_equal
 
    !> The legacy entry points are external procedures.
@@ -103,6 +105,49 @@ module test_flat_api
          integer, intent(out) :: state(nx, ny)
          integer, intent(out) :: istat
       end subroutine shc_fields
+      subroutine shc_set_value(ihandle, key, x, istat)
+         integer, intent(in) :: ihandle
+         character(len=*), intent(in) :: key
+         double precision, intent(in) :: x
+         integer, intent(out) :: istat
+      end subroutine shc_set_value
+      subroutine shc_solve_state(ihandle, istat)
+         integer, intent(in) :: ihandle
+         integer, intent(out) :: istat
+      end subroutine shc_solve_state
+      subroutine shc_get_value(ihandle, key, ipatch, x, istat)
+         integer, intent(in) :: ihandle
+         character(len=*), intent(in) :: key
+         integer, intent(in) :: ipatch
+         double precision, intent(out) :: x
+         integer, intent(out) :: istat
+      end subroutine shc_get_value
+      subroutine shc_get_field(ihandle, key, ipatch, nx, ny, a, istat)
+         integer, intent(in) :: ihandle
+         character(len=*), intent(in) :: key
+         integer, intent(in) :: ipatch, nx, ny
+         double precision, intent(out) :: a(nx, ny)
+         integer, intent(out) :: istat
+      end subroutine shc_get_field
+      subroutine shc_create_ws(ihandle, wheel, rail, istat)
+         integer, intent(out) :: ihandle
+         character(len=*), intent(in) :: wheel, rail
+         integer, intent(out) :: istat
+      end subroutine shc_create_ws
+      subroutine shc_solve_ws(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, &
+            fright, fleft, totals, istat)
+         integer, intent(in) :: ihandle
+         double precision, intent(in) :: yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch
+         integer, intent(in) :: imode
+         double precision, intent(in) :: fright, fleft
+         double precision, intent(out) :: totals(4)
+         integer, intent(out) :: istat
+      end subroutine shc_solve_ws
+      subroutine shc_ws_wheel(ihandle, iside, ipatch, values, istat)
+         integer, intent(in) :: ihandle, iside, ipatch
+         double precision, intent(out) :: values(29)
+         integer, intent(out) :: istat
+      end subroutine shc_ws_wheel
    end interface
 
 contains

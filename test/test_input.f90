@@ -14,7 +14,7 @@ module test_input
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_geometry_kinematics, only: max_yaw
    use shcontact_normal_options, only: normal_options_type
-   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_options, only: tangential_options_type, bound_parabolic
    use shcontact_api_context, only: contact_context_type, context_set_option, &
       context_set_material, context_set_track, context_message, context_solve
    use shcontact_api_values, only: result_value_count
@@ -308,7 +308,7 @@ contains
       if (allocated(error)) return
       call check(error, c%normal%n_strips, 40, message='integer')
       if (allocated(error)) return
-      call check(error, c%tangential%bound, 'parabolic', message='string')
+      call check(error, c%tangential%bound, bound_parabolic, message='choice')
       if (allocated(error)) return
       call check(error, .not. c%track%rail_canted, message='logical')
       if (allocated(error)) return

@@ -4,7 +4,7 @@ module test_kalker
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_tangential_kalker, only: kalker_coefficients, kalker_asymptotes, &
-      kalker_scheme_scaled, kalker_scheme_contact, kalker_table_short, kalker_table_long, &
+      kalker_table_short, kalker_table_long, &
       kalker_table_g, kalker_table_poisson, kalker_blend_start, kalker_blend_end
    implicit none
    private
@@ -17,11 +17,9 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('table_nodes_scaled', test_nodes_scaled), &
-         new_unittest('table_nodes_contact', test_nodes_contact), &
          new_unittest('c11_equals_c22_at_nu_0', test_nu_zero), &
          new_unittest('blend_continuity', test_blend_continuity), &
          new_unittest('asymptotes_below_blend', test_asymptotes), &
-         new_unittest('samples_contact_scheme', test_samples_contact), &
          new_unittest('samples_scaled_scheme', test_samples_scaled) &
          ]
    end subroutine collect_kalker
@@ -29,18 +27,12 @@ contains
    !> Every node of Table E.3 (19 rows × 3 ν × 3 coefficients), default scheme, to round-off.
    subroutine test_nodes_scaled(error)
       type(error_type), allocatable, intent(out) :: error
-      call check_nodes(error, kalker_scheme_scaled, 1)
+      call check_nodes(error, 1)
    end subroutine test_nodes_scaled
 
-   !> CONTACT's scheme reproduces the nodes with g ≥ 0.2 (it uses the asymptotes below g = 0.101).
-   subroutine test_nodes_contact(error)
+   subroutine check_nodes(error, first_row)
       type(error_type), allocatable, intent(out) :: error
-      call check_nodes(error, kalker_scheme_contact, 2)
-   end subroutine test_nodes_contact
-
-   subroutine check_nodes(error, scheme, first_row)
-      type(error_type), allocatable, intent(out) :: error
-      integer, intent(in) :: scheme, first_row
+      integer, intent(in) :: first_row
       real(wp) :: c(3), ab
       integer :: row, inu, long
       character(len=80) :: where
@@ -53,7 +45,7 @@ contains
                ab = kalker_table_g(row)
             end if
             do inu = 1, 3
-               call kalker_coefficients(ab, kalker_table_poisson(inu), c(1), c(2), c(3), scheme)
+               call kalker_coefficients(ab, kalker_table_poisson(inu), c(1), c(2), c(3))
                write (where, '(a,f8.4,a,f5.2)') 'table node a/b =', ab, ', nu =', &
                   kalker_table_poisson(inu)
                if (long == 1) then
@@ -74,15 +66,13 @@ contains
    subroutine test_nu_zero(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: ab, c11, c22, c23
-      integer :: i, scheme
+      integer :: i
 
-      do scheme = kalker_scheme_scaled, kalker_scheme_contact
-         do i = -300, 300
-            ab = 10.0_wp**(0.01_wp*i)
-            call kalker_coefficients(ab, 0.0_wp, c11, c22, c23, scheme)
-            call check(error, c11, c22, thr=1e-13_wp, rel=.true., message='c11 = c22 at nu = 0')
-            if (allocated(error)) return
-         end do
+      do i = -300, 300
+         ab = 10.0_wp**(0.01_wp*i)
+         call kalker_coefficients(ab, 0.0_wp, c11, c22, c23)
+         call check(error, c11, c22, thr=1e-13_wp, rel=.true., message='c11 = c22 at nu = 0')
+         if (allocated(error)) return
       end do
    end subroutine test_nu_zero
 
@@ -116,8 +106,7 @@ contains
    end subroutine test_blend_continuity
 
    !> Below g = 0.08 the default is the asymptote itself; the asymptotes' values at g = 0.1, ν = 0
-   !> are those of doc/theory.md §2.3 (c₁₁ 2.467 for a/b = 0.1, 10.38 for b/a = 0.1); CONTACT's
-   !> scheme switches to them below g = 0.101.
+   !> are those of doc/theory.md §2.3 (c₁₁ 2.467 for a/b = 0.1, 10.38 for b/a = 0.1).
    subroutine test_asymptotes(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: ratios(6) = [0.001_wp, 0.05_wp, 0.079_wp, 1/0.079_wp, 20.0_wp, &
@@ -141,64 +130,40 @@ contains
             message='default scheme = asymptote below g = 0.08')
          if (allocated(error)) return
       end do
-      call kalker_coefficients(0.1005_wp, 0.27_wp, c(1), c(2), c(3), kalker_scheme_contact)
-      call kalker_asymptotes(0.1005_wp, 0.27_wp, ca(1), ca(2), ca(3))
-      call check(error, all(abs(c - ca) <= 1e-15_wp*ca), &
-         message='CONTACT scheme = asymptote below g = 0.101')
    end subroutine test_asymptotes
 
-   !> doc/theory.md §2.3, CONTACT scheme: (ν, a/b) = (0.27, 1): 4.1903/3.6932/1.4820;
-   !> (0.28, 2): 5.2037/4.9715/2.6566; (0.27, 1.3294): 4.5151/4.1268/1.8611 (to the printed
-   !> 4 decimals); ν = 0.27, a/b = 1.5, 4, 7: the table's 4-digit values.
-   subroutine test_samples_contact(error)
-      type(error_type), allocatable, intent(out) :: error
-      call check_sample(error, kalker_scheme_contact, 1.0_wp, 0.27_wp, &
-         [4.1903_wp, 3.6932_wp, 1.4820_wp], 5.1e-5_wp)
-      if (allocated(error)) return
-      call check_sample(error, kalker_scheme_contact, 2.0_wp, 0.28_wp, &
-         [5.2037_wp, 4.9715_wp, 2.6566_wp], 5.1e-5_wp)
-      if (allocated(error)) return
-      call check_sample(error, kalker_scheme_contact, 1.3294_wp, 0.27_wp, &
-         [4.5151_wp, 4.1268_wp, 1.8611_wp], 5.1e-5_wp)
-      if (allocated(error)) return
-      call check_sample(error, kalker_scheme_contact, 1.5_wp, 0.27_wp, &
-         [4.689_wp, 4.342_wp, 2.061_wp], 5.1e-4_wp)
-      if (allocated(error)) return
-      call check_sample(error, kalker_scheme_contact, 4.0_wp, 0.27_wp, &
-         [7.132_wp, 7.364_wp, 5.542_wp], 5.1e-4_wp)
-      if (allocated(error)) return
-      call check_sample(error, kalker_scheme_contact, 7.0_wp, 0.27_wp, &
-         [10.10_wp, 10.97_wp, 11.35_wp], 5.1e-3_wp)
-   end subroutine test_samples_contact
-
    !> doc/theory.md §2.3, "linear in g of g·c" column (ν = 0.27): a/b = 1.5: 4.681/4.333/2.051,
-   !> 4: 6.988/7.187/5.274, 7: 9.43/10.15/9.73; at a/b = 1 and 2 (table rows) the schemes agree.
+   !> 1.3294: 4.5091/4.1194/1.8542 (doc/tangential.md),
+   !> 4: 6.988/7.187/5.274, 7: 9.43/10.15/9.73; at a/b = 1 and 2 the table rows (4 decimals as
+   !> CONTACT prints them).
    subroutine test_samples_scaled(error)
       type(error_type), allocatable, intent(out) :: error
-      call check_sample(error, kalker_scheme_scaled, 1.0_wp, 0.27_wp, &
+      call check_sample(error, 1.0_wp, 0.27_wp, &
          [4.1903_wp, 3.6932_wp, 1.4820_wp], 5.1e-5_wp)
       if (allocated(error)) return
-      call check_sample(error, kalker_scheme_scaled, 2.0_wp, 0.28_wp, &
+      call check_sample(error, 2.0_wp, 0.28_wp, &
          [5.2037_wp, 4.9715_wp, 2.6566_wp], 5.1e-5_wp)
       if (allocated(error)) return
-      call check_sample(error, kalker_scheme_scaled, 1.5_wp, 0.27_wp, &
+      call check_sample(error, 1.3294_wp, 0.27_wp, &
+         [4.5091_wp, 4.1194_wp, 1.8542_wp], 5.1e-5_wp)
+      if (allocated(error)) return
+      call check_sample(error, 1.5_wp, 0.27_wp, &
          [4.681_wp, 4.333_wp, 2.051_wp], 5.1e-4_wp)
       if (allocated(error)) return
-      call check_sample(error, kalker_scheme_scaled, 4.0_wp, 0.27_wp, &
+      call check_sample(error, 4.0_wp, 0.27_wp, &
          [6.988_wp, 7.187_wp, 5.274_wp], 5.1e-4_wp)
       if (allocated(error)) return
-      call check_sample(error, kalker_scheme_scaled, 7.0_wp, 0.27_wp, &
+      call check_sample(error, 7.0_wp, 0.27_wp, &
          [9.43_wp, 10.15_wp, 9.73_wp], 5.1e-3_wp)
    end subroutine test_samples_scaled
 
-   subroutine check_sample(error, scheme, ab, nu, expected, tol)
+   subroutine check_sample(error, ab, nu, expected, tol)
       type(error_type), allocatable, intent(out) :: error
-      integer, intent(in) :: scheme
       real(wp), intent(in) :: ab, nu, expected(3), tol
       real(wp) :: c(3)
       character(len=120) :: msg
 
-      call kalker_coefficients(ab, nu, c(1), c(2), c(3), scheme)
+      call kalker_coefficients(ab, nu, c(1), c(2), c(3))
       write (msg, '(a,f7.4,a,f5.2,a,3f9.4)') 'a/b =', ab, ', nu =', nu, ': got', c
       call check(error, all(abs(c - expected) <= tol), message=trim(msg))
    end subroutine check_sample

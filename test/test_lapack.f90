@@ -3,8 +3,7 @@ module test_lapack
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_numerical
-   use shcontact_math_lapack, only: solve_spd_banded, solve_general_banded, solve_tridiagonal, &
-      solve_dense, solve_dense_leading
+   use shcontact_math_lapack, only: solve_spd_banded, solve_general_banded, solve_dense_leading
    implicit none
    private
    public :: collect_lapack
@@ -20,8 +19,6 @@ contains
          new_unittest('spd_banded_indefinite_is_error', test_spd_indefinite), &
          new_unittest('general_banded_known_solution', test_gb), &
          new_unittest('general_banded_singular_is_error', test_gb_singular), &
-         new_unittest('tridiagonal_known_solution', test_tri), &
-         new_unittest('dense_singular_is_error', test_dense_singular), &
          new_unittest('dense_leading_block_known_solution', test_dense_leading) &
          ]
    end subroutine collect_lapack
@@ -117,35 +114,6 @@ contains
       if (allocated(error)) return
       call check(error, index(err%message, 'singular') > 0, message=err%message)
    end subroutine test_gb_singular
-
-   subroutine test_tri(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(lib_error), allocatable :: err
-      real(wp) :: dl(n - 1), d(n), du(n - 1), b(n, 1), x(n)
-      integer :: i
-      dl = -1; d = 2; du = -1
-      x = x_exact()
-      do i = 1, n
-         b(i, 1) = 2*x(i)
-         if (i > 1) b(i, 1) = b(i, 1) - x(i - 1)
-         if (i < n) b(i, 1) = b(i, 1) - x(i + 1)
-      end do
-      call solve_tridiagonal(dl, d, du, b, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
-      call check(error, maxval(abs(b(:, 1) - x)), 0.0_wp, thr=1.0e-13_wp)
-   end subroutine test_tri
-
-   subroutine test_dense_singular(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(lib_error), allocatable :: err
-      real(wp) :: a(3, 3), b(3, 1)
-      a = reshape([1, 2, 3, 2, 4, 6, 0, 1, 1], [3, 3])
-      b = 1
-      call solve_dense(a, b, err)
-      call check(error, allocated(err), message='singular matrix must give an error')
-   end subroutine test_dense_singular
 
    !> solve_dense_leading on the leading block of larger arrays, against x_i = i: a nonsymmetric
    !> matrix that needs pivoting (zero first diagonal), by its own elimination (order 6) and

@@ -14,7 +14,9 @@ contains
          new_unittest('module_prefix', test_module_prefix), &
          new_unittest('version_matches_manifest', test_version), &
          new_unittest('cited_docs_exist', test_citations), &
-         new_unittest('citation_check_catches_bad_ones', test_citation_check) &
+         new_unittest('citation_check_catches_bad_ones', test_citation_check), &
+         new_unittest('layers_import_one_way', test_layers), &
+         new_unittest('layer_check_catches_upward_use', test_layer_check) &
          ]
    end subroutine collect_layout
 
@@ -66,15 +68,23 @@ contains
    !> not refer to the external data's folder (scripts/check_citations prints each bad one).
    subroutine test_citations(error)
       type(error_type), allocatable, intent(out) :: error
+      call check_script(error, 'check_citations', 'a source cites a missing doc, heading or '// &
+         'decision, or a file outside the repository (see the lines above)')
+   end subroutine test_citations
+
+   !> Run scripts/NAME on the repository: the test fails with `message` when it exits non-zero
+   !> and is skipped without a shell.
+   subroutine check_script(error, name, message)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: name, message
       integer :: stat, cmdstat
-      call execute_command_line('bash scripts/check_citations', exitstat=stat, cmdstat=cmdstat)
+      call execute_command_line('bash scripts/'//name, exitstat=stat, cmdstat=cmdstat)
       if (cmdstat /= 0) then
-         call skip_test(error, 'no shell to run scripts/check_citations')
+         call skip_test(error, 'no shell to run scripts/'//name)
          return
       end if
-      call check(error, stat, 0, message='a source cites a missing doc, heading or decision, '// &
-         'or a file outside the repository (see the lines above)')
-   end subroutine test_citations
+      call check(error, stat, 0, message=message)
+   end subroutine check_script
 
    !> The check itself fails on a scratch tree with one bad citation of each kind (a missing
    !> file, a missing heading, a missing decision, the former physics notes) and passes on the
@@ -107,5 +117,48 @@ contains
       end do
       call execute_command_line('rm -rf '//tree)
    end subroutine test_citation_check
+
+   !> The library's layers import one way: a module under src/ uses only modules of its own
+   !> layer or of lower ones. Folders are layers, lowest first: core → math → profile →
+   !> geometry → normal → tangential → pipeline → api; io/ is placed file by file until it is
+   !> split: its input part (io/config/, config, files, text) below case/, its output part
+   !> (results, HDF5, XDMF, reports) above case/result and case/runner and below case/sweep
+   !> (scripts/check_layers lists the order and prints each upward use; doc/architecture.md).
+   subroutine test_layers(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_script(error, 'check_layers', 'a module uses a module of a higher layer, or a '// &
+         'source is in no layer (see the lines above)')
+   end subroutine test_layers
+
+   !> The layer check fails on a scratch tree where core/ uses api/, and on one with a folder
+   !> that is in no layer, and passes once api/ uses core/ only.
+   subroutine test_layer_check(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: tree = 'build/layer_check', lib = tree//'/src/shcontact'
+      integer :: stat, cmdstat
+      call execute_command_line('rm -rf '//tree//' && mkdir -p '//lib//'/core '//lib// &
+         '/api '//lib//'/extra && printf ''module shcontact_api_b\n use shcontact_core_a\n'// &
+         'end module shcontact_api_b\n'' > '//lib//'/api/b.f90 && printf ''module '// &
+         'shcontact_core_a\n use shcontact_api_b, only: x\nend module shcontact_core_a\n'' > '// &
+         lib//'/core/a.f90', exitstat=stat, cmdstat=cmdstat)
+      if (cmdstat /= 0 .or. stat /= 0) then
+         call skip_test(error, 'no shell to write the scratch tree')
+         return
+      end if
+      call execute_command_line('bash scripts/check_layers '//tree//' 2> /dev/null', &
+         exitstat=stat)
+      call check(error, stat /= 0, message='check_layers accepts core/ using api/')
+      if (allocated(error)) return
+      call execute_command_line('printf ''module shcontact_core_a\nend module '// &
+         'shcontact_core_a\n'' > '//lib//'/core/a.f90 && printf ''module shcontact_extra_c\n'// &
+         'end module shcontact_extra_c\n'' > '//lib//'/extra/c.f90 && bash '// &
+         'scripts/check_layers '//tree//' 2> /dev/null', exitstat=stat)
+      call check(error, stat /= 0, message='check_layers accepts a folder in no layer')
+      if (allocated(error)) return
+      call execute_command_line('rm -rf '//lib//'/extra && bash scripts/check_layers '//tree, &
+         exitstat=stat)
+      call check(error, stat, 0, message='check_layers refuses api/ using core/')
+      call execute_command_line('rm -rf '//tree)
+   end subroutine test_layer_check
 
 end module test_layout

@@ -3,7 +3,7 @@ module test_roots
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type_lib => error_type, stat_numerical
-   use shcontact_math_roots, only: scalar_function_type, find_root, expand_bracket
+   use shcontact_math_roots, only: scalar_function_type, find_root
    implicit none
    private
    public :: collect_roots
@@ -37,8 +37,7 @@ contains
          new_unittest('smooth_sqrt2', test_smooth), &
          new_unittest('kink_at_root', test_kink_at_root), &
          new_unittest('kink_in_bracket', test_vee), &
-         new_unittest('no_sign_change_is_error', test_no_bracket), &
-         new_unittest('expand_bracket', test_expand) &
+         new_unittest('no_sign_change_is_error', test_no_bracket) &
          ]
    end subroutine collect_roots
 
@@ -118,25 +117,5 @@ contains
       if (allocated(error)) return
       call check(error, index(err%message, 'no sign change') > 0, message=err%message)
    end subroutine test_no_bracket
-
-   subroutine test_expand(error)
-      type(error_type), allocatable, intent(out) :: error
-      type(error_type_lib), allocatable :: err
-      type(square_minus) :: f
-      real(wp) :: hi, flo, fhi, x
-      f%c = 1.0e6_wp
-      hi = 1.0_wp
-      call expand_bracket(f, 0.0_wp, hi, flo, fhi, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
-      call check(error, hi >= 1.0e3_wp .and. hi < 2.0e3_wp, message='bracket doubled to 1024')
-      if (allocated(error)) return
-      call find_root(f, 0.0_wp, hi, x, err, f_lower=flo, f_upper=fhi)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
-      call check(error, x, 1.0e3_wp, thr=1.0e-12_wp, rel=.true.)
-   end subroutine test_expand
 
 end module test_roots

@@ -609,12 +609,13 @@ contains
       call check(error, allocated(err), message='unknown method must be an error')
       if (allocated(error)) return
       call check(error, index(err%message, "'stripes'") > 0 .and. &
-         index(err%message, "'semi-hertz' or 'hertz'") > 0, message=err%message)
+         index(err%message, "'semi-hertz', 'hertz'") > 0, message=err%message)
       if (allocated(error)) return
       call new_normal_options(options, err, reduction='kp')
       call check(error, allocated(err), message='unknown reduction must be an error')
       if (allocated(error)) return
-      call check(error, index(err%message, "'local-hertz', 'constant' or 'coupled'") > 0, message=err%message)
+      call check(error, index(err%message, "'coupled', 'local-hertz', 'constant'") > 0, &
+         message=err%message)
       if (allocated(error)) return
       call new_normal_options(options, err, epsilon=1.5_wp)
       call check(error, allocated(err), message='epsilon > 1 must be an error')

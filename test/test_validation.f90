@@ -27,7 +27,7 @@ module test_validation
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
       solve_vertical_load
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_tangential_options, only: tangential_options_type, flexibility_carter, &
+   use shcontact_tangential_options, only: tangential_options_type, &
       correction_none, parse_bound, parse_spin_model, parse_spin_flexibility, parse_correction
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
@@ -41,7 +41,8 @@ module test_validation
    private
    public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
-      skip_without_profiles
+      skip_without_profiles, two_patch_solution, position_errors, recommended_options, &
+      exact_positions
 
    !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
    character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
@@ -72,7 +73,6 @@ contains
          new_unittest('kinematic_sample_vs_exact', test_kinematic), &
          new_unittest('doe_20x20x20_ty5p8_vs_exact', test_doe_ty5p8), &
          new_unittest('doe_ty5p8_local_hertz_vs_exact', test_doe_ty5p8_local_hertz), &
-         new_unittest('doe_ty5p8_carter_vs_exact', test_doe_ty5p8_carter), &
          new_unittest('doe_project_positions_vs_exact', test_doe_positions), &
          new_unittest('doe_positions_builtin_profiles_vs_exact', test_doe_positions_builtin), &
          new_unittest('plateau_load_centre_vs_exact', test_plateau_load_centre), &
@@ -194,7 +194,7 @@ contains
       type(contact_result_type) :: result
       type(track_type) :: track
       type(lib_error), allocatable :: err
-      real(wp), allocatable :: rows(:, :), ex(:), ey(:), en(:)
+      real(wp), allocatable :: rows(:, :), ex(:), ey(:), en(:), wx(:), wy(:)
       real(wp) :: phi_t, y_g, x_g, nux_t, nuy_t, tol_xi
       integer :: i, n
       character(len=:), allocatable :: sample
@@ -216,7 +216,7 @@ contains
          call test_failed(error, err%message)
          return
       end if
-      allocate (ex(n), ey(n), en(n))
+      allocate (ex(n), ey(n), en(n), wx(n), wy(n))
       do i = 1, n
          associate (r => rows(i, :))
             call solver%solve_kinematic(wheelset_state_type(y_ws=r(1), yaw=r(2), &
@@ -231,6 +231,9 @@ contains
                ex(i) = abs(-p%fx_norm - r(15))
                ey(i) = abs(-p%fy_norm - r(16))
                en(i) = abs(p%fn - r(14))/r(14)
+               ! The wheel's joined contact (doc/lobes.md, doc/validation.md Table 12).
+               wx(i) = abs(-result%wheel%fx_norm - r(15))
+               wy(i) = abs(-result%wheel%fy_norm - r(16))
                phi_t = -p%phi - (sin(r(10)) - sin(p%gamma0))*abs(r(6))/r(3)
                y_g = (p%y_track - r(8))*cos(r(10)) + (p%z_track - r(9))*sin(r(10))
                x_g = p%x_track - r(7)
@@ -264,6 +267,17 @@ contains
       if (allocated(error)) return
       call check(error, percentile(en, 0.8_wp), 0.032_wp, thr=0.005_wp, &
          message='P80 |Delta F_n|/F_n')
+      if (allocated(error)) return
+      ! doc/validation.md Table 12, the wheel's joined contact: max |Delta f| 0.049, P80 0.018 /
+      ! 0.008 (at Y_WS = 4.733 mm it holds both of our patches, CONTACT one).
+      call check(error, max(maxval(wx), maxval(wy)), 0.049_wp, thr=0.002_wp, &
+         message='joined contact: max |Delta f|')
+      if (allocated(error)) return
+      call check(error, percentile(wx, 0.8_wp), 0.018_wp, thr=0.002_wp, &
+         message='joined contact: P80 |Delta f_x|')
+      if (allocated(error)) return
+      call check(error, percentile(wy, 0.8_wp), 0.008_wp, thr=0.002_wp, &
+         message='joined contact: P80 |Delta f_y|')
    end subroutine test_kinematic
 
    !> Issue 13: the defaults (normal reduction `coupled`, correction `exact-ellipse`) on
@@ -299,20 +313,6 @@ contains
       call check_row(ex, ey, [0.035_wp, 0.033_wp, 0.027_wp, 0.010_wp], 'ty5p8 local-hertz', &
          error)
    end subroutine test_doe_ty5p8_local_hertz
-
-   !> Tangential `flexibility = 'carter'` on ty5p8_literal, Table 10's row within ±0.002 (max
-   !> 0.036 / 0.042, P80 0.024 / 0.015): worse than the defaults here, one reason it is not one.
-   subroutine test_doe_ty5p8_carter(error)
-      type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: ex(:), ey(:)
-      character(len=:), allocatable :: doe
-      doe = external_file(ty5p8_doe, error)
-      if (allocated(error)) return
-      call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error, &
-         flexibility=flexibility_carter)
-      if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.036_wp, 0.042_wp, 0.024_wp, 0.015_wp], 'ty5p8 carter', error)
-   end subroutine test_doe_ty5p8_carter
 
    !> The defaults on the project's own single-lobe exact-theory positions (data/exact/,
    !> doc/validation.md §6.4): Table 10's defaults row within ±0.002 for each (max |Δf_x| / max
@@ -374,17 +374,20 @@ contains
 
    !> |Δf_x|, |Δf_y| of the defaults over the DOE of the data/exact/ folder `name`, on the patch
    !> nearest CONTACT's reference point, with the Manchester or the built-in profiles.
-   subroutine position_errors(name, ex, ey, error, builtin)
+   subroutine position_errors(name, ex, ey, error, builtin, reduction, correction)
       character(len=*), intent(in) :: name
       real(wp), allocatable, intent(out) :: ex(:), ey(:)
       type(error_type), allocatable, intent(out) :: error
       logical, intent(in) :: builtin
+      !> Normal reduction and `correction_*` (default: the library's).
+      character(len=*), intent(in), optional :: reduction
+      integer, intent(in), optional :: correction
       real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref
       call summary_values('data/exact/'//name//'/summary.csv', y_ws, y_geo, pen, ycp_r, delt, &
          y_ref, error)
       if (allocated(error)) return
       call doe_errors('data/exact/'//name//'/doe_6x6x6_exact_nonhertz.csv', y_ws, y_ref, 216, &
-         ex, ey, error, builtin=builtin)
+         ex, ey, error, builtin=builtin, reduction=reduction, correction=correction)
    end subroutine position_errors
 
    !> The targets of issue 13 (doc/validation.md §6.4), met at every position: max |Δf| ≤ 0.05,
@@ -603,11 +606,13 @@ contains
    !> Our patches at y_ws with the default options under the vertical load for which their
    !> normal forces add up to 64.7 kN (patches unallocated and the test skipped without the
    !> external data).
-   subroutine two_patch_solution(y_ws, geometry, patches, error)
+   subroutine two_patch_solution(y_ws, geometry, patches, error, reduction)
       real(wp), intent(in) :: y_ws
       type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
       type(normal_patch_type), allocatable, intent(out) :: patches(:)
       type(error_type), allocatable, intent(out) :: error
+      !> Normal reduction (default: the library's, `coupled`).
+      character(len=*), intent(in), optional :: reduction
       type(profile_type) :: wheel, rail
       type(track_type) :: track
       type(normal_contact_type), allocatable :: contacts(:)
@@ -621,7 +626,13 @@ contains
       call manchester_profiles(wheel, rail, track, err)
       if (.not. allocated(err)) call find_contact_patches(wheel, rail, track, &
          wheelset_position_type(y_ws=y_ws), contact_options_type(), geometry, err)
-      if (.not. allocated(err)) call new_normal_options(options, err)
+      if (.not. allocated(err)) then
+         if (present(reduction)) then
+            call new_normal_options(options, err, reduction=reduction)
+         else
+            call new_normal_options(options, err)
+         end if
+      end if
       if (allocated(err)) then
          call test_failed(error, err%message); return
       end if
@@ -658,11 +669,11 @@ contains
          message=label//' P80 |Delta f_y|')
    end subroutine check_row
 
-   !> |Δf_x|, |Δf_y| of the recommended tangential settings (or another `flexibility_*`) over an
+   !> |Δf_x|, |Δf_y| of the recommended tangential settings over an
    !> exact-theory DOE file (the shared columns) at Y_WS, on the patch nearest CONTACT's
    !> reference point y_ref (track y) with the given normal reduction (default: the library's);
    !> ex unallocated (and the test skipped) without the data.
-   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, flexibility, &
+   subroutine doe_errors(doe, y_ws, y_ref, n_expected, ex, ey, error, reduction, &
       correction, builtin)
       character(len=*), intent(in) :: doe
       real(wp), intent(in) :: y_ws, y_ref
@@ -670,7 +681,6 @@ contains
       real(wp), allocatable, intent(out) :: ex(:), ey(:)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in), optional :: reduction
-      integer, intent(in), optional :: flexibility
       !> Tangential `correction_*` (default: the library's, `exact-ellipse`).
       integer, intent(in), optional :: correction
       !> The built-in S1002 and UIC60-canted instead of the Manchester files (default .false.).
@@ -696,7 +706,6 @@ contains
          cases, error)
       if (allocated(error)) return
       call recommended_options(options)
-      if (present(flexibility)) options%flexibility = flexibility
       if (present(correction)) options%correction = correction
       call prepare_fastsim_sh(ws, patch, material_type(), options, err)
       if (allocated(err)) then

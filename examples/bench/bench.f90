@@ -13,7 +13,8 @@
 !>                            defaults (new against old defaults; no checks), or scan (every
 !>                            0.01 mm position, failed calls; not in the default run)
 !>     --output FILE          HDF5 file of the DOE (default build/shcontact_bench_doe.h5)
-!>     --save-results FILE    write the forces of the checked cases to a text file
+!>     --save-results FILE    write the forces of the checked cases to a text file (with
+!>                            --only moving: the totals of every state of both trajectories)
 !>     --compare-results FILE compare the forces with a file saved by another build
 !>     --alloc-check N        only solve N full cases and N DOE cases, then stop (run it under
 !>                            valgrind with N and 2N: the allocation count must not change)
@@ -55,10 +56,10 @@ program shcontact_bench
    if (config%wanted('tangential')) call tangential_section(config, bench, summary, record)
    if (config%wanted('full')) call full_case_section(config, bench, summary)
    if (config%wanted('doe')) call doe_section(config, bench, summary, record)
-   if (config%wanted('moving')) call moving_section(config, summary)
+   if (config%wanted('moving')) call moving_section(config, summary, record)
    if (config%wanted('defaults')) call defaults_section(config, bench)
    if (config%only == 'scan') call scan_section()
-   if (len(config%only) == 0) call check_results(config, record, &
+   if (len(config%only) == 0 .or. config%only == 'moving') call check_results(config, record, &
       bench%material%friction*bench%load)
    call print_summary(summary)
    call print_load('load at the end')

@@ -8,9 +8,10 @@ module bench_case
    use shcontact, only: wp, error_type, material_type, wheelset_position_type, &
       find_contact_patches, patch_geometry_type, normal_options_type, normal_contact_type, &
       prepare_normal_contact, solve_load, normal_patch_type, tangential_options_type, &
-      creepage_type, bound_name, parse_bound, parse_spin_model, shcontact_version
+      creepage_type, bound_name, spin_model_name, shcontact_version
    use shcontact_normal_options, only: method_hertz
-   use shcontact_io_config, only: case_config_type, case_point_type, load_config, axis_load
+   use shcontact_io_config, only: case_config_type, case_point_type, load_config, axis_load, &
+      load_mode_force
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_core_strings, only: str_int
    use bench_timing, only: wall_time
@@ -83,10 +84,10 @@ contains
       !> The case (read and prepared).
       type(bench_case_type), intent(inout) :: bench
       type(error_type), allocatable :: error
-      integer :: k, code
+      integer :: k
 
       associate (case_config => bench%case_config, setup => bench%setup)
-         if (case_config%load%mode /= 'force') call fail(case_file// &
+         if (case_config%load%mode /= load_mode_force) call fail(case_file// &
             ": the benchmark needs load%mode = 'force'")
          bench%point = case_config%case_point(1)
          do k = 2, case_config%n_cases()
@@ -101,12 +102,8 @@ contains
          bench%material%friction = bench%point%friction
          bench%normal_options = setup%normal
          bench%tangential_options = setup%tangential
-         call parse_bound(trim(bench%point%bound), code, error)
-         call stop_on(error, 'bound')
-         bench%tangential_options%bound = code
-         call parse_spin_model(trim(bench%point%spin_model), code, error)
-         call stop_on(error, 'spin model')
-         bench%tangential_options%spin_model = code
+         bench%tangential_options%bound = bench%point%bound
+         bench%tangential_options%spin_model = bench%point%spin_model
          bench%tangential_options%fields = .false.
          bench%headline = creepage_type(case_config%creepage%nu_x, &
             case_config%creepage%nu_y, case_config%creepage%phi)
@@ -189,7 +186,7 @@ contains
          real_text(bench%material%friction)//', '//str_int(bench%normal_options%n_strips)// &
          ' strips x '//str_int(bench%tangential_options%n_elements)//' elements, bound '// &
          bound_name(bench%tangential_options%bound)//', spin model '// &
-         trim(bench%point%spin_model)
+         spin_model_name(bench%point%spin_model)
       write (output_unit, '(a)') 'single-case creepages: nu_x = '// &
          real_text(bench%headline%nu_x)//', nu_y = '//real_text(bench%headline%nu_y)// &
          ', phi = '//real_text(bench%headline%phi)//' rad/mm'

@@ -10,15 +10,20 @@ module bench_moving
    implicit none
    private
 
-   public :: kinematic_kernel, hunting_states, flange_states, scan_positions
+   public :: kinematic_kernel, hunting_states, flange_states, scan_positions, trajectory_forces
 
    !> Vehicle speed (mm/s), nominal radius (mm) and vertical wheel load (N) of the items.
    real(wp), parameter :: speed = 30000.0_wp, r_nom = 460.0_wp, wheel_load = 64700.0_wp
+   !> Friction coefficient of the solver's default material (f = F/(μF_n)).
+   real(wp), parameter :: friction = 0.3_wp
 
    !> Step through a 1000-state trajectory: coprime with 1000, and 201 = 1000/5 + 1, so that
    !> five consecutive calls visit the five amplitude blocks of [[hunting_states]] and 1000
    !> calls visit every state once.
    integer, parameter :: trajectory_stride = 201
+
+   !> Values per state of [[trajectory_forces]].
+   integer, parameter, public :: values_per_state = 6
 
    !> One kinematic call per run(k): the next state of the list, taken with the stride
    !> trajectory_stride and continued from batch to batch (so every batch covers every part of
@@ -135,5 +140,35 @@ contains
             'yaw = ', yaws(j), ' rad: failed calls so far ', failures
       end do
    end subroutine scan_positions
+
+   !> Per state: the track-frame totals F_x, F_y, F_z and ΣF_n (N), and the tangential forces
+   !> of the patches in their contact planes, f_x = ΣF_x/(μΣF_n) and f_y = ΣF_y/(μΣF_n)
+   !> ([[values_per_state]] values per state; a failed call gives huge values).
+   function trajectory_forces(solver, states) result(values)
+      !> The solver (its options are those compared).
+      type(contact_solver_type), intent(inout) :: solver
+      !> The states.
+      type(wheelset_state_type), intent(in) :: states(:)
+      real(wp) :: values(values_per_state*size(states))
+      type(contact_result_type) :: result
+      type(error_type), allocatable :: error
+      real(wp) :: mu_fn
+      integer :: i, n
+
+            do i = 1, size(states)
+         call solver%solve_kinematic(states(i), contact_load_type(load_vertical_force, &
+            wheel_load), result, error)
+         associate (v => values(values_per_state*(i - 1) + 1:values_per_state*i))
+            if (allocated(error)) then
+               v = huge(1.0_wp)
+            else
+               n = result%n_loaded
+               mu_fn = friction*sum(result%patch(1:n)%fn)
+               v = [result%track%fx, result%track%fy, result%track%fz, result%track%fn, &
+                  sum(result%patch(1:n)%fx)/mu_fn, sum(result%patch(1:n)%fy)/mu_fn]
+            end if
+         end associate
+      end do
+   end function trajectory_forces
 
 end module bench_moving

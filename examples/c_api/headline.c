@@ -1,8 +1,8 @@
 /*
  * shcontact from C through the C API (include/shcontact.h): the profiles passed as arrays (here
  * the built-in ones, fetched from a contact created by name), a kinematic call as a vehicle code
- * makes it, the headline case with prescribed creepages and its element fields, then five bad
- * calls that must come back with a status and a message.
+ * makes it, the headline case with prescribed creepages and its element fields, both wheels of a
+ * wheelset in one call, then five bad calls that must come back with a status and a message.
  *
  * S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm, G = 82670 MPa, nu = 0.27,
  * mu = 0.3, FASTSIM_SH. Kinematic call: wheelset at y_ws = 4.733 mm, yaw 4 mrad, 40 m/s, pure
@@ -105,6 +105,36 @@ static int print_fields(shcontact_contact *contact, int patch)
     return status;
 }
 
+/* Both wheels in one call (a wheelset handle): the wheelset 5 mm to the right, yaw 2 mrad,
+ * lateral velocity 10 mm/s, yaw rate 0.01 rad/s at 30 m/s; 64.7 kN on the right wheel, 60 kN on
+ * the left. totals: F_x, F_y, F_z (N) on the wheelset, true track frame, and M_z (N mm). */
+static int print_wheelset(void)
+{
+    shcontact_contact *wheelset = NULL;
+    double totals[4], right[SHCONTACT_KIN_SIZE], left_sum_fy = 0.0;
+    const double speed = 30.0e3;
+    int status = shcontact_create_wheelset(&wheelset, "builtin:S1002", "builtin:UIC60");
+
+    if (status == SHCONTACT_OK)
+        status = shcontact_solve_wheelset(wheelset, 5.0, 2.0e-3, 0.0, speed, 10.0, 0.0, 0.0, 0.01,
+                                          -speed / 460.0, SHCONTACT_LOAD_VERTICAL_FORCE, 64.7e3,
+                                          60.0e3, totals);
+    /* A wheel's values by name (keyed: "right%...", "left%...") or as the kinematic layout. */
+    if (status == SHCONTACT_OK)
+        status = shcontact_get_value(wheelset, "left%sum_fy", 0, &left_sum_fy);
+    if (status == SHCONTACT_OK)
+        status = shcontact_wheelset_wheel(wheelset, SHCONTACT_RIGHT, 0, right);
+    if (status != SHCONTACT_OK)
+        return fail(wheelset, "shcontact_solve_wheelset");
+    printf("# wheelset call, C interface\n");
+    printf("ws_fx %.17e\nws_fy %.17e\nws_fz %.17e\nws_mz %.17e\n", totals[0], totals[1],
+           totals[2], totals[3]);
+    printf("ws_right_n_loaded %.17e\n", right[SHCONTACT_N_LOADED]);
+    printf("ws_left_sum_fy %.17e\n", left_sum_fy);
+    shcontact_destroy(wheelset);
+    return 0;
+}
+
 static void report_bad_call(const char *name, shcontact_contact *contact, int status)
 {
     char message[512];
@@ -167,6 +197,11 @@ int main(int argc, char **argv)
     printf("sum_fz %.17e\n", v[SHCONTACT_SUM_FZ]);
     if (print_fields(contact, (int)v[SHCONTACT_MAIN_PATCH]) != 0)
         return fail(contact, "shcontact_fields");
+
+    if (print_wheelset() != 0) {
+        shcontact_destroy(contact);
+        return 1;
+    }
 
     /* Bad calls: an invalid (NULL) handle, a negative load, a NaN creepage, a wheelset that does
      * not move forward, a wheel of one point. */

@@ -27,7 +27,6 @@ program ellipse_table
       n_table_t, n_table_ty, n_table_phi, table_unit, table_poisson
    use shcontact_tangential_ellipse_correction, only: table_node_case, ellipse_correction_type, &
       prepare_ellipse_correction
-   use shcontact_tangential_kalker, only: kalker_scheme_scaled
    use shcontact_core_strings, only: str_int
    implicit none
 
@@ -242,7 +241,7 @@ contains
          call prepare_fastsim_sh(ws, patch, material(), options, error)
          if (allocated(error)) return
          call prepare_ellipse_correction(scale, patch%ellipse_a, patch%ellipse_b, patch%load, &
-            material(), kalker_scheme_scaled, 0.0_wp, 1.0_wp, 0.0_wp)
+            material(), 0.0_wp, 1.0_wp, 0.0_wp)
          ! CONTACT's creepage +s is ours −s/scale; CONTACT's force is minus ours.
          call solve_prepared(ws, creepage_type(-s/scale%scale_x, 0.0_wp, 0.0_wp), r, error)
          if (allocated(error)) return

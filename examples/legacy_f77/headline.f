@@ -3,8 +3,8 @@ C     points SHC_* (doc/api.md) and the include file shcontact.fi: the
 C     profiles passed as arrays (here the built-in ones, fetched from a
 C     contact created by name), a kinematic call as a vehicle code makes
 C     it, the headline case with prescribed creepages and its element
-C     fields, then five bad calls that must come back with a status and
-C     a message.
+C     fields, both wheels of a wheelset in one call, then five bad calls
+C     that must come back with a status and a message.
 C
 C     S1002 wheel on a UIC60 rail canted 1:40 by the track, R0 = 460 mm,
 C     G = 82670 MPa, nu = 0.27, mu = 0.3, FASTSIM_SH (the defaults).
@@ -28,7 +28,8 @@ C     The wheelset of the kinematic call (mm, rad, mm/s, rad/s, N).
       PARAMETER (VPITCH = -VS/460.0D0, FZ = 64.7D3)
       DOUBLE PRECISION VALUES(SHC_RESULT_SIZE), G, POISS, FRIC, CNAN
       DOUBLE PRECISION VKIN(SHC_KIN_SIZE)
-      INTEGER IH, ISTAT
+      INTEGER IH, ISTAT, IHWS
+      DOUBLE PRECISION WSTOT(4), WSLFY
 C     Profile points (mm): wheel and rail.
       INTEGER MAXPT, NW, NR, IHNAME
       PARAMETER (MAXPT = 4000)
@@ -131,6 +132,31 @@ C     areas add up to its forces.
       WRITE (*, 100) 'field_sum_fx', SUMFX
       WRITE (*, 100) 'field_sum_fy', SUMFY
 C
+C     Both wheels in one call (a wheelset handle): the wheelset 5 mm
+C     to the right, yaw 2 mrad, lateral velocity 10 mm/s, yaw rate
+C     0.01 rad/s at 30 m/s; 64.7 kN on the right wheel, 60 kN on the
+C     left. WSTOT: F_x, F_y, F_z (N) on the wheelset, M_z (N mm).
+      CALL SHC_CREATE_WS(IHWS, 'builtin:S1002', 'builtin:UIC60', ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 910
+      CALL SHC_SOLVE_WS(IHWS, 5.0D0, 2.0D-3, 0.0D0, 30.0D3, 10.0D0,
+     &                  0.0D0, 0.0D0, 0.01D0, -30.0D3/460.0D0,
+     &                  SHC_LOAD_VERTICAL_FORCE, 64.7D3, 60.0D3,
+     &                  WSTOT, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 910
+C     A wheel's values by name (keyed: 'right%...', 'left%...').
+      CALL SHC_GET_VALUE(IHWS, 'left%sum_fy', 0, WSLFY, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 910
+      CALL SHC_WS_WHEEL(IHWS, SHC_RIGHT, 0, VKIN, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 910
+      WRITE (*, '(A)') '# wheelset call, legacy Fortran 77 interface'
+      WRITE (*, 100) 'ws_fx', WSTOT(1)
+      WRITE (*, 100) 'ws_fy', WSTOT(2)
+      WRITE (*, 100) 'ws_fz', WSTOT(3)
+      WRITE (*, 100) 'ws_mz', WSTOT(4)
+      WRITE (*, 100) 'ws_right_n_loaded', VKIN(SHC_N_LOADED)
+      WRITE (*, 100) 'ws_left_sum_fy', WSLFY
+      CALL SHC_DESTROY(IHWS, ISTAT)
+C
 C     Bad calls: an invalid handle, a negative load, a NaN creepage,
 C     a wheelset that does not move forward, a wheel of one point.
       CALL SHC_SOLVE(IH + 999, TY, ROLL, SHC_LOAD_NORMAL_FORCE, FN,
@@ -164,6 +190,9 @@ C     (underflow, harmless).
       GOTO 999
 C
   900 CALL SHC_ERRMSG(IH, MSG)
+      WRITE (*, '(A,I3,2A)') 'error: status', ISTAT, ': ', MSG
+      STOP 1
+  910 CALL SHC_ERRMSG(IHWS, MSG)
       WRITE (*, '(A,I3,2A)') 'error: status', ISTAT, ': ', MSG
       STOP 1
   100 FORMAT (A, 1X, 1PE25.17)

@@ -23,6 +23,7 @@ program validate
    use validate_report, only: recommended_type, run_tangential
    use validate_kinematic, only: run_kinematic
    use validate_patches, only: run_patches
+   use validate_sets, only: write_sets
    implicit none
 
    character(len=:), allocatable :: ref_root, profiles_dir, out_dir, ref_dir
@@ -89,6 +90,14 @@ program validate
    end if
    write (output_unit, '(a)') 'shcontact-validate: tables written to '//out_dir
    call kinematic_sample(ref_root//'kinematic_sample/', profiles_dir, out_dir)
+   ! The summary of every exact-theory set (doc/validation.md §6.6), from the runs above.
+   call write_sets(out_dir, error)
+   if (allocated(error)) then
+      write (error_unit, '(a)') 'shcontact-validate: '//error%message
+      error stop 1
+   end if
+   write (output_unit, '(a)') 'shcontact-validate: the summary of every set written to '// &
+      out_dir//'sets.csv, sets.md'
 
 contains
 

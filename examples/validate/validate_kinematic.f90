@@ -34,6 +34,7 @@ module validate_kinematic
       load_vertical_force, wheelset_state_type, creepage_type
    use validate_csv, only: csv_table_type, read_csv, column, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
+   use validate_sets, only: pool_errors
    implicit none
    private
 
@@ -77,6 +78,10 @@ module validate_kinematic
       real(wp) :: fn_other = 0.0_wp, y_other = 0.0_wp
       !> f = F/(μF_n) on the rail, ours and CONTACT's.
       real(wp) :: fx = 0.0_wp, fy = 0.0_wp, fx_ref = 0.0_wp, fy_ref = 0.0_wp
+      !> f of the wheel's joined contact (contact_result_type%wheel, doc/lobes.md), CONTACT's sign,
+      !> and its number of patches.
+      real(wp) :: fx_wheel = 0.0_wp, fy_wheel = 0.0_wp
+      integer :: n_joined = 0
       !> Diagnostic (module text): ours with the 'uniform' spin model, cases without yaw.
       logical :: has_uniform = .false.
       real(wp) :: fx_uniform = 0.0_wp, fy_uniform = 0.0_wp
@@ -121,6 +126,16 @@ contains
       if (allocated(error)) return
       call write_markdown(out_dir//'kinematic.md', cases, groups, error)
       if (allocated(error)) return
+      ! The summary of every set (validate_sets): the compared patch of every solved case.
+      call pool_errors('kinematic sample: external data, module 1, Y_WS 0 / 4.733 / 8 mm', 1, &
+         pack(abs(cases%fx - cases%fx_ref), cases%ok), pack(abs(cases%fy - cases%fy_ref), &
+         cases%ok), maxval(hypot(cases%fx, cases%fy), mask=cases%ok))
+      call pool_errors('kinematic sample: the wheel''s joined contact (doc/lobes.md)', 1, &
+         pack(abs(cases%fx_wheel - cases%fx_ref), cases%ok), &
+         pack(abs(cases%fy_wheel - cases%fy_ref), cases%ok), &
+         maxval(hypot(cases%fx_wheel, cases%fy_wheel), mask=cases%ok))
+      write (output_unit, '(a,i0,a)') 'kinematic sample: the joined contact holds more than '// &
+         'one patch in ', count(cases%ok .and. cases%n_joined > 1), ' cases'
       associate (g => groups(size(groups)))
          write (output_unit, '(a,i0,a,4(f7.4,a),2(f7.4,a))') 'kinematic sample: ', g%n, &
             ' cases; max/P80 |dfx| ', g%fx%max, '/', g%fx%p80, ', |dfy| ', g%fy%max, '/', &
@@ -266,6 +281,9 @@ contains
          c%fn = p%fn
          c%fx = -p%fx_norm; c%fy = -p%fy_norm
       end associate
+      c%fx_wheel = -result%wheel%fx_norm
+      c%fy_wheel = -result%wheel%fy_norm
+      c%n_joined = result%wheel%n_members
       c%fx_tr = -result%track%fx
       c%fy_tr = -result%track%fy
       c%fz_tr = -result%track%fz

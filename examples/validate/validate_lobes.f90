@@ -13,7 +13,8 @@ module validate_lobes
    use validate_csv, only: csv_table_type, read_csv, column, summary_value, csv_writer_type
    use validate_tangential, only: case_set_type, solve_set, error_stats_type, error_stats
    use shcontact, only: tangential_options_type, parse_bound, parse_spin_model
-   use shcontact_tangential_options, only: parse_spin_flexibility
+   use shcontact_tangential_options, only: parse_spin_flexibility, parse_correction
+   use validate_sets, only: pool_errors, set_all_positions, set_two_lobe
    implicit none
    private
 
@@ -194,7 +195,55 @@ contains
       end do
       call add_cell(wx, wy)
       call add_cell(mx, my)
+      ! The summary of every set (validate_sets): the wheel's Σ against the joined patch with the
+      ! defaults and the main alternatives.
+      call pool_wheel('coupled', 'exact-ellipse', 1, error)
+      if (.not. allocated(error)) call pool_wheel('local-hertz', 'exact-ellipse', 2, error)
+      if (.not. allocated(error)) call pool_wheel('coupled', 'none', 3, error)
    contains
+      !> The wheel's Σ F/(μ Σ F_n) over our patches for one normal reduction and correction,
+      !> against CONTACT's joined f, to the summary's two-lobe set and the set of all positions.
+      subroutine pool_wheel(reduction, correction, config, error)
+         character(len=*), intent(in) :: reduction, correction
+         integer, intent(in) :: config
+         type(error_type), allocatable, intent(out) :: error
+         type(tangential_options_type) :: options
+         real(wp) :: sx(size(jx)), sy(size(jx)), f_max, load, f_z
+         integer :: k, it
+
+         f_z = 64700.0_wp
+         do it = 1, 4
+            call wheel_patches(prepared, y_ws, f_z, reduction, geometry, patches, error)
+            if (allocated(error)) return
+            if (it < 4) f_z = f_z*64700.0_wp/sum(patches%load)
+         end do
+         options = tangential
+         call parse_correction(correction, options%correction, error)
+         if (allocated(error)) return
+         load = sum(patches%load)
+         sx = 0.0_wp
+         sy = 0.0_wp
+         f_max = 0.0_wp
+         do k = 1, size(patches)
+            if (.not. (patches(k)%load > 0.0_wp)) cycle
+            y_k = (geometry(k)%y_track - y_ref)/cos(delta)
+            set%name = name
+            ! The joined DOE's creepages: those of the lobe file's rows of lobe 1, in its order.
+            set%phi = 1.0e-3_wp*pack(phi, nint(lobe) == 1)
+            set%nux = pack(nux, nint(lobe) == 1) - set%phi*(y_k - y_geo)
+            set%nuy = pack(nuy, nint(lobe) == 1)
+            set%fx = jx
+            set%fy = jy
+            call solve_set(patches(k), reference_material(), options, set, gx, gy, error)
+            if (allocated(error)) return
+            sx = sx + patches(k)%load*gx/load
+            sy = sy + patches(k)%load*gy/load
+            f_max = max(f_max, maxval(hypot(gx, gy)))
+         end do
+         call pool_errors(set_two_lobe, config, abs(sx - jx), abs(sy - jy), f_max)
+         call pool_errors(set_all_positions, config, abs(sx - jx), abs(sy - jy), f_max)
+      end subroutine pool_wheel
+
       !> One cell against the joined patch's forces.
       subroutine add_cell(ox, oy)
          real(wp), intent(in) :: ox(:), oy(:)

@@ -11,18 +11,29 @@ module validate_patches
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, material_type, &
       prepared_profiles_type, patch_geometry_type, normal_patch_type, find_contact_patches, &
       wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
-   use shcontact_tangential_options, only: parse_spin_flexibility, parse_flexibility, &
-      parse_correction
+   use shcontact_tangential_options, only: parse_spin_flexibility, parse_correction
    use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
    use validate_case, only: solve_normal, reference_material
    use validate_normal, only: reference_pressure_patch, write_strips
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
       error_stats
    use validate_lobes, only: run_lobes
+   use validate_sets, only: pool_errors, set_all_positions, set_two_lobe, declare_set
    implicit none
    private
 
    public :: run_patches, patch_names, n_configs, config_labels
+
+   !> The sets of the summary (validate_sets): the shared positions one by one, the project's
+   !> single-lobe positions together, and every project position (with the two-lobe ones of
+   !> validate_lobes).
+   character(len=*), parameter :: set_names(2) = [character(len=62) :: &
+      'ty0_literal: external data, Y_WS 0 mm, DOE 10³', &
+      'ty5p8_literal: external data, Y_WS 5.8 mm, DOE 20³']
+   character(len=*), parameter :: set_single = &
+      'data/exact: the 19 single-lobe positions −6 … 7 mm, DOE 6³ each'
+   !> The configurations of the summary: defaults, normal reduction local-hertz, correction none.
+   integer, parameter :: set_configs(3) = [1, 9, 10]
 
    !> The patch folders: the two shared ones (under ../shared/reference/), then the positions of
    !> data/exact/ (doc/validation.md §6.5: CONTACT runs made for this project, same set-up).
@@ -36,48 +47,43 @@ module validate_patches
    !> Configurations: the defaults first, then one setting changed at a time; the last rows run
    !> FASTSIM_SH on CONTACT's exact pressure (c_pressure = 'contact', validate_normal's
    !> reference_pressure_patch), which separates the tangential model's error from the normal one.
-   integer, parameter :: n_configs = 18
+   integer, parameter :: n_configs = 14
    character(len=*), parameter :: config_labels(n_configs) = [character(len=48) :: &
       'defaults (coupled; W1; exact-ellipse)', 'bound ellipsoidal', &
       'bound parabolic', 'bound weighted-slip (W2)', 'bound clipped (W3)', &
       'spin flexibility spin', 'spin model additive', 'normal reduction constant', &
       'normal reduction local-hertz', 'correction none', &
       'issue-13 start (local-hertz; no correction)', 'defaults on CONTACT pressure', &
-      'correction none on CONTACT pressure', 'ellipsoidal on CONTACT pressure', &
-      'flexibility patch', 'flexibility patch on CONTACT pressure', 'flexibility carter', &
-      'flexibility carter on CONTACT pressure']
+      'correction none on CONTACT pressure', 'ellipsoidal on CONTACT pressure']
    !> The configurations of the first table of patches_doe.md (doc/validation.md Table 10): the
    !> defaults, the defaults on CONTACT's pressure, the defaults when issue 13 was filed, then
    !> one option changed at a time.
    integer, parameter :: summary_configs(8) = [1, 12, 11, 2, 6, 7, 9, 10]
    character(len=*), parameter :: c_bound(n_configs) = [character(len=13) :: 'weighted', &
       'ellipsoidal', 'parabolic', 'weighted-slip', 'clipped', 'weighted', 'weighted', 'weighted', &
-      'weighted', 'weighted', 'weighted', 'weighted', 'weighted', 'ellipsoidal', 'weighted', &
-      'weighted', 'weighted', 'weighted']
+      'weighted', 'weighted', 'weighted', 'weighted', 'weighted', 'ellipsoidal']
    character(len=*), parameter :: c_flex(n_configs) = [character(len=12) :: 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'spin', 'longitudinal', &
       'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', &
-      'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', 'longitudinal', &
-      'longitudinal']
+      'longitudinal', 'longitudinal']
    character(len=*), parameter :: c_spin(n_configs) = [character(len=8) :: 'uniform', &
       'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'additive', 'uniform', 'uniform', &
-      'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', 'uniform', &
-      'uniform']
+      'uniform', 'uniform', 'uniform', 'uniform', 'uniform']
    character(len=*), parameter :: c_reduction(n_configs) = [character(len=11) :: &
       'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'coupled', 'constant', &
-      'local-hertz', 'coupled', 'local-hertz', 'coupled', 'coupled', 'coupled', 'coupled', &
-      'coupled', 'coupled', 'coupled']
+      'local-hertz', 'coupled', 'local-hertz', 'coupled', 'coupled', 'coupled']
    character(len=*), parameter :: c_pressure(n_configs) = [character(len=7) :: 'ours', &
       'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'ours', 'contact', &
-      'contact', 'contact', 'ours', 'contact', 'ours', 'contact']
+      'contact', 'contact']
+   !> Every configuration has each strip's own flexibilities (the 'patch' and 'carter' variants
+   !> were removed in issue 26; doc/validation.md keeps their last numbers).
    character(len=*), parameter :: c_flexibility(n_configs) = [character(len=6) :: 'strip', &
       'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', 'strip', &
-      'strip', 'strip', 'strip', 'patch', 'patch', 'carter', 'carter']
+      'strip', 'strip', 'strip']
    character(len=*), parameter :: c_correction(n_configs) = [character(len=13) :: &
       'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', &
       'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', 'none', 'none', &
-      'exact-ellipse', 'none', 'exact-ellipse', 'exact-ellipse', 'exact-ellipse', &
-      'exact-ellipse', 'exact-ellipse']
+      'exact-ellipse', 'none', 'exact-ellipse']
 
 contains
 
@@ -100,10 +106,16 @@ contains
       character(len=48) :: cells(10)
       integer :: ip, ic
 
+      ! The order of the summary's rows (validate_sets).
+      call declare_set(trim(set_names(1)))
+      call declare_set(trim(set_names(2)))
+      call declare_set(set_single)
+      call declare_set(set_two_lobe)
+      call declare_set(set_all_positions)
       do ip = 1, size(patch_names)
          call run_patch(patch_dir(ref_root, ip), prepared, out_dir// &
             'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
-            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error)
+            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error, ip)
          if (allocated(error)) return
       end do
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
@@ -141,7 +153,7 @@ contains
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
    !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
    subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, fmax, doe_name, &
-      n, error)
+      n, error, ip)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
       character(len=*), intent(in) :: strips_base
@@ -156,6 +168,8 @@ contains
       character(len=24), intent(out) :: doe_name
       integer, intent(out) :: n
       type(error_type), allocatable, intent(out) :: error
+      !> The patch's index in patch_names (its set in the summary).
+      integer, intent(in) :: ip
       type(csv_table_type) :: summary
       type(patch_geometry_type) :: geometry
       type(normal_patch_type) :: patch, default_patch, contact_patch, coupled_patch
@@ -235,6 +249,17 @@ contains
             ey(ic)%max = -1.0_wp
          end if
          bx(ic) = sum((fx - set%fx)*sign(1.0_wp, set%fx))/n
+         if (any(set_configs == ic)) then
+            if (ip <= n_shared) then
+               call pool_errors(trim(set_names(ip)), findloc(set_configs, ic, 1), &
+                  abs(fx - set%fx), abs(fy - set%fy), fmax(ic))
+            else
+               call pool_errors(set_single, findloc(set_configs, ic, 1), abs(fx - set%fx), &
+                  abs(fy - set%fy), fmax(ic))
+               call pool_errors(set_all_positions, findloc(set_configs, ic, 1), &
+                  abs(fx - set%fx), abs(fy - set%fy), fmax(ic))
+            end if
+         end if
          by(ic) = sum((fy - set%fy)*sign(1.0_wp, set%fy))/n
       end do
    end subroutine run_patch
@@ -284,8 +309,6 @@ contains
          error)
       if (.not. allocated(error)) call parse_spin_flexibility(trim(c_flex(ic)), &
          options%spin_flexibility, error)
-      if (.not. allocated(error)) call parse_flexibility(trim(c_flexibility(ic)), &
-         options%flexibility, error)
       if (.not. allocated(error)) call parse_correction(trim(c_correction(ic)), &
          options%correction, error)
       options%n_elements = 50

@@ -90,6 +90,13 @@ SIGNATURES = {
     "shcontact_fields": [_handle, _int, _int, _int] + [_pdbl] * 7 + [_pint],
     "shcontact_last_error": [_handle, ctypes.c_char_p, _int],
     "shcontact_version": [ctypes.c_char_p, _int],
+    "shcontact_set_value": [_handle, _text, _dbl],
+    "shcontact_solve_state": [_handle],
+    "shcontact_get_value": [_handle, _text, _int, _pdbl],
+    "shcontact_get_field": [_handle, _text, _int, _int, _int, _pdbl],
+    "shcontact_create_wheelset": [ctypes.POINTER(_handle), _text, _text],
+    "shcontact_solve_wheelset": [_handle] + [_dbl] * 9 + [_int, _dbl, _dbl, _pdbl],
+    "shcontact_wheelset_wheel": [_handle, _int, _int, _pdbl],
 }
 
 _loaded = {}

@@ -18,6 +18,9 @@ module shcontact_api_capi
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
       context_patch, context_patch_kinematic, context_message, context_fail, &
       context_create_arrays, context_field_size, context_fields, context_get_profile
+   use shcontact_api_context, only: context_create_wheelset, context_solve_wheelset
+   use shcontact_api_keyed, only: context_set_value, context_solve_state, context_get_value, &
+      context_get_field, context_wheel
    use shcontact_version_info, only: shcontact_version
    implicit none
    private
@@ -27,6 +30,9 @@ module shcontact_api_capi
    public :: shcontact_create, shcontact_destroy, shcontact_set_material, shcontact_set_track, &
       shcontact_set_option, shcontact_solve, shcontact_solve_kinematic, shcontact_patch, &
       shcontact_patch_kinematic, shcontact_last_error, shcontact_version_string
+   public :: shcontact_set_value, shcontact_solve_state, shcontact_get_value, &
+      shcontact_get_field, shcontact_create_wheelset, shcontact_solve_wheelset, &
+      shcontact_wheelset_wheel
 
    interface
       !> The C library's strlen.
@@ -386,6 +392,162 @@ contains
       stat = context_fields(ctx, int(patch), int(nx), int(ny), fx, fy, fa, fpn, fpx, fpy, fs, &
          fst)
    end function shcontact_fields
+
+   !> Set a number by key (`group%variable` as in the app's case files, or a variable name that
+   !> only one group has, e.g. "t_y"): the same setter as shcontact_set_option.
+   integer(c_int) function shcontact_set_value(handle, key, value) result(stat) &
+         bind(C, name='shcontact_set_value')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> The key (const char *).
+      type(c_ptr), value :: key
+      !> The value, in the key's units.
+      real(c_double), value :: value
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      if (.not. c_associated(key)) then
+         stat = context_fail(ctx, 'shcontact_set_value: key is NULL', stat_usage)
+         return
+      end if
+      stat = context_set_value(ctx, from_c(key), real(value, wp))
+   end function shcontact_set_value
+
+   !> Solve the state set by key (position, kinematics, load, creepages; doc/api.md); read the
+   !> result with shcontact_get_value.
+   integer(c_int) function shcontact_solve_state(handle) result(stat) &
+         bind(C, name='shcontact_solve_state')
+      !> The handle.
+      type(c_ptr), value :: handle
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_solve_state(ctx)
+   end function shcontact_solve_state
+
+   !> A result value of the last solve by name (doc/api.md), of the main patch (patch 0) or of
+   !> patch `patch`; *value receives it (0 on failure).
+   integer(c_int) function shcontact_get_value(handle, key, patch, value) result(stat) &
+         bind(C, name='shcontact_get_value')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> The name (const char *).
+      type(c_ptr), value :: key
+      !> 0: the main patch, else 1 to the number of patches.
+      integer(c_int), value :: patch
+      !> Where to store the value (double *).
+      type(c_ptr), value :: value
+      type(contact_context_type), pointer :: ctx
+      real(c_double), pointer :: out
+      real(wp) :: x
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      if (.not. (c_associated(key) .and. c_associated(value))) then
+         stat = context_fail(ctx, 'shcontact_get_value: key or value is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(value, out)
+      stat = context_get_value(ctx, from_c(key), int(patch), x)
+      out = x
+   end function shcontact_get_value
+
+   !> One element field of patch `patch` of the last solve by name (x, y, area, pn, px, py,
+   !> slip, state), nx·ny values in the order of shcontact_fields.
+   integer(c_int) function shcontact_get_field(handle, key, patch, nx, ny, field) result(stat) &
+         bind(C, name='shcontact_get_field')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> The field name (const char *).
+      type(c_ptr), value :: key
+      !> Patch index; the sizes of shcontact_field_size.
+      integer(c_int), value :: patch, nx, ny
+      !> The field (double *, nx·ny values).
+      type(c_ptr), value :: field
+      type(contact_context_type), pointer :: ctx
+      real(c_double), pointer :: a(:, :)
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      if (.not. c_associated(key) .or. (max(nx, 0)*max(ny, 0) > 0 .and. &
+          .not. c_associated(field))) then
+         stat = context_fail(ctx, 'shcontact_get_field: key or field is NULL', stat_usage)
+         return
+      end if
+      call c_f_pointer(field, a, [max(int(nx), 0), max(int(ny), 0)])
+      stat = context_get_field(ctx, from_c(key), int(patch), int(nx), int(ny), a)
+   end function shcontact_get_field
+
+   !> Create a wheelset handle: both wheels from the same profile names (the left wheel the
+   !> mirror image), default track, material and options. *handle as for shcontact_create.
+   integer(c_int) function shcontact_create_wheelset(handle, wheel, rail) result(stat) &
+         bind(C, name='shcontact_create_wheelset')
+      !> Where to store the handle (shcontact_contact **).
+      type(c_ptr), value :: handle
+      !> Wheel and rail profile names (const char *).
+      type(c_ptr), value :: wheel, rail
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      call new_context(handle, ctx)
+      if (.not. associated(ctx)) return
+      if (.not. (c_associated(wheel) .and. c_associated(rail))) then
+         stat = context_fail(ctx, 'shcontact_create_wheelset: wheel or rail profile name '// &
+            "is NULL; expected a name such as 'builtin:S1002' or a file name", stat_usage)
+         return
+      end if
+      stat = context_create_wheelset(ctx, from_c(wheel), from_c(rail))
+   end function shcontact_create_wheelset
+
+   !> Solve both wheels of a wheelset handle for one wheelset state (as shcontact_solve_kinematic)
+   !> and each wheel's load; totals[SHCONTACT_WS_SIZE] receives F_x, F_y, F_z (N) on the
+   !> wheelset, true track frame, and M_z (N mm) about the vertical axis through its centre.
+   integer(c_int) function shcontact_solve_wheelset(handle, y_ws, yaw, roll, v_forward, &
+         v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate, load_mode, load_right, &
+         load_left, totals) result(stat) bind(C, name='shcontact_solve_wheelset')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> Position (mm, rad).
+      real(c_double), value :: y_ws, yaw, roll
+      !> Velocities (mm/s) and rates (rad/s).
+      real(c_double), value :: v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate
+      !> Load mode and the value of each wheel.
+      integer(c_int), value :: load_mode
+      real(c_double), value :: load_right, load_left
+      !> The totals (4 values).
+      real(c_double), intent(out) :: totals(4)
+      type(contact_context_type), pointer :: ctx
+      real(wp) :: t(4)
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_solve_wheelset(ctx, wheelset_state_type(y_ws=real(y_ws, wp), &
+         yaw=real(yaw, wp), roll=real(roll, wp), v_forward=real(v_forward, wp), &
+         v_lateral=real(v_lateral, wp), v_vertical=real(v_vertical, wp), &
+         roll_rate=real(roll_rate, wp), yaw_rate=real(yaw_rate, wp), &
+         pitch_rate=real(pitch_rate, wp)), int(load_mode), real(load_right, wp), &
+         real(load_left, wp), t)
+      totals = t
+   end function shcontact_solve_wheelset
+
+   !> Wheel `side` (SHCONTACT_RIGHT, SHCONTACT_LEFT) of the last wheelset solve:
+   !> values[SHCONTACT_KIN_SIZE] of its main patch (patch 0) or of patch `patch`, with the
+   !> wheel's counts and totals (its side frame), as shcontact_patch_kinematic.
+   integer(c_int) function shcontact_wheelset_wheel(handle, side, patch, values) result(stat) &
+         bind(C, name='shcontact_wheelset_wheel')
+      !> The handle.
+      type(c_ptr), value :: handle
+      !> 1 right, −1 left; 0 or a patch index.
+      integer(c_int), value :: side, patch
+      !> The values.
+      real(c_double), intent(out) :: values(kinematic_value_count)
+      type(contact_context_type), pointer :: ctx
+      stat = stat_usage
+      if (.not. c_associated(handle)) return
+      call c_f_pointer(handle, ctx)
+      stat = context_wheel(ctx, int(side), int(patch), values)
+   end function shcontact_wheelset_wheel
 
    !> The status of the last call on a handle; its message is copied to buffer (NUL-terminated,
    !> cut to length − 1 characters; empty after a success). For a NULL handle: status 1.

@@ -2,20 +2,19 @@
 !> points, C API) need: every operation takes plain integers, reals and strings and returns an
 !> integer status, 0 on success or one of the `stat_*` codes of shcontact_core_error, and keeps
 !> the message in the context. The message lives in a fixed buffer, so a successful call
-!> allocates nothing here.
+!> allocates nothing here. The context keeps its settings as the app's configuration
+!> (shcontact_api_settings): options by key take the case files' one-assignment reader, and
+!> every setter gives the solver what the configuration translates to. A wheelset context
+!> ([[context_create_wheelset]]) holds both wheels of shcontact_api_wheelset instead.
 module shcontact_api_context
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
-      ieee_set_halting_mode, ieee_get_flag, ieee_set_flag
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
-   use shcontact_geometry_track, only: track_type
+   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_geometry_track, only: track_type, side_left
    use shcontact_geometry_contact, only: contact_options_type
-   use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail, &
@@ -24,26 +23,23 @@ module shcontact_api_context
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
       contact_fields_type, max_patches
+   use shcontact_io_config, only: case_config_type
+   use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type
+   use shcontact_api_settings, only: library_setup_type, library_setup, set_config_value, &
+      split_key, key_use, key_solver, key_fields, key_creation, key_app
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
    implicit none
    private
 
-   public :: contact_context_type, option_keys
+   public :: contact_context_type, context_record, context_usable
    public :: context_create, context_create_arrays, context_set_material, context_set_track, &
       context_set_option, context_solve, context_solve_kinematic, context_patch, &
       context_patch_kinematic, context_field_size, context_fields, context_get_profile, &
-      context_message, context_fail
+      context_message, context_fail, context_create_wheelset, context_solve_wheelset
 
    !> Longest message kept (longer ones are cut).
    integer, parameter :: message_capacity = 1024
-
-   !> Keys accepted by [[context_set_option]] (the app's `group%variable` names).
-   character(len=*), parameter :: option_keys(12) = [character(len=24) :: 'normal%method', &
-      'normal%reduction', 'normal%epsilon', 'normal%n_strips', 'normal%b_min', &
-      'tangential%method', 'tangential%bound', 'tangential%spin_model', &
-      'tangential%n_elements', 'profiles%wheel_smoothing', 'profiles%rail_smoothing', &
-      'output%fields']
 
    !> One contact of a flat interface.
    type :: contact_context_type
@@ -59,6 +55,14 @@ module shcontact_api_context
       !> The fields of the last solve (valid when has_fields).
       type(contact_fields_type) :: fields
       logical :: has_fields = .false.
+      !> The settings, as the app's configuration (shcontact_api_settings): every option set
+      !> by key, the positional setters' data and the state of a keyed solve.
+      type(case_config_type) :: config
+      !> A wheelset handle (context_create_wheelset): both wheels, their last result.
+      logical :: is_wheelset = .false.
+      logical :: wheelset_ready = .false.
+      type(wheelset_solver_type), allocatable :: wheelset
+      type(wheelset_result_type) :: wheelset_result
       !> Status of the last operation (0: success).
       integer :: stat = 0
       !> Message of the last operation ('' on success).
@@ -82,6 +86,7 @@ contains
       ctx%has_result = .false.
       ctx%has_fields = .false.
       call ctx%solver%init(trim(wheel), trim(rail), error, side=side)
+      call start_config(ctx, wheel, rail, side)
       stat = record(ctx, error)
    end function context_create
 
@@ -107,8 +112,63 @@ contains
       if (.not. allocated(error)) call profile_from_points(rail_y, rail_z, profile_kind_rail, &
          rail, error)
       if (.not. allocated(error)) call ctx%solver%init(wheel, rail, error, side=side)
+      call start_config(ctx, '(arrays)', '(arrays)', side)
       stat = record(ctx, error)
    end function context_create_arrays
+
+   !> Create a wheelset handle: both wheels (shcontact_api_wheelset's wheelset_solver_type) from
+   !> profile names (`builtin:NAME` or files), default track, material and options; the options
+   !> of [[context_set_option]] apply to both wheels.
+   integer function context_create_wheelset(ctx, wheel, rail) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Wheel and rail profile (right-side canonical form; the left wheel is its mirror image).
+      character(len=*), intent(in) :: wheel, rail
+      type(error_type), allocatable :: error
+
+      ctx%has_result = .false.
+      ctx%has_fields = .false.
+      ctx%is_wheelset = .true.
+      if (.not. allocated(ctx%wheelset)) allocate (ctx%wheelset)
+      call ctx%wheelset%init(trim(wheel), trim(rail), error)
+      ctx%wheelset_ready = .not. allocated(error)
+      call start_config(ctx, wheel, rail, 1)
+      stat = record(ctx, error)
+   end function context_create_wheelset
+
+   !> Solve both wheels of a wheelset handle for one wheelset state (track frame) and loads;
+   !> totals receives the forces on the wheelset (N, true track frame) and their moment about
+   !> the vertical axis (N·mm): F_x, F_y, F_z, M_z (zeros on failure).
+   integer function context_solve_wheelset(ctx, state, load_mode, load_right, load_left, &
+         totals) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> Wheelset position and velocities (track frame; mm, mm/s, rad, rad/s).
+      type(wheelset_state_type), intent(in) :: state
+      !> 1: normal force (N), 2: vertical force (N), 3: approach (mm), of each wheel.
+      integer, intent(in) :: load_mode
+      !> The force or approach of the right and of the left wheel.
+      real(wp), intent(in) :: load_right, load_left
+      !> F_x, F_y, F_z (N), M_z (N·mm).
+      real(wp), intent(out) :: totals(4)
+      type(error_type), allocatable :: error
+
+      totals = 0.0_wp
+      ctx%has_result = .false.
+      if (.not. ctx%is_wheelset) then
+         call fatal_error(error, 'a one-wheel handle: create a wheelset handle '// &
+            '(shcontact_create_wheelset, shc_create_ws) for the wheelset call', stat_usage)
+      else if (usable(ctx, error, wheelset=.true.)) then
+         call ctx%wheelset%solve(state, contact_load_type(load_mode, load_right), &
+            contact_load_type(load_mode, load_left), ctx%wheelset_result, error)
+         if (.not. allocated(error)) then
+            ctx%has_result = .true.
+            totals = [ctx%wheelset_result%fx, ctx%wheelset_result%fy, ctx%wheelset_result%fz, &
+               ctx%wheelset_result%mz]
+         end if
+      end if
+      stat = record(ctx, error)
+   end function context_solve_wheelset
 
    !> Set the shear modulus G (MPa), Poisson's ratio ν and the friction coefficient μ.
    integer function context_set_material(ctx, shear_modulus, poisson, friction) result(stat)
@@ -118,8 +178,14 @@ contains
       real(wp), intent(in) :: shear_modulus, poisson, friction
       type(error_type), allocatable :: error
 
-      if (usable(ctx, error)) call ctx%solver%set_material(material_type(shear_modulus, &
-         poisson, friction), error)
+      type(case_config_type) :: config
+
+      if (usable(ctx, error, wheelset=.true.)) then
+         config = ctx%config
+         config%material = material_type(shear_modulus, poisson, friction)
+         call apply_config(ctx, config, error, material_only=.true.)
+         if (.not. allocated(error)) ctx%config = config
+      end if
       stat = record(ctx, error)
    end function context_set_material
 
@@ -140,15 +206,33 @@ contains
       real(wp), intent(in) :: nominal_radius
       type(error_type), allocatable :: error
 
-      if (usable(ctx, error)) call ctx%solver%set_track(error, track=track_type( &
-         gauge=gauge, gauge_height=gauge_height, rail_inclination=inclination, &
-         rail_canted=rail_canted, flange_back_distance=flange_back_distance, &
-         flange_back_position=flange_back_position, nominal_radius=nominal_radius))
+      type(case_config_type) :: config
+
+      if (usable(ctx, error, wheelset=.true.)) then
+         config = ctx%config
+         config%track%gauge = gauge
+         config%track%gauge_height = gauge_height
+         config%track%inclination = inclination
+         config%track%rail_canted = rail_canted
+         config%track%flange_back_distance = flange_back_distance
+         config%track%flange_back_position = flange_back_position
+         config%track%nominal_radius = nominal_radius
+         call apply_config(ctx, config, error)
+         if (.not. allocated(error)) ctx%config = config
+      end if
       stat = record(ctx, error)
    end function context_set_track
 
-   !> Set one option by its name in the app's case files (`group%variable`, see [[option_keys]])
-   !> and its value as text, e.g. ('tangential%bound', 'ellipsoidal') or ('normal%n_strips', '200').
+   !> Set one option by its name in the app's case files (`group%variable`, any variable of the
+   !> namelist's variable table but the sweep's) and its value as text, as on the app's command
+   !> line (`--set`), e.g. ('tangential%bound', 'ellipsoidal') or ('normal%n_strips', '200'):
+   !> the namelist's single-assignment reader sets it in the handle's configuration, which goes
+   !> to the solver as the app translates it (shcontact_api_settings). Keys of the track,
+   !> material, smoothing and the normal and tangential options change the solver; keys of
+   !> `&position`, `&kinematics`, `&load` and `&creepage` the state of [[context_solve_state]];
+   !> `output%fields` ('all' or 1, 'none' or 0) whether solves keep their element fields.
+   !> Profile files and track%side are given at creation; the output file, its format and the
+   !> sweep are the app's. Nothing changes on error.
    integer function context_set_option(ctx, key, value) result(stat)
       !> The context.
       type(contact_context_type), intent(inout) :: ctx
@@ -157,67 +241,115 @@ contains
       !> Its value.
       character(len=*), intent(in) :: value
       type(error_type), allocatable :: error
-      type(normal_options_type) :: normal, parsed
-      type(tangential_options_type) :: tangential
-      type(contact_options_type) :: search
-      character(len=:), allocatable :: name
+      type(case_config_type) :: config
+      character(len=:), allocatable :: group, name
+      logical :: keep
 
-      if (.not. usable(ctx, error)) then
+      if (.not. usable(ctx, error, wheelset=.true.)) then
          stat = record(ctx, error)
          return
       end if
-      if (scan(value, control_characters) > 0) then
-         call fatal_error(error, "option '"//trim(key)//"' = '"//visible(value)// &
-            "': a control character in the value", stat_invalid_input)
-         stat = record(ctx, error)
-         return
-      end if
-      call ctx%solver%get_options(normal, tangential)
-      search = ctx%solver%get_contact_options()
-      name = trim(adjustl(to_lower(key)))
-      select case (name)
-      case ('normal%method')
-         call new_normal_options(parsed, error, method=trim(value))
-         normal%method = parsed%method
-      case ('normal%reduction')
-         call new_normal_options(parsed, error, reduction=trim(value))
-         normal%reduction = parsed%reduction
-      case ('normal%epsilon')
-         call read_real(name, value, normal%epsilon, error)
-      case ('normal%n_strips')
-         call read_int(name, value, normal%n_strips, error)
-      case ('normal%b_min')
-         call read_real(name, value, search%b_min, error)
-      case ('tangential%method')
-         call parse_method(trim(value), tangential%method, error)
-      case ('tangential%bound')
-         call parse_bound(trim(value), tangential%bound, error)
-      case ('tangential%spin_model')
-         call parse_spin_model(trim(value), tangential%spin_model, error)
-      case ('tangential%n_elements')
-         call read_int(name, value, tangential%n_elements, error)
-      case ('profiles%wheel_smoothing')
-         call read_real(name, value, search%l_filt_wheel, error)
-      case ('profiles%rail_smoothing')
-         call read_real(name, value, search%l_filt_rail, error)
-      case ('output%fields')
-         call read_fields_choice(name, value, ctx%keep_fields, error)
-         stat = record(ctx, error)
-         return
-      case default
-         call fatal_error(error, "option '"//trim(key)//"': unknown; expected one of "// &
-            key_list(), stat_invalid_input)
-      end select
+      config = ctx%config
+      call set_config_value(config, key, value, error)
       if (.not. allocated(error)) then
-         select case (name)
-         case ('normal%b_min', 'profiles%wheel_smoothing', 'profiles%rail_smoothing')
-            call ctx%solver%set_track(error, contact_options=search)
-         case default
-            call ctx%solver%set_options(error, normal=normal, tangential=tangential)
+         call split_key(key, group, name)
+         select case (key_use(group, name))
+         case (key_solver)
+            call apply_config(ctx, config, error, material_only=group == 'material')
+         case (key_fields)
+            keep = ctx%keep_fields
+            call read_fields_choice(group//'%'//name, value, keep, error)
+            if (.not. allocated(error)) ctx%keep_fields = keep
+         case (key_creation)
+            call fatal_error(error, 'option '//group//'%'//name//': given when the contact '// &
+               'is created (shcontact_create, shc_create: profile names and side)', &
+               stat_invalid_input)
+         case (key_app)
+            call fatal_error(error, 'option '//group//'%'//name//": the app's only (its "// &
+               'output file or sweep); a handle returns its results to the caller', &
+               stat_invalid_input)
          end select
       end if
+      if (.not. allocated(error)) ctx%config = config
       stat = record(ctx, error)
    end function context_set_option
+
+   !> Give the solver (or both wheels of a wheelset handle) the data of a configuration:
+   !> only what changed is set again (a new track or contact-search option prepares the
+   !> profiles again).
+   subroutine apply_config(ctx, config, error, material_only)
+      type(contact_context_type), intent(inout) :: ctx
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      !> Only the material changed (the library takes the configuration's material_type as it
+      !> is): a one-wheel solver just gets it, with no other comparison (a few µs).
+      logical, intent(in), optional :: material_only
+      type(library_setup_type) :: setup, old
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+
+      call library_setup(config, setup, error)
+      if (allocated(error)) return
+      if (ctx%is_wheelset) then
+         ctx%has_result = .false.
+         call ctx%wheelset%init(trim(config%profiles%wheel), trim(config%profiles%rail), &
+            error, track=setup%track, material=setup%material, &
+            contact_options=setup%contact_options, normal_options=setup%normal, &
+            tangential_options=setup%tangential)
+         ctx%wheelset_ready = .not. allocated(error)
+         return
+      end if
+      if (present(material_only)) then
+         if (material_only) then
+            call ctx%solver%set_material(setup%material, error)
+            return
+         end if
+      end if
+      call library_setup(ctx%config, old, error)
+      if (allocated(error)) return
+      if (differ(setup%track, old%track) .or. &
+          differ(setup%contact_options, old%contact_options)) then
+         call ctx%solver%set_track(error, track=setup%track, &
+            contact_options=setup%contact_options)
+         if (allocated(error)) return
+      end if
+      call ctx%solver%get_options(normal, tangential)
+      if (differ(setup%normal, normal) .or. differ(setup%tangential, tangential)) then
+         call ctx%solver%set_options(error, normal=setup%normal, tangential=setup%tangential)
+         if (allocated(error)) return
+      end if
+      call ctx%solver%set_material(setup%material, error)
+   end subroutine apply_config
+
+   !> True when two option objects (derived types without allocatable parts) differ in any
+   !> component: compared as list-directed text, which shows every component (no padding).
+   logical function differ(a, b)
+      class(*), intent(in) :: a, b
+      character(len=2048) :: ta, tb
+      ta = ''
+      tb = ''
+      select type (a)
+      type is (track_type)
+         write (ta, *) a
+      type is (contact_options_type)
+         write (ta, *) a
+      type is (normal_options_type)
+         write (ta, *) a
+      type is (tangential_options_type)
+         write (ta, *) a
+      end select
+      select type (b)
+      type is (track_type)
+         write (tb, *) b
+      type is (contact_options_type)
+         write (tb, *) b
+      type is (normal_options_type)
+         write (tb, *) b
+      type is (tangential_options_type)
+         write (tb, *) b
+      end select
+      differ = ta /= tb
+   end function differ
 
    !> Solve one contact and return the flat result ([[result_values]]).
    integer function context_solve(ctx, t_y, roll, load_mode, load, nu_x, nu_y, phi, values) &
@@ -436,6 +568,22 @@ contains
       stat = record(ctx, error)
    end function context_get_profile
 
+   !> The configuration of a new contact: the defaults, its profile names and side, and the
+   !> track the solver took (a MiniProf wheel's flange back at 0).
+   subroutine start_config(ctx, wheel, rail, side)
+      type(contact_context_type), intent(inout) :: ctx
+      character(len=*), intent(in) :: wheel, rail
+      integer, intent(in) :: side
+      type(track_type) :: track
+      ctx%config = case_config_type()
+      ctx%config%profiles%wheel = wheel
+      ctx%config%profiles%rail = rail
+      ctx%config%track%side = side
+      if (.not. ctx%solver%is_ready()) return
+      track = ctx%solver%get_track()
+      ctx%config%track%flange_back_position = track%flange_back_position
+   end subroutine start_config
+
    !> An error unless the last solve kept its fields and has a patch k.
    subroutine check_fields(ctx, k, error)
       type(contact_context_type), intent(in) :: ctx
@@ -496,11 +644,41 @@ contains
       status = record(ctx, error)
    end function context_fail
 
+   !> True when the contact (solver or wheelset) is ready; otherwise set error.
+   logical function context_usable(ctx, error)
+      !> The context.
+      type(contact_context_type), intent(in) :: ctx
+      !> Set when it is not.
+      type(error_type), allocatable, intent(out) :: error
+      context_usable = usable(ctx, error, wheelset=.true.)
+   end function context_usable
+
+   !> Keep the status and message of an operation; return the status (0 on success).
+   integer function context_record(ctx, error) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> The error of the operation (unallocated on success).
+      type(error_type), allocatable, intent(in) :: error
+      stat = record(ctx, error)
+   end function context_record
+
    !> True when the solver is ready; otherwise set error.
-   logical function usable(ctx, error)
+   logical function usable(ctx, error, wheelset)
       type(contact_context_type), intent(in) :: ctx
       type(error_type), allocatable, intent(out) :: error
-      usable = ctx%solver%is_ready()
+      !> The call also takes a wheelset handle (default: a one-wheel handle only).
+      logical, intent(in), optional :: wheelset
+      logical :: both
+      both = .false.
+      if (present(wheelset)) both = wheelset
+      if (ctx%is_wheelset .and. .not. both) then
+         usable = .false.
+         call fatal_error(error, 'a wheelset handle (shcontact_create_wheelset, shc_create_ws) '// &
+            'takes the wheelset calls (shcontact_solve_wheelset, shc_solve_ws; doc/api.md), '// &
+            'not the one-wheel ones', stat_usage)
+         return
+      end if
+      usable = ctx%solver%is_ready() .or. (ctx%is_wheelset .and. ctx%wheelset_ready)
       if (.not. usable) call fatal_error(error, 'contact not initialised: its creation failed ('// &
          'see the message of that call) or it was destroyed', stat_usage)
    end function usable
@@ -520,49 +698,6 @@ contains
       stat = ctx%stat
    end function record
 
-   !> A real option value from text.
-   subroutine read_real(key, text, value, error)
-      character(len=*), intent(in) :: key, text
-      real(wp), intent(inout) :: value
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat
-      real(wp) :: x
-      logical :: halting, overflow
-      ! 1e309 overflows inside the conversion: refused, never trapped (debug builds halt).
-      call ieee_get_halting_mode(ieee_overflow, halting)
-      call ieee_set_halting_mode(ieee_overflow, .false.)
-      call ieee_set_flag(ieee_overflow, .false.)
-      read (text, *, iostat=stat) x
-      call ieee_get_flag(ieee_overflow, overflow)
-      call ieee_set_flag(ieee_overflow, .false.)
-      call ieee_set_halting_mode(ieee_overflow, halting)
-      if (stat == 0) then
-         if (overflow .or. .not. ieee_is_finite(x)) stat = 1
-      end if
-      if (stat /= 0) then
-         call fatal_error(error, "option "//key//" = '"//trim(text)// &
-            "': expected a finite number", &
-            stat_invalid_input)
-         return
-      end if
-      value = x
-   end subroutine read_real
-
-   !> An integer option value from text.
-   subroutine read_int(key, text, value, error)
-      character(len=*), intent(in) :: key, text
-      integer, intent(inout) :: value
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat, i
-      read (text, *, iostat=stat) i
-      if (stat /= 0) then
-         call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected an integer", &
-            stat_invalid_input)
-         return
-      end if
-      value = i
-   end subroutine read_int
-
    !> The value of option `output%fields`: 'all' or '1' keeps the fields of every solve, 'none'
    !> or '0' none (the app's names for all and none of them).
    subroutine read_fields_choice(key, text, keep, error)
@@ -580,15 +715,5 @@ contains
             stat_invalid_input)
       end select
    end subroutine read_fields_choice
-
-   !> The accepted keys, comma-separated.
-   pure function key_list() result(text)
-      character(len=:), allocatable :: text
-      integer :: i
-      text = trim(option_keys(1))
-      do i = 2, size(option_keys)
-         text = text//', '//trim(option_keys(i))
-      end do
-   end function key_list
 
 end module shcontact_api_context

@@ -21,9 +21,14 @@ module shcontact_api_legacy
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
       context_patch, context_patch_kinematic, context_message, context_create_arrays, &
       context_field_size, context_fields, context_fail, context_get_profile
+   use shcontact_api_context, only: context_create_wheelset, context_solve_wheelset
+   use shcontact_api_keyed, only: context_set_value, context_solve_state, context_get_value, &
+      context_get_field, context_wheel
    implicit none
    private
 
+   public :: legacy_set_value, legacy_solve_state, legacy_get_value, legacy_get_field, &
+      legacy_create_wheelset, legacy_solve_wheelset, legacy_wheelset_wheel
    public :: max_handles
    public :: legacy_create, legacy_create_arrays, legacy_field_size, legacy_fields, &
       legacy_get_profile
@@ -295,6 +300,124 @@ contains
          y(1:max(nmax, 0)), z(1:max(nmax, 0)))
    end subroutine legacy_get_profile
 
+   !> Set a number by key (context_set_value: `group%variable` or a variable of one group).
+   subroutine legacy_set_value(ihandle, key, x, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> The key.
+      character(len=*), intent(in) :: key
+      !> The value, in the key's units.
+      real(wp), intent(in) :: x
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_set_value(slots(ihandle)%ctx, key, x)
+   end subroutine legacy_set_value
+
+   !> Solve the state set by key (context_solve_state).
+   subroutine legacy_solve_state(ihandle, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_solve_state(slots(ihandle)%ctx)
+   end subroutine legacy_solve_state
+
+   !> A result value by name, of the main patch (ipatch = 0) or of patch ipatch
+   !> (context_get_value).
+   subroutine legacy_get_value(ihandle, key, ipatch, x, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> The name.
+      character(len=*), intent(in) :: key
+      !> 0 or the patch index.
+      integer, intent(in) :: ipatch
+      !> The value (0 on failure).
+      real(wp), intent(out) :: x
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      x = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_get_value(slots(ihandle)%ctx, key, ipatch, x)
+   end subroutine legacy_get_value
+
+   !> One element field by name, array (nx, ny) (context_get_field).
+   subroutine legacy_get_field(ihandle, key, ipatch, nx, ny, a, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> The field name.
+      character(len=*), intent(in) :: key
+      !> The patch index and the field sizes.
+      integer, intent(in) :: ipatch, nx, ny
+      !> The field.
+      real(wp), intent(out) :: a(nx, ny)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      a = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_get_field(slots(ihandle)%ctx, key, ipatch, nx, ny, a)
+   end subroutine legacy_get_field
+
+   !> Reserve a handle and create a wheelset (both wheels) from profile names; handles as
+   !> [[legacy_create]].
+   subroutine legacy_create_wheelset(ihandle, wheel, rail, istat)
+      !> The new handle (0 when the table is full).
+      integer, intent(out) :: ihandle
+      !> Wheel and rail profile: `builtin:NAME` or a file name.
+      character(len=*), intent(in) :: wheel, rail
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      call reserve(ihandle)
+      if (ihandle == 0) then
+         istat = stat_usage
+         return
+      end if
+      istat = context_create_wheelset(slots(ihandle)%ctx, wheel, rail)
+   end subroutine legacy_create_wheelset
+
+   !> Solve both wheels of a wheelset handle; totals(4) receives F_x, F_y, F_z (N) and M_z
+   !> (N·mm) on the wheelset (context_solve_wheelset).
+   subroutine legacy_solve_wheelset(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, &
+         imode, fright, fleft, totals, istat)
+      !> The handle.
+      integer, intent(in) :: ihandle
+      !> Lateral shift (mm), yaw and roll (rad) of the wheelset.
+      real(wp), intent(in) :: yws, yaw, roll
+      !> Forward (> 0), lateral and vertical velocity of the wheelset centre (mm/s).
+      real(wp), intent(in) :: vs, vy, vz
+      !> Roll, yaw and pitch rate (rad/s; vpitch < 0 rolling forward).
+      real(wp), intent(in) :: vroll, vyaw, vpitch
+      !> Load mode: 1 normal force, 2 vertical force, 3 approach.
+      integer, intent(in) :: imode
+      !> Load of the right and of the left wheel (N or mm).
+      real(wp), intent(in) :: fright, fleft
+      !> The totals.
+      real(wp), intent(out) :: totals(4)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      totals = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_solve_wheelset(slots(ihandle)%ctx, &
+         wheelset_state_type(y_ws=yws, yaw=yaw, roll=roll, v_forward=vs, v_lateral=vy, &
+         v_vertical=vz, roll_rate=vroll, yaw_rate=vyaw, pitch_rate=vpitch), imode, fright, &
+         fleft, totals)
+   end subroutine legacy_solve_wheelset
+
+   !> Wheel iside (1 right, −1 left) of the last wheelset solve in the kinematic layout, main
+   !> patch (ipatch = 0) or patch ipatch (context_wheel).
+   subroutine legacy_wheelset_wheel(ihandle, iside, ipatch, values, istat)
+      !> The handle, the wheel and the patch.
+      integer, intent(in) :: ihandle, iside, ipatch
+      !> The values.
+      real(wp), intent(out) :: values(kinematic_value_count)
+      !> Status (0 success).
+      integer, intent(out) :: istat
+      values = 0.0_wp
+      istat = stat_usage
+      if (valid(ihandle)) istat = context_wheel(slots(ihandle)%ctx, iside, ipatch, values)
+   end subroutine legacy_wheelset_wheel
+
    !> The message of the last call on a handle (blank after a success), or why the handle is
    !> not valid. Cut to len(msg).
    subroutine legacy_message(ihandle, msg)
@@ -494,3 +617,88 @@ subroutine shc_errmsg(ihandle, msg)
    character(len=*), intent(out) :: msg
    call legacy_message(ihandle, msg)
 end subroutine shc_errmsg
+
+!> Set a number by key: 'group%variable' as in the app's case files (or a variable name that
+!> only one group has, e.g. 't_y'), value x in the key's units (doc/api.md).
+subroutine shc_set_value(ihandle, key, x, istat)
+   use shcontact_api_legacy, only: legacy_set_value
+   implicit none
+   integer, intent(in) :: ihandle
+   character(len=*), intent(in) :: key
+   double precision, intent(in) :: x
+   integer, intent(out) :: istat
+   call legacy_set_value(ihandle, key, x, istat)
+end subroutine shc_set_value
+
+!> Solve the state set by key (position, kinematics, load, creepages; doc/api.md).
+subroutine shc_solve_state(ihandle, istat)
+   use shcontact_api_legacy, only: legacy_solve_state
+   implicit none
+   integer, intent(in) :: ihandle
+   integer, intent(out) :: istat
+   call legacy_solve_state(ihandle, istat)
+end subroutine shc_solve_state
+
+!> A result value of the last solve by name (doc/api.md), main patch (ipatch = 0) or patch
+!> ipatch.
+subroutine shc_get_value(ihandle, key, ipatch, x, istat)
+   use shcontact_api_legacy, only: legacy_get_value
+   implicit none
+   integer, intent(in) :: ihandle
+   character(len=*), intent(in) :: key
+   integer, intent(in) :: ipatch
+   double precision, intent(out) :: x
+   integer, intent(out) :: istat
+   call legacy_get_value(ihandle, key, ipatch, x, istat)
+end subroutine shc_get_value
+
+!> One element field of patch ipatch by name ('x', 'y', 'area', 'pn', 'px', 'py', 'slip',
+!> 'state'), array a(nx, ny) as SHC_FIELDS gives it.
+subroutine shc_get_field(ihandle, key, ipatch, nx, ny, a, istat)
+   use shcontact_api_legacy, only: legacy_get_field
+   implicit none
+   integer, intent(in) :: ihandle
+   character(len=*), intent(in) :: key
+   integer, intent(in) :: ipatch, nx, ny
+   double precision, intent(out) :: a(nx, ny)
+   integer, intent(out) :: istat
+   call legacy_get_field(ihandle, key, ipatch, nx, ny, a, istat)
+end subroutine shc_get_field
+
+!> Create a wheelset handle: both wheels from the same profile names (doc/api.md).
+subroutine shc_create_ws(ihandle, wheel, rail, istat)
+   use shcontact_api_legacy, only: legacy_create_wheelset
+   implicit none
+   integer, intent(out) :: ihandle
+   character(len=*), intent(in) :: wheel, rail
+   integer, intent(out) :: istat
+   call legacy_create_wheelset(ihandle, wheel, rail, istat)
+end subroutine shc_create_ws
+
+!> Solve both wheels of a wheelset handle: the wheelset state as SHC_SOLVE_KIN, load mode imode
+!> and the load of the right (fright) and left (fleft) wheel; totals(4) receives F_x, F_y, F_z
+!> (N, on the wheelset, true track frame) and M_z (N mm) about its vertical axis.
+subroutine shc_solve_ws(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, &
+      fright, fleft, totals, istat)
+   use shcontact_api_legacy, only: legacy_solve_wheelset
+   implicit none
+   integer, intent(in) :: ihandle
+   double precision, intent(in) :: yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch
+   integer, intent(in) :: imode
+   double precision, intent(in) :: fright, fleft
+   double precision, intent(out) :: totals(4)
+   integer, intent(out) :: istat
+   call legacy_solve_wheelset(ihandle, yws, yaw, roll, vs, vy, vz, vroll, vyaw, vpitch, imode, &
+      fright, fleft, totals, istat)
+end subroutine shc_solve_ws
+
+!> The values(29) of wheel iside (SHC_RIGHT, SHC_LEFT) of the last wheelset solve, kinematic
+!> layout: its main patch (ipatch = 0) or patch ipatch.
+subroutine shc_ws_wheel(ihandle, iside, ipatch, values, istat)
+   use shcontact_api_legacy, only: legacy_wheelset_wheel
+   implicit none
+   integer, intent(in) :: ihandle, iside, ipatch
+   double precision, intent(out) :: values(29)
+   integer, intent(out) :: istat
+   call legacy_wheelset_wheel(ihandle, iside, ipatch, values, istat)
+end subroutine shc_ws_wheel

@@ -5,12 +5,13 @@ module shcontact_case_result
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_pipeline_result, only: contact_result_type
    implicit none
    private
 
    public :: case_summary_type, case_result_type, summary_columns, n_summary_columns
    public :: summary_value, set_summary_value, case_not_run, failure_type
-   public :: summary_column_used
+   public :: summary_column_used, case_summary
 
    !> Status of a case that has not been solved yet.
    integer, parameter :: case_not_run = -1
@@ -91,6 +92,42 @@ module shcontact_case_result
    end type failure_type
 
 contains
+
+   !> The summary numbers of a solved case: the track-frame totals and the main patch of the
+   !> pipeline's result (shcontact_pipeline_stages), for prescribed and kinematic cases alike.
+   pure function case_summary(contact) result(s)
+      !> The stage results' summary.
+      type(contact_result_type), intent(in) :: contact
+      type(case_summary_type) :: s
+      s%stat = 0
+      s%n_patches = contact%n_patches
+      s%n_loaded = contact%n_loaded
+      s%main_patch = contact%main_patch
+      s%fn_total = contact%track%fn
+      s%fx_total = contact%track%fx
+      s%fy_total = contact%track%fy
+      s%fz_total = contact%track%fz
+      associate (m => contact%main)
+         s%fn = m%fn
+         s%fx = m%fx
+         s%fy = m%fy
+         s%mz = m%mz
+         s%fx_norm = m%fx_norm
+         s%fy_norm = m%fy_norm
+         s%coulomb_ratio = m%coulomb_ratio
+         s%adhesion_fraction = m%adhesion_fraction
+         s%approach = m%approach
+         s%area = m%area
+         s%p_max = m%p_max
+         s%gamma0 = m%gamma0
+         s%r0 = m%r0
+         s%y_track = m%y_track
+         s%x_track = m%x_track
+         s%nu_x = m%nu_x
+         s%nu_y = m%nu_y
+         s%phi = m%phi
+      end associate
+   end function case_summary
 
    !> True when real summary column `k` belongs to a run (kinematic or not).
    pure logical function summary_column_used(k, kinematic)

@@ -2,9 +2,12 @@
 !> → normal solution → tangential solution → summary.
 !>
 !> [[prepare_run]] does everything that is the same for every case of a run (reading and
-!> smoothing the profiles, placing the rail, translating the options). A sweep then solves the
+!> smoothing the profiles, placing the rail, and translating the options with the C / Fortran 77
+!> handles' one translation, shcontact_api_settings' library_setup). A sweep then solves the
 !> geometry and the normal problem once per distinct (t_y, roll, load) ([[solve_stage]]) and the
-!> tangential problem once per case ([[solve_case]]). None of these procedures print or touch
+!> tangential problem and the summary once per case ([[solve_case]]), through the stages of
+!> shcontact_pipeline_stages that the library's solver object calls too (doc/architecture.md),
+!> so a case gives the library's numbers bit for bit. None of these procedures print or touch
 !> global state, so cases can be solved by several threads at once.
 !>
 !> **Kinematic cases** (`&kinematics mode = 'on'`) are solved by the library's solver object
@@ -15,31 +18,31 @@
 !> solver reuses the geometry and the normal solution of consecutive cases that share them.
 module shcontact_case_runner
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: str_int
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left
-   use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
-      prepare_profiles, find_contact_patches
+   use shcontact_geometry_track, only: wheelset_position_type
+   use shcontact_geometry_contact, only: prepared_profiles_type, prepare_profiles, &
+      find_contact_patches
+   use shcontact_geometry_kinematics, only: axle_offset
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_options, only: normal_options_type, new_normal_options
-   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_normal_loading, only: normal_contact_type
    use shcontact_tangential_patch, only: tangential_patch_type
-   use shcontact_tangential_options, only: tangential_options_type, parse_method, parse_bound, &
-      parse_spin_model, parse_spin_flexibility, parse_correction
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
-   use shcontact_tangential_solver, only: solve_tangential
-   use shcontact_io_config, only: case_config_type, case_point_type, bound_choices, &
-      spin_model_choices
-   use shcontact_case_result, only: case_result_type, case_summary_type
-   use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      contact_fields_type, load_normal_force, load_vertical_force, load_approach
+   use shcontact_pipeline_load, only: contact_load_type
+   use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
+   use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
+      solve_patch_stage, summarise_stages
+   use shcontact_io_config, only: case_config_type, case_point_type, load_mode_force
+   use shcontact_case_result, only: case_result_type, case_summary
+   use shcontact_api_solver, only: contact_solver_type
+   use shcontact_api_settings, only: library_setup_type, library_setup, point_load, &
+      kinematic_state => config_state
    implicit none
    private
 
@@ -60,11 +63,8 @@ module shcontact_case_runner
       type(tangential_options_type) :: tangential
       !> Elastic constants (the friction comes with each case).
       type(material_type) :: material
-      !> 'force', 'approach' or 'vertical'.
-      character(len=:), allocatable :: load_mode
-      !> Solver codes of the bound and spin-model names (parsed once, looked up per case).
-      integer :: bound_codes(size(bound_choices)) = 0
-      integer :: spin_model_codes(size(spin_model_choices)) = 0
+      !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical` (shcontact_io_config).
+      integer :: load_mode = load_mode_force
       !> Kinematic mode: cases are solved by copies of `solver`, prepared with the run's
       !> profiles, track, material and options (bound and friction come with each case).
       logical :: kinematic = .false.
@@ -81,6 +81,8 @@ module shcontact_case_runner
       type(patch_geometry_type), allocatable :: geometry(:)
       !> The normal solution of each loaded patch.
       type(normal_patch_type), allocatable :: normal(:)
+      !> Rigid vertical approach Δz of the wheel (mm), vertical load only.
+      real(wp) :: dz = 0.0_wp
    end type stage_type
 
 contains
@@ -112,9 +114,7 @@ contains
       type(run_setup_type), intent(out) :: setup
       !> Set for unreadable or bad profiles, or profiles that cannot be placed.
       type(error_type), allocatable, intent(out) :: error
-      type(track_type) :: track
-      type(contact_options_type) :: options
-      integer :: k
+      type(library_setup_type) :: lib
 
       call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
          config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
@@ -127,65 +127,28 @@ contains
          setup%rail, error)
       if (allocated(error)) return
 
-      track%gauge = config%track%gauge
-      track%gauge_height = config%track%gauge_height
-      track%rail_inclination = config%track%inclination
-      track%rail_canted = config%track%rail_canted
-      track%flange_back_distance = config%track%flange_back_distance
-      track%flange_back_position = config%track%flange_back_position
-      track%nominal_radius = config%track%nominal_radius
-      options%l_filt_wheel = config%profiles%wheel_smoothing
-      options%l_filt_rail = config%profiles%rail_smoothing
-      options%b_min = config%normal%b_min
-      options%a_reference_normal = config%normal%longitudinal_curvature == 'reference'
-      call prepare_profiles(setup%wheel, setup%rail, track, options, setup%prepared, error)
+      call library_setup(config, lib, error)
       if (allocated(error)) return
-
-      setup%position%side = side_right
-      if (config%track%side == 'left') setup%position%side = side_left
-      call new_normal_options(setup%normal, error, method=trim(config%normal%method), &
-         reduction=trim(config%normal%reduction), epsilon=config%normal%epsilon, &
-         n_strips=config%normal%n_strips)
+      call prepare_profiles(setup%wheel, setup%rail, lib%track, lib%contact_options, &
+         setup%prepared, error)
       if (allocated(error)) return
-      call parse_method(trim(config%tangential%method), setup%tangential%method, error)
-      if (allocated(error)) return
-      call parse_spin_flexibility(trim(config%tangential%spin_flexibility), &
-         setup%tangential%spin_flexibility, error)
-      if (allocated(error)) return
-      call parse_correction(trim(config%tangential%correction), setup%tangential%correction, error)
-      if (allocated(error)) return
-      setup%tangential%n_elements = config%tangential%n_elements
+      setup%position%side = lib%side
+      setup%normal = lib%normal
+      ! The bound and the spin model of each case replace the configuration's.
+      setup%tangential = lib%tangential
       setup%tangential%fields = config%wants_field('pressure') .or. &
          config%wants_field('traction') .or. config%wants_field('state') .or. &
          config%wants_field('slip')
-      setup%material = config%material
-      setup%load_mode = trim(config%load%mode)
-      do k = 1, size(bound_choices)
-         call parse_bound(trim(bound_choices(k)), setup%bound_codes(k), error)
-         if (allocated(error)) return
-      end do
-      do k = 1, size(spin_model_choices)
-         call parse_spin_model(trim(spin_model_choices(k)), setup%spin_model_codes(k), error)
-         if (allocated(error)) return
-      end do
+      setup%material = lib%material
+      setup%load_mode = config%load%mode
       setup%kinematic = config%is_kinematic()
       if (setup%kinematic) then
-         call setup%solver%init(setup%wheel, setup%rail, error, track=track, &
-            material=setup%material, side=setup%position%side, contact_options=options, &
+         call setup%solver%init(setup%wheel, setup%rail, error, track=lib%track, &
+            material=setup%material, side=setup%position%side, &
+            contact_options=lib%contact_options, &
             normal_options=setup%normal, tangential_options=setup%tangential)
       end if
    end subroutine prepare_run
-
-   !> The wheelset state of a kinematic case (track frame; the pitch rate already resolved by
-   !> the configuration).
-   pure function kinematic_state(point) result(state)
-      !> The case inputs.
-      type(case_point_type), intent(in) :: point
-      type(wheelset_state_type) :: state
-      state = wheelset_state_type(y_ws=point%t_y, yaw=point%yaw, roll=point%roll, &
-         v_forward=point%v_forward, v_lateral=point%v_lateral, v_vertical=point%v_vertical, &
-         roll_rate=point%roll_rate, yaw_rate=point%yaw_rate, pitch_rate=point%pitch_rate)
-   end function kinematic_state
 
    !> One kinematic case through the library's solver object (`solve_kinematic`): the geometry
    !> of the yawed wheelset, the normal problem for the load, and every loaded patch with the
@@ -210,25 +173,13 @@ contains
       type(contact_fields_type), allocatable :: copies
       integer :: k, n
 
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       call solver%set_material(material, error)
       if (.not. allocated(error)) then
-         options = setup%tangential
-         do k = 1, size(bound_choices)
-            if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-         end do
          call solver%set_options(error, tangential=options)
       end if
       if (.not. allocated(error)) then
-         select case (setup%load_mode)
-         case ('force')
-            load = contact_load_type(load_normal_force, point%normal_force)
-         case ('approach')
-            load = contact_load_type(load_approach, point%approach)
-         case default
-            load = contact_load_type(load_vertical_force, point%vertical_force)
-         end select
+         load = point_load(setup%load_mode, point)
          if (fields) then
             allocate (copies)
             call solver%solve_kinematic(kinematic_state(point), load, contact, error, copies)
@@ -241,7 +192,7 @@ contains
          result%message = error%message
          return
       end if
-      call summarise_contact(contact, result%summary)
+      result%summary = case_summary(contact)
       if (fields) then
          n = contact%n_loaded
          result%geometry = copies%geometry(1:n)
@@ -254,41 +205,23 @@ contains
       end if
    end subroutine solve_kinematic_case
 
-   !> Summary numbers of a solver result: the track-frame totals and the main patch.
-   pure subroutine summarise_contact(contact, s)
-      type(contact_result_type), intent(in) :: contact
-      type(case_summary_type), intent(inout) :: s
-      s%stat = 0
-      s%n_patches = contact%n_patches
-      s%n_loaded = contact%n_loaded
-      s%main_patch = contact%main_patch
-      s%fn_total = contact%track%fn
-      s%fx_total = contact%track%fx
-      s%fy_total = contact%track%fy
-      s%fz_total = contact%track%fz
-      associate (m => contact%main)
-         s%fn = m%fn
-         s%fx = m%fx
-         s%fy = m%fy
-         s%mz = m%mz
-         s%fx_norm = m%fx_norm
-         s%fy_norm = m%fy_norm
-         s%coulomb_ratio = m%coulomb_ratio
-         s%adhesion_fraction = m%adhesion_fraction
-         s%approach = m%approach
-         s%area = m%area
-         s%p_max = m%p_max
-         s%gamma0 = m%gamma0
-         s%r0 = m%r0
-         s%y_track = m%y_track
-         s%x_track = m%x_track
-         s%nu_x = m%nu_x
-         s%nu_y = m%nu_y
-         s%phi = m%phi
-      end associate
-   end subroutine summarise_contact
-
-   !> A profile from `builtin:NAME` or a file (read, then checked and cleaned).
+   !> The tangential options and the material of a case: the run's, with the case's bound, spin
+   !> model (codes since the configuration was read) and friction. A kinematic solve takes the
+   !> spin model 'additive' whatever it is given.
+   pure subroutine case_options(setup, point, options, material)
+      !> Shared data.
+      type(run_setup_type), intent(in) :: setup
+      !> The case inputs (bound, spin model, friction).
+      type(case_point_type), intent(in) :: point
+      !> The case's options and material.
+      type(tangential_options_type), intent(out) :: options
+      type(material_type), intent(out) :: material
+      options = setup%tangential
+      options%bound = point%bound
+      options%spin_model = point%spin_model
+      material = setup%material
+      material%friction = point%friction
+   end subroutine case_options
 
    !> The contact patches of one wheelset position.
    subroutine solve_geometry(setup, point, geometry, error)
@@ -322,28 +255,19 @@ contains
       !> The result; stage%stat > 0 on failure.
       type(stage_type), intent(out) :: stage
       type(normal_contact_type), allocatable :: contacts(:)
+      type(contact_load_type) :: load
       type(error_type), allocatable :: error
-      real(wp) :: dz
-      integer :: k, n
+      integer :: n, n_prepared
 
       stage%geometry = geometry
-      n = 1
-      if (setup%load_mode == 'vertical') n = size(geometry)
+      load = point_load(setup%load_mode, point)
+      n = loaded_count(load, size(geometry))
       allocate (contacts(n), stage%normal(n))
-      do k = 1, n
-         call prepare_normal_contact(contacts(k), geometry(k), setup%normal, setup%material, &
-            error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
-         if (failed(stage, error)) return
-      end do
-      select case (setup%load_mode)
-      case ('force')
-         call solve_load(contacts(1), point%normal_force, stage%normal(1), error)
-      case ('approach')
-         call solve_approach(contacts(1), point%approach, stage%normal(1), error)
-      case default
-         call solve_vertical_load(contacts, point%vertical_force, stage%normal, dz, error)
-      end select
+      n_prepared = 0
+      call prepare_normal_stage(geometry, setup%normal, setup%material, contacts, n_prepared, n, &
+         error)
+      if (failed(stage, error)) return
+      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error)
       if (failed(stage, error)) return
    end subroutine solve_stage
 
@@ -377,7 +301,8 @@ contains
       type(error_type), allocatable :: error
       type(tangential_options_type) :: options
       type(material_type) :: material
-      type(creepage_type) :: creepage
+      type(creepage_type) :: creepage, creepages(max_patches)
+      type(contact_result_type) :: contact
       integer :: k, n
 
       if (stage%stat /= 0) then
@@ -385,17 +310,7 @@ contains
          result%message = stage%message
          return
       end if
-      options = setup%tangential
-      ! The names were validated with the configuration: look their codes up.
-      do k = 1, size(bound_choices)
-         if (point%bound == bound_choices(k)) options%bound = setup%bound_codes(k)
-      end do
-      do k = 1, size(spin_model_choices)
-         if (point%spin_model == spin_model_choices(k)) &
-            options%spin_model = setup%spin_model_codes(k)
-      end do
-      material = setup%material
-      material%friction = point%friction
+      call case_options(setup, point, options, material)
       creepage = creepage_type(point%nu_x, point%nu_y, point%phi)
       n = size(stage%normal)
       if (allocated(tangential)) then
@@ -409,67 +324,23 @@ contains
             tangential(k) = tangential_patch_type()
             cycle
          end if
-         call solve_tangential(ws, stage%normal(k), material, creepage, options, &
-            tangential(k), error)
-         if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+         call solve_patch_stage(ws, stage%normal(k), material, creepage, options, &
+            tangential(k), k, n, error)
       end do
       if (allocated(error)) then
          result%summary%stat = error%stat
          result%message = error%message
          return
       end if
-      call summarise(stage, tangential(1:n), result%summary)
+      creepages(1:n) = creepage
+      call summarise_stages(stage%geometry, stage%normal, tangential(1:n), creepages(1:n), &
+         setup%position%side, axle_offset(setup%prepared%track), 0.0_wp, stage%dz, contact)
+      result%summary = case_summary(contact)
       if (fields) then
          result%geometry = stage%geometry
          result%normal = stage%normal
          result%tangential = tangential(1:n)
       end if
    end subroutine solve_case
-
-   !> Summary numbers: totals over the patches and the values of the main (most loaded) patch.
-   pure subroutine summarise(stage, tangential, s)
-      type(stage_type), intent(in) :: stage
-      type(tangential_patch_type), intent(in) :: tangential(:)
-      type(case_summary_type), intent(inout) :: s
-      integer :: m, k
-      s%stat = 0
-      s%n_patches = size(stage%geometry)
-      s%n_loaded = size(stage%normal)
-      m = 1
-      do k = 2, size(stage%normal)
-         if (stage%normal(k)%load > stage%normal(m)%load) m = k
-      end do
-      s%main_patch = m
-      s%fn_total = 0.0_wp
-      do k = 1, size(stage%normal)
-         s%fn_total = s%fn_total + stage%normal(k)%load
-      end do
-      ! Track-frame totals over the loaded patches, summed as the library's solver does.
-      s%fx_total = 0.0_wp
-      s%fy_total = 0.0_wp
-      s%fz_total = 0.0_wp
-      do k = 1, size(stage%normal)
-         if (.not. (stage%normal(k)%load > 0.0_wp)) cycle
-         s%fx_total = s%fx_total + tangential(k)%fx
-         s%fy_total = s%fy_total + tangential(k)%fy_track
-         s%fz_total = s%fz_total + tangential(k)%fz_track
-      end do
-      s%fn = stage%normal(m)%load
-      s%fx = tangential(m)%fx
-      s%fy = tangential(m)%fy
-      s%mz = tangential(m)%mz
-      s%fx_norm = tangential(m)%fx_norm
-      s%fy_norm = tangential(m)%fy_norm
-      s%coulomb_ratio = tangential(m)%coulomb_ratio
-      s%adhesion_fraction = tangential(m)%adhesion_fraction
-      s%approach = stage%normal(m)%approach
-      s%area = stage%normal(m)%area
-      s%p_max = stage%normal(m)%p_max
-      ! The reference point where the creepages are given: the geometric contact point of the
-      ! loaded state (doc/geometry.md "Vertical approach").
-      s%gamma0 = stage%normal(m)%gamma0
-      s%r0 = stage%normal(m)%r0
-      s%y_track = stage%geometry(m)%y_track + stage%normal(m)%lateral_offset()
-   end subroutine summarise
 
 end module shcontact_case_runner

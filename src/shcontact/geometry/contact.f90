@@ -221,6 +221,7 @@ contains
          call copy_table(src%curv_b, n, patch%curv_b)
          call copy_table(src%gamma, n, patch%gamma)
          call copy_table(src%r_wheel, n, patch%r_wheel)
+         call copy_table(src%tan_gamma, n, patch%tan_gamma)
       end associate
    end subroutine extract_patch
 
@@ -597,6 +598,7 @@ contains
       call reserve_vector(patch%curv_b, n)
       call reserve_vector(patch%gamma, n)
       call reserve_vector(patch%r_wheel, n)
+      call reserve_vector(patch%tan_gamma, n)
    end subroutine reserve_patch
 
    !> The strip tables of one patch: both profiles turned by −γ₀ about the reference point and
@@ -648,11 +650,13 @@ contains
       associate (patch => patches%patch(k))
          call put_rows(1, reshape(strip_row(prepared, r0, w0, pair%theta, gap0), &
             [row_count, 1]), i0, i0, 1, h, prepared%options%b_min, patch%y, patch%gap, &
-            patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+            patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel, patch%tan_gamma)
          call put_rows(n_right, patches%right, i0, i0 + 1, 1, h, prepared%options%b_min, &
-            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel, &
+            patch%tan_gamma)
          call put_rows(n_left, patches%left, i0, i0 - 1, -1, h, prepared%options%b_min, &
-            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel)
+            patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel, &
+            patch%tan_gamma)
          patch%h = h
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
@@ -673,14 +677,16 @@ contains
    end subroutine build_table
 
    !> Table points i1, i1 + sense, … of a patch (reference point i0) from n rows of
-   !> [[strip_row]] or [[follow]]: y, the gap (≥ 0), B = g''/2 clamped to b_min, γ, r_w and A.
+   !> [[strip_row]] or [[follow]]: y, the gap (≥ 0), B = g''/2 clamped to b_min, γ, r_w, A and
+   !> tan γ.
    pure subroutine put_rows(n, rows, i0, i1, sense, h, b_min, y, gap, curv_a, curv_b, gamma, &
-         r_wheel)
+         r_wheel, tan_gamma)
       integer, intent(in) :: n
       real(wp), intent(in) :: rows(row_count, *)
       integer, intent(in) :: i0, i1, sense
       real(wp), intent(in) :: h, b_min
-      real(wp), intent(inout) :: y(*), gap(*), curv_a(*), curv_b(*), gamma(*), r_wheel(*)
+      real(wp), intent(inout) :: y(*), gap(*), curv_a(*), curv_b(*), gamma(*), r_wheel(*), &
+         tan_gamma(*)
       integer :: j, i
 
       do j = 1, n
@@ -691,6 +697,7 @@ contains
          gamma(i) = rows(3, j)
          r_wheel(i) = rows(4, j)
          curv_a(i) = rows(6, j)
+         tan_gamma(i) = rows(7, j)
       end do
    end subroutine put_rows
 

@@ -222,23 +222,29 @@ contains
       real(wp), intent(in) :: gamma
       !> sin ψ of the side frame's yaw angle.
       real(wp), intent(in) :: sin_yaw
-      real(wp) :: tan_t
-      tan_t = locus_tangent(tan(gamma), sin_yaw)
-      scale = sqrt(1.0_wp + tan_t*tan_t)
+      scale = radius_scale_of_tan(tan(gamma), sin_yaw)
    end function true_radius_scale
 
-   !> radius(i) ← radius(i)·[[true_radius_scale]](gamma(i), sin ψ) over a whole table (one loop
-   !> the compiler vectorises, with the SIMD tan of libmvec).
-   pure subroutine scale_to_true_radius(gamma, sin_yaw, radius)
-      !> Contact angles γ_i (rad) of the table points.
-      real(wp), intent(in) :: gamma(:)
+   !> [[true_radius_scale]] from t = tan γ.
+   elemental real(wp) function radius_scale_of_tan(tan_gamma, sin_yaw) result(scale)
+      real(wp), intent(in) :: tan_gamma, sin_yaw
+      real(wp) :: tan_t
+      tan_t = locus_tangent(tan_gamma, sin_yaw)
+      scale = sqrt(1.0_wp + tan_t*tan_t)
+   end function radius_scale_of_tan
+
+   !> radius(i) ← radius(i)·[[true_radius_scale]](γ_i, sin ψ) over a whole table, from the
+   !> table's tan γ_i (patch_geometry_type's tan_gamma: no tangent per point).
+   pure subroutine scale_to_true_radius(tan_gamma, sin_yaw, radius)
+      !> tan γ_i of the table points.
+      real(wp), intent(in) :: tan_gamma(:)
       !> sin ψ.
       real(wp), intent(in) :: sin_yaw
       !> Rolling radii r cos θ on entry, r on return (mm).
       real(wp), intent(inout) :: radius(:)
       integer :: i
       do i = 1, size(radius)
-         radius(i) = radius(i)*true_radius_scale(gamma(i), sin_yaw)
+         radius(i) = radius(i)*radius_scale_of_tan(tan_gamma(i), sin_yaw)
       end do
    end subroutine scale_to_true_radius
 

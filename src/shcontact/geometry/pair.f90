@@ -34,7 +34,7 @@ module shcontact_geometry_pair
    !> A profile is followed in a frame while |dη/ds| exceeds this (steeper: it turns back).
    real(wp), parameter :: min_deta = 0.05_wp
    !> Rows of the work tables: g − gap0, g'', γ, r_w, rail arc length, A ([[curvature_a]]).
-   integer, parameter :: row_count = 6
+   integer, parameter :: row_count = 7
    !> Table points walked at a time on each profile by the fast search ([[follow]]): the walk
    !> overruns the table's end by less than this.
    integer, parameter :: chunk = 32
@@ -228,7 +228,16 @@ contains
       row(5) = r%s
       row(6) = curvature_a(prepared%options%a_reference_normal, cos(theta), sin(theta), &
          w%slope, row(4))
+      row(7) = tan_gamma(tan(theta), w%slope)
    end function strip_row
+
+   !> tan γ = tan(θ + atan w) = (tan θ + w)/(1 − w tan θ) from the wheel's slope w = tan(γ − θ)
+   !> in the frame of a patch with contact angle θ, without a tangent per point (|γ| < 90° on
+   !> any wheel profile the search accepts).
+   elemental real(wp) function tan_gamma(tan_theta, w)
+      real(wp), intent(in) :: tan_theta, w
+      tan_gamma = (tan_theta + w)/(1.0_wp - w*tan_theta)
+   end function tan_gamma
 
    !> Longitudinal relative curvature A = cos γ/(2 r_w) on a strip (straight track) for the
    !> wheel's slope w = tan(γ − θ) in the frame of a patch with contact angle θ:
@@ -262,8 +271,8 @@ contains
       real(wp), intent(out) :: s_basin
       type(frame_walk_type) :: walk_r, walk_w
       real(wp), dimension(chunk) :: r_zeta, r_slope, r_curv, r_v, r_s, w_zeta, w_slope, w_curv, &
-         w_v, w_s, w_angle, w_a
-      real(wp) :: top, c, sn
+         w_v, w_s, w_angle, w_a, w_tan
+      real(wp) :: top, c, sn, tn
       integer :: j, j0, j_top, i, m, n_r, n_w, n_both
       logical :: cut, fixed_normal
 
@@ -278,6 +287,7 @@ contains
       n_basin = 0
       c = cos(theta)
       sn = sin(theta)
+      tn = tan(theta)
       fixed_normal = prepared%options%a_reference_normal
       call start_walk(prepared%rail, rmap, r0, dir_r, step, walk_r)
       call start_walk(prepared%wheel, wmap, w0, dir_w, step, walk_w)
@@ -300,12 +310,16 @@ contains
             w_a(i) = curvature_a(fixed_normal, c, sn, w_slope(i), w_v(i))
          end do
          do i = 1, n_both
+            w_tan(i) = tan_gamma(tn, w_slope(i))
+         end do
+         do i = 1, n_both
             rows(1, j0 + i) = (r_zeta(i) - w_zeta(i)) - gap0
             rows(2, j0 + i) = r_curv(i) - w_curv(i)
             rows(3, j0 + i) = theta + w_angle(i)
             rows(4, j0 + i) = w_v(i)
             rows(5, j0 + i) = r_s(i)
             rows(6, j0 + i) = w_a(i)
+            rows(7, j0 + i) = w_tan(i)
          end do
          do i = 1, n_both
             j = j0 + i

@@ -64,6 +64,10 @@ module shcontact_geometry_patch
       real(wp), allocatable :: gamma(:)
       !> r_w(y) (mm).
       real(wp), allocatable :: r_wheel(:)
+      !> tan γ(y), filled by the contact search from the profile slopes (so that no tangent is
+      !> taken per point); a table built otherwise may leave it unallocated, and the normal
+      !> preparation then takes tan γ itself (shcontact_normal_semihertz).
+      real(wp), allocatable :: tan_gamma(:)
    contains
       !> Geometry at any y inside the table, linearly interpolated (clamped at the ends).
       procedure :: sample

@@ -15,9 +15,11 @@
 !> This module is the facade of the configuration subsystem; the work is done in
 !> `io/config/`: [[shcontact_io_config_limits]] (sizes), [[shcontact_io_config_sweep]] (axes
 !> and cases of a sweep), [[shcontact_io_config_types]] (the typed configuration and its
-!> defaults), [[shcontact_io_config_variables]] (the variable table), [[shcontact_io_config_parser]]
-!> (namelist text into assignments), [[shcontact_io_config_assign]] (one assignment into the
-!> configuration), [[shcontact_io_config_validate]] (checks and derived settings),
+!> defaults), [[shcontact_io_config_choices]] (the registry of the case file's own choices),
+!> [[shcontact_io_config_variables]] (the registry of the groups' variables),
+!> [[shcontact_io_config_parser]] (namelist text into assignments), [[shcontact_io_config_assign]]
+!> (one assignment into the configuration: [[read_group_variable]], the one entry point that
+!> sets a variable from text), [[shcontact_io_config_validate]] (checks and derived settings),
 !> [[shcontact_io_config_writer]] (the resolved namelist) and [[shcontact_io_config_load]] (the
 !> entry points).
 module shcontact_io_config
@@ -25,9 +27,12 @@ module shcontact_io_config
       max_grid_cells
    use shcontact_io_config_sweep, only: sweep_axis_type, case_point_type, n_sweep_axes, &
       sweep_axis_names, axis_geometry, axis_load, axis_tangential, case_point_value, &
-      is_kinematic_input
-   use shcontact_io_config_types, only: case_config_type
-   use shcontact_io_config_variables, only: bound_choices, spin_model_choices
+      case_point_label, is_kinematic_input
+   use shcontact_io_config_types, only: case_config_type, normal_options_of, &
+      tangential_options_of
+   use shcontact_io_config_choices, only: load_mode_force, load_mode_approach, &
+      load_mode_vertical, curvature_reference, precision_single, precision_double
+   use shcontact_io_config_assign, only: read_group_variable, stat_unknown_choice
    use shcontact_io_config_validate, only: validate_config
    use shcontact_io_config_writer, only: config_namelist
    use shcontact_io_config_load, only: load_config, read_config_file, read_config_text, &
@@ -39,8 +44,11 @@ module shcontact_io_config
    public :: load_config, read_config_file, read_config_text, apply_override, validate_config
    public :: config_namelist
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
-   public :: path_len, name_len, max_sweep_values, bound_choices, spin_model_choices
-   public :: case_point_value, is_kinematic_input
+   public :: path_len, name_len, max_sweep_values
+   public :: case_point_value, case_point_label, is_kinematic_input
+   public :: normal_options_of, tangential_options_of, read_group_variable, stat_unknown_choice
+   public :: load_mode_force, load_mode_approach, load_mode_vertical, curvature_reference
+   public :: precision_single, precision_double
    public :: max_cases, max_grid_cells
 
 end module shcontact_io_config

@@ -11,7 +11,7 @@ module shcontact_io_files
 
    public :: rename_file, delete_file, make_directory, remove_directory, file_exists
    public :: directory_part, join_path, is_absolute, process_id, canonical_path
-   public :: path_kind, control_character, lock_file, unlock_file, pause_briefly
+   public :: path_kind, lock_file, unlock_file, pause_briefly
    public :: lock_taken, lock_busy, lock_missing
    public :: open_work_folder, folder_made, folder_existing, folder_busy, folder_unlocked, &
       folder_link, folder_not_directory, folder_cannot_create
@@ -239,20 +239,6 @@ contains
          kind = 'other'
       end select
    end function path_kind
-
-   !> Position of the first control character (bytes 0-31 and 127) of a text, 0 when none.
-   pure integer function control_character(text) result(position)
-      !> The text.
-      character(len=*), intent(in) :: text
-      integer :: i
-      position = 0
-      do i = 1, len(text)
-         if (iachar(text(i:i)) < 32 .or. iachar(text(i:i)) == 127) then
-            position = i
-            return
-         end if
-      end do
-   end function control_character
 
    !> Open the lock file `name` (created when `create`, which fails when it exists) and take
    !> an exclusive advisory lock on it (flock, not waiting). The lock lasts while `unit` is

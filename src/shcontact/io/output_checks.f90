@@ -6,8 +6,8 @@
 module shcontact_io_output_checks
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
       stat_usage
-   use shcontact_core_strings, only: str_int
-   use shcontact_io_files, only: canonical_path, path_kind, control_character
+   use shcontact_core_strings, only: str_int, control_characters
+   use shcontact_io_files, only: canonical_path, path_kind
    use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, &
       h5_read_attribute, h5_dataset_info
    use shcontact_io_xdmf, only: xdmf_name, is_xdmf_sidecar
@@ -40,7 +40,7 @@ contains
       logical :: forced
       forced = .false.
       if (present(force)) forced = force
-      f = control_character(output)
+      f = scan(output, control_characters)
       if (f > 0) then
          call fatal_error(error, 'the output name "'//output(1:f - 1)//'?'//output(f + 1:)// &
             '" holds a control character (byte '//str_int(iachar(output(f:f)))//' at '// &

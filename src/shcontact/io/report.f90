@@ -11,7 +11,8 @@ module shcontact_io_report
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
    use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
-      sweep_axis_names, case_point_value, is_kinematic_input
+      sweep_axis_names, case_point_value, case_point_label, is_kinematic_input, &
+      load_mode_force, load_mode_approach, load_mode_vertical
    use shcontact_io_text, only: format_real, json_string
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used
@@ -114,11 +115,11 @@ contains
       case ('t_y', 'roll', 'friction', 'bound')
          reports_case_input = .true.
       case ('normal_force')
-         reports_case_input = config%load%mode == 'force'
+         reports_case_input = config%load%mode == load_mode_force
       case ('approach')
-         reports_case_input = config%load%mode == 'approach'
+         reports_case_input = config%load%mode == load_mode_approach
       case ('vertical_force')
-         reports_case_input = config%load%mode == 'vertical'
+         reports_case_input = config%load%mode == load_mode_vertical
       case ('spin_model', 'nu_x', 'nu_y', 'phi')
          reports_case_input = .not. config%is_kinematic()
       case default
@@ -269,12 +270,8 @@ contains
       character(len=:), allocatable :: text
       real(wp) :: x
       select case (trim(sweep_axis_names(ia)))
-      case ('bound')
-         text = trim(p%bound)
-         if (json) text = json_string(text)
-         return
-      case ('spin_model')
-         text = trim(p%spin_model)
+      case ('bound', 'spin_model')
+         text = case_point_label(p, ia)
          if (json) text = json_string(text)
          return
       case default

@@ -42,7 +42,8 @@ module shcontact_io_results
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, &
       state_adhesion, state_slip
    use shcontact_io_config, only: case_config_type, read_config_text, n_sweep_axes, &
-      sweep_axis_names, axis_geometry, case_point_type, case_point_value
+      sweep_axis_names, axis_geometry, case_point_type, case_point_value, &
+      case_point_label, precision_single
    use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute, h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_delete_attribute
@@ -181,7 +182,7 @@ contains
       scales = .true.
       if (present(checkpoint)) scales = .not. checkpoint
       call h5_create(file, name, error, compression=config%output%compression, &
-         single=config%output%precision == 'single', temp_name=temp_name, &
+         single=config%output%precision == precision_single, temp_name=temp_name, &
          describe=describe_dataset, scales=scales)
       if (allocated(error)) return
       call write_header(file, info, size(indices), error)
@@ -463,9 +464,7 @@ contains
          p = config%case_point(indices(i))
          do k = 1, n_in
             if (config%sweep%axes(axes(k))%is_label) then
-               labels(i, slot(k)) = ''
-               if (sweep_axis_names(axes(k)) == 'bound') labels(i, slot(k)) = p%bound
-               if (sweep_axis_names(axes(k)) == 'spin_model') labels(i, slot(k)) = p%spin_model
+               labels(i, slot(k)) = case_point_label(p, axes(k))
             else
                inputs(i, slot(k)) = case_point_value(p, axes(k))
             end if
@@ -917,7 +916,7 @@ contains
       if (present(shard)) info%shard = shard
       if (present(threads)) info%threads = threads
       call h5_create(out, output, error, compression=config%output%compression, &
-         single=config%output%precision == 'single', temp_name=temp_name, &
+         single=config%output%precision == precision_single, temp_name=temp_name, &
          describe=describe_dataset)
       if (allocated(error)) return
       call h5_open(src, inputs(1)%text, error)

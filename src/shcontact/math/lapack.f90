@@ -11,8 +11,7 @@ module shcontact_math_lapack
    implicit none
    private
 
-   public :: solve_spd_banded, solve_general_banded, solve_tridiagonal, solve_dense, &
-      solve_dense_leading, solve_factored_leading
+   public :: solve_spd_banded, solve_general_banded, solve_dense_leading, solve_factored_leading
 
    !> Largest order [[solve_dense_leading]] eliminates itself (unblocked) instead of calling dgesv.
    integer, parameter :: small_order = 32
@@ -33,12 +32,6 @@ module shcontact_math_lapack
          integer, intent(out) :: ipiv(*)
          integer, intent(out) :: info
       end subroutine dgbsv
-      pure subroutine dgtsv(n, nrhs, dl, d, du, b, ldb, info)
-         import :: wp
-         integer, intent(in) :: n, nrhs, ldb
-         real(wp), intent(inout) :: dl(*), d(*), du(*), b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dgtsv
       pure subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
          import :: wp
          integer, intent(in) :: n, nrhs, lda, ldb
@@ -94,48 +87,6 @@ contains
       call dgbsv(n, kl, ku, size(b, 2), ab, size(ab, 1), ipiv, b, size(b, 1), info)
       call check_info('dgbsv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
    end subroutine solve_general_banded
-
-   !> Solve a tridiagonal system with sub-diagonal `dl`, diagonal `d`, super-diagonal `du`
-   !> (LAPACK `dgtsv`). All three are overwritten.
-   pure subroutine solve_tridiagonal(dl, d, du, b, error)
-      !> Sub-diagonal (n − 1), diagonal (n), super-diagonal (n − 1).
-      real(wp), intent(inout) :: dl(:), d(:), du(:)
-      !> Right-hand sides on entry, solutions on return.
-      real(wp), intent(inout) :: b(:, :)
-      !> Set when the matrix is singular or the shapes disagree.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: n, info
-
-      n = size(d)
-      if (size(dl) /= n - 1 .or. size(du) /= n - 1 .or. size(b, 1) /= n) then
-         call fatal_error(error, 'dgtsv: diagonals or right-hand side have inconsistent sizes', &
-                          stat_usage)
-         return
-      end if
-      call dgtsv(n, size(b, 2), dl, d, du, b, size(b, 1), info)
-      call check_info('dgtsv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
-   end subroutine solve_tridiagonal
-
-   !> Solve a dense system A x = b (LAPACK `dgesv`); `a` is overwritten by its LU factors.
-   pure subroutine solve_dense(a, b, error)
-      !> Square matrix.
-      real(wp), intent(inout) :: a(:, :)
-      !> Right-hand sides on entry, solutions on return.
-      real(wp), intent(inout) :: b(:, :)
-      !> Set when the matrix is singular or the shapes disagree.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: n, info
-      integer :: ipiv(size(a, 1))
-
-      n = size(a, 1)
-      if (size(a, 2) /= n .or. size(b, 1) /= n) then
-         call fatal_error(error, 'dgesv: matrix not square or right-hand side of wrong size', &
-                          stat_usage)
-         return
-      end if
-      call dgesv(n, size(b, 2), a, n, ipiv, b, size(b, 1), info)
-      call check_info('dgesv', info, 'U(', ',.) is exactly zero: the matrix is singular', error)
-   end subroutine solve_dense
 
    !> Solve the leading n × n block of `a` with one right-hand side, the first n entries of `b`:
    !> Gaussian elimination with partial pivoting, unblocked, for n ≤ [[small_order]] (the

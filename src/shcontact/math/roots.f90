@@ -9,7 +9,7 @@ module shcontact_math_roots
    implicit none
    private
 
-   public :: scalar_function_type, find_root, expand_bracket
+   public :: scalar_function_type, find_root
 
    !> A real function of one real variable, with whatever data it needs as components.
    type, abstract :: scalar_function_type
@@ -147,46 +147,5 @@ contains
          ' iterations; last estimate ', b
       call fatal_error(error, trim(msg), stat_numerical)
    end subroutine find_root
-
-   !> Grow the upper end of [lower, upper] geometrically until f changes sign over the bracket.
-   !>
-   !> Used when only one end is known to be safe (e.g. zero load at zero approach): `upper` is
-   !> multiplied by `factor` (default 2) up to `max_steps` (default 60) times.
-   subroutine expand_bracket(f, lower, upper, f_lower, f_upper, error, factor, max_steps)
-      !> The function.
-      class(scalar_function_type), intent(inout) :: f
-      !> Fixed lower end.
-      real(wp), intent(in) :: lower
-      !> Upper end, enlarged in place; must be greater than `lower`.
-      real(wp), intent(inout) :: upper
-      !> f at both ends on return.
-      real(wp), intent(out) :: f_lower, f_upper
-      !> Set when no sign change is found.
-      type(error_type), allocatable, intent(out) :: error
-      !> Growth factor of the distance upper − lower.
-      real(wp), intent(in), optional :: factor
-      !> Maximum number of enlargements.
-      integer, intent(in), optional :: max_steps
-
-      real(wp) :: grow
-      integer :: i, nmax
-      character(len=160) :: msg
-
-      grow = 2.0_wp
-      if (present(factor)) grow = factor
-      nmax = 60
-      if (present(max_steps)) nmax = max_steps
-      f_lower = f%eval(lower)
-      f_upper = f%eval(upper)
-      do i = 1, nmax
-         if (sign(1.0_wp, f_lower) /= sign(1.0_wp, f_upper) .or. f_upper == 0.0_wp) return
-         upper = lower + grow*(upper - lower)
-         f_upper = f%eval(upper)
-      end do
-      if (sign(1.0_wp, f_lower) /= sign(1.0_wp, f_upper) .or. f_upper == 0.0_wp) return
-      write (msg, '(a,es12.4,a,es12.4)') 'root finder: no sign change found between ', lower, &
-         ' and ', upper
-      call fatal_error(error, trim(msg), stat_numerical)
-   end subroutine expand_bracket
 
 end module shcontact_math_roots

@@ -1,9 +1,14 @@
 !> Options of the normal-contact solver (doc/theory.md decisions 5, 6 and 11), validated once into
-!> a typed configuration that the solvers then trust.
+!> a typed configuration that the solvers then trust. Names, codes and defaults are those of the
+!> registry [[shcontact_normal_option_registry]], re-exported here.
 module shcontact_normal_options
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_ranges, only: check_range, check_int_range
+   use shcontact_core_choices, only: choice_code, choice_name, choice_list
+   use shcontact_normal_option_registry, only: method_semi_hertz, method_hertz, &
+      reduction_local_hertz, reduction_constant, reduction_coupled, method_choices, &
+      reduction_choices, default_method, default_reduction, default_epsilon, default_n_strips
    implicit none
    private
 
@@ -12,33 +17,18 @@ module shcontact_normal_options
       reduction_coupled
    public :: method_name, reduction_name
 
-   !> `method = 'semi-hertz'`: the strip algorithm of doc/theory.md §4.3 (default).
-   integer, parameter :: method_semi_hertz = 1
-   !> `method = 'hertz'`: one Hertz ellipse from the curvatures at the reference point.
-   integer, parameter :: method_hertz = 2
-   !> `reduction = 'local-hertz'`: ε_a, ε_b from the local Hertz problem at A(y)/B(y) (the
-   !> default before issue 13).
-   integer, parameter :: reduction_local_hertz = 1
-   !> `reduction = 'constant'`: ε_a = ε_b = `epsilon` everywhere (Kik–Piotrowski virtual
-   !> penetration ε·δ).
-   integer, parameter :: reduction_constant = 2
-   !> `reduction = 'coupled'` (default since issue 13): the local-Hertz strips, then their load
-   !> redistributed through the half-space coupling between strips (shcontact_normal_coupling;
-   !> about 10 µs per solve; doc/validation.md §6.4).
-   integer, parameter :: reduction_coupled = 3
-
    !> The normal-contact options; build them with [[new_normal_options]] or check them with
    !> [[check_normal_options]] before use.
    type :: normal_options_type
       !> [[method_semi_hertz]] or [[method_hertz]].
-      integer :: method = method_semi_hertz
+      integer :: method = default_method
       !> [[reduction_local_hertz]], [[reduction_constant]] or [[reduction_coupled]] (semi-Hertz
       !> method only).
-      integer :: reduction = reduction_coupled
+      integer :: reduction = default_reduction
       !> Constant penetration fraction ε of the `'constant'` reduction, 0 < ε ≤ 1.
-      real(wp) :: epsilon = 0.55_wp
+      real(wp) :: epsilon = default_epsilon
       !> Number of strips per patch n_y (decision 11).
-      integer :: n_strips = 100
+      integer :: n_strips = default_n_strips
    end type normal_options_type
 
 contains
@@ -59,35 +49,21 @@ contains
       !> Strips per patch.
       integer, intent(in), optional :: n_strips
 
-      character(len=:), allocatable :: name
-
       if (present(method)) then
-         name = normalised(method)
-         select case (name)
-         case ('semi-hertz')
-            options%method = method_semi_hertz
-         case ('hertz')
-            options%method = method_hertz
-         case default
+         options%method = choice_code(method_choices, method)
+         if (options%method == 0) then
             call fatal_error(error, "normal option method = '"//trim(method)// &
-               "': expected 'semi-hertz' or 'hertz'", stat_invalid_input)
+               "': expected one of "//choice_list(method_choices), stat_invalid_input)
             return
-         end select
+         end if
       end if
       if (present(reduction)) then
-         name = normalised(reduction)
-         select case (name)
-         case ('local-hertz')
-            options%reduction = reduction_local_hertz
-         case ('constant')
-            options%reduction = reduction_constant
-         case ('coupled')
-            options%reduction = reduction_coupled
-         case default
+         options%reduction = choice_code(reduction_choices, reduction)
+         if (options%reduction == 0) then
             call fatal_error(error, "normal option reduction = '"//trim(reduction)// &
-               "': expected 'local-hertz', 'constant' or 'coupled'", stat_invalid_input)
+               "': expected one of "//choice_list(reduction_choices), stat_invalid_input)
             return
-         end select
+         end if
       end if
       if (present(epsilon)) options%epsilon = epsilon
       if (present(n_strips)) options%n_strips = n_strips
@@ -102,16 +78,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=32) :: buf
 
-      if (options%method /= method_semi_hertz .and. options%method /= method_hertz) then
+      if (.not. any(method_choices%code == options%method)) then
          write (buf, '(i0)') options%method
          call fatal_error(error, 'normal option method code '//trim(buf)// &
-            ': expected method_semi_hertz or method_hertz', stat_invalid_input)
-      else if (options%reduction /= reduction_local_hertz .and. &
-               options%reduction /= reduction_constant .and. &
-               options%reduction /= reduction_coupled) then
+            ': expected the code of one of '//choice_list(method_choices), stat_invalid_input)
+      else if (.not. any(reduction_choices%code == options%reduction)) then
          write (buf, '(i0)') options%reduction
          call fatal_error(error, 'normal option reduction code '//trim(buf)// &
-            ': expected reduction_local_hertz, reduction_constant or reduction_coupled', &
+            ': expected the code of one of '//choice_list(reduction_choices), &
             stat_invalid_input)
       else
          ! The app's ranges (shcontact_core_ranges): one table for the app and the library.
@@ -121,49 +95,20 @@ contains
       end if
    end subroutine check_normal_options
 
-   !> The textual name of a method code.
+   !> The textual name of a method code ('?' for an unknown code).
    pure function method_name(method) result(name)
       !> [[method_semi_hertz]] or [[method_hertz]].
       integer, intent(in) :: method
       character(len=:), allocatable :: name
-      select case (method)
-      case (method_semi_hertz)
-         name = 'semi-hertz'
-      case (method_hertz)
-         name = 'hertz'
-      case default
-         name = 'unknown'
-      end select
+      name = choice_name(method_choices, method)
    end function method_name
 
-   !> The textual name of a reduction code.
+   !> The textual name of a reduction code ('?' for an unknown code).
    pure function reduction_name(reduction) result(name)
       !> [[reduction_local_hertz]], [[reduction_constant]] or [[reduction_coupled]].
       integer, intent(in) :: reduction
       character(len=:), allocatable :: name
-      select case (reduction)
-      case (reduction_local_hertz)
-         name = 'local-hertz'
-      case (reduction_constant)
-         name = 'constant'
-      case (reduction_coupled)
-         name = 'coupled'
-      case default
-         name = 'unknown'
-      end select
+      name = choice_name(reduction_choices, reduction)
    end function reduction_name
-
-   !> Lower case, blanks trimmed, `_` read as `-`.
-   pure function normalised(text) result(name)
-      character(len=*), intent(in) :: text
-      character(len=:), allocatable :: name
-      integer :: i, c
-      name = trim(adjustl(text))
-      do i = 1, len(name)
-         c = iachar(name(i:i))
-         if (c >= iachar('A') .and. c <= iachar('Z')) name(i:i) = achar(c + 32)
-         if (name(i:i) == '_') name(i:i) = '-'
-      end do
-   end function normalised
 
 end module shcontact_normal_options

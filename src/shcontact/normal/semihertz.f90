@@ -150,7 +150,7 @@ contains
          prepared%eps_a(1:n) = options%epsilon
          prepared%eps_b(1:n) = options%epsilon
       end if
-      prepared%tilt(1:n) = vertical_tilt(prepared%gamma(1:n), prepared%gamma0)
+      call tilt_terms(geometry, i1, i2, prepared%gamma0, prepared%tilt(1:n))
       prepared%psi_slope(1:n) = max(prepared%eps_b(1:n) - prepared%tilt(1:n), &
          min_slope*prepared%eps_b(1:n))
       prepared%touch(1:n) = (prepared%gap(1:n) + prepared%gap0*prepared%tilt(1:n))/ &
@@ -524,6 +524,42 @@ contains
       end do
       j_hi = lo
    end function last_reached
+
+   !> [[vertical_tilt]] at table points i1 … i2, from the table's tan γ where the contact search
+   !> filled it, c = tan γ₀ (tan γ − tan γ₀)/(1 + tan γ tan γ₀) (equal to tan γ₀ tan(γ − γ₀),
+   !> without a tangent per point); otherwise, or when it does not belong to γ (checked at both
+   !> ends), from γ.
+   pure subroutine tilt_terms(geometry, i1, i2, gamma0, tilt)
+      type(patch_geometry_type), intent(in) :: geometry
+      integer, intent(in) :: i1, i2
+      real(wp), intent(in) :: gamma0
+      real(wp), intent(out) :: tilt(:)
+      real(wp) :: t0
+      integer :: i
+      logical :: usable
+
+      usable = allocated(geometry%tan_gamma)
+      if (usable) usable = size(geometry%tan_gamma) >= i2
+      if (usable) usable = matches(i1) .and. matches(i2)
+      if (.not. usable) then
+         tilt = vertical_tilt(geometry%gamma(i1:i2), gamma0)
+         return
+      end if
+      t0 = tan(gamma0)
+      do i = i1, i2
+         associate (t => geometry%tan_gamma(i))
+            tilt(i - i1 + 1) = t0*((t - t0)/(1.0_wp + t*t0))
+         end associate
+      end do
+   contains
+      !> Whether tan_gamma(i) is the tangent of gamma(i) to round-off.
+      pure logical function matches(i)
+         integer, intent(in) :: i
+         real(wp) :: t
+         t = tan(geometry%gamma(i))
+         matches = abs(geometry%tan_gamma(i) - t) <= 1.0e-12_wp*(1.0_wp + t*t)
+      end function matches
+   end subroutine tilt_terms
 
    !> The tilt term of the vertical approach at every table point (module text):
    !> c = tan γ₀ tan(γ − γ₀). A vertical translation t of the wheel moves its surface, where

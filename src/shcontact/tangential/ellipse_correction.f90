@@ -23,7 +23,7 @@ module shcontact_tangential_ellipse_correction
    use shcontact_core_kinds, only: wp
    use shcontact_core_material, only: material_type
    use shcontact_normal_patch, only: normal_patch_type, ellipse_strip_patch
-   use shcontact_tangential_kalker, only: kalker_coefficients, kalker_scheme_scaled
+   use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_ellipse_table, only: table_ratio, table_t_phi, table_dfx, table_dfy, &
       table_linear, table_unit, n_table_ratio, n_table_t, n_table_ty, n_table_phi
@@ -61,7 +61,7 @@ contains
 
    !> Set up the correction of a patch from its equivalent ellipse.
    pure subroutine prepare_ellipse_correction(correction, semi_a, semi_b, load, material, &
-      scheme, y_centre, cos_gamma, sin_gamma)
+      y_centre, cos_gamma, sin_gamma)
       !> The correction (active on return).
       type(ellipse_correction_type), intent(out) :: correction
       !> Semi-axes a_e (rolling direction) and b_e (lateral) of the equivalent ellipse (mm), > 0.
@@ -70,13 +70,11 @@ contains
       real(wp), intent(in) :: load
       !> G, ν, μ.
       type(material_type), intent(in) :: material
-      !> Kalker-table scheme (shcontact_tangential_kalker).
-      integer, intent(in) :: scheme
       !> Load centre from the reference point (mm), mean cos γ and sin γ over the load.
       real(wp), intent(in) :: y_centre, cos_gamma, sin_gamma
       real(wp) :: c11, c22, c23, saturation
 
-      call kalker_coefficients(semi_a/semi_b, material%poisson, c11, c22, c23, scheme)
+      call kalker_coefficients(semi_a/semi_b, material%poisson, c11, c22, c23)
       saturation = 3.0_wp*material%friction*load
       correction%active = .true.
       correction%log_ratio = min(max(log(semi_a/semi_b), log(table_ratio(1))), &
@@ -204,8 +202,7 @@ contains
       a = sqrt(table_area*table_ratio(i_ratio))
       b = a/table_ratio(i_ratio)
       call ellipse_strip_patch(a, b, table_load, table_strips, 460.0_wp, patch)
-      call prepare_ellipse_correction(scale, a, b, patch%load, material, kalker_scheme_scaled, &
-         0.0_wp, 1.0_wp, 0.0_wp)
+      call prepare_ellipse_correction(scale, a, b, patch%load, material, 0.0_wp, 1.0_wp, 0.0_wp)
       creepage = creepage_type(-scaled(real(kx, wp)/n_table_t)/scale%scale_x, &
          -scaled(real(ky, wp)/n_table_t)/scale%scale_y, -scaled(table_t_phi(ip))/scale%scale_phi)
 

@@ -34,18 +34,16 @@ contains
 
    !> Kalker's three flexibilities L₁ = 8a/(3c₁₁G), L₂ = 8a/(3c₂₂G), L₃ = πa√(a/b)/(4c₂₃G)
    !> (doc/theory.md §3.1), in mm/MPa.
-   elemental subroutine fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3, scheme)
+   elemental subroutine fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3)
       !> Semi-axes a (rolling direction) and b (lateral) (mm), > 0.
       real(wp), intent(in) :: semi_a, semi_b
       !> G and ν.
       type(material_type), intent(in) :: material
       !> The flexibilities (mm/MPa).
       real(wp), intent(out) :: l1, l2, l3
-      !> Kalker-table scheme (default scaled).
-      integer, intent(in), optional :: scheme
       real(wp) :: c11, c22, c23, g
 
-      call kalker_coefficients(semi_a/semi_b, material%poisson, c11, c22, c23, scheme)
+      call kalker_coefficients(semi_a/semi_b, material%poisson, c11, c22, c23)
       g = material%shear_modulus
       l1 = 8.0_wp*semi_a/(3.0_wp*c11*g)
       l2 = 8.0_wp*semi_a/(3.0_wp*c22*g)
@@ -63,7 +61,7 @@ contains
       real(wp), intent(in) :: load
       !> G, ν, μ.
       type(material_type), intent(in) :: material
-      !> Bound, n_x (= n_elements), Kalker scheme, fields.
+      !> Bound, n_x (= n_elements), fields.
       type(tangential_options_type), intent(in) :: options
       !> Number of strips n_y across the ellipse.
       integer, intent(in) :: n_strips
@@ -96,7 +94,7 @@ contains
       if (present(gamma0)) ws%gamma0 = gamma0
       ws%phi_geo0 = 0.0_wp
 
-      call fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3, options%kalker_scheme)
+      call fastsim_flexibilities(semi_a, semi_b, material, l1, l2, l3)
       p0 = 3.0_wp*load/(2.0_wp*pi*semi_a*semi_b)
       dy = 2.0_wp*semi_b/real(n_strips, wp)
       ws%dy = dy
@@ -153,7 +151,7 @@ contains
       type(material_type), intent(in) :: material
       !> Creepages, applied about the ellipse centre.
       type(creepage_type), intent(in) :: creepage
-      !> Bound, n_x, Kalker scheme, fields.
+      !> Bound, n_x, fields.
       type(tangential_options_type), intent(in) :: options
       !> Number of strips n_y.
       integer, intent(in) :: n_strips

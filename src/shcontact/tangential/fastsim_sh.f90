@@ -23,7 +23,7 @@ module shcontact_tangential_fastsim_sh
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
-      bound_ellipsoidal, spin_flexibility_spin, flexibility_patch, corrected_model
+      bound_ellipsoidal, spin_flexibility_spin, corrected_model
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
       prepare_ellipse_correction
    use shcontact_tangential_creepage, only: creepage_type
@@ -47,12 +47,12 @@ contains
       type(normal_patch_type), intent(in) :: patch
       !> G, ν, μ.
       type(material_type), intent(in) :: material
-      !> Bound, spin model, n_x, Kalker scheme, spin flexibility, fields.
+      !> Bound, spin model, n_x, spin flexibility, fields.
       type(tangential_options_type), intent(in) :: options
       !> Set for invalid input; stat_no_contact when no strip is loaded.
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0, &
-         cos0, ae, be, c11e, c22e, c23e, y_c, spread, area
+         cos0, ae, be, y_c, spread, area
       integer :: i, s, n_inactive
 
       call check_material(material, error)
@@ -70,19 +70,12 @@ contains
       cos0 = cos(patch%gamma0)
       ws%bound = options%bound
       ws%spin_model = options%spin_model
-      ws%flexibility = options%flexibility
       ws%fields = options%fields
       ws%friction = mu
       ws%dy = patch%dy
       ws%y_offset = 0.0_wp
       ws%gamma0 = patch%gamma0
       ws%phi_geo0 = geometric_spin(patch%gamma0, r0)
-
-      if (options%flexibility == flexibility_patch) then
-         call equivalent_ellipse(patch, ae, be)
-         call kalker_coefficients(ae/be, material%poisson, c11e, c22e, c23e, &
-            options%kalker_scheme)
-      end if
 
       s = 0
       n_inactive = 0
@@ -101,24 +94,15 @@ contains
          y = patch%y(i)
          k = patch%k(i)
          strip_load = patch%strip_load(i)
-         call kalker_coefficients(patch%m(i)/patch%n(i), material%poisson, c11, c22, c23, &
-            options%kalker_scheme)
+         call kalker_coefficients(patch%m(i)/patch%n(i), material%poisson, c11, c22, c23)
          s_ratio = sqrt(patch%n(i)/patch%m(i))
 
          ! doc/theory.md §6.3/§6.5 step 2, each rate multiplied by a_i (a_i² for R_φ).
          ws%y(s) = y
          ws%a(s) = a
-         if (options%flexibility == flexibility_patch) then
-            ! The patch's own linear theory: L_x = 8a_e/(3Gc₁₁), L_y = 8a_e/(3Gc₂₂),
-            ! L_φ = πa_e√(a_e/b_e)/(4Gc₂₃) at a_e/b_e (doc/theory.md §3.1), the same on every strip.
-            ws%akx(s) = 0.375_wp*g*c11e*a/ae
-            ws%aky(s) = 0.375_wp*g*c22e*a/ae
-            akphi = 4.0_wp/pi*g*c23e*sqrt(be/ae)*a/ae
-         else
-            ws%akx(s) = 0.375_wp*g*c11*k
-            ws%aky(s) = 0.375_wp*g*c22*k
-            akphi = 4.0_wp/pi*g*c23*s_ratio*k
-         end if
+         ws%akx(s) = 0.375_wp*g*c11*k
+         ws%aky(s) = 0.375_wp*g*c22*k
+         akphi = 4.0_wp/pi*g*c23*s_ratio*k
          ws%a2kphi(s) = akphi*a
          if (options%spin_flexibility == spin_flexibility_spin) then
             ws%akxs_y(s) = akphi*y
@@ -171,8 +155,8 @@ contains
          end do
          be = max(sqrt(5.0_wp*spread/ws%load), 0.5_wp*ws%dy)
          ae = area/(pi*be)
-         call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, &
-            options%kalker_scheme, y_c, load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
+         call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, y_c, &
+            load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
       end if
 
    contains
@@ -185,29 +169,6 @@ contains
 
    end subroutine prepare_fastsim_sh
 
-   !> The equivalent ellipse of a strip patch: b_e half the loaded width (first to last loaded
-   !> strip), a_e from the area, π a_e b_e = Σ 2 a_i dy.
-   pure subroutine equivalent_ellipse(patch, ae, be)
-      !> The strip table (at least one loaded strip, checked).
-      type(normal_patch_type), intent(in) :: patch
-      !> Semi-axes along x and y (mm).
-      real(wp), intent(out) :: ae, be
-      real(wp) :: area, y_lo, y_hi
-      integer :: i
-
-      area = 0.0_wp
-      y_lo = huge(1.0_wp)
-      y_hi = -huge(1.0_wp)
-      do i = 1, patch%n_strips
-         if (.not. (patch%a(i) > 0.0_wp)) cycle
-         area = area + 2.0_wp*patch%a(i)*patch%dy
-         y_lo = min(y_lo, patch%y(i))
-         y_hi = max(y_hi, patch%y(i))
-      end do
-      be = 0.5_wp*(y_hi - y_lo + patch%dy)
-      ae = area/(pi*be)
-   end subroutine equivalent_ellipse
-
    !> FASTSIM_SH in one call: [[prepare_fastsim_sh]] then solve_prepared.
    pure subroutine solve_fastsim_sh(ws, patch, material, creepage, options, result, error)
       !> The workspace (allocated only when its capacity grows).
@@ -218,7 +179,7 @@ contains
       type(material_type), intent(in) :: material
       !> Creepages at the reference point.
       type(creepage_type), intent(in) :: creepage
-      !> Bound, spin model, n_x, Kalker scheme, spin flexibility, fields.
+      !> Bound, spin model, n_x, spin flexibility, fields.
       type(tangential_options_type), intent(in) :: options
       !> The solution (arrays reallocated only when their shape changes).
       type(tangential_patch_type), intent(inout) :: result

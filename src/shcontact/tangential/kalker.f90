@@ -4,19 +4,14 @@
 !> Linear theory (doc/theory.md §2.1, forces on the wheel, decision 2), with c = √(ab):
 !> F_x = −G c² c₁₁ ν_x,  F_y = −G c² c₂₂ ν_y − G c³ c₂₃ φ.
 !>
-!> Two interpolation schemes of Kalker's Table E.3 (doc/theory.md §2.2) are offered:
-!>
-!> * [[kalker_scheme_scaled]] (default, decision 7): g = min(a/b, b/a). On the a > b branch the
-!>   scaled quantities g·c₁₁, g·c₂₂ and g^{3/2}·c₂₃, which stay bounded as g → 0, are interpolated
-!>   linearly in g; on the a ≤ b branch c itself. Below g = 0.1 the slender-ellipse asymptotes
-!>   take over, blended linearly with the table's first interval (extended) over g ∈ [0.08, 0.1],
-!>   so that the coefficients are continuous in a/b.
-!> * [[kalker_scheme_contact]]: CONTACT's `linrol` (v24.1), for comparisons with CONTACT: plain
-!>   linear interpolation of c in g on both branches, and the asymptotes without blending for
-!>   g < 0.101 (so the g = 0.1 table rows are *not* reproduced by this scheme).
-!>
-!> Both interpolate in ν with a quadratic Lagrange polynomial through ν = 0, 0.25, 0.5 of the
-!> reciprocals 1/c (doc/theory.md §2.3), after the interpolation in g.
+!> Interpolation of Kalker's Table E.3 (doc/theory.md §2.2, decision 7): g = min(a/b, b/a). On
+!> the a > b branch the scaled quantities g·c₁₁, g·c₂₂ and g^{3/2}·c₂₃, which stay bounded as
+!> g → 0, are interpolated linearly in g; on the a ≤ b branch c itself. Below g = 0.1 the
+!> slender-ellipse asymptotes take over, blended linearly with the table's first interval
+!> (extended) over g ∈ [0.08, 0.1], so that the coefficients are continuous in a/b. In ν a
+!> quadratic Lagrange polynomial through ν = 0, 0.25, 0.5 of the reciprocals 1/c (doc/theory.md
+!> §2.3), after the interpolation in g. (CONTACT's `linrol` scheme, which no input reached, was
+!> removed in issue 26.)
 module shcontact_tangential_kalker
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
@@ -24,14 +19,9 @@ module shcontact_tangential_kalker
    private
 
    public :: kalker_coefficients, kalker_asymptotes
-   public :: kalker_scheme_scaled, kalker_scheme_contact
    public :: kalker_table_short, kalker_table_long, kalker_table_g, kalker_table_poisson
    public :: kalker_blend_start, kalker_blend_end, kalker_g_min
 
-   !> Interpolation scheme: scaled quantities on the a > b branch, blended asymptotes (default).
-   integer, parameter :: kalker_scheme_scaled = 1
-   !> Interpolation scheme: CONTACT's `linrol`.
-   integer, parameter :: kalker_scheme_contact = 2
 
    !> Poisson ratios of the table columns.
    real(wp), parameter :: kalker_table_poisson(3) = [0.0_wp, 0.25_wp, 0.5_wp]
@@ -75,14 +65,12 @@ module shcontact_tangential_kalker
       3.40_wp, 4.12_wp, 5.20_wp, 3.40_wp, 3.67_wp, 3.98_wp, 1.33_wp, 1.47_wp, 1.63_wp], &
       [3, 3, 10])
 
-   !> CONTACT switches to the asymptotes below this g (`linrol`).
-   real(wp), parameter :: contact_g_switch = 0.101_wp
 
 contains
 
    !> Kalker's coefficients c₁₁, c₂₂, c₂₃ at ellipticity a/b and Poisson ratio ν (doc/theory.md §2.3).
    !> a/b is clamped to [g_min, 1/g_min] (see [[kalker_g_min]]); callers validate a/b > 0.
-   elemental subroutine kalker_coefficients(a_over_b, poisson, c11, c22, c23, scheme)
+   elemental subroutine kalker_coefficients(a_over_b, poisson, c11, c22, c23)
       !> Ellipticity a/b (semi-axis along x over semi-axis along y), > 0.
       real(wp), intent(in) :: a_over_b
       !> Poisson's ratio ν, 0 ≤ ν ≤ 0.5.
@@ -93,22 +81,12 @@ contains
       real(wp), intent(out) :: c22
       !> Lateral–spin coupling coefficient c₂₃.
       real(wp), intent(out) :: c23
-      !> [[kalker_scheme_scaled]] (default) or [[kalker_scheme_contact]].
-      integer, intent(in), optional :: scheme
       real(wp) :: g, w, c(3), c_asym(3)
-      logical :: long, contact
+      logical :: long
 
-      contact = .false.
-      if (present(scheme)) contact = scheme == kalker_scheme_contact
       call branch(a_over_b, g, long)
 
-      if (contact) then
-         if (g < contact_g_switch) then
-            call asymptotes(g, poisson, long, c)
-         else
-            call table_interpolation(g, poisson, long, .false., c)
-         end if
-      else if (g >= kalker_blend_end) then
+      if (g >= kalker_blend_end) then
          call table_interpolation(g, poisson, long, long, c)
       else if (g <= kalker_blend_start) then
          call asymptotes(g, poisson, long, c)

@@ -26,8 +26,7 @@ module shcontact_tangential_march
       state_slip
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
    use shcontact_tangential_options, only: bound_ellipsoidal, bound_parabolic, bound_weighted, &
-      bound_weighted_slip, bound_clipped, spin_additive, spin_scaled, flexibility_strip, &
-      flexibility_carter
+      bound_weighted_slip, bound_clipped, spin_additive, spin_scaled
    use shcontact_tangential_spin, only: local_creepages, scaled_spin_factor
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, ellipse_defect
    implicit none
@@ -47,8 +46,6 @@ module shcontact_tangential_march
       !> Traction bound (`bound_*`), spin model (`spin_*`), fill per-element fields.
       integer :: bound = bound_weighted
       integer :: spin_model = spin_additive
-      !> Flexibility mode (`flexibility_*`); [[flexibility_carter]] rescales the increments per case.
-      integer :: flexibility = flexibility_strip
       logical :: fields = .true.
       !> Friction coefficient μ, strip width (mm), normal force F_n (N).
       real(wp) :: friction = 0.0_wp, dy = 0.0_wp, load = 0.0_wp
@@ -333,7 +330,6 @@ contains
       ws%centre_nu_x = centre_x/ws%load
       ws%centre_nu_y = centre_y/ws%load
       ws%centre_phi = centre_phi/ws%load
-      if (ws%flexibility == flexibility_carter) call carter_stiffening(ws)
    end subroutine strip_increments
 
    !> Never past Coulomb (doc/tangential.md): the factor c ≤ 1 that brings the total traction
@@ -372,30 +368,6 @@ contains
          result%py(:, i) = result%py(:, i) + dfy*w*result%pn(:, i)
       end do
    end subroutine spread_defect
-
-   !> `flexibility = 'carter'` (doc/tangential.md, "Flexibilities"): on one strip with the
-   !> parabolic march bound g = G₀(1 − x'²), a constant increment r per unit step gives the
-   !> simplified-theory force F/F_sat = 1 − (1 − ε)³, ε = r/(2G₀) (slip from x' = 2ε − 1, full slip
-   !> at ε = 1), whose initial slope 3ε the linear-theory flexibility makes right. Carter's exact
-   !> 2-D theory gives 1 − (1 − ξ)² with the same slope, ξ = 3ε/2. Dividing the strip's
-   !> flexibilities by q = ε'/ε, ε' = 1 − (1 − ξ)^{2/3}, makes the strip's force follow Carter's
-   !> curve; q = 1 + O(ε) (linear theory kept), q ≥ 1. ε combines the creep increments and the spin
-   !> increment, each measured against the bound as in full slip: ε = |(c_x, c_y, c_φ)|/(2G₀).
-   pure subroutine carter_stiffening(ws)
-      type(march_workspace_type), intent(inout) :: ws
-      real(wp) :: eps, xi, q
-      integer :: s
-
-      do s = 1, ws%n_active
-         eps = sqrt(ws%cx(s)**2 + ws%cy(s)**2)/(2.0_wp*ws%bound_peak(s))
-         xi = min(1.5_wp*eps, 1.0_wp)
-         q = 1.0_wp
-         if (eps > 1.0e-12_wp .and. eps < 1.0_wp) q = max(1.0_wp, &
-            (1.0_wp - (1.0_wp - xi)**(2.0_wp/3.0_wp))/eps)
-         ws%cx(s) = q*ws%cx(s)
-         ws%cy(s) = q*ws%cy(s)
-      end do
-   end subroutine carter_stiffening
 
    !> March the m strips b0 … b0 + m − 1 from the leading edge and sum their output tractions
    !> (doc/theory.md §3.2 steps 2–3, §6.4), element by element, all strips of the block at once.

@@ -13,18 +13,23 @@ module shcontact_io_config_assign
    use shcontact_io_config_limits, only: name_len, max_sweep_values, max_label_values, &
       max_fields
    use shcontact_io_config_sweep, only: sweep_axis_type, sweep_config_type, axis_index
+   use shcontact_core_choices, only: choice_type, choice_code, choice_list
    use shcontact_io_config_types, only: case_config_type, profiles_config_type, &
       track_config_type, position_config_type, kinematics_config_type, load_config_type, &
       creepage_config_type, normal_config_type, tangential_config_type, output_config_type, &
-      set_origin
+      set_origin, set_choice_value
    use shcontact_io_config_variables, only: variables, find_variable, type_phrase, &
-      string_capacity, suggestion, group_variable_list, is_choice, k_int, k_string, &
-      k_string_list, k_real_list
+      string_capacity, suggestion, group_variable_list, is_choice, variable_choices, k_int, &
+      k_string, k_string_list, k_real_list, k_choice
    use shcontact_io_config_parser, only: assignment_type
    implicit none
    private
 
-   public :: apply_assignment
+   public :: apply_assignment, read_group_variable, stat_unknown_choice
+
+   !> `stat` of [[read_group_variable]] for a value that is none of the variable's choices
+   !> (`msg` then says which are allowed); any other non-zero `stat` is the namelist reader's.
+   integer, parameter :: stat_unknown_choice = 900
 
    !> Sentinel of unset sweep-list entries.
    real(wp), parameter :: unset = huge(1.0_wp)
@@ -90,7 +95,10 @@ contains
       call ieee_get_halting_mode(ieee_overflow, halting)
       call ieee_set_halting_mode(ieee_overflow, .false.)
       call ieee_set_flag(ieee_overflow, .false.)
-      if (a%group == 'sweep') then
+      if (variables(iv)%kind == k_choice .and. scan(adjustl(value), "'"//'"') /= 1) then
+         ! A case file quotes every string (the option setters may leave a choice unquoted).
+         stat = 1
+      else if (a%group == 'sweep' .and. variables(iv)%kind /= k_choice) then
          call read_sweep(config%sweep, a%name, variables(iv)%kind, value, stat, msg)
       else
          call read_group_variable(config, a%group, a%name, value, stat, msg)
@@ -105,7 +113,10 @@ contains
             'precision (|x| < 1.8e308); expected '//type_phrase(variables(iv)))
          return
       end if
-      if (stat /= 0) then
+      if (stat == stat_unknown_choice) then
+         call fatal_error(error, a%where//': &'//a%group//' '//a%name//' = '//trim(msg))
+         return
+      else if (stat /= 0) then
          call fatal_error(error, value_context(a)//': expected '// &
             type_phrase(variables(iv))//hint(variables(iv)%kind, a%value))
          return
@@ -132,8 +143,8 @@ contains
       character(len=*), intent(in) :: value
       character(len=:), allocatable :: h
       h = ''
-      if ((kind == k_string .or. kind == k_string_list) .and. index(value, "'") == 0 .and. &
-          index(value, '"') == 0) h = " (strings are quoted: 'text')"
+      if ((kind == k_string .or. kind == k_choice .or. kind == k_string_list) .and. &
+          index(value, "'") == 0 .and. index(value, '"') == 0) h = " (strings are quoted: 'text')"
    end function hint
 
    !> Relative profile file names are taken from the directory of the case file.
@@ -150,15 +161,22 @@ contains
       end select
    end subroutine resolve_profile_path
 
-   !> Read `group%name = value` (every group but `&sweep`) through a one-assignment namelist
-   !> whose objects are copies of the groups, written back only when the read succeeds.
+   !> Read `group%name = value` (every group but `&sweep`, and the `&sweep mode`) through a
+   !> one-assignment namelist whose objects are copies of the groups, written back only when the
+   !> read succeeds. A choice variable (kind `k_choice`) is read as a string (quoted, or the
+   !> unquoted text itself) and stored as the code of the registry's choice of that name
+   !> (case-insensitive, '_' read as '-'); an unknown name gives `stat` = [[stat_unknown_choice]]. The one entry point that sets a case-file
+   !> variable from text: the case files, `--set` and the option setters of the C and Fortran 77
+   !> interfaces all go through it. Ranges are checked afterwards (validate_config), not here.
    subroutine read_group_variable(config, group, name, value, stat, msg)
       type(case_config_type), intent(inout) :: config
       !> Group and variable, known to the variable table.
       character(len=*), intent(in) :: group, name
-      !> The value as namelist text.
+      !> The value as namelist text (strings quoted).
       character(len=*), intent(in) :: value
+      !> 0 on success; [[stat_unknown_choice]] or the namelist reader's iostat on failure.
       integer, intent(out) :: stat
+      !> What went wrong (unchanged on success).
       character(len=*), intent(inout) :: msg
       type(profiles_config_type) :: profiles
       type(track_config_type) :: track
@@ -171,9 +189,17 @@ contains
       type(tangential_config_type) :: tangential
       type(output_config_type) :: output
       character(len=:), allocatable :: text
+      integer :: iv
       namelist /groups/ profiles, track, position, kinematics, material, load, creepage, normal, &
          tangential, output
 
+      iv = find_variable(group, name)
+      if (iv > 0) then
+         if (variables(iv)%kind == k_choice) then
+            call read_choice(config, group, name, value, stat, msg)
+            return
+         end if
+      end if
       profiles = config%profiles; track = config%track; position = config%position
       kinematics = config%kinematics; material = config%material; load = config%load
       creepage = config%creepage; normal = config%normal; tangential = config%tangential
@@ -189,6 +215,42 @@ contains
       config%output = output
    end subroutine read_group_variable
 
+   !> Read a choice as a namelist string and store its code (see [[read_group_variable]]).
+   subroutine read_choice(config, group, name, value, stat, msg)
+      type(case_config_type), intent(inout) :: config
+      !> A choice variable (kind `k_choice`).
+      character(len=*), intent(in) :: group, name
+      !> The value as namelist text.
+      character(len=*), intent(in) :: value
+      integer, intent(out) :: stat
+      character(len=*), intent(inout) :: msg
+      character(len=name_len) :: choice
+      character(len=:), allocatable :: text
+      type(choice_type), allocatable :: choices(:)
+      integer :: code
+      namelist /choices_nml/ choice
+
+      choice = ''
+      text = trim(adjustl(value))
+      if (index("'"//'"', text(1:min(1, len(text)))) == 0 .or. len(text) == 0) then
+         ! Unquoted (an option setter's value): the text itself.
+         stat = 0
+         choice = text
+      else
+         text = '&choices_nml choice = '//text//' /'
+         read (text, nml=choices_nml, iostat=stat, iomsg=msg)
+         if (stat /= 0) return
+      end if
+      choices = variable_choices(group, name)
+      code = choice_code(choices, choice)
+      if (code == 0) then
+         stat = stat_unknown_choice
+         msg = "'"//trim(choice)//"' is not allowed; expected one of "//choice_list(choices)
+         return
+      end if
+      call set_choice_value(config, group, name, code)
+   end subroutine read_choice
+
    !> Read one `&sweep` variable into a namelist object of its kind (a list gets room for
    !> every value and starts unset, so that a list replaces the whole list) and store it: the
    !> mode, an axis's values or labels, or its `_points`.
@@ -196,27 +258,25 @@ contains
       type(sweep_config_type), intent(inout) :: g
       !> Variable name, known to the variable table.
       character(len=*), intent(in) :: name
-      !> Its kind (k_string, k_int, k_real_list or k_string_list).
+      !> Its kind (k_int, k_real_list or k_string_list).
       integer, intent(in) :: kind
       !> The value as namelist text.
       character(len=*), intent(in) :: value
       integer, intent(out) :: stat
       character(len=*), intent(inout) :: msg
-      character(len=name_len) :: mode, labels(max_label_values)
+      character(len=name_len) :: labels(max_label_values)
       real(wp), allocatable :: values(:)
       integer :: points
       character(len=:), allocatable :: object, text
-      namelist /sweep/ mode, labels, values, points
+      namelist /sweep/ labels, values, points
 
-      mode = g%mode
       labels = ''
       allocate (values(merge(max_sweep_values, 0, kind == k_real_list)), source=unset)
       points = 0
       select case (kind)
       case (k_real_list); object = 'values'
       case (k_string_list); object = 'labels'
-      case (k_int); object = 'points'
-      case default; object = 'mode'
+      case default; object = 'points'
       end select
       text = '&sweep '//object//' = '//value//' /'
       read (text, nml=sweep, iostat=stat, iomsg=msg)
@@ -226,10 +286,8 @@ contains
          call store_values(g%axes(axis_index(name)), values, stat, msg)
       case (k_string_list)
          call store_labels(g%axes(axis_index(name)), labels)
-      case (k_int)
-         g%axes(axis_index(name(1:index(name, '_points') - 1)))%points = points
       case default
-         g%mode = mode
+         g%axes(axis_index(name(1:index(name, '_points') - 1)))%points = points
       end select
    end subroutine read_sweep
 

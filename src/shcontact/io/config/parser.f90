@@ -10,7 +10,7 @@ module shcontact_io_config_parser
    use shcontact_io_text, only: quote_string, strip_quotes
    use shcontact_io_config_limits, only: max_line_length
    use shcontact_io_config_variables, only: variables, group_names, find_variable, join_words, &
-      k_string, k_string_list
+      k_string, k_string_list, k_choice
    implicit none
    private
 
@@ -446,7 +446,7 @@ contains
       end if
       iv = find_variable(a%group, a%name)
       if (iv > 0) then
-         if (variables(iv)%kind == k_string) then
+         if (variables(iv)%kind == k_string .or. variables(iv)%kind == k_choice) then
             if (index("'"//'"', a%value(1:min(1, len(a%value)))) == 0) &
                a%value = quote_string(a%value)
          else if (variables(iv)%kind == k_string_list) then

@@ -2,13 +2,16 @@
 !> they span, either every combination ('grid') or the i-th value of every list ('list').
 module shcontact_io_config_sweep
    use shcontact_core_kinds, only: wp
+   use shcontact_core_choices, only: choice_name
    use shcontact_io_config_limits, only: name_len
+   use shcontact_io_config_choices, only: sweep_grid, sweep_list
+   use shcontact_tangential_option_registry, only: bound_choices, spin_model_choices
    implicit none
    private
 
    public :: sweep_axis_type, sweep_config_type, case_point_type
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential, axis_stage
-   public :: axis_index, case_point_value, is_kinematic_input
+   public :: axis_index, case_point_value, case_point_label, is_kinematic_input
 
    !> Sweepable quantities, in loop order (outermost first): geometry, then load, then the
    !> tangential inputs, so that consecutive cases share geometry and normal solution.
@@ -19,6 +22,11 @@ module shcontact_io_config_sweep
       't_y', 'roll', 'yaw', 'normal_force', 'approach', 'vertical_force', 'friction', 'bound', &
       'spin_model', 'v_forward', 'v_lateral', 'v_vertical', 'roll_rate', 'yaw_rate', &
       'pitch_rate', 'nu_x', 'nu_y', 'phi']
+   !> The axes' indices in [[sweep_axis_names]] (so that a case is built without comparing names).
+   integer, parameter :: ax_t_y = 1, ax_roll = 2, ax_yaw = 3, ax_normal_force = 4, &
+      ax_approach = 5, ax_vertical_force = 6, ax_friction = 7, ax_bound = 8, ax_spin_model = 9, &
+      ax_v_forward = 10, ax_v_lateral = 11, ax_v_vertical = 12, ax_roll_rate = 13, &
+      ax_yaw_rate = 14, ax_pitch_rate = 15, ax_nu_x = 16, ax_nu_y = 17, ax_phi = 18
    !> Which stage an axis changes: 1 geometry, 2 normal load, 3 tangential only.
    integer, parameter :: axis_geometry = 1, axis_load = 2, axis_tangential = 3
    integer, parameter :: axis_stage(n_sweep_axes) = [1, 1, 1, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, &
@@ -37,8 +45,10 @@ module shcontact_io_config_sweep
       real(wp), allocatable :: given(:)
       !> Number of evenly spaced points from given(1) to given(2); 0 for a list.
       integer :: points = 0
-      !> Values of a choice axis.
+      !> Values of a choice axis, as written (lower case); their codes (the tangential option
+      !> registry's), set by the validation.
       character(len=name_len), allocatable :: labels(:)
+      integer, allocatable :: codes(:)
    contains
       !> Number of values.
       procedure :: size => axis_size
@@ -48,7 +58,8 @@ module shcontact_io_config_sweep
 
    !> `&sweep`: the axes, indexed as [[sweep_axis_names]].
    type :: sweep_config_type
-      character(len=name_len) :: mode = 'grid'
+      !> `sweep_grid` or `sweep_list` (shcontact_io_config_choices).
+      integer :: mode = sweep_grid
       type(sweep_axis_type) :: axes(n_sweep_axes)
    contains
       !> Number of cases of the sweep (1 without active axes).
@@ -69,7 +80,8 @@ module shcontact_io_config_sweep
       real(wp) :: yaw = 0.0_wp
       real(wp) :: normal_force = 0.0_wp, approach = 0.0_wp, vertical_force = 0.0_wp
       real(wp) :: friction = 0.0_wp
-      character(len=name_len) :: bound = '', spin_model = ''
+      !> Codes of the traction bound and the spin model (shcontact_tangential_option_registry).
+      integer :: bound = 0, spin_model = 0
       real(wp) :: v_forward = 0.0_wp, v_lateral = 0.0_wp, v_vertical = 0.0_wp
       real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp, pitch_rate = 0.0_wp
       real(wp) :: nu_x = 0.0_wp, nu_y = 0.0_wp, phi = 0.0_wp
@@ -114,7 +126,7 @@ contains
       n = 1
       do ia = 1, n_sweep_axes
          if (.not. self%axes(ia)%active) cycle
-         if (self%mode == 'list') then
+         if (self%mode == sweep_list) then
             n = self%axes(ia)%size()
          else
             n = min(n*self%axes(ia)%size(), int(huge(1), kind=8))
@@ -133,7 +145,7 @@ contains
       rest = icase - 1
       do ia = n_sweep_axes, 1, -1
          if (.not. self%axes(ia)%active) cycle
-         if (self%mode == 'list') then
+         if (self%mode == sweep_list) then
             idx(ia) = icase
          else
             m = self%axes(ia)%size()
@@ -156,25 +168,25 @@ contains
       do ia = 1, n_sweep_axes
          if (idx(ia) == 0) cycle
          associate (axis => self%axes(ia))
-            select case (trim(sweep_axis_names(ia)))
-            case ('t_y'); p%t_y = axis%value(idx(ia))
-            case ('roll'); p%roll = axis%value(idx(ia))
-            case ('yaw'); p%yaw = axis%value(idx(ia))
-            case ('normal_force'); p%normal_force = axis%value(idx(ia))
-            case ('approach'); p%approach = axis%value(idx(ia))
-            case ('vertical_force'); p%vertical_force = axis%value(idx(ia))
-            case ('friction'); p%friction = axis%value(idx(ia))
-            case ('bound'); p%bound = axis%labels(idx(ia))
-            case ('spin_model'); p%spin_model = axis%labels(idx(ia))
-            case ('v_forward'); p%v_forward = axis%value(idx(ia))
-            case ('v_lateral'); p%v_lateral = axis%value(idx(ia))
-            case ('v_vertical'); p%v_vertical = axis%value(idx(ia))
-            case ('roll_rate'); p%roll_rate = axis%value(idx(ia))
-            case ('yaw_rate'); p%yaw_rate = axis%value(idx(ia))
-            case ('pitch_rate'); p%pitch_rate = axis%value(idx(ia))
-            case ('nu_x'); p%nu_x = axis%value(idx(ia))
-            case ('nu_y'); p%nu_y = axis%value(idx(ia))
-            case ('phi'); p%phi = axis%value(idx(ia))
+            select case (ia)
+            case (ax_t_y); p%t_y = axis%value(idx(ia))
+            case (ax_roll); p%roll = axis%value(idx(ia))
+            case (ax_yaw); p%yaw = axis%value(idx(ia))
+            case (ax_normal_force); p%normal_force = axis%value(idx(ia))
+            case (ax_approach); p%approach = axis%value(idx(ia))
+            case (ax_vertical_force); p%vertical_force = axis%value(idx(ia))
+            case (ax_friction); p%friction = axis%value(idx(ia))
+            case (ax_bound); p%bound = axis%codes(idx(ia))
+            case (ax_spin_model); p%spin_model = axis%codes(idx(ia))
+            case (ax_v_forward); p%v_forward = axis%value(idx(ia))
+            case (ax_v_lateral); p%v_lateral = axis%value(idx(ia))
+            case (ax_v_vertical); p%v_vertical = axis%value(idx(ia))
+            case (ax_roll_rate); p%roll_rate = axis%value(idx(ia))
+            case (ax_yaw_rate); p%yaw_rate = axis%value(idx(ia))
+            case (ax_pitch_rate); p%pitch_rate = axis%value(idx(ia))
+            case (ax_nu_x); p%nu_x = axis%value(idx(ia))
+            case (ax_nu_y); p%nu_y = axis%value(idx(ia))
+            case (ax_phi); p%phi = axis%value(idx(ia))
             end select
          end associate
       end do
@@ -198,7 +210,7 @@ contains
       integer, intent(in) :: icase, stage
       integer :: idx(n_sweep_axes), jdx(n_sweep_axes), ia, j, m, stride
       call axis_indices(self, icase, idx)
-      if (self%mode == 'grid') then
+      if (self%mode == sweep_grid) then
          ! In a grid the outer axes change slowest: zero the inner indices.
          shares_with = 1
          stride = 1
@@ -231,26 +243,41 @@ contains
       type(case_point_type), intent(in) :: p
       !> Axis index.
       integer, intent(in) :: ia
-      select case (trim(sweep_axis_names(ia)))
-      case ('t_y'); x = p%t_y
-      case ('roll'); x = p%roll
-      case ('yaw'); x = p%yaw
-      case ('normal_force'); x = p%normal_force
-      case ('approach'); x = p%approach
-      case ('vertical_force'); x = p%vertical_force
-      case ('friction'); x = p%friction
-      case ('v_forward'); x = p%v_forward
-      case ('v_lateral'); x = p%v_lateral
-      case ('v_vertical'); x = p%v_vertical
-      case ('roll_rate'); x = p%roll_rate
-      case ('yaw_rate'); x = p%yaw_rate
-      case ('pitch_rate'); x = p%pitch_rate
-      case ('nu_x'); x = p%nu_x
-      case ('nu_y'); x = p%nu_y
-      case ('phi'); x = p%phi
+      select case (ia)
+      case (ax_t_y); x = p%t_y
+      case (ax_roll); x = p%roll
+      case (ax_yaw); x = p%yaw
+      case (ax_normal_force); x = p%normal_force
+      case (ax_approach); x = p%approach
+      case (ax_vertical_force); x = p%vertical_force
+      case (ax_friction); x = p%friction
+      case (ax_v_forward); x = p%v_forward
+      case (ax_v_lateral); x = p%v_lateral
+      case (ax_v_vertical); x = p%v_vertical
+      case (ax_roll_rate); x = p%roll_rate
+      case (ax_yaw_rate); x = p%yaw_rate
+      case (ax_pitch_rate); x = p%pitch_rate
+      case (ax_nu_x); x = p%nu_x
+      case (ax_nu_y); x = p%nu_y
+      case (ax_phi); x = p%phi
       case default; x = 0.0_wp
       end select
    end function case_point_value
+
+   !> The value of choice axis `ia` (bound or spin_model) of a case as its name; '' for the
+   !> real axes.
+   pure function case_point_label(p, ia) result(label)
+      !> The inputs of the case.
+      type(case_point_type), intent(in) :: p
+      !> Axis index.
+      integer, intent(in) :: ia
+      character(len=:), allocatable :: label
+      select case (ia)
+      case (ax_bound); label = choice_name(bound_choices, p%bound)
+      case (ax_spin_model); label = choice_name(spin_model_choices, p%spin_model)
+      case default; label = ''
+      end select
+   end function case_point_label
 
    !> True for the wheelset inputs of a kinematic case: t_y, roll, yaw, the velocities and
    !> the rates.

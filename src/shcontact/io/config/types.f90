@@ -1,11 +1,22 @@
 !> The typed configuration of a run: one derived type per namelist group, with the defaults of
-!> the seed's headline case, the whole configuration with where each value was set, and the
-!> questions downstream code asks of it (number of cases, inputs of a case, fields to store).
+!> the seed's headline case (the registries' defaults: shcontact_core_ranges and the option
+!> registries; choices are held as their integer codes; test `registry`), the whole
+!> configuration with where each value was set, and the questions downstream code asks of it
+!> (number of cases, inputs of a case, fields to store, the library's options).
 module shcontact_io_config_types
    use shcontact_core_kinds, only: wp
    use shcontact_core_material, only: material_type
    use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
    use shcontact_io_config_limits, only: path_len, name_len, max_fields
+   use shcontact_io_config_choices, only: side_right, kinematics_off, kinematics_on, &
+      load_mode_force, curvature_local, precision_double
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_normal_option_registry, only: default_normal_method => default_method, &
+      default_reduction, default_epsilon, default_n_strips
+   use shcontact_tangential_option_registry, only: default_tangential_method => default_method, &
+      default_bound, default_spin_model, default_spin_flexibility, default_correction, &
+      default_n_elements
    use shcontact_io_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
       axis_index, is_kinematic_input
    implicit none
@@ -14,7 +25,8 @@ module shcontact_io_config_types
    public :: case_config_type, profiles_config_type, track_config_type, position_config_type
    public :: kinematics_config_type, load_config_type, creepage_config_type, normal_config_type
    public :: tangential_config_type, output_config_type
-   public :: set_origin, origin, sweep_origin
+   public :: set_origin, origin, sweep_origin, choice_value, set_choice_value
+   public :: normal_options_of, tangential_options_of
 
    !> `&profiles`: which profiles, read how.
    type :: profiles_config_type
@@ -37,8 +49,8 @@ module shcontact_io_config_types
 
    !> `&track`: track and wheelset dimensions (doc/theory.md §5.2).
    type :: track_config_type
-      !> 'right' or 'left'.
-      character(len=name_len) :: side = 'right'
+      !> `side_right` or `side_left` (shcontact_io_config_choices).
+      integer :: side = side_right
       !> Track gauge (mm), measured `gauge_height` below the rail top.
       real(wp) :: gauge = 1435.0_wp, gauge_height = 14.0_wp
       !> Rail inclination as a slope towards the track centre (1:40).
@@ -66,8 +78,8 @@ module shcontact_io_config_types
    !> (the library's `solve_kinematic`) instead of `&creepage`; the lateral shift and the roll
    !> are those of `&position`. Track frame: x forward, y towards the right field side, z down.
    type :: kinematics_config_type
-      !> 'off' (prescribed creepages, `&creepage`) or 'on'.
-      character(len=name_len) :: mode = 'off'
+      !> `kinematics_off` (prescribed creepages, `&creepage`) or `kinematics_on`.
+      integer :: mode = kinematics_off
       !> Yaw angle ψ (rad), CONTACT's YAW_WS.
       real(wp) :: yaw = 0.0_wp
       !> Forward speed of the wheelset centre V (mm/s, > 0): 30 m/s.
@@ -85,8 +97,8 @@ module shcontact_io_config_types
 
    !> `&load`: how the normal problem is loaded.
    type :: load_config_type
-      !> 'force', 'approach' or 'vertical'.
-      character(len=name_len) :: mode = 'force'
+      !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical`.
+      integer :: mode = load_mode_force
       !> Normal force on the patch (N), rigid approach (mm), vertical wheel load (N).
       real(wp) :: normal_force = 64700.0_wp, approach = 0.05_wp, vertical_force = 64700.0_wp
    end type load_config_type
@@ -99,24 +111,26 @@ module shcontact_io_config_types
 
    !> `&normal`: the normal solver.
    type :: normal_config_type
-      character(len=name_len) :: method = 'semi-hertz'
-      character(len=name_len) :: reduction = 'coupled'
-      real(wp) :: epsilon = 0.55_wp
-      integer :: n_strips = 100
+      !> `method_*` and `reduction_*` of shcontact_normal_option_registry.
+      integer :: method = default_normal_method
+      integer :: reduction = default_reduction
+      real(wp) :: epsilon = default_epsilon
+      integer :: n_strips = default_n_strips
       !> Clamp of B(y) (1/mm), doc/theory.md decision 4.
       real(wp) :: b_min = 1.0e-4_wp
-      !> 'local' (cos γ(y)) or 'reference' (cos γ₀) in A(y).
-      character(len=name_len) :: longitudinal_curvature = 'local'
+      !> `curvature_local` (cos γ(y)) or `curvature_reference` (cos γ₀) in A(y).
+      integer :: longitudinal_curvature = curvature_local
    end type normal_config_type
 
    !> `&tangential`: the tangential solver.
    type :: tangential_config_type
-      character(len=name_len) :: method = 'fastsim-sh'
-      character(len=name_len) :: bound = 'weighted'
-      character(len=name_len) :: spin_model = 'uniform'
-      character(len=name_len) :: spin_flexibility = 'longitudinal'
-      character(len=name_len) :: correction = 'exact-ellipse'
-      integer :: n_elements = 50
+      !> The codes of shcontact_tangential_option_registry.
+      integer :: method = default_tangential_method
+      integer :: bound = default_bound
+      integer :: spin_model = default_spin_model
+      integer :: spin_flexibility = default_spin_flexibility
+      integer :: correction = default_correction
+      integer :: n_elements = default_n_elements
    end type tangential_config_type
 
    !> `&output`: the HDF5 file.
@@ -125,7 +139,8 @@ module shcontact_io_config_types
       !> Per-case fields to store ('auto': all for a single case, none in a sweep).
       character(len=name_len) :: fields(max_fields) = reshape([character(len=name_len) :: &
          'auto'], [max_fields], pad=[character(len=name_len) :: ''])
-      character(len=name_len) :: precision = 'double'
+      !> `precision_double` or `precision_single`.
+      integer :: precision = precision_double
       integer :: compression = 4
       integer :: checkpoint_cases = 0
    end type output_config_type
@@ -227,7 +242,7 @@ contains
 
    pure logical function is_kinematic(self)
       class(case_config_type), intent(in) :: self
-      is_kinematic = self%kinematics%mode == 'on'
+      is_kinematic = self%kinematics%mode == kinematics_on
    end function is_kinematic
 
    pure logical function reports_input(self, ia)
@@ -256,6 +271,77 @@ contains
          end if
       end associate
    end function wants_field
+
+   !> The library's normal options of a configuration (`&normal`; b_min and the longitudinal
+   !> curvature are options of the contact search).
+   pure function normal_options_of(config) result(options)
+      type(case_config_type), intent(in) :: config
+      type(normal_options_type) :: options
+      options = normal_options_type(method=config%normal%method, &
+         reduction=config%normal%reduction, epsilon=config%normal%epsilon, &
+         n_strips=config%normal%n_strips)
+   end function normal_options_of
+
+   !> The library's tangential options of a configuration (`&tangential`); the bound and the
+   !> spin model of a case may come from a sweep (case_point), the fields from `&output`.
+   pure function tangential_options_of(config) result(options)
+      type(case_config_type), intent(in) :: config
+      type(tangential_options_type) :: options
+      options%method = config%tangential%method
+      options%bound = config%tangential%bound
+      options%spin_model = config%tangential%spin_model
+      options%n_elements = config%tangential%n_elements
+      options%spin_flexibility = config%tangential%spin_flexibility
+      options%correction = config%tangential%correction
+   end function tangential_options_of
+
+   !> The code held by the choice variable `group%name` (kind `k_choice` of the variable table);
+   !> 0 for any other name.
+   pure integer function choice_value(config, group, name) result(code)
+      type(case_config_type), intent(in) :: config
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      select case (trim(group)//'%'//trim(name))
+      case ('track%side'); code = config%track%side
+      case ('kinematics%mode'); code = config%kinematics%mode
+      case ('load%mode'); code = config%load%mode
+      case ('normal%method'); code = config%normal%method
+      case ('normal%reduction'); code = config%normal%reduction
+      case ('normal%longitudinal_curvature'); code = config%normal%longitudinal_curvature
+      case ('tangential%method'); code = config%tangential%method
+      case ('tangential%bound'); code = config%tangential%bound
+      case ('tangential%spin_model'); code = config%tangential%spin_model
+      case ('tangential%spin_flexibility'); code = config%tangential%spin_flexibility
+      case ('tangential%correction'); code = config%tangential%correction
+      case ('output%precision'); code = config%output%precision
+      case ('sweep%mode'); code = config%sweep%mode
+      case default; code = 0
+      end select
+   end function choice_value
+
+   !> Store `code` in the choice variable `group%name` ([[choice_value]]'s names).
+   pure subroutine set_choice_value(config, group, name, code)
+      type(case_config_type), intent(inout) :: config
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      !> A code of the variable's choices.
+      integer, intent(in) :: code
+      select case (trim(group)//'%'//trim(name))
+      case ('track%side'); config%track%side = code
+      case ('kinematics%mode'); config%kinematics%mode = code
+      case ('load%mode'); config%load%mode = code
+      case ('normal%method'); config%normal%method = code
+      case ('normal%reduction'); config%normal%reduction = code
+      case ('normal%longitudinal_curvature'); config%normal%longitudinal_curvature = code
+      case ('tangential%method'); config%tangential%method = code
+      case ('tangential%bound'); config%tangential%bound = code
+      case ('tangential%spin_model'); config%tangential%spin_model = code
+      case ('tangential%spin_flexibility'); config%tangential%spin_flexibility = code
+      case ('tangential%correction'); config%tangential%correction = code
+      case ('output%precision'); config%output%precision = code
+      case ('sweep%mode'); config%sweep%mode = code
+      end select
+   end subroutine set_choice_value
 
    subroutine set_origin(config, key, where)
       type(case_config_type), intent(inout) :: config

@@ -14,11 +14,16 @@ module shcontact_io_config_validate
    use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases
    use shcontact_io_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
       is_kinematic_input
-   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin
-   use shcontact_io_config_variables, only: variables, find_variable, join_words, &
-      mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes, reductions, &
-      tangential_methods, bounds, spin_models, spin_flexibilities, corrections, field_names, &
-      precisions, sweep_modes, kinematics_modes
+   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin, choice_value
+   use shcontact_io_config_variables, only: variables, k_choice
+   use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list
+   use shcontact_io_config_variables, only: variable_choices
+   use shcontact_io_config_choices, only: format_choices, mirror_choices, field_choices, &
+      load_mode_choices, load_mode_force, load_mode_approach, &
+      load_mode_vertical, sweep_list
+   use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
+   use shcontact_tangential_option_registry, only: method_fastsim, spin_additive, &
+      spin_model_choices
    implicit none
    private
 
@@ -36,9 +41,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       associate (c => config)
-         call check_choice(c, 'profiles', 'wheel_format', c%profiles%wheel_format, formats, error)
+         call check_choice(c, 'profiles', 'wheel_format', c%profiles%wheel_format, &
+            format_choices, error)
          if (allocated(error)) return
-         call check_choice(c, 'profiles', 'rail_format', c%profiles%rail_format, formats, error)
+         call check_choice(c, 'profiles', 'rail_format', c%profiles%rail_format, format_choices, &
+            error)
          if (allocated(error)) return
          call check_profile_name(c, 'wheel', c%profiles%wheel, 'builtin:S1002', error)
          if (allocated(error)) return
@@ -66,8 +73,6 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'profiles', 'rail_scale', c%profiles%rail_scale, error)
          if (allocated(error)) return
-         call check_choice(c, 'track', 'side', c%track%side, sides, error)
-         if (allocated(error)) return
          call check_real_var(c, 'track', 'gauge', c%track%gauge, error)
          if (allocated(error)) return
          call check_real_var(c, 'track', 'gauge_height', c%track%gauge_height, error)
@@ -94,8 +99,6 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'material', 'friction', c%material%friction, error)
          if (allocated(error)) return
-         call check_choice(c, 'load', 'mode', c%load%mode, load_modes, error)
-         if (allocated(error)) return
          call check_real_var(c, 'load', 'normal_force', c%load%normal_force, error)
          if (allocated(error)) return
          call check_real_var(c, 'load', 'approach', c%load%approach, error)
@@ -108,41 +111,22 @@ contains
          if (allocated(error)) return
          call check_real_var(c, 'creepage', 'phi', c%creepage%phi, error)
          if (allocated(error)) return
-         call check_choice(c, 'normal', 'method', c%normal%method, normal_methods, error)
-         if (allocated(error)) return
-         call check_choice(c, 'normal', 'reduction', c%normal%reduction, reductions, error)
-         if (allocated(error)) return
          call check_real_var(c, 'normal', 'epsilon', c%normal%epsilon, error)
          if (allocated(error)) return
          call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, error)
          if (allocated(error)) return
          call check_real_var(c, 'normal', 'b_min', c%normal%b_min, error)
          if (allocated(error)) return
-         call check_choice(c, 'normal', 'longitudinal_curvature', &
-            c%normal%longitudinal_curvature, curvature_modes, error)
-         if (allocated(error)) return
-         call check_choice(c, 'tangential', 'method', c%tangential%method, tangential_methods, &
-            error)
-         if (allocated(error)) return
-         call check_choice(c, 'tangential', 'bound', c%tangential%bound, bounds, error)
-         if (allocated(error)) return
-         call check_choice(c, 'tangential', 'spin_model', c%tangential%spin_model, spin_models, &
-            error)
-         if (allocated(error)) return
-         call check_choice(c, 'tangential', 'spin_flexibility', c%tangential%spin_flexibility, &
-            spin_flexibilities, error)
-         if (allocated(error)) return
-         call check_choice(c, 'tangential', 'correction', c%tangential%correction, corrections, &
-            error)
+         call check_codes(c, error)
          if (allocated(error)) return
          call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, error)
          if (allocated(error)) return
          call check_grid_size(c, error)
          if (allocated(error)) return
-         if (c%tangential%method == 'fastsim' .and. c%normal%method /= 'hertz') then
+         if (c%tangential%method == method_fastsim .and. c%normal%method /= method_hertz) then
             call fatal_error(error, origin(c, 'tangential%method')//": &tangential method = "// &
                "'fastsim' works on the Hertz ellipse of the reference point: set &normal "// &
-               "method = 'hertz' (now '"//trim(c%normal%method)//"')")
+               "method = 'hertz' (now '"//choice_name(normal_methods, c%normal%method)//"')")
             return
          end if
          call check_output(c, error)
@@ -185,8 +169,6 @@ contains
       type(case_config_type), intent(inout) :: config
       type(error_type), allocatable, intent(out) :: error
       associate (k => config%kinematics)
-         call check_choice(config, 'kinematics', 'mode', k%mode, kinematics_modes, error)
-         if (allocated(error)) return
          call check_real_var(config, 'kinematics', 'yaw', k%yaw, error)
          if (allocated(error)) return
          call check_real_var(config, 'kinematics', 'v_forward', k%v_forward, error)
@@ -226,15 +208,16 @@ contains
          return
       end do
       where = origin(config, 'tangential%spin_model')
-      if (where /= 'default' .and. config%tangential%spin_model /= 'additive') then
+      if (where /= 'default' .and. config%tangential%spin_model /= spin_additive) then
          call fatal_error(error, where//": &tangential spin_model = '"// &
-            trim(config%tangential%spin_model)//"': &kinematics mode = 'on' needs "// &
+            choice_name(spin_model_choices, config%tangential%spin_model)// &
+            "': &kinematics mode = 'on' needs "// &
             "spin_model = 'additive' (the rigid slip carried to each strip, as the library's "// &
             "solve_kinematic); remove it or set 'additive'")
          return
       end if
-      config%tangential%spin_model = 'additive'
-      if (origin(config, 'load%mode') == 'default') config%load%mode = 'vertical'
+      config%tangential%spin_model = spin_additive
+      if (origin(config, 'load%mode') == 'default') config%load%mode = load_mode_vertical
    end subroutine resolve_kinematic_mode
 
    !> The key of a variable's range in shcontact_core_ranges (a sweep list takes the range of
@@ -299,17 +282,43 @@ contains
          range_text(r, name, str_int(nint(r%lo)), str_int(nint(r%hi))))
    end subroutine check_int_var
 
-   !> A choice among a fixed list.
+   !> A string choice (kept as text) among the registry's names: spelt as the registry does.
    subroutine check_choice(config, group, name, value, allowed, error)
       type(case_config_type), intent(in) :: config
-      character(len=*), intent(in) :: group, name, value
-      character(len=*), intent(in) :: allowed(:)
+      character(len=*), intent(in) :: group, name
+      !> The value; its registry spelling on return.
+      character(len=*), intent(inout) :: value
+      type(choice_type), intent(in) :: allowed(:)
       type(error_type), allocatable, intent(out) :: error
-      if (any(allowed == value)) return
+      integer :: code
+      code = choice_code(allowed, value)
+      if (code /= 0) then
+         value = choice_name(allowed, code)
+         return
+      end if
       call fatal_error(error, origin(config, group//'%'//name)//': &'//group//' '//name// &
-         " = '"//trim(value)//"' is not allowed; expected one of "// &
-         join_words(allowed, '', "'"))
+         " = '"//trim(value)//"' is not allowed; expected one of "//choice_list(allowed))
    end subroutine check_choice
+
+   !> Every choice variable holds a code of its choices (they are read as names, so only a
+   !> configuration set in code can fail this).
+   subroutine check_codes(config, error)
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      type(choice_type), allocatable :: choices(:)
+      integer :: i, code
+      do i = 1, size(variables)
+         if (variables(i)%kind /= k_choice) cycle
+         choices = variable_choices(variables(i)%group, variables(i)%name)
+         code = choice_value(config, variables(i)%group, variables(i)%name)
+         if (any(choices%code == code)) cycle
+         call fatal_error(error, origin(config, trim(variables(i)%group)//'%'// &
+            trim(variables(i)%name))//': &'//trim(variables(i)%group)//' '// &
+            trim(variables(i)%name)//' holds the code '//str_int(code)//'; expected that of '// &
+            choice_list(choices))
+         return
+      end do
+   end subroutine check_codes
 
    !> A built-in name is one we have; anything else is a file name (checked when it is read).
    subroutine check_profile_name(config, name, value, builtin, error, also)
@@ -354,9 +363,6 @@ contains
             'expected a file name')
          return
       end if
-      call check_choice(config, 'output', 'precision', config%output%precision, precisions, &
-         error)
-      if (allocated(error)) return
       call check_int_var(config, 'output', 'compression', config%output%compression, error)
       if (allocated(error)) return
       call check_int_var(config, 'output', 'checkpoint_cases', config%output%checkpoint_cases, &
@@ -366,7 +372,7 @@ contains
       do i = 1, max_fields
          if (len_trim(config%output%fields(i)) == 0) cycle
          n = n + 1
-         call check_choice(config, 'output', 'fields', config%output%fields(i), field_names, &
+         call check_choice(config, 'output', 'fields', config%output%fields(i), field_choices, &
             error)
          if (allocated(error)) return
       end do
@@ -381,8 +387,6 @@ contains
       character(len=:), allocatable :: where, name
       integer :: ia, i, n_list
 
-      call check_choice(config, 'sweep', 'mode', config%sweep%mode, sweep_modes, error)
-      if (allocated(error)) return
       n_list = -1
       do ia = 1, n_sweep_axes
          associate (axis => config%sweep%axes(ia))
@@ -393,13 +397,13 @@ contains
             axis%active = .false.
             if (axis%is_label) then
                axis%active = size(axis%labels) > 0
+               if (allocated(axis%codes)) deallocate (axis%codes)
+               allocate (axis%codes(axis%size()))
                do i = 1, axis%size()
-                  if (name == 'bound') then
-                     call check_choice(config, 'sweep', name, axis%labels(i), bounds, error)
-                  else
-                     call check_choice(config, 'sweep', name, axis%labels(i), spin_models, error)
-                  end if
+                  call check_choice(config, 'sweep', name, axis%labels(i), &
+                     variable_choices('sweep', name), error)
                   if (allocated(error)) return
+                  axis%codes(i) = choice_code(variable_choices('sweep', name), axis%labels(i))
                end do
             else
                if (.not. allocated(axis%given)) allocate (axis%given(0))
@@ -443,10 +447,11 @@ contains
             if (axis_stage(ia) == axis_load .and. .not. load_axis_matches(name, &
                 config%load%mode)) then
                call fatal_error(error, where//': &sweep '//name//' is given but &load mode = '// &
-                  "'"//trim(config%load%mode)//"'; sweep the quantity of the load mode")
+                  "'"//choice_name(load_mode_choices, config%load%mode)// &
+                  "'; sweep the quantity of the load mode")
                return
             end if
-            if (config%sweep%mode == 'list') then
+            if (config%sweep%mode == sweep_list) then
                if (n_list < 0) then
                   n_list = axis%size()
                else if (axis%size() /= n_list) then
@@ -465,14 +470,16 @@ contains
    end subroutine check_sweep
 
    pure logical function load_axis_matches(name, mode)
-      character(len=*), intent(in) :: name, mode
+      character(len=*), intent(in) :: name
+      !> The load mode's code.
+      integer, intent(in) :: mode
       select case (name)
       case ('normal_force')
-         load_axis_matches = mode == 'force'
+         load_axis_matches = mode == load_mode_force
       case ('approach')
-         load_axis_matches = mode == 'approach'
+         load_axis_matches = mode == load_mode_approach
       case default
-         load_axis_matches = mode == 'vertical'
+         load_axis_matches = mode == load_mode_vertical
       end select
    end function load_axis_matches
 

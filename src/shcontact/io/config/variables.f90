@@ -1,22 +1,31 @@
-!> The namelist variables: for every variable of every group its kind, units and help text
-!> (for messages, the resolved namelist and the documentation), the allowed values of the
-!> choice variables, and the lookups and phrases built on them.
+!> The registry of the namelist groups (issue 26): for every variable of every group its kind,
+!> units and help text (for messages, the resolved namelist and the documentation), the allowed
+!> values of the choice variables ([[variable_choices]], from the layers' option registries and
+!> shcontact_io_config_choices), and the lookups and phrases built on them. Ranges and defaults of
+!> the numbers are those of shcontact_core_ranges; test `registry` checks the configuration's
+!> defaults, the library's, doc/app.md's tables and the headers' option lists against them.
 module shcontact_io_config_variables
+   use shcontact_core_choices, only: choice_type
    use shcontact_io_config_limits, only: path_len, name_len
+   use shcontact_normal_option_registry, only: normal_methods => method_choices, &
+      reduction_choices
+   use shcontact_tangential_option_registry, only: tangential_methods => method_choices, &
+      bound_choices, spin_model_choices, spin_flexibility_choices, correction_choices
+   use shcontact_io_config_choices, only: side_choices, kinematics_mode_choices, &
+      load_mode_choices, curvature_choices, precision_choices, sweep_mode_choices, &
+      format_choices, mirror_choices, field_choices
    implicit none
    private
 
    public :: variable_info_type, variables, group_names, find_variable
-   public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list
+   public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list, k_choice
    public :: type_phrase, string_capacity, is_choice, suggestion, group_variable_list, join_words
-   public :: mirror_choices, formats, sides, load_modes, normal_methods, curvature_modes
-   public :: reductions, tangential_methods, bounds, spin_models, spin_flexibilities, corrections
-   public :: bound_choices, spin_model_choices, field_names, precisions, sweep_modes
-   public :: kinematics_modes
+   public :: variable_choices, header_option_keys
 
    !> Kinds of namelist variables.
+   !> k_choice: one of a registry's choices, held as its integer code after reading.
    integer, parameter :: k_real = 1, k_int = 2, k_string = 3, k_logical = 4, k_real_list = 5, &
-      k_string_list = 6
+      k_string_list = 6, k_choice = 7
 
    !> Where a variable lives and what it is (messages, printing, documentation).
    type :: variable_info_type
@@ -44,15 +53,15 @@ module shcontact_io_config_variables
       "wheel file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
       variable_info_type('profiles', 'wheel_mirror_z', k_string, '', &
       "wheel file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
-      variable_info_type('profiles', 'wheel_scale', k_real, '', &
+      variable_info_type('profiles', 'wheel_scale', k_real, '1', &
       'wheel file: factor from its units to mm (0 = as the file/format says)'), &
       variable_info_type('profiles', 'rail_mirror_y', k_string, '', &
       "rail file: 'auto' (as the file/format says), 'yes' (y -> -y) or 'no'"), &
       variable_info_type('profiles', 'rail_mirror_z', k_string, '', &
       "rail file: 'auto' (as the file/format says), 'yes' (z -> -z) or 'no'"), &
-      variable_info_type('profiles', 'rail_scale', k_real, '', &
+      variable_info_type('profiles', 'rail_scale', k_real, '1', &
       'rail file: factor from its units to mm (0 = as the file/format says)'), &
-      variable_info_type('track', 'side', k_string, '', "'right' or 'left' wheel and rail"), &
+      variable_info_type('track', 'side', k_choice, '', 'wheel and rail of this side'), &
       variable_info_type('track', 'gauge', k_real, 'mm', 'track gauge'), &
       variable_info_type('track', 'gauge_height', k_real, 'mm', &
       'gauge measured this far below the rail top'), &
@@ -69,8 +78,8 @@ module shcontact_io_config_variables
       variable_info_type('position', 't_y', k_real, 'mm', &
       "lateral wheelset shift (CONTACT's Y_WS), + moves the wheel to the field side"), &
       variable_info_type('position', 'roll', k_real, 'rad', 'wheelset roll angle'), &
-      variable_info_type('kinematics', 'mode', k_string, '', &
-      "'off' (prescribed &creepage) or 'on' (creepages from the wheelset motion)"), &
+      variable_info_type('kinematics', 'mode', k_choice, '', &
+      'prescribed creepages or creepages from the wheelset motion'), &
       variable_info_type('kinematics', 'yaw', k_real, 'rad', &
       "wheelset yaw angle (CONTACT's YAW_WS), + turns the front towards +y"), &
       variable_info_type('kinematics', 'v_forward', k_real, 'mm/s', &
@@ -87,8 +96,7 @@ module shcontact_io_config_variables
       'shear modulus G of wheel and rail'), &
       variable_info_type('material', 'poisson', k_real, '1', "Poisson's ratio nu"), &
       variable_info_type('material', 'friction', k_real, '1', 'coefficient of friction mu'), &
-      variable_info_type('load', 'mode', k_string, '', &
-      "'force' (normal force on the patch), 'approach', 'vertical' (wheel load)"), &
+      variable_info_type('load', 'mode', k_choice, '', 'how the normal problem is loaded'), &
       variable_info_type('load', 'normal_force', k_real, 'N', "normal force N (mode 'force')"), &
       variable_info_type('load', 'approach', k_real, 'mm', "rigid approach (mode 'approach')"), &
       variable_info_type('load', 'vertical_force', k_real, 'N', &
@@ -96,40 +104,37 @@ module shcontact_io_config_variables
       variable_info_type('creepage', 'nu_x', k_real, '1', 'longitudinal creepage'), &
       variable_info_type('creepage', 'nu_y', k_real, '1', 'lateral creepage'), &
       variable_info_type('creepage', 'phi', k_real, 'rad/mm', 'spin creepage'), &
-      variable_info_type('normal', 'method', k_string, '', "'semi-hertz' or 'hertz'"), &
-      variable_info_type('normal', 'reduction', k_string, '', &
-      "'local-hertz', 'constant' or 'coupled'"), &
+      variable_info_type('normal', 'method', k_choice, '', 'normal contact model'), &
+      variable_info_type('normal', 'reduction', k_choice, '', &
+      'penetration reduction of the semi-Hertzian strips'), &
       variable_info_type('normal', 'epsilon', k_real, '1', &
       "penetration reduction of reduction = 'constant'"), &
       variable_info_type('normal', 'n_strips', k_int, '', 'number of strips per patch'), &
       variable_info_type('normal', 'b_min', k_real, '1/mm', &
       'smallest lateral relative curvature B (concave gap curvature is clamped to it)'), &
-      variable_info_type('normal', 'longitudinal_curvature', k_string, '', &
-      "A(y) = cos(gamma)/(2 r_w): 'local' gamma(y) or 'reference' gamma0"), &
-      variable_info_type('tangential', 'method', k_string, '', "'fastsim-sh' or 'fastsim'"), &
-      variable_info_type('tangential', 'bound', k_string, '', &
-      "'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip', 'clipped'"), &
-      variable_info_type('tangential', 'spin_model', k_string, '', &
-      "'additive', 'uniform', 'scaled', 'geometric'"), &
-      variable_info_type('tangential', 'spin_flexibility', k_string, '', &
-      "flexibility of the spin part of the longitudinal slip: 'longitudinal' (L_x, seed eq 21) "// &
-      "or 'spin' (L_phi, Kalker's FASTSIM)"), &
-      variable_info_type('tangential', 'correction', k_string, '', &
-      "'exact-ellipse' (add the exact theory's defect of the equivalent Hertz ellipse to the "// &
-      "forces; default model only) or 'none' (the march's forces)"), &
+      variable_info_type('normal', 'longitudinal_curvature', k_choice, '', &
+      'contact angle of A(y) = cos(gamma)/(2 r_w)'), &
+      variable_info_type('tangential', 'method', k_choice, '', 'tangential contact model'), &
+      variable_info_type('tangential', 'bound', k_choice, '', &
+      'traction bound (doc/theory.md decision 9)'), &
+      variable_info_type('tangential', 'spin_model', k_choice, '', &
+      'local spin of the strips (doc/theory.md §6.2)'), &
+      variable_info_type('tangential', 'spin_flexibility', k_choice, '', &
+      'flexibility of the spin part of the longitudinal slip'), &
+      variable_info_type('tangential', 'correction', k_choice, '', &
+      'correction of the tangential forces (doc/tangential.md)'), &
       variable_info_type('tangential', 'n_elements', k_int, '', &
       'number of elements per strip (n_x)'), &
       variable_info_type('output', 'file', k_string, '', 'HDF5 output file'), &
       variable_info_type('output', 'fields', k_string_list, '', &
       "'auto', 'all', 'none' or from 'geometry', 'strips', 'pressure', 'traction', 'state', 'slip'"), &
-      variable_info_type('output', 'precision', k_string, '', &
-      "'double' or 'single' (per-element fields)"), &
+      variable_info_type('output', 'precision', k_choice, '', &
+      'storage of the per-element fields'), &
       variable_info_type('output', 'compression', k_int, '', &
       'deflate level of the fields, 0 (off) to 9'), &
       variable_info_type('output', 'checkpoint_cases', k_int, '', &
       'cases per checkpoint block of a sweep (0 = automatic)'), &
-      variable_info_type('sweep', 'mode', k_string, '', &
-      "'grid' (every combination) or 'list' (i-th value of every list)"), &
+      variable_info_type('sweep', 'mode', k_choice, '', 'how the lists make cases'), &
       variable_info_type('sweep', 't_y', k_real_list, 'mm', 'values of position%t_y'), &
       variable_info_type('sweep', 't_y_points', k_int, '', &
       't_y = first, last with this many points (0: t_y is a list)'), &
@@ -191,39 +196,26 @@ module shcontact_io_config_variables
       'phi = first, last with this many points') &
       ]
 
+   !> The options listed in the headers' option lists (include/shcontact.h, include/shcontact.fi):
+   !> every choice and every number with a range that the option setters of the C and Fortran
+   !> 77 interfaces take ("group%variable" as in a case file): all of the case file's but the
+   !> profile files', the side's (both given at creation), the output's and the sweep's.
+   character(len=*), parameter :: header_option_keys(*) = [character(len=30) :: &
+      'profiles%wheel_smoothing', 'profiles%rail_smoothing', 'track%gauge', &
+      'track%gauge_height', 'track%inclination', 'track%flange_back_distance', &
+      'track%flange_back_position', 'track%nominal_radius', 'position%t_y', 'position%roll', &
+      'kinematics%mode', 'kinematics%yaw', 'kinematics%v_forward', 'kinematics%v_lateral', &
+      'kinematics%v_vertical', 'kinematics%roll_rate', 'kinematics%yaw_rate', &
+      'kinematics%pitch_rate', 'material%shear_modulus', 'material%poisson', 'material%friction', &
+      'load%mode', 'load%normal_force', 'load%approach', 'load%vertical_force', 'creepage%nu_x', &
+      'creepage%nu_y', 'creepage%phi', 'normal%method', 'normal%reduction', 'normal%epsilon', &
+      'normal%n_strips', 'normal%b_min', 'normal%longitudinal_curvature', 'tangential%method', &
+      'tangential%bound', 'tangential%spin_model', 'tangential%spin_flexibility', &
+      'tangential%correction', 'tangential%n_elements']
+
    character(len=*), parameter :: group_names(*) = [character(len=12) :: 'profiles', 'track', &
       'position', 'kinematics', 'material', 'load', 'creepage', 'normal', 'tangential', &
       'output', 'sweep']
-
-   !> Allowed values of the choice variables.
-   character(len=*), parameter :: mirror_choices(*) = [character(len=4) :: 'auto', 'yes', 'no']
-   character(len=*), parameter :: formats(*) = [character(len=8) :: 'auto', 'plain', 'simpack', &
-      'miniprof']
-   character(len=*), parameter :: sides(*) = [character(len=5) :: 'right', 'left']
-   character(len=*), parameter :: load_modes(*) = [character(len=8) :: 'force', 'approach', &
-      'vertical']
-   character(len=*), parameter :: normal_methods(*) = [character(len=10) :: 'semi-hertz', 'hertz']
-   character(len=*), parameter :: curvature_modes(*) = [character(len=9) :: 'local', &
-      'reference']
-   character(len=*), parameter :: reductions(*) = [character(len=11) :: 'local-hertz', 'constant', &
-      'coupled']
-   character(len=*), parameter :: tangential_methods(*) = [character(len=10) :: 'fastsim-sh', &
-      'fastsim']
-   !> The traction bounds and spin models (doc/theory.md decisions 9, 10).
-   character(len=*), parameter :: bounds(*) = [character(len=13) :: 'ellipsoidal', 'parabolic', &
-      'weighted', 'weighted-slip', 'clipped']
-   character(len=*), parameter :: spin_models(*) = [character(len=9) :: 'additive', 'uniform', &
-      'scaled', 'geometric']
-   character(len=*), parameter :: spin_flexibilities(*) = [character(len=12) :: &
-      'longitudinal', 'spin']
-   !> The corrections of the tangential forces (doc/tangential.md).
-   character(len=*), parameter :: corrections(*) = [character(len=13) :: 'exact-ellipse', 'none']
-   character(len=*), parameter :: bound_choices(*) = bounds, spin_model_choices(*) = spin_models
-   character(len=*), parameter :: field_names(*) = [character(len=8) :: 'auto', 'all', 'none', &
-      'geometry', 'strips', 'pressure', 'traction', 'state', 'slip']
-   character(len=*), parameter :: precisions(*) = [character(len=6) :: 'double', 'single']
-   character(len=*), parameter :: sweep_modes(*) = [character(len=4) :: 'grid', 'list']
-   character(len=*), parameter :: kinematics_modes(*) = [character(len=3) :: 'off', 'on']
 
 contains
 
@@ -240,6 +232,52 @@ contains
       end do
    end function find_variable
 
+   !> The allowed values of a choice variable (`k_choice`, or a string or string list with a
+   !> fixed set of values); none for any other variable. A `&sweep` list of choices takes the
+   !> choices of the variable it sweeps.
+   pure function variable_choices(group, name) result(choices)
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      type(choice_type), allocatable :: choices(:)
+      select case (trim(group)//'%'//trim(name))
+      case ('profiles%wheel_format', 'profiles%rail_format')
+         choices = format_choices
+      case ('profiles%wheel_mirror_y', 'profiles%wheel_mirror_z', 'profiles%rail_mirror_y', &
+            'profiles%rail_mirror_z')
+         choices = mirror_choices
+      case ('track%side')
+         choices = side_choices
+      case ('kinematics%mode')
+         choices = kinematics_mode_choices
+      case ('load%mode')
+         choices = load_mode_choices
+      case ('normal%method')
+         choices = normal_methods
+      case ('normal%reduction')
+         choices = reduction_choices
+      case ('normal%longitudinal_curvature')
+         choices = curvature_choices
+      case ('tangential%method')
+         choices = tangential_methods
+      case ('tangential%bound', 'sweep%bound')
+         choices = bound_choices
+      case ('tangential%spin_model', 'sweep%spin_model')
+         choices = spin_model_choices
+      case ('tangential%spin_flexibility')
+         choices = spin_flexibility_choices
+      case ('tangential%correction')
+         choices = correction_choices
+      case ('output%fields')
+         choices = field_choices
+      case ('output%precision')
+         choices = precision_choices
+      case ('sweep%mode')
+         choices = sweep_mode_choices
+      case default
+         allocate (choices(0))
+      end select
+   end function variable_choices
+
    !> Words that describe the expected type.
    pure function type_phrase(v) result(p)
       type(variable_info_type), intent(in) :: v
@@ -252,6 +290,8 @@ contains
       case (k_logical)
          p = 'a logical (.true. or .false.)'
       case (k_string)
+         p = 'a quoted string'
+      case (k_choice)
          p = 'a quoted string'
       case (k_real_list)
          p = 'a list of real numbers'
@@ -271,8 +311,8 @@ contains
    !> values are case-insensitive and stored in lower case.
    pure logical function is_choice(v)
       type(variable_info_type), intent(in) :: v
-      is_choice = (v%kind == k_string .or. v%kind == k_string_list) .and. &
-         string_capacity(v) == name_len
+      is_choice = v%kind == k_choice .or. ((v%kind == k_string .or. v%kind == k_string_list) &
+         .and. string_capacity(v) == name_len)
    end function is_choice
 
    !> " (it belongs to &position)" when other groups have a variable of that name, else

@@ -6,12 +6,15 @@ module shcontact_io_config_writer
    use shcontact_io_text, only: format_real, quote_string
    use shcontact_io_config_limits, only: max_fields
    use shcontact_io_config_sweep, only: sweep_axis_type, axis_index
-   use shcontact_io_config_types, only: case_config_type
-   use shcontact_io_config_variables, only: variable_info_type, variables
+   use shcontact_core_choices, only: choice_type, choice_name, choice_list
+   use shcontact_core_ranges, only: ranges, find_range, range_text
+   use shcontact_io_config_types, only: case_config_type, choice_value
+   use shcontact_io_config_variables, only: variable_info_type, variables, variable_choices, &
+      k_choice, find_variable
    implicit none
    private
 
-   public :: config_namelist
+   public :: config_namelist, variable_value_text, option_list
 
 contains
 
@@ -53,6 +56,40 @@ contains
             previous = v%group
          end if
          name = trim(v%name)
+         value = variable_value_text(config, v)
+         if (len(value) == 0) cycle
+         text = text//'  '//name//' = '//value//'  ! '
+         if (len_trim(v%units) > 0) then
+            if (v%units == '1') then
+               text = text//'[-] '
+            else
+               text = text//'['//trim(v%units)//'] '
+            end if
+         end if
+         text = text//trim(v%help)
+         if (v%kind == k_choice) text = text//': '//choice_list(variable_choices(v%group, v%name))
+         text = text//nl
+      end do
+      text = text//'/'//nl
+   end function config_namelist
+
+   !> The value of variable `v` in `config` as namelist text ('' for a sweep list or count
+   !> that is not given).
+   function variable_value_text(config, v) result(value)
+      !> A configuration.
+      type(case_config_type), intent(in) :: config
+      !> The variable (an entry of the variable table).
+      type(variable_info_type), intent(in) :: v
+      character(len=:), allocatable :: value
+      character(len=:), allocatable :: name
+      integer :: ia, n
+
+      value = ''
+      name = trim(v%name)
+      if (v%kind == k_choice) then
+         value = quote_string(choice_name(variable_choices(v%group, v%name), &
+            choice_value(config, v%group, v%name)))
+      else
          select case (trim(v%group))
          case ('profiles')
             select case (name)
@@ -71,7 +108,6 @@ contains
             end select
          case ('track')
             select case (name)
-            case ('side'); value = quote_string(config%track%side)
             case ('gauge'); value = format_real(config%track%gauge)
             case ('gauge_height'); value = format_real(config%track%gauge_height)
             case ('inclination'); value = format_real(config%track%inclination)
@@ -89,7 +125,6 @@ contains
             end select
          case ('kinematics')
             select case (name)
-            case ('mode'); value = quote_string(config%kinematics%mode)
             case ('yaw'); value = format_real(config%kinematics%yaw)
             case ('v_forward'); value = format_real(config%kinematics%v_forward)
             case ('v_lateral'); value = format_real(config%kinematics%v_lateral)
@@ -106,7 +141,6 @@ contains
             end select
          case ('load')
             select case (name)
-            case ('mode'); value = quote_string(config%load%mode)
             case ('normal_force'); value = format_real(config%load%normal_force)
             case ('approach'); value = format_real(config%load%approach)
             case ('vertical_force'); value = format_real(config%load%vertical_force)
@@ -119,22 +153,12 @@ contains
             end select
          case ('normal')
             select case (name)
-            case ('method'); value = quote_string(config%normal%method)
-            case ('reduction'); value = quote_string(config%normal%reduction)
             case ('epsilon'); value = format_real(config%normal%epsilon)
             case ('n_strips'); value = str_int(config%normal%n_strips)
             case ('b_min'); value = format_real(config%normal%b_min)
-            case ('longitudinal_curvature')
-               value = quote_string(config%normal%longitudinal_curvature)
             end select
          case ('tangential')
             select case (name)
-            case ('method'); value = quote_string(config%tangential%method)
-            case ('bound'); value = quote_string(config%tangential%bound)
-            case ('spin_model'); value = quote_string(config%tangential%spin_model)
-            case ('spin_flexibility')
-               value = quote_string(config%tangential%spin_flexibility)
-            case ('correction'); value = quote_string(config%tangential%correction)
             case ('n_elements'); value = str_int(config%tangential%n_elements)
             end select
          case ('output')
@@ -147,36 +171,94 @@ contains
                   if (len(value) > 0) value = value//', '
                   value = value//quote_string(config%output%fields(n))
                end do
-            case ('precision'); value = quote_string(config%output%precision)
             case ('compression'); value = str_int(config%output%compression)
             case ('checkpoint_cases'); value = str_int(config%output%checkpoint_cases)
             end select
          case ('sweep')
-            if (name == 'mode') then
-               value = quote_string(config%sweep%mode)
-            else if (index(name, '_points') > 0) then
+            if (index(name, '_points') > 0) then
                ia = axis_index(name(1:index(name, '_points') - 1))
-               if (.not. config%sweep%axes(ia)%active) cycle
-               if (config%sweep%axes(ia)%points == 0) cycle
+               if (.not. config%sweep%axes(ia)%active) return
+               if (config%sweep%axes(ia)%points == 0) return
                value = str_int(config%sweep%axes(ia)%points)
             else
                ia = axis_index(name)
-               if (.not. config%sweep%axes(ia)%active) cycle
+               if (.not. config%sweep%axes(ia)%active) return
                value = axis_text(config%sweep%axes(ia))
             end if
-         end select
-         text = text//'  '//name//' = '//value//'  ! '
-         if (len_trim(v%units) > 0) then
-            if (v%units == '1') then
-               text = text//'[-] '
-            else
-               text = text//'['//trim(v%units)//'] '
-            end if
+      end select
+      end if
+   end function variable_value_text
+
+   !> The option list of the headers (the comment blocks of include/shcontact.h and
+   !> include/shcontact.fi, test `registry`): for each key `group%name`, its default (its value
+   !> in `config`; the pitch rate's is pure rolling) and units, then its choices or its range, on
+   !> one line when it fits in `width` columns, else wrapped; every line starts with `prefix`.
+   function option_list(config, keys, prefix, width) result(text)
+      !> The configuration whose values are shown as defaults.
+      type(case_config_type), intent(in) :: config
+      !> The keys, `group%name`, of variables of the variable table.
+      character(len=*), intent(in) :: keys(:)
+      !> Start of every line (a comment marker).
+      character(len=*), intent(in) :: prefix
+      !> Longest line.
+      integer, intent(in) :: width
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: nl = new_line('a')
+      type(choice_type), allocatable :: choices(:)
+      character(len=:), allocatable :: key, group, name, line, units, word
+      integer :: k, iv, ir, i
+
+      text = ''
+      do k = 1, size(keys)
+         key = trim(keys(k))
+         group = key(1:index(key, '%') - 1)
+         name = key(index(key, '%') + 1:)
+         iv = find_variable(group, name)
+         if (iv == 0) cycle
+         if (key == 'kinematics%pitch_rate') then
+            line = key//' = pure rolling'
+         else
+            line = key//' = '//variable_value_text(config, variables(iv))
          end if
-         text = text//trim(v%help)//nl
+         choices = variable_choices(group, name)
+         ir = find_range(key)
+         ! The units: those of the range's text, '[-]' for a dimensionless number.
+         units = trim(variables(iv)%units)
+         if (units == '1') line = line//' [-]'
+         if (ir == 0 .and. len(units) > 0 .and. units /= '1') line = line//' ['//units//']'
+         line = line//':'
+         if (size(choices) > 0) then
+            do i = 1, size(choices)
+               word = " '"//trim(choices(i)%name)//"'"
+               if (i < size(choices)) word = word//','
+               call add_word(word)
+            end do
+         else if (ir > 0) then
+            if (ranges(ir)%whole) then
+               word = ' '//range_text(ranges(ir), name, str_int(nint(ranges(ir)%lo)), &
+                  str_int(nint(ranges(ir)%hi)))
+            else
+               word = ' '//range_text(ranges(ir), name, format_real(ranges(ir)%lo), &
+                  format_real(ranges(ir)%hi))
+            end if
+            call add_word(word)
+         end if
+         text = text//prefix//line//nl
       end do
-      text = text//'/'//nl
-   end function config_namelist
+
+   contains
+
+      !> Append to the line, or start a continuation line when it would be too long.
+      subroutine add_word(w)
+         character(len=*), intent(in) :: w
+         if (len(prefix) + len(line) + len(w) > width) then
+            text = text//prefix//line//nl
+            line = '   '
+         end if
+         line = line//w
+      end subroutine add_word
+
+   end function option_list
 
    pure function format_logical(flag) result(text)
       logical, intent(in) :: flag

@@ -1,0 +1,82 @@
+!> The registry of the case file's own choice options (issue 26): those that are not options of
+!> a solver layer (whose registries are shcontact_normal_option_registry and
+!> shcontact_tangential_option_registry): the wheel side, the kinematic and load modes, the
+!> longitudinal curvature, the output precision and fields, the sweep mode, and the profile
+!> files' formats and mirroring. Each choice has its name, its integer code (the value the
+!> configuration holds after reading, [[shcontact_io_config_types]]) and a description.
+module shcontact_io_config_choices
+   use shcontact_core_choices, only: choice_type
+   use shcontact_geometry_track, only: side_right, side_left
+   implicit none
+   private
+
+   public :: side_choices, kinematics_mode_choices, load_mode_choices, curvature_choices
+   public :: precision_choices, sweep_mode_choices, format_choices, mirror_choices, field_choices
+   public :: side_right, side_left
+   public :: kinematics_off, kinematics_on
+   public :: load_mode_force, load_mode_vertical, load_mode_approach
+   public :: curvature_local, curvature_reference
+   public :: precision_double, precision_single
+   public :: sweep_grid, sweep_list
+
+   !> `&kinematics mode`: prescribed creepages, or creepages from the wheelset motion.
+   integer, parameter :: kinematics_off = 1, kinematics_on = 2
+   !> `&load mode`; the codes are those of the library's `contact_load_type` (`load_normal_force`,
+   !> `load_vertical_force`, `load_approach` of shcontact_api_solver; test `registry`).
+   integer, parameter :: load_mode_force = 1, load_mode_vertical = 2, load_mode_approach = 3
+   !> `&normal longitudinal_curvature`: γ(y) or γ₀ in A(y).
+   integer, parameter :: curvature_local = 1, curvature_reference = 2
+   !> `&output precision` of the per-element fields.
+   integer, parameter :: precision_double = 1, precision_single = 2
+   !> `&sweep mode`.
+   integer, parameter :: sweep_grid = 1, sweep_list = 2
+
+   !> `&track side` (codes: the side factor of shcontact_geometry_track).
+   type(choice_type), parameter :: side_choices(*) = [ &
+      choice_type('right', side_right, 'the right wheel on the right rail'), &
+      choice_type('left', side_left, 'the left wheel on the left rail (mirrored)')]
+   !> `&kinematics mode`.
+   type(choice_type), parameter :: kinematics_mode_choices(*) = [ &
+      choice_type('off', kinematics_off, 'prescribed creepages (&creepage)'), &
+      choice_type('on', kinematics_on, 'creepages from the wheelset motion')]
+   !> `&load mode`.
+   type(choice_type), parameter :: load_mode_choices(*) = [ &
+      choice_type('force', load_mode_force, 'normal force on the first (deepest) patch'), &
+      choice_type('approach', load_mode_approach, 'rigid approach of that patch'), &
+      choice_type('vertical', load_mode_vertical, 'vertical wheel load shared by all patches')]
+   !> `&normal longitudinal_curvature`.
+   type(choice_type), parameter :: curvature_choices(*) = [ &
+      choice_type('local', curvature_local, 'A(y) = cos(gamma(y))/(2 r_w)'), &
+      choice_type('reference', curvature_reference, 'A(y) = cos(gamma0)/(2 r_w)')]
+   !> `&output precision`.
+   type(choice_type), parameter :: precision_choices(*) = [ &
+      choice_type('double', precision_double, '64-bit per-element fields'), &
+      choice_type('single', precision_single, '32-bit per-element fields')]
+   !> `&sweep mode`.
+   type(choice_type), parameter :: sweep_mode_choices(*) = [ &
+      choice_type('grid', sweep_grid, 'every combination of the lists'), &
+      choice_type('list', sweep_list, 'case i takes the i-th value of every list')]
+   !> `&profiles wheel_format, rail_format` (kept as text: the profile reader's format names).
+   type(choice_type), parameter :: format_choices(*) = [ &
+      choice_type('auto', 1, 'by extension: .prw/.prr SIMPACK, .whl/.ban MiniProf, else plain'), &
+      choice_type('plain', 2, 'two columns y z'), &
+      choice_type('simpack', 3, 'SIMPACK .prw/.prr'), &
+      choice_type('miniprof', 4, 'MiniProf .whl/.ban')]
+   !> `&profiles *_mirror_y, *_mirror_z` (kept as text).
+   type(choice_type), parameter :: mirror_choices(*) = [ &
+      choice_type('auto', 1, 'as the file or its format says'), &
+      choice_type('yes', 2, 'mirror'), &
+      choice_type('no', 3, 'do not mirror')]
+   !> `&output fields` (a list, kept as text).
+   type(choice_type), parameter :: field_choices(*) = [ &
+      choice_type('auto', 1, 'all for a single case, none in a sweep'), &
+      choice_type('all', 2, 'every field'), &
+      choice_type('none', 3, 'no field'), &
+      choice_type('geometry', 4, 'the contact geometry'), &
+      choice_type('strips', 5, 'the strip table'), &
+      choice_type('pressure', 6, 'the pressure'), &
+      choice_type('traction', 7, 'the tractions'), &
+      choice_type('state', 8, 'the stick/slip state'), &
+      choice_type('slip', 9, 'the slip')]
+
+end module shcontact_io_config_choices

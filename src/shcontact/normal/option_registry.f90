@@ -1,0 +1,54 @@
+!> The registry of the normal solver's option choices (issue 26): for `&normal method` and
+!> `&normal reduction` the allowed values with their integer codes and descriptions, and the
+!> defaults. [[shcontact_normal_options]], the case file's variable table
+!> (shcontact_io_config_variables), the documentation's tables and the headers' option lists
+!> are built from or checked against this one list (test `registry`).
+module shcontact_normal_option_registry
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_choices, only: choice_type
+   implicit none
+   private
+
+   public :: method_semi_hertz, method_hertz, reduction_local_hertz, reduction_constant, &
+      reduction_coupled
+   public :: method_choices, reduction_choices
+   public :: default_method, default_reduction, default_epsilon, default_n_strips
+
+   !> `method = 'semi-hertz'`: the strip algorithm of doc/theory.md §4.3 (default).
+   integer, parameter :: method_semi_hertz = 1
+   !> `method = 'hertz'`: one Hertz ellipse from the curvatures at the reference point.
+   integer, parameter :: method_hertz = 2
+   !> `reduction = 'local-hertz'`: ε_a, ε_b from the local Hertz problem at A(y)/B(y) (the
+   !> default before issue 13).
+   integer, parameter :: reduction_local_hertz = 1
+   !> `reduction = 'constant'`: ε_a = ε_b = `epsilon` everywhere (Kik–Piotrowski virtual
+   !> penetration ε·δ).
+   integer, parameter :: reduction_constant = 2
+   !> `reduction = 'coupled'` (default since issue 13): the local-Hertz strips, then their load
+   !> redistributed through the half-space coupling between strips (shcontact_normal_coupling;
+   !> about 10 µs per solve; doc/validation.md §6.4).
+   integer, parameter :: reduction_coupled = 3
+
+   !> `&normal method`.
+   type(choice_type), parameter :: method_choices(*) = [ &
+      choice_type('semi-hertz', method_semi_hertz, 'strips of the semi-Hertzian patch '// &
+      '(doc/theory.md §4.3)'), &
+      choice_type('hertz', method_hertz, 'one Hertz ellipse at the reference point')]
+   !> `&normal reduction` (semi-Hertz method only).
+   type(choice_type), parameter :: reduction_choices(*) = [ &
+      choice_type('coupled', reduction_coupled, 'local-Hertz strips, their load '// &
+      'redistributed through the half-space (doc/validation.md §6.4)'), &
+      choice_type('local-hertz', reduction_local_hertz, 'independent strips, each its local '// &
+      'Hertz problem (the default before issue 13)'), &
+      choice_type('constant', reduction_constant, "penetration reduced by the constant "// &
+      "'epsilon' (Kik-Piotrowski)")]
+
+   !> The defaults (decisions 5, 6, 11); the ranges of `epsilon` and `n_strips` are those of
+   !> shcontact_core_ranges (`normal%epsilon`, `normal%n_strips`), whose defaults equal these
+   !> (test `registry`).
+   integer, parameter :: default_method = method_semi_hertz
+   integer, parameter :: default_reduction = reduction_coupled
+   real(wp), parameter :: default_epsilon = 0.55_wp
+   integer, parameter :: default_n_strips = 100
+
+end module shcontact_normal_option_registry

@@ -1,0 +1,305 @@
+!> The stages of a kinematic call: the contact of a wheelset state ([[kinematic_contact]]), with
+!> the creepages of the wheelset motion at each loaded reference point ([[kinematic_tangential]])
+!> and, for a vertical wheel load, the vertical balance ([[vertical_balance]]).
+module shcontact_pipeline_balance
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, fatal_error, stat_no_contact, stat_numerical
+   use shcontact_core_strings, only: str_real
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_rigid_slip, only: contact_point_type, rigid_creepages
+   use shcontact_pipeline_load, only: contact_load_type, load_vertical_force, &
+      load_vertical_position
+   use shcontact_pipeline_cache, only: contact_cache_type, update_geometry, update_normal, &
+      solve_patch, reference_axle, same
+   implicit none
+   private
+
+   public :: kinematic_contact, kinematic_tangential
+
+   !> The total vertical force of a kinematic call matches the load to this relative tolerance
+   !> (0.65 N of 64.7 kN), within at most max_vertical_iterations solutions.
+   real(wp), parameter :: vertical_rtol = 1.0e-5_wp
+   integer, parameter :: max_vertical_iterations = 30
+   !> Where the vertical force of a kinematic call jumps across the load as a function of the
+   !> vertical approach (a narrow discontinuity of the coupled normal reduction; the bracket
+   !> closes to round-off on it), the side nearer the load is accepted if it is within this
+   !> relative tolerance (doc/kinematics.md); a larger jump is an error (stat_numerical).
+   real(wp), parameter :: jump_rtol = 1.0e-3_wp
+
+contains
+
+   !> Geometry, normal and tangential problems of a kinematic call. With `short_tables` the strip
+   !> tables end at kinematic_table_gap (a search of its own, cached apart from the full one).
+   !> A vertical load is balanced by [[vertical_balance]]; `climbs` is set with its error when
+   !> no equilibrium exists within the tables (the solver then holds the best state found).
+   subroutine kinematic_contact(self, state, local, load, options, short_tables, climbs, error)
+      type(contact_cache_type), intent(inout) :: self
+      !> The state in the track frame and in the wheel's side frame.
+      type(wheelset_state_type), intent(in) :: state, local
+      type(contact_load_type), intent(in) :: load
+      type(tangential_options_type), intent(in) :: options
+      logical, intent(in) :: short_tables
+      logical, intent(out) :: climbs
+      type(error_type), allocatable, intent(out) :: error
+
+      climbs = .false.
+      call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
+      if (allocated(error)) return
+      if (load%mode == load_vertical_force) then
+         call vertical_balance(self, local, load%value, options, climbs, error)
+         return
+      end if
+      call update_normal(self, load, error)
+      if (allocated(error)) return
+      call kinematic_tangential(self, local, options, error)
+   end subroutine kinematic_contact
+
+   !> The vertical balance of a kinematic call: the rigid vertical approach Δz of the wheel at
+   !> which the total vertical force, tangential forces included (as CONTACT's FZ), carries the
+   !> load: C(Δz) = −Σ F_z,track = F_z to vertical_rtol.
+   !>
+   !> Every state is a function of Δz alone (normal problem at the vertical position Δz, then the
+   !> tangential problem with the creepages at the loaded reference points), so the root is
+   !> bracketed in Δz, not in the load: at the first touch Δz₀ nothing is carried (C = 0), and
+   !> an upper end is found by growing Δz monotonically. On a flange (γ ≈ −70°) a patch carries
+   !> only N(cos γ − μ sin γ) vertically, which nearly vanishes, so the load is a steep function
+   !> of C and a load iteration diverges; in Δz the function stays well behaved. The residual is
+   !> r = s(C) − s(F_z), s(c) = sign(|c|^{2/3}, c), nearly linear in Δz for a Hertzian
+   !> contact; the root finder is the Illinois regula falsi on the bracket. The first two points
+   !> come from the geometry: the normal problem alone carrying F_z, then carrying F_z²/C (the
+   !> tangential share taken proportional to the load). No state of an earlier call is used.
+   !>
+   !> Where C(Δz) jumps across F_z (a narrow discontinuity of the `coupled` normal reduction) the
+   !> bracket closes to round-off on the jump; the side nearer F_z is then accepted if it is
+   !> within jump_rtol, otherwise the call fails with stat_numerical.
+   !>
+   !> If C stays below F_z up to the end of the strip tables (the contact cannot carry the load:
+   !> friction on the flange lifts the wheel), `climbs` is set, the error has stat_no_contact
+   !> and the reason, and the solver holds the state with the largest C found.
+   subroutine vertical_balance(self, local, f_z, options, climbs, error)
+      type(contact_cache_type), intent(inout) :: self
+      !> The state in the wheel's side frame.
+      type(wheelset_state_type), intent(in) :: local
+      !> Vertical wheel load (N, > 0).
+      real(wp), intent(in) :: f_z
+      type(tangential_options_type), intent(in) :: options
+      logical, intent(out) :: climbs
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: x_lo, r_lo, x_hi, r_hi, x, r, c, q, x_cap, x_best, c_best, step, tol, touch, &
+         c_at_lo, c_at_hi
+      integer :: it, side
+      logical :: bracketed
+
+      climbs = .false.
+      tol = vertical_rtol*f_z
+      ! 1. The normal problem alone carrying F_z (the start from the geometry).
+      call update_normal(self, contact_load_type(load_vertical_force, f_z), error)
+      if (allocated(error)) return
+      call touch_and_reach(self, touch, x_cap)
+      x_lo = touch
+      c_at_lo = 0.0_wp
+      c_at_hi = huge(1.0_wp)
+      r_lo = -signed_23(f_z)
+      x_best = x_lo
+      c_best = -huge(1.0_wp)
+      bracketed = .false.
+      x_hi = x_cap
+      r_hi = 0.0_wp
+      x = self%dz
+      call tangential_at(x, c, r, error)
+      if (allocated(error)) return
+      if (abs(c - f_z) <= tol) return
+      call keep(x, c, r)
+      ! 2. The normal problem alone carrying F_z²/C (tangential share proportional to the load).
+      if (c > 0.0_wp) then
+         q = f_z*(f_z/c)
+         call update_normal(self, contact_load_type(load_vertical_force, q), error)
+         if (allocated(error)) then
+            if (error%stat /= stat_no_contact) return
+            deallocate (error)
+         else
+            x = self%dz
+            if (x > x_lo .and. x < x_hi) then
+               call tangential_at(x, c, r, error)
+               if (allocated(error)) return
+               if (abs(c - f_z) <= tol) return
+               call keep(x, c, r)
+            end if
+         end if
+      end if
+      ! 3. Grow Δz monotonically until C exceeds F_z (or the tables end).
+      step = max(0.25_wp*(x_lo - touch), 1.0e-3_wp)
+      do it = 1, max_vertical_iterations
+         if (bracketed .or. .not. (x_lo < x_cap)) exit
+         x = min(x_lo + step, x_cap)
+         call tangential_at(x, c, r, error)
+         if (allocated(error)) then
+            if (error%stat /= stat_no_contact) return
+            ! Beyond what the tables carry: the reach ends before x.
+            deallocate (error)
+            x_cap = x_lo + 0.5_wp*(x - x_lo)
+            step = x_cap - x_lo
+            if (step <= 1.0e-9_wp*max(x_cap, 1.0_wp)) exit
+            cycle
+         end if
+         if (abs(c - f_z) <= tol) return
+         call keep(x, c, r)
+         step = 2.0_wp*step
+      end do
+      if (.not. bracketed) then
+         ! No Δz within the tables carries F_z: leave the best state found.
+         call tangential_at(x_best, c, r, error)
+         if (allocated(error)) return
+         climbs = .true.
+         call fatal_error(error, 'vertical load '//str_real(f_z)//' N: no equilibrium, the '// &
+            'wheel climbs: the contact carries at most '//str_real(c_best)//' N vertically '// &
+            '(at the vertical approach '//str_real(x_best)//' mm, the end of the strip '// &
+            'tables at '//str_real(x_cap)//' mm); the tangential forces on the flange lift '// &
+            'the wheel', stat_no_contact)
+         return
+      end if
+      ! 4. Illinois regula falsi on the bracket [x_lo, x_hi].
+      side = 0
+      do it = 1, 4*max_vertical_iterations
+         x = x_hi - r_hi*(x_hi - x_lo)/(r_hi - r_lo)
+         if (.not. (x > x_lo .and. x < x_hi)) x = 0.5_wp*(x_lo + x_hi)
+         call tangential_at(x, c, r, error)
+         if (allocated(error)) return
+         if (abs(c - f_z) <= tol) return
+         if (r > 0.0_wp) then
+            x_hi = x
+            r_hi = r
+            c_at_hi = c
+            if (side == 1) r_lo = 0.5_wp*r_lo
+            side = 1
+         else
+            x_lo = x
+            r_lo = r
+            c_at_lo = c
+            if (side == -1) r_hi = 0.5_wp*r_hi
+            side = -1
+         end if
+         if (x_hi - x_lo <= 4.0_wp*spacing(x_hi)) exit
+      end do
+      ! The bracket closed on a jump of C(Δz) across F_z (a discontinuity of the model, not of
+      ! the root finder): the side nearer F_z, when the jump is small.
+      if (abs(c_at_lo - f_z) <= abs(c_at_hi - f_z)) then
+         x = x_lo
+         c = c_at_lo
+      else
+         x = x_hi
+         c = c_at_hi
+      end if
+      if (abs(c - f_z) <= jump_rtol*f_z) then
+         call tangential_at(x, c, r, error)
+         return
+      end if
+      call fatal_error(error, 'vertical load matching with tangential forces did not '// &
+         'converge: '//str_real(c)//' N instead of '//str_real(f_z)//' N (vertical approach '// &
+         'bracketed in ['//str_real(x_lo)//', '//str_real(x_hi)//'] mm)', stat_numerical)
+   contains
+      !> The normal problem at the vertical position x (mm), the tangential problem, the
+      !> vertical force carried c (N) and the residual r.
+      subroutine tangential_at(x, c, r, error)
+         real(wp), intent(in) :: x
+         real(wp), intent(out) :: c, r
+         type(error_type), allocatable, intent(out) :: error
+         integer :: k
+         c = 0.0_wp
+         r = 0.0_wp
+         if (.not. (self%has_normal .and. self%load%mode == load_vertical_force .and. &
+                    same(self%dz, x))) then
+            call update_normal(self, contact_load_type(load_vertical_position, x), error)
+            if (allocated(error)) return
+         end if
+         call kinematic_tangential(self, local, options, error)
+         if (allocated(error)) return
+         do k = 1, self%n_loaded
+            if (self%normal(k)%load > 0.0_wp) c = c - self%tangential(k)%fz_track
+         end do
+         r = signed_23(c) - signed_23(f_z)
+      end subroutine tangential_at
+
+      !> Record an evaluated point: the bracket ends and the best state.
+      subroutine keep(x, c, r)
+         real(wp), intent(in) :: x, c, r
+         if (c > c_best) then
+            c_best = c
+            x_best = x
+         end if
+         if (r > 0.0_wp) then
+            if (x < x_hi .or. .not. bracketed) then
+               x_hi = x
+               r_hi = r
+               c_at_hi = c
+            end if
+            bracketed = .true.
+         else if (x > x_lo) then
+            x_lo = x
+            r_lo = r
+            c_at_lo = c
+         end if
+      end subroutine keep
+   end subroutine vertical_balance
+
+   !> Δz (mm) at which the first patch touches, and the largest Δz the strip tables of every
+   !> patch reach (slightly inside it), for the patches prepared by a vertical load.
+   pure subroutine touch_and_reach(self, touch, reach)
+      type(contact_cache_type), intent(in) :: self
+      real(wp), intent(out) :: touch, reach
+      real(wp) :: cos_g
+      integer :: k
+
+      touch = huge(1.0_wp)
+      reach = huge(1.0_wp)
+      do k = 1, self%n_prepared
+         associate (g => self%contacts(k)%geometry)
+            cos_g = cos(g%gamma0)
+            touch = min(touch, (g%approach_touch + g%gap0)/cos_g)
+            if (g%has_strip_data) reach = min(reach, (g%approach_max + g%gap0)/cos_g)
+         end associate
+      end do
+      touch = max(touch, 0.0_wp)
+      if (reach < huge(1.0_wp)) then
+         reach = touch + (reach - touch)*(1.0_wp - 1.0e-9_wp)
+      else
+         reach = touch + 10.0_wp
+      end if
+   end subroutine touch_and_reach
+
+   !> sign(|c|^{2/3}, c): the load's power that is nearly linear in the approach.
+   elemental real(wp) function signed_23(c)
+      real(wp), intent(in) :: c
+      signed_23 = sign(abs(c)**(2.0_wp/3.0_wp), c)
+   end function signed_23
+
+   !> The tangential problem of every loaded patch with the creepages of the wheelset's motion
+   !> at its reference point: the geometric contact point of the loaded state (the normal
+   !> solution's y_shift from the first contact along the contact plane, its rolling radius
+   !> and contact angle; shcontact_normal_semihertz's refer_to_loaded_point). The point's axle
+   !> coordinate moves by y_shift cos γ_plane from the first contact's.
+   subroutine kinematic_tangential(self, local, options, error)
+      type(contact_cache_type), intent(inout) :: self
+      !> The state in the wheel's side frame.
+      type(wheelset_state_type), intent(in) :: local
+      type(tangential_options_type), intent(in) :: options
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_point_type) :: point
+      type(creepage_type) :: creepage
+      real(wp) :: speed
+      integer :: k
+
+      do k = 1, self%n_loaded
+         if (.not. (self%normal(k)%load > 0.0_wp)) cycle
+         point = contact_point_type(axle=reference_axle(self, k), radius=self%normal(k)%r0, &
+            gamma=self%normal(k)%gamma0)
+         call rigid_creepages(local, point, creepage, speed, error)
+         if (allocated(error)) return
+         call solve_patch(self, k, creepage, options, error)
+         if (allocated(error)) return
+      end do
+   end subroutine kinematic_tangential
+
+end module shcontact_pipeline_balance

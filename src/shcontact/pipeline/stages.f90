@@ -1,0 +1,233 @@
+!> The stages of one wheel–rail contact on plain data, shared by the library's solver object
+!> (shcontact_pipeline_cache, which keeps their results between calls) and the program's sweep
+!> runner (shcontact_case_runner, which shares them between the cases of a sweep):
+!>
+!> 1. geometry: the contact search (shcontact_geometry_contact) gives the candidate patches;
+!> 2. normal: [[prepare_normal_stage]] prepares the normal problem of the loaded patches
+!>    ([[loaded_count]]: the first one for a normal force or an approach, all for a vertical
+!>    load or position), [[solve_normal_stage]] solves it for the load (doc/theory.md §4.5–4.6);
+!> 3. tangential: [[solve_patch_stage]] solves one loaded patch for its creepages;
+!> 4. summary: [[summarise_stages]] turns the stage results into the per-patch values, the main
+!>    (most loaded) patch and the track-frame totals of a [[contact_result_type]].
+!>
+!> Being the only copy of each stage, the solver and the program give the same numbers for the
+!> same case, bit for bit (test_app's app = library tests, both wheels).
+module shcontact_pipeline_stages
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: error_type, prefix_error
+   use shcontact_core_material, only: material_type
+   use shcontact_core_strings, only: str_int
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_kinematics, only: contact_lead
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
+      solve_approach, solve_vertical_load, solve_vertical_approach
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
+      load_approach, load_vertical_position
+   use shcontact_pipeline_result, only: contact_result_type
+   implicit none
+   private
+
+   public :: loaded_count, prepare_normal_stage, solve_normal_stage, solve_patch_stage, &
+      reference_axle_of, summarise_stages
+
+contains
+
+   !> Number of patches a load acts on: the first (deepest) one for a normal force or an
+   !> approach, every patch found for a vertical load or position (doc/theory.md §4.6).
+   pure integer function loaded_count(load, n_patches) result(n)
+      !> The load.
+      type(contact_load_type), intent(in) :: load
+      !> Patches found by the contact search.
+      integer, intent(in) :: n_patches
+      n = 1
+      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position) &
+         n = n_patches
+   end function loaded_count
+
+   !> Prepare the normal problems of patches n_prepared+1..n (patches 1..n_prepared are
+   !> prepared already). On error n_prepared is the last patch prepared.
+   subroutine prepare_normal_stage(geometry, options, material, contacts, n_prepared, n, &
+         error, points)
+      !> The patches of the contact search, deepest first.
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      !> Normal options.
+      type(normal_options_type), intent(in) :: options
+      !> Elastic constants.
+      type(material_type), intent(in) :: material
+      !> The prepared normal problems (one per patch, at least n).
+      type(normal_contact_type), intent(inout) :: contacts(:)
+      !> Patches prepared so far; n on success.
+      integer, intent(inout) :: n_prepared
+      !> Patches to prepare (loaded_count).
+      integer, intent(in) :: n
+      !> Set when a patch cannot be prepared (prefixed with the patch number when n > 1).
+      type(error_type), allocatable, intent(out) :: error
+      !> Table points of each patch when the geometry's tables are longer (a reused search).
+      integer, intent(in), optional :: points(:)
+      integer :: k
+
+      do k = n_prepared + 1, n
+         if (present(points)) then
+            call prepare_normal_contact(contacts(k), geometry(k), options, material, error, &
+               n_points=points(k))
+         else
+            call prepare_normal_contact(contacts(k), geometry(k), options, material, error)
+         end if
+         if (allocated(error)) then
+            if (n > 1) call prefix_error(error, 'patch '//str_int(k))
+            return
+         end if
+         n_prepared = k
+      end do
+   end subroutine prepare_normal_stage
+
+   !> The normal solution for the load on the prepared patches (size loaded_count): a normal
+   !> force or an approach on the first, a vertical load or position on all.
+   subroutine solve_normal_stage(contacts, load, normal, dz, error)
+      !> The prepared normal problems of the loaded patches.
+      type(normal_contact_type), intent(inout) :: contacts(:)
+      !> The load.
+      type(contact_load_type), intent(in) :: load
+      !> The normal solution of each loaded patch.
+      type(normal_patch_type), intent(inout) :: normal(:)
+      !> Rigid vertical approach Δz of the wheel (mm) for a vertical load or position, else 0.
+      real(wp), intent(out) :: dz
+      !> Set when the load cannot be carried.
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: vertical
+
+      dz = 0.0_wp
+      select case (load%mode)
+      case (load_normal_force)
+         call solve_load(contacts(1), load%value, normal(1), error)
+      case (load_approach)
+         call solve_approach(contacts(1), load%value, normal(1), error)
+      case (load_vertical_position)
+         call solve_vertical_approach(contacts, load%value, normal, vertical, error)
+         dz = load%value
+      case default
+         call solve_vertical_load(contacts, load%value, normal, dz, error)
+      end select
+   end subroutine solve_normal_stage
+
+   !> The tangential problem of loaded patch k of n for its creepages; nothing for a patch that
+   !> carries no load.
+   subroutine solve_patch_stage(ws, normal, material, creepage, options, tangential, k, n, error)
+      !> The tangential workspace.
+      type(march_workspace_type), intent(inout) :: ws
+      !> The patch's normal solution.
+      type(normal_patch_type), intent(in) :: normal
+      !> Elastic constants and friction.
+      type(material_type), intent(in) :: material
+      !> Creepages at the patch's reference point.
+      type(creepage_type), intent(in) :: creepage
+      !> Tangential options.
+      type(tangential_options_type), intent(in) :: options
+      !> The patch's tangential solution.
+      type(tangential_patch_type), intent(inout) :: tangential
+      !> Patch number and number of loaded patches (for the message).
+      integer, intent(in) :: k, n
+      !> Set on failure (prefixed with the patch number when n > 1).
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. (normal%load > 0.0_wp)) return
+      call solve_tangential(ws, normal, material, creepage, options, tangential, error)
+      if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+   end subroutine solve_patch_stage
+
+   !> Axle coordinate L (mm) of a loaded patch's reference point: the first contact's, moved by
+   !> y_shift cos γ_plane along the contact plane (shcontact_normal_semihertz's
+   !> refer_to_loaded_point).
+   pure real(wp) function reference_axle_of(geometry, axle, normal) result(l)
+      !> The patch.
+      type(patch_geometry_type), intent(in) :: geometry
+      !> Axle offset of the side frame's origin (mm, shcontact_geometry_kinematics's axle_offset).
+      real(wp), intent(in) :: axle
+      !> Its normal solution.
+      type(normal_patch_type), intent(in) :: normal
+      l = geometry%y_wheel + axle + normal%lateral_offset()
+   end function reference_axle_of
+
+   !> The summary of the stage results: every patch (geometry; for a loaded one its solution at
+   !> its reference point), the most loaded ("main") patch and the track-frame totals.
+   pure subroutine summarise_stages(geometry, normal, tangential, creepage, side, axle, yaw, &
+         dz, result)
+      !> Every patch of the contact search (n_patches).
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      !> Normal solutions of the loaded patches (n_loaded).
+      type(normal_patch_type), intent(in) :: normal(:)
+      !> Tangential solutions and creepages of the loaded patches (n_loaded).
+      type(tangential_patch_type), intent(in) :: tangential(:)
+      type(creepage_type), intent(in) :: creepage(:)
+      !> side_right or side_left (the reference point's y_track is in the track frame).
+      integer, intent(in) :: side
+      !> Axle offset (mm, as in [[reference_axle_of]]) and yaw angle of the side frame (rad).
+      real(wp), intent(in) :: axle, yaw
+      !> Rigid vertical approach Δz (mm).
+      real(wp), intent(in) :: dz
+      !> The result (filled for patches 1..n_patches and the totals).
+      type(contact_result_type), intent(inout) :: result
+      integer :: k, m
+
+      result%n_patches = size(geometry)
+      result%n_loaded = size(normal)
+      result%dz = dz
+      do k = 1, result%n_patches
+         associate (p => result%patch(k), g => geometry(k))
+            p%gamma0 = g%gamma0
+            p%gamma_plane = g%gamma0
+            p%r0 = g%r0
+            p%y_track = g%y_track
+            p%z_track = g%z_track
+            p%x_track = contact_lead(g%y_wheel + axle, g%r0, g%gamma0, yaw)
+         end associate
+      end do
+      m = 1
+      do k = 1, result%n_loaded
+         associate (p => result%patch(k), n => normal(k), t => tangential(k))
+            p%fn = n%load
+            if (n%load > 0.0_wp) then
+               p%gamma0 = n%gamma0
+               p%r0 = n%r0
+               ! Along the contact plane towards the wheel's field side (y_track is in the
+               ! track frame: towards −y on the left wheel).
+               p%y_track = p%y_track + side*n%lateral_offset()
+               p%z_track = p%z_track + n%vertical_offset()
+               p%x_track = contact_lead(reference_axle_of(geometry(k), axle, n), n%r0, &
+                  n%gamma0, yaw)
+            end if
+            p%approach = n%approach
+            p%area = n%area
+            p%p_max = n%p_max
+            if (.not. (n%load > 0.0_wp)) cycle
+            p%fx = t%fx
+            p%fy = t%fy
+            p%mz = t%mz
+            p%fx_norm = t%fx_norm
+            p%fy_norm = t%fy_norm
+            p%fy_track = t%fy_track
+            p%fz_track = t%fz_track
+            p%coulomb_ratio = t%coulomb_ratio
+            p%adhesion_fraction = t%adhesion_fraction
+            p%nu_x = creepage(k)%nu_x
+            p%nu_y = creepage(k)%nu_y
+            p%phi = creepage(k)%phi
+            result%track%fx = result%track%fx + t%fx
+            result%track%fy = result%track%fy + t%fy_track
+            result%track%fz = result%track%fz + t%fz_track
+            result%track%fn = result%track%fn + n%load
+         end associate
+         if (normal(k)%load > normal(m)%load) m = k
+      end do
+      result%main_patch = m
+      result%main = result%patch(m)
+   end subroutine summarise_stages
+
+end module shcontact_pipeline_stages

@@ -1,0 +1,224 @@
+!> Tests of the named option presets (issue 25 item 4, shcontact_api_preset): what the vehicle
+!> preset sets, that the default preset restores the library's defaults, that a bad name is
+!> rejected without changing anything, and that the vehicle preset's kinematic forces stay
+!> within 0.01 in f = F/(μF_n) of the default's on states of the hunting trajectory (tread and
+!> flange, yaw up to 10 mrad) with the vertical load balanced as tightly.
+module test_preset
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_error, only: lib_error => error_type, stat_invalid_input
+   use shcontact_geometry_contact, only: contact_options_type
+   use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      load_vertical_force
+   use shcontact_api_preset, only: set_preset, apply_preset, preset_names
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_track, only: track_type
+   use test_external_data, only: external_file
+   use test_validation, only: read_columns, percentile, skip_without_profiles
+   implicit none
+   private
+
+   public :: collect_preset
+
+   !> Vertical wheel load (N), speed (mm/s) and friction coefficient of the default material.
+   real(wp), parameter :: wheel_load = 64.7e3_wp, speed = 30.0e3_wp, mu = 0.3_wp
+
+contains
+
+   !> Collect all exported unit tests.
+   subroutine collect_preset(testsuite)
+      !> The tests.
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('vehicle_preset_options', test_options), &
+         new_unittest('unknown_preset_rejected', test_unknown), &
+         new_unittest('vehicle_forces_near_default', test_forces), &
+         new_unittest('vehicle_kinematic_sample_vs_exact', test_exact) &
+         ]
+   end subroutine collect_preset
+
+   !> The vehicle preset sets fewer strips and elements and coarser tables, keeps the other
+   !> options, and the default preset gives back the library's defaults.
+   subroutine test_options(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(normal_options_type) :: normal, normal0
+      type(tangential_options_type) :: tangential, tangential0
+      type(contact_options_type) :: contact, contact0
+      type(lib_error), allocatable :: lib
+
+      call check(error, size(preset_names) == 2 .and. preset_names(2) == 'vehicle')
+      if (allocated(error)) return
+      tangential%bound = 1
+      call apply_preset('Vehicle', normal, tangential, contact, lib)
+      call check(error, .not. allocated(lib), 'the name is not case-sensitive')
+      if (allocated(error)) return
+      call check(error, normal%n_strips < normal0%n_strips .and. &
+         tangential%n_elements < tangential0%n_elements .and. &
+         contact%table_step > contact0%table_step, 'fewer strips, elements, table points')
+      if (allocated(error)) return
+      call check(error, tangential%bound == 1 .and. normal%reduction == normal0%reduction .and. &
+         contact%kinematic_table_gap == contact0%kinematic_table_gap, 'other options kept')
+      if (allocated(error)) return
+      call apply_preset('default', normal, tangential, contact, lib)
+      call check(error, .not. allocated(lib) .and. normal%n_strips == normal0%n_strips .and. &
+         tangential%n_elements == tangential0%n_elements .and. &
+         contact%table_step == contact0%table_step, 'the default preset restores the defaults')
+   end subroutine test_options
+
+   !> An unknown name: stat_invalid_input naming the presets, the solver unchanged.
+   subroutine test_unknown(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+      type(contact_options_type) :: contact
+      type(lib_error), allocatable :: lib
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', lib)
+      call check(error, .not. allocated(lib), 'init')
+      if (allocated(error)) return
+      call set_preset(solver, 'fast', lib)
+      call check(error, allocated(lib), 'an unknown preset is an error')
+      if (allocated(error)) return
+      call check(error, lib%stat == stat_invalid_input .and. index(lib%message, 'vehicle') > 0, &
+         lib%message)
+      if (allocated(error)) return
+      call solver%get_options(normal, tangential)
+      contact = solver%get_contact_options()
+      call check(error, normal%n_strips == 100 .and. tangential%n_elements == 50 .and. &
+         contact%table_step == 0.025_wp, 'solver unchanged')
+   end subroutine test_unknown
+
+   !> States of the benchmark's hunting trajectory, tread to flange (t_y = 0.5 … 8 mm, yaw up to
+   !> 10 mrad, with lateral velocity and yaw rate): the vehicle preset's tangential forces (sum
+   !> over the loaded patches in their contact planes, over μΣF_n) within 0.01 of the default's,
+   !> both balancing the vertical load to 1e-5.
+   subroutine test_forces(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: default, vehicle
+      type(contact_result_type) :: a, b
+      type(wheelset_state_type) :: state
+      type(lib_error), allocatable :: lib
+      real(wp), parameter :: amplitudes(4) = [0.5_wp, 2.0_wp, 4.0_wp, 8.0_wp], &
+         phases(3) = [0.3_wp, 1.2_wp, 2.5_wp], w = 15.707963267948966_wp
+      real(wp) :: psi, df
+      integer :: i, j
+
+      call default%init('builtin:S1002', 'builtin:UIC60', lib)
+      if (.not. allocated(lib)) call vehicle%init('builtin:S1002', 'builtin:UIC60', lib)
+      if (.not. allocated(lib)) call set_preset(vehicle, 'vehicle', lib)
+      call check(error, .not. allocated(lib), 'init and preset')
+      if (allocated(error)) return
+      do i = 1, size(amplitudes)
+         do j = 1, size(phases)
+            psi = min(0.01_wp, 1.25e-3_wp*amplitudes(i))
+            state = wheelset_state_type(y_ws=amplitudes(i)*sin(phases(j)), &
+               yaw=-psi*cos(phases(j)), v_forward=speed, &
+               v_lateral=amplitudes(i)*w*cos(phases(j)), yaw_rate=psi*w*sin(phases(j)), &
+               pitch_rate=pure_rolling_pitch_rate(speed, 460.0_wp)*(1.0_wp + 2.0e-4_wp))
+            call default%solve_kinematic(state, contact_load_type(load_vertical_force, &
+               wheel_load), a, lib)
+            if (.not. allocated(lib)) call vehicle%solve_kinematic(state, &
+               contact_load_type(load_vertical_force, wheel_load), b, lib)
+            call check(error, .not. allocated(lib), 'kinematic call')
+            if (allocated(error)) return
+            df = max(abs(f_of(b, 1) - f_of(a, 1)), abs(f_of(b, 2) - f_of(a, 2)))
+            call check(error, df <= 0.01_wp, 'vehicle preset: |df| > 0.01 at state', &
+               more=state_text(state, df))
+            if (allocated(error)) return
+            call check(error, abs(b%track%fz + wheel_load) <= 1.0e-5_wp*wheel_load .and. &
+               abs(a%track%fz + wheel_load) <= 1.0e-5_wp*wheel_load, 'vertical balance')
+            if (allocated(error)) return
+         end do
+      end do
+   end subroutine test_forces
+
+   !> The vehicle preset on CONTACT's kinematic sample (external data; doc/validation.md §6, the
+   !> 35 cases CONTACT solved): the targets of doc/validation.md for the kinematic call, max |Δf|
+   !> ≤ 0.1 and P80 |Δf_y| ≤ 0.04 (f = F/(μF_n) of the most loaded patch, CONTACT's sign), and
+   !> the normal force of that patch within 5 % (the default: 3.9 %, Table 9). The preset gave
+   !> max |Δf_x| 0.049, P80 0.018, max |Δf_y| 0.022, P80 0.006, |ΔF_n|/F_n max 0.039 (the
+   !> default's Table 9: 0.049, 0.018, 0.020, 0.006, 0.039).
+   subroutine test_exact(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=12), parameter :: names(7) = [character(len=12) :: 'y_ws_mm', 'yaw_rad', &
+         'vs_mm_s', 'vy_mm_s', 'vyaw_rad_s', 'vpitch_rad_s', 'fn_N']
+      character(len=12), parameter :: forces(2) = [character(len=12) :: 'fx_norm', 'fs_norm']
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(track_type) :: track
+      type(lib_error), allocatable :: lib
+      real(wp), allocatable :: rows(:, :), f(:, :), ex(:), ey(:), en(:)
+      character(len=:), allocatable :: sample, wheel, rail
+      character(len=80) :: stats
+      integer :: i, n
+
+      call skip_without_profiles(error)
+      if (allocated(error)) return
+      sample = external_file('reference/kinematic_sample/kinematic_sample.csv', error)
+      if (.not. allocated(error)) wheel = external_file('profiles/MBench_S1002_v3.prw', error)
+      if (.not. allocated(error)) rail = external_file('profiles/MBench_UIC60_v3.prr', error)
+      if (allocated(error)) return
+      call read_columns(sample, names, rows, error, row_tag='ok')
+      if (.not. allocated(error)) call read_columns(sample, forces, f, error, row_tag='ok')
+      if (allocated(error)) return
+      n = size(rows, 1)
+      call check(error, n == 35, 'kinematic sample: 35 cases CONTACT solved')
+      if (allocated(error)) return
+      track%rail_canted = .true.
+      call solver%init(wheel, rail, lib, track=track, material=material_type( &
+         shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu))
+      if (.not. allocated(lib)) call set_preset(solver, 'vehicle', lib)
+      call check(error, .not. allocated(lib), 'init and preset')
+      if (allocated(error)) return
+      allocate (ex(n), ey(n), en(n))
+      do i = 1, n
+         associate (r => rows(i, :))
+            call solver%solve_kinematic(wheelset_state_type(y_ws=r(1), yaw=r(2), &
+               v_forward=r(3), v_lateral=r(4), yaw_rate=r(5), pitch_rate=r(6)), &
+               contact_load_type(load_vertical_force, wheel_load), result, lib)
+            call check(error, .not. allocated(lib), 'kinematic call')
+            if (allocated(error)) return
+            ! CONTACT's sign: rail side.
+            ex(i) = abs(-result%main%fx_norm - f(i, 1))
+            ey(i) = abs(-result%main%fy_norm - f(i, 2))
+            en(i) = abs(result%main%fn - r(7))/r(7)
+         end associate
+      end do
+      write (stats, '(a,4f8.4)') 'max |dfx|, P80 |dfx|, max |dfy|, P80 |dfy| =', maxval(ex), &
+         percentile(ex, 0.8_wp), maxval(ey), percentile(ey, 0.8_wp)
+      call check(error, max(maxval(ex), maxval(ey)) <= 0.1_wp, 'max |Delta f| > 0.1', more=stats)
+      if (allocated(error)) return
+      call check(error, percentile(ey, 0.8_wp) <= 0.04_wp, 'P80 |Delta f_y| > 0.04', more=stats)
+      if (allocated(error)) return
+      write (stats, '(a,2f8.4)') 'max, P80 |dF_n|/F_n =', maxval(en), percentile(en, 0.8_wp)
+      call check(error, maxval(en) <= 0.05_wp, 'max |Delta F_n|/F_n > 0.05', more=stats)
+
+   end subroutine test_exact
+
+   !> f_x (c = 1) or f_y (c = 2): the loaded patches' tangential forces over μΣF_n.
+   pure real(wp) function f_of(r, c) result(f)
+      type(contact_result_type), intent(in) :: r
+      integer, intent(in) :: c
+      associate (p => r%patch(1:r%n_loaded))
+         if (c == 1) then
+            f = sum(p%fx)/(mu*sum(p%fn))
+         else
+            f = sum(p%fy)/(mu*sum(p%fn))
+         end if
+      end associate
+   end function f_of
+
+   !> The state and the difference, for a failure message.
+   pure function state_text(state, df) result(text)
+      type(wheelset_state_type), intent(in) :: state
+      real(wp), intent(in) :: df
+      character(len=96) :: text
+      write (text, '(a,f8.4,a,f8.5,a,f8.5)') 't_y = ', state%y_ws, ' mm, yaw = ', state%yaw, &
+         ' rad, |df| = ', df
+   end function state_text
+
+end module test_preset
