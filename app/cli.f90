@@ -49,6 +49,8 @@ module shcontact_app_cli
       logical :: no_output = .false.
       !> --threads (0: OpenMP default).
       integer :: threads = 0
+      !> --block-memory MB: results held in memory at once (0: the default).
+      integer :: block_memory = 0
       !> --shard I/N (0/0 when not given).
       integer :: shard = 0, n_shards = 0
       !> --shard slurm: I/N from the Slurm job-array variables.
@@ -159,6 +161,12 @@ contains
             if (.not. allocated(error) .and. cli%threads > max_threads) call fatal_error(error, &
                '--threads '//value//': at most '//str_int(max_threads)//' threads are allowed', &
                stat_usage)
+         case ('--block-memory')
+            call option_value(i, arg, value, has_value, error)
+            if (.not. allocated(error)) call read_count(value, '--block-memory', &
+               cli%block_memory, error)
+            if (.not. allocated(error) .and. cli%block_memory > 1048576) call fatal_error(error, &
+               '--block-memory '//value//': expected at most 1048576 (MiB)', stat_usage)
          case ('--shard')
             call option_value(i, arg, value, has_value, error)
             if (allocated(error)) then
@@ -243,7 +251,7 @@ contains
       case ('--set')
          accepts = command == 'run' .or. command == 'geometry'
       case ('--format', '--csv-units', '--threads', '--shard', '--resume', '--check', &
-            '--no-output')
+            '--no-output', '--block-memory')
          accepts = command == 'run'
       case ('--force')
          accepts = command == 'run' .or. command == 'merge' .or. command == 'profiles' .or. &
@@ -280,8 +288,9 @@ contains
    function nearest_option(command, name) result(text)
       character(len=*), intent(in) :: command, name
       character(len=:), allocatable :: text
-      character(len=*), parameter :: options(19) = [character(len=12) :: '--quiet', &
+      character(len=*), parameter :: options(20) = [character(len=14) :: '--quiet', &
          '--verbose', '--output', '--set', '--format', '--csv-units', '--threads', '--shard', &
+         '--block-memory', &
          '--resume', '--check', '--no-output', '--write', '--plot', '--kind', '--file-format', &
          '--scale', '--mirror-y', '--mirror-z', '--help']
       integer :: k, n

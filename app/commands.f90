@@ -1,7 +1,7 @@
 !> The commands of the shcontact program. Each calls the library, prints the results summary on
 !> stdout and diagnostics on stderr, and returns the exit status.
 module shcontact_app_commands
-   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
    use shcontact_core_strings, only: str_int, visible
@@ -18,7 +18,7 @@ module shcontact_app_commands
    use shcontact_app_cli, only: cli_type
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
-   use shcontact_app_environment, only: slurm_shard, in_slurm_array
+   use shcontact_app_environment, only: slurm_shard, in_slurm_array, peak_memory_kib
    implicit none
    private
 
@@ -107,6 +107,7 @@ contains
       options%resume = cli%resume
       options%force = cli%force
       options%write_output = .not. cli%no_output
+      if (cli%block_memory > 0) options%block_bytes = int(cli%block_memory, int64)*1048576_int64
       options%command_line = command_line()
       call choose_shard(cli, options%shard, options%n_shards, error)
       if (allocated(error)) then
@@ -145,6 +146,12 @@ contains
             str_int(i)//' case(s) solved'//resumed_note(outcome)//', '// &
             str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())//where_to
       end if
+      ! The figure doc/app.md sizes jobs with (and the memory test reads).
+      if (cli%verbose) write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
+         str_int(outcome%most_block_cases)//' case(s), '// &
+         str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory'
+      if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
+         'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM)'
    end function run_command
 
    function resumed_note(outcome) result(text)

@@ -89,6 +89,9 @@ contains
          '  -v, --verbose            more notes on stderr'//nl// &
          '  --threads N              OpenMP threads (default: OMP_NUM_THREADS or all cores)'// &
          nl// &
+         '  --block-memory MB        results (element fields) held in memory at once, in MiB'// &
+         nl// &
+         '                           (default 64): the checkpoint blocks are cut to fit'//nl// &
          '  --shard I/N              solve the I-th of N slices of a sweep into '// &
          'OUT-shardIofN.h5'//nl// &
          '  --shard slurm            take I/N from the Slurm job array: SLURM_ARRAY_TASK_ID'// &

@@ -59,6 +59,14 @@ module test_app
       '&normal n_strips = 40 /', &
       '&tangential n_elements = 20 /']
 
+   !> A 3 × 3 × 4 = 36-case DOE on the default case storing every field (about 220 KiB of
+   !> results per case), checkpoint blocks as large as the memory bound allows.
+   character(len=*), parameter :: fields_doe_case(*) = [character(len=72) :: &
+      "&sweep mode = 'grid', nu_x = 0.0, 2.0e-3, nu_x_points = 3,", &
+      '  nu_y = 0.0, 2.0e-3, nu_y_points = 3,', &
+      '  phi = 0.0, 2.0e-3, phi_points = 4 /', &
+      "&output fields = 'all', checkpoint_cases = 100000 /"]
+
 contains
 
    subroutine collect_app(testsuite)
@@ -77,6 +85,7 @@ contains
          new_unittest('prescribed_default_unchanged', test_prescribed_unchanged), &
          new_unittest('kinematic_case_equals_library', test_kinematic_case), &
          new_unittest('kinematic_sweep', test_kinematic_sweep), &
+         new_unittest('sweep_memory_bounded', test_memory_bound), &
          new_unittest('both_wheels_equal_library', test_both_wheels) &
          ]
    end subroutine collect_app
@@ -835,6 +844,68 @@ contains
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_kinematic_sweep
+
+   !> Issue 27: a sweep that stores every field holds at most --block-memory of results at
+   !> once, whatever its length. The 36-case DOE with all fields, run with --block-memory 2
+   !> (MiB; two blocks of at most 1 MiB, one being solved and one being written) and with 1024
+   !> (every case in one block): the same file; the bounded run's largest
+   !> block holds at most 1 MiB, and its peak resident memory (VmHWM of the process, which -v
+   !> prints) is lower than the unbounded run's by at least half of what the unbounded run's
+   !> largest block held (about 7 MB). The number of cases, not the bound, would set the peak
+   !> of a run whose blocks were not cut by bytes.
+   subroutine test_memory_bound(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, small, big
+      integer :: stat, small_block, big_block, small_peak, big_peak
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('memory')
+      call shell('mkdir -p '//dir//'/small '//dir//'/big')
+      call write_lines(dir//'/doe.nml', fields_doe_case)
+      stat = run_program(dir//'/small', 'run ../doe.nml -v -o out.h5 --block-memory 2')
+      call check(error, stat, 0, message='--block-memory 2: '//file_text(dir//'/small/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir//'/big', 'run ../doe.nml -v -o out.h5 --block-memory 1024')
+      call check(error, stat, 0, message='--block-memory 1024: '//file_text(dir//'/big/err.txt'))
+      if (allocated(error)) return
+      call check_same_content(error, dir//'/small/out.h5', dir//'/big/out.h5', &
+         'the block size changes no result')
+      if (allocated(error)) return
+      small = file_text(dir//'/small/err.txt')
+      big = file_text(dir//'/big/err.txt')
+      small_block = integer_after(small, 'largest checkpoint block', 'case(s), ')
+      big_block = integer_after(big, 'largest checkpoint block', 'case(s), ')
+      small_peak = integer_after(small, 'peak memory ', 'peak memory ')
+      big_peak = integer_after(big, 'peak memory ', 'peak memory ')
+      if (small_peak <= 0 .or. big_peak <= 0) then
+         call skip_test(error, 'no peak memory reported (no /proc/self/status)')
+         return
+      end if
+      call check(error, small_block > 0 .and. small_block <= 1024, message='largest block of '// &
+         'the bounded run (KiB, at most 1024): '//small)
+      if (allocated(error)) return
+      call check(error, big_block > 5*1024, message='largest block of the unbounded run '// &
+         '(KiB, expected the 36 cases of about 220 KiB): '//big)
+      if (allocated(error)) return
+      call check(error, big_peak - small_peak >= big_block/2, message='peak memory (KiB) '// &
+         'bounded vs unbounded: '//small//' / '//big)
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_memory_bound
+
+   !> The integer after the first `key` that follows the first `line` in `text` (−1 when
+   !> there is none).
+   integer function integer_after(text, line, key) result(value)
+      character(len=*), intent(in) :: text, line, key
+      integer :: i, j, stat
+      value = -1
+      j = index(text, line)
+      if (j == 0) return
+      i = index(text(j:), key)
+      if (i == 0) return
+      i = j + i - 1
+      read (text(i + len(key):), *, iostat=stat) value
+      if (stat /= 0) value = -1
+   end function integer_after
 
    !> The program equals the library bit for bit in every /summary column it writes, and in the
    !> patch counts, for both wheels, with prescribed creepages (`solve`) and kinematic

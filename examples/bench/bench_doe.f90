@@ -58,7 +58,9 @@ contains
       !$omp parallel num_threads(n_threads) default(none) &
       !$omp shared(prepared, creepages, table, n) private(ws, result, error, k)
       ws = prepared
-      !$omp do schedule(static)
+      ! Dynamic: the cost of a case depends on its creepages (full slip or not), and a static
+      ! split of the ordered grid gives one thread the dearer half.
+      !$omp do schedule(dynamic, 16)
       do k = 1, n
          call solve_prepared(ws, creepages(k), result, error)
          table%nu_x(k) = creepages(k)%nu_x

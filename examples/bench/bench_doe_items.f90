@@ -14,7 +14,7 @@ module bench_doe_items
    use bench_config, only: bench_config_type
    use bench_case, only: bench_case_type
    use bench_results, only: summary_type, force_record_type
-   use bench_report, only: section, stop_on, fail
+   use bench_report, only: section, stop_on, fail, verdict
    implicit none
    private
 
@@ -40,15 +40,16 @@ contains
       type(march_workspace_type) :: ws
       type(normal_patch_type) :: patch
       type(error_type), allocatable :: error
-      real(wp), allocatable :: t_app(:), t_loop(:)
-      real(wp) :: t0
+      real(wp), allocatable :: t_app(:, :), t_loop(:, :), c_app(:, :), c_loop(:, :)
+      real(wp) :: t0, c0, ratio, speedup
       integer :: threads, r, n
 
       n = bench%case_config%n_cases()
       call section('design of experiments: '//config%case_file//', '//str_int(n)//' cases')
       creepages = bench%creepages()
       call reserve_table(table, n)
-      allocate (t_app(config%doe_runs), t_loop(config%doe_runs))
+      allocate (t_app(config%doe_runs, 2), t_loop(config%doe_runs, 2), &
+         c_app(config%doe_runs, 2), c_loop(config%doe_runs, 2))
       patch = bench%normal_solution(bench%normal_options%n_strips, .false.)
       call prepare_fastsim_sh(ws, patch, bench%material, bench%tangential_options, error)
       call stop_on(error, 'DOE: prepare_fastsim_sh')
@@ -56,21 +57,40 @@ contains
          'geometry, normal solution, every case, HDF5 blocks, merged file '//config%output
       write (output_unit, '(a)') '  library loop: solve_prepared on one prepared workspace '// &
          'per thread, forces only, no file'
-      do threads = 1, 2
-         do r = 1, config%doe_runs
-            call run_app(bench, threads, outcome, t_app(r))
+      write (output_unit, '(a)') '  in turn, run after run: app 1 thread, library 1 thread, '// &
+         'app 2 threads, library 2 threads; wall ms median [min, max], CPU us per case'
+      do r = 1, config%doe_runs
+         do threads = 1, 2
+            c0 = cpu_seconds()
+            call run_app(bench, threads, outcome, t_app(r, threads))
+            c_app(r, threads) = cpu_seconds() - c0
+            c0 = cpu_seconds()
             t0 = wall_time()
             call solve_doe(ws, creepages, table, threads)
-            t_loop(r) = wall_time() - t0
+            t_loop(r, threads) = wall_time() - t0
+            c_loop(r, threads) = cpu_seconds() - c0
          end do
-         write (output_unit, '(2x,a,i0,a,3(f8.1,a),a,3(f8.1,a),a,f6.2,a)') 'threads ', threads, &
-            ': app ', 1.0e3_wp*median_of(t_app), ' ms [', 1.0e3_wp*minval(t_app), ', ', &
-            1.0e3_wp*maxval(t_app), ']', '; library loop ', 1.0e3_wp*median_of(t_loop), &
-            ' ms [', 1.0e3_wp*minval(t_loop), ', ', 1.0e3_wp*maxval(t_loop), ']', ' (', &
-            1.0e6_wp*median_of(t_loop)/n, ' us per case)'
-         if (threads == 1) summary%doe1 = median_of(t_app)
-         if (threads == 2) summary%doe2 = median_of(t_app)
       end do
+      do threads = 1, 2
+         write (output_unit, '(2x,a,i0,a,3(f8.1,a),f6.1,a,3(f8.1,a),f6.1,a)') 'threads ', &
+            threads, ': app ', 1.0e3_wp*median_of(t_app(:, threads)), ' ms [', &
+            1.0e3_wp*minval(t_app(:, threads)), ', ', 1.0e3_wp*maxval(t_app(:, threads)), &
+            '] ', 1.0e6_wp*median_of(c_app(:, threads))/n, ' us CPU; library loop ', &
+            1.0e3_wp*median_of(t_loop(:, threads)), ' ms [', &
+            1.0e3_wp*minval(t_loop(:, threads)), ', ', 1.0e3_wp*maxval(t_loop(:, threads)), &
+            '] ', 1.0e6_wp*median_of(c_loop(:, threads))/n, ' us CPU per case'
+      end do
+      summary%doe1 = median_of(t_app(:, 1))
+      summary%doe2 = median_of(t_app(:, 2))
+      ! Issue 27's targets: the app's cost per case against the library loop's, and its scaling.
+      ratio = median_of(t_app(:, 1))/median_of(t_loop(:, 1))
+      write (output_unit, '(2x,a,f6.2,a,f6.2,a)') 'app / library loop per case, 1 thread: ', &
+         ratio, ' wall (CPU ', median_of(c_app(:, 1))/median_of(c_loop(:, 1)), &
+         '); target <= 1.3: '//verdict(ratio <= 1.3_wp)
+      speedup = median_of(t_app(:, 1))/median_of(t_app(:, 2))
+      write (output_unit, '(2x,a,f6.2,a,f6.2,a)') 'speed-up 1 -> 2 threads: app ', speedup, &
+         ', library loop ', median_of(t_loop(:, 1))/median_of(t_loop(:, 2)), &
+         '; app target >= 1.8: '//verdict(speedup >= 1.8_wp)
       write (output_unit, '(2x,a,i0,a)') '(', config%doe_runs, ' runs each)'
       if (any(table%status /= 0)) call fail('a DOE case failed in the library loop')
       if (size(outcome%failures) > 0) call fail('a DOE case failed in the app')
@@ -79,6 +99,12 @@ contains
       call record%keep_array(table%fy)
       call record%keep_array(table%mz)
    end subroutine doe_section
+
+   !> Processor time of the process, all threads (s).
+   function cpu_seconds() result(t)
+      real(wp) :: t
+      call cpu_time(t)
+   end function cpu_seconds
 
    !> One run of the app's sweep driver, timed.
    subroutine run_app(bench, threads, outcome, seconds)

@@ -17,23 +17,33 @@
 !>   made by the run (mkdir, atomic) and locked (flock on OUT.h5.partial/lock) while it is
 !>   used: a second run with the same output is refused, an existing directory is only taken
 !>   over with `resume` or `force`, and a symbolic link is never followed.
+!> * **Overlap.** While the threads solve a block, the first thread writes the previous
+!>   block's file (shcontact_case_checkpoint) and then joins them; with several threads a run
+!>   has at least 8 blocks so that most of the writing overlaps the solving.
+!> * **Memory.** The block being solved and the block being written hold at most
+!>   `block_bytes` of results (element fields, strip tables, stages) together: a block is the
+!>   smaller of what takes about 5 s (or `checkpoint_cases`) and what fits in half the budget
+!>   at the largest size per case seen so far (shcontact_case_memory), so a sweep that stores
+!>   the fields runs in bounded memory whatever its length and thread count. A result keeps
+!>   only what the file stores (the shared geometry and unstored strip tables are dropped as
+!>   soon as the case is solved).
 !> * **Shards.** Shard I of N solves the contiguous slice of cases
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
 module shcontact_case_sweep
    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+   use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
-   use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
-      read_result_summary, check_output_file
-   use shcontact_core_textfile, only: text_line_type, read_text_lines
-   use shcontact_io_files, only: remove_directory, delete_file, file_exists, &
-      rename_file, canonical_path, path_kind, open_work_folder, unlock_file, folder_made, &
-      folder_existing, folder_busy, folder_unlocked, folder_link, folder_not_directory
+   use shcontact_io_results, only: run_info_type, merge_result_files, read_result_summary, &
+      check_output_file
+   use shcontact_io_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
+      unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
+      folder_not_directory
    use shcontact_io_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
    use shcontact_io_text, only: string_list_type
@@ -42,11 +52,19 @@ module shcontact_case_sweep
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
       solve_stage, solve_case, march_workspace_type, tangential_patch_type, &
       solve_kinematic_case, kinematic_state, contact_solver_type
+   use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
+      stage_bytes
+   use shcontact_case_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
+      read_manifest, write_text_file, read_text_file, clear_checkpoint
    implicit none
    private
 
    public :: sweep_options_type, sweep_outcome_type, progress_interface, run_sweep
    public :: shard_range, shard_output_name, checkpoint_directory, max_threads
+   public :: default_block_bytes
+
+   !> Default of [[sweep_options_type]]%block_bytes: 64 MiB.
+   integer(int64), parameter :: default_block_bytes = 64_int64*1024*1024
 
    !> Most OpenMP threads of a run (--threads, OMP_NUM_THREADS): each thread holds its own
    !> workspaces, and creating many more threads than cores only costs memory.
@@ -79,6 +97,9 @@ module shcontact_case_sweep
       !> Write the result file (and its checkpoints); .false. solves and summarises only
       !> (`--no-output`), and `outcome%output` is then ''.
       logical :: write_output = .true.
+      !> Most bytes of per-case results (fields) held in memory at once: the checkpoint block
+      !> is cut to fit (at least one case per thread).
+      integer(int64) :: block_bytes = default_block_bytes
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
       !> Progress report (optional).
@@ -97,21 +118,12 @@ module shcontact_case_sweep
       type(failure_type), allocatable :: failures(:)
       !> Cases taken from the checkpoint, threads used.
       integer :: n_resumed = 0, n_threads = 1
+      !> The most bytes of results (fields) and stages one block held, and the most cases a
+      !> block had ([[sweep_options_type]]%block_bytes bounds two blocks together).
+      integer(int64) :: most_block_bytes = 0
+      integer :: most_block_cases = 0
    end type sweep_outcome_type
 
-   !> Name of the checkpoint list inside the checkpoint directory. It lists the block files by
-   !> their names in the directory (block_NNNNNN.h5), so that a run can be resumed from any
-   !> working directory; entries of any other form are ignored, never opened or deleted.
-   character(len=*), parameter :: manifest_name = 'blocks.txt'
-   !> Temporary name of the merged output inside the checkpoint directory (a kill during the
-   !> final assembly leaves it there, where the next run removes it).
-   character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
-   !> The configuration of the run that made the checkpoint (see [[checkpoint_key]]).
-   character(len=*), parameter :: key_name = 'configuration.txt'
-   !> The lock file of the work folder, held (flock) while a run uses the folder.
-   character(len=*), parameter :: lock_name = 'lock'
-   !> Suffix of a block file being written.
-   character(len=*), parameter :: temp_suffix = '.tmp'
    !> Automatic block size: aim at this many seconds per block.
    real(wp), parameter :: block_seconds = 5.0_wp
 
@@ -121,6 +133,22 @@ module shcontact_case_sweep
       character(len=:), allocatable :: message
       type(patch_geometry_type), allocatable :: patches(:)
    end type geometry_set_type
+
+   !> The normal stage of the last case of the last block, by its key (the first case of the
+   !> run with the same t_y, roll and load): the next block, which in a grid usually starts on
+   !> the same stage, takes it instead of solving it again.
+   type :: stage_cache_type
+      integer :: key = 0
+      type(stage_type) :: stage
+   end type stage_cache_type
+
+   !> A solved block whose checkpoint file is still to be written: the first thread writes it
+   !> while the others solve the next block.
+   type :: pending_block_type
+      logical :: waiting = .false.
+      integer, allocatable :: cases(:)
+      type(case_result_type), allocatable :: results(:)
+   end type pending_block_type
 
    !> Per-thread tangential solutions (and solver object of a kinematic run).
    type :: thread_solutions_type
@@ -319,9 +347,13 @@ contains
       type(thread_solutions_type), allocatable :: solutions(:)
       type(case_result_type), allocatable :: results(:)
       type(string_list_type) :: blocks
+      type(stage_cache_type) :: cache
+      type(pending_block_type) :: pending
       integer, allocatable :: todo(:)
       integer :: n, n_done, next, block, nb, i
-      real(wp) :: t0, per_case
+      integer(int64) :: block_used, per_case_bytes
+      logical :: keep_geometry, keep_strips
+      real(wp) :: t0, per_case, per_block
 
       n = outcome%n_cases
       if (.not. options%write_output) then
@@ -352,35 +384,73 @@ contains
             solutions(i)%solver = setup%solver
          end do
       end if
+      ! A result keeps what the file stores: per-case geometry only when it varies.
+      keep_geometry = config%wants_field('geometry') .and. .not. common_geometry
+      keep_strips = config%wants_field('strips')
+      per_case_bytes = 0
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
+      ! Until the size of a result is measured, a run with fields sizes its first block by an
+      ! estimate from the grid.
+      if (fields) block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
+         options%block_bytes/(2*estimated_result_bytes(config)))))
       do while (next <= size(todo))
          nb = min(block, size(todo) - next + 1)
          if (allocated(results)) deallocate (results)
          allocate (results(nb))
          t0 = wall_seconds()
+         ! The previous block's file is written by the first thread meanwhile.
          call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
             results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
-            outcome%last - outcome%first + 1)
-         per_case = (wall_seconds() - t0)/nb
-         if (options%write_output) call commit_block(dir, blocks, info, config, &
-            todo(next:next + nb - 1), results, error)
+            outcome%last - outcome%first + 1, keep_geometry, keep_strips, cache, block_used, &
+            pending, dir, blocks, info, error)
          if (allocated(error)) return
+         per_case = (wall_seconds() - t0)/nb
+         ! The largest share of a case seen so far (its fields and its stage's).
+         per_case_bytes = max(per_case_bytes, block_used/nb + 1)
+         outcome%most_block_bytes = max(outcome%most_block_bytes, block_used)
+         outcome%most_block_cases = max(outcome%most_block_cases, nb)
+         if (pending%waiting) then
+            pending%waiting = .false.
+            if (associated(options%progress)) call options%progress(n_done, &
+               outcome%last - outcome%first + 1, .true.)
+         end if
          do i = 1, nb
             outcome%summaries(todo(next + i - 1)) = results(i)%summary
             if (results(i)%summary%stat > 0) call add_failure(outcome%failures, &
                todo(next + i - 1), message_of(results(i)))
          end do
          n_done = n_done + nb
+         if (options%write_output) then
+            pending%cases = todo(next:next + nb - 1)
+            call move_alloc(results, pending%results)
+            pending%waiting = .true.
+         else if (associated(options%progress)) then
+            call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
+         end if
          next = next + nb
+         if (config%output%checkpoint_cases > 0) then
+            block = config%output%checkpoint_cases
+         else if (per_case > 0.0_wp) then
+            ! About block_seconds per block; with several threads at least 8 blocks, so that
+            ! writing a block overlaps with solving the next (a block file costs about 5 ms,
+            ! which one thread would only add).
+            per_block = block_seconds/per_case
+            if (outcome%n_threads > 1) per_block = min(per_block, real(size(todo), wp)/8.0_wp)
+            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), per_block)))
+         end if
+         ! The block being solved and the one being written together within block_bytes.
+         block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
+            options%block_bytes/(2*per_case_bytes))))
+      end do
+      if (pending%waiting) then
+         call commit_block(dir, blocks, info, config, pending%cases, pending%results, error)
+         if (allocated(error)) return
+         deallocate (pending%results)
          if (associated(options%progress)) call options%progress(n_done, &
             outcome%last - outcome%first + 1, .true.)
-         if (config%output%checkpoint_cases == 0 .and. per_case > 0.0_wp) then
-            block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), &
-               block_seconds/per_case)))
-         end if
-      end do
+      end if
 
       if (size(outcome%failures) == outcome%last - outcome%first + 1) then
          ! Nothing to write: every case failed, and they all tell why.
@@ -426,7 +496,9 @@ contains
    !> Solve the cases of one block: shared geometry and normal stages first, then every case,
    !> each by one thread.
    subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
-                          solutions, fields, n_threads, options, done_before, total)
+                          solutions, fields, n_threads, options, done_before, total, &
+                          keep_geometry, keep_strips, cache, bytes, pending, dir, blocks, &
+                          info, write_error)
       type(run_setup_type), intent(in) :: setup
       type(case_config_type), intent(in) :: config
       logical, intent(in) :: common_geometry
@@ -439,11 +511,26 @@ contains
       integer, intent(in) :: n_threads
       type(sweep_options_type), intent(in) :: options
       integer, intent(in) :: done_before, total
+      !> Keep the per-case geometry and the strip tables in the results (what the file stores).
+      logical, intent(in) :: keep_geometry, keep_strips
+      !> The stage of the last case of the previous block; on return that of this block.
+      type(stage_cache_type), intent(inout) :: cache
+      !> Bytes of the block's results and stages.
+      integer(int64), intent(out) :: bytes
+      !> The previous block, written to `dir` (listed in `blocks`) by the first thread while the
+      !> others start on this one, when it is waiting.
+      type(pending_block_type), intent(in) :: pending
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(inout) :: blocks
+      type(run_info_type), intent(in) :: info
+      !> Set when the previous block could not be written.
+      type(error_type), allocatable, intent(out) :: write_error
 
       integer, allocatable :: geometry_keys(:), load_keys(:), stage_of(:), geometry_of(:)
       type(geometry_set_type), allocatable :: geometries(:)
       type(stage_type), allocatable :: stages(:)
       type(error_type), allocatable :: error
+      logical, allocatable :: cached(:), needed(:)
       integer :: i, k, nb, done, me, report
       logical :: has_progress
 
@@ -452,21 +539,28 @@ contains
       has_progress = associated(options%progress)
       if (setup%kinematic) then
          ! Each case through its thread's solver object (shcontact_case_runner).
-         !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+         !$omp parallel default(none) num_threads(n_threads) &
          !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
-         !$omp has_progress, nb) private(i, me, report)
+         !$omp has_progress, nb, keep_geometry, keep_strips, pending, dir, blocks, info, &
+         !$omp write_error) private(i, me, report)
+         me = 1
+         !$ me = omp_get_thread_num() + 1
+         if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
+            pending%cases, pending%results, write_error)
+         !$omp do schedule(dynamic, 4)
          do i = 1, nb
-            me = 1
-            !$ me = omp_get_thread_num() + 1
             call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
                results(i), fields)
+            call keep_stored(results(i), keep_geometry, keep_strips)
             !$omp atomic capture
             done = done + 1
             report = done
             !$omp end atomic
             if (has_progress .and. me == 1) call options%progress(report, total, .false.)
          end do
-         !$omp end parallel do
+         !$omp end do
+         !$omp end parallel
+         bytes = sum(result_bytes(results))
          return
       end if
       allocate (stage_of(nb))
@@ -476,6 +570,17 @@ contains
       allocate (geometry_of(size(load_keys)))
       geometry_keys = [(config%shares_with(load_keys(k), axis_geometry), k=1, size(load_keys))]
       call unique_keys(geometry_keys, geometry_of)
+      ! The stage the previous block ended on is taken, not solved again.
+      allocate (stages(size(load_keys)), cached(size(load_keys)), needed(size(geometry_keys)))
+      cached = load_keys == cache%key
+      needed = .false.
+      do k = 1, size(load_keys)
+         if (cached(k)) then
+            stages(k) = cache%stage
+         else
+            needed(geometry_of(k)) = .true.
+         end if
+      end do
 
       if (common_geometry) then
          allocate (geometries(1))
@@ -484,8 +589,9 @@ contains
       else
          allocate (geometries(size(geometry_keys)))
          !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-         !$omp shared(geometries, geometry_keys, setup, config) private(k, error)
+         !$omp shared(geometries, geometry_keys, setup, config, needed) private(k, error)
          do k = 1, size(geometry_keys)
+            if (.not. needed(k)) cycle
             call solve_geometry(setup, config%case_point(geometry_keys(k)), &
                geometries(k)%patches, error)
             if (allocated(error)) then
@@ -496,10 +602,10 @@ contains
          !$omp end parallel do
       end if
 
-      allocate (stages(size(load_keys)))
       !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config) private(k)
+      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config, cached) private(k)
       do k = 1, size(load_keys)
+         if (cached(k)) cycle
          if (geometries(geometry_of(k))%stat /= 0) then
             stages(k)%stat = geometries(geometry_of(k))%stat
             stages(k)%message = geometries(geometry_of(k))%message
@@ -510,21 +616,37 @@ contains
       end do
       !$omp end parallel do
 
-      !$omp parallel do default(none) schedule(dynamic, 4) num_threads(n_threads) &
+      !$omp parallel default(none) num_threads(n_threads) &
       !$omp shared(cases, stages, stage_of, results, workspaces, solutions, setup, config, &
-      !$omp fields, options, done, total, has_progress, nb) private(i, me, report)
+      !$omp fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
+      !$omp pending, dir, blocks, info, write_error) private(i, me, report)
+      me = 1
+      !$ me = omp_get_thread_num() + 1
+      if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
+         pending%cases, pending%results, write_error)
+      !$omp do schedule(dynamic, 4)
       do i = 1, nb
-         me = 1
-         !$ me = omp_get_thread_num() + 1
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
             workspaces(me), solutions(me)%patches, results(i), fields)
+         call keep_stored(results(i), keep_geometry, keep_strips)
          !$omp atomic capture
          done = done + 1
          report = done
          !$omp end atomic
          if (has_progress .and. me == 1) call options%progress(report, total, .false.)
       end do
-      !$omp end parallel do
+      !$omp end do
+      !$omp end parallel
+      bytes = sum(result_bytes(results))
+      do k = 1, size(stages)
+         bytes = bytes + stage_bytes(stages(k))
+      end do
+      cache%key = load_keys(stage_of(nb))
+      call move_alloc(stages(stage_of(nb))%geometry, cache%stage%geometry)
+      call move_alloc(stages(stage_of(nb))%normal, cache%stage%normal)
+      cache%stage%stat = stages(stage_of(nb))%stat
+      if (allocated(stages(stage_of(nb))%message)) cache%stage%message = &
+         stages(stage_of(nb))%message
    end subroutine solve_block
 
    !> Replace each key by its position in the list of distinct keys (order of appearance) and
@@ -564,102 +686,6 @@ contains
    ! ------------------------------------------------------------------------------------------
    ! Checkpoints
    ! ------------------------------------------------------------------------------------------
-
-   !> Write a block file and add it to the list.
-   subroutine commit_block(dir, blocks, info, config, cases, results, error)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(inout) :: blocks
-      type(run_info_type), intent(in) :: info
-      type(case_config_type), intent(in) :: config
-      integer, intent(in) :: cases(:)
-      type(case_result_type), intent(in) :: results(:)
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: name
-      integer :: number
-      ! After the last listed block (a resumed list may miss some numbers).
-      number = 1
-      if (blocks%n > 0) number = block_number(base_name(blocks%items(blocks%n)%text)) + 1
-      name = dir//'/'//block_name(number)
-      call write_result_file(name, info, config, cases, results, error, &
-         temp_name=name//temp_suffix)
-      if (allocated(error)) return
-      call blocks%push(name)
-      call write_manifest(dir, blocks, error)
-   end subroutine commit_block
-
-   !> Rewrite the list of block files (through a temporary file and a rename).
-   subroutine write_manifest(dir, blocks, error)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(in) :: blocks
-      type(error_type), allocatable, intent(out) :: error
-      integer :: unit, stat, i
-      character(len=:), allocatable :: name
-      name = dir//'/'//manifest_name
-      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
-         return
-      end if
-      do i = 1, blocks%n
-         write (unit, '(a)', iostat=stat) base_name(blocks%items(i)%text)
-      end do
-      close (unit)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write the checkpoint list "'//name//'"', stat_io)
-         return
-      end if
-      call rename_file(name//temp_suffix, name, error)
-   end subroutine write_manifest
-
-   !> The block files listed in the checkpoint directory, as paths inside it. Only entries
-   !> named like a block file count (an older list's `OUT.h5.partial/block_N.h5` gives
-   !> `block_N.h5` in `dir`); anything else in the list is ignored.
-   subroutine read_manifest(dir, blocks)
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(out) :: blocks
-      type(text_line_type), allocatable :: lines(:)
-      type(error_type), allocatable :: error
-      character(len=:), allocatable :: name
-      integer :: i
-      blocks%n = 0
-      if (.not. file_exists(dir//'/'//manifest_name)) return
-      call read_text_lines(dir//'/'//manifest_name, 'checkpoint list', lines, error)
-      if (allocated(error)) return
-      do i = 1, size(lines)
-         name = base_name(trim(adjustl(lines(i)%text)))
-         if (block_number(name) > 0) call blocks%push(dir//'/'//name)
-      end do
-   end subroutine read_manifest
-
-   !> block_NNNNNN.h5 (six digits or more).
-   pure function block_name(number) result(name)
-      integer, intent(in) :: number
-      character(len=:), allocatable :: name
-      character(len=12) :: buf
-      write (buf, '(i6.6)') number
-      name = 'block_'//trim(buf)//'.h5'
-   end function block_name
-
-   !> The number of a block file name, 0 when the name is not one.
-   pure integer function block_number(name) result(number)
-      character(len=*), intent(in) :: name
-      integer :: n, stat
-      number = 0
-      n = len(name)
-      if (n < 15) return
-      if (name(1:6) /= 'block_' .or. name(n - 2:n) /= '.h5') return
-      if (verify(name(7:n - 3), '0123456789') /= 0 .or. n - 9 > 9) return
-      read (name(7:n - 3), *, iostat=stat) number
-      if (stat /= 0) number = 0
-      if (name /= block_name(number)) number = 0
-   end function block_number
-
-   !> The name after the last '/'.
-   pure function base_name(path) result(name)
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable :: name
-      name = path(index(path, '/', back=.true.) + 1:)
-   end function base_name
 
    !> Take the finished cases from the checkpoint of an interrupted run of this configuration.
    subroutine read_checkpoint(dir, key, namelist, n_cases, outcome, blocks, error)
@@ -744,78 +770,10 @@ contains
       key = config_namelist(c)
    end function checkpoint_key
 
-   !> Write a text file whole (through a temporary name).
-   subroutine write_text_file(name, text, error)
-      character(len=*), intent(in) :: name, text
-      type(error_type), allocatable, intent(out) :: error
-      integer :: unit, stat
-      open (newunit=unit, file=name//temp_suffix, status='replace', action='write', &
-         access='stream', form='unformatted', iostat=stat)
-      if (stat == 0) write (unit, iostat=stat) text
-      if (stat == 0) close (unit, iostat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'cannot write "'//name//'"', stat_io)
-         return
-      end if
-      call rename_file(name//temp_suffix, name, error)
-   end subroutine write_text_file
-
-   !> A text file whole ('' when it cannot be read).
-   function read_text_file(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=:), allocatable :: text
-      integer :: unit, stat, n
-      text = ''
-      open (newunit=unit, file=name, status='old', action='read', access='stream', &
-         form='unformatted', iostat=stat)
-      if (stat /= 0) return
-      inquire (unit=unit, size=n)
-      if (n > 0) then
-         deallocate (text)
-         allocate (character(len=n) :: text)
-         read (unit, iostat=stat) text
-         if (stat /= 0) text = ''
-      end if
-      close (unit)
-   end function read_text_file
-
    function trim_text(text) result(t)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: t
       t = trim(text)
    end function trim_text
-
-   !> Remove the block files, their temporaries, the list and (unless kept) the directory of a
-   !> checkpoint. Only names shcontact gives inside `dir` are removed: block_N.h5 and
-   !> block_N.h5.tmp (N = 1, 2, ... while one exists, and every listed N), the list, the
-   !> merged temporary. A directory holding anything else is left in place.
-   subroutine clear_checkpoint(dir, keep_directory)
-      character(len=*), intent(in) :: dir
-      logical, intent(in) :: keep_directory
-      type(string_list_type) :: blocks
-      integer :: i, last
-      call read_manifest(dir, blocks)
-      last = 0
-      do i = 1, blocks%n
-         last = max(last, block_number(base_name(blocks%items(i)%text)))
-      end do
-      i = 1
-      do while (i <= last .or. file_exists(dir//'/'//block_name(i)) .or. &
-                file_exists(dir//'/'//block_name(i)//temp_suffix))
-         if (delete_file(dir//'/'//block_name(i))) continue
-         if (delete_file(dir//'/'//block_name(i)//temp_suffix)) continue
-         i = i + 1
-      end do
-      if (delete_file(dir//'/'//merged_temp_name)) continue
-      if (delete_file(dir//'/'//key_name)) continue
-      if (delete_file(dir//'/'//key_name//temp_suffix)) continue
-      if (delete_file(dir//'/'//manifest_name//temp_suffix)) continue
-      if (delete_file(dir//'/'//manifest_name)) continue
-      if (.not. keep_directory) then
-         ! The lock goes last, while still held (the caller closes it).
-         if (delete_file(dir//'/'//lock_name)) continue
-         if (remove_directory(dir)) continue
-      end if
-   end subroutine clear_checkpoint
 
 end module shcontact_case_sweep

@@ -60,6 +60,9 @@ module shcontact_io_hdf5
       logical :: single = .false.
       !> Gives every dataset written its `long_name` attribute, when associated.
       procedure(description_function), pointer, nopass :: describe => null()
+      !> Make and attach dimension scales ([[h5_set_scale]], [[h5_attach_scale]] do nothing
+      !> when .false.: a checkpoint block, whose scales the merge makes afresh).
+      logical :: scales = .true.
    end type h5_file_type
 
    !> Write a dataset (real: scalar to 3-D; integer, int8 or text; scalar, 1-D or 2-D) with its
@@ -111,7 +114,7 @@ contains
 
    !> Create `name` for writing; the data go to `name.tmp<pid>` (or `temp_name`) until
    !> [[h5_commit]].
-   subroutine h5_create(file, name, error, compression, single, temp_name, describe)
+   subroutine h5_create(file, name, error, compression, single, temp_name, describe, scales)
       !> The new file.
       type(h5_file_type), intent(out) :: file
       !> Final file name.
@@ -127,6 +130,8 @@ contains
       character(len=*), intent(in), optional :: temp_name
       !> The description of each dataset, written as its `long_name` attribute.
       procedure(description_function), optional :: describe
+      !> Make dimension scales (default .true.).
+      logical, intent(in), optional :: scales
       integer :: stat, access
 
       call start_library(error)
@@ -143,6 +148,7 @@ contains
       end if
       if (present(compression)) file%compression = compression
       if (present(single)) file%single = single
+      if (present(scales)) file%scales = scales
       if (access == H5F_ACC_EXCL_F .and. path_kind(file%temp_name) /= 'none') then
          call fatal_error(error, 'cannot write "'//name//'": its temporary name "'// &
             file%temp_name//'" is taken (by a file shcontact does not overwrite)', stat_io)
@@ -677,6 +683,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset
       integer :: stat, s
+      if (.not. file%scales) return
       call h5dopen_f(file%id, path, dset, stat)
       if (stat /= 0) then
          call fail(error, file, path, 'cannot open the dataset')
@@ -701,6 +708,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: dset, scale
       integer :: stat, s
+      if (.not. file%scales) return
       call h5dopen_f(file%id, path, dset, stat)
       if (stat /= 0) then
          call fail(error, file, path, 'cannot open the dataset')

@@ -84,6 +84,12 @@ module shcontact_io_results
    character(len=*), parameter :: element_fields(6) = [character(len=5) :: 'x', 'pn', 'px', &
       'py', 'slip', 'state']
 
+   !> The fields a configuration stores, looked up once per file (not per case).
+   type :: field_choice_type
+      logical :: any = .false., geometry = .false., strips = .false., pressure = .false.
+      logical :: traction = .false., slip = .false., state = .false., elements = .false.
+   end type field_choice_type
+
    !> What every result file of a run carries besides the cases.
    type :: run_info_type
       !> The resolved configuration as namelist text.
@@ -111,17 +117,44 @@ contains
       !> Cases of the run (sets the width).
       integer, intent(in) :: n_cases
       character(len=:), allocatable :: name
-      character(len=16) :: fmt
-      character(len=24) :: buf
-      write (fmt, '(a,i0,a,i0,a)') '(i', max(6, len(str_int(n_cases))), '.', &
-         max(6, len(str_int(n_cases))), ')'
-      write (buf, fmt) icase
-      name = 'cases/'//trim(buf)
+      integer :: width, i, v
+      ! Digits written by hand: this runs once per case when a file is written or merged,
+      ! where a formatted internal write cost more than the rest of the merge.
+      width = 6
+      v = n_cases/1000000
+      do while (v > 0)
+         width = width + 1
+         v = v/10
+      end do
+      allocate (character(len=6 + width) :: name)
+      name(1:6) = 'cases/'
+      v = abs(icase)
+      do i = 6 + width, 7, -1
+         name(i:i) = achar(iachar('0') + mod(v, 10))
+         v = v/10
+      end do
    end function case_group_name
+
+   !> The fields `config` stores.
+   pure function field_choice(config) result(f)
+      type(case_config_type), intent(in) :: config
+      type(field_choice_type) :: f
+      f%geometry = config%wants_field('geometry')
+      f%strips = config%wants_field('strips')
+      f%pressure = config%wants_field('pressure')
+      f%traction = config%wants_field('traction')
+      f%slip = config%wants_field('slip')
+      f%state = config%wants_field('state')
+      f%elements = f%pressure .or. f%traction .or. f%slip .or. f%state
+      f%any = f%elements .or. f%geometry .or. f%strips
+      ! Per-case geometry only when the sweep moves the wheelset (else /geometry holds it).
+      f%geometry = f%geometry .and. config%geometry_swept()
+   end function field_choice
 
    !> Write one result file holding the cases `results` (case numbers `indices`), under a
    !> temporary name renamed when complete.
-   subroutine write_result_file(name, info, config, indices, results, error, temp_name)
+   subroutine write_result_file(name, info, config, indices, results, error, temp_name, &
+                                checkpoint)
       !> File name.
       character(len=*), intent(in) :: name
       !> Run information (header, profiles, common geometry).
@@ -136,13 +169,21 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Temporary name (default `name.tmp<pid>`).
       character(len=*), intent(in), optional :: temp_name
+      !> A checkpoint block: no dimension scales (the merge attaches them in the final file;
+      !> making them was a third of a summary-only block's cost).
+      logical, intent(in), optional :: checkpoint
       type(h5_file_type) :: file
+      logical :: scales
       type(case_summary_type), allocatable :: summaries(:)
+      type(field_choice_type) :: fields
       integer :: i
 
+      fields = field_choice(config)
+      scales = .true.
+      if (present(checkpoint)) scales = .not. checkpoint
       call h5_create(file, name, error, compression=config%output%compression, &
          single=config%output%precision == precision_single, temp_name=temp_name, &
-         describe=describe_dataset)
+         describe=describe_dataset, scales=scales)
       if (allocated(error)) return
       call write_header(file, info, size(indices), error)
       summaries = results%summary
@@ -150,7 +191,8 @@ contains
       if (.not. allocated(error)) call write_failures(file, indices, results, error)
       do i = 1, size(results)
          if (allocated(error)) exit
-         call write_case(file, config, case_group_name(indices(i), info%n_cases), results(i), &
+         if (.not. fields%any) exit
+         call write_case(file, fields, case_group_name(indices(i), info%n_cases), results(i), &
             error)
       end do
       if (allocated(error)) then
@@ -247,6 +289,7 @@ contains
          'REFERENCE_LIST', 'CLASS', 'NAME']
       integer :: i
       logical :: keep_attached
+      if (.not. file%scales) return
       keep_attached = .false.
       if (present(keep)) keep_attached = keep
       if (.not. h5_exists(file, group//'/'//scale)) return
@@ -289,6 +332,7 @@ contains
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: error
+      if (.not. file%scales) return
       if (.not. h5_exists(file, path//'/xy')) return
       call attach_scale(file, path, 'y', 'strip (y, lateral)', element_fields, 2, error)
       if (.not. allocated(error)) call attach_scale(file, path, 'element', &
@@ -381,10 +425,11 @@ contains
       integer, intent(in) :: indices(:)
       type(case_summary_type), intent(in) :: summaries(:)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: column(:)
-      character(len=32), allocatable :: labels(:)
+      real(wp), allocatable :: column(:), inputs(:, :)
+      character(len=32), allocatable :: labels(:, :)
       type(case_point_type) :: p
-      integer :: ia, i, k
+      integer :: ia, i, k, n_in
+      integer, allocatable :: axes(:), slot(:)
       character(len=:), allocatable :: name
       integer, allocatable :: ints(:)
 
@@ -398,21 +443,40 @@ contains
       ints = summaries%main_patch
       if (.not. allocated(error)) call h5_write(file, 'summary/main_patch', ints, '1', error)
       if (allocated(error)) return
-      allocate (column(size(indices)), labels(size(indices)))
-      do ia = 1, n_sweep_axes
-         if (.not. config%reports_input(ia)) cycle
-         name = trim(sweep_axis_names(ia))
-         do i = 1, size(indices)
-            p = config%case_point(indices(i))
-            select case (name)
-            case ('bound', 'spin_model'); labels(i) = case_point_label(p, ia)
-            case default; column(i) = case_point_value(p, ia)
-            end select
-         end do
-         if (config%sweep%axes(ia)%is_label) then
-            call h5_write(file, 'summary/'//name, labels, error)
+      allocate (column(size(indices)))
+      ! The reported inputs, each case's point built once (not once per column).
+      axes = pack([(ia, ia=1, n_sweep_axes)], [(config%reports_input(ia), ia=1, n_sweep_axes)])
+      n_in = size(axes)
+      ! Column of each reported input in `inputs` or (text inputs) in `labels`.
+      allocate (slot(n_in))
+      do k = 1, n_in
+         if (config%sweep%axes(axes(k))%is_label) then
+            slot(k) = count([(config%sweep%axes(axes(i))%is_label, i=1, k)])
          else
-            call h5_write(file, 'summary/'//name, column, axis_units(name), error)
+            slot(k) = count([(.not. config%sweep%axes(axes(i))%is_label, i=1, k)])
+         end if
+      end do
+      allocate (inputs(size(indices), count(.not. [(config%sweep%axes(axes(k))%is_label, &
+         k=1, n_in)])), labels(size(indices), count([(config%sweep%axes(axes(k))%is_label, &
+         k=1, n_in)])))
+      do i = 1, size(indices)
+         if (n_in == 0) exit
+         p = config%case_point(indices(i))
+         do k = 1, n_in
+            if (config%sweep%axes(axes(k))%is_label) then
+               labels(i, slot(k)) = case_point_label(p, axes(k))
+            else
+               inputs(i, slot(k)) = case_point_value(p, axes(k))
+            end if
+         end do
+      end do
+      do k = 1, n_in
+         ia = axes(k)
+         name = trim(sweep_axis_names(ia))
+         if (config%sweep%axes(ia)%is_label) then
+            call h5_write(file, 'summary/'//name, labels(:, slot(k)), error)
+         else
+            call h5_write(file, 'summary/'//name, inputs(:, slot(k)), axis_units(name), error)
          end if
          if (allocated(error)) return
       end do
@@ -480,33 +544,28 @@ contains
    end subroutine write_failure_table
 
    !> The per-case group: the fields the configuration asks for, per patch.
-   subroutine write_case(file, config, group, result, error)
+   subroutine write_case(file, fields, group, result, error)
       type(h5_file_type), intent(in) :: file
-      type(case_config_type), intent(in) :: config
+      type(field_choice_type), intent(in) :: fields
       character(len=*), intent(in) :: group
       type(case_result_type), intent(in) :: result
       type(error_type), allocatable, intent(out) :: error
       integer :: k
       character(len=:), allocatable :: patch
-      logical :: any_field
 
-      any_field = config%wants_field('geometry') .or. config%wants_field('strips') .or. &
-         config%wants_field('pressure') .or. config%wants_field('traction') .or. &
-         config%wants_field('state') .or. config%wants_field('slip')
-      if (.not. any_field .or. result%summary%stat /= 0) return
+      if (.not. fields%any .or. result%summary%stat /= 0) return
       do k = 1, result%summary%n_loaded
          patch = group//'/patch_'//str_int(k)
-         if (config%wants_field('geometry') .and. geometry_varies(config) .and. &
-             allocated(result%geometry)) then
+         if (fields%geometry .and. allocated(result%geometry)) then
             call write_geometry(file, patch//'/geometry', result%geometry(k), error)
             if (allocated(error)) return
          end if
          if (allocated(result%normal)) then
-            call write_normal(file, config, patch//'/normal', result%normal(k), error)
+            call write_normal(file, fields, patch//'/normal', result%normal(k), error)
             if (allocated(error)) return
          end if
          if (allocated(result%tangential)) then
-            call write_tangential(file, config, patch//'/tangential', result%tangential(k), &
+            call write_tangential(file, fields, patch//'/tangential', result%tangential(k), &
                error)
             if (allocated(error)) return
          end if
@@ -524,15 +583,9 @@ contains
       end do
    end subroutine write_case
 
-   !> True when a sweep changes the geometry from case to case.
-   pure logical function geometry_varies(config)
-      type(case_config_type), intent(in) :: config
-      geometry_varies = config%geometry_swept()
-   end function geometry_varies
-
-   subroutine write_normal(file, config, path, n, error)
+   subroutine write_normal(file, fields, path, n, error)
       type(h5_file_type), intent(in) :: file
-      type(case_config_type), intent(in) :: config
+      type(field_choice_type), intent(in) :: fields
       character(len=*), intent(in) :: path
       type(normal_patch_type), intent(in) :: n
       type(error_type), allocatable, intent(out) :: error
@@ -554,7 +607,7 @@ contains
          if (.not. allocated(error)) call h5_write(file, path//'/ellipse_y_centre', &
             n%ellipse_y_centre, 'mm', error)
       end if
-      if (allocated(error) .or. .not. config%wants_field('strips')) return
+      if (allocated(error) .or. .not. fields%strips) return
       if (.not. allocated(n%y)) return
       m = n%n_strips
       call h5_write(file, path//'/y', n%y(1:m), 'mm', error)
@@ -575,9 +628,9 @@ contains
          strip_tables, 1, error)
    end subroutine write_normal
 
-   subroutine write_tangential(file, config, path, t, error)
+   subroutine write_tangential(file, fields, path, t, error)
       type(h5_file_type), intent(in) :: file
-      type(case_config_type), intent(in) :: config
+      type(field_choice_type), intent(in) :: fields
       character(len=*), intent(in) :: path
       type(tangential_patch_type), intent(in) :: t
       type(error_type), allocatable, intent(out) :: error
@@ -594,28 +647,27 @@ contains
       if (.not. allocated(error)) call h5_write(file, path//'/fy_track', t%fy_track, 'N', error)
       if (.not. allocated(error)) call h5_write(file, path//'/fz_track', t%fz_track, 'N', error)
       if (allocated(error) .or. .not. allocated(t%x)) return
-      if (.not. (config%wants_field('pressure') .or. config%wants_field('traction') .or. &
-                 config%wants_field('state') .or. config%wants_field('slip'))) return
+      if (.not. fields%elements) return
       call h5_write(file, path//'/x', t%x, 'mm', error, compress=.true.)
       if (.not. allocated(error)) call h5_write(file, path//'/y', t%y, 'mm', error)
       if (.not. allocated(error)) call h5_write(file, path//'/dx', t%dx, 'mm', error)
       if (.not. allocated(error)) call h5_write(file, path//'/dy', t%dy, 'mm', error)
       if (allocated(error)) return
-      if (config%wants_field('pressure') .and. allocated(t%pn)) then
+      if (fields%pressure .and. allocated(t%pn)) then
          call h5_write(file, path//'/pn', t%pn, 'MPa', error, compress=.true.)
          if (allocated(error)) return
       end if
-      if (config%wants_field('traction') .and. allocated(t%px)) then
+      if (fields%traction .and. allocated(t%px)) then
          call h5_write(file, path//'/px', t%px, 'MPa', error, compress=.true.)
          if (.not. allocated(error)) call h5_write(file, path//'/py', t%py, 'MPa', error, &
             compress=.true.)
          if (allocated(error)) return
       end if
-      if (config%wants_field('slip') .and. allocated(t%slip)) then
+      if (fields%slip .and. allocated(t%slip)) then
          call h5_write(file, path//'/slip', t%slip, '1', error, compress=.true.)
          if (allocated(error)) return
       end if
-      if (config%wants_field('state') .and. allocated(t%state)) then
+      if (fields%state .and. allocated(t%state)) then
          call h5_write(file, path//'/state', t%state, '1', error, compress=.true.)
          if (.not. allocated(error)) call h5_write_attribute(file, path//'/state', 'codes', &
             str_int(int(state_exterior))//' exterior, '// &
@@ -790,7 +842,7 @@ contains
       type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
       type(string_type), allocatable :: groups(:)
-      logical :: partial
+      logical :: partial, src_has_cases
 
       partial = .false.
       if (present(allow_partial)) partial = allow_partial
@@ -891,8 +943,10 @@ contains
          call sort_failures(all_failed(1:n_fail), all_messages)
          call write_failure_table(out, all_failed(1:n_fail), all_messages, error)
       end if
-      ! Per-case groups, in case order, reading each input file while its cases come.
+      ! Per-case groups, in case order, reading each input file while its cases come (a file
+      ! without /cases, the summary-only run, is looked at once, not once per case).
       open_index = 0
+      src_has_cases = .false.
       do i = 1, size(order)
          if (allocated(error)) exit
          icase = order(i)
@@ -901,7 +955,9 @@ contains
             open_index = source(icase)
             call h5_open(src, inputs(open_index)%text, error)
             if (allocated(error)) exit
+            src_has_cases = h5_exists(src, 'cases')
          end if
+         if (.not. src_has_cases) cycle
          if (.not. h5_exists(src, case_group_name(icase, n_first))) cycle
          call h5_copy(src, case_group_name(icase, n_first), out, &
             case_group_name(icase, n_first), error)

@@ -82,6 +82,8 @@ contains
       n_grids = 0
       do i = 1, size(cases)
          if (stat /= 0 .or. allocated(error)) exit
+         ! A summary-only file: nothing to look up case by case.
+         if (i == 1 .and. .not. h5_exists(file, 'cases')) exit
          if (.not. has_fields(file, groups(i)%text//'/patch_1')) cycle
          write (unit, '(a)', iostat=stat) '      <Grid Name="case_'//str_int(cases(i))// &
             '" GridType="Collection" CollectionType="Spatial">', &
