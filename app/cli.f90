@@ -3,8 +3,8 @@ module shcontact_app_cli
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
    use shcontact_core_strings, only: str_int, control_characters
-   use shcontact_io_text, only: string_list_type
-   use shcontact_case_sweep, only: max_threads
+   use shcontact_core_text, only: string_list_type
+   use shcontact_batch_sweep, only: max_threads
    implicit none
    private
 

@@ -9,7 +9,7 @@ module shcontact_app_profiles
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_usage
    use shcontact_core_strings, only: str_int
-   use shcontact_io_files, only: make_directory, join_path
+   use shcontact_core_files, only: make_directory, join_path
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
    use shcontact_profile_reader, only: read_profile, profile_file_format
    use shcontact_profile_source, only: load_profile

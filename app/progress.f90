@@ -6,7 +6,7 @@ module shcontact_app_progress
    use, intrinsic :: iso_c_binding, only: c_int
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
-   use shcontact_io_clock, only: wall_seconds
+   use shcontact_output_clock, only: wall_seconds
    use shcontact_app_environment, only: integer_variable
    implicit none
    private
@@ -59,7 +59,7 @@ contains
       run_seconds = wall_seconds() - t_start
    end function run_seconds
 
-   !> The library's progress report (shcontact_case_sweep's progress_interface).
+   !> The library's progress report (shcontact_batch_sweep's progress_interface).
    subroutine progress(done, total, committed)
       !> Cases finished (resumed ones included) and cases of the shard.
       integer, intent(in) :: done, total

@@ -6,7 +6,7 @@ module shcontact_app_wheelset
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type
    use shcontact_core_strings, only: str_int, str_format
-   use shcontact_io_config, only: case_config_type
+   use shcontact_input_config, only: case_config_type
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_geometry_wheelset_table, only: wheelset_contact_type, &
       wheelset_geometry_table, roll_angle_parameter, contact_distance, centre_radius

@@ -27,7 +27,7 @@ module test_api
       contact_fields_type, load_normal_force, load_vertical_force, load_approach
    use shcontact_api_values, only: result_value_count, patch_value_count, result_values, &
       patch_values
-   use shcontact_io_config, only: case_config_type, case_point_type, load_config
+   use shcontact_input_config, only: case_config_type, case_point_type, load_config
    use shcontact_case_result, only: case_result_type
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
       solve_stage, solve_case

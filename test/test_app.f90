@@ -10,15 +10,15 @@
 module test_app
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
-   use shcontact_io_files, only: file_exists, process_id
+   use shcontact_core_files, only: file_exists, process_id
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       load_normal_force, load_vertical_force
-   use shcontact_io_results, only: read_result_summary, case_group_name
-   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_read, h5_exists, &
+   use shcontact_output_results, only: read_result_summary, case_group_name
+   use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_read, h5_exists, &
       h5_read_attribute
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used

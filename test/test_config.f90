@@ -5,16 +5,16 @@ module test_config
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io
-   use shcontact_io_config, only: case_config_type, case_point_type, load_config, &
+   use shcontact_input_config, only: case_config_type, case_point_type, load_config, &
       read_config_text, config_namelist, axis_geometry, axis_load, n_sweep_axes, &
       sweep_axis_names
-   use shcontact_io_text, only: format_real
-   use shcontact_io_config_variables, only: variables, variable_choices, k_choice
+   use shcontact_core_text, only: format_real
+   use shcontact_input_config_variables, only: variables, variable_choices, k_choice
    use shcontact_core_choices, only: choice_list
-   use shcontact_io_config_choices, only: load_mode_force, load_mode_vertical
+   use shcontact_input_config_choices, only: load_mode_force, load_mode_vertical
    use shcontact_tangential_options, only: method_fastsim_sh, bound_clipped, bound_parabolic, &
       bound_weighted, spin_uniform, spin_additive
-   use shcontact_io_files, only: delete_file, process_id
+   use shcontact_core_files, only: delete_file, process_id
    implicit none
    private
    public :: collect_config

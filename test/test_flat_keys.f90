@@ -18,8 +18,8 @@ module test_flat_keys
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
       wheel_left
    use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_io_config, only: case_config_type, case_point_type, read_config_text
-   use shcontact_io_config_variables, only: variables, find_variable, k_string, k_choice, &
+   use shcontact_input_config, only: case_config_type, case_point_type, read_config_text
+   use shcontact_input_config_variables, only: variables, find_variable, k_string, k_choice, &
       k_real, k_int
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_case_runner, only: run_setup_type, prepare_run, stage_type, solve_geometry, &

@@ -5,7 +5,7 @@ module test_fuzz_support
    use testdrive, only: error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: format_real
+   use shcontact_core_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
    use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
    use shcontact_core_material, only: material_type

@@ -8,14 +8,14 @@ module test_hdf5io
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: lib_error => error_type, stat_io, stat_invalid_input
-   use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
+   use shcontact_output_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_read, h5_read_attribute, h5_copy, h5_exists
-   use shcontact_io_files, only: file_exists, delete_file, process_id
-   use shcontact_io_text, only: string_type
-   use shcontact_io_config, only: case_config_type, load_config, config_namelist
-   use shcontact_io_results, only: run_info_type, write_result_file, merge_result_files, &
+   use shcontact_core_files, only: file_exists, delete_file, process_id
+   use shcontact_core_text, only: string_type
+   use shcontact_input_config, only: case_config_type, load_config, config_namelist
+   use shcontact_output_results, only: run_info_type, write_result_file, merge_result_files, &
       read_result_summary
-   use shcontact_io_xdmf, only: xdmf_name
+   use shcontact_output_xdmf, only: xdmf_name
    use shcontact_case_result, only: case_result_type, case_summary_type
    use shcontact_tangential_patch, only: state_adhesion, state_slip
    implicit none

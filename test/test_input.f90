@@ -6,7 +6,7 @@ module test_input
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: format_real
+   use shcontact_core_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
    use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
    use shcontact_core_material, only: material_type
@@ -18,11 +18,11 @@ module test_input
    use shcontact_api_context, only: contact_context_type, context_set_option, &
       context_set_material, context_set_track, context_message, context_solve
    use shcontact_api_values, only: result_value_count
-   use shcontact_io_config, only: case_config_type, load_config, read_config_text, &
+   use shcontact_input_config, only: case_config_type, load_config, read_config_text, &
       config_namelist
-   use shcontact_io_report, only: report_line
-   use shcontact_io_config_sweep, only: axis_index
-   use shcontact_io_config_variables, only: variables, k_real, k_int
+   use shcontact_output_report, only: report_line
+   use shcontact_input_config_sweep, only: axis_index
+   use shcontact_input_config_variables, only: variables, k_real, k_int
    use shcontact_case_result, only: case_summary_type
    use test_fuzz_support, only: library_status, reset_library, samples, &
       new_library, library_option_fuzz

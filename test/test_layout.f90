@@ -120,10 +120,9 @@ contains
 
    !> The library's layers import one way: a module under src/ uses only modules of its own
    !> layer or of lower ones. Folders are layers, lowest first: core → math → profile →
-   !> geometry → normal → tangential → pipeline → api; io/ is placed file by file until it is
-   !> split: its input part (io/config/, config, files, text) below case/, its output part
-   !> (results, HDF5, XDMF, reports) above case/result and case/runner and below case/sweep
-   !> (scripts/check_layers lists the order and prints each upward use; doc/architecture.md).
+   !> geometry → normal → tangential → pipeline → input → api → case → output → batch, then the
+   !> facade (scripts/check_layers lists the order and prints each upward use;
+   !> doc/architecture.md).
    subroutine test_layers(error)
       type(error_type), allocatable, intent(out) :: error
       call check_script(error, 'check_layers', 'a module uses a module of a higher layer, or a '// &

@@ -13,19 +13,19 @@
 !> * output names with control characters, and outputs that are pipes, devices or symbolic
 !>   links, are refused.
 !>
-!> The damaged files are made with the library's own HDF5 writer (shcontact_io_hdf5).
+!> The damaged files are made with the library's own HDF5 writer (shcontact_output_hdf5).
 module test_output_files
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use test_app, only: scratch_directory, shell, run_program, file_text, write_lines, &
       unavailable, expect_in, program_path
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type
-   use shcontact_io_files, only: file_exists, process_id
-   use shcontact_io_xdmf, only: write_xdmf_sidecar
-   use shcontact_io_text, only: string_type
-   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_create, h5_commit, h5_close, h5_copy, &
+   use shcontact_core_files, only: file_exists, process_id
+   use shcontact_output_xdmf, only: write_xdmf_sidecar
+   use shcontact_core_text, only: string_type
+   use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_create, h5_commit, h5_close, h5_copy, &
       h5_make_group, h5_exists, h5_read, h5_write, h5_read_attribute, h5_write_attribute
-   use shcontact_io_results, only: read_result_summary, case_group_name
+   use shcontact_output_results, only: read_result_summary, case_group_name
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns
    implicit none
    private

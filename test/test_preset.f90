@@ -21,7 +21,7 @@ module test_preset
    use shcontact_geometry_track, only: track_type
    use test_external_data, only: external_file
    use test_validation, only: read_columns, percentile, skip_without_profiles
-   use shcontact_io_config, only: case_config_type, case_point_type, read_config_text, &
+   use shcontact_input_config, only: case_config_type, case_point_type, read_config_text, &
       normal_options_of, tangential_options_of, table_step_of
    use shcontact_case_runner, only: run_setup_type, prepare_run, solve_kinematic_case
    use shcontact_case_result, only: case_result_type, case_summary, case_summary_type

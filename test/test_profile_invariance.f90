@@ -19,7 +19,7 @@ module test_profile_invariance
    use shcontact_api_values, only: result_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_solve, &
       context_get_profile, context_create_arrays, context_message
-   use shcontact_io_files, only: file_exists
+   use shcontact_core_files, only: file_exists
    implicit none
    private
    public :: collect_profile_invariance

@@ -1,6 +1,6 @@
 !> Issue 26: one registry per option choice and per namelist group. Every place that states a
 !> choice, a default, a unit or a range must agree with the registries (the layers' option
-!> registries, shcontact_io_config_choices, the variable table and shcontact_core_ranges): the
+!> registries, shcontact_input_config_choices, the variable table and shcontact_core_ranges): the
 !> configuration's defaults, the library's defaults (option types, material, track, contact
 !> search), doc/app.md's variable tables and the option lists of include/shcontact.h and
 !> include/shcontact.fi. Each test fails when one of them differs.
@@ -16,13 +16,13 @@ module test_registry
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_api_solver, only: load_normal_force, load_vertical_force, load_approach
-   use shcontact_io_config, only: case_config_type, normal_options_of, tangential_options_of, &
+   use shcontact_input_config, only: case_config_type, normal_options_of, tangential_options_of, &
       load_mode_force, load_mode_vertical, load_mode_approach
-   use shcontact_io_config_variables, only: variables, find_variable, variable_choices, &
+   use shcontact_input_config_variables, only: variables, find_variable, variable_choices, &
       k_real, k_int, k_choice, k_real_list, header_option_keys
-   use shcontact_io_config_writer, only: variable_value_text, option_list
-   use shcontact_io_config_types, only: choice_value
-   use shcontact_io_config_assign, only: read_group_variable, stat_unknown_choice
+   use shcontact_input_config_writer, only: variable_value_text, option_list
+   use shcontact_input_config_types, only: choice_value
+   use shcontact_input_config_assign, only: read_group_variable, stat_unknown_choice
    implicit none
    private
    public :: collect_registry
@@ -345,7 +345,7 @@ contains
 
    !> The option lists of include/shcontact.h and include/shcontact.fi (between their
    !> '-- options --' and '-- end options --' lines) are the registry's, as
-   !> shcontact_io_config_writer's option_list writes them.
+   !> shcontact_input_config_writer's option_list writes them.
    subroutine test_header_lists(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c

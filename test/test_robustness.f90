@@ -7,13 +7,13 @@
 !> without the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
 module test_robustness
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
-   use shcontact_io_files, only: file_exists
+   use shcontact_core_files, only: file_exists
    use test_external_data, only: external_file
    use test_app, only: program_path, scratch_directory, shell, run_program, file_text, &
       write_lines, unavailable, expect_in, expect_failure, current_directory
    use test_fuzz_support, only: next_random, fuzz_settings, repeated, names_input_file, &
       library_option_fuzz
-   use shcontact_io_config_variables, only: variables, k_real
+   use shcontact_input_config_variables, only: variables, k_real
    implicit none
    private
    public :: collect_robustness

@@ -19,7 +19,7 @@
 !>     --alloc-check N        only solve N full cases and N DOE cases, then stop (run it under
 !>                            valgrind with N and 2N: the allocation count must not change)
 !>
-!> The case is the app's (shcontact_io_config): by default the built-in S1002 on UIC60 1:40 at
+!> The case is the app's (shcontact_input_config): by default the built-in S1002 on UIC60 1:40 at
 !> t_y = 4.733 mm, F_n = 64.7 kN, G = 82670 MPa, ν = 0.27, μ = 0.3, 100 strips × 50 elements,
 !> weighted bound; the single-case items use its creepages (ν_x = 0.58e-3, ν_y = 0.061e-3,
 !> φ = 2.74e-4 rad/mm), the DOE its sweep.

@@ -1,4 +1,4 @@
-!> The benchmark's case: the app's case file read and prepared once (shcontact_io_config,
+!> The benchmark's case: the app's case file read and prepared once (shcontact_input_config,
 !> shcontact_case_runner), the single case of the items (the first point of the sweep with the
 !> file's creepages) and its normal problem at a given number of strips; and the header of the
 !> output, which describes the machine and the case.
@@ -10,7 +10,7 @@ module bench_case
       prepare_normal_contact, solve_load, normal_patch_type, tangential_options_type, &
       creepage_type, bound_name, spin_model_name, shcontact_version
    use shcontact_normal_options, only: method_hertz
-   use shcontact_io_config, only: case_config_type, case_point_type, load_config, axis_load, &
+   use shcontact_input_config, only: case_config_type, case_point_type, load_config, axis_load, &
       load_mode_force
    use shcontact_case_runner, only: run_setup_type, prepare_run
    use shcontact_core_strings, only: str_int

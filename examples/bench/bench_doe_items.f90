@@ -7,7 +7,7 @@ module bench_doe_items
       prepare_normal_contact, solve_load, normal_patch_type, tangential_options_type, &
       march_workspace_type, prepare_fastsim_sh, creepage_type, tangential_patch_type, &
       find_contact_patches, solve_tangential
-   use shcontact_case_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep
+   use shcontact_batch_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep
    use shcontact_core_strings, only: str_int
    use bench_timing, only: wall_time, median_of
    use bench_doe, only: doe_table_type, solve_doe, reserve_table
@@ -53,7 +53,7 @@ contains
       patch = bench%normal_solution(bench%normal_options%n_strips, .false.)
       call prepare_fastsim_sh(ws, patch, bench%material, bench%tangential_options, error)
       call stop_on(error, 'DOE: prepare_fastsim_sh')
-      write (output_unit, '(a)') '  app: run_sweep (shcontact_case_sweep) end to end: '// &
+      write (output_unit, '(a)') '  app: run_sweep (shcontact_batch_sweep) end to end: '// &
          'geometry, normal solution, every case, HDF5 blocks, merged file '//config%output
       write (output_unit, '(a)') '  library loop: solve_prepared on one prepared workspace '// &
          'per thread, forces only, no file'

@@ -23,7 +23,7 @@ module shcontact_api_context
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
       contact_fields_type, max_patches
-   use shcontact_io_config, only: case_config_type
+   use shcontact_input_config, only: case_config_type
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type
    use shcontact_api_settings, only: library_setup_type, library_setup, set_config_value, &
       split_key, key_use, key_solver, key_fields, key_creation, key_app

@@ -15,10 +15,10 @@ module shcontact_api_keyed
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_strings, only: to_lower, str_int, visible
-   use shcontact_io_text, only: format_real
-   use shcontact_io_config, only: case_config_type, case_point_type, validate_config
-   use shcontact_io_config_types, only: output_config_type
-   use shcontact_io_config_variables, only: variables, k_int, k_real, k_real_list
+   use shcontact_core_text, only: format_real
+   use shcontact_input_config, only: case_config_type, case_point_type, validate_config
+   use shcontact_input_config_types, only: output_config_type
+   use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
    use shcontact_api_wheelset, only: wheel_right, wheel_left
    use shcontact_api_settings, only: config_load, config_state

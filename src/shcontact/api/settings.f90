@@ -1,5 +1,5 @@
 !> The settings of a flat-interface handle (C API, Fortran 77 entry points) kept as the app's
-!> configuration (shcontact_io_config's case_config_type), so that a key `group%variable` and
+!> configuration (shcontact_input_config's case_config_type), so that a key `group%variable` and
 !> its value take the namelist's one path: [[set_config_value]] hands `group%variable=value` to
 !> the namelist reader's single-assignment entry (apply_override → apply_assignment →
 !> read_group_variable), and [[library_setup]] translates the configuration into the
@@ -20,11 +20,11 @@ module shcontact_api_settings
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
-   use shcontact_io_config, only: case_config_type, case_point_type, apply_override, &
+   use shcontact_input_config, only: case_config_type, case_point_type, apply_override, &
       normal_options_of, tangential_options_of, load_mode_force, load_mode_approach, &
       curvature_reference, table_step_of
-   use shcontact_io_config_types, only: set_origin
-   use shcontact_io_config_variables, only: variables, find_variable, &
+   use shcontact_input_config_types, only: set_origin
+   use shcontact_input_config_variables, only: variables, find_variable, &
       join_words, k_real, k_real_list
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
       load_vertical_force

@@ -1,11 +1,11 @@
 !> What a sweep's results hold in memory, in bytes, and what of it the file will not need: the
-!> bookkeeping behind the sweep's memory bound (shcontact_case_sweep: a checkpoint block is cut
+!> bookkeeping behind the sweep's memory bound (shcontact_batch_sweep: a checkpoint block is cut
 !> so that it and the block being written hold at most `block_bytes` of results).
 module shcontact_case_memory
    use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_io_config, only: case_config_type
+   use shcontact_input_config, only: case_config_type
    use shcontact_case_result, only: case_result_type
    use shcontact_case_runner, only: stage_type
    implicit none

@@ -38,7 +38,7 @@ module shcontact_case_runner
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
       solve_patch_stage, summarise_stages
-   use shcontact_io_config, only: case_config_type, case_point_type, load_mode_force
+   use shcontact_input_config, only: case_config_type, case_point_type, load_mode_force
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
    use shcontact_api_settings, only: library_setup_type, library_setup, point_load, &
@@ -63,7 +63,7 @@ module shcontact_case_runner
       type(tangential_options_type) :: tangential
       !> Elastic constants (the friction comes with each case).
       type(material_type) :: material
-      !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical` (shcontact_io_config).
+      !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical` (shcontact_input_config).
       integer :: load_mode = load_mode_force
       !> Kinematic mode: cases are solved by copies of `solver`, prepared with the run's
       !> profiles, track, material and options (bound and friction come with each case).

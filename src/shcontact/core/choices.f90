@@ -1,7 +1,7 @@
 !> The choices of an option (issue 26): each allowed value with its name, the integer code the
 !> code uses after validation, and a short description. The registries of the layers' options
 !> (shcontact_normal_option_registry, shcontact_tangential_option_registry) and of the case
-!> file's groups (shcontact_io_config_variables) are built from these, so that a choice's name,
+!> file's groups (shcontact_input_config_variables) are built from these, so that a choice's name,
 !> code and description are written once; the namelist reader, the option setters, the resolved
 !> namelist, the documentation's tables and the headers' option lists all come from them (test
 !> `registry`).

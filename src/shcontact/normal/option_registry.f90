@@ -1,7 +1,7 @@
 !> The registry of the normal solver's option choices (issue 26): for `&normal method` and
 !> `&normal reduction` the allowed values with their integer codes and descriptions, and the
 !> defaults. [[shcontact_normal_options]], the case file's variable table
-!> (shcontact_io_config_variables), the documentation's tables and the headers' option lists
+!> (shcontact_input_config_variables), the documentation's tables and the headers' option lists
 !> are built from or checked against this one list (test `registry`).
 module shcontact_normal_option_registry
    use shcontact_core_kinds, only: wp

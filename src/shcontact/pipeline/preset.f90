@@ -1,7 +1,7 @@
 !> The registry of the option presets (issue 25 item 4): one choice that sets the grid of the
 !> normal and tangential problems and the spacing of the strip tables together. Written once
 !> here, below the library's solver (shcontact_api_preset, `set_preset`) and the case file's
-!> `&normal preset` (shcontact_io_config_types, `normal_options_of`, `tangential_options_of`,
+!> `&normal preset` (shcontact_input_config_types, `normal_options_of`, `tangential_options_of`,
 !> `table_step_of`), so that both apply the same values.
 !>
 !> * `default`: the library's defaults, 100 strips × 50 elements, tables every 0.025 mm.

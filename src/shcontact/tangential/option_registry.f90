@@ -2,7 +2,7 @@
 !> (`&tangential method, bound, spin_model, spin_flexibility, correction`) its allowed values
 !> with their integer codes and descriptions, and its default. [[shcontact_tangential_options]]
 !> (the library's options and parsers), the case file's variable table
-!> (shcontact_io_config_variables), the documentation's tables and the headers' option lists are
+!> (shcontact_input_config_variables), the documentation's tables and the headers' option lists are
 !> built from or checked against this one list (test `registry`).
 module shcontact_tangential_option_registry
    use shcontact_core_choices, only: choice_type

@@ -8,7 +8,7 @@
 !> intermediate groups are created. Object modification times are not recorded, so the same
 !> content written in the same order gives the same bytes. Fortran arrays keep their memory
 !> order: a Fortran (n1, n2) array is seen by C and h5py as shape (n2, n1).
-module shcontact_io_hdf5
+module shcontact_output_hdf5
    use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
       h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
@@ -27,7 +27,7 @@ module shcontact_io_hdf5
    use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f, h5dsset_label_f
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_io
-   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
+   use shcontact_core_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_core_strings, only: str_int
    implicit none
    private
@@ -1269,4 +1269,4 @@ contains
       call fatal_error(error, file%name//': '//path//': '//what, stat_io)
    end subroutine fail
 
-end module shcontact_io_hdf5
+end module shcontact_output_hdf5

@@ -6,14 +6,14 @@
 !> the load of the load mode, friction, bound, and the creepages and spin model, or in
 !> kinematic mode the wheelset inputs), so that lines of separate runs (a shell loop over
 !> `--set`) line up under one header and say what they are.
-module shcontact_io_report
+module shcontact_output_report
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
-   use shcontact_io_config, only: case_config_type, case_point_type, n_sweep_axes, &
+   use shcontact_input_config, only: case_config_type, case_point_type, n_sweep_axes, &
       sweep_axis_names, case_point_value, case_point_label, is_kinematic_input, &
       load_mode_force, load_mode_approach, load_mode_vertical
-   use shcontact_io_text, only: format_real, json_string
+   use shcontact_core_text, only: format_real, json_string
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used
    implicit none
@@ -343,4 +343,4 @@ contains
       q = q//'"'
    end function csv_quoted
 
-end module shcontact_io_report
+end module shcontact_output_report

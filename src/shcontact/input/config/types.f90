@@ -3,12 +3,12 @@
 !> registries; choices are held as their integer codes; test `registry`), the whole
 !> configuration with where each value was set, and the questions downstream code asks of it
 !> (number of cases, inputs of a case, fields to store, the library's options).
-module shcontact_io_config_types
+module shcontact_input_config_types
    use shcontact_core_kinds, only: wp
    use shcontact_core_material, only: material_type
    use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
-   use shcontact_io_config_limits, only: path_len, name_len, max_fields
-   use shcontact_io_config_choices, only: side_right, kinematics_off, kinematics_on, &
+   use shcontact_input_config_limits, only: path_len, name_len, max_fields
+   use shcontact_input_config_choices, only: side_right, kinematics_off, kinematics_on, &
       load_mode_force, curvature_local, precision_double
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
@@ -19,7 +19,7 @@ module shcontact_io_config_types
       default_n_elements
    use shcontact_pipeline_preset, only: default_preset, preset_strips, preset_elements, &
       preset_table_step
-   use shcontact_io_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
+   use shcontact_input_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
       axis_index, is_kinematic_input
    implicit none
    private
@@ -51,7 +51,7 @@ module shcontact_io_config_types
 
    !> `&track`: track and wheelset dimensions (doc/theory.md §5.2).
    type :: track_config_type
-      !> `side_right` or `side_left` (shcontact_io_config_choices).
+      !> `side_right` or `side_left` (shcontact_input_config_choices).
       integer :: side = side_right
       !> Track gauge (mm), measured `gauge_height` below the rail top.
       real(wp) :: gauge = 1435.0_wp, gauge_height = 14.0_wp
@@ -410,4 +410,4 @@ contains
       end do
    end function sweep_origin
 
-end module shcontact_io_config_types
+end module shcontact_input_config_types

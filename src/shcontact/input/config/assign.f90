@@ -2,26 +2,26 @@
 !> name, number of values, string lengths), then read through a one-assignment namelist on an
 !> internal file, so that the compiler's namelist reader converts the value and an error names
 !> the file, the line, the group, the variable, the value found and what is allowed.
-module shcontact_io_config_assign
+module shcontact_input_config_assign
    use, intrinsic :: ieee_exceptions, only: ieee_overflow, ieee_get_halting_mode, &
       ieee_set_halting_mode, ieee_get_flag, ieee_set_flag
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: to_lower, str_int
-   use shcontact_io_files, only: join_path
-   use shcontact_io_config_limits, only: name_len, max_sweep_values, max_label_values, &
+   use shcontact_core_files, only: join_path
+   use shcontact_input_config_limits, only: name_len, max_sweep_values, max_label_values, &
       max_fields
-   use shcontact_io_config_sweep, only: sweep_axis_type, sweep_config_type, axis_index
+   use shcontact_input_config_sweep, only: sweep_axis_type, sweep_config_type, axis_index
    use shcontact_core_choices, only: choice_type, choice_code, choice_list
-   use shcontact_io_config_types, only: case_config_type, profiles_config_type, &
+   use shcontact_input_config_types, only: case_config_type, profiles_config_type, &
       track_config_type, position_config_type, kinematics_config_type, load_config_type, &
       creepage_config_type, normal_config_type, tangential_config_type, output_config_type, &
       set_origin, set_choice_value
-   use shcontact_io_config_variables, only: variables, find_variable, type_phrase, &
+   use shcontact_input_config_variables, only: variables, find_variable, type_phrase, &
       string_capacity, suggestion, group_variable_list, is_choice, variable_choices, k_int, &
       k_string, k_string_list, k_real_list, k_choice
-   use shcontact_io_config_parser, only: assignment_type
+   use shcontact_input_config_parser, only: assignment_type
    implicit none
    private
 
@@ -330,4 +330,4 @@ contains
       axis%is_label = .true.
    end subroutine store_labels
 
-end module shcontact_io_config_assign
+end module shcontact_input_config_assign

@@ -1,6 +1,6 @@
 !> Size limits of a case configuration: string lengths, list capacities, the most cases of a
 !> run and the most grid cells of a patch (doc/app.md, "Limits").
-module shcontact_io_config_limits
+module shcontact_input_config_limits
    use shcontact_core_ranges, only: max_grid_cells
    implicit none
    private
@@ -23,4 +23,4 @@ module shcontact_io_config_limits
    !> Longest line of a case file.
    integer, parameter :: max_line_length = 4095
 
-end module shcontact_io_config_limits
+end module shcontact_input_config_limits

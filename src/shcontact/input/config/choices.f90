@@ -3,8 +3,8 @@
 !> shcontact_tangential_option_registry): the wheel side, the kinematic and load modes, the
 !> longitudinal curvature, the output precision and fields, the sweep mode, and the profile
 !> files' formats and mirroring. Each choice has its name, its integer code (the value the
-!> configuration holds after reading, [[shcontact_io_config_types]]) and a description.
-module shcontact_io_config_choices
+!> configuration holds after reading, [[shcontact_input_config_types]]) and a description.
+module shcontact_input_config_choices
    use shcontact_core_choices, only: choice_type
    use shcontact_geometry_track, only: side_right, side_left
    implicit none
@@ -79,4 +79,4 @@ module shcontact_io_config_choices
       choice_type('state', 8, 'the stick/slip state'), &
       choice_type('slip', 9, 'the slip')]
 
-end module shcontact_io_config_choices
+end module shcontact_input_config_choices

@@ -1,6 +1,6 @@
 !> Small text helpers for the input/output layer: numbers as the shortest text that reads back
 !> exactly, case folding, quoting for namelists and JSON.
-module shcontact_io_text
+module shcontact_core_text
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
@@ -188,4 +188,4 @@ contains
       q = q//'"'
    end function json_string
 
-end module shcontact_io_text
+end module shcontact_core_text

@@ -1,13 +1,13 @@
 !> Loading a configuration: defaults, then a case file or namelist text, then the command line
 !> overrides, then validation.
-module shcontact_io_config_load
+module shcontact_input_config_load
    use shcontact_core_error, only: error_type
-   use shcontact_io_files, only: directory_part
-   use shcontact_io_config_types, only: case_config_type
-   use shcontact_io_config_parser, only: assignment_type, assignment_list_type, read_lines, &
+   use shcontact_core_files, only: directory_part
+   use shcontact_input_config_types, only: case_config_type
+   use shcontact_input_config_parser, only: assignment_type, assignment_list_type, read_lines, &
       split_lines, parse_namelist, parse_override
-   use shcontact_io_config_assign, only: apply_assignment
-   use shcontact_io_config_validate, only: validate_config
+   use shcontact_input_config_assign, only: apply_assignment
+   use shcontact_input_config_validate, only: validate_config
    implicit none
    private
 
@@ -120,4 +120,4 @@ contains
       end do
    end subroutine apply_lines
 
-end module shcontact_io_config_load
+end module shcontact_input_config_load

@@ -1,5 +1,5 @@
 !> Time stamps and wall-clock time for the output layer.
-module shcontact_io_clock
+module shcontact_output_clock
    use shcontact_core_kinds, only: wp, i8
    implicit none
    private
@@ -65,4 +65,4 @@ contains
       t = real(count, wp)/real(max(rate, 1_i8), wp)
    end function wall_seconds
 
-end module shcontact_io_clock
+end module shcontact_output_clock

@@ -11,12 +11,12 @@
 !> matches the file it is written for. It is written under a temporary name and renamed when
 !> complete; a file without fields gets no sidecar (and loses a stale one, when that is a regular
 !> file written by shcontact: [[is_xdmf_sidecar]]; anything else is left alone).
-module shcontact_io_xdmf
+module shcontact_output_xdmf
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    use shcontact_core_strings, only: str_int
-   use shcontact_io_files, only: rename_file, delete_file, process_id, path_kind
-   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, h5_dataset_info
-   use shcontact_io_text, only: string_type
+   use shcontact_core_files, only: rename_file, delete_file, process_id, path_kind
+   use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, h5_dataset_info
+   use shcontact_core_text, only: string_type
    implicit none
    private
 
@@ -230,4 +230,4 @@ contains
          '" Format="HDF">'//ref//':/'//path//'</DataItem>'
    end subroutine write_item
 
-end module shcontact_io_xdmf
+end module shcontact_output_xdmf

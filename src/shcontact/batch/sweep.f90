@@ -18,7 +18,7 @@
 !>   used: a second run with the same output is refused, an existing directory is only taken
 !>   over with `resume` or `force`, and a symbolic link is never followed.
 !> * **Overlap.** While the threads solve a block, the first thread writes the previous
-!>   block's file (shcontact_case_checkpoint) and then joins them; with several threads a run
+!>   block's file (shcontact_batch_checkpoint) and then joins them; with several threads a run
 !>   has at least 8 blocks so that most of the writing overlaps the solving.
 !> * **Memory.** The block being solved and the block being written hold at most
 !>   `block_bytes` of results (element fields, strip tables, stages) together: a block is the
@@ -30,23 +30,23 @@
 !> * **Shards.** Shard I of N solves the contiguous slice of cases
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
-module shcontact_case_sweep
+module shcontact_batch_sweep
    !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
    use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_io_config, only: case_config_type, case_point_type, config_namelist, &
+   use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
-   use shcontact_io_results, only: run_info_type, merge_result_files, read_result_summary, &
+   use shcontact_output_results, only: run_info_type, merge_result_files, read_result_summary, &
       check_output_file
-   use shcontact_io_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
+   use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
       unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
       folder_not_directory
-   use shcontact_io_clock, only: iso_timestamp, wall_seconds
+   use shcontact_output_clock, only: iso_timestamp, wall_seconds
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: string_list_type
+   use shcontact_core_text, only: string_list_type
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
       case_not_run
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
@@ -54,7 +54,7 @@ module shcontact_case_sweep
       solve_kinematic_case, kinematic_state, contact_solver_type
    use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
       stage_bytes
-   use shcontact_case_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
+   use shcontact_batch_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
       read_manifest, write_text_file, read_text_file, clear_checkpoint
    implicit none
    private
@@ -776,4 +776,4 @@ contains
       t = trim(text)
    end function trim_text
 
-end module shcontact_case_sweep
+end module shcontact_batch_sweep

@@ -2,7 +2,7 @@
 !> to `units` (issue 15), so that k, m, n, eps_a or delta_r can be read without the docs. The
 !> text is found from the dataset's name and the group it is in (summary, geometry, normal,
 !> tangential, input, failures); doc/app.md lists the same layout.
-module shcontact_io_descriptions
+module shcontact_output_descriptions
    implicit none
    private
 
@@ -220,4 +220,4 @@ contains
       end select
    end function geometry_text
 
-end module shcontact_io_descriptions
+end module shcontact_output_descriptions

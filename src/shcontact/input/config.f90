@@ -13,29 +13,29 @@
 !> downstream code trusts the result.
 !>
 !> This module is the facade of the configuration subsystem; the work is done in
-!> `io/config/`: [[shcontact_io_config_limits]] (sizes), [[shcontact_io_config_sweep]] (axes
-!> and cases of a sweep), [[shcontact_io_config_types]] (the typed configuration and its
-!> defaults), [[shcontact_io_config_choices]] (the registry of the case file's own choices),
-!> [[shcontact_io_config_variables]] (the registry of the groups' variables),
-!> [[shcontact_io_config_parser]] (namelist text into assignments), [[shcontact_io_config_assign]]
+!> `input/config/`: [[shcontact_input_config_limits]] (sizes), [[shcontact_input_config_sweep]] (axes
+!> and cases of a sweep), [[shcontact_input_config_types]] (the typed configuration and its
+!> defaults), [[shcontact_input_config_choices]] (the registry of the case file's own choices),
+!> [[shcontact_input_config_variables]] (the registry of the groups' variables),
+!> [[shcontact_input_config_parser]] (namelist text into assignments), [[shcontact_input_config_assign]]
 !> (one assignment into the configuration: [[read_group_variable]], the one entry point that
-!> sets a variable from text), [[shcontact_io_config_validate]] (checks and derived settings),
-!> [[shcontact_io_config_writer]] (the resolved namelist) and [[shcontact_io_config_load]] (the
+!> sets a variable from text), [[shcontact_input_config_validate]] (checks and derived settings),
+!> [[shcontact_input_config_writer]] (the resolved namelist) and [[shcontact_input_config_load]] (the
 !> entry points).
-module shcontact_io_config
-   use shcontact_io_config_limits, only: path_len, name_len, max_sweep_values, max_cases, &
+module shcontact_input_config
+   use shcontact_input_config_limits, only: path_len, name_len, max_sweep_values, max_cases, &
       max_grid_cells
-   use shcontact_io_config_sweep, only: sweep_axis_type, case_point_type, n_sweep_axes, &
+   use shcontact_input_config_sweep, only: sweep_axis_type, case_point_type, n_sweep_axes, &
       sweep_axis_names, axis_geometry, axis_load, axis_tangential, case_point_value, &
       case_point_label, is_kinematic_input
-   use shcontact_io_config_types, only: case_config_type, normal_options_of, &
+   use shcontact_input_config_types, only: case_config_type, normal_options_of, &
       tangential_options_of, table_step_of
-   use shcontact_io_config_choices, only: load_mode_force, load_mode_approach, &
+   use shcontact_input_config_choices, only: load_mode_force, load_mode_approach, &
       load_mode_vertical, curvature_reference, precision_single, precision_double
-   use shcontact_io_config_assign, only: read_group_variable, stat_unknown_choice
-   use shcontact_io_config_validate, only: validate_config
-   use shcontact_io_config_writer, only: config_namelist
-   use shcontact_io_config_load, only: load_config, read_config_file, read_config_text, &
+   use shcontact_input_config_assign, only: read_group_variable, stat_unknown_choice
+   use shcontact_input_config_validate, only: validate_config
+   use shcontact_input_config_writer, only: config_namelist
+   use shcontact_input_config_load, only: load_config, read_config_file, read_config_text, &
       apply_override
    implicit none
    private
@@ -51,4 +51,4 @@ module shcontact_io_config
    public :: precision_single, precision_double
    public :: max_cases, max_grid_cells
 
-end module shcontact_io_config
+end module shcontact_input_config

@@ -1,18 +1,18 @@
 !> The registry of the namelist groups (issue 26): for every variable of every group its kind,
 !> units and help text (for messages, the resolved namelist and the documentation), the allowed
 !> values of the choice variables ([[variable_choices]], from the layers' option registries and
-!> shcontact_io_config_choices), and the lookups and phrases built on them. Ranges and defaults of
+!> shcontact_input_config_choices), and the lookups and phrases built on them. Ranges and defaults of
 !> the numbers are those of shcontact_core_ranges; test `registry` checks the configuration's
 !> defaults, the library's, doc/app.md's tables and the headers' option lists against them.
-module shcontact_io_config_variables
+module shcontact_input_config_variables
    use shcontact_core_choices, only: choice_type
-   use shcontact_io_config_limits, only: path_len, name_len
+   use shcontact_input_config_limits, only: path_len, name_len
    use shcontact_normal_option_registry, only: normal_methods => method_choices, &
       reduction_choices
    use shcontact_tangential_option_registry, only: tangential_methods => method_choices, &
       bound_choices, spin_model_choices, spin_flexibility_choices, correction_choices
    use shcontact_pipeline_preset, only: preset_choices
-   use shcontact_io_config_choices, only: side_choices, kinematics_mode_choices, &
+   use shcontact_input_config_choices, only: side_choices, kinematics_mode_choices, &
       load_mode_choices, curvature_choices, precision_choices, sweep_mode_choices, &
       format_choices, mirror_choices, field_choices
    implicit none
@@ -396,4 +396,4 @@ contains
       end do
    end function join_words
 
-end module shcontact_io_config_variables
+end module shcontact_input_config_variables

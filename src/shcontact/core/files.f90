@@ -2,7 +2,7 @@
 !>
 !> Output files are written under a temporary name and renamed when complete; checkpoints live
 !> in a directory next to the output. POSIX `rename` replaces the target atomically.
-module shcontact_io_files
+module shcontact_core_files
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_ptr, c_null_ptr, &
       c_associated, c_f_pointer, c_size_t
    use shcontact_core_error, only: error_type, fatal_error, stat_io
@@ -381,4 +381,4 @@ contains
       pid = int(c_getpid())
    end function process_id
 
-end module shcontact_io_files
+end module shcontact_core_files

@@ -3,15 +3,15 @@
 !> wrote, never a directory, pipe or device, a symbolic link or a foreign file only when forced;
 !> a result file read back (a shard, a checkpoint block) must have the layout its reader
 !> expects, dataset by dataset, before anything is read from it.
-module shcontact_io_output_checks
+module shcontact_output_output_checks
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
       stat_usage
    use shcontact_core_strings, only: str_int, control_characters
-   use shcontact_io_files, only: canonical_path, path_kind
-   use shcontact_io_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, &
+   use shcontact_core_files, only: canonical_path, path_kind
+   use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, &
       h5_read_attribute, h5_dataset_info
-   use shcontact_io_xdmf, only: xdmf_name, is_xdmf_sidecar
-   use shcontact_io_text, only: string_type
+   use shcontact_output_xdmf, only: xdmf_name, is_xdmf_sidecar
+   use shcontact_core_text, only: string_type
    use shcontact_case_result, only: summary_columns, n_summary_columns
    implicit none
    private
@@ -187,4 +187,4 @@ contains
    end subroutine check_dataset
 
 
-end module shcontact_io_output_checks
+end module shcontact_output_output_checks

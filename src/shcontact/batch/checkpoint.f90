@@ -1,13 +1,13 @@
 !> The checkpoint of a sweep: the block files in the work folder OUT.h5.partial/, their list
-!> `blocks.txt` and the other names shcontact gives there (shcontact_case_sweep describes the
+!> `blocks.txt` and the other names shcontact gives there (shcontact_batch_sweep describes the
 !> scheme). Only these names are ever written or removed in the folder.
-module shcontact_case_checkpoint
+module shcontact_batch_checkpoint
    use shcontact_core_error, only: error_type, fatal_error, stat_io
    use shcontact_core_textfile, only: text_line_type, read_text_lines
-   use shcontact_io_config, only: case_config_type
-   use shcontact_io_results, only: run_info_type, write_result_file
-   use shcontact_io_files, only: remove_directory, delete_file, file_exists, rename_file
-   use shcontact_io_text, only: string_list_type
+   use shcontact_input_config, only: case_config_type
+   use shcontact_output_results, only: run_info_type, write_result_file
+   use shcontact_core_files, only: remove_directory, delete_file, file_exists, rename_file
+   use shcontact_core_text, only: string_list_type
    use shcontact_case_result, only: case_result_type
    implicit none
    private
@@ -22,7 +22,7 @@ module shcontact_case_checkpoint
    !> Temporary name of the merged output inside the checkpoint directory (a kill during the
    !> final assembly leaves it there, where the next run removes it).
    character(len=*), parameter :: merged_temp_name = 'merged.h5.tmp'
-   !> The configuration of the run that made the checkpoint (shcontact_case_sweep's
+   !> The configuration of the run that made the checkpoint (shcontact_batch_sweep's
    !> `checkpoint_key`).
    character(len=*), parameter :: key_name = 'configuration.txt'
    !> The lock file of the work folder, held (flock) while a run uses the folder.
@@ -196,4 +196,4 @@ contains
       end if
    end subroutine clear_checkpoint
 
-end module shcontact_case_checkpoint
+end module shcontact_batch_checkpoint

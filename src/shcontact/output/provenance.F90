@@ -9,7 +9,7 @@
 !> `git describe --always --dirty --tags` (by hand: `fpm build --flag
 !> "-DSHCONTACT_GIT_REVISION=\"'$(git describe --always --dirty --tags)'\""`); a plain
 !> `fpm build` leaves it empty and the file says "unknown".
-module shcontact_io_provenance
+module shcontact_output_provenance
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_size_t, c_null_char
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    !$ use omp_lib, only: omp_get_max_threads
@@ -79,4 +79,4 @@ contains
       !$ n = omp_get_max_threads()
    end function available_threads
 
-end module shcontact_io_provenance
+end module shcontact_output_provenance

@@ -19,7 +19,7 @@
 !>     /cases/NNNNNN/patch_K/{geometry,normal,tangential}/...   per-case fields, when asked
 !>
 !> Every dataset has a `units` attribute ('1' for dimensionless numbers, '' for text) and a
-!> `long_name` saying what it is (shcontact_io_descriptions). Dimension scales (HDF5 H5DS) tie
+!> `long_name` saying what it is (shcontact_output_descriptions). Dimension scales (HDF5 H5DS) tie
 !> the tables to their coordinate: the summary columns to `summary/case`, the strip tables to
 !> their `y`, the element fields (pn, px, py, slip, state, x, xy) to the strip centres `y`
 !> along their strip dimension and to `element` along the other (xy's components to
@@ -27,12 +27,12 @@
 !> labelled, and the fields' `coordinates` attribute names x (2-D) and y. `xy` holds the
 !> element centres (x, y) interleaved, the mesh of the XDMF sidecar. The root also records
 !> provenance:
-!> git_revision, compiler, compiler_options, host, threads (shcontact_io_provenance).
-!> The final file of a run (a merge) gets an XDMF sidecar NAME.xmf (shcontact_io_xdmf) when it
+!> git_revision, compiler, compiler_options, host, threads (shcontact_output_provenance).
+!> The final file of a run (a merge) gets an XDMF sidecar NAME.xmf (shcontact_output_xdmf) when it
 !> holds element fields, so ParaView opens them directly. A merge
 !> of the files of one run is identical, dataset for dataset, to the file of an uninterrupted,
 !> unsharded run: the summary rows are gathered in case order and the per-case groups copied.
-module shcontact_io_results
+module shcontact_output_results
    use shcontact_core_kinds, only: wp, i1
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_version_info, only: shcontact_version
@@ -41,20 +41,20 @@ module shcontact_io_results
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, &
       state_adhesion, state_slip
-   use shcontact_io_config, only: case_config_type, read_config_text, n_sweep_axes, &
+   use shcontact_input_config, only: case_config_type, read_config_text, n_sweep_axes, &
       sweep_axis_names, axis_geometry, case_point_type, case_point_value, &
       case_point_label, precision_single
-   use shcontact_io_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
+   use shcontact_output_hdf5, only: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, &
       h5_close, h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists, h5_read, &
       h5_read_attribute, h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_delete_attribute
-   use shcontact_io_descriptions, only: describe_dataset
-   use shcontact_io_provenance, only: git_revision, build_compiler, build_flags, host_name, &
+   use shcontact_output_descriptions, only: describe_dataset
+   use shcontact_output_provenance, only: git_revision, build_compiler, build_flags, host_name, &
       available_threads
-   use shcontact_io_xdmf, only: write_xdmf_sidecar
-   use shcontact_io_files, only: delete_file
-   use shcontact_io_output_checks, only: check_output_file, check_layout
+   use shcontact_output_xdmf, only: write_xdmf_sidecar
+   use shcontact_core_files, only: delete_file
+   use shcontact_output_output_checks, only: check_output_file, check_layout
    use shcontact_core_strings, only: str_int
-   use shcontact_io_text, only: string_type, string_list_type
+   use shcontact_core_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used
    implicit none
@@ -1008,4 +1008,4 @@ contains
       end do
    end subroutine sort_failures
 
-end module shcontact_io_results
+end module shcontact_output_results

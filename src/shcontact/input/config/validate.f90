@@ -2,26 +2,26 @@
 !> the sweep for consistency, and the settings derived from others (the wheel origin of a
 !> MiniProf file, whether the pitch rate was given, the rules of kinematic mode). Messages
 !> name where the value was set, the group, the variable, the value and what is allowed.
-module shcontact_io_config_validate
+module shcontact_input_config_validate
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp, i8
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_strings, only: to_lower, str_int
-   use shcontact_io_text, only: format_real
+   use shcontact_core_text, only: format_real
    use shcontact_core_ranges, only: range_type, ranges, find_range, in_range, range_text, &
       max_grid_cells
    use shcontact_profile_reader, only: profile_file_format
-   use shcontact_io_config_limits, only: max_sweep_values, max_fields, max_cases
-   use shcontact_io_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
+   use shcontact_input_config_limits, only: max_sweep_values, max_fields, max_cases
+   use shcontact_input_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
       is_kinematic_input
-   use shcontact_io_config_types, only: case_config_type, origin, sweep_origin, choice_value, &
+   use shcontact_input_config_types, only: case_config_type, origin, sweep_origin, choice_value, &
       normal_options_of, tangential_options_of
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
-   use shcontact_io_config_variables, only: variables, k_choice
+   use shcontact_input_config_variables, only: variables, k_choice
    use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list
-   use shcontact_io_config_variables, only: variable_choices
-   use shcontact_io_config_choices, only: format_choices, mirror_choices, field_choices, &
+   use shcontact_input_config_variables, only: variable_choices
+   use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
       load_mode_choices, load_mode_force, load_mode_approach, &
       load_mode_vertical, sweep_list
    use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
@@ -501,4 +501,4 @@ contains
       end select
    end function load_axis_matches
 
-end module shcontact_io_config_validate
+end module shcontact_input_config_validate

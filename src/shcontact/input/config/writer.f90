@@ -1,15 +1,15 @@
 !> The resolved configuration printed as a namelist: every variable, one per line, with its
 !> units and help as a comment; reading the text back gives the same configuration.
-module shcontact_io_config_writer
+module shcontact_input_config_writer
    use shcontact_core_strings, only: str_int
    use shcontact_core_buffer, only: text_buffer_type
-   use shcontact_io_text, only: format_real, quote_string
-   use shcontact_io_config_limits, only: max_fields
-   use shcontact_io_config_sweep, only: sweep_axis_type, axis_index
+   use shcontact_core_text, only: format_real, quote_string
+   use shcontact_input_config_limits, only: max_fields
+   use shcontact_input_config_sweep, only: sweep_axis_type, axis_index
    use shcontact_core_choices, only: choice_type, choice_name, choice_list
    use shcontact_core_ranges, only: ranges, find_range, range_text
-   use shcontact_io_config_types, only: case_config_type, choice_value
-   use shcontact_io_config_variables, only: variable_info_type, variables, variable_choices, &
+   use shcontact_input_config_types, only: case_config_type, choice_value
+   use shcontact_input_config_variables, only: variable_info_type, variables, variable_choices, &
       k_choice, find_variable
    implicit none
    private
@@ -290,4 +290,4 @@ contains
       value = list%text()
    end function axis_text
 
-end module shcontact_io_config_writer
+end module shcontact_input_config_writer

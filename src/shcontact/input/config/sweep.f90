@@ -1,10 +1,10 @@
 !> The sweep of a run: the sweepable quantities (axes), the values of each axis, and the cases
 !> they span, either every combination ('grid') or the i-th value of every list ('list').
-module shcontact_io_config_sweep
+module shcontact_input_config_sweep
    use shcontact_core_kinds, only: wp
    use shcontact_core_choices, only: choice_name
-   use shcontact_io_config_limits, only: name_len
-   use shcontact_io_config_choices, only: sweep_grid, sweep_list
+   use shcontact_input_config_limits, only: name_len
+   use shcontact_input_config_choices, only: sweep_grid, sweep_list
    use shcontact_tangential_option_registry, only: bound_choices, spin_model_choices
    implicit none
    private
@@ -58,7 +58,7 @@ module shcontact_io_config_sweep
 
    !> `&sweep`: the axes, indexed as [[sweep_axis_names]].
    type :: sweep_config_type
-      !> `sweep_grid` or `sweep_list` (shcontact_io_config_choices).
+      !> `sweep_grid` or `sweep_list` (shcontact_input_config_choices).
       integer :: mode = sweep_grid
       type(sweep_axis_type) :: axes(n_sweep_axes)
    contains
@@ -296,4 +296,4 @@ contains
       end do
    end function axis_index
 
-end module shcontact_io_config_sweep
+end module shcontact_input_config_sweep

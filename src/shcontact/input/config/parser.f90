@@ -2,14 +2,14 @@
 !> checked (groups opened with `&name`, closed with `/`, each at most once), and every
 !> `name = value` becomes an [[assignment_type]] that remembers where it was written. A command
 !> line override `group%var=value` becomes an assignment the same way.
-module shcontact_io_config_parser
+module shcontact_input_config_parser
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_strings, only: to_lower, str_int, visible, control_characters
    use shcontact_core_textfile, only: text_line_type, read_text_lines
    use shcontact_core_buffer, only: text_buffer_type
-   use shcontact_io_text, only: quote_string, strip_quotes
-   use shcontact_io_config_limits, only: max_line_length
-   use shcontact_io_config_variables, only: variables, group_names, find_variable, join_words, &
+   use shcontact_core_text, only: quote_string, strip_quotes
+   use shcontact_input_config_limits, only: max_line_length
+   use shcontact_input_config_variables, only: variables, group_names, find_variable, join_words, &
       k_string, k_string_list, k_choice
    implicit none
    private
@@ -481,4 +481,4 @@ contains
       end do
    end function closing_quote
 
-end module shcontact_io_config_parser
+end module shcontact_input_config_parser
