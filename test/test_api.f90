@@ -30,7 +30,7 @@ module test_api
    use shcontact_input_config, only: case_config_type, case_point_type, load_config
    use shcontact_case_result, only: case_result_type
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
-      solve_stage, solve_case
+      solve_stage, solve_case, case_workspace_type
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_solve, &
       shcontact_last_error, shcontact_set_option, shcontact_patch, shcontact_create_arrays, &
       shcontact_field_size, shcontact_fields
@@ -180,7 +180,7 @@ contains
       type(run_setup_type) :: setup
       type(stage_type) :: stage
       type(patch_geometry_type), allocatable :: geometry(:)
-      type(march_workspace_type) :: ws
+      type(case_workspace_type) :: ws
       type(tangential_patch_type), allocatable :: tangential(:)
       type(case_result_type) :: app
       type(lib_error), allocatable :: err
@@ -197,7 +197,7 @@ contains
       call solve_geometry(setup, point, geometry, err)
       if (lib_failed(error, err)) return
       call solve_stage(setup, point, geometry, stage)
-      call solve_case(setup, point, stage, ws, tangential, app, .false.)
+      call solve_case(setup, point, stage, 1, ws, tangential, app, .false.)
       call check(error, app%summary%stat, 0, message='the app runner failed')
       if (allocated(error)) return
       call check(error, app%summary%main_patch == result%main_patch .and. &

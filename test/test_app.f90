@@ -23,6 +23,13 @@ module test_app
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used
    use shcontact_geometry_track, only: side_right, side_left
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_input_config, only: case_config_type, case_point_type, load_config, &
+      load_mode_vertical
+   use shcontact_case_result, only: case_result_type
+   use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
+      solve_stage, solve_case, case_workspace_type, tangential_patch_type
+   use shcontact_tangential_option_registry, only: bound_clipped, spin_geometric
    implicit none
    private
    public :: collect_app
@@ -86,7 +93,8 @@ contains
          new_unittest('kinematic_case_equals_library', test_kinematic_case), &
          new_unittest('kinematic_sweep', test_kinematic_sweep), &
          new_unittest('sweep_memory_bounded', test_memory_bound), &
-         new_unittest('both_wheels_equal_library', test_both_wheels) &
+         new_unittest('both_wheels_equal_library', test_both_wheels), &
+         new_unittest('prepared_workspace_reused_only_when_same', test_prepared_reuse) &
          ]
    end subroutine collect_app
 
@@ -1015,5 +1023,100 @@ contains
       case default; value = ieee_value(value, ieee_quiet_nan)
       end select
    end function library_column
+
+   !> The sweep's runner keeps each thread's FASTSIM_SH workspaces prepared from case to case
+   !> (shcontact_case_runner): a sequence of cases on one workspace, each differing from the one
+   !> before in one thing the preparation reads (friction, bound, spin model, the stage's load,
+   !> a stage of two patches, back to the first stage) or in the creepages only, gives every
+   !> case's summary bit for bit as a fresh workspace does. Each change of the preparation's
+   !> input changes the forces, so a key that missed it would fail here.
+   subroutine test_prepared_reuse(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n_cases = 11
+      type(case_config_type) :: config
+      type(run_setup_type) :: setup, vertical
+      type(case_point_type) :: base, point(n_cases)
+      type(stage_type) :: stages(3)
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(case_workspace_type), allocatable :: kept, fresh
+      type(tangential_patch_type), allocatable :: t_kept(:), t_fresh(:)
+      type(case_result_type) :: r_kept, r_fresh
+      type(lib_error), allocatable :: lerr
+      character(len=1) :: no_overrides(0)
+      real(wp), allocatable :: previous(:)
+      integer :: stage_of(n_cases), i
+
+      call load_config('', no_overrides, config, lerr)
+      if (.not. allocated(lerr)) call prepare_run(config, setup, lerr)
+      base = config%case_point(1)
+      if (.not. allocated(lerr)) call solve_geometry(setup, base, geometry, lerr)
+      if (allocated(lerr)) then
+         call test_failed(error, 'set-up: '//lerr%message)
+         return
+      end if
+      ! Stage 1: the headline case; stage 2: another normal force; stage 3: the vertical load
+      ! shared by the patches of the same position.
+      call solve_stage(setup, base, geometry, stages(1))
+      point(1) = base
+      point(1)%normal_force = 0.8_wp*base%normal_force
+      call solve_stage(setup, point(1), geometry, stages(2))
+      vertical = setup
+      vertical%load_mode = load_mode_vertical
+      point(1) = base
+      point(1)%vertical_force = base%normal_force
+      call solve_stage(vertical, point(1), geometry, stages(3))
+      do i = 1, 3
+         call check(error, stages(i)%stat, 0, message='stage '//char(48 + i)//' failed')
+         if (allocated(error)) return
+      end do
+      call check(error, size(stages(3)%normal) >= 2, message='stage 3 should load two patches')
+      if (allocated(error)) return
+
+      stage_of = [1, 1, 1, 1, 2, 1, 3, 3, 1, 1, 3]
+      point = base
+      point(2)%friction = 0.8_wp*base%friction
+      point(3)%friction = point(2)%friction
+      point(3)%bound = bound_clipped
+      point(4:) = point(3)
+      point(4)%spin_model = spin_geometric
+      point(5:) = point(4)
+      point(8)%friction = base%friction
+      point(9:) = point(8)
+      point(10)%nu_x = 0.5_wp*base%nu_x
+      point(11) = point(10)
+      allocate (kept)
+      do i = 1, n_cases
+         call solve_case(setup, point(i), stages(stage_of(i)), stage_of(i), kept, t_kept, &
+            r_kept, .false.)
+         allocate (fresh)
+         call solve_case(setup, point(i), stages(stage_of(i)), stage_of(i), fresh, t_fresh, &
+            r_fresh, .false.)
+         deallocate (fresh, t_fresh)
+         call check(error, r_kept%summary%stat == 0 .and. r_fresh%summary%stat == 0, &
+            message='case '//char(48 + mod(i, 10))//' failed')
+         if (allocated(error)) return
+         call check(error, same_bits(forces(r_kept), forces(r_fresh)), message='case '// &
+            char(48 + mod(i, 10))//' on the kept workspace differs from a fresh preparation')
+         if (allocated(error)) return
+         if (i > 1) then
+            call check(error, any(forces(r_kept) /= previous), message='case '// &
+               char(48 + mod(i, 10))//' gives the forces of the case before: it tests nothing')
+            if (allocated(error)) return
+         end if
+         previous = forces(r_kept)
+      end do
+
+   contains
+
+      !> The forces and moments of a result.
+      pure function forces(r) result(f)
+         type(case_result_type), intent(in) :: r
+         real(wp) :: f(10)
+         f = [r%summary%fx, r%summary%fy, r%summary%mz, r%summary%fx_norm, r%summary%fy_norm, &
+            r%summary%coulomb_ratio, r%summary%adhesion_fraction, r%summary%fx_total, &
+            r%summary%fy_total, r%summary%fz_total]
+      end function forces
+
+   end subroutine test_prepared_reuse
 
 end module test_app

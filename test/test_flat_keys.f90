@@ -23,7 +23,7 @@ module test_flat_keys
       k_real, k_int
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_case_runner, only: run_setup_type, prepare_run, stage_type, solve_geometry, &
-      solve_stage, solve_case, solve_kinematic_case, march_workspace_type, tangential_patch_type
+      solve_stage, solve_case, solve_kinematic_case, case_workspace_type, tangential_patch_type
    use shcontact_case_result, only: case_result_type, case_summary_type, case_summary, &
       summary_value, summary_columns, n_summary_columns
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
@@ -188,7 +188,7 @@ contains
       type(case_point_type) :: p
       type(patch_geometry_type), allocatable :: geometry(:)
       type(stage_type) :: stage
-      type(march_workspace_type) :: ws
+      type(case_workspace_type) :: ws
       type(tangential_patch_type), allocatable :: tangential(:)
       type(contact_solver_type) :: solver
       type(lib_error), allocatable :: err
@@ -202,7 +202,7 @@ contains
             call solve_geometry(setup, p, geometry, err)
             if (.not. allocated(err)) then
                call solve_stage(setup, p, geometry, stage)
-               call solve_case(setup, p, stage, ws, tangential, result, .false.)
+               call solve_case(setup, p, stage, 1, ws, tangential, result, .false.)
             end if
          end if
       end if

@@ -50,7 +50,7 @@ module shcontact_batch_sweep
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
       case_not_run
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
-      solve_stage, solve_case, march_workspace_type, tangential_patch_type, &
+      solve_stage, solve_case, case_workspace_type, tangential_patch_type, &
       solve_kinematic_case, kinematic_state, contact_solver_type
    use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
       stage_bytes
@@ -343,7 +343,7 @@ contains
       character(len=*), intent(in) :: dir
       type(sweep_outcome_type), intent(inout) :: outcome
       type(error_type), allocatable, intent(out) :: error
-      type(march_workspace_type), allocatable :: workspaces(:)
+      type(case_workspace_type), allocatable :: workspaces(:)
       type(thread_solutions_type), allocatable :: solutions(:)
       type(case_result_type), allocatable :: results(:)
       type(string_list_type) :: blocks
@@ -505,7 +505,7 @@ contains
       type(geometry_set_type), intent(in) :: common
       integer, intent(in) :: cases(:)
       type(case_result_type), intent(inout) :: results(:)
-      type(march_workspace_type), intent(inout) :: workspaces(:)
+      type(case_workspace_type), intent(inout) :: workspaces(:)
       type(thread_solutions_type), intent(inout) :: solutions(:)
       logical, intent(in) :: fields
       integer, intent(in) :: n_threads
@@ -617,8 +617,8 @@ contains
       !$omp end parallel do
 
       !$omp parallel default(none) num_threads(n_threads) &
-      !$omp shared(cases, stages, stage_of, results, workspaces, solutions, setup, config, &
-      !$omp fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
+      !$omp shared(cases, stages, stage_of, load_keys, results, workspaces, solutions, setup, &
+      !$omp config, fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
       !$omp pending, dir, blocks, info, write_error) private(i, me, report)
       me = 1
       !$ me = omp_get_thread_num() + 1
@@ -627,7 +627,7 @@ contains
       !$omp do schedule(dynamic, 4)
       do i = 1, nb
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
-            workspaces(me), solutions(me)%patches, results(i), fields)
+            load_keys(stage_of(i)), workspaces(me), solutions(me)%patches, results(i), fields)
          call keep_stored(results(i), keep_geometry, keep_strips)
          !$omp atomic capture
          done = done + 1

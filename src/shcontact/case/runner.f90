@@ -10,6 +10,16 @@
 !> so a case gives the library's numbers bit for bit. None of these procedures print or touch
 !> global state, so cases can be solved by several threads at once.
 !>
+!> **Prepared workspaces.** Each thread keeps a [[case_workspace_type]]: one FASTSIM_SH
+!> workspace per patch, with what it was prepared for (`prepare_fastsim_sh` reads the patch's
+!> normal solution, the material and the tangential options, nothing else). [[solve_case]]
+!> prepares a patch's workspace again only when one of these differs from the last case's on
+!> that thread, then calls `solve_prepared`: the normal solution is named by its stage's key
+!> (the run's first case with that t_y, roll and load), the material (with the case's
+!> friction) and the options (with the case's bound and spin model) are compared bit for bit,
+!> whole. A sweep hands its cases out in grid order, so consecutive cases of a thread mostly
+!> share the preparation. The result is that of a fresh preparation, bit for bit.
+!>
 !> **Kinematic cases** (`&kinematics mode = 'on'`) are solved by the library's solver object
 !> ([[solve_kinematic_case]] → `contact_solver_type%solve_kinematic`), so that the program gives
 !> exactly what a vehicle code calling the library gets: the yawed contact search, the
@@ -18,7 +28,8 @@
 !> solver reuses the geometry and the normal solution of consecutive cases that share them.
 module shcontact_case_runner
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_strings, only: str_int
    use shcontact_core_material, only: material_type
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_source, only: load_profile
@@ -32,8 +43,10 @@ module shcontact_case_runner
    use shcontact_normal_loading, only: normal_contact_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_option_registry, only: method_fastsim
+   use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use shcontact_tangential_creepage, only: creepage_type
-   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_march, only: march_workspace_type, solve_prepared
    use shcontact_pipeline_load, only: contact_load_type
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
@@ -47,7 +60,7 @@ module shcontact_case_runner
    private
 
    public :: run_setup_type, stage_type, prepare_run, solve_geometry, solve_stage
-   public :: solve_case, march_workspace_type, tangential_patch_type
+   public :: solve_case, case_workspace_type, tangential_patch_type
    public :: solve_kinematic_case, kinematic_state, contact_solver_type
 
    !> What every case of a run shares.
@@ -84,6 +97,26 @@ module shcontact_case_runner
       !> Rigid vertical approach Δz of the wheel (mm), vertical load only.
       real(wp) :: dz = 0.0_wp
    end type stage_type
+
+   !> Words of the bit patterns that key a preparation.
+   integer, parameter :: options_words = storage_size(tangential_options_type())/storage_size(0)
+   integer, parameter :: material_words = storage_size(material_type())/storage_size(0)
+
+   !> A FASTSIM_SH workspace and what it was prepared for.
+   type :: prepared_patch_type
+      type(march_workspace_type) :: ws
+      !> The key of the stage whose patch's normal solution it holds (0: nothing prepared).
+      integer :: stage = 0
+      !> The bits of the tangential options and of the material it was prepared with.
+      integer :: options(options_words) = 0
+      integer :: material(material_words) = 0
+   end type prepared_patch_type
+
+   !> A thread's tangential workspaces, one per patch (patch k of a stage is prepared in
+   !> patch(k) only), reused from case to case (module text).
+   type :: case_workspace_type
+      type(prepared_patch_type) :: patch(max_patches)
+   end type case_workspace_type
 
 contains
 
@@ -283,15 +316,18 @@ contains
 
    !> The tangential solution of one case on its stage, and its summary. `fields` keeps the
    !> geometry, normal and tangential solutions in the result.
-   subroutine solve_case(setup, point, stage, ws, tangential, result, fields)
+   subroutine solve_case(setup, point, stage, stage_key, ws, tangential, result, fields)
       !> Shared data.
       type(run_setup_type), intent(in) :: setup
       !> The case inputs (friction, bound, spin model, creepages).
       type(case_point_type), intent(in) :: point
       !> Its geometry and normal solution.
       type(stage_type), intent(in) :: stage
-      !> The thread's tangential workspace, reused from case to case.
-      type(march_workspace_type), intent(inout) :: ws
+      !> The stage's name in the run, the same for every stage with the same normal solution
+      !> and different for every other (the sweep: its first case); 0 prepares afresh.
+      integer, intent(in) :: stage_key
+      !> The thread's tangential workspaces, reused from case to case (module text).
+      type(case_workspace_type), intent(inout) :: ws
       !> The thread's tangential solutions, one per patch, reused from case to case.
       type(tangential_patch_type), allocatable, intent(inout) :: tangential(:)
       !> The result (summary%stat > 0 on failure, with a message).
@@ -324,8 +360,8 @@ contains
             tangential(k) = tangential_patch_type()
             cycle
          end if
-         call solve_patch_stage(ws, stage%normal(k), material, creepage, options, &
-            tangential(k), k, n, error)
+         call solve_patch(ws%patch(k), stage_key, k, n, stage%normal(k), material, options, &
+            creepage, tangential(k), error)
       end do
       if (allocated(error)) then
          result%summary%stat = error%stat
@@ -342,5 +378,51 @@ contains
          result%tangential = tangential(1:n)
       end if
    end subroutine solve_case
+
+   !> Loaded patch k of n on its prepared workspace ([[solve_patch_stage]]'s numbers):
+   !> FASTSIM_SH is prepared again only when the stage, the options or the material differ from
+   !> the workspace's; classical FASTSIM is solved afresh.
+   subroutine solve_patch(prepared, stage_key, k, n, normal, material, options, creepage, &
+         tangential, error)
+      !> The patch's workspace and what it holds.
+      type(prepared_patch_type), intent(inout) :: prepared
+      !> The stage's key (0: prepare afresh), the patch number and the number of patches.
+      integer, intent(in) :: stage_key, k, n
+      !> The patch's normal solution.
+      type(normal_patch_type), intent(in) :: normal
+      !> The case's material and options.
+      type(material_type), intent(in) :: material
+      type(tangential_options_type), intent(in) :: options
+      !> The case's creepages.
+      type(creepage_type), intent(in) :: creepage
+      !> The patch's solution.
+      type(tangential_patch_type), intent(inout) :: tangential
+      !> Set on failure (prefixed with the patch number when n > 1).
+      type(error_type), allocatable, intent(out) :: error
+      integer :: options_bits(options_words), material_bits(material_words)
+
+      if (options%method == method_fastsim .or. stage_key == 0) then
+         prepared%stage = 0
+         call solve_patch_stage(prepared%ws, normal, material, creepage, options, tangential, &
+            k, n, error)
+         return
+      end if
+      options_bits = transfer(options, options_bits)
+      material_bits = transfer(material, material_bits)
+      if (prepared%stage /= stage_key .or. any(prepared%options /= options_bits) .or. &
+          any(prepared%material /= material_bits)) then
+         prepared%stage = 0
+         call prepare_fastsim_sh(prepared%ws, normal, material, options, error)
+         if (allocated(error)) then
+            if (n > 1) call prefix_error(error, 'patch '//str_int(k))
+            return
+         end if
+         prepared%stage = stage_key
+         prepared%options = options_bits
+         prepared%material = material_bits
+      end if
+      call solve_prepared(prepared%ws, creepage, tangential, error)
+      if (allocated(error) .and. n > 1) call prefix_error(error, 'patch '//str_int(k))
+   end subroutine solve_patch
 
 end module shcontact_case_runner
