@@ -4,6 +4,7 @@
 module bench_timing
    use, intrinsic :: iso_fortran_env, only: int64
    use shcontact, only: wp
+   use shcontact_math_statistics, only: median
    implicit none
    private
 
@@ -138,29 +139,10 @@ contains
    end function calibrated_batch
 
    !> Median of a sample (the mean of the two middle values for an even count).
-   function median_of(samples) result(median)
+   function median_of(samples) result(median_value)
       real(wp), intent(in) :: samples(:)
-      real(wp) :: median
-      real(wp) :: sorted(size(samples)), key
-      integer :: i, j, n
-
-      n = size(samples)
-      sorted = samples
-      do i = 2, n
-         key = sorted(i)
-         j = i - 1
-         do while (j >= 1)
-            if (sorted(j) <= key) exit
-            sorted(j + 1) = sorted(j)
-            j = j - 1
-         end do
-         sorted(j + 1) = key
-      end do
-      if (mod(n, 2) == 1) then
-         median = sorted((n + 1)/2)
-      else
-         median = 0.5_wp*(sorted(n/2) + sorted(n/2 + 1))
-      end if
+      real(wp) :: median_value
+      median_value = median(samples)
    end function median_of
 
 end module bench_timing

@@ -21,6 +21,7 @@
 !>   10 % of the curvature of a 300 mm rail crown.
 module shcontact_profile_diagnostics
    use shcontact_core_kinds, only: wp
+   use shcontact_math_statistics, only: median
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type
    use shcontact_profile_points, only: profile_type
@@ -273,28 +274,5 @@ contains
       end do
    end subroutine head_offset
 
-   !> The median of a few thousand values (insertion sort of a copy).
-   pure real(wp) function median(values)
-      real(wp), intent(in) :: values(:)
-      real(wp) :: v(size(values)), t
-      integer :: i, j, n
-      v = values
-      n = size(v)
-      do i = 2, n
-         t = v(i)
-         j = i - 1
-         do while (j >= 1)
-            if (v(j) <= t) exit
-            v(j + 1) = v(j)
-            j = j - 1
-         end do
-         v(j + 1) = t
-      end do
-      if (mod(n, 2) == 1) then
-         median = v((n + 1)/2)
-      else
-         median = 0.5_wp*(v(n/2) + v(n/2 + 1))
-      end if
-   end function median
-
 end module shcontact_profile_diagnostics
+
