@@ -149,7 +149,8 @@ contains
       ! The figure doc/app.md sizes jobs with (and the memory test reads).
       if (cli%verbose) write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
          str_int(outcome%most_block_cases)//' case(s), '// &
-         str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory'
+         str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
+         str_int(outcome%block_files)//' block file(s) merged'
       if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
          'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM)'
    end function run_command

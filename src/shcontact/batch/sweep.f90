@@ -9,21 +9,26 @@
 !>   library solver object per thread, which reuses the geometry and normal solution of
 !>   consecutive cases that share them (shcontact_case_runner).
 !> * **Checkpoints.** Next to the output OUT.h5 a directory OUT.h5.partial/ receives one
-!>   complete result file per finished block (written under a temporary name, renamed when
-!>   complete) and a list of them, `blocks.txt`. A run that is killed keeps every finished
+!>   complete result file per checkpoint block (written under a temporary name, renamed when
+!>   complete) and a list of them, `blocks.txt`: with `checkpoint_cases` one per that many
+!>   cases; automatically (the default) the solved cases are held in memory and written as one
+!>   block after about 5 s of solving or when they fill half of `block_bytes`, and a run that
+!>   never wrote a block (a short one) writes OUT.h5 straight from memory, the same file. A
+!>   run that is killed keeps every written
 !>   block readable; `resume` solves only the missing cases. At the end the blocks are merged
 !>   into OUT.h5 (again through a temporary name) and the directory is removed, so a failed
 !>   or interrupted run never leaves a partial file under the final name. The directory is
 !>   made by the run (mkdir, atomic) and locked (flock on OUT.h5.partial/lock) while it is
 !>   used: a second run with the same output is refused, an existing directory is only taken
 !>   over with `resume` or `force`, and a symbolic link is never followed.
-!> * **Overlap.** While the threads solve a block, the first thread writes the previous
-!>   block's file (shcontact_batch_checkpoint) and then joins them; with several threads a run
-!>   has at least 8 blocks so that most of the writing overlaps the solving.
-!> * **Memory.** The block being solved and the block being written hold at most
-!>   `block_bytes` of results (element fields, strip tables, stages) together: a block is the
-!>   smaller of what takes about 5 s (or `checkpoint_cases`) and what fits in half the budget
-!>   at the largest size per case seen so far (shcontact_case_memory), so a sweep that stores
+!> * **Overlap.** While the threads solve a block, the first thread writes the checkpoint
+!>   block due (shcontact_batch_checkpoint) and then joins them.
+!> * **Memory.** The blocks held, the block being solved and the block being written hold at
+!>   most `block_bytes` of results (element fields, strip tables, stages) together: a block is
+!>   the smaller of what takes about 0.5 s (or `checkpoint_cases`) and what fits in half the
+!>   budget at the largest size per case seen so far (shcontact_case_memory; a stage that all
+!>   cases of a block share counts once), the held blocks are written before they and the next
+!>   block would pass half the budget, so a sweep that stores
 !>   the fields runs in bounded memory whatever its length and thread count. A result keeps
 !>   only what the file stores (the shared geometry and unstored strip tables are dropped as
 !>   soon as the case is solved).
@@ -40,6 +45,7 @@ module shcontact_batch_sweep
    use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
    use shcontact_output_results, only: run_info_type, merge_result_files, read_result_summary, &
+      write_run_file, &
       check_output_file
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
       unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
@@ -122,9 +128,12 @@ module shcontact_batch_sweep
       !> block had ([[sweep_options_type]]%block_bytes bounds two blocks together).
       integer(int64) :: most_block_bytes = 0
       integer :: most_block_cases = 0
+      !> Checkpoint block files the output was assembled from (0: written straight from memory).
+      integer :: block_files = 0
    end type sweep_outcome_type
 
-   !> Automatic block size: aim at this many seconds per block.
+   !> Automatic checkpoints: the solved blocks held in memory are written as one block file
+   !> after about this many seconds of solving (blocks are solved a tenth of it at a time).
    real(wp), parameter :: block_seconds = 5.0_wp
 
    !> Geometry of one wheelset position (or why there is none).
@@ -144,8 +153,11 @@ module shcontact_batch_sweep
 
    !> A solved block whose checkpoint file is still to be written: the first thread writes it
    !> while the others solve the next block.
+   !> Also the blocks held in memory until they are written (automatic checkpoints).
    type :: pending_block_type
       logical :: waiting = .false.
+      !> The cases and their results (the first n of the arrays).
+      integer :: n = 0
       integer, allocatable :: cases(:)
       type(case_result_type), allocatable :: results(:)
    end type pending_block_type
@@ -348,12 +360,12 @@ contains
       type(case_result_type), allocatable :: results(:)
       type(string_list_type) :: blocks
       type(stage_cache_type) :: cache
-      type(pending_block_type) :: pending
+      type(pending_block_type) :: pending, held
       integer, allocatable :: todo(:)
       integer :: n, n_done, next, block, nb, i
-      integer(int64) :: block_used, per_case_bytes
-      logical :: keep_geometry, keep_strips
-      real(wp) :: t0, per_case, per_block
+      integer(int64) :: block_used, per_case_bytes, fixed_bytes, held_bytes
+      logical :: keep_geometry, keep_strips, automatic
+      real(wp) :: t0, per_case, per_block, held_seconds
 
       n = outcome%n_cases
       if (.not. options%write_output) then
@@ -388,6 +400,13 @@ contains
       keep_geometry = config%wants_field('geometry') .and. .not. common_geometry
       keep_strips = config%wants_field('strips')
       per_case_bytes = 0
+      fixed_bytes = 0
+      held_bytes = 0
+      held_seconds = 0.0_wp
+      ! Automatic checkpoints: the solved blocks are held in memory and written as one block
+      ! file only when they took block_seconds or fill half the memory budget; a run that never
+      ! needed one writes its output straight from memory.
+      automatic = config%output%checkpoint_cases <= 0
       next = 1
       block = max(16, 4*outcome%n_threads)
       if (config%output%checkpoint_cases > 0) block = config%output%checkpoint_cases
@@ -404,12 +423,13 @@ contains
          call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
             results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
             outcome%last - outcome%first + 1, keep_geometry, keep_strips, cache, block_used, &
-            pending, dir, blocks, info, error)
+            fixed_bytes, pending, dir, blocks, info, error)
          if (allocated(error)) return
          per_case = (wall_seconds() - t0)/nb
+         held_seconds = held_seconds + per_case*nb
          ! The largest share of a case seen so far (its fields and its stage's).
          per_case_bytes = max(per_case_bytes, block_used/nb + 1)
-         outcome%most_block_bytes = max(outcome%most_block_bytes, block_used)
+         outcome%most_block_bytes = max(outcome%most_block_bytes, block_used + fixed_bytes)
          outcome%most_block_cases = max(outcome%most_block_cases, nb)
          if (pending%waiting) then
             pending%waiting = .false.
@@ -423,9 +443,20 @@ contains
          end do
          n_done = n_done + nb
          if (options%write_output) then
-            pending%cases = todo(next:next + nb - 1)
-            call move_alloc(results, pending%results)
-            pending%waiting = .true.
+            call hold(held, todo(next:next + nb - 1), results)
+            held_bytes = held_bytes + block_used
+            ! Written while the next block is solved (the block being written and the blocks
+            ! held or being solved within block_bytes together).
+            if (.not. automatic .or. held_seconds >= block_seconds .or. &
+                2*(held_bytes + fixed_bytes + block*per_case_bytes) > options%block_bytes) then
+               call move_alloc(held%cases, pending%cases)
+               call move_alloc(held%results, pending%results)
+               pending%n = held%n
+               pending%waiting = .true.
+               held%n = 0
+               held_bytes = 0
+               held_seconds = 0.0_wp
+            end if
          else if (associated(options%progress)) then
             call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
          end if
@@ -433,21 +464,28 @@ contains
          if (config%output%checkpoint_cases > 0) then
             block = config%output%checkpoint_cases
          else if (per_case > 0.0_wp) then
-            ! About block_seconds per block; with several threads at least 8 blocks, so that
-            ! writing a block overlaps with solving the next (a block file costs about 5 ms,
-            ! which one thread would only add).
-            per_block = block_seconds/per_case
-            if (outcome%n_threads > 1) per_block = min(per_block, real(size(todo), wp)/8.0_wp)
+            ! A tenth of block_seconds per block: the held blocks are written after about
+            ! block_seconds, while the next block is solved.
+            per_block = 0.1_wp*block_seconds/per_case
             block = int(min(1.0e6_wp, max(real(4*outcome%n_threads, wp), per_block)))
          end if
          ! The block being solved and the one being written together within block_bytes.
          block = int(min(int(block, int64), max(int(outcome%n_threads, int64), &
-            options%block_bytes/(2*per_case_bytes))))
+            max(0_int64, options%block_bytes - 2*fixed_bytes)/(2*per_case_bytes))))
       end do
       if (pending%waiting) then
-         call commit_block(dir, blocks, info, config, pending%cases, pending%results, error)
+         call commit_block(dir, blocks, info, config, pending%cases(1:pending%n), &
+            pending%results(1:pending%n), error)
          if (allocated(error)) return
          deallocate (pending%results)
+         if (associated(options%progress)) call options%progress(n_done, &
+            outcome%last - outcome%first + 1, .true.)
+      end if
+      if (held%n > 0 .and. blocks%n > 0) then
+         call commit_block(dir, blocks, info, config, held%cases(1:held%n), &
+            held%results(1:held%n), error)
+         if (allocated(error)) return
+         held%n = 0
          if (associated(options%progress)) call options%progress(n_done, &
             outcome%last - outcome%first + 1, .true.)
       end if
@@ -460,12 +498,57 @@ contains
          return
       end if
       if (.not. options%write_output) return
-      call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
-         info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
-         temp_name=dir//'/'//merged_temp_name, force=options%force)
+      outcome%block_files = blocks%n
+      if (held%n > 0) then
+         ! Every case in memory, no block file written: the output straight from the results.
+         call write_run_file(outcome%output, info, config, held%cases(1:held%n), &
+            held%results(1:held%n), error, &
+            temp_name=dir//'/'//merged_temp_name, force=options%force)
+      else
+         call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
+            info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
+            temp_name=dir//'/'//merged_temp_name, force=options%force)
+      end if
       if (allocated(error)) return
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
+
+   !> Append a solved block (cases and results, which are moved) to the blocks held in memory
+   !> (their arrays grow by doubling, so that a result is moved about twice on average).
+   subroutine hold(held, cases, results)
+      type(pending_block_type), intent(inout) :: held
+      integer, intent(in) :: cases(:)
+      type(case_result_type), intent(inout) :: results(:)
+      type(case_result_type), allocatable :: grown(:)
+      integer, allocatable :: grown_cases(:)
+      integer :: i, capacity
+      if (.not. allocated(held%results)) allocate (held%cases(0), held%results(0))
+      if (held%n + size(cases) > size(held%results)) then
+         capacity = max(held%n + size(cases), 2*size(held%results))
+         allocate (grown(capacity), grown_cases(capacity))
+         do i = 1, held%n
+            call move_result(held%results(i), grown(i))
+         end do
+         grown_cases(1:held%n) = held%cases(1:held%n)
+         call move_alloc(grown, held%results)
+         call move_alloc(grown_cases, held%cases)
+      end if
+      do i = 1, size(cases)
+         call move_result(results(i), held%results(held%n + i))
+      end do
+      held%cases(held%n + 1:held%n + size(cases)) = cases
+      held%n = held%n + size(cases)
+   end subroutine hold
+
+   !> Move a result: `to` receives it, `from` is left empty (its arrays freed at once, so that
+   !> holding blocks never needs two copies of their fields).
+   subroutine move_result(from, to)
+      type(case_result_type), intent(inout) :: from
+      type(case_result_type), intent(out) :: to
+      type(case_result_type) :: empty
+      to = from
+      from = empty
+   end subroutine move_result
 
    !> "case i: message" (just the message for a one-case run).
    function failure_text(outcome, failure) result(text)
@@ -497,8 +580,8 @@ contains
    !> each by one thread.
    subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
                           solutions, fields, n_threads, options, done_before, total, &
-                          keep_geometry, keep_strips, cache, bytes, pending, dir, blocks, &
-                          info, write_error)
+                          keep_geometry, keep_strips, cache, bytes, fixed, pending, dir, &
+                          blocks, info, write_error)
       type(run_setup_type), intent(in) :: setup
       type(case_config_type), intent(in) :: config
       logical, intent(in) :: common_geometry
@@ -515,8 +598,10 @@ contains
       logical, intent(in) :: keep_geometry, keep_strips
       !> The stage of the last case of the previous block; on return that of this block.
       type(stage_cache_type), intent(inout) :: cache
-      !> Bytes of the block's results and stages.
+      !> Bytes of the block's results and stages but its largest stage, which is `fixed`: a
+      !> block that shares one stage holds its bytes once, whatever its number of cases.
       integer(int64), intent(out) :: bytes
+      integer(int64), intent(inout) :: fixed
       !> The previous block, written to `dir` (listed in `blocks`) by the first thread while the
       !> others start on this one, when it is waiting.
       type(pending_block_type), intent(in) :: pending
@@ -532,6 +617,7 @@ contains
       type(error_type), allocatable :: error
       logical, allocatable :: cached(:), needed(:)
       integer :: i, k, nb, done, me, report
+      integer(int64) :: largest
       logical :: has_progress
 
       nb = size(cases)
@@ -546,7 +632,7 @@ contains
          me = 1
          !$ me = omp_get_thread_num() + 1
          if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
-            pending%cases, pending%results, write_error)
+            pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
          !$omp do schedule(dynamic, 4)
          do i = 1, nb
             call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
@@ -623,7 +709,7 @@ contains
       me = 1
       !$ me = omp_get_thread_num() + 1
       if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
-         pending%cases, pending%results, write_error)
+         pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
       !$omp do schedule(dynamic, 4)
       do i = 1, nb
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
@@ -641,6 +727,9 @@ contains
       do k = 1, size(stages)
          bytes = bytes + stage_bytes(stages(k))
       end do
+      largest = maxval([(stage_bytes(stages(k)), k=1, size(stages))])
+      fixed = max(fixed, largest)
+      bytes = bytes - largest
       cache%key = load_keys(stage_of(nb))
       call move_alloc(stages(stage_of(nb))%geometry, cache%stage%geometry)
       call move_alloc(stages(stage_of(nb))%normal, cache%stage%normal)

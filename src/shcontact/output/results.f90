@@ -60,7 +60,8 @@ module shcontact_output_results
    implicit none
    private
 
-   public :: run_info_type, write_result_file, merge_result_files, read_result_summary
+   public :: run_info_type, write_result_file, write_run_file, merge_result_files, &
+      read_result_summary
    public :: check_output_file
    public :: case_group_name, units_text, sign_convention_text
 
@@ -841,7 +842,6 @@ contains
       integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest, k
       type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
-      type(string_type), allocatable :: groups(:)
       logical :: partial, src_has_cases
 
       partial = .false.
@@ -976,16 +976,52 @@ contains
       end if
       call h5_commit(out, error)
       if (allocated(error)) return
+      call finish_output(output, order, n_first, error)
+   end subroutine merge_result_files
+
+   !> Write the output of a run straight from its results, as [[merge_result_files]] would
+   !> assemble it from block files holding them (a run that never needed a checkpoint).
+   subroutine write_run_file(output, info, config, indices, results, error, temp_name, force)
+      !> The output file (written under `temp_name`, renamed when complete).
+      character(len=*), intent(in) :: output
+      !> Run information (header, profiles, common geometry).
+      type(run_info_type), intent(in) :: info
+      !> The configuration (fields, compression, sweep axes).
+      type(case_config_type), intent(in) :: config
+      !> Case numbers of the results, ascending.
+      integer, intent(in) :: indices(:)
+      !> The results.
+      type(case_result_type), intent(in) :: results(:)
+      !> Set on failure; no file is left under `output` then.
+      type(error_type), allocatable, intent(out) :: error
+      !> Temporary name of the file while it is written.
+      character(len=*), intent(in) :: temp_name
+      !> Replace an output (or sidecar) that shcontact did not write ([[check_output_file]]).
+      logical, intent(in), optional :: force
+      call check_output_file(output, error, force=force)
+      if (allocated(error)) return
+      call write_result_file(output, info, config, indices, results, error, temp_name)
+      if (allocated(error)) return
+      call finish_output(output, indices, info%n_cases, error)
+   end subroutine write_run_file
+
+   !> The XDMF sidecar of a complete output holding cases `order` of a run of `n_cases`; on
+   !> failure the output goes too (no output from a failed command).
+   subroutine finish_output(output, order, n_cases, error)
+      character(len=*), intent(in) :: output
+      integer, intent(in) :: order(:), n_cases
+      type(error_type), allocatable, intent(out) :: error
+      type(string_type), allocatable :: groups(:)
+      integer :: i
       allocate (groups(size(order)))
       do i = 1, size(order)
-         groups(i)%text = case_group_name(order(i), n_first)
+         groups(i)%text = case_group_name(order(i), n_cases)
       end do
       call write_xdmf_sidecar(output, order, groups, error)
-      ! No output from a failed command: the file this call has just written goes too.
       if (allocated(error)) then
          if (delete_file(output)) continue
       end if
-   end subroutine merge_result_files
+   end subroutine finish_output
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)
