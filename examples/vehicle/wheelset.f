@@ -6,9 +6,11 @@ C     Degrees of freedom: lateral shift Y (m) and yaw angle PSI (rad) of
 C     the wheelset; the frame moves straight at speed V. Suspension:
 C     lateral spring KY (N/m) and yaw spring KPSI (N m/rad) with dampers
 C     CY, CPSI to the frame. Contact: S1002 wheels on UIC60 rails 1:40,
-C     one handle per wheel (ISIDE 1 right, -1 left), vertical wheel load
-C     64.7 kN (SHC_LOAD_VERTICAL_FORCE), creepages from the wheelset's
-C     motion (SHC_SOLVE_KIN). The wheelset turns about its axle at the
+C     one wheelset handle for both wheels (SHC_CREATE_WS), vertical load
+C     64.7 kN per wheel (SHC_LOAD_VERTICAL_FORCE), creepages from the
+C     wheelset's motion, one call per step for both wheels
+C     (SHC_SOLVE_WS: the forces on the wheelset and their yaw moment;
+C     SHC_WS_WHEEL: each wheel's values). The wheelset turns about its axle at the
 C     speed of pure rolling on the centred wheelset's radius; its roll
 C     angle, vertical and longitudinal motion are not modelled.
 C
@@ -17,7 +19,7 @@ C     mm/s, rad, rad/s and N: Y and the velocities are multiplied by
 C     1000 at the call, contact coordinates divided by 1000.
 C
 C     Integration: semi-implicit (symplectic) Euler, one contact
-C     evaluation per wheel and step.
+C     evaluation (both wheels) per step.
 C
 C     Build:  gfortran wheelset.f $(pkg-config --cflags --libs shcontact)
 C     Run:    ./a.out [--duration S] [--dt S] [--speed M/S] [--y0 MM]
@@ -25,7 +27,7 @@ C                     [--ky N/M] [--kpsi NM/RAD] [--cy NS/M]
 C                     [--cpsi NMS/RAD] [--every N] [--csv FILE]
 C
 C     Prints the run's summary as 'key value' lines: calls, failed
-C     calls, median cost per contact call (us) with the CPU model and
+C     calls, median cost per wheelset call (us) with the CPU model and
 C     the load average, amplitudes; writes every N-th step to the CSV.
 C
       PROGRAM WHLSET
@@ -45,13 +47,13 @@ C     Run options (GETOPT).
       CHARACTER*256 CSV
 C     State: Y (m), PSI (rad), VY (m/s), R (rad/s).
       DOUBLE PRECISION Y, PSI, VY, R, T
-C     Per wheel: forces in the track frame (N), yaw moment (N m).
-      DOUBLE PRECISION FX(2), FY(2), FZ(2), MZ(2), R0(2)
-      INTEGER NP(2), IH(2), ISIDE(2)
+C     Per wheel: forces in the track frame (N).
+      DOUBLE PRECISION FX(2), FY(2), FZ(2), R0(2)
+      INTEGER NP(2), IH, ISIDE(2)
       DOUBLE PRECISION V, PITCH, FYTOT, MZTOT, AY, AR, US
       DOUBLE PRECISION YMAX, PMAX, YLATE, PLATE, TLATE, YPREV, TCROSS
       DOUBLE PRECISION TFIRST, MEDIAN, RCEN
-      INTEGER ISTAT, IW, NSTEP, ISTEP, NCALL, NFAIL, NKEPT, NCROSS
+      INTEGER ISTAT, NSTEP, ISTEP, NCALL, NFAIL, NKEPT, NCROSS
       INTEGER IUCSV
       CHARACTER*512 MSG
       DATA ISIDE /1, -1/
@@ -59,20 +61,14 @@ C
       CALL GETOPT(TEND, DT, SPEED, Y0MM, KY, KPSI, CY, CPSI, NEVERY,
      &            CSV)
       V = SPEED
-      DO 10 IW = 1, 2
-         CALL SHC_CREATE(IH(IW), 'builtin:S1002', 'builtin:UIC60',
-     &                   ISIDE(IW), ISTAT)
-         IF (ISTAT .NE. SHC_OK) GOTO 900
-   10 CONTINUE
+      CALL SHC_CREATE_WS(IH, 'builtin:S1002', 'builtin:UIC60', ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
 C
 C     Rolling radius of the centred wheelset (any pitch rate will do
 C     for this call), then the pitch rate of pure rolling on it.
-      DO 20 IW = 1, 2
-         CALL CONTCT(IH(IW), ISIDE(IW), 0.0D0, 0.0D0, 0.0D0, 0.0D0,
-     &               V, -V/0.46D0, FLOAD, FX(IW), FY(IW), FZ(IW),
-     &               MZ(IW), R0(IW), NP(IW), US, ISTAT)
-         IF (ISTAT .NE. SHC_OK) GOTO 900
-   20 CONTINUE
+      CALL CONTCT(IH, ISIDE, 0.0D0, 0.0D0, 0.0D0, 0.0D0, V, -V/0.46D0,
+     &            FLOAD, FX, FY, FZ, R0, NP, FYTOT, MZTOT, US, ISTAT)
+      IF (ISTAT .NE. SHC_OK) GOTO 900
       RCEN = 0.5D0*(R0(1) + R0(2))
       PITCH = -V/(RCEN*1.0D-3)
 C
@@ -102,28 +98,22 @@ C
       YPREV = Y
       DO 200 ISTEP = 0, NSTEP
 C        Contact forces at the current state, both wheels.
-         DO 100 IW = 1, 2
-            CALL CONTCT(IH(IW), ISIDE(IW), Y, PSI, VY, R, V, PITCH,
-     &                  FLOAD, FX(IW), FY(IW), FZ(IW), MZ(IW), R0(IW),
-     &                  NP(IW), US, ISTAT)
-            NCALL = NCALL + 1
-            IF (NCALL .LE. MAXT) TUS(NCALL) = US
-            IF (ISTAT .NE. SHC_OK) THEN
-               NFAIL = NFAIL + 1
-               IF (NFAIL .LE. 5) THEN
-                  CALL SHC_ERRMSG(IH(IW), MSG)
-                  WRITE (*, '(A,F10.5,A,I2,A,I3,2A)') '# t =', T,
-     &               ' s wheel', ISIDE(IW), ': status', ISTAT, ': ',
-     &               MSG(1:LEN_TRIM(MSG))
-                  WRITE (*, '(A,4(1X,1PE24.16))') '#   y_ws (mm), yaw,'
-     &               // ' v_lateral (mm/s), yaw rate:', Y*1.0D3, PSI,
-     &               VY*1.0D3, R
-               END IF
-C              Keep the forces of the last step.
+         CALL CONTCT(IH, ISIDE, Y, PSI, VY, R, V, PITCH, FLOAD, FX, FY,
+     &               FZ, R0, NP, FYTOT, MZTOT, US, ISTAT)
+         NCALL = NCALL + 1
+         IF (NCALL .LE. MAXT) TUS(NCALL) = US
+         IF (ISTAT .NE. SHC_OK) THEN
+            NFAIL = NFAIL + 1
+            IF (NFAIL .LE. 5) THEN
+               CALL SHC_ERRMSG(IH, MSG)
+               WRITE (*, '(A,F10.5,A,I3,2A)') '# t =', T,
+     &            ' s: status', ISTAT, ': ', MSG(1:LEN_TRIM(MSG))
+               WRITE (*, '(A,4(1X,1PE24.16))') '#   y_ws (mm), yaw,'
+     &            // ' v_lateral (mm/s), yaw rate:', Y*1.0D3, PSI,
+     &            VY*1.0D3, R
             END IF
-  100    CONTINUE
-         FYTOT = FY(1) + FY(2)
-         MZTOT = MZ(1) + MZ(2)
+C           Keep the forces of the last step.
+         END IF
          IF (MOD(ISTEP, NEVERY) .EQ. 0) WRITE (IUCSV, 300) T,
      &      Y*1.0D3, PSI*1.0D3, VY*1.0D3, R, FX(1), FY(1), FZ(1),
      &      NP(1), FX(2), FY(2), FZ(2), NP(2), FYTOT, MZTOT
@@ -169,9 +159,9 @@ C
       WRITE (*, 400) 'cy_Ns_m', CY
       WRITE (*, 400) 'cpsi_Nms_rad', CPSI
       WRITE (*, 400) 'centred_rolling_radius_mm', RCEN
-      WRITE (*, 500) 'contact_calls', NCALL
+      WRITE (*, 500) 'wheelset_calls', NCALL
       WRITE (*, 500) 'failed_calls', NFAIL
-      WRITE (*, 400) 'median_us_per_call', MEDIAN
+      WRITE (*, 400) 'median_us_per_wheelset_call', MEDIAN
       WRITE (*, 400) 'max_abs_y_mm', YMAX*1.0D3
       WRITE (*, 400) 'max_abs_yaw_mrad', PMAX*1.0D3
       WRITE (*, 400) 'last20pc_max_abs_y_mm', YLATE*1.0D3
@@ -181,16 +171,14 @@ C
      &      (NCROSS - 1)/(TCROSS - TFIRST)
       END IF
       CALL SYSINF
-      DO 220 IW = 1, 2
-         CALL SHC_DESTROY(IH(IW), ISTAT)
-  220 CONTINUE
+      CALL SHC_DESTROY(IH, ISTAT)
       IF (NFAIL .GT. 0) STOP 2
 C     The normal end falls through to END: a STOP would make gfortran
 C     print a note on the floating-point flags the solver left raised
 C     (underflow, harmless).
       GOTO 999
 C
-  900 CALL SHC_ERRMSG(IH(IW), MSG)
+  900 CALL SHC_ERRMSG(IH, MSG)
       WRITE (*, '(A,I3,2A)') 'error: status', ISTAT, ': ',
      &   MSG(1:LEN_TRIM(MSG))
       STOP 1
@@ -201,50 +189,45 @@ C
   999 CONTINUE
       END
 C
-C     One wheel: SHC_SOLVE_KIN at the wheelset state (SI units in, the
-C     library's mm, mm/s inside), then the forces on the wheel in the
-C     track frame and their yaw moment about the wheelset centre, summed
-C     over the loaded patches (SHC_PATCH_KIN: each patch's contact point
-C     x, y). The library gives a left wheel's lateral values in its side
-C     frame (mirror image): ISIDE turns them into the track frame.
-C     The spin moments of the patches (a few N m) are left out.
-C     US: the time of the SHC_SOLVE_KIN call (microseconds).
+C     Both wheels: SHC_SOLVE_WS at the wheelset state (SI units in,
+C     the library's mm, mm/s inside), each wheel under FLOAD. FYTOT, MZTOT:
+C     the lateral force on the wheelset (N, towards the right rail's
+C     field side) and the yaw moment of the contact forces about the
+C     wheelset centre (N m; the patches' spin moments left out). Per
+C     wheel (SHC_WS_WHEEL, its values summed over the loaded patches):
+C     FX, FY, FZ in the track frame (the library gives a left wheel's
+C     lateral values in its side frame, a mirror image: ISIDE turns
+C     them), R0, NP. US: the time of the SHC_SOLVE_WS call (us).
 C
       SUBROUTINE CONTCT(IH, ISIDE, Y, PSI, VY, R, V, PITCH, FLOAD,
-     &                  FX, FY, FZ, MZ, R0, NP, US, ISTAT)
+     &                  FX, FY, FZ, R0, NP, FYTOT, MZTOT, US, ISTAT)
       IMPLICIT NONE
       INCLUDE 'shcontact.fi'
-      INTEGER IH, ISIDE, NP, ISTAT
+      INTEGER IH, ISIDE(2), NP(2), ISTAT
       DOUBLE PRECISION Y, PSI, VY, R, V, PITCH, FLOAD
-      DOUBLE PRECISION FX, FY, FZ, MZ, R0, US
-      DOUBLE PRECISION VALUES(SHC_KIN_SIZE), PATCH(SHC_KIN_SIZE)
-      DOUBLE PRECISION FYK
-      INTEGER K, NLOAD, JSTAT
+      DOUBLE PRECISION FX(2), FY(2), FZ(2), R0(2), FYTOT, MZTOT, US
+      DOUBLE PRECISION TOTALS(4), VALUES(SHC_KIN_SIZE)
+      INTEGER IW
       INTEGER*8 IC0, IC1, IRATE
 C
       CALL SYSTEM_CLOCK(IC0, IRATE)
-      CALL SHC_SOLVE_KIN(IH, Y*1.0D3, PSI, 0.0D0, V*1.0D3, VY*1.0D3,
-     &                   0.0D0, 0.0D0, R, PITCH,
-     &                   SHC_LOAD_VERTICAL_FORCE, FLOAD, VALUES, ISTAT)
+      CALL SHC_SOLVE_WS(IH, Y*1.0D3, PSI, 0.0D0, V*1.0D3, VY*1.0D3,
+     &                  0.0D0, 0.0D0, R, PITCH,
+     &                  SHC_LOAD_VERTICAL_FORCE, FLOAD, FLOAD, TOTALS,
+     &                  ISTAT)
       CALL SYSTEM_CLOCK(IC1)
       US = DBLE(IC1 - IC0)/DBLE(IRATE)*1.0D6
       IF (ISTAT .NE. SHC_OK) RETURN
-      FX = VALUES(SHC_SUM_FX)
-      FY = ISIDE*VALUES(SHC_SUM_FY)
-      FZ = VALUES(SHC_SUM_FZ)
-      R0 = VALUES(SHC_R0)
-      NLOAD = NINT(VALUES(SHC_N_LOADED))
-      NP = NINT(VALUES(SHC_N_PATCHES))
-      MZ = 0.0D0
-      DO 10 K = 1, NLOAD
-         CALL SHC_PATCH_KIN(IH, K, PATCH, JSTAT)
-         IF (JSTAT .NE. SHC_OK) THEN
-            ISTAT = JSTAT
-            RETURN
-         END IF
-         FYK = ISIDE*PATCH(SHC_FY_TRACK)
-         MZ = MZ + (PATCH(SHC_X_TRACK)*FYK
-     &        - PATCH(SHC_Y_TRACK)*PATCH(SHC_FX))*1.0D-3
+      FYTOT = TOTALS(2)
+      MZTOT = TOTALS(4)*1.0D-3
+      DO 10 IW = 1, 2
+         CALL SHC_WS_WHEEL(IH, ISIDE(IW), 0, VALUES, ISTAT)
+         IF (ISTAT .NE. SHC_OK) RETURN
+         FX(IW) = VALUES(SHC_SUM_FX)
+         FY(IW) = ISIDE(IW)*VALUES(SHC_SUM_FY)
+         FZ(IW) = VALUES(SHC_SUM_FZ)
+         R0(IW) = VALUES(SHC_R0)
+         NP(IW) = NINT(VALUES(SHC_N_PATCHES))
    10 CONTINUE
       END
 C
@@ -278,7 +261,7 @@ C
             WRITE (*, '(A)') '                [--cy NS/M]'
      &         // ' [--cpsi NMS/RAD] [--every N] [--csv FILE]'
             WRITE (*, '(A)') 'A wheelset integrated in time through'
-     &         // ' SHC_SOLVE_KIN (doc/vehicle.md). Defaults:'
+     &         // ' SHC_SOLVE_WS (doc/vehicle.md). Defaults:'
      &         // ' --duration 20 --dt 2.5e-4 --speed 40 --y0 3'
             WRITE (*, '(A)') '  --ky 0.5e6 --kpsi 0.4e6 --cy 0'
      &         // ' --cpsi 0 --every 4 --csv wheelset.csv. Exit'
