@@ -518,11 +518,17 @@ contains
    subroutine hold(held, cases, results)
       type(pending_block_type), intent(inout) :: held
       integer, intent(in) :: cases(:)
-      type(case_result_type), intent(inout) :: results(:)
+      type(case_result_type), allocatable, intent(inout) :: results(:)
       type(case_result_type), allocatable :: grown(:)
       integer, allocatable :: grown_cases(:)
       integer :: i, capacity
-      if (.not. allocated(held%results)) allocate (held%cases(0), held%results(0))
+      if (held%n == 0) then
+         ! The block itself, not a copy (a run with fields holds one block at a time).
+         held%cases = cases
+         call move_alloc(results, held%results)
+         held%n = size(cases)
+         return
+      end if
       if (held%n + size(cases) > size(held%results)) then
          capacity = max(held%n + size(cases), 2*size(held%results))
          allocate (grown(capacity), grown_cases(capacity))
