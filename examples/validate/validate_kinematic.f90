@@ -184,15 +184,8 @@ contains
       type(track_type) :: track
       integer :: i, j_case, j_status
 
-      call read_csv(path, table, error)
+      call read_case_table(path, table, j_case, j_status, error)
       if (allocated(error)) return
-      j_case = column_index(table, 'case')
-      j_status = column_index(table, 'status')
-      if (j_case == 0 .or. j_status == 0) then
-         call fatal_error(error, path//': expected the columns "case" and "status"', &
-            stat_invalid_input)
-         return
-      end if
       ! README: the MBench profiles, the rail file already canted; G = 82670 MPa, ν = 0.27,
       ! μ = 0.3; R₀ = 460 mm, flange-back distance 1360, position −70 (track_type's defaults).
       track%rail_canted = .true.
@@ -275,6 +268,24 @@ contains
       c%fy_uniform = -result%main%fy_norm
    end subroutine solve_case
 
+   !> A CSV with one row per case: the table and the columns "case" and "status".
+   subroutine read_case_table(path, table, j_case, j_status, error)
+      character(len=*), intent(in) :: path
+      type(csv_table_type), intent(out) :: table
+      integer, intent(out) :: j_case, j_status
+      type(error_type), allocatable, intent(out) :: error
+
+      call read_csv(path, table, error)
+      if (allocated(error)) return
+      j_case = column_index(table, 'case')
+      j_status = column_index(table, 'status')
+      if (j_case == 0 .or. j_status == 0) then
+         call fatal_error(error, path//': expected the columns "case" and "status"', &
+            stat_invalid_input)
+         return
+      end if
+   end subroutine read_case_table
+
    !> CONTACT's conformal approach on the sample's decks (module text), by case name; without
    !> the file nothing is read. Only its cases with status ok are compared.
    subroutine read_conformal(path, cases, error)
@@ -287,15 +298,8 @@ contains
 
       inquire (file=path, exist=there)
       if (.not. there) return
-      call read_csv(path, table, error)
+      call read_case_table(path, table, j_case, j_status, error)
       if (allocated(error)) return
-      j_case = column_index(table, 'case')
-      j_status = column_index(table, 'status')
-      if (j_case == 0 .or. j_status == 0) then
-         call fatal_error(error, path//': expected the columns "case" and "status"', &
-            stat_invalid_input)
-         return
-      end if
       do i = 1, table%rows()
          if (trim(table%cells(i, j_status)) /= 'ok') cycle
          k = findloc(cases%name, trim(table%cells(i, j_case)), 1)
