@@ -27,8 +27,16 @@
 !> yaw (whose geometry `solve` reproduces exactly) each case is solved a second time with `solve`,
 !> the same creepages at the same point and the 'uniform' spin model (the library default for
 !> prescribed creepages): f_x, f_y "uniform" in the tables.
+!>
+!> **CONTACT's conformal approach.** The sample was solved with CONTACT's planar contact (one
+!> contact plane, a uniform rigid slip over it). data/exact/kinematic_conformal/ holds the same
+!> decks solved with CONTACT's conformal approach (a curved contact surface whose rigid slip
+!> carries each point's own rolling radius and contact angle, as solve_kinematic's strips do;
+!> doc/validation.md §6.3). Where it has a case, our compared patch is set against it too
+!> (dfx_conformal, dfy_conformal in kinematic_cases.csv and a row of the summary of every set).
 module validate_kinematic
    use, intrinsic :: iso_fortran_env, only: output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, track_type, &
       material_type, contact_solver_type, contact_load_type, contact_result_type, &
       load_vertical_force, wheelset_state_type, creepage_type
@@ -43,6 +51,13 @@ module validate_kinematic
 
    !> The sample's vertical wheel load (N), README.
    real(wp), parameter :: vertical_load = 64700.0_wp
+   !> CONTACT's conformal approach on the sample's decks (data/exact/kinematic_conformal/README.md),
+   !> relative to the repository root.
+   character(len=*), parameter :: conformal_file = &
+      'data/exact/kinematic_conformal/kinematic_conformal.csv'
+   !> Its row in the summary of every set (validate_sets, doc/validation.md Table 12).
+   character(len=*), parameter :: set_conformal = 'kinematic sample against CONTACT''s '// &
+      'conformal approach (data/exact/kinematic_conformal)'
    !> Friction coefficient of the sample (README).
    real(wp), parameter :: friction = 0.3_wp
 
@@ -82,6 +97,10 @@ module validate_kinematic
       !> and its number of patches.
       real(wp) :: fx_wheel = 0.0_wp, fy_wheel = 0.0_wp
       integer :: n_joined = 0
+      !> CONTACT's conformal approach on the same deck (data/exact/kinematic_conformal/, module
+      !> text): f on the rail of its most loaded patch, when that file has the case.
+      logical :: has_conformal = .false.
+      real(wp) :: fx_conformal = 0.0_wp, fy_conformal = 0.0_wp
       !> Diagnostic (module text): ours with the 'uniform' spin model, cases without yaw.
       logical :: has_uniform = .false.
       real(wp) :: fx_uniform = 0.0_wp, fy_uniform = 0.0_wp
@@ -119,6 +138,8 @@ contains
 
       call solve_sample(sample_dir//'kinematic_sample.csv', profiles_dir, cases, error)
       if (allocated(error)) return
+      call read_conformal(conformal_file, cases, error)
+      if (allocated(error)) return
       call group_statistics(cases, groups)
       call write_cases(out_dir//'kinematic_cases.csv', cases, error)
       if (allocated(error)) return
@@ -134,6 +155,11 @@ contains
          pack(abs(cases%fx_wheel - cases%fx_ref), cases%ok), &
          pack(abs(cases%fy_wheel - cases%fy_ref), cases%ok), &
          maxval(hypot(cases%fx_wheel, cases%fy_wheel), mask=cases%ok))
+      ! The same patches against CONTACT's conformal approach (module text), where it solved.
+      if (any(cases%has_conformal)) call pool_errors(set_conformal, 1, &
+         pack(abs(cases%fx - cases%fx_conformal), cases%has_conformal), &
+         pack(abs(cases%fy - cases%fy_conformal), cases%has_conformal), &
+         maxval(hypot(cases%fx, cases%fy), mask=cases%has_conformal))
       write (output_unit, '(a,i0,a)') 'kinematic sample: the joined contact holds more than '// &
          'one patch in ', count(cases%ok .and. cases%n_joined > 1), ' cases'
       associate (g => groups(size(groups)))
@@ -158,15 +184,8 @@ contains
       type(track_type) :: track
       integer :: i, j_case, j_status
 
-      call read_csv(path, table, error)
+      call read_case_table(path, table, j_case, j_status, error)
       if (allocated(error)) return
-      j_case = column_index(table, 'case')
-      j_status = column_index(table, 'status')
-      if (j_case == 0 .or. j_status == 0) then
-         call fatal_error(error, path//': expected the columns "case" and "status"', &
-            stat_invalid_input)
-         return
-      end if
       ! README: the MBench profiles, the rail file already canted; G = 82670 MPa, ν = 0.27,
       ! μ = 0.3; R₀ = 460 mm, flange-back distance 1360, position −70 (track_type's defaults).
       track%rail_canted = .true.
@@ -248,6 +267,50 @@ contains
       c%fx_uniform = -result%main%fx_norm
       c%fy_uniform = -result%main%fy_norm
    end subroutine solve_case
+
+   !> A CSV with one row per case: the table and the columns "case" and "status".
+   subroutine read_case_table(path, table, j_case, j_status, error)
+      character(len=*), intent(in) :: path
+      type(csv_table_type), intent(out) :: table
+      integer, intent(out) :: j_case, j_status
+      type(error_type), allocatable, intent(out) :: error
+
+      call read_csv(path, table, error)
+      if (allocated(error)) return
+      j_case = column_index(table, 'case')
+      j_status = column_index(table, 'status')
+      if (j_case == 0 .or. j_status == 0) then
+         call fatal_error(error, path//': expected the columns "case" and "status"', &
+            stat_invalid_input)
+         return
+      end if
+   end subroutine read_case_table
+
+   !> CONTACT's conformal approach on the sample's decks (module text), by case name; without
+   !> the file nothing is read. Only its cases with status ok are compared.
+   subroutine read_conformal(path, cases, error)
+      character(len=*), intent(in) :: path
+      type(kinematic_case_type), intent(inout) :: cases(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_table_type) :: table
+      logical :: there
+      integer :: i, k, j_case, j_status
+
+      inquire (file=path, exist=there)
+      if (.not. there) return
+      call read_case_table(path, table, j_case, j_status, error)
+      if (allocated(error)) return
+      do i = 1, table%rows()
+         if (trim(table%cells(i, j_status)) /= 'ok') cycle
+         k = findloc(cases%name, trim(table%cells(i, j_case)), 1)
+         if (k == 0) cycle
+         if (.not. cases(k)%ok) cycle
+         cases(k)%fx_conformal = cell(table, i, 'fx_norm', error)
+         if (.not. allocated(error)) cases(k)%fy_conformal = cell(table, i, 'fs_norm', error)
+         if (allocated(error)) return
+         cases(k)%has_conformal = .true.
+      end do
+   end subroutine read_conformal
 
    !> Our main patch and totals, in CONTACT's signs, and the creepage transfer (module text).
    pure subroutine take_ours(result, spin_rate, c)
@@ -383,7 +446,7 @@ contains
          'phi_ours_transferred_per_mm,dphi_transferred_per_mm,r_ours_mm,dr_mm,fn_ours_N,'// &
          'fn_rel_err,fn_other_patches_N,y_other_patch_mm,fx_ours_uniform,fy_ours_uniform,'// &
          'fx_ours,fy_ours,dfx,dfy,fx_tr_ours_N,dfx_tr_N,fy_tr_ours_N,dfy_tr_N,fz_tr_ours_N,'// &
-         'dfz_tr_N', error)
+         'dfz_tr_N,dfx_conformal,dfy_conformal', error)
       if (allocated(error)) return
       do i = 1, size(cases)
          associate (c => cases(i))
@@ -402,7 +465,10 @@ contains
                c%phi_t - c%phi_ref, c%r_ours, c%r_ours - c%r_ref, c%fn, &
                (c%fn - c%fn_ref)/c%fn_ref, c%fn_other, c%y_other, c%fx_uniform, c%fy_uniform, &
                c%fx, c%fy, c%fx - c%fx_ref, c%fy - c%fy_ref, c%fx_tr, c%fx_tr - c%fx_tr_ref, &
-               c%fy_tr, c%fy_tr - c%fy_tr_ref, c%fz_tr, c%fz_tr - c%fz_tr_ref], &
+               c%fy_tr, c%fy_tr - c%fy_tr_ref, c%fz_tr, c%fz_tr - c%fz_tr_ref, &
+               merge(c%fx - c%fx_conformal, ieee_value(1.0_wp, ieee_quiet_nan), &
+               c%has_conformal), merge(c%fy - c%fy_conformal, &
+               ieee_value(1.0_wp, ieee_quiet_nan), c%has_conformal)], &
                text=[character(len=8) :: c%name, 'ok'])
          end associate
       end do
