@@ -18,7 +18,8 @@ module shcontact_app_commands
    use shcontact_app_cli, only: cli_type
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
-   use shcontact_app_environment, only: slurm_shard, in_slurm_array, peak_memory_kib
+   use shcontact_app_environment, only: slurm_shard, in_slurm_array
+   use shcontact_core_files, only: peak_memory_kib
    implicit none
    private
 
@@ -152,7 +153,8 @@ contains
          str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
          str_int(outcome%block_files)//' block file(s) merged'
       if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
-         'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM)'
+         'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM), '// &
+         str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'
    end function run_command
 
    function resumed_note(outcome) result(text)

@@ -6,7 +6,7 @@ module shcontact_app_environment
    implicit none
    private
 
-   public :: slurm_shard, in_slurm_array, integer_variable, peak_memory_kib
+   public :: slurm_shard, in_slurm_array, integer_variable
 
 contains
 
@@ -77,24 +77,5 @@ contains
       ok = stat == 0
       if (.not. ok) value = 0
    end subroutine integer_variable
-
-   !> The process's peak resident memory in KiB (VmHWM of /proc/self/status; 0 where there is
-   !> none, e.g. outside Linux).
-   integer function peak_memory_kib() result(kib)
-      character(len=256) :: line
-      integer :: unit, stat
-      kib = 0
-      open (newunit=unit, file='/proc/self/status', status='old', action='read', iostat=stat)
-      if (stat /= 0) return
-      do
-         read (unit, '(a)', iostat=stat) line
-         if (stat /= 0) exit
-         if (line(1:6) /= 'VmHWM:') cycle
-         read (line(7:), *, iostat=stat) kib
-         if (stat /= 0) kib = 0
-         exit
-      end do
-      close (unit)
-   end function peak_memory_kib
 
 end module shcontact_app_environment

@@ -48,6 +48,7 @@ module shcontact_batch_sweep
       write_run_file, &
       check_output_file
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
+      peak_memory_kib, &
       unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
       folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
@@ -130,6 +131,9 @@ module shcontact_batch_sweep
       integer :: most_block_cases = 0
       !> Checkpoint block files the output was assembled from (0: written straight from memory).
       integer :: block_files = 0
+      !> Peak resident memory of the process (KiB, VmHWM; 0 where unknown) when every case was
+      !> solved, before the output was written or merged (whose HDF5 caches grow with the file).
+      integer :: solving_peak_kib = 0
    end type sweep_outcome_type
 
    !> Automatic checkpoints: the solved blocks held in memory are written as one block file
@@ -357,12 +361,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(case_workspace_type), allocatable :: workspaces(:)
       type(thread_solutions_type), allocatable :: solutions(:)
-      type(case_result_type), allocatable :: results(:)
       type(string_list_type) :: blocks
       type(stage_cache_type) :: cache
       type(pending_block_type) :: pending, held
       integer, allocatable :: todo(:)
-      integer :: n, n_done, next, block, nb, i
+      integer :: n, n_done, next, block, nb, i, capacity
       integer(int64) :: block_used, per_case_bytes, fixed_bytes, held_bytes
       logical :: keep_geometry, keep_strips, automatic
       real(wp) :: t0, per_case, per_block, held_seconds
@@ -403,6 +406,7 @@ contains
       fixed_bytes = 0
       held_bytes = 0
       held_seconds = 0.0_wp
+      per_case = 0.0_wp
       ! Automatic checkpoints: the solved blocks are held in memory and written as one block
       ! file only when they took block_seconds or fill half the memory budget; a run that never
       ! needed one writes its output straight from memory.
@@ -416,50 +420,66 @@ contains
          options%block_bytes/(2*estimated_result_bytes(config)))))
       do while (next <= size(todo))
          nb = min(block, size(todo) - next + 1)
-         if (allocated(results)) deallocate (results)
-         allocate (results(nb))
+         ! The held blocks are written while this block is solved when they took block_seconds
+         ! or when they, this block and the one being written would pass block_bytes.
+         if (options%write_output .and. held%n > 0 .and. (.not. automatic .or. &
+             held_seconds >= block_seconds .or. &
+             2*(held_bytes + fixed_bytes + nb*per_case_bytes) > options%block_bytes)) then
+            call move_alloc(held%cases, pending%cases)
+            call move_alloc(held%results, pending%results)
+            pending%n = held%n
+            pending%waiting = .true.
+            held%n = 0
+            held_bytes = 0
+            held_seconds = 0.0_wp
+         end if
+         if (.not. options%write_output .and. allocated(held%results)) then
+            ! Nothing is held without output: fresh slots for every block.
+            held%n = 0
+            deallocate (held%results, held%cases)
+         end if
+         if (held%n + nb > held_capacity(held)) then
+            ! Arrays for the blocks to be held: this block, or with automatic checkpoints as
+            ! many cases as about block_seconds of solving and half the budget allow.
+            capacity = held%n + nb
+            if (automatic .and. options%write_output .and. per_case > 0.0_wp) capacity = &
+               int(max(int(capacity, int64), min(int(held%n + size(todo) - next + 1, int64), &
+               int(min(1.0e9_wp, 1.25_wp*block_seconds/per_case), int64), &
+               max(0_int64, options%block_bytes/2 - fixed_bytes)/per_case_bytes)))
+            call grow_held(held, capacity)
+         end if
          t0 = wall_seconds()
-         ! The previous block's file is written by the first thread meanwhile.
+         ! The cases are solved into their slots of the held arrays; the previous blocks' file
+         ! is written by the first thread meanwhile.
          call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
-            results, workspaces, solutions, fields, outcome%n_threads, options, n_done, &
-            outcome%last - outcome%first + 1, keep_geometry, keep_strips, cache, block_used, &
-            fixed_bytes, pending, dir, blocks, info, error)
+            held%results(held%n + 1:held%n + nb), workspaces, solutions, fields, &
+            outcome%n_threads, options, n_done, outcome%last - outcome%first + 1, &
+            keep_geometry, keep_strips, cache, block_used, fixed_bytes, pending, dir, blocks, &
+            info, error)
          if (allocated(error)) return
          per_case = (wall_seconds() - t0)/nb
          held_seconds = held_seconds + per_case*nb
+         held_bytes = held_bytes + block_used
+         held%cases(held%n + 1:held%n + nb) = todo(next:next + nb - 1)
          ! The largest share of a case seen so far (its fields and its stage's).
          per_case_bytes = max(per_case_bytes, block_used/nb + 1)
          outcome%most_block_bytes = max(outcome%most_block_bytes, block_used + fixed_bytes)
          outcome%most_block_cases = max(outcome%most_block_cases, nb)
          if (pending%waiting) then
             pending%waiting = .false.
+            deallocate (pending%results, pending%cases)
             if (associated(options%progress)) call options%progress(n_done, &
                outcome%last - outcome%first + 1, .true.)
          end if
-         do i = 1, nb
-            outcome%summaries(todo(next + i - 1)) = results(i)%summary
-            if (results(i)%summary%stat > 0) call add_failure(outcome%failures, &
-               todo(next + i - 1), message_of(results(i)))
+         do i = held%n + 1, held%n + nb
+            outcome%summaries(held%cases(i)) = held%results(i)%summary
+            if (held%results(i)%summary%stat > 0) call add_failure(outcome%failures, &
+               held%cases(i), message_of(held%results(i)))
          end do
+         held%n = held%n + nb
          n_done = n_done + nb
-         if (options%write_output) then
-            call hold(held, todo(next:next + nb - 1), results)
-            held_bytes = held_bytes + block_used
-            ! Written while the next block is solved (the block being written and the blocks
-            ! held or being solved within block_bytes together).
-            if (.not. automatic .or. held_seconds >= block_seconds .or. &
-                2*(held_bytes + fixed_bytes + block*per_case_bytes) > options%block_bytes) then
-               call move_alloc(held%cases, pending%cases)
-               call move_alloc(held%results, pending%results)
-               pending%n = held%n
-               pending%waiting = .true.
-               held%n = 0
-               held_bytes = 0
-               held_seconds = 0.0_wp
-            end if
-         else if (associated(options%progress)) then
+         if (.not. options%write_output .and. associated(options%progress)) &
             call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
-         end if
          next = next + nb
          if (config%output%checkpoint_cases > 0) then
             block = config%output%checkpoint_cases
@@ -497,6 +517,7 @@ contains
          if (options%write_output) call clear_checkpoint(dir, keep_directory=.false.)
          return
       end if
+      outcome%solving_peak_kib = peak_memory_kib()
       if (.not. options%write_output) return
       outcome%block_files = blocks%n
       if (held%n > 0) then
@@ -513,41 +534,32 @@ contains
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
 
-   !> Append a solved block (cases and results, which are moved) to the blocks held in memory
-   !> (their arrays grow by doubling, so that a result is moved about twice on average).
-   subroutine hold(held, cases, results)
+   !> Room for this many results in the held arrays.
+   pure integer function held_capacity(held)
+      type(pending_block_type), intent(in) :: held
+      held_capacity = 0
+      if (allocated(held%results)) held_capacity = size(held%results)
+   end function held_capacity
+
+   !> New held arrays of `capacity` (the held results moved to them; the first block of a run,
+   !> before its time per case is known, is held in arrays of its own size).
+   subroutine grow_held(held, capacity)
       type(pending_block_type), intent(inout) :: held
-      integer, intent(in) :: cases(:)
-      type(case_result_type), allocatable, intent(inout) :: results(:)
-      type(case_result_type), allocatable :: grown(:)
-      integer, allocatable :: grown_cases(:)
-      integer :: i, capacity
-      if (held%n == 0) then
-         ! The block itself, not a copy (a run with fields holds one block at a time).
-         held%cases = cases
-         call move_alloc(results, held%results)
-         held%n = size(cases)
-         return
-      end if
-      if (held%n + size(cases) > size(held%results)) then
-         capacity = max(held%n + size(cases), 2*size(held%results))
-         allocate (grown(capacity), grown_cases(capacity))
-         do i = 1, held%n
-            call move_result(held%results(i), grown(i))
-         end do
-         grown_cases(1:held%n) = held%cases(1:held%n)
-         call move_alloc(grown, held%results)
-         call move_alloc(grown_cases, held%cases)
-      end if
-      do i = 1, size(cases)
-         call move_result(results(i), held%results(held%n + i))
+      integer, intent(in) :: capacity
+      type(case_result_type), allocatable :: results(:)
+      integer, allocatable :: cases(:)
+      integer :: i
+      allocate (results(capacity), cases(capacity))
+      do i = 1, held%n
+         call move_result(held%results(i), results(i))
+         cases(i) = held%cases(i)
       end do
-      held%cases(held%n + 1:held%n + size(cases)) = cases
-      held%n = held%n + size(cases)
-   end subroutine hold
+      call move_alloc(results, held%results)
+      call move_alloc(cases, held%cases)
+   end subroutine grow_held
 
    !> Move a result: `to` receives it, `from` is left empty (its arrays freed at once, so that
-   !> holding blocks never needs two copies of their fields).
+   !> a move never holds two copies of the fields).
    subroutine move_result(from, to)
       type(case_result_type), intent(inout) :: from
       type(case_result_type), intent(out) :: to

@@ -11,7 +11,7 @@ module shcontact_core_files
 
    public :: rename_file, delete_file, make_directory, remove_directory, file_exists
    public :: directory_part, join_path, is_absolute, process_id, canonical_path
-   public :: path_kind, lock_file, unlock_file, pause_briefly
+   public :: path_kind, lock_file, unlock_file, pause_briefly, peak_memory_kib
    public :: lock_taken, lock_busy, lock_missing
    public :: open_work_folder, folder_made, folder_existing, folder_busy, folder_unlocked, &
       folder_link, folder_not_directory, folder_cannot_create
@@ -380,5 +380,25 @@ contains
       integer :: pid
       pid = int(c_getpid())
    end function process_id
+
+
+   !> The process's peak resident memory in KiB (VmHWM of /proc/self/status; 0 where there is
+   !> none, e.g. outside Linux).
+   integer function peak_memory_kib() result(kib)
+      character(len=256) :: line
+      integer :: unit, stat
+      kib = 0
+      open (newunit=unit, file='/proc/self/status', status='old', action='read', iostat=stat)
+      if (stat /= 0) return
+      do
+         read (unit, '(a)', iostat=stat) line
+         if (stat /= 0) exit
+         if (line(1:6) /= 'VmHWM:') cycle
+         read (line(7:), *, iostat=stat) kib
+         if (stat /= 0) kib = 0
+         exit
+      end do
+      close (unit)
+   end function peak_memory_kib
 
 end module shcontact_core_files
