@@ -8,7 +8,7 @@ module test_registry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_choices, only: choice_type, choice_code, choice_list
-   use shcontact_core_ranges, only: ranges, find_range
+   use shcontact_core_ranges, only: ranges, find_range, range_key, k_int
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type, side_right, side_left
    use shcontact_geometry_prepared, only: contact_options_type
@@ -142,7 +142,7 @@ contains
          if (allocated(error)) return
       end do
       do ir = 1, size(ranges)
-         key = trim(ranges(ir)%key)
+         key = trim(range_key(ranges(ir)))
          call check(error, find_variable(key(1:index(key, '%') - 1), &
             key(index(key, '%') + 1:)) > 0, message=key//': a range of no variable')
          if (allocated(error)) return
@@ -155,7 +155,7 @@ contains
       integer :: i
       ir = 0
       do i = 1, size(ranges)
-         if (ranges(i)%key(index(ranges(i)%key, '%') + 1:) == name) ir = i
+         if (ranges(i)%name == name) ir = i
       end do
    end function range_of_swept
 
@@ -363,7 +363,7 @@ contains
          character(len=400) :: line
          integer :: unit, stat
          logical :: inside
-         expected = option_list(c, header_option_keys, prefix, width)
+         expected = option_list(c, header_option_keys(), prefix, width)
          found = ''
          inside = .false.
          open (newunit=unit, file=file, status='old', action='read', iostat=stat)

@@ -25,7 +25,8 @@ module shcontact_api_settings
       curvature_reference, table_step_of
    use shcontact_input_config_types, only: set_origin
    use shcontact_input_config_variables, only: variables, find_variable, &
-      join_words, k_real, k_real_list
+      join_words, k_real, k_real_list, key_use, key_solver, key_state, key_fields, key_creation, &
+      key_app
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
       load_vertical_force
    implicit none
@@ -34,13 +35,6 @@ module shcontact_api_settings
    public :: library_setup_type, library_setup, config_load, point_load, config_state
    public :: key_use, key_solver, key_state, key_fields, key_creation, key_app
    public :: set_config_value, split_key, handle_key_list
-
-   !> What a handle does with a key ([[key_use]]): the solver's data (track, material,
-   !> smoothing, normal and tangential options), the state of a keyed solve (position,
-   !> kinematics, load, creepage), the fields switch (output%fields), given at creation
-   !> (profile files, track%side), or only the app's (output file, sweep).
-   integer, parameter :: key_solver = 1, key_state = 2, key_fields = 3, key_creation = 4, &
-      key_app = 5
 
    !> The library's objects of a configuration.
    type :: library_setup_type
@@ -129,27 +123,6 @@ contains
          v_forward=point%v_forward, v_lateral=point%v_lateral, v_vertical=point%v_vertical, &
          roll_rate=point%roll_rate, yaw_rate=point%yaw_rate, pitch_rate=point%pitch_rate)
    end function config_state
-
-   !> What a handle does with variable `name` of group `group` (key_solver, key_state,
-   !> key_fields, key_creation, key_app).
-   pure integer function key_use(group, name)
-      !> Group and variable (lower case).
-      character(len=*), intent(in) :: group, name
-      select case (group)
-      case ('material', 'normal', 'tangential')
-         key_use = key_solver
-      case ('track')
-         key_use = merge(key_creation, key_solver, name == 'side')
-      case ('profiles')
-         key_use = merge(key_solver, key_creation, index(name, '_smoothing') > 0)
-      case ('position', 'kinematics', 'load', 'creepage')
-         key_use = key_state
-      case ('output')
-         key_use = merge(key_fields, key_app, name == 'fields')
-      case default
-         key_use = key_app
-      end select
-   end function key_use
 
    !> Group and variable of a key `group%variable` (lower case, blanks removed); both '' when
    !> the key has no '%'.
