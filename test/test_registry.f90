@@ -378,7 +378,8 @@ contains
          end do
          close (unit)
          call check(error, found == expected, message=file//': the option list differs '// &
-            'from the registry; it should read'//new_line('a')//expected)
+            'from the registry; run `fpm run --example shcontact-headers` (it writes '// &
+            'the list); it should read'//new_line('a')//expected)
          if (allocated(error)) return
          call check_mentions(file, error)
       end subroutine check_block
