@@ -9,9 +9,11 @@ module shcontact_input_config_types
    use shcontact_core_material, only: material_type
    use shcontact_core_ranges, only: variables
    use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
+   use shcontact_geometry_track, only: track_type
+   use shcontact_geometry_prepared, only: contact_options_type
    use shcontact_input_config_limits, only: path_len, name_len, max_fields
    use shcontact_input_config_choices, only: side_right, kinematics_off, kinematics_on, &
-      load_mode_force, curvature_local, precision_double
+      load_mode_force, curvature_local, curvature_reference, precision_double
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_normal_option_registry, only: default_normal_method => default_method, &
@@ -31,7 +33,7 @@ module shcontact_input_config_types
    public :: tangential_config_type, output_config_type
    public :: set_origin, origin, sweep_origin, choice_value, set_choice_value
    public :: number_value, string_value, logical_value
-   public :: normal_options_of, tangential_options_of, table_step_of
+   public :: normal_options_of, tangential_options_of, table_step_of, contact_options_of, track_of
 
    !> `&profiles`: which profiles, read how.
    type :: profiles_config_type
@@ -329,6 +331,32 @@ contains
       if (origin(config, 'normal%n_strips') == 'default') &
          options%n_strips = preset_strips(config%normal%preset)
    end function normal_options_of
+
+   !> The library's contact-search options of a configuration: the profiles' smoothing, the
+   !> clamp of B and the longitudinal curvature (`&normal`), the strip-table spacing of
+   !> `&normal preset`.
+   pure function contact_options_of(config) result(options)
+      type(case_config_type), intent(in) :: config
+      type(contact_options_type) :: options
+      options%l_filt_wheel = config%profiles%wheel_smoothing
+      options%l_filt_rail = config%profiles%rail_smoothing
+      options%b_min = config%normal%b_min
+      options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
+      options%table_step = table_step_of(config)
+   end function contact_options_of
+
+   !> The library's track and wheelset dimensions of a configuration (`&track`).
+   pure function track_of(config) result(track)
+      type(case_config_type), intent(in) :: config
+      type(track_type) :: track
+      track%gauge = config%track%gauge
+      track%gauge_height = config%track%gauge_height
+      track%rail_inclination = config%track%inclination
+      track%rail_canted = config%track%rail_canted
+      track%flange_back_distance = config%track%flange_back_distance
+      track%flange_back_position = config%track%flange_back_position
+      track%nominal_radius = config%track%nominal_radius
+   end function track_of
 
    !> The strip-table spacing (mm) of the contact search (`contact_options_type%table_step`):
    !> that of `&normal preset`.
