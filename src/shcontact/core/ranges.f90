@@ -24,7 +24,7 @@ module shcontact_core_ranges
    private
 
    public :: variable_info_type, variables, ranges, find_range, range_key, has_range, &
-      default_of, in_range, range_text, check_range, check_int_range
+      in_range, range_text, check_range, check_int_range
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list, k_choice
    public :: max_grid_cells
 
@@ -291,13 +291,6 @@ contains
       type(variable_info_type), intent(in) :: v
       has_range = v%lo < v%hi
    end function has_range
-
-   !> The default of the number `key` (`group%name`, in the table).
-   pure real(wp) function default_of(key)
-      !> The key.
-      character(len=*), intent(in) :: key
-      default_of = ranges(find_range(key))%default
-   end function default_of
 
    !> True when `x` is finite and inside the range.
    elemental logical function in_range(r, x)

@@ -137,29 +137,28 @@ contains
    end subroutine check_grid_size
 
    !> Every number of the groups `groups` (variables with a range of the variable table) in its
-   !> range, group by group in the table's order; the pitch rate only when it was given.
+   !> range, in the table's order (its groups' order); the pitch rate only when it was given.
    subroutine check_numbers(config, groups, error)
       type(case_config_type), intent(in) :: config
       !> The groups.
       character(len=*), intent(in) :: groups(:)
       type(error_type), allocatable, intent(out) :: error
-      integer :: ig, iv
-      do ig = 1, size(groups)
-         do iv = 1, size(variables)
-            associate (v => variables(iv))
-               if (v%group /= groups(ig) .or. .not. has_range(v)) cycle
-               if (v%group == 'kinematics' .and. v%name == 'pitch_rate' .and. &
-                   .not. config%kinematics%pitch_rate_given) cycle
-               if (v%kind == k_int) then
-                  call check_int_var(config, trim(v%group), trim(v%name), &
-                     nint(number_value(config, v%group, v%name)), error)
-               else
-                  call check_real(config, trim(v%group), trim(v%name), trim(v%name), &
-                     number_value(config, v%group, v%name), error)
-               end if
-               if (allocated(error)) return
-            end associate
-         end do
+      integer :: iv
+      do iv = 1, size(variables)
+         associate (v => variables(iv))
+            if (.not. has_range(v)) cycle
+            if (.not. any(groups == v%group)) cycle
+            if (v%group == 'kinematics' .and. v%name == 'pitch_rate' .and. &
+                .not. config%kinematics%pitch_rate_given) cycle
+            if (v%kind == k_int) then
+               call check_int_var(config, trim(v%group), trim(v%name), &
+                  nint(number_value(config, v%group, v%name)), error)
+            else
+               call check_real(config, trim(v%group), trim(v%name), trim(v%name), &
+                  number_value(config, v%group, v%name), error)
+            end if
+            if (allocated(error)) return
+         end associate
       end do
    end subroutine check_numbers
 
