@@ -164,34 +164,36 @@ contains
       end if
    end function find_patch_column
 
-   !> Value `k` ([[patch_columns]]) of a patch.
+   !> Value `k` ([[patch_columns]]) of a patch. The cases are the rows' indices, constant
+   !> expressions on the table, so that a lookup costs no string comparison (/summary reads
+   !> every value of every case); test `registry/output_column_table` reads every row.
    pure real(wp) function patch_value(p, k) result(x)
       !> The patch.
       type(patch_result_type), intent(in) :: p
       !> Index in [[patch_columns]].
       integer, intent(in) :: k
-      select case (patch_columns(k)%name)
-      case ('fn'); x = p%fn
-      case ('fx'); x = p%fx
-      case ('fy'); x = p%fy
-      case ('mz'); x = p%mz
-      case ('fx_norm'); x = p%fx_norm
-      case ('fy_norm'); x = p%fy_norm
-      case ('coulomb'); x = p%coulomb_ratio
-      case ('adhesion'); x = p%adhesion_fraction
-      case ('approach'); x = p%approach
-      case ('area'); x = p%area
-      case ('p_max'); x = p%p_max
-      case ('gamma0'); x = p%gamma0
-      case ('r0'); x = p%r0
-      case ('y_track'); x = p%y_track
-      case ('x_track'); x = p%x_track
-      case ('nu_x'); x = p%nu_x
-      case ('nu_y'); x = p%nu_y
-      case ('phi'); x = p%phi
-      case ('fy_track'); x = p%fy_track
-      case ('fz_track'); x = p%fz_track
-      case ('z_track'); x = p%z_track
+      select case (k)
+      case (findloc(patch_columns%name, 'fn', 1)); x = p%fn
+      case (findloc(patch_columns%name, 'fx', 1)); x = p%fx
+      case (findloc(patch_columns%name, 'fy', 1)); x = p%fy
+      case (findloc(patch_columns%name, 'mz', 1)); x = p%mz
+      case (findloc(patch_columns%name, 'fx_norm', 1)); x = p%fx_norm
+      case (findloc(patch_columns%name, 'fy_norm', 1)); x = p%fy_norm
+      case (findloc(patch_columns%name, 'coulomb', 1)); x = p%coulomb_ratio
+      case (findloc(patch_columns%name, 'adhesion', 1)); x = p%adhesion_fraction
+      case (findloc(patch_columns%name, 'approach', 1)); x = p%approach
+      case (findloc(patch_columns%name, 'area', 1)); x = p%area
+      case (findloc(patch_columns%name, 'p_max', 1)); x = p%p_max
+      case (findloc(patch_columns%name, 'gamma0', 1)); x = p%gamma0
+      case (findloc(patch_columns%name, 'r0', 1)); x = p%r0
+      case (findloc(patch_columns%name, 'y_track', 1)); x = p%y_track
+      case (findloc(patch_columns%name, 'x_track', 1)); x = p%x_track
+      case (findloc(patch_columns%name, 'nu_x', 1)); x = p%nu_x
+      case (findloc(patch_columns%name, 'nu_y', 1)); x = p%nu_y
+      case (findloc(patch_columns%name, 'phi', 1)); x = p%phi
+      case (findloc(patch_columns%name, 'fy_track', 1)); x = p%fy_track
+      case (findloc(patch_columns%name, 'fz_track', 1)); x = p%fz_track
+      case (findloc(patch_columns%name, 'z_track', 1)); x = p%z_track
       case default; x = 0.0_wp
       end select
    end function patch_value
@@ -204,28 +206,28 @@ contains
       integer, intent(in) :: k
       !> The value.
       real(wp), intent(in) :: x
-      select case (patch_columns(k)%name)
-      case ('fn'); p%fn = x
-      case ('fx'); p%fx = x
-      case ('fy'); p%fy = x
-      case ('mz'); p%mz = x
-      case ('fx_norm'); p%fx_norm = x
-      case ('fy_norm'); p%fy_norm = x
-      case ('coulomb'); p%coulomb_ratio = x
-      case ('adhesion'); p%adhesion_fraction = x
-      case ('approach'); p%approach = x
-      case ('area'); p%area = x
-      case ('p_max'); p%p_max = x
-      case ('gamma0'); p%gamma0 = x
-      case ('r0'); p%r0 = x
-      case ('y_track'); p%y_track = x
-      case ('x_track'); p%x_track = x
-      case ('nu_x'); p%nu_x = x
-      case ('nu_y'); p%nu_y = x
-      case ('phi'); p%phi = x
-      case ('fy_track'); p%fy_track = x
-      case ('fz_track'); p%fz_track = x
-      case ('z_track'); p%z_track = x
+      select case (k)
+      case (findloc(patch_columns%name, 'fn', 1)); p%fn = x
+      case (findloc(patch_columns%name, 'fx', 1)); p%fx = x
+      case (findloc(patch_columns%name, 'fy', 1)); p%fy = x
+      case (findloc(patch_columns%name, 'mz', 1)); p%mz = x
+      case (findloc(patch_columns%name, 'fx_norm', 1)); p%fx_norm = x
+      case (findloc(patch_columns%name, 'fy_norm', 1)); p%fy_norm = x
+      case (findloc(patch_columns%name, 'coulomb', 1)); p%coulomb_ratio = x
+      case (findloc(patch_columns%name, 'adhesion', 1)); p%adhesion_fraction = x
+      case (findloc(patch_columns%name, 'approach', 1)); p%approach = x
+      case (findloc(patch_columns%name, 'area', 1)); p%area = x
+      case (findloc(patch_columns%name, 'p_max', 1)); p%p_max = x
+      case (findloc(patch_columns%name, 'gamma0', 1)); p%gamma0 = x
+      case (findloc(patch_columns%name, 'r0', 1)); p%r0 = x
+      case (findloc(patch_columns%name, 'y_track', 1)); p%y_track = x
+      case (findloc(patch_columns%name, 'x_track', 1)); p%x_track = x
+      case (findloc(patch_columns%name, 'nu_x', 1)); p%nu_x = x
+      case (findloc(patch_columns%name, 'nu_y', 1)); p%nu_y = x
+      case (findloc(patch_columns%name, 'phi', 1)); p%phi = x
+      case (findloc(patch_columns%name, 'fy_track', 1)); p%fy_track = x
+      case (findloc(patch_columns%name, 'fz_track', 1)); p%fz_track = x
+      case (findloc(patch_columns%name, 'z_track', 1)); p%z_track = x
       end select
    end subroutine set_patch_value
 
