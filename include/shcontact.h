@@ -89,8 +89,9 @@ extern "C" {
 #define SHCONTACT_STATE_SLIP 2     /* slip */
 
 /* Options (shcontact_set_option): key "group%variable" as in the app's case files, its default
- * and units, and its choices or range. The lines between the markers come from the option
- * registries (test registry/header_option_lists checks them; on a change it prints them).
+ * and units, and its choices or range. The lines between the markers are GENERATED from the
+ * registry (src/shcontact/core/ranges.f90, the option registries): `fpm run --example
+ * shcontact-headers` writes them; test registry/header_option_lists checks them.
  * -- options --
  * profiles%wheel_smoothing = 0.0: 0.0 <= wheel_smoothing <= 100.0 mm
  * profiles%rail_smoothing = 0.0: 0.0 <= rail_smoothing <= 100.0 mm

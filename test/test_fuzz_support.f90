@@ -7,7 +7,7 @@ module test_fuzz_support
    use shcontact_core_strings, only: str_int
    use shcontact_core_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
-   use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
+   use shcontact_core_ranges, only: ranges, find_range, range_key, k_int, in_range, max_grid_cells
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type, check_track
    use shcontact_api_context, only: contact_context_type, context_create, context_set_option, &
@@ -166,7 +166,7 @@ contains
       real(wp) :: lo, hi, d
       lo = ranges(ir)%lo
       hi = ranges(ir)%hi
-      if (ranges(ir)%whole) then
+      if (ranges(ir)%kind == k_int) then
          x = [lo - 1, lo, lo + 1, anint(0.5_wp*(lo + hi)), hi - 1, hi, hi + 1, 0.0_wp, 1.0_wp, &
             -1.0_wp, 1.0e6_wp, 1.0e9_wp]
       else
@@ -227,7 +227,7 @@ contains
             x = s(next_random(seed, size(s)))
             if (next_random(seed, 3) == 1) x = ranges(ir)%lo + (ranges(ir)%hi - ranges(ir)%lo)* &
                real(next_random(seed, 1000), wp)/1000.0_wp
-            if (ranges(ir)%whole) then
+            if (ranges(ir)%kind == k_int) then
                if (abs(x) > 1.0e9_wp) x = 1.0e9_wp
                x = anint(x)
                text = str_int(nint(x))
@@ -252,7 +252,7 @@ contains
             end if
             stat = context_set_option(ctx, key, text)
             message = context_message(ctx)
-            if (text == '1d-320' .and. ranges(ir)%whole) expect_ok = stat == 0
+            if (text == '1d-320' .and. ranges(ir)%kind == k_int) expect_ok = stat == 0
             if (index(text, ',') > 0 .or. index(text, ' ') > 0) expect_ok = stat == 0
             if (expect_ok .neqv. (stat == 0)) then
                call test_failed(error, 'set_option('//key//', '//text//'): status '// &
@@ -271,9 +271,9 @@ contains
                next_random(seed, 2) == 1)))
             s = samples(ir)
             x = s(next_random(seed, size(s)))
-            stat = library_status(ctx, trim(ranges(ir)%key), x, message)
+            stat = library_status(ctx, trim(range_key(ranges(ir))), x, message)
             if (in_range(ranges(ir), x) .neqv. (stat == 0)) then
-               call test_failed(error, trim(ranges(ir)%key)//' = '//format_real(x)// &
+               call test_failed(error, trim(range_key(ranges(ir)))//' = '//format_real(x)// &
                   ': library status '//str_int(stat)//'; '//message)
                return
             end if

@@ -8,7 +8,7 @@ module test_input
    use shcontact_core_strings, only: str_int
    use shcontact_core_text, only: format_real
    use shcontact_core_error, only: shc_error_type => error_type
-   use shcontact_core_ranges, only: ranges, find_range, in_range, max_grid_cells
+   use shcontact_core_ranges, only: ranges, find_range, range_key, k_int, in_range, max_grid_cells
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type
    use shcontact_geometry_contact, only: contact_options_type
@@ -412,10 +412,10 @@ contains
       if (allocated(error)) return
       n_lib = 0
       do ir = 1, size(ranges)
-         key = trim(ranges(ir)%key)
+         key = trim(range_key(ranges(ir)))
          x = samples(ir)
          do i = 1, size(x)
-            if (ranges(ir)%whole) then
+            if (ranges(ir)%kind == k_int) then
                if (abs(x(i)) > real(huge(1), wp)) cycle
                text = str_int(nint(x(i)))
             else
@@ -425,7 +425,7 @@ contains
             ! The app refuses what is outside the table's range, and accepts what is inside
             ! (the default case otherwise; the grid limit may refuse a large count).
             if (app .neqv. in_range(ranges(ir), x(i))) then
-               if (.not. (ranges(ir)%whole .and. index(app_message, 'grid cells') > 0)) then
+               if (.not. (ranges(ir)%kind == k_int .and. index(app_message, 'grid cells') > 0)) then
                   call test_failed(error, key//' = '//text//': the app '// &
                      trim(merge('accepts', 'refuses', app))//' it, the table says '// &
                      trim(merge('inside ', 'outside', in_range(ranges(ir), x(i))))// &
@@ -484,7 +484,7 @@ contains
       text = config_namelist(config)
       checked = 0
       do ir = 1, size(ranges)
-         key = trim(ranges(ir)%key)
+         key = trim(range_key(ranges(ir)))
          group = key(1:index(key, '%') - 1)
          name = key(index(key, '%') + 1:)
          g = index(text, '&'//group//new_line('a'))

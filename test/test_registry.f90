@@ -8,7 +8,7 @@ module test_registry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_choices, only: choice_type, choice_code, choice_list
-   use shcontact_core_ranges, only: ranges, find_range
+   use shcontact_core_ranges, only: ranges, find_range, range_key, k_int
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type, side_right, side_left
    use shcontact_geometry_prepared, only: contact_options_type
@@ -21,7 +21,16 @@ module test_registry
    use shcontact_input_config_variables, only: variables, find_variable, variable_choices, &
       k_real, k_int, k_choice, k_real_list, header_option_keys
    use shcontact_input_config_writer, only: variable_value_text, option_list
-   use shcontact_input_config_types, only: choice_value
+   use shcontact_input_config_types, only: choice_value, number_value
+   use shcontact_core_text, only: format_real
+   use shcontact_core_strings, only: str_int
+   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column
+   use shcontact_case_result, only: case_summary_type, case_summary, summary_columns, &
+      n_summary_columns, summary_value, summary_column_help
+   use shcontact_output_descriptions, only: dataset_description
+   use shcontact_api_context, only: contact_context_type
+   use shcontact_api_keyed, only: context_solve_state, context_get_value, output_keys
+   use test_fuzz_support, only: new_library
    use shcontact_input_config_assign, only: read_group_variable, stat_unknown_choice
    implicit none
    private
@@ -36,7 +45,9 @@ contains
          new_unittest('config_defaults_and_units', test_config_defaults), &
          new_unittest('doc_app_tables', test_doc_tables), &
          new_unittest('header_option_lists', test_header_lists), &
-         new_unittest('every_choice_from_text', test_every_choice) &
+         new_unittest('every_choice_from_text', test_every_choice), &
+         new_unittest('number_accessor_per_row', test_number_accessor), &
+         new_unittest('output_column_table', test_output_columns) &
          ]
    end subroutine collect_registry
 
@@ -142,7 +153,7 @@ contains
          if (allocated(error)) return
       end do
       do ir = 1, size(ranges)
-         key = trim(ranges(ir)%key)
+         key = trim(range_key(ranges(ir)))
          call check(error, find_variable(key(1:index(key, '%') - 1), &
             key(index(key, '%') + 1:)) > 0, message=key//': a range of no variable')
          if (allocated(error)) return
@@ -155,7 +166,7 @@ contains
       integer :: i
       ir = 0
       do i = 1, size(ranges)
-         if (ranges(i)%key(index(ranges(i)%key, '%') + 1:) == name) ir = i
+         if (ranges(i)%name == name) ir = i
       end do
    end function range_of_swept
 
@@ -363,7 +374,7 @@ contains
          character(len=400) :: line
          integer :: unit, stat
          logical :: inside
-         expected = option_list(c, header_option_keys, prefix, width)
+         expected = option_list(c, header_option_keys(), prefix, width)
          found = ''
          inside = .false.
          open (newunit=unit, file=file, status='old', action='read', iostat=stat)
@@ -378,7 +389,8 @@ contains
          end do
          close (unit)
          call check(error, found == expected, message=file//': the option list differs '// &
-            'from the registry; it should read'//new_line('a')//expected)
+            'from the registry; run `fpm run --example shcontact-headers` (it writes '// &
+            'the list); it should read'//new_line('a')//expected)
          if (allocated(error)) return
          call check_mentions(file, error)
       end subroutine check_block
@@ -485,5 +497,92 @@ contains
       end function capitalised
 
    end subroutine test_every_choice
+
+   !> Every number with a range in the variable table is read by the one accessor
+   !> (number_value, which the validation's generic range check and the resolved namelist use):
+   !> a value set through the namelist reader, inside the range and off the default, comes back.
+   subroutine test_number_accessor(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c
+      character(len=256) :: msg
+      character(len=:), allocatable :: text
+      integer :: ir, stat
+      real(wp) :: x
+      do ir = 1, size(ranges)
+         associate (r => ranges(ir))
+            x = r%lo + 0.375_wp*(r%hi - r%lo)
+            if (r%hi > 1.0e6_wp) x = r%lo + 3.0_wp
+            if (r%kind == k_int) then
+               x = anint(x)
+               text = str_int(nint(x))
+            else
+               text = format_real(x)
+               read (text, *) x
+            end if
+            msg = ''
+            call read_group_variable(c, trim(r%group), trim(r%name), text, stat, msg)
+            call check(error, stat, 0, message=trim(range_key(r))//' = '//text//': '//trim(msg))
+            if (allocated(error)) return
+            call check(error, number_value(c, r%group, r%name) == x, message= &
+               trim(range_key(r))//': number_value does not give the value set ('//text//')')
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine test_number_accessor
+
+   !> The one column table of the per-patch results (shcontact_pipeline_result's patch_columns)
+   !> agrees with the flat layout (every column that is also a flat value: the same number by
+   !> name, main patch and patch 1), with /summary (each main-patch column is the table's value,
+   !> under the table's name and units) and with the HDF5 descriptions (every real /summary
+   !> column has the table's text). On the default case every value read is nonzero, so a
+   !> column wired to the wrong field shows.
+   subroutine test_output_columns(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_context_type) :: ctx
+      type(case_summary_type) :: s
+      integer :: k, j, stat
+      real(wp) :: x
+      call new_library(error, ctx)
+      if (allocated(error)) return
+      call check(error, context_solve_state(ctx), 0, message='solve of the default state')
+      if (allocated(error)) return
+      do k = 1, size(patch_columns)
+         call check(error, find_patch_column(trim(patch_columns(k)%name), .false.), k, &
+            message=trim(patch_columns(k)%name)//': name found twice in the column table')
+         if (allocated(error)) return
+         stat = context_get_value(ctx, trim(patch_columns(k)%name), 0, x)
+         call check(error, stat == 0 .and. x == patch_value(ctx%result%main, k), &
+            message=trim(patch_columns(k)%name)//': keyed value of the main patch differs '// &
+            'from the column table''s')
+         if (allocated(error)) return
+         stat = context_get_value(ctx, trim(patch_columns(k)%name), 1, x)
+         call check(error, stat == 0 .and. x == patch_value(ctx%result%patch(1), k), &
+            message=trim(patch_columns(k)%name)//': keyed value of patch 1 differs')
+         if (allocated(error)) return
+         if (any(output_keys%name == patch_columns(k)%name) .and. &
+             patch_columns(k)%name /= 'nu_x' .and. patch_columns(k)%name /= 'nu_y' .and. &
+             patch_columns(k)%name /= 'phi' .and. patch_columns(k)%name /= 'x_track') then
+            call check(error, patch_value(ctx%result%main, k) /= 0.0_wp, &
+               message=trim(patch_columns(k)%name)//': zero on the default case')
+            if (allocated(error)) return
+         end if
+      end do
+      s = case_summary(ctx%result)
+      do j = 1, n_summary_columns
+         call check(error, len_trim(summary_column_help(trim(summary_columns(1, j)))) > 0 &
+            .and. dataset_description('summary/'//trim(summary_columns(1, j))) == &
+            summary_column_help(trim(summary_columns(1, j))), message='/summary/'// &
+            trim(summary_columns(1, j))//': no description, or not the table''s')
+         if (allocated(error)) return
+         k = find_patch_column(trim(summary_columns(1, j)), .true.)
+         if (k == 0) cycle
+         call check(error, summary_value(s, j) == patch_value(ctx%result%main, k) .and. &
+            summary_columns(2, j) == patch_columns(k)%units, message='/summary/'// &
+            trim(summary_columns(1, j))//': not the main patch''s column of the table')
+         if (allocated(error)) return
+      end do
+      call check(error, count(patch_columns%summary /= '') + 4, n_summary_columns, &
+         message='/summary has a main-patch column that is not in the table')
+   end subroutine test_output_columns
 
 end module test_registry

@@ -7,7 +7,8 @@
 !>   context_set_option;
 !> * [[context_solve_state]]: solve the state of the keys `&position`, `&kinematics` (mode 'on':
 !>   the kinematic call), `&load`, `&creepage`, as the app solves one case;
-!> * [[context_get_value]]: a result value by its name in [[output_keys]], of the main patch
+!> * [[context_get_value]]: a result value by its name in [[output_keys]] (or, beyond the flat
+!>   layout, in shcontact_pipeline_result's patch_columns), of the main patch
 !>   (patch 0) or of patch k; on a wheelset handle 'wheelset%fx' ... 'wheelset%mz' and
 !>   'right%NAME', 'left%NAME';
 !> * [[context_get_field]]: one element field by its name in [[field_keys]].
@@ -20,6 +21,7 @@ module shcontact_api_keyed
    use shcontact_input_config_types, only: output_config_type
    use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
+   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column
    use shcontact_api_wheelset, only: wheel_right, wheel_left
    use shcontact_api_settings, only: config_load, config_state
    use shcontact_api_values, only: kinematic_value_count, result_value_count, kinematic_values, value_fx, value_fy, &
@@ -274,21 +276,29 @@ contains
       real(wp), intent(out) :: x
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: values(kinematic_value_count)
-      integer :: i
+      integer :: i, k
       x = 0.0_wp
       i = findloc(output_keys%name, key, 1)
-      if (i == 0) then
+      ! A per-patch value beyond the frozen flat layout: by name from the column table.
+      k = 0
+      if (i == 0) k = find_patch_column(key, .false.)
+      if (i == 0 .and. k == 0) then
          call unknown_output(key, error)
       else if (patch < 0 .or. patch > min(result%n_patches, max_patches)) then
          call fatal_error(error, 'patch '//str_int(patch)//': expected 0 (the main patch) '// &
             'to '//str_int(result%n_patches)//' (the patches of the last solve)', stat_usage)
       else
-         if (patch == 0) then
+         if (k > 0 .and. patch == 0) then
+            x = patch_value(result%main, k)
+         else if (k > 0) then
+            x = patch_value(result%patch(patch), k)
+         else if (patch == 0) then
             call kinematic_values(result, values)
+            x = values(output_keys(i)%index)
          else
             call kinematic_values(result, values, patch)
+            x = values(output_keys(i)%index)
          end if
-         x = values(output_keys(i)%index)
       end if
    end subroutine result_value
 
@@ -300,6 +310,10 @@ contains
       names = ''
       do i = 1, size(output_keys)
          names = names//trim(output_keys(i)%name)//merge(', ', '  ', i < size(output_keys))
+      end do
+      do i = 1, size(patch_columns)
+         if (any(output_keys%name == patch_columns(i)%name)) cycle
+         names = trim(names)//', '//trim(patch_columns(i)%name)
       end do
       call fatal_error(error, "value '"//visible(key)//"': unknown; expected one of "// &
          trim(names)//" (a wheelset handle: wheelset%fx, wheelset%fy, wheelset%fz, "// &

@@ -21,11 +21,11 @@ module shcontact_api_settings
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_input_config, only: case_config_type, case_point_type, apply_override, &
-      normal_options_of, tangential_options_of, load_mode_force, load_mode_approach, &
-      curvature_reference, table_step_of
-   use shcontact_input_config_types, only: set_origin
+      normal_options_of, tangential_options_of, load_mode_force, load_mode_approach
+   use shcontact_input_config_types, only: set_origin, track_of, contact_options_of
    use shcontact_input_config_variables, only: variables, find_variable, &
-      join_words, k_real, k_real_list
+      join_words, k_real, k_real_list, key_use, key_solver, key_state, key_fields, key_creation, &
+      key_app
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
       load_vertical_force
    implicit none
@@ -34,13 +34,6 @@ module shcontact_api_settings
    public :: library_setup_type, library_setup, config_load, point_load, config_state
    public :: key_use, key_solver, key_state, key_fields, key_creation, key_app
    public :: set_config_value, split_key, handle_key_list
-
-   !> What a handle does with a key ([[key_use]]): the solver's data (track, material,
-   !> smoothing, normal and tangential options), the state of a keyed solve (position,
-   !> kinematics, load, creepage), the fields switch (output%fields), given at creation
-   !> (profile files, track%side), or only the app's (output file, sweep).
-   integer, parameter :: key_solver = 1, key_state = 2, key_fields = 3, key_creation = 4, &
-      key_app = 5
 
    !> The library's objects of a configuration.
    type :: library_setup_type
@@ -62,7 +55,8 @@ contains
 
    !> The library's objects of a configuration: track, contact-search options, normal and
    !> tangential options (bound and spin model those of the configuration), material, side.
-   !> The one translation: the handles and the program's runner (`prepare_run`) call it.
+   !> The one translation (each part a function of shcontact_input_config_types, beside the
+   !> configuration's fields): the handles and the program's runner (`prepare_run`) call it.
    subroutine library_setup(config, setup, error)
       !> The configuration (choices in lower case, as the namelist reader stores them).
       type(case_config_type), intent(in) :: config
@@ -71,19 +65,8 @@ contains
       !> Set for a choice the library does not know.
       type(error_type), allocatable, intent(out) :: error
 
-      setup%track%gauge = config%track%gauge
-      setup%track%gauge_height = config%track%gauge_height
-      setup%track%rail_inclination = config%track%inclination
-      setup%track%rail_canted = config%track%rail_canted
-      setup%track%flange_back_distance = config%track%flange_back_distance
-      setup%track%flange_back_position = config%track%flange_back_position
-      setup%track%nominal_radius = config%track%nominal_radius
-      setup%contact_options%l_filt_wheel = config%profiles%wheel_smoothing
-      setup%contact_options%l_filt_rail = config%profiles%rail_smoothing
-      setup%contact_options%b_min = config%normal%b_min
-      setup%contact_options%a_reference_normal = &
-         config%normal%longitudinal_curvature == curvature_reference
-      setup%contact_options%table_step = table_step_of(config)
+      setup%track = track_of(config)
+      setup%contact_options = contact_options_of(config)
       setup%side = config%track%side
       setup%normal = normal_options_of(config)
       setup%tangential = tangential_options_of(config)
@@ -129,27 +112,6 @@ contains
          v_forward=point%v_forward, v_lateral=point%v_lateral, v_vertical=point%v_vertical, &
          roll_rate=point%roll_rate, yaw_rate=point%yaw_rate, pitch_rate=point%pitch_rate)
    end function config_state
-
-   !> What a handle does with variable `name` of group `group` (key_solver, key_state,
-   !> key_fields, key_creation, key_app).
-   pure integer function key_use(group, name)
-      !> Group and variable (lower case).
-      character(len=*), intent(in) :: group, name
-      select case (group)
-      case ('material', 'normal', 'tangential')
-         key_use = key_solver
-      case ('track')
-         key_use = merge(key_creation, key_solver, name == 'side')
-      case ('profiles')
-         key_use = merge(key_solver, key_creation, index(name, '_smoothing') > 0)
-      case ('position', 'kinematics', 'load', 'creepage')
-         key_use = key_state
-      case ('output')
-         key_use = merge(key_fields, key_app, name == 'fields')
-      case default
-         key_use = key_app
-      end select
-   end function key_use
 
    !> Group and variable of a key `group%variable` (lower case, blanks removed); both '' when
    !> the key has no '%'.

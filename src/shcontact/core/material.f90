@@ -2,20 +2,24 @@
 module shcontact_core_material
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type
-   use shcontact_core_ranges, only: check_range
+   use shcontact_core_ranges, only: check_range, variables
    implicit none
    private
 
    public :: material_type, check_material
 
    !> Steel on steel: both bodies share G and ν (quasi-identity, doc/theory.md §0), Coulomb friction.
+   !> The defaults are the variable table's (`&material`, shcontact_core_ranges).
    type :: material_type
       !> Shear modulus G (N/mm² = MPa).
-      real(wp) :: shear_modulus = 82670.0_wp
+      real(wp) :: shear_modulus = variables(findloc(variables%name, 'shear_modulus', 1, &
+         mask=variables%group == 'material'))%default
       !> Poisson's ratio ν (dimensionless), 0 ≤ ν < 0.5.
-      real(wp) :: poisson = 0.27_wp
+      real(wp) :: poisson = variables(findloc(variables%name, 'poisson', 1, &
+         mask=variables%group == 'material'))%default
       !> Coefficient of friction μ (dimensionless), 0.001 ≤ μ ≤ 10 (shcontact_core_ranges).
-      real(wp) :: friction = 0.3_wp
+      real(wp) :: friction = variables(findloc(variables%name, 'friction', 1, &
+         mask=variables%group == 'material'))%default
    contains
       !> Combined modulus E* = G/(1 − ν) of two identical bodies (doc/theory.md §1.2), MPa.
       procedure :: e_star

@@ -5,7 +5,7 @@
 module shcontact_geometry_prepared
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
-   use shcontact_core_ranges, only: check_range
+   use shcontact_core_ranges, only: check_range, variables
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
       source_name => profile_label
@@ -37,7 +37,8 @@ module shcontact_geometry_prepared
       !> The tables stop where the gap exceeds this (mm), or earlier at a maximum of the gap.
       real(wp) :: table_gap = 2.0_wp
       !> Smallest lateral relative curvature B (1/mm); concave gap curvature is clamped to it.
-      real(wp) :: b_min = 1.0e-4_wp
+      real(wp) :: b_min = variables(findloc(variables%name, 'b_min', 1, &
+         mask=variables%group == 'normal'))%default
       !> Candidates whose gap exceeds the smallest one by more than this are ignored (mm).
       real(wp) :: max_gap = 1.0_wp
       !> Two minima separated by a maximum less than this above the shallower one are one

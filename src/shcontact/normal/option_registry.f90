@@ -6,6 +6,7 @@
 module shcontact_normal_option_registry
    use shcontact_core_kinds, only: wp
    use shcontact_core_choices, only: choice_type
+   use shcontact_core_ranges, only: variables
    implicit none
    private
 
@@ -43,12 +44,13 @@ module shcontact_normal_option_registry
       choice_type('constant', reduction_constant, "penetration reduced by the constant "// &
       "'epsilon' (Kik-Piotrowski)")]
 
-   !> The defaults (decisions 5, 6, 11); the ranges of `epsilon` and `n_strips` are those of
-   !> shcontact_core_ranges (`normal%epsilon`, `normal%n_strips`), whose defaults equal these
-   !> (test `registry`).
+   !> The defaults (decisions 5, 6, 11); those of `epsilon` and `n_strips`, and their ranges,
+   !> are the variable table's (shcontact_core_ranges, `normal%epsilon`, `normal%n_strips`).
    integer, parameter :: default_method = method_semi_hertz
    integer, parameter :: default_reduction = reduction_coupled
-   real(wp), parameter :: default_epsilon = 0.55_wp
-   integer, parameter :: default_n_strips = 100
+   real(wp), parameter :: default_epsilon = variables(findloc(variables%name, 'epsilon', 1, &
+      mask=variables%group == 'normal'))%default
+   integer, parameter :: default_n_strips = nint(variables(findloc(variables%name, 'n_strips', &
+      1, mask=variables%group == 'normal'))%default)
 
 end module shcontact_normal_option_registry

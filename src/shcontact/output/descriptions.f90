@@ -3,6 +3,7 @@
 !> text is found from the dataset's name and the group it is in (summary, geometry, normal,
 !> tangential, input, failures); doc/app.md lists the same layout.
 module shcontact_output_descriptions
+   use shcontact_case_result, only: summary_column_help
    implicit none
    private
 
@@ -94,35 +95,9 @@ contains
       case ('roll_rate'); text = 'input: roll rate of the wheelset'
       case ('yaw_rate'); text = 'input: yaw rate of the wheelset'
       case ('pitch_rate'); text = 'input: pitch rate of the wheelset (negative rolling forward)'
-      case ('nu_x'); text = 'longitudinal creepage nu_x of the wheel relative to the rail '// &
-         '(input, or from the wheelset motion in a kinematic run)'
-      case ('nu_y'); text = 'lateral creepage nu_y (input, or from the wheelset motion in a '// &
-         'kinematic run)'
-      case ('phi'); text = 'spin creepage phi (input, or from the wheelset motion in a '// &
-         'kinematic run)'
-      ! Results.
-      case ('fn_total'); text = 'sum of the normal forces of all patches'
-      case ('fx_total'); text = 'total longitudinal force on the wheel, track frame'
-      case ('fy_total'); text = 'total lateral force on the wheel, track frame (field side +)'
-      case ('fz_total'); text = 'total vertical force on the wheel, track frame (down +)'
-      case ('fn'); text = 'normal force of the main patch'
-      case ('fx'); text = 'longitudinal creep force on the wheel, main patch, contact frame'
-      case ('fy'); text = 'lateral creep force on the wheel, main patch, contact frame'
-      case ('mz'); text = 'spin moment on the wheel about the reference point, main patch'
-      case ('fx_norm'); text = 'normalised longitudinal force F_x/(mu F_n), main patch'
-      case ('fy_norm'); text = 'normalised lateral force F_y/(mu F_n), main patch'
-      case ('coulomb_ratio'); text = 'largest |p|/(mu p_n) over contact elements, of the '// &
-         'corrected tractions (the totals keep |F_t| <= mu F_n)'
-      case ('adhesion_fraction'); text = 'adhesion (stick) area / contact area, main patch'
-      case ('delta'); text = 'approach delta of the main patch'
-      case ('area'); text = 'contact area of the main patch'
-      case ('p_max'); text = 'largest peak pressure of the main patch'
-      case ('gamma0'); text = 'contact angle at the main patch reference point (CONTACT sign)'
-      case ('r0'); text = 'wheel rolling radius at the main patch reference point'
-      case ('y_track'); text = 'lateral track position of the main patch reference point'
-      case ('x_track'); text = 'longitudinal position of the main patch reference point '// &
-         '(track frame, + forward)'
-      case default; text = ''
+      ! Results: the column table of the totals and the main patch's values (shcontact_case_result,
+      ! shcontact_pipeline_result's patch_columns); nu_x, nu_y, phi are inputs or results.
+      case default; text = summary_column_help(name)
       end select
    end function summary_text
 

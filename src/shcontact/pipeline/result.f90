@@ -12,6 +12,7 @@ module shcontact_pipeline_result
    private
 
    public :: contact_result_type, patch_result_type, contact_fields_type, max_patches
+   public :: patch_column_type, patch_columns, patch_value, set_patch_value, find_patch_column
 
    !> Most patches one contact may have (the contact search follows at most 16 candidates).
    integer, parameter :: max_patches = max_candidates
@@ -52,6 +53,64 @@ module shcontact_pipeline_result
       real(wp) :: x_track = 0.0_wp
    end type patch_result_type
 
+   !> One value of a patch by name (issue 26: the one column table of the per-patch results):
+   !> the name of the C / Fortran 77 keyed getter (`shcontact_get_value`, `SHC_GET_VALUE`), the
+   !> main patch's `/summary` column ('' when it has none), units, whether the column belongs to
+   !> kinematic runs only (prescribed creepages are inputs), and the HDF5 description of the
+   !> column. [[patch_value]] and [[set_patch_value]] are the one accessor of each.
+   type :: patch_column_type
+      character(len=17) :: name = ''
+      character(len=17) :: summary = ''
+      character(len=8) :: units = ''
+      logical :: kinematic = .false.
+      character(len=120) :: help = ''
+   end type patch_column_type
+
+   !> The per-patch values, the `/summary` columns first and in the file's order (after the
+   !> totals of shcontact_case_result). A new per-patch output is a field of
+   !> [[patch_result_type]], a row here and its line in [[patch_value]] and [[set_patch_value]]:
+   !> `/summary` (with its HDF5 description), the CSV / JSON reports and the keyed getters take it
+   !> from here. The flat value arrays (shcontact_api_values) are a frozen binary layout.
+   type(patch_column_type), parameter :: patch_columns(*) = [ &
+      patch_column_type('fn', 'fn', 'N', .false., 'normal force of the main patch'), &
+      patch_column_type('fx', 'fx', 'N', .false., &
+      'longitudinal creep force on the wheel, main patch, contact frame'), &
+      patch_column_type('fy', 'fy', 'N', .false., &
+      'lateral creep force on the wheel, main patch, contact frame'), &
+      patch_column_type('mz', 'mz', 'N mm', .false., &
+      'spin moment on the wheel about the reference point, main patch'), &
+      patch_column_type('fx_norm', 'fx_norm', '1', .false., &
+      'normalised longitudinal force F_x/(mu F_n), main patch'), &
+      patch_column_type('fy_norm', 'fy_norm', '1', .false., &
+      'normalised lateral force F_y/(mu F_n), main patch'), &
+      patch_column_type('coulomb', 'coulomb_ratio', '1', .false., &
+      'largest |p|/(mu p_n) over contact elements, of the corrected tractions (the totals '// &
+      'keep |F_t| <= mu F_n)'), &
+      patch_column_type('adhesion', 'adhesion_fraction', '1', .false., &
+      'adhesion (stick) area / contact area, main patch'), &
+      patch_column_type('approach', 'delta', 'mm', .false., 'approach delta of the main patch'), &
+      patch_column_type('area', 'area', 'mm^2', .false., 'contact area of the main patch'), &
+      patch_column_type('p_max', 'p_max', 'MPa', .false., &
+      'largest peak pressure of the main patch'), &
+      patch_column_type('gamma0', 'gamma0', 'rad', .false., &
+      'contact angle at the main patch reference point (CONTACT sign)'), &
+      patch_column_type('r0', 'r0', 'mm', .false., &
+      'wheel rolling radius at the main patch reference point'), &
+      patch_column_type('y_track', 'y_track', 'mm', .false., &
+      'lateral track position of the main patch reference point'), &
+      patch_column_type('x_track', 'x_track', 'mm', .true., &
+      'longitudinal position of the main patch reference point (track frame, + forward)'), &
+      patch_column_type('nu_x', 'nu_x', '1', .true., &
+      'longitudinal creepage nu_x of the wheel relative to the rail (input, or from the '// &
+      'wheelset motion in a kinematic run)'), &
+      patch_column_type('nu_y', 'nu_y', '1', .true., &
+      'lateral creepage nu_y (input, or from the wheelset motion in a kinematic run)'), &
+      patch_column_type('phi', 'phi', 'rad/mm', .true., &
+      'spin creepage phi (input, or from the wheelset motion in a kinematic run)'), &
+      patch_column_type('fy_track', '', 'N', .false., 'lateral force, track frame'), &
+      patch_column_type('fz_track', '', 'N', .false., 'vertical force, track frame, z down'), &
+      patch_column_type('z_track', '', 'mm', .false., 'reference point, track z (down)')]
+
    !> The result of one solve. Fixed size: filling it allocates nothing.
    type :: contact_result_type
       !> Patches found by the contact search (deepest first).
@@ -88,5 +147,88 @@ module shcontact_pipeline_result
       !> Tangential solution (elements) of each patch.
       type(tangential_patch_type) :: tangential(max_patches)
    end type contact_fields_type
+
+contains
+
+   !> Index of the per-patch value `name` in [[patch_columns]] (by its getter name, or by its
+   !> `/summary` column when `summary` is true); 0 when there is none.
+   pure integer function find_patch_column(name, summary) result(k)
+      !> The name.
+      character(len=*), intent(in) :: name
+      !> Look the name up among the `/summary` columns.
+      logical, intent(in) :: summary
+      if (summary) then
+         k = findloc(patch_columns%summary, name, 1)
+      else
+         k = findloc(patch_columns%name, name, 1)
+      end if
+   end function find_patch_column
+
+   !> Value `k` ([[patch_columns]]) of a patch. The cases are the rows' indices, constant
+   !> expressions on the table, so that a lookup costs no string comparison (/summary reads
+   !> every value of every case); test `registry/output_column_table` reads every row.
+   pure real(wp) function patch_value(p, k) result(x)
+      !> The patch.
+      type(patch_result_type), intent(in) :: p
+      !> Index in [[patch_columns]].
+      integer, intent(in) :: k
+      select case (k)
+      case (findloc(patch_columns%name, 'fn', 1)); x = p%fn
+      case (findloc(patch_columns%name, 'fx', 1)); x = p%fx
+      case (findloc(patch_columns%name, 'fy', 1)); x = p%fy
+      case (findloc(patch_columns%name, 'mz', 1)); x = p%mz
+      case (findloc(patch_columns%name, 'fx_norm', 1)); x = p%fx_norm
+      case (findloc(patch_columns%name, 'fy_norm', 1)); x = p%fy_norm
+      case (findloc(patch_columns%name, 'coulomb', 1)); x = p%coulomb_ratio
+      case (findloc(patch_columns%name, 'adhesion', 1)); x = p%adhesion_fraction
+      case (findloc(patch_columns%name, 'approach', 1)); x = p%approach
+      case (findloc(patch_columns%name, 'area', 1)); x = p%area
+      case (findloc(patch_columns%name, 'p_max', 1)); x = p%p_max
+      case (findloc(patch_columns%name, 'gamma0', 1)); x = p%gamma0
+      case (findloc(patch_columns%name, 'r0', 1)); x = p%r0
+      case (findloc(patch_columns%name, 'y_track', 1)); x = p%y_track
+      case (findloc(patch_columns%name, 'x_track', 1)); x = p%x_track
+      case (findloc(patch_columns%name, 'nu_x', 1)); x = p%nu_x
+      case (findloc(patch_columns%name, 'nu_y', 1)); x = p%nu_y
+      case (findloc(patch_columns%name, 'phi', 1)); x = p%phi
+      case (findloc(patch_columns%name, 'fy_track', 1)); x = p%fy_track
+      case (findloc(patch_columns%name, 'fz_track', 1)); x = p%fz_track
+      case (findloc(patch_columns%name, 'z_track', 1)); x = p%z_track
+      case default; x = 0.0_wp
+      end select
+   end function patch_value
+
+   !> Set value `k` ([[patch_columns]]) of a patch (a `/summary` row read back from a file).
+   pure subroutine set_patch_value(p, k, x)
+      !> The patch.
+      type(patch_result_type), intent(inout) :: p
+      !> Index in [[patch_columns]].
+      integer, intent(in) :: k
+      !> The value.
+      real(wp), intent(in) :: x
+      select case (k)
+      case (findloc(patch_columns%name, 'fn', 1)); p%fn = x
+      case (findloc(patch_columns%name, 'fx', 1)); p%fx = x
+      case (findloc(patch_columns%name, 'fy', 1)); p%fy = x
+      case (findloc(patch_columns%name, 'mz', 1)); p%mz = x
+      case (findloc(patch_columns%name, 'fx_norm', 1)); p%fx_norm = x
+      case (findloc(patch_columns%name, 'fy_norm', 1)); p%fy_norm = x
+      case (findloc(patch_columns%name, 'coulomb', 1)); p%coulomb_ratio = x
+      case (findloc(patch_columns%name, 'adhesion', 1)); p%adhesion_fraction = x
+      case (findloc(patch_columns%name, 'approach', 1)); p%approach = x
+      case (findloc(patch_columns%name, 'area', 1)); p%area = x
+      case (findloc(patch_columns%name, 'p_max', 1)); p%p_max = x
+      case (findloc(patch_columns%name, 'gamma0', 1)); p%gamma0 = x
+      case (findloc(patch_columns%name, 'r0', 1)); p%r0 = x
+      case (findloc(patch_columns%name, 'y_track', 1)); p%y_track = x
+      case (findloc(patch_columns%name, 'x_track', 1)); p%x_track = x
+      case (findloc(patch_columns%name, 'nu_x', 1)); p%nu_x = x
+      case (findloc(patch_columns%name, 'nu_y', 1)); p%nu_y = x
+      case (findloc(patch_columns%name, 'phi', 1)); p%phi = x
+      case (findloc(patch_columns%name, 'fy_track', 1)); p%fy_track = x
+      case (findloc(patch_columns%name, 'fz_track', 1)); p%fz_track = x
+      case (findloc(patch_columns%name, 'z_track', 1)); p%z_track = x
+      end select
+   end subroutine set_patch_value
 
 end module shcontact_pipeline_result

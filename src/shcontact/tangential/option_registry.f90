@@ -6,6 +6,7 @@
 !> built from or checked against this one list (test `registry`).
 module shcontact_tangential_option_registry
    use shcontact_core_choices, only: choice_type
+   use shcontact_core_ranges, only: variables
    implicit none
    private
 
@@ -101,8 +102,9 @@ module shcontact_tangential_option_registry
    integer, parameter :: default_spin_model = spin_uniform
    integer, parameter :: default_spin_flexibility = spin_flexibility_longitudinal
    integer, parameter :: default_correction = correction_exact_ellipse
-   !> Elements per strip n_x (decision 11); its range is `tangential%n_elements` of
-   !> shcontact_core_ranges.
-   integer, parameter :: default_n_elements = 50
+   !> Elements per strip n_x (decision 11): the default and range of `tangential%n_elements` in
+   !> the variable table (shcontact_core_ranges).
+   integer, parameter :: default_n_elements = nint(variables(findloc(variables%name, &
+      'n_elements', 1, mask=variables%group == 'tangential'))%default)
 
 end module shcontact_tangential_option_registry

@@ -1,15 +1,19 @@
 !> The typed configuration of a run: one derived type per namelist group, with the defaults of
-!> the seed's headline case (the registries' defaults: shcontact_core_ranges and the option
-!> registries; choices are held as their integer codes; test `registry`), the whole
+!> the seed's headline case (taken from the registries: the numbers' from the variable table of
+!> shcontact_core_ranges, the choices' from the option registries; choices are held as their
+!> integer codes; test `registry`), the whole
 !> configuration with where each value was set, and the questions downstream code asks of it
 !> (number of cases, inputs of a case, fields to store, the library's options).
 module shcontact_input_config_types
    use shcontact_core_kinds, only: wp
    use shcontact_core_material, only: material_type
+   use shcontact_core_ranges, only: variables
    use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
+   use shcontact_geometry_track, only: track_type
+   use shcontact_geometry_prepared, only: contact_options_type
    use shcontact_input_config_limits, only: path_len, name_len, max_fields
    use shcontact_input_config_choices, only: side_right, kinematics_off, kinematics_on, &
-      load_mode_force, curvature_local, precision_double
+      load_mode_force, curvature_local, curvature_reference, precision_double
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_normal_option_registry, only: default_normal_method => default_method, &
@@ -28,7 +32,8 @@ module shcontact_input_config_types
    public :: kinematics_config_type, load_config_type, creepage_config_type, normal_config_type
    public :: tangential_config_type, output_config_type
    public :: set_origin, origin, sweep_origin, choice_value, set_choice_value
-   public :: normal_options_of, tangential_options_of, table_step_of
+   public :: number_value, string_value, logical_value
+   public :: normal_options_of, tangential_options_of, table_step_of, contact_options_of, track_of
 
    !> `&profiles`: which profiles, read how.
    type :: profiles_config_type
@@ -40,13 +45,19 @@ module shcontact_input_config_types
       !> File formats: 'auto', 'plain', 'simpack', 'miniprof'.
       character(len=name_len) :: wheel_format = 'auto', rail_format = 'auto'
       !> Smoothing lengths L_filt (mm); 0 interpolates.
-      real(wp) :: wheel_smoothing = 0.0_wp, rail_smoothing = 0.0_wp
+      real(wp) :: wheel_smoothing = variables(findloc(variables%name, 'wheel_smoothing', 1, &
+         mask=variables%group == 'profiles'))%default
+      real(wp) :: rail_smoothing = variables(findloc(variables%name, 'rail_smoothing', 1, &
+         mask=variables%group == 'profiles'))%default
       !> Mirror y or z of a profile file: 'auto' (the file's or format's convention), 'yes',
       !> 'no' (CONTACT's MIRRORY/MIRRORZ).
       character(len=name_len) :: wheel_mirror_y = 'auto', wheel_mirror_z = 'auto'
       character(len=name_len) :: rail_mirror_y = 'auto', rail_mirror_z = 'auto'
       !> Factor from a profile file's units to mm; 0: the file's or format's (CONTACT's SCALE).
-      real(wp) :: wheel_scale = 0.0_wp, rail_scale = 0.0_wp
+      real(wp) :: wheel_scale = variables(findloc(variables%name, 'wheel_scale', 1, &
+         mask=variables%group == 'profiles'))%default
+      real(wp) :: rail_scale = variables(findloc(variables%name, 'rail_scale', 1, &
+         mask=variables%group == 'profiles'))%default
    end type profiles_config_type
 
    !> `&track`: track and wheelset dimensions (doc/theory.md §5.2).
@@ -54,15 +65,23 @@ module shcontact_input_config_types
       !> `side_right` or `side_left` (shcontact_input_config_choices).
       integer :: side = side_right
       !> Track gauge (mm), measured `gauge_height` below the rail top.
-      real(wp) :: gauge = 1435.0_wp, gauge_height = 14.0_wp
+      real(wp) :: gauge = variables(findloc(variables%name, 'gauge', 1, &
+         mask=variables%group == 'track'))%default
+      real(wp) :: gauge_height = variables(findloc(variables%name, 'gauge_height', 1, &
+         mask=variables%group == 'track'))%default
       !> Rail inclination as a slope towards the track centre (1:40).
-      real(wp) :: inclination = 0.025_wp
+      real(wp) :: inclination = variables(findloc(variables%name, 'inclination', 1, &
+         mask=variables%group == 'track'))%default
       !> The rail profile is already canted: the inclination is not applied again.
       logical :: rail_canted = .false.
       !> Flange-back distance and flange-back position in wheel-profile coordinates (mm).
-      real(wp) :: flange_back_distance = 1360.0_wp, flange_back_position = -70.0_wp
+      real(wp) :: flange_back_distance = variables(findloc(variables%name, 'flange_back_distance', 1, &
+         mask=variables%group == 'track'))%default
+      real(wp) :: flange_back_position = variables(findloc(variables%name, 'flange_back_position', 1, &
+         mask=variables%group == 'track'))%default
       !> Nominal rolling radius R₀ (mm).
-      real(wp) :: nominal_radius = 460.0_wp
+      real(wp) :: nominal_radius = variables(findloc(variables%name, 'nominal_radius', 1, &
+         mask=variables%group == 'track'))%default
    end type track_config_type
 
    !> `&position`: wheelset position.
@@ -70,9 +89,11 @@ module shcontact_input_config_types
       !> Lateral shift (mm), CONTACT's Y_WS (doc/theory.md decision 13). The seed's "t_y = 5.8 mm"
       !> measured between the profile origins corresponds to Y_WS = 10.533 − 5.8 = 4.733 mm,
       !> where the geometric spin equals the seed's φ = 0.274 1/m (doc/app.md, "Why 4.733 mm").
-      real(wp) :: t_y = 4.733_wp
+      real(wp) :: t_y = variables(findloc(variables%name, 't_y', 1, &
+         mask=variables%group == 'position'))%default
       !> Roll angle (rad).
-      real(wp) :: roll = 0.0_wp
+      real(wp) :: roll = variables(findloc(variables%name, 'roll', 1, &
+         mask=variables%group == 'position'))%default
    end type position_config_type
 
    !> `&kinematics`: the wheelset's motion (CONTACT's module 1, doc/theory.md decision 14). With
@@ -83,13 +104,21 @@ module shcontact_input_config_types
       !> `kinematics_off` (prescribed creepages, `&creepage`) or `kinematics_on`.
       integer :: mode = kinematics_off
       !> Yaw angle ψ (rad), CONTACT's YAW_WS.
-      real(wp) :: yaw = 0.0_wp
+      real(wp) :: yaw = variables(findloc(variables%name, 'yaw', 1, &
+         mask=variables%group == 'kinematics'))%default
       !> Forward speed of the wheelset centre V (mm/s, > 0): 30 m/s.
-      real(wp) :: v_forward = 30000.0_wp
+      real(wp) :: v_forward = variables(findloc(variables%name, 'v_forward', 1, &
+         mask=variables%group == 'kinematics'))%default
       !> Lateral and vertical velocity of the wheelset centre (mm/s).
-      real(wp) :: v_lateral = 0.0_wp, v_vertical = 0.0_wp
+      real(wp) :: v_lateral = variables(findloc(variables%name, 'v_lateral', 1, &
+         mask=variables%group == 'kinematics'))%default
+      real(wp) :: v_vertical = variables(findloc(variables%name, 'v_vertical', 1, &
+         mask=variables%group == 'kinematics'))%default
       !> Roll and yaw rate (rad/s).
-      real(wp) :: roll_rate = 0.0_wp, yaw_rate = 0.0_wp
+      real(wp) :: roll_rate = variables(findloc(variables%name, 'roll_rate', 1, &
+         mask=variables%group == 'kinematics'))%default
+      real(wp) :: yaw_rate = variables(findloc(variables%name, 'yaw_rate', 1, &
+         mask=variables%group == 'kinematics'))%default
       !> Angular velocity about the axle (rad/s, < 0 rolling forward); used only when given
       !> (`pitch_rate_given`), else pure rolling −V/R₀ of each case's V.
       real(wp) :: pitch_rate = 0.0_wp
@@ -102,13 +131,23 @@ module shcontact_input_config_types
       !> `load_mode_force`, `load_mode_approach` or `load_mode_vertical`.
       integer :: mode = load_mode_force
       !> Normal force on the patch (N), rigid approach (mm), vertical wheel load (N).
-      real(wp) :: normal_force = 64700.0_wp, approach = 0.05_wp, vertical_force = 64700.0_wp
+      real(wp) :: normal_force = variables(findloc(variables%name, 'normal_force', 1, &
+         mask=variables%group == 'load'))%default
+      real(wp) :: approach = variables(findloc(variables%name, 'approach', 1, &
+         mask=variables%group == 'load'))%default
+      real(wp) :: vertical_force = variables(findloc(variables%name, 'vertical_force', 1, &
+         mask=variables%group == 'load'))%default
    end type load_config_type
 
    !> `&creepage`: creepages at the geometric contact point (doc/theory.md decision 2).
    type :: creepage_config_type
       !> ν_x, ν_y (dimensionless), φ (rad/mm).
-      real(wp) :: nu_x = 0.58e-3_wp, nu_y = 0.061e-3_wp, phi = 2.74e-4_wp
+      real(wp) :: nu_x = variables(findloc(variables%name, 'nu_x', 1, &
+         mask=variables%group == 'creepage'))%default
+      real(wp) :: nu_y = variables(findloc(variables%name, 'nu_y', 1, &
+         mask=variables%group == 'creepage'))%default
+      real(wp) :: phi = variables(findloc(variables%name, 'phi', 1, &
+         mask=variables%group == 'creepage'))%default
    end type creepage_config_type
 
    !> `&normal`: the normal solver.
@@ -119,7 +158,8 @@ module shcontact_input_config_types
       real(wp) :: epsilon = default_epsilon
       integer :: n_strips = default_n_strips
       !> Clamp of B(y) (1/mm), doc/theory.md decision 4.
-      real(wp) :: b_min = 1.0e-4_wp
+      real(wp) :: b_min = variables(findloc(variables%name, 'b_min', 1, &
+         mask=variables%group == 'normal'))%default
       !> `curvature_local` (cos γ(y)) or `curvature_reference` (cos γ₀) in A(y).
       integer :: longitudinal_curvature = curvature_local
       !> `preset_*` of shcontact_pipeline_preset: sets n_strips, tangential n_elements (where
@@ -146,8 +186,10 @@ module shcontact_input_config_types
          'auto'], [max_fields], pad=[character(len=name_len) :: ''])
       !> `precision_double` or `precision_single`.
       integer :: precision = precision_double
-      integer :: compression = 4
-      integer :: checkpoint_cases = 0
+      integer :: compression = nint(variables(findloc(variables%name, 'compression', 1, &
+         mask=variables%group == 'output'))%default)
+      integer :: checkpoint_cases = nint(variables(findloc(variables%name, 'checkpoint_cases', 1, &
+         mask=variables%group == 'output'))%default)
    end type output_config_type
 
    !> Where a variable got its value (for messages).
@@ -290,6 +332,32 @@ contains
          options%n_strips = preset_strips(config%normal%preset)
    end function normal_options_of
 
+   !> The library's contact-search options of a configuration: the profiles' smoothing, the
+   !> clamp of B and the longitudinal curvature (`&normal`), the strip-table spacing of
+   !> `&normal preset`.
+   pure function contact_options_of(config) result(options)
+      type(case_config_type), intent(in) :: config
+      type(contact_options_type) :: options
+      options%l_filt_wheel = config%profiles%wheel_smoothing
+      options%l_filt_rail = config%profiles%rail_smoothing
+      options%b_min = config%normal%b_min
+      options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
+      options%table_step = table_step_of(config)
+   end function contact_options_of
+
+   !> The library's track and wheelset dimensions of a configuration (`&track`).
+   pure function track_of(config) result(track)
+      type(case_config_type), intent(in) :: config
+      type(track_type) :: track
+      track%gauge = config%track%gauge
+      track%gauge_height = config%track%gauge_height
+      track%rail_inclination = config%track%inclination
+      track%rail_canted = config%track%rail_canted
+      track%flange_back_distance = config%track%flange_back_distance
+      track%flange_back_position = config%track%flange_back_position
+      track%nominal_radius = config%track%nominal_radius
+   end function track_of
+
    !> The strip-table spacing (mm) of the contact search (`contact_options_type%table_step`):
    !> that of `&normal preset`.
    pure real(wp) function table_step_of(config) result(step)
@@ -336,6 +404,86 @@ contains
       case default; code = 0
       end select
    end function choice_value
+
+   !> The value of the number `group%name` (kind k_real or k_int of the variable table, every
+   !> group but `&sweep`; an integer as a real); 0 for any other name. The one accessor of each
+   !> number by name: the validation's range checks and the resolved namelist loop over the
+   !> variable table through it.
+   pure real(wp) function number_value(config, group, name) result(x)
+      type(case_config_type), intent(in) :: config
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      select case (trim(group)//'%'//trim(name))
+      case ('profiles%wheel_smoothing'); x = config%profiles%wheel_smoothing
+      case ('profiles%rail_smoothing'); x = config%profiles%rail_smoothing
+      case ('profiles%wheel_scale'); x = config%profiles%wheel_scale
+      case ('profiles%rail_scale'); x = config%profiles%rail_scale
+      case ('track%gauge'); x = config%track%gauge
+      case ('track%gauge_height'); x = config%track%gauge_height
+      case ('track%inclination'); x = config%track%inclination
+      case ('track%flange_back_distance'); x = config%track%flange_back_distance
+      case ('track%flange_back_position'); x = config%track%flange_back_position
+      case ('track%nominal_radius'); x = config%track%nominal_radius
+      case ('position%t_y'); x = config%position%t_y
+      case ('position%roll'); x = config%position%roll
+      case ('kinematics%yaw'); x = config%kinematics%yaw
+      case ('kinematics%v_forward'); x = config%kinematics%v_forward
+      case ('kinematics%v_lateral'); x = config%kinematics%v_lateral
+      case ('kinematics%v_vertical'); x = config%kinematics%v_vertical
+      case ('kinematics%roll_rate'); x = config%kinematics%roll_rate
+      case ('kinematics%yaw_rate'); x = config%kinematics%yaw_rate
+      case ('kinematics%pitch_rate'); x = config%kinematics%pitch_rate
+      case ('material%shear_modulus'); x = config%material%shear_modulus
+      case ('material%poisson'); x = config%material%poisson
+      case ('material%friction'); x = config%material%friction
+      case ('load%normal_force'); x = config%load%normal_force
+      case ('load%approach'); x = config%load%approach
+      case ('load%vertical_force'); x = config%load%vertical_force
+      case ('creepage%nu_x'); x = config%creepage%nu_x
+      case ('creepage%nu_y'); x = config%creepage%nu_y
+      case ('creepage%phi'); x = config%creepage%phi
+      case ('normal%epsilon'); x = config%normal%epsilon
+      case ('normal%n_strips'); x = config%normal%n_strips
+      case ('normal%b_min'); x = config%normal%b_min
+      case ('tangential%n_elements'); x = config%tangential%n_elements
+      case ('output%compression'); x = config%output%compression
+      case ('output%checkpoint_cases'); x = config%output%checkpoint_cases
+      case default; x = 0.0_wp
+      end select
+   end function number_value
+
+   !> The value of the string `group%name` (kind k_string of the variable table); '' for any
+   !> other name.
+   pure function string_value(config, group, name) result(text)
+      type(case_config_type), intent(in) :: config
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      character(len=:), allocatable :: text
+      select case (trim(group)//'%'//trim(name))
+      case ('profiles%wheel'); text = config%profiles%wheel
+      case ('profiles%rail'); text = config%profiles%rail
+      case ('profiles%wheel_format'); text = config%profiles%wheel_format
+      case ('profiles%rail_format'); text = config%profiles%rail_format
+      case ('profiles%wheel_mirror_y'); text = config%profiles%wheel_mirror_y
+      case ('profiles%wheel_mirror_z'); text = config%profiles%wheel_mirror_z
+      case ('profiles%rail_mirror_y'); text = config%profiles%rail_mirror_y
+      case ('profiles%rail_mirror_z'); text = config%profiles%rail_mirror_z
+      case ('output%file'); text = config%output%file
+      case default; text = ''
+      end select
+   end function string_value
+
+   !> The value of the logical `group%name` (kind k_logical of the variable table); .false.
+   !> for any other name.
+   pure logical function logical_value(config, group, name) result(flag)
+      type(case_config_type), intent(in) :: config
+      !> Group and variable.
+      character(len=*), intent(in) :: group, name
+      select case (trim(group)//'%'//trim(name))
+      case ('track%rail_canted'); flag = config%track%rail_canted
+      case default; flag = .false.
+      end select
+   end function logical_value
 
    !> Store `code` in the choice variable `group%name` ([[choice_value]]'s names).
    pure subroutine set_choice_value(config, group, name, code)

@@ -8,17 +8,17 @@ module shcontact_input_config_validate
    use shcontact_core_error, only: error_type, fatal_error
    use shcontact_core_strings, only: to_lower, str_int
    use shcontact_core_text, only: format_real
-   use shcontact_core_ranges, only: range_type, ranges, find_range, in_range, range_text, &
-      max_grid_cells
+   use shcontact_core_ranges, only: range_type => variable_info_type, ranges, find_range, &
+      in_range, range_text, has_range, max_grid_cells
    use shcontact_profile_reader, only: profile_file_format
    use shcontact_input_config_limits, only: max_sweep_values, max_fields, max_cases
    use shcontact_input_config_sweep, only: n_sweep_axes, sweep_axis_names, axis_stage, axis_load, &
       is_kinematic_input
    use shcontact_input_config_types, only: case_config_type, origin, sweep_origin, choice_value, &
-      normal_options_of, tangential_options_of
+      normal_options_of, tangential_options_of, number_value
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
-   use shcontact_input_config_variables, only: variables, k_choice
+   use shcontact_input_config_variables, only: variables, k_choice, k_int
    use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list
    use shcontact_input_config_variables, only: variable_choices
    use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
@@ -56,10 +56,6 @@ contains
             also='builtin:UIC60-canted')
          if (allocated(error)) return
          call resolve_wheel_origin(c)
-         call check_real_var(c, 'profiles', 'wheel_smoothing', c%profiles%wheel_smoothing, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'profiles', 'rail_smoothing', c%profiles%rail_smoothing, error)
-         if (allocated(error)) return
          call check_choice(c, 'profiles', 'wheel_mirror_y', c%profiles%wheel_mirror_y, &
             mirror_choices, error)
          if (allocated(error)) return
@@ -72,58 +68,16 @@ contains
          call check_choice(c, 'profiles', 'rail_mirror_z', c%profiles%rail_mirror_z, &
             mirror_choices, error)
          if (allocated(error)) return
-         call check_real_var(c, 'profiles', 'wheel_scale', c%profiles%wheel_scale, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'profiles', 'rail_scale', c%profiles%rail_scale, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'gauge', c%track%gauge, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'gauge_height', c%track%gauge_height, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'inclination', c%track%inclination, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'flange_back_distance', c%track%flange_back_distance, &
-            error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'flange_back_position', c%track%flange_back_position, &
-            error)
-         if (allocated(error)) return
-         call check_real_var(c, 'track', 'nominal_radius', c%track%nominal_radius, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'position', 't_y', c%position%t_y, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'position', 'roll', c%position%roll, error)
-         if (allocated(error)) return
-         call check_kinematics(c, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'material', 'shear_modulus', c%material%shear_modulus, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'material', 'poisson', c%material%poisson, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'material', 'friction', c%material%friction, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'load', 'normal_force', c%load%normal_force, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'load', 'approach', c%load%approach, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'load', 'vertical_force', c%load%vertical_force, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'creepage', 'nu_x', c%creepage%nu_x, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'creepage', 'nu_y', c%creepage%nu_y, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'creepage', 'phi', c%creepage%phi, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'normal', 'epsilon', c%normal%epsilon, error)
-         if (allocated(error)) return
-         call check_int_var(c, 'normal', 'n_strips', c%normal%n_strips, error)
-         if (allocated(error)) return
-         call check_real_var(c, 'normal', 'b_min', c%normal%b_min, error)
+         ! The numbers of each group in their ranges, in the variable table's order (a pitch
+         ! rate only when given; the tangential grid after the preset has set it).
+         c%kinematics%pitch_rate_given = origin(c, 'kinematics%pitch_rate') /= 'default'
+         call check_numbers(c, ['profiles  ', 'track     ', 'position  ', 'kinematics', &
+            'material  ', 'load      ', 'creepage  ', 'normal    '], error)
          if (allocated(error)) return
          call check_codes(c, error)
          if (allocated(error)) return
          call resolve_preset(c)
-         call check_int_var(c, 'tangential', 'n_elements', c%tangential%n_elements, error)
+         call check_numbers(c, ['tangential'], error)
          if (allocated(error)) return
          call check_grid_size(c, error)
          if (allocated(error)) return
@@ -182,28 +136,31 @@ contains
          ' are allowed (memory grows with it on every thread)')
    end subroutine check_grid_size
 
-   !> The `&kinematics` values in their ranges; whether the pitch rate was given.
-   subroutine check_kinematics(config, error)
-      type(case_config_type), intent(inout) :: config
+   !> Every number of the groups `groups` (variables with a range of the variable table) in its
+   !> range, in the table's order (its groups' order); the pitch rate only when it was given.
+   subroutine check_numbers(config, groups, error)
+      type(case_config_type), intent(in) :: config
+      !> The groups.
+      character(len=*), intent(in) :: groups(:)
       type(error_type), allocatable, intent(out) :: error
-      associate (k => config%kinematics)
-         call check_real_var(config, 'kinematics', 'yaw', k%yaw, error)
-         if (allocated(error)) return
-         call check_real_var(config, 'kinematics', 'v_forward', k%v_forward, error)
-         if (allocated(error)) return
-         call check_real_var(config, 'kinematics', 'v_lateral', k%v_lateral, error)
-         if (allocated(error)) return
-         call check_real_var(config, 'kinematics', 'v_vertical', k%v_vertical, error)
-         if (allocated(error)) return
-         call check_real_var(config, 'kinematics', 'roll_rate', k%roll_rate, error)
-         if (allocated(error)) return
-         call check_real_var(config, 'kinematics', 'yaw_rate', k%yaw_rate, error)
-         if (allocated(error)) return
-         k%pitch_rate_given = origin(config, 'kinematics%pitch_rate') /= 'default'
-         if (k%pitch_rate_given) call check_real_var(config, 'kinematics', 'pitch_rate', &
-            k%pitch_rate, error)
-      end associate
-   end subroutine check_kinematics
+      integer :: iv
+      do iv = 1, size(variables)
+         associate (v => variables(iv))
+            if (.not. has_range(v)) cycle
+            if (.not. any(groups == v%group)) cycle
+            if (v%group == 'kinematics' .and. v%name == 'pitch_rate' .and. &
+                .not. config%kinematics%pitch_rate_given) cycle
+            if (v%kind == k_int) then
+               call check_int_var(config, trim(v%group), trim(v%name), &
+                  nint(number_value(config, v%group, v%name)), error)
+            else
+               call check_real(config, trim(v%group), trim(v%name), trim(v%name), &
+                  number_value(config, v%group, v%name), error)
+            end if
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine check_numbers
 
    !> Kinematic mode takes the creepages from the wheelset motion: `&creepage` must not be
    !> given (it would be silently ignored), the spin model is 'additive' (that of the library's
@@ -246,7 +203,7 @@ contains
       ir = find_range(group//'%'//name)
       if (ir > 0 .or. group /= 'sweep') return
       do i = 1, size(ranges)
-         if (ranges(i)%key(index(ranges(i)%key, '%') + 1:) == name) then
+         if (ranges(i)%name == name) then
             ir = i
             return
          end if
@@ -277,14 +234,6 @@ contains
          ' = '//format_real(x)//' is out of range; expected '// &
          range_text(r, name, format_real(r%lo), format_real(r%hi)))
    end subroutine check_real
-
-   subroutine check_real_var(config, group, name, x, error)
-      type(case_config_type), intent(in) :: config
-      character(len=*), intent(in) :: group, name
-      real(wp), intent(in) :: x
-      type(error_type), allocatable, intent(out) :: error
-      call check_real(config, group, name, name, x, error)
-   end subroutine check_real_var
 
    !> An integer in its allowed range (shcontact_core_ranges).
    subroutine check_int_var(config, group, name, i, error)
@@ -381,10 +330,7 @@ contains
             'expected a file name')
          return
       end if
-      call check_int_var(config, 'output', 'compression', config%output%compression, error)
-      if (allocated(error)) return
-      call check_int_var(config, 'output', 'checkpoint_cases', config%output%checkpoint_cases, &
-         error)
+      call check_numbers(config, ['output'], error)
       if (allocated(error)) return
       n = 0
       do i = 1, max_fields

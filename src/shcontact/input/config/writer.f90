@@ -8,9 +8,10 @@ module shcontact_input_config_writer
    use shcontact_input_config_sweep, only: sweep_axis_type, axis_index
    use shcontact_core_choices, only: choice_type, choice_name, choice_list
    use shcontact_core_ranges, only: ranges, find_range, range_text
-   use shcontact_input_config_types, only: case_config_type, choice_value
+   use shcontact_input_config_types, only: case_config_type, choice_value, number_value, &
+      string_value, logical_value
    use shcontact_input_config_variables, only: variable_info_type, variables, variable_choices, &
-      k_choice, find_variable
+      k_choice, k_real, k_int, k_logical, k_string, k_string_list, k_real_list, find_variable
    implicit none
    private
 
@@ -86,107 +87,38 @@ contains
 
       value = ''
       name = trim(v%name)
-      if (v%kind == k_choice) then
+      select case (v%kind)
+      case (k_choice)
          value = quote_string(choice_name(variable_choices(v%group, v%name), &
             choice_value(config, v%group, v%name)))
-      else
-         select case (trim(v%group))
-         case ('profiles')
-            select case (name)
-            case ('wheel'); value = quote_string(config%profiles%wheel)
-            case ('rail'); value = quote_string(config%profiles%rail)
-            case ('wheel_format'); value = quote_string(config%profiles%wheel_format)
-            case ('rail_format'); value = quote_string(config%profiles%rail_format)
-            case ('wheel_smoothing'); value = format_real(config%profiles%wheel_smoothing)
-            case ('rail_smoothing'); value = format_real(config%profiles%rail_smoothing)
-            case ('wheel_mirror_y'); value = quote_string(config%profiles%wheel_mirror_y)
-            case ('wheel_mirror_z'); value = quote_string(config%profiles%wheel_mirror_z)
-            case ('wheel_scale'); value = format_real(config%profiles%wheel_scale)
-            case ('rail_mirror_y'); value = quote_string(config%profiles%rail_mirror_y)
-            case ('rail_mirror_z'); value = quote_string(config%profiles%rail_mirror_z)
-            case ('rail_scale'); value = format_real(config%profiles%rail_scale)
-            end select
-         case ('track')
-            select case (name)
-            case ('gauge'); value = format_real(config%track%gauge)
-            case ('gauge_height'); value = format_real(config%track%gauge_height)
-            case ('inclination'); value = format_real(config%track%inclination)
-            case ('rail_canted'); value = format_logical(config%track%rail_canted)
-            case ('flange_back_distance')
-               value = format_real(config%track%flange_back_distance)
-            case ('flange_back_position')
-               value = format_real(config%track%flange_back_position)
-            case ('nominal_radius'); value = format_real(config%track%nominal_radius)
-            end select
-         case ('position')
-            select case (name)
-            case ('t_y'); value = format_real(config%position%t_y)
-            case ('roll'); value = format_real(config%position%roll)
-            end select
-         case ('kinematics')
-            select case (name)
-            case ('yaw'); value = format_real(config%kinematics%yaw)
-            case ('v_forward'); value = format_real(config%kinematics%v_forward)
-            case ('v_lateral'); value = format_real(config%kinematics%v_lateral)
-            case ('v_vertical'); value = format_real(config%kinematics%v_vertical)
-            case ('roll_rate'); value = format_real(config%kinematics%roll_rate)
-            case ('yaw_rate'); value = format_real(config%kinematics%yaw_rate)
-            case ('pitch_rate'); value = format_real(config%kinematics%pitch_rate)
-            end select
-         case ('material')
-            select case (name)
-            case ('shear_modulus'); value = format_real(config%material%shear_modulus)
-            case ('poisson'); value = format_real(config%material%poisson)
-            case ('friction'); value = format_real(config%material%friction)
-            end select
-         case ('load')
-            select case (name)
-            case ('normal_force'); value = format_real(config%load%normal_force)
-            case ('approach'); value = format_real(config%load%approach)
-            case ('vertical_force'); value = format_real(config%load%vertical_force)
-            end select
-         case ('creepage')
-            select case (name)
-            case ('nu_x'); value = format_real(config%creepage%nu_x)
-            case ('nu_y'); value = format_real(config%creepage%nu_y)
-            case ('phi'); value = format_real(config%creepage%phi)
-            end select
-         case ('normal')
-            select case (name)
-            case ('epsilon'); value = format_real(config%normal%epsilon)
-            case ('n_strips'); value = str_int(config%normal%n_strips)
-            case ('b_min'); value = format_real(config%normal%b_min)
-            end select
-         case ('tangential')
-            select case (name)
-            case ('n_elements'); value = str_int(config%tangential%n_elements)
-            end select
-         case ('output')
-            select case (name)
-            case ('file'); value = quote_string(config%output%file)
-            case ('fields')
-               value = ''
-               do n = 1, max_fields
-                  if (len_trim(config%output%fields(n)) == 0) cycle
-                  if (len(value) > 0) value = value//', '
-                  value = value//quote_string(config%output%fields(n))
-               end do
-            case ('compression'); value = str_int(config%output%compression)
-            case ('checkpoint_cases'); value = str_int(config%output%checkpoint_cases)
-            end select
-         case ('sweep')
-            if (index(name, '_points') > 0) then
-               ia = axis_index(name(1:index(name, '_points') - 1))
-               if (.not. config%sweep%axes(ia)%active) return
-               if (config%sweep%axes(ia)%points == 0) return
-               value = str_int(config%sweep%axes(ia)%points)
-            else
-               ia = axis_index(name)
-               if (.not. config%sweep%axes(ia)%active) return
-               value = axis_text(config%sweep%axes(ia))
-            end if
+      case (k_real)
+         if (v%group /= 'sweep') value = format_real(number_value(config, v%group, v%name))
+      case (k_int)
+         if (v%group /= 'sweep') then
+            value = str_int(nint(number_value(config, v%group, v%name)))
+         else
+            ia = axis_index(name(1:index(name, '_points') - 1))
+            if (.not. config%sweep%axes(ia)%active) return
+            if (config%sweep%axes(ia)%points == 0) return
+            value = str_int(config%sweep%axes(ia)%points)
+         end if
+      case (k_logical)
+         value = format_logical(logical_value(config, v%group, v%name))
+      case (k_string)
+         value = quote_string(string_value(config, v%group, v%name))
+      case (k_string_list, k_real_list)
+         if (v%group == 'output') then
+            do n = 1, max_fields
+               if (len_trim(config%output%fields(n)) == 0) cycle
+               if (len(value) > 0) value = value//', '
+               value = value//quote_string(config%output%fields(n))
+            end do
+         else
+            ia = axis_index(name)
+            if (.not. config%sweep%axes(ia)%active) return
+            value = axis_text(config%sweep%axes(ia))
+         end if
       end select
-      end if
    end function variable_value_text
 
    !> The option list of the headers (the comment blocks of include/shcontact.h and
@@ -234,7 +166,7 @@ contains
                call add_word(word)
             end do
          else if (ir > 0) then
-            if (ranges(ir)%whole) then
+            if (ranges(ir)%kind == k_int) then
                word = ' '//range_text(ranges(ir), name, str_int(nint(ranges(ir)%lo)), &
                   str_int(nint(ranges(ir)%hi)))
             else
