@@ -18,8 +18,11 @@ module shcontact_math_anderson
    !> step is taken and the history restarted.
    real(wp), parameter :: max_growth = 4.0_wp
    !> A difference column whose part orthogonal to the newer ones is below this fraction of
-   !> its norm is dropped (it would only amplify round-off).
-   real(wp), parameter :: drop_ratio = 1.0e-8_wp
+   !> its norm is dropped (it would only amplify round-off; the normal equations resolve
+   !> about 1e-8).
+   real(wp), parameter :: drop_ratio = 1.0e-6_wp
+   !> Most difference columns used (longer histories use the newest max_memory).
+   integer, parameter :: max_memory = 8
 
 contains
 
@@ -37,11 +40,11 @@ contains
       integer, intent(inout) :: used
       !> The next iterate.
       real(wp), intent(out) :: x_new(size(x))
-      real(wp) :: q(size(x), size(dx, 2)), r(size(dx, 2), size(dx, 2)), c(size(dx, 2)), &
-         qf(size(dx, 2)), norm
-      integer :: m, k, j, kept, keep(size(dx, 2))
+      real(wp) :: gram(max_memory, max_memory), rhs(max_memory), c(max_memory), pivot, &
+         largest
+      integer :: m, k, j, i, kept, keep(max_memory)
 
-      m = size(dx, 2)
+      m = min(size(dx, 2), max_memory)
       if (used > 0) then
          ! The newest differences in column 1.
          do k = min(used - 1, m - 1), 1, -1
@@ -56,32 +59,42 @@ contains
       last_f = f
       x_new = x + f
       if (used == 1) return
-      ! Least squares ΔF c ≈ f by modified Gram–Schmidt, newest column first.
+      ! Least squares ΔF c ≈ f by the normal equations (Cholesky, newest column first): a
+      ! column whose pivot falls below drop_ratio² of its squared norm depends on the newer
+      ! ones and is dropped.
       kept = 0
       do k = 1, used - 1
-         q(:, kept + 1) = df(:, k)
-         norm = sqrt(sum(df(:, k)**2))
-         do j = 1, kept
-            r(j, kept + 1) = dot_product(q(:, j), q(:, kept + 1))
-            q(:, kept + 1) = q(:, kept + 1) - r(j, kept + 1)*q(:, j)
+         keep(kept + 1) = k
+         do j = 1, kept + 1
+            gram(kept + 1, j) = dot_product(df(:, keep(j)), df(:, k))
          end do
-         r(kept + 1, kept + 1) = sqrt(sum(q(:, kept + 1)**2))
-         if (.not. (r(kept + 1, kept + 1) > drop_ratio*norm)) cycle
-         q(:, kept + 1) = q(:, kept + 1)/r(kept + 1, kept + 1)
+         rhs(kept + 1) = dot_product(df(:, k), f)
+         ! Forward elimination of the new row with the kept columns' factor L (L L^T = G).
+         do j = 1, kept
+            gram(kept + 1, j) = (gram(kept + 1, j) - &
+               dot_product(gram(kept + 1, 1:j - 1), gram(j, 1:j - 1)))/gram(j, j)
+         end do
+         pivot = gram(kept + 1, kept + 1) - sum(gram(kept + 1, 1:kept)**2)
+         if (.not. (pivot > drop_ratio**2*dot_product(df(:, k), df(:, k)))) cycle
+         gram(kept + 1, kept + 1) = sqrt(pivot)
          kept = kept + 1
-         keep(kept) = k
       end do
       if (kept == 0) return
-      do j = 1, kept
-         qf(j) = dot_product(q(:, j), f)
+      ! L y = rhs, then L^T c = y.
+      do i = 1, kept
+         c(i) = (rhs(i) - dot_product(gram(i, 1:i - 1), c(1:i - 1)))/gram(i, i)
       end do
-      do j = kept, 1, -1
-         c(j) = (qf(j) - dot_product(r(j, j + 1:kept), c(j + 1:kept)))/r(j, j)
+      do i = kept, 1, -1
+         c(i) = (c(i) - dot_product(gram(i + 1:kept, i), c(i + 1:kept)))/gram(i, i)
       end do
       do j = 1, kept
          x_new = x_new - (dx(:, keep(j)) + df(:, keep(j)))*c(j)
       end do
-      if (.not. (maxval(abs(x_new - x)) <= max_growth*maxval(abs(f)))) then
+      largest = 0.0_wp
+      do i = 1, size(x)
+         largest = max(largest, abs(x_new(i) - x(i)))
+      end do
+      if (.not. (largest <= max_growth*maxval(abs(f)))) then
          x_new = x + f
          used = 1
       end if
