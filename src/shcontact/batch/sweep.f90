@@ -471,8 +471,13 @@ contains
             if (associated(options%progress)) call options%progress(n_done, &
                outcome%last - outcome%first + 1, .true.)
          end if
+         !$omp parallel do default(none) schedule(static) num_threads(outcome%n_threads) &
+         !$omp shared(outcome, held, nb) private(i)
          do i = held%n + 1, held%n + nb
             outcome%summaries(held%cases(i)) = held%results(i)%summary
+         end do
+         !$omp end parallel do
+         do i = held%n + 1, held%n + nb
             if (held%results(i)%summary%stat > 0) call add_failure(outcome%failures, &
                held%cases(i), message_of(held%results(i)))
          end do
@@ -669,7 +674,13 @@ contains
       end if
       allocate (stage_of(nb))
       ! Distinct (t_y, roll, load) of the block, each named by its first case of the run.
-      load_keys = [(config%shares_with(cases(i), axis_load), i=1, nb)]
+      allocate (load_keys(nb))
+      !$omp parallel do default(none) schedule(static) num_threads(n_threads) &
+      !$omp shared(load_keys, config, cases, nb) private(i)
+      do i = 1, nb
+         load_keys(i) = config%shares_with(cases(i), axis_load)
+      end do
+      !$omp end parallel do
       call unique_keys(load_keys, stage_of)
       allocate (geometry_of(size(load_keys)))
       geometry_keys = [(config%shares_with(load_keys(k), axis_geometry), k=1, size(load_keys))]

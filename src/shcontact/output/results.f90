@@ -426,7 +426,7 @@ contains
       integer, intent(in) :: indices(:)
       type(case_summary_type), intent(in) :: summaries(:)
       type(error_type), allocatable, intent(out) :: error
-      real(wp), allocatable :: column(:), inputs(:, :)
+      real(wp), allocatable :: values(:, :), inputs(:, :)
       character(len=32), allocatable :: labels(:, :)
       type(case_point_type) :: p
       integer :: ia, i, k, n_in
@@ -444,7 +444,6 @@ contains
       ints = summaries%main_patch
       if (.not. allocated(error)) call h5_write(file, 'summary/main_patch', ints, '1', error)
       if (allocated(error)) return
-      allocate (column(size(indices)))
       ! The reported inputs, each case's point built once (not once per column).
       axes = pack([(ia, ia=1, n_sweep_axes)], [(config%reports_input(ia), ia=1, n_sweep_axes)])
       n_in = size(axes)
@@ -460,8 +459,11 @@ contains
       allocate (inputs(size(indices), count(.not. [(config%sweep%axes(axes(k))%is_label, &
          k=1, n_in)])), labels(size(indices), count([(config%sweep%axes(axes(k))%is_label, &
          k=1, n_in)])))
+      ! The rows are built by the run's threads (the file is then written by one).
+      !$omp parallel do default(none) schedule(static) shared(indices, n_in, config, axes, &
+      !$omp labels, inputs, slot) private(i, k, p)
       do i = 1, size(indices)
-         if (n_in == 0) exit
+         if (n_in == 0) cycle
          p = config%case_point(indices(i))
          do k = 1, n_in
             if (config%sweep%axes(axes(k))%is_label) then
@@ -471,6 +473,7 @@ contains
             end if
          end do
       end do
+      !$omp end parallel do
       do k = 1, n_in
          ia = axes(k)
          name = trim(sweep_axis_names(ia))
@@ -481,12 +484,17 @@ contains
          end if
          if (allocated(error)) return
       end do
+      allocate (values(size(summaries), n_summary_columns))
+      !$omp parallel do default(none) schedule(static) shared(summaries, values) private(i, k)
+      do i = 1, size(summaries)
+         do k = 1, n_summary_columns
+            values(i, k) = summary_value(summaries(i), k)
+         end do
+      end do
+      !$omp end parallel do
       do k = 1, n_summary_columns
          if (.not. summary_column_used(k, config%is_kinematic())) cycle
-         do i = 1, size(summaries)
-            column(i) = summary_value(summaries(i), k)
-         end do
-         call h5_write(file, 'summary/'//trim(summary_columns(1, k)), column, &
+         call h5_write(file, 'summary/'//trim(summary_columns(1, k)), values(:, k), &
             trim(summary_columns(2, k)), error)
          if (allocated(error)) return
       end do
