@@ -45,13 +45,14 @@ module shcontact_batch_sweep
    use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
    use shcontact_output_results, only: run_info_type, merge_result_files, read_result_summary, &
-      write_run_file, &
+      begin_run_file, end_run_file, &
       check_output_file
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
       peak_memory_kib, &
       unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
       folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
+   use shcontact_output_hdf5, only: h5_file_type, h5_discard
    use shcontact_core_strings, only: str_int
    use shcontact_core_text, only: string_list_type
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
@@ -165,6 +166,21 @@ module shcontact_batch_sweep
       integer, allocatable :: cases(:)
       type(case_result_type), allocatable :: results(:)
    end type pending_block_type
+
+   !> The output of a run written from memory, begun by the first thread while the others
+   !> solve the last block (its header does not depend on the cases).
+   type :: early_output_type
+      !> Begin it during the next block.
+      logical :: wanted = .false.
+      !> Begun: `file` is open (or `error` says why not).
+      logical :: begun = .false.
+      type(h5_file_type) :: file
+      type(error_type), allocatable :: error
+      !> The output, its temporary name, the cases it will hold, and --force.
+      character(len=:), allocatable :: output, temp_name
+      integer :: cases_in_file = 0
+      logical :: force = .false.
+   end type early_output_type
 
    !> Per-thread tangential solutions (and solver object of a kinematic run).
    type :: thread_solutions_type
@@ -364,6 +380,7 @@ contains
       type(string_list_type) :: blocks
       type(stage_cache_type) :: cache
       type(pending_block_type) :: pending, held
+      type(early_output_type) :: early
       integer, allocatable :: todo(:)
       integer :: n, n_done, next, block, nb, i, capacity
       integer(int64) :: block_used, per_case_bytes, fixed_bytes, held_bytes
@@ -448,14 +465,24 @@ contains
                max(0_int64, options%block_bytes/2 - fixed_bytes)/per_case_bytes)))
             call grow_held(held, capacity)
          end if
+         ! The last block of a run that has written no block file: its output will be written
+         ! from memory, and its header can be written meanwhile.
+         early%wanted = options%write_output .and. blocks%n == 0 .and. &
+            .not. pending%waiting .and. next + nb - 1 == size(todo)
+         if (early%wanted) then
+            early%output = outcome%output
+            early%temp_name = dir//'/'//merged_temp_name
+            early%cases_in_file = held%n + nb
+            early%force = options%force
+         end if
          t0 = wall_seconds()
          ! The cases are solved into their slots of the held arrays; the previous blocks' file
          ! is written by the first thread meanwhile.
          call solve_block(setup, config, common_geometry, common, todo(next:next + nb - 1), &
             held%results(held%n + 1:held%n + nb), workspaces, solutions, fields, &
             outcome%n_threads, options, n_done, outcome%last - outcome%first + 1, &
-            keep_geometry, keep_strips, cache, block_used, fixed_bytes, pending, dir, blocks, &
-            info, error)
+            keep_geometry, keep_strips, cache, block_used, fixed_bytes, pending, early, dir, &
+            blocks, info, error)
          if (allocated(error)) return
          per_case = (wall_seconds() - t0)/nb
          held_seconds = held_seconds + per_case*nb
@@ -517,6 +544,7 @@ contains
 
       if (size(outcome%failures) == outcome%last - outcome%first + 1) then
          ! Nothing to write: every case failed, and they all tell why.
+         if (early%begun .and. .not. allocated(early%error)) call h5_discard(early%file)
          call fatal_error(error, failure_text(outcome, outcome%failures(1)), &
             outcome%summaries(outcome%failures(1)%case)%stat)
          if (options%write_output) call clear_checkpoint(dir, keep_directory=.false.)
@@ -527,9 +555,14 @@ contains
       outcome%block_files = blocks%n
       if (held%n > 0) then
          ! Every case in memory, no block file written: the output straight from the results.
-         call write_run_file(outcome%output, info, config, held%cases(1:held%n), &
-            held%results(1:held%n), error, &
-            temp_name=dir//'/'//merged_temp_name, force=options%force)
+         if (.not. early%begun) call begin_run_file(early%file, outcome%output, info, config, &
+            held%n, early%error, dir//'/'//merged_temp_name, options%force)
+         if (allocated(early%error)) then
+            call move_alloc(early%error, error)
+            return
+         end if
+         call end_run_file(early%file, info, config, held%cases(1:held%n), &
+            held%results(1:held%n), error)
       else
          call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
             info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
@@ -538,6 +571,24 @@ contains
       if (allocated(error)) return
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
+
+   !> What the first thread writes while the others solve a block: the checkpoint block due,
+   !> and the header of the run's output when it is wanted.
+   subroutine first_thread_writes(pending, early, dir, blocks, info, config, write_error)
+      type(pending_block_type), intent(in) :: pending
+      type(early_output_type), intent(inout) :: early
+      character(len=*), intent(in) :: dir
+      type(string_list_type), intent(inout) :: blocks
+      type(run_info_type), intent(in) :: info
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: write_error
+      if (pending%waiting) call commit_block(dir, blocks, info, config, &
+         pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
+      if (.not. early%wanted .or. early%begun) return
+      call begin_run_file(early%file, early%output, info, config, early%cases_in_file, &
+         early%error, early%temp_name, early%force)
+      early%begun = .true.
+   end subroutine first_thread_writes
 
    !> Room for this many results in the held arrays.
    pure integer function held_capacity(held)
@@ -603,8 +654,8 @@ contains
    !> each by one thread.
    subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
                           solutions, fields, n_threads, options, done_before, total, &
-                          keep_geometry, keep_strips, cache, bytes, fixed, pending, dir, &
-                          blocks, info, write_error)
+                          keep_geometry, keep_strips, cache, bytes, fixed, pending, early, &
+                          dir, blocks, info, write_error)
       type(run_setup_type), intent(in) :: setup
       type(case_config_type), intent(in) :: config
       logical, intent(in) :: common_geometry
@@ -628,6 +679,8 @@ contains
       !> The previous block, written to `dir` (listed in `blocks`) by the first thread while the
       !> others start on this one, when it is waiting.
       type(pending_block_type), intent(in) :: pending
+      !> The run's output, begun by the first thread meanwhile when it is wanted.
+      type(early_output_type), intent(inout) :: early
       character(len=*), intent(in) :: dir
       type(string_list_type), intent(inout) :: blocks
       type(run_info_type), intent(in) :: info
@@ -650,12 +703,12 @@ contains
          ! Each case through its thread's solver object (shcontact_case_runner).
          !$omp parallel default(none) num_threads(n_threads) &
          !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
-         !$omp has_progress, nb, keep_geometry, keep_strips, pending, dir, blocks, info, &
+         !$omp has_progress, nb, keep_geometry, keep_strips, pending, early, dir, blocks, info, &
          !$omp write_error) private(i, me, report)
          me = 1
          !$ me = omp_get_thread_num() + 1
-         if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
-            pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
+         if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
+            write_error)
          !$omp do schedule(dynamic, 4)
          do i = 1, nb
             call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
@@ -734,11 +787,11 @@ contains
       !$omp parallel default(none) num_threads(n_threads) &
       !$omp shared(cases, stages, stage_of, load_keys, results, workspaces, solutions, setup, &
       !$omp config, fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
-      !$omp pending, dir, blocks, info, write_error) private(i, me, report)
+      !$omp pending, early, dir, blocks, info, write_error) private(i, me, report)
       me = 1
       !$ me = omp_get_thread_num() + 1
-      if (me == 1 .and. pending%waiting) call commit_block(dir, blocks, info, config, &
-         pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
+      if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
+         write_error)
       !$omp do schedule(dynamic, 4)
       do i = 1, nb
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &

@@ -60,8 +60,8 @@ module shcontact_output_results
    implicit none
    private
 
-   public :: run_info_type, write_result_file, write_run_file, merge_result_files, &
-      read_result_summary
+   public :: run_info_type, write_result_file, begin_run_file, end_run_file, &
+      merge_result_files, read_result_summary
    public :: check_output_file
    public :: case_group_name, units_text, sign_convention_text
 
@@ -174,21 +174,65 @@ contains
       !> making them was a third of a summary-only block's cost).
       logical, intent(in), optional :: checkpoint
       type(h5_file_type) :: file
-      logical :: scales
-      type(case_summary_type), allocatable :: summaries(:)
-      type(field_choice_type) :: fields
-      integer :: i
+      call begin_result_file(file, name, info, config, size(indices), error, temp_name, &
+         checkpoint)
+      if (.not. allocated(error)) call end_result_file(file, info, config, indices, results, &
+         error)
+   end subroutine write_result_file
 
-      fields = field_choice(config)
+   !> Create a result file (under its temporary name) and write its header: root attributes,
+   !> /input and the common /geometry ([[end_result_file]] adds the cases and commits it).
+   subroutine begin_result_file(file, name, info, config, cases_in_file, error, temp_name, &
+                                checkpoint)
+      !> The file, open for writing.
+      type(h5_file_type), intent(out) :: file
+      !> File name.
+      character(len=*), intent(in) :: name
+      !> Run information (header, profiles, common geometry).
+      type(run_info_type), intent(in) :: info
+      !> The configuration (compression, precision).
+      type(case_config_type), intent(in) :: config
+      !> The number of cases the file will hold.
+      integer, intent(in) :: cases_in_file
+      !> Set on failure; no file is left then.
+      type(error_type), allocatable, intent(out) :: error
+      !> Temporary name (default `name.tmp<pid>`).
+      character(len=*), intent(in), optional :: temp_name
+      !> A checkpoint block: no dimension scales.
+      logical, intent(in), optional :: checkpoint
+      logical :: scales
       scales = .true.
       if (present(checkpoint)) scales = .not. checkpoint
       call h5_create(file, name, error, compression=config%output%compression, &
          single=config%output%precision == precision_single, temp_name=temp_name, &
          describe=describe_dataset, scales=scales)
       if (allocated(error)) return
-      call write_header(file, info, size(indices), error)
+      call write_header(file, info, cases_in_file, error)
+      if (allocated(error)) call h5_discard(file)
+   end subroutine begin_result_file
+
+   !> Write the cases `results` (case numbers `indices`) into a file begun by
+   !> [[begin_result_file]] and commit it under its name (discarded on failure).
+   subroutine end_result_file(file, info, config, indices, results, error)
+      !> The file (closed on return).
+      type(h5_file_type), intent(inout) :: file
+      !> Run information (the number of cases of the run).
+      type(run_info_type), intent(in) :: info
+      !> The configuration (fields, sweep axes).
+      type(case_config_type), intent(in) :: config
+      !> Case numbers of the results, ascending.
+      integer, intent(in) :: indices(:)
+      !> The results.
+      type(case_result_type), intent(in) :: results(:)
+      !> Set on failure; no file is left then.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_summary_type), allocatable :: summaries(:)
+      type(field_choice_type) :: fields
+      integer :: i
+
+      fields = field_choice(config)
       summaries = results%summary
-      if (.not. allocated(error)) call write_summary(file, config, indices, summaries, error)
+      call write_summary(file, config, indices, summaries, error)
       if (.not. allocated(error)) call write_failures(file, indices, results, error)
       do i = 1, size(results)
          if (allocated(error)) exit
@@ -201,7 +245,7 @@ contains
          return
       end if
       call h5_commit(file, error)
-   end subroutine write_result_file
+   end subroutine end_result_file
 
    !> Root attributes, /input and the common /geometry.
    subroutine write_header(file, info, cases_in_file, error)
@@ -987,19 +1031,21 @@ contains
       call finish_output(output, order, n_first, error)
    end subroutine merge_result_files
 
-   !> Write the output of a run straight from its results, as [[merge_result_files]] would
-   !> assemble it from block files holding them (a run that never needed a checkpoint).
-   subroutine write_run_file(output, info, config, indices, results, error, temp_name, force)
+   !> Begin the output of a run written straight from its results, as [[merge_result_files]]
+   !> would assemble it from block files holding them (a run that never needed a checkpoint):
+   !> the output checked, created under `temp_name` and its header written; [[end_run_file]]
+   !> completes it. The header can so be written while the run's last cases are solved.
+   subroutine begin_run_file(file, output, info, config, cases_in_file, error, temp_name, force)
+      !> The file, open for writing.
+      type(h5_file_type), intent(out) :: file
       !> The output file (written under `temp_name`, renamed when complete).
       character(len=*), intent(in) :: output
       !> Run information (header, profiles, common geometry).
       type(run_info_type), intent(in) :: info
-      !> The configuration (fields, compression, sweep axes).
+      !> The configuration (compression, precision).
       type(case_config_type), intent(in) :: config
-      !> Case numbers of the results, ascending.
-      integer, intent(in) :: indices(:)
-      !> The results.
-      type(case_result_type), intent(in) :: results(:)
+      !> The number of cases the file will hold.
+      integer, intent(in) :: cases_in_file
       !> Set on failure; no file is left under `output` then.
       type(error_type), allocatable, intent(out) :: error
       !> Temporary name of the file while it is written.
@@ -1008,10 +1054,30 @@ contains
       logical, intent(in), optional :: force
       call check_output_file(output, error, force=force)
       if (allocated(error)) return
-      call write_result_file(output, info, config, indices, results, error, temp_name)
+      call begin_result_file(file, output, info, config, cases_in_file, error, temp_name)
+   end subroutine begin_run_file
+
+   !> Complete the output begun by [[begin_run_file]]: the cases, the commit under its name and
+   !> the XDMF sidecar.
+   subroutine end_run_file(file, info, config, indices, results, error)
+      !> The file (closed on return).
+      type(h5_file_type), intent(inout) :: file
+      !> Run information.
+      type(run_info_type), intent(in) :: info
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> Case numbers of the results, ascending.
+      integer, intent(in) :: indices(:)
+      !> The results.
+      type(case_result_type), intent(in) :: results(:)
+      !> Set on failure; no file is left under the output's name then.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: output
+      output = file%name
+      call end_result_file(file, info, config, indices, results, error)
       if (allocated(error)) return
       call finish_output(output, indices, info%n_cases, error)
-   end subroutine write_run_file
+   end subroutine end_run_file
 
    !> The XDMF sidecar of a complete output holding cases `order` of a run of `n_cases`; on
    !> failure the output goes too (no output from a failed command).
