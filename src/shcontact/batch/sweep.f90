@@ -572,6 +572,26 @@ contains
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
 
+   !> After a case of a block: keep what the file stores, count it, and report the progress
+   !> (from the first thread only, which calls the app's procedure).
+   subroutine case_done(result, keep_geometry, keep_strips, done, total, first, options)
+      type(case_result_type), intent(inout) :: result
+      logical, intent(in) :: keep_geometry, keep_strips
+      !> Cases finished in the run (shared by the threads).
+      integer, intent(inout) :: done
+      integer, intent(in) :: total
+      !> The calling thread is the first.
+      logical, intent(in) :: first
+      type(sweep_options_type), intent(in) :: options
+      integer :: report
+      call keep_stored(result, keep_geometry, keep_strips)
+      !$omp atomic capture
+      done = done + 1
+      report = done
+      !$omp end atomic
+      if (first .and. associated(options%progress)) call options%progress(report, total, .false.)
+   end subroutine case_done
+
    !> What the first thread writes while the others solve a block: the checkpoint block due,
    !> and the header of the run's output when it is wanted.
    subroutine first_thread_writes(pending, early, dir, blocks, info, config, write_error)
@@ -692,19 +712,17 @@ contains
       type(stage_type), allocatable :: stages(:)
       type(error_type), allocatable :: error
       logical, allocatable :: cached(:), needed(:)
-      integer :: i, k, nb, done, me, report
+      integer :: i, k, nb, done, me
       integer(int64) :: largest
-      logical :: has_progress
 
       nb = size(cases)
       done = done_before
-      has_progress = associated(options%progress)
       if (setup%kinematic) then
          ! Each case through its thread's solver object (shcontact_case_runner).
          !$omp parallel default(none) num_threads(n_threads) &
          !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
-         !$omp has_progress, nb, keep_geometry, keep_strips, pending, early, dir, blocks, info, &
-         !$omp write_error) private(i, me, report)
+         !$omp nb, keep_geometry, keep_strips, pending, early, dir, blocks, info, &
+         !$omp write_error) private(i, me)
          me = 1
          !$ me = omp_get_thread_num() + 1
          if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
@@ -713,12 +731,8 @@ contains
          do i = 1, nb
             call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
                results(i), fields)
-            call keep_stored(results(i), keep_geometry, keep_strips)
-            !$omp atomic capture
-            done = done + 1
-            report = done
-            !$omp end atomic
-            if (has_progress .and. me == 1) call options%progress(report, total, .false.)
+            call case_done(results(i), keep_geometry, keep_strips, done, total, me == 1, &
+               options)
          end do
          !$omp end do
          !$omp end parallel
@@ -786,8 +800,8 @@ contains
 
       !$omp parallel default(none) num_threads(n_threads) &
       !$omp shared(cases, stages, stage_of, load_keys, results, workspaces, solutions, setup, &
-      !$omp config, fields, options, done, total, has_progress, nb, keep_geometry, keep_strips, &
-      !$omp pending, early, dir, blocks, info, write_error) private(i, me, report)
+      !$omp config, fields, options, done, total, nb, keep_geometry, keep_strips, &
+      !$omp pending, early, dir, blocks, info, write_error) private(i, me)
       me = 1
       !$ me = omp_get_thread_num() + 1
       if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
@@ -796,12 +810,7 @@ contains
       do i = 1, nb
          call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
             load_keys(stage_of(i)), workspaces(me), solutions(me)%patches, results(i), fields)
-         call keep_stored(results(i), keep_geometry, keep_strips)
-         !$omp atomic capture
-         done = done + 1
-         report = done
-         !$omp end atomic
-         if (has_progress .and. me == 1) call options%progress(report, total, .false.)
+         call case_done(results(i), keep_geometry, keep_strips, done, total, me == 1, options)
       end do
       !$omp end do
       !$omp end parallel
