@@ -77,7 +77,7 @@ contains
       type(run_setup_type) :: setup
       type(sweep_options_type) :: options
       type(sweep_outcome_type) :: outcome
-      character(len=:), allocatable :: where_to
+      character(len=:), allocatable :: where_to, kept
       integer :: i, k
 
       status = 0
@@ -144,10 +144,16 @@ contains
             str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())//where_to
       end if
       ! The figure doc/app.md sizes jobs with (and the memory test reads).
-      if (cli%verbose) write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
-         str_int(outcome%most_block_cases)//' case(s), '// &
-         str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
-         str_int(outcome%block_files)//' block file(s) merged'
+      if (cli%verbose) then
+         kept = ''
+         if (outcome%block_files == 0 .and. outcome%checkpoint_files > 0) kept = '; the '// &
+            'output written from memory ('//str_int(outcome%checkpoint_files)// &
+            ' checkpoint block file(s) kept until then)'
+         write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
+            str_int(outcome%most_block_cases)//' case(s), '// &
+            str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
+            str_int(outcome%block_files)//' block file(s) merged'//kept
+      end if
       if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
          'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM), '// &
          str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'
