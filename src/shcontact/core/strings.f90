@@ -35,24 +35,51 @@ contains
       end do
    end function to_lower
 
-   !> An integer as text without blanks.
+   !> Digits (and sign) of an integer.
+   pure integer function int_length(i)
+      integer(i8), intent(in) :: i
+      character(len=24) :: buffer
+      write (buffer, '(i0)') i
+      int_length = len_trim(buffer)
+   end function int_length
+
+   !> [[str_real]]'s text, left-aligned in a fixed buffer.
+   pure function real_buffer(x) result(buffer)
+      real(wp), intent(in) :: x
+      character(len=32) :: buffer
+      integer :: last
+      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
+         write (buffer, '(f20.6)') x
+         buffer = adjustl(buffer)
+         last = verify(buffer, '0 ', back=.true.)
+         if (buffer(last:last) == '.') last = last - 1
+         buffer(last + 1:) = ''
+      else if (x == 0.0_wp) then
+         buffer = '0'
+      else
+         write (buffer, '(es13.5e3)') x
+         buffer = adjustl(buffer)
+      end if
+   end function real_buffer
+
+   !> An integer as text without blanks. (The number-to-text functions that messages call
+   !> return a result whose length a specification function gives, not a deferred-length one:
+   !> gfortran 12 keeps the length of a deferred-length function result in a static variable of
+   !> the caller, so two threads building a message at the same place raced; a threads' test
+   !> in `strings`, doc/performance.md "Threads and strings".)
    pure function str_int_default(i) result(text)
       !> The number.
       integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') i
-      text = trim(buffer)
+      character(len=int_length(int(i, i8))) :: text
+      write (text, '(i0)') i
    end function str_int_default
 
    !> A 64-bit integer as text without blanks.
    pure function str_int_long(i) result(text)
       !> The number.
       integer(i8), intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') i
-      text = trim(buffer)
+      character(len=int_length(i)) :: text
+      write (text, '(i0)') i
    end function str_int_long
 
    !> A real in short form for messages: fixed with up to 6 decimals for 1e-3 ≤ |x| < 1e6,
@@ -60,21 +87,8 @@ contains
    pure function str_real(x) result(text)
       !> The number.
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      integer :: last
-      if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         write (buffer, '(f20.6)') x
-         text = trim(adjustl(buffer))
-         last = verify(text, '0', back=.true.)
-         if (text(last:last) == '.') last = last - 1
-         text = text(:last)
-      else if (x == 0.0_wp) then
-         text = '0'
-      else
-         write (buffer, '(es13.5e3)') x
-         text = trim(adjustl(buffer))
-      end if
+      character(len=len_trim(real_buffer(x))) :: text
+      text = real_buffer(x)
    end function str_real
 
    !> A real written with an edit descriptor for tables and messages ('(f0.1)', '(es9.2)'),

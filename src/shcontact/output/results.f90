@@ -504,21 +504,30 @@ contains
       allocate (inputs(size(indices), count(.not. [(config%sweep%axes(axes(k))%is_label, &
          k=1, n_in)])), labels(size(indices), count([(config%sweep%axes(axes(k))%is_label, &
          k=1, n_in)])))
-      ! The rows are built by the run's threads (the file is then written by one).
+      ! The numeric rows are built by the run's threads (the file is then written by one). The
+      ! labels are not: a call of a function with a deferred-length result (case_point_label)
+      ! keeps the result's length in a static variable of the calling procedure under gfortran
+      ! 12, so two threads at that call would race (doc/performance.md, "Threads and strings").
       !$omp parallel do default(none) schedule(static) shared(indices, n_in, config, axes, &
-      !$omp labels, inputs, slot) private(i, k, p)
+      !$omp inputs, slot) private(i, k, p)
       do i = 1, size(indices)
          if (n_in == 0) cycle
          p = config%case_point(indices(i))
          do k = 1, n_in
-            if (config%sweep%axes(axes(k))%is_label) then
-               labels(i, slot(k)) = case_point_label(p, axes(k))
-            else
-               inputs(i, slot(k)) = case_point_value(p, axes(k))
-            end if
+            if (.not. config%sweep%axes(axes(k))%is_label) inputs(i, slot(k)) = &
+               case_point_value(p, axes(k))
          end do
       end do
       !$omp end parallel do
+      if (size(labels, 2) > 0) then
+         do i = 1, size(indices)
+            p = config%case_point(indices(i))
+            do k = 1, n_in
+               if (config%sweep%axes(axes(k))%is_label) labels(i, slot(k)) = &
+                  case_point_label(p, axes(k))
+            end do
+         end do
+      end if
       do k = 1, n_in
          ia = axes(k)
          name = trim(sweep_axis_names(ia))
