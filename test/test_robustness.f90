@@ -846,8 +846,8 @@ contains
    !> The number-to-text functions of messages (str_int, str_real) give the same text when two
    !> threads call them at once as when one does: with a deferred-length result gfortran 12
    !> kept the result's length in a static variable of the caller, and two threads building
-   !> the same message raced (wrong lengths, lost or corrupted text; seen as lost lines of a
-   !> sweep's report). 4 × 100 000 messages; the race showed in every such run before.
+   !> the same message raced (wrong lengths, lost or corrupted text; doc/performance.md,
+   !> "Threads and strings"). 4 × 100 000 messages; the race showed in every such run before.
    subroutine test_threaded_messages(error)
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: n = 100000
