@@ -29,6 +29,7 @@ module test_flat_keys
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
       config_state, key_use, key_solver, key_state, key_creation, key_app
    use shcontact_api_keyed, only: output_keys, wheelset_keys, field_keys, output_key_type
+   use shcontact_pipeline_result, only: wheel_columns
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_set_option, &
       shcontact_set_value, shcontact_solve_state, shcontact_get_value, shcontact_last_error, &
       shcontact_create_wheelset, shcontact_solve_wheelset, shcontact_wheelset_wheel, &
@@ -682,7 +683,7 @@ contains
    end subroutine test_field_by_name
 
    !> doc/api.md lists every input key a handle takes with its units (those of the variable
-   !> table) and every output, wheelset and field key with its units.
+   !> table) and every output (the joined contact's too), wheelset and field key with its units.
    subroutine test_doc_keys(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: doc, units
@@ -707,17 +708,25 @@ contains
       call check_rows(wheelset_keys)
       if (allocated(error)) return
       call check_rows(field_keys)
+      if (allocated(error)) return
+      ! The wheel's joined contact (keys beyond the flat layout).
+      call check_rows([(output_key_type('', 0, wheel_columns(iv)%units, ''), &
+         iv=1, size(wheel_columns))], wheel_columns%name)
    contains
-      subroutine check_rows(keys)
+      subroutine check_rows(keys, names)
          type(output_key_type), intent(in) :: keys(:)
+         !> The keys' names when longer than output_key_type's (else keys%name).
+         character(len=*), intent(in), optional :: names(:)
          integer :: i
-         character(len=:), allocatable :: u
+         character(len=:), allocatable :: u, name
          do i = 1, size(keys)
+            name = trim(keys(i)%name)
+            if (present(names)) name = trim(names(i))
             u = trim(keys(i)%units)
             if (u == 'mm^2') u = 'mm²'
             if (u == 'N mm') u = 'N·mm'
-            call check(error, index(doc, new_line('a')//'| `'//trim(keys(i)%name)//'` | '//u// &
-               ' |') > 0, message='doc/api.md: no row of output key '//trim(keys(i)%name)// &
+            call check(error, index(doc, new_line('a')//'| `'//name//'` | '//u// &
+               ' |') > 0, message='doc/api.md: no row of output key '//name// &
                ' with units '//u)
             if (allocated(error)) return
          end do
