@@ -814,7 +814,9 @@ contains
          'pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
          'csv header of a kinematic sweep')
       if (allocated(error)) return
-      call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,message', 'csv header')
+      call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,wheel_patches,wheel_fn,'// &
+         'wheel_fx,wheel_fy,wheel_fx_norm,wheel_fy_norm,wheel_area,wheel_p_max,message', &
+         'csv header')
       if (allocated(error)) return
 
       call read_summaries(error, dir//'/one/out.h5', s)
