@@ -570,7 +570,7 @@ contains
       character(kind=c_char), target :: wheel(14), rail(14)
       type(c_ptr), target :: h
       real(c_double) :: totals(4), cw(kinematic_value_count, 2)
-      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x
+      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x, y
       integer :: ih, istat, k
       integer(c_int) :: stat
 
@@ -613,6 +613,15 @@ contains
       call check(error, bitwise_equal([x], [expected%wheel(wheel_right)%patch(2)%fn]), &
          message='right%fn of patch 2')
       if (allocated(error)) return
+      ! The wheel's joined contact by name (doc/lobes.md), patch 0 only.
+      call check(error, c_get_value(h, 'right%wheel_fx_norm', 0, x), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, bitwise_equal([x], [expected%wheel(wheel_right)%wheel%fx_norm]) .and. &
+         x /= 0.0_wp, message='right%wheel_fx_norm')
+      if (allocated(error)) return
+      call check(error, c_get_value(h, 'right%wheel_fn', 1, x), stat_usage, &
+         message='right%wheel_fn of patch 1 should be refused')
+      if (allocated(error)) return
       stat = shcontact_solve(h, 4.733_c_double, 0.0_c_double, 1_c_int, 64.7e3_c_double, &
          0.0_c_double, 0.0_c_double, 0.0_c_double, cw(1:25, 1))
       call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
@@ -631,11 +640,13 @@ contains
       if (istat == 0) call shc_ws_wheel(ih, 1, 0, fw(:, 1), istat)
       if (istat == 0) call shc_ws_wheel(ih, -1, 0, fw(:, 2), istat)
       if (istat == 0) call shc_get_value(ih, 'left%fn', 0, x, istat)
+      if (istat == 0) call shc_get_value(ih, 'left%wheel_fy_norm', 0, y, istat)
       call shc_destroy(ih, k)
       call check(error, istat == 0 .and. bitwise_equal(ft, [expected%fx, expected%fy, &
          expected%fz, expected%mz]) .and. bitwise_equal(reshape(fw, [size(fw)]), &
-         reshape(ref, [size(ref)])) .and. bitwise_equal([x], [expected%wheel(wheel_left)%main%fn]), &
-         message='F77 wheelset differs')
+         reshape(ref, [size(ref)])) .and. bitwise_equal([x], [expected%wheel(wheel_left)%main%fn]) &
+         .and. bitwise_equal([y], [expected%wheel(wheel_left)%wheel%fy_norm]) .and. &
+         y /= 0.0_wp, message='F77 wheelset differs')
    end subroutine test_wheelset
 
    !> A field by name is the array of shcontact_fields.
