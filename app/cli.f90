@@ -4,7 +4,7 @@ module shcontact_app_cli
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
    use shcontact_core_strings, only: str_int, control_characters
    use shcontact_core_text, only: string_list_type
-   use shcontact_batch_sweep, only: max_threads
+   use shcontact, only: max_threads
    implicit none
    private
 

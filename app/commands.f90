@@ -6,14 +6,10 @@ module shcontact_app_commands
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
    use shcontact_core_strings, only: str_int, visible
    use shcontact_core_text, only: string_type
-   use shcontact_input_config, only: case_config_type, load_config, config_namelist
-   use shcontact_output_results, only: merge_result_files
-   use shcontact_output_report, only: report_header, report_line, report_case_text, report_units
-   use shcontact_output_clock, only: iso_timestamp
-   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry
-   use shcontact_batch_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep
-   use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_geometry_contact, only: write_geometry_table
+   use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
+      report_header, report_line, report_case_text, report_units, iso_timestamp, &
+      run_setup_type, prepare_run, solve_geometry, sweep_options_type, sweep_outcome_type, &
+      run_sweep, patch_geometry_type, write_geometry_table
    use shcontact_app_output_guard, only: check_output_file
    use shcontact_app_cli, only: cli_type
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
@@ -81,7 +77,7 @@ contains
       type(run_setup_type) :: setup
       type(sweep_options_type) :: options
       type(sweep_outcome_type) :: outcome
-      character(len=:), allocatable :: where_to
+      character(len=:), allocatable :: where_to, kept
       integer :: i, k
 
       status = 0
@@ -148,10 +144,16 @@ contains
             str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())//where_to
       end if
       ! The figure doc/app.md sizes jobs with (and the memory test reads).
-      if (cli%verbose) write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
-         str_int(outcome%most_block_cases)//' case(s), '// &
-         str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
-         str_int(outcome%block_files)//' block file(s) merged'
+      if (cli%verbose) then
+         kept = ''
+         if (outcome%block_files == 0 .and. outcome%checkpoint_files > 0) kept = '; the '// &
+            'output written from memory ('//str_int(outcome%checkpoint_files)// &
+            ' checkpoint block file(s) kept until then)'
+         write (error_unit, '(a)') 'shcontact: largest checkpoint block '// &
+            str_int(outcome%most_block_cases)//' case(s), '// &
+            str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
+            str_int(outcome%block_files)//' block file(s) merged'//kept
+      end if
       if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
          'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM), '// &
          str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'

@@ -4,8 +4,7 @@
 module shcontact_app_profile_advice
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_format
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel
-   use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
+   use shcontact, only: profile_type, profile_kind_wheel, noise_estimate_type, estimate_noise, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
       default_curvature_tolerance
    implicit none

@@ -10,11 +10,9 @@ module shcontact_app_profiles
    use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_usage
    use shcontact_core_strings, only: str_int
    use shcontact_core_files, only: make_directory, join_path
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
-   use shcontact_profile_reader, only: read_profile, profile_file_format
-   use shcontact_profile_source, only: load_profile
-   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles, &
-      written_builtins
+   use shcontact, only: profile_type, profile_kind_wheel, profile_kind_rail, read_profile, &
+      profile_file_format, load_profile => load_profile_file, write_profile_plain, &
+      write_builtin_profiles, written_builtins
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: report_error
    use shcontact_app_profile_advice, only: profile_advice

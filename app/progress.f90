@@ -6,7 +6,7 @@ module shcontact_app_progress
    use, intrinsic :: iso_c_binding, only: c_int
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_int
-   use shcontact_output_clock, only: wall_seconds
+   use shcontact, only: wall_seconds
    use shcontact_app_environment, only: integer_variable
    implicit none
    private

@@ -6,12 +6,9 @@ module shcontact_app_wheelset
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type
    use shcontact_core_strings, only: str_int, str_format
-   use shcontact_input_config, only: case_config_type
-   use shcontact_case_runner, only: run_setup_type, prepare_run
-   use shcontact_geometry_wheelset_table, only: wheelset_contact_type, &
-      wheelset_geometry_table, roll_angle_parameter, contact_distance, centre_radius
-   use shcontact_geometry_conicity, only: equivalent_conicity, conicity_en15302, &
-      conicity_harmonic, klingel_wavelength
+   use shcontact, only: case_config_type, run_setup_type, prepare_run, wheelset_contact_type, &
+      wheelset_geometry_table, roll_angle_parameter, contact_distance, centre_radius, &
+      equivalent_conicity, conicity_en15302, conicity_harmonic, klingel_wavelength
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: configure, report_error
    implicit none

@@ -1,7 +1,10 @@
 !> shcontact: wheel–rail rolling contact with the semi-Hertzian strip method and FASTSIM_SH.
 !>
 !> This facade re-exports the public API; users `use shcontact` and need nothing else. The data
-!> flows one way: profiles → geometry → normal → tangential.
+!> flows one way: profiles → geometry → normal → tangential. The program `shcontact` (app/)
+!> reaches the library only through this module and the utilities of core/ (kinds, errors,
+!> strings, files): its case files, runs, sweeps and reports are re-exported at the end
+!> (scripts/check_layers checks it).
 module shcontact
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, &
@@ -10,11 +13,15 @@ module shcontact
    use shcontact_core_material, only: material_type, check_material
    ! profiles
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
-   use shcontact_profile_reader, only: read_profile, profile_format_names
+   use shcontact_profile_reader, only: read_profile, profile_format_names, profile_file_format
    use shcontact_profile_cleanup, only: clean_profile
-   use shcontact_profile_source, only: profile_from_points
+   use shcontact_profile_source, only: profile_from_points, load_profile_file => load_profile
    use shcontact_profile_builtin, only: builtin_profile, builtin_profile_names
-   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles
+   use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles, &
+      written_builtins
+   use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
+      suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
+      default_curvature_tolerance
    use shcontact_profile_spline, only: profile_spline_type
    ! geometry
    use shcontact_geometry_track, only: track_type, wheelset_position_type, side_right, side_left, &
@@ -24,7 +31,7 @@ module shcontact
       write_geometry_table
    use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
    use shcontact_geometry_wheelset_table, only: wheelset_contact_type, wheelset_geometry_table, &
-      wheelset_contact
+      wheelset_contact, roll_angle_parameter, contact_distance, centre_radius
    use shcontact_geometry_conicity, only: equivalent_conicity, conicity_en15302, &
       conicity_harmonic, first_harmonic_slope, klingel_wavelength
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
@@ -62,6 +69,14 @@ module shcontact
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
       wheel_left
    use shcontact_api_preset, only: preset_names, apply_preset, set_preset
+   ! case files, runs and output (the program's layers)
+   use shcontact_input_config, only: case_config_type, load_config, config_namelist
+   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry
+   use shcontact_output_results, only: merge_result_files
+   use shcontact_output_report, only: report_header, report_line, report_case_text, report_units
+   use shcontact_output_clock, only: iso_timestamp, wall_seconds
+   use shcontact_batch_sweep, only: sweep_options_type, sweep_outcome_type, run_sweep, &
+      max_threads
    implicit none
    private
 
@@ -97,5 +112,13 @@ module shcontact
       contact_fields_type, load_profile, load_normal_force, load_vertical_force, load_approach, &
       load_vertical_position, load_mode_name, max_patches, patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
+   public :: written_builtins, noise_estimate_type, estimate_noise, suggested_smoothing, &
+      curvature_noise, rail_cant_type, estimate_rail_cant, default_curvature_tolerance, &
+      profile_file_format, load_profile_file, roll_angle_parameter, contact_distance, &
+      centre_radius
+   public :: case_config_type, load_config, config_namelist, run_setup_type, prepare_run, &
+      solve_geometry, merge_result_files, report_header, report_line, report_case_text, &
+      report_units, iso_timestamp, wall_seconds, sweep_options_type, sweep_outcome_type, &
+      run_sweep, max_threads
 
 end module shcontact

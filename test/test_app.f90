@@ -87,6 +87,7 @@ contains
          new_unittest('shards_merge_to_unsharded', test_shards), &
          new_unittest('killed_and_resumed', test_resume), &
          new_unittest('some_cases_fail', test_partial_failure), &
+         new_unittest('summary_blocks_not_read_back', test_summary_blocks), &
          new_unittest('bad_input', test_bad_input), &
          new_unittest('usage_errors', test_usage), &
          new_unittest('profiles_and_geometry_commands', test_other_commands), &
@@ -502,6 +503,48 @@ contains
       call expect_in(error, file_text(dir//'/failures.txt'), '(0): 2', 'failed case number')
       call shell('rm -rf '//dir)
    end subroutine test_partial_failure
+
+   !> Issue 27: a run without fields holds every case's summary in memory, so its output is
+   !> written from them even when it wrote checkpoint block files (they are not read back):
+   !> the approach sweep of 13 cases, 3 to a block and some failing, gives the same file as the
+   !> run that held every case and wrote no block file (its failures table included), and -v
+   !> says so.
+   subroutine test_summary_blocks(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, text
+      character(len=*), parameter :: sweep = 'run --set load%mode=approach '// &
+         '--set sweep%approach=0.05,5 --set sweep%approach_points=13 -v --threads 2 '
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('summary_blocks')
+      ! The same output name in two folders (the namelist in the file names it).
+      call shell('mkdir -p '//dir//'/blocks '//dir//'/memory')
+      stat = run_program(dir//'/blocks', sweep//'-o out.h5 --set output%checkpoint_cases=3')
+      call check(error, stat, 4, message='blocks, some cases failed: '// &
+         file_text(dir//'/blocks/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/blocks/err.txt')
+      call expect_in(error, text, '0 block file(s) merged; the output written from memory', &
+         'blocks written, not merged')
+      if (allocated(error)) return
+      call check(error, integer_after(text, 'block file(s) merged', 'from memory (') >= 2, &
+         message='checkpoint block files written (at least 2): '//text)
+      if (allocated(error)) return
+      stat = run_program(dir//'/memory', sweep//'-o out.h5 --set output%checkpoint_cases=0')
+      call check(error, stat, 4, message='from memory: '//file_text(dir//'/memory/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/memory/err.txt'), '0 block file(s) merged'// &
+         new_line('a'), 'no block file')
+      if (allocated(error)) return
+      call shell('h5dump -d /failures/case '//dir//'/blocks/out.h5 > '//dir//'/failures.txt', &
+         stat)
+      call check(error, stat, 0, message='the file records the failures')
+      if (allocated(error)) return
+      call check_same_content_but(error, dir//'/blocks/out.h5', dir//'/memory/out.h5', &
+         'checkpoint_cases', 'written from the summaries with or without block files')
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_summary_blocks
 
    !> Each kind of bad input: exit status, a message naming the problem, no output left.
    subroutine test_bad_input(error)

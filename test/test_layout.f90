@@ -129,8 +129,9 @@ contains
          'source is in no layer (see the lines above)')
    end subroutine test_layers
 
-   !> The layer check fails on a scratch tree where core/ uses api/, and on one with a folder
-   !> that is in no layer, and passes once api/ uses core/ only.
+   !> The layer check fails on a scratch tree where core/ uses api/, on one with a folder that
+   !> is in no layer and on one whose app/ uses api/ past the facade, and passes once api/ uses
+   !> core/ only and app/ the facade and core/.
    subroutine test_layer_check(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: tree = 'build/layer_check', lib = tree//'/src/shcontact'
@@ -157,6 +158,17 @@ contains
       call execute_command_line('rm -rf '//lib//'/extra && bash scripts/check_layers '//tree, &
          exitstat=stat)
       call check(error, stat, 0, message='check_layers refuses api/ using core/')
+      if (allocated(error)) return
+      ! The program may use the facade and core/, not a layer's module.
+      call execute_command_line('mkdir -p '//tree//'/app && printf ''module shcontact_app_d\n'// &
+         ' use shcontact_api_b\nend module shcontact_app_d\n'' > '//tree//'/app/d.f90 && '// &
+         'bash scripts/check_layers '//tree//' 2> /dev/null', exitstat=stat)
+      call check(error, stat /= 0, message='check_layers accepts app/ using api/ past the facade')
+      if (allocated(error)) return
+      call execute_command_line('printf ''module shcontact_app_d\n use shcontact\n use '// &
+         'shcontact_core_a\nend module shcontact_app_d\n'' > '//tree//'/app/d.f90 && '// &
+         'bash scripts/check_layers '//tree, exitstat=stat)
+      call check(error, stat, 0, message='check_layers refuses app/ using the facade and core/')
       call execute_command_line('rm -rf '//tree)
    end subroutine test_layer_check
 

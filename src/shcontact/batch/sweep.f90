@@ -45,7 +45,7 @@ module shcontact_batch_sweep
    use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
    use shcontact_output_results, only: run_info_type, merge_result_files, read_result_summary, &
-      begin_run_file, end_run_file, &
+      begin_run_file, end_run_file, end_summary_file, &
       check_output_file
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
       peak_memory_kib, &
@@ -132,6 +132,10 @@ module shcontact_batch_sweep
       integer :: most_block_cases = 0
       !> Checkpoint block files the output was assembled from (0: written straight from memory).
       integer :: block_files = 0
+      !> Checkpoint block files in the work folder at the end (written by this run or taken
+      !> from the checkpoint it resumed); a run without fields writes its output from memory
+      !> and does not read them back.
+      integer :: checkpoint_files = 0
       !> Peak resident memory of the process (KiB, VmHWM; 0 where unknown) when every case was
       !> solved, before the output was written or merged (whose HDF5 caches grow with the file).
       integer :: solving_peak_kib = 0
@@ -467,12 +471,14 @@ contains
          end if
          ! The last block of a run that has written no block file: its output will be written
          ! from memory, and its header can be written meanwhile.
-         early%wanted = options%write_output .and. blocks%n == 0 .and. &
-            .not. pending%waiting .and. next + nb - 1 == size(todo)
+         ! So can that of a run without fields, whose summaries are all held in memory
+         ! (outcome%summaries): its block files are only its checkpoint, never read back.
+         early%wanted = options%write_output .and. next + nb - 1 == size(todo) .and. &
+            ((blocks%n == 0 .and. .not. pending%waiting) .or. .not. fields)
          if (early%wanted) then
             early%output = outcome%output
             early%temp_name = dir//'/'//merged_temp_name
-            early%cases_in_file = held%n + nb
+            early%cases_in_file = outcome%last - outcome%first + 1
             early%force = options%force
          end if
          t0 = wall_seconds()
@@ -534,12 +540,16 @@ contains
             outcome%last - outcome%first + 1, .true.)
       end if
       if (held%n > 0 .and. blocks%n > 0) then
-         call commit_block(dir, blocks, info, config, held%cases(1:held%n), &
-            held%results(1:held%n), error)
-         if (allocated(error)) return
-         held%n = 0
+         ! The last held blocks: a block file where the output is merged from them (a run
+         ! with fields); without fields the output is written from memory next.
+         if (fields) then
+            call commit_block(dir, blocks, info, config, held%cases(1:held%n), &
+               held%results(1:held%n), error)
+            if (allocated(error)) return
+            held%n = 0
+         end if
          if (associated(options%progress)) call options%progress(n_done, &
-            outcome%last - outcome%first + 1, .true.)
+            outcome%last - outcome%first + 1, fields)
       end if
 
       if (size(outcome%failures) == outcome%last - outcome%first + 1) then
@@ -552,18 +562,28 @@ contains
       end if
       outcome%solving_peak_kib = peak_memory_kib()
       if (.not. options%write_output) return
-      outcome%block_files = blocks%n
-      if (held%n > 0) then
-         ! Every case in memory, no block file written: the output straight from the results.
+      outcome%checkpoint_files = blocks%n
+      if ((held%n > 0 .and. blocks%n == 0) .or. (.not. fields .and. blocks%n > 0)) then
          if (.not. early%begun) call begin_run_file(early%file, outcome%output, info, config, &
-            held%n, early%error, dir//'/'//merged_temp_name, options%force)
+            outcome%last - outcome%first + 1, early%error, dir//'/'//merged_temp_name, &
+            options%force)
          if (allocated(early%error)) then
             call move_alloc(early%error, error)
             return
          end if
-         call end_run_file(early%file, info, config, held%cases(1:held%n), &
-            held%results(1:held%n), error)
+         if (blocks%n == 0) then
+            ! Every case in memory, no block file written: the output straight from the
+            ! results.
+            call end_run_file(early%file, info, config, held%cases(1:held%n), &
+               held%results(1:held%n), error)
+         else
+            ! No fields: the output from the run's summaries (the block files were its
+            ! checkpoint; the last held block was not written as one).
+            call end_summary_file(early%file, info, config, [(i, i=outcome%first, &
+               outcome%last)], outcome%summaries, outcome%failures, error)
+         end if
       else
+         outcome%block_files = blocks%n
          call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
             info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
             temp_name=dir//'/'//merged_temp_name, force=options%force)

@@ -29,9 +29,12 @@ module shcontact_geometry_prepared
    !> Options of the contact search and the strip tables.
    type :: contact_options_type
       !> Smoothing length of the wheel and the rail profile (mm, doc/theory.md §5.5); 0
-      !> interpolates (analytic profiles), 1–3 mm suits measured ones.
-      real(wp) :: l_filt_wheel = 0.0_wp
-      real(wp) :: l_filt_rail = 0.0_wp
+      !> interpolates (analytic profiles), 1–3 mm suits measured ones. Defaults: the variable
+      !> table's `profiles%wheel_smoothing` and `rail_smoothing`.
+      real(wp) :: l_filt_wheel = variables(findloc(variables%name, 'wheel_smoothing', 1, &
+         mask=variables%group == 'profiles'))%default
+      real(wp) :: l_filt_rail = variables(findloc(variables%name, 'rail_smoothing', 1, &
+         mask=variables%group == 'profiles'))%default
       !> Spacing h of the strip tables (mm).
       real(wp) :: table_step = 0.025_wp
       !> The tables stop where the gap exceeds this (mm), or earlier at a maximum of the gap.

@@ -22,7 +22,7 @@
 module shcontact_geometry_track
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_core_ranges, only: check_range
+   use shcontact_core_ranges, only: check_range, variables
    use shcontact_profile_spline, only: profile_spline_type
    use shcontact_geometry_rigid, only: rigid_map_type, rotation_about, translation
    implicit none
@@ -37,22 +37,29 @@ module shcontact_geometry_track
    !> The left wheel and rail (track y < 0), solved as the mirrored right-side case.
    integer, parameter :: side_left = -1
 
-   !> Track and wheelset dimensions (defaults: the Manchester benchmark, doc/theory.md §5.2).
+   !> Track and wheelset dimensions (defaults: the Manchester benchmark, doc/theory.md §5.2; those
+   !> of the case file's `&track` are the variable table's, shcontact_core_ranges).
    type :: track_type
       !> Track gauge (mm), between the gauge points of the two rails.
-      real(wp) :: gauge = 1435.0_wp
+      real(wp) :: gauge = variables(findloc(variables%name, 'gauge', 1, &
+         mask=variables%group == 'track'))%default
       !> Depth of the gauge point below the rail top (mm).
-      real(wp) :: gauge_height = 14.0_wp
+      real(wp) :: gauge_height = variables(findloc(variables%name, 'gauge_height', 1, &
+         mask=variables%group == 'track'))%default
       !> Rail inclination as a slope (1:40 = 0.025), towards the track centre.
-      real(wp) :: rail_inclination = 1.0_wp/40.0_wp
+      real(wp) :: rail_inclination = variables(findloc(variables%name, 'inclination', 1, &
+         mask=variables%group == 'track'))%default
       !> The rail profile is already canted (the inclination is not applied again).
       logical :: rail_canted = .false.
       !> Distance between the flange backs of the two wheels (mm).
-      real(wp) :: flange_back_distance = 1360.0_wp
+      real(wp) :: flange_back_distance = variables(findloc(variables%name, 'flange_back_distance', 1, &
+         mask=variables%group == 'track'))%default
       !> Flange-back position in wheel profile coordinates (mm; S1002: −70).
-      real(wp) :: flange_back_position = -70.0_wp
+      real(wp) :: flange_back_position = variables(findloc(variables%name, 'flange_back_position', 1, &
+         mask=variables%group == 'track'))%default
       !> Nominal rolling radius at the tape circle (mm).
-      real(wp) :: nominal_radius = 460.0_wp
+      real(wp) :: nominal_radius = variables(findloc(variables%name, 'nominal_radius', 1, &
+         mask=variables%group == 'track'))%default
       !> Lateral distance from the flange back to the tape circle (mm; EN 13715: 70).
       real(wp) :: tape_circle_offset = 70.0_wp
    end type track_type

@@ -12,7 +12,7 @@ module shcontact_normal_option_registry
 
    public :: method_semi_hertz, method_hertz, reduction_local_hertz, reduction_constant, &
       reduction_coupled
-   public :: method_choices, reduction_choices
+   public :: method_choices, reduction_choices, option_choices
    public :: default_method, default_reduction, default_epsilon, default_n_strips
 
    !> `method = 'semi-hertz'`: the strip algorithm of doc/theory.md §4.3 (default).
@@ -52,5 +52,21 @@ module shcontact_normal_option_registry
       mask=variables%group == 'normal'))%default
    integer, parameter :: default_n_strips = nint(variables(findloc(variables%name, 'n_strips', &
       1, mask=variables%group == 'normal'))%default)
+
+contains
+
+   !> The choices of the normal solver's `&normal` variable `name` (none for any other): the
+   !> case file's variable table (shcontact_input_config_variables) takes them from here, so
+   !> that a new choice option of the normal solver is added in this layer only.
+   pure function option_choices(name) result(choices)
+      !> Variable name, lower case (`method`, `reduction`).
+      character(len=*), intent(in) :: name
+      type(choice_type), allocatable :: choices(:)
+      select case (name)
+      case ('method'); choices = method_choices
+      case ('reduction'); choices = reduction_choices
+      case default; allocate (choices(0))
+      end select
+   end function option_choices
 
 end module shcontact_normal_option_registry

@@ -29,9 +29,45 @@ module shcontact_normal_options
       real(wp) :: epsilon = default_epsilon
       !> Number of strips per patch n_y (decision 11).
       integer :: n_strips = default_n_strips
+   contains
+      !> The code of a choice option by its `&normal` name.
+      procedure :: get_choice => get_normal_choice
+      !> Set a choice option's code by its `&normal` name.
+      procedure :: set_choice => set_normal_choice
    end type normal_options_type
 
 contains
+
+   !> The code held by the choice option `name` (the `&normal` variable's name, lower case;
+   !> its values are the registry's [[option_choices]]); 0 for any other name. The case file's
+   !> reader, validation and resolved namelist reach the normal solver's choices through this
+   !> and [[set_normal_choice]].
+   pure integer function get_normal_choice(options, name) result(code)
+      !> The options.
+      class(normal_options_type), intent(in) :: options
+      !> Variable name.
+      character(len=*), intent(in) :: name
+      select case (name)
+      case ('method'); code = options%method
+      case ('reduction'); code = options%reduction
+      case default; code = 0
+      end select
+   end function get_normal_choice
+
+   !> Store `code` in the choice option `name` ([[get_normal_choice]]'s names; any other name
+   !> is ignored).
+   pure subroutine set_normal_choice(options, name, code)
+      !> The options.
+      class(normal_options_type), intent(inout) :: options
+      !> Variable name.
+      character(len=*), intent(in) :: name
+      !> A code of the option's choices.
+      integer, intent(in) :: code
+      select case (name)
+      case ('method'); options%method = code
+      case ('reduction'); options%reduction = code
+      end select
+   end subroutine set_normal_choice
 
    !> Build the options from their textual form (as read from a namelist); absent arguments
    !> keep their defaults. Names are case-insensitive and accept `_` for `-`.

@@ -56,12 +56,13 @@ module shcontact_output_results
    use shcontact_core_strings, only: str_int
    use shcontact_core_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
-      n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used
+      n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used, &
+      failure_type
    implicit none
    private
 
    public :: run_info_type, write_result_file, begin_run_file, end_run_file, &
-      merge_result_files, read_result_summary
+      end_summary_file, merge_result_files, read_result_summary
    public :: check_output_file
    public :: case_group_name, units_text, sign_convention_text
 
@@ -1078,6 +1079,55 @@ contains
       if (allocated(error)) return
       call finish_output(output, indices, info%n_cases, error)
    end subroutine end_run_file
+
+   !> Complete the output begun by [[begin_run_file]] from the summaries of a run that stores
+   !> no per-case fields, every one of which the run holds in memory (its checkpoint block
+   !> files, if it wrote any, are not read back): `/summary`, `/failures`, the commit under its
+   !> name and the XDMF sidecar. The same file as [[merge_result_files]] makes of the blocks.
+   subroutine end_summary_file(file, info, config, indices, summaries, failures, error)
+      !> The file (closed on return).
+      type(h5_file_type), intent(inout) :: file
+      !> Run information.
+      type(run_info_type), intent(in) :: info
+      !> The configuration (sweep axes).
+      type(case_config_type), intent(in) :: config
+      !> Case numbers of the summaries, ascending.
+      integer, intent(in) :: indices(:)
+      !> The cases' summaries.
+      type(case_summary_type), intent(in) :: summaries(:)
+      !> The failed cases and their messages, in any order.
+      type(failure_type), intent(in) :: failures(:)
+      !> Set on failure; no file is left under the output's name then.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: output, messages(:)
+      integer, allocatable :: cases(:)
+      integer :: i, longest
+      output = file%name
+      call write_summary(file, config, indices, summaries, error)
+      if (.not. allocated(error) .and. size(failures) > 0) then
+         longest = 1
+         do i = 1, size(failures)
+            if (allocated(failures(i)%message)) longest = max(longest, &
+               len_trim(failures(i)%message))
+         end do
+         ! Built at its final length (see merge_result_files).
+         allocate (character(len=longest) :: messages(size(failures)))
+         cases = failures%case
+         do i = 1, size(failures)
+            messages(i) = ''
+            if (allocated(failures(i)%message)) messages(i) = failures(i)%message
+         end do
+         call sort_failures(cases, messages)
+         call write_failure_table(file, cases, messages, error)
+      end if
+      if (allocated(error)) then
+         call h5_discard(file)
+         return
+      end if
+      call h5_commit(file, error)
+      if (allocated(error)) return
+      call finish_output(output, indices, info%n_cases, error)
+   end subroutine end_summary_file
 
    !> The XDMF sidecar of a complete output holding cases `order` of a run of `n_cases`; on
    !> failure the output goes too (no output from a failed command).

@@ -16,7 +16,7 @@ module shcontact_tangential_option_registry
    public :: spin_flexibility_spin, spin_flexibility_longitudinal
    public :: correction_none, correction_exact_ellipse
    public :: method_choices, bound_choices, spin_model_choices, spin_flexibility_choices, &
-      correction_choices
+      correction_choices, option_choices
    public :: default_method, default_bound, default_spin_model, default_spin_flexibility, &
       default_correction, default_n_elements
 
@@ -106,5 +106,24 @@ module shcontact_tangential_option_registry
    !> the variable table (shcontact_core_ranges).
    integer, parameter :: default_n_elements = nint(variables(findloc(variables%name, &
       'n_elements', 1, mask=variables%group == 'tangential'))%default)
+
+contains
+
+   !> The choices of the `&tangential` variable `name` (none for a variable without choices):
+   !> the case file's variable table (shcontact_input_config_variables) takes a tangential
+   !> choice's values from here, so that a new choice option is added in this layer only.
+   pure function option_choices(name) result(choices)
+      !> Variable name, lower case (`bound`, `correction`, ...).
+      character(len=*), intent(in) :: name
+      type(choice_type), allocatable :: choices(:)
+      select case (name)
+      case ('method'); choices = method_choices
+      case ('bound'); choices = bound_choices
+      case ('spin_model'); choices = spin_model_choices
+      case ('spin_flexibility'); choices = spin_flexibility_choices
+      case ('correction'); choices = correction_choices
+      case default; allocate (choices(0))
+      end select
+   end function option_choices
 
 end module shcontact_tangential_option_registry

@@ -47,6 +47,11 @@ module shcontact_tangential_options
       integer :: correction = default_correction
       !> Fill the per-element fields of the result; .false. computes the totals only (faster).
       logical :: fields = .true.
+   contains
+      !> The code of a choice option by its `&tangential` name.
+      procedure :: get_choice => get_tangential_choice
+      !> Set a choice option's code by its `&tangential` name.
+      procedure :: set_choice => set_tangential_choice
    end type tangential_options_type
 
 contains
@@ -73,6 +78,43 @@ contains
       call check_int_range('tangential%n_elements', options%n_elements, &
          'tangential option n_elements', error)
    end subroutine check_tangential_options
+
+   !> The code held by the choice option `name` (the `&tangential` variable's name, lower
+   !> case; its values are the registry's [[option_choices]]); 0 for any other name. The case
+   !> file's reader, validation and resolved namelist reach every tangential choice through this
+   !> and [[set_tangential_choice]].
+   pure integer function get_tangential_choice(options, name) result(code)
+      !> The options.
+      class(tangential_options_type), intent(in) :: options
+      !> Variable name.
+      character(len=*), intent(in) :: name
+      select case (name)
+      case ('method'); code = options%method
+      case ('bound'); code = options%bound
+      case ('spin_model'); code = options%spin_model
+      case ('spin_flexibility'); code = options%spin_flexibility
+      case ('correction'); code = options%correction
+      case default; code = 0
+      end select
+   end function get_tangential_choice
+
+   !> Store `code` in the choice option `name` ([[get_tangential_choice]]'s names; any other
+   !> name is ignored).
+   pure subroutine set_tangential_choice(options, name, code)
+      !> The options.
+      class(tangential_options_type), intent(inout) :: options
+      !> Variable name.
+      character(len=*), intent(in) :: name
+      !> A code of the option's choices.
+      integer, intent(in) :: code
+      select case (name)
+      case ('method'); options%method = code
+      case ('bound'); options%bound = code
+      case ('spin_model'); options%spin_model = code
+      case ('spin_flexibility'); options%spin_flexibility = code
+      case ('correction'); options%correction = code
+      end select
+   end subroutine set_tangential_choice
 
    !> Parse `method`: 'fastsim-sh' or 'fastsim' (case-insensitive, '_' taken as '-').
    pure subroutine parse_method(text, code, error)

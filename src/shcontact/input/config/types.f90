@@ -16,11 +16,6 @@ module shcontact_input_config_types
       load_mode_force, curvature_local, curvature_reference, precision_double
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
-   use shcontact_normal_option_registry, only: default_normal_method => default_method, &
-      default_reduction, default_epsilon, default_n_strips
-   use shcontact_tangential_option_registry, only: default_tangential_method => default_method, &
-      default_bound, default_spin_model, default_spin_flexibility, default_correction, &
-      default_n_elements
    use shcontact_pipeline_preset, only: default_preset, preset_strips, preset_elements, &
       preset_table_step
    use shcontact_input_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
@@ -150,13 +145,10 @@ module shcontact_input_config_types
          mask=variables%group == 'creepage'))%default
    end type creepage_config_type
 
-   !> `&normal`: the normal solver.
-   type :: normal_config_type
-      !> `method_*` and `reduction_*` of shcontact_normal_option_registry.
-      integer :: method = default_normal_method
-      integer :: reduction = default_reduction
-      real(wp) :: epsilon = default_epsilon
-      integer :: n_strips = default_n_strips
+   !> `&normal`: the normal solver. Its own options (method, reduction, epsilon, n_strips) are
+   !> the library's type, so their fields, defaults and choice accessors are written once
+   !> (shcontact_normal_options); the contact search's and the preset's follow.
+   type, extends(normal_options_type) :: normal_config_type
       !> Clamp of B(y) (1/mm), doc/theory.md decision 4.
       real(wp) :: b_min = variables(findloc(variables%name, 'b_min', 1, &
          mask=variables%group == 'normal'))%default
@@ -167,15 +159,9 @@ module shcontact_input_config_types
       integer :: preset = default_preset
    end type normal_config_type
 
-   !> `&tangential`: the tangential solver.
-   type :: tangential_config_type
-      !> The codes of shcontact_tangential_option_registry.
-      integer :: method = default_tangential_method
-      integer :: bound = default_bound
-      integer :: spin_model = default_spin_model
-      integer :: spin_flexibility = default_spin_flexibility
-      integer :: correction = default_correction
-      integer :: n_elements = default_n_elements
+   !> `&tangential`: the tangential solver: the library's options type itself (fields,
+   !> defaults and choice accessors written once, in shcontact_tangential_options).
+   type, extends(tangential_options_type) :: tangential_config_type
    end type tangential_config_type
 
    !> `&output`: the HDF5 file.
@@ -325,9 +311,7 @@ contains
    pure function normal_options_of(config) result(options)
       type(case_config_type), intent(in) :: config
       type(normal_options_type) :: options
-      options = normal_options_type(method=config%normal%method, &
-         reduction=config%normal%reduction, epsilon=config%normal%epsilon, &
-         n_strips=config%normal%n_strips)
+      options = config%normal%normal_options_type
       if (origin(config, 'normal%n_strips') == 'default') &
          options%n_strips = preset_strips(config%normal%preset)
    end function normal_options_of
@@ -370,14 +354,9 @@ contains
    pure function tangential_options_of(config) result(options)
       type(case_config_type), intent(in) :: config
       type(tangential_options_type) :: options
-      options%method = config%tangential%method
-      options%bound = config%tangential%bound
-      options%spin_model = config%tangential%spin_model
-      options%n_elements = config%tangential%n_elements
+      options = config%tangential%tangential_options_type
       if (origin(config, 'tangential%n_elements') == 'default') &
          options%n_elements = preset_elements(config%normal%preset)
-      options%spin_flexibility = config%tangential%spin_flexibility
-      options%correction = config%tangential%correction
    end function tangential_options_of
 
    !> The code held by the choice variable `group%name` (kind `k_choice` of the variable table);
@@ -390,18 +369,15 @@ contains
       case ('track%side'); code = config%track%side
       case ('kinematics%mode'); code = config%kinematics%mode
       case ('load%mode'); code = config%load%mode
-      case ('normal%method'); code = config%normal%method
-      case ('normal%reduction'); code = config%normal%reduction
       case ('normal%longitudinal_curvature'); code = config%normal%longitudinal_curvature
       case ('normal%preset'); code = config%normal%preset
-      case ('tangential%method'); code = config%tangential%method
-      case ('tangential%bound'); code = config%tangential%bound
-      case ('tangential%spin_model'); code = config%tangential%spin_model
-      case ('tangential%spin_flexibility'); code = config%tangential%spin_flexibility
-      case ('tangential%correction'); code = config%tangential%correction
       case ('output%precision'); code = config%output%precision
       case ('sweep%mode'); code = config%sweep%mode
-      case default; code = 0
+      case default
+         ! The solvers' own choices: their options types' accessors.
+         code = 0
+         if (group == 'normal') code = config%normal%get_choice(name)
+         if (group == 'tangential') code = config%tangential%get_choice(name)
       end select
    end function choice_value
 
@@ -496,17 +472,14 @@ contains
       case ('track%side'); config%track%side = code
       case ('kinematics%mode'); config%kinematics%mode = code
       case ('load%mode'); config%load%mode = code
-      case ('normal%method'); config%normal%method = code
-      case ('normal%reduction'); config%normal%reduction = code
       case ('normal%longitudinal_curvature'); config%normal%longitudinal_curvature = code
       case ('normal%preset'); config%normal%preset = code
-      case ('tangential%method'); config%tangential%method = code
-      case ('tangential%bound'); config%tangential%bound = code
-      case ('tangential%spin_model'); config%tangential%spin_model = code
-      case ('tangential%spin_flexibility'); config%tangential%spin_flexibility = code
-      case ('tangential%correction'); config%tangential%correction = code
       case ('output%precision'); config%output%precision = code
       case ('sweep%mode'); config%sweep%mode = code
+      case default
+         ! The solvers' own choices: their options types' accessors.
+         if (group == 'normal') call config%normal%set_choice(name, code)
+         if (group == 'tangential') call config%tangential%set_choice(name, code)
       end select
    end subroutine set_choice_value
 

@@ -10,10 +10,8 @@ module shcontact_input_config_variables
    use shcontact_core_ranges, only: variable_info_type, variables, has_range, k_real, k_int, &
       k_string, k_logical, k_real_list, k_string_list, k_choice
    use shcontact_input_config_limits, only: path_len, name_len
-   use shcontact_normal_option_registry, only: normal_methods => method_choices, &
-      reduction_choices
-   use shcontact_tangential_option_registry, only: tangential_methods => method_choices, &
-      bound_choices, spin_model_choices, spin_flexibility_choices, correction_choices
+   use shcontact_normal_option_registry, only: normal_option_choices => option_choices
+   use shcontact_tangential_option_registry, only: tangential_option_choices => option_choices
    use shcontact_pipeline_preset, only: preset_choices
    use shcontact_input_config_choices, only: side_choices, kinematics_mode_choices, &
       load_mode_choices, curvature_choices, precision_choices, sweep_mode_choices, &
@@ -109,24 +107,10 @@ contains
          choices = kinematics_mode_choices
       case ('load%mode')
          choices = load_mode_choices
-      case ('normal%method')
-         choices = normal_methods
-      case ('normal%reduction')
-         choices = reduction_choices
       case ('normal%longitudinal_curvature')
          choices = curvature_choices
       case ('normal%preset')
          choices = preset_choices
-      case ('tangential%method')
-         choices = tangential_methods
-      case ('tangential%bound', 'sweep%bound')
-         choices = bound_choices
-      case ('tangential%spin_model', 'sweep%spin_model')
-         choices = spin_model_choices
-      case ('tangential%spin_flexibility')
-         choices = spin_flexibility_choices
-      case ('tangential%correction')
-         choices = correction_choices
       case ('output%fields')
          choices = field_choices
       case ('output%precision')
@@ -134,7 +118,16 @@ contains
       case ('sweep%mode')
          choices = sweep_mode_choices
       case default
-         allocate (choices(0))
+         ! The solvers' own choices come from their layers' registries (a `&sweep` axis of a
+         ! tangential choice takes the choices of the variable it sweeps); none for the rest.
+         select case (group)
+         case ('normal')
+            choices = normal_option_choices(name)
+         case ('tangential', 'sweep')
+            choices = tangential_option_choices(name)
+         case default
+            allocate (choices(0))
+         end select
       end select
    end function variable_choices
 
