@@ -96,7 +96,8 @@ contains
          new_unittest('kinematic_sweep', test_kinematic_sweep), &
          new_unittest('sweep_memory_bounded', test_memory_bound), &
          new_unittest('both_wheels_equal_library', test_both_wheels), &
-         new_unittest('prepared_workspace_reused_only_when_same', test_prepared_reuse) &
+         new_unittest('prepared_workspace_reused_only_when_same', test_prepared_reuse), &
+         new_unittest('joined_contact_equals_library', test_joined_contact) &
          ]
    end subroutine collect_app
 
@@ -856,7 +857,9 @@ contains
          'pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
          'csv header of a kinematic sweep')
       if (allocated(error)) return
-      call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,message', 'csv header')
+      call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,wheel_patches,wheel_fn,'// &
+         'wheel_fx,wheel_fy,wheel_fx_norm,wheel_fy_norm,wheel_area,wheel_p_max,message', &
+         'csv header')
       if (allocated(error)) return
 
       call read_summaries(error, dir//'/one/out.h5', s)
@@ -1079,8 +1082,77 @@ contains
       call shell('rm -rf '//dir)
    end subroutine test_both_wheels
 
-   !> The library's value of a /summary column: the track-frame totals or the main patch's
-   !> value (NaN for a column this test does not know, so that a new column fails the test until
+   !> Issue 28 item 3: the wheel's joined contact (the patches the exact theory joins into one,
+   !> doc/lobes.md) reaches the program's output. A vertical load of 64.7 kN with the default
+   !> creepages at Y_WS = 5.0 and 5.3 mm, where CONTACT joins two lobes (data/exact/README.md),
+   !> and at the single-lobe positions 2.0 and 5.8 mm: every /summary column (the `wheel_*` ones
+   !> among them) equals the library's `solve` bit for bit; at the two-lobe positions the joined
+   !> contact holds both loaded patches (its F_n is the total's, bit for bit, and more than the
+   !> main patch's), at the single-lobe ones it is the main patch (forces, area and p_max bit for
+   !> bit, f to rounding).
+   subroutine test_joined_contact(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: t_y(4) = [5.0_wp, 5.3_wp, 2.0_wp, 5.8_wp]
+      logical, parameter :: two_lobes(4) = [.true., .true., .false., .false.]
+      character(len=:), allocatable :: dir, at
+      type(case_summary_type), allocatable :: s(:)
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: lerr
+      integer :: stat, i, k
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('joined')
+      call write_lines(dir//'/joined.nml', [character(len=72) :: &
+         "&load mode = 'vertical', vertical_force = 64700.0 /", &
+         '&sweep t_y = 5.0, 5.3, 2.0, 5.8 /'])
+      stat = run_program(dir, 'run joined.nml -q -o joined.h5')
+      call check(error, stat, 0, message='joined: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call read_summaries(error, dir//'/joined.h5', s)
+      if (allocated(error)) return
+      call check(error, size(s), size(t_y), message='cases in /summary')
+      if (allocated(error)) return
+      call solver%init('builtin:S1002', 'builtin:UIC60', lerr)
+      do i = 1, size(t_y)
+         at = 't_y = '//merge('5.0', '5.3', i == 1)
+         if (i > 2) at = 't_y = '//merge('2.0', '5.8', i == 3)
+         if (.not. allocated(lerr)) call solver%solve(t_y(i), 0.0_wp, &
+            contact_load_type(load_vertical_force, 64.7e3_wp), &
+            creepage_type(0.58e-3_wp, 0.061e-3_wp, 2.74e-4_wp), r, lerr)
+         if (allocated(lerr)) then
+            call test_failed(error, at//', library: '//lerr%message)
+            return
+         end if
+         call check(error, s(i)%stat == 0 .and. s(i)%n_loaded == r%n_loaded .and. &
+            s(i)%main_patch == r%main_patch, message=at//': status and patches')
+         if (allocated(error)) return
+         do k = 1, n_summary_columns
+            if (.not. summary_column_used(k, .false.)) cycle
+            call check(error, same_bits([summary_value(s(i), k)], &
+               [library_column(r, trim(summary_columns(1, k)))]), message=at//': /summary/'// &
+               trim(summary_columns(1, k))//' differs from the library')
+            if (allocated(error)) return
+         end do
+         if (two_lobes(i)) then
+            call check(error, s(i)%n_loaded == 2 .and. s(i)%wheel%n_members == 2 .and. &
+               same_bits([s(i)%wheel%fn], [s(i)%fn_total]) .and. &
+               s(i)%wheel%fn > s(i)%fn + 1000.0_wp, message=at//': the joined contact '// &
+               'should hold both loaded patches (wheel_fn = fn_total > fn)')
+         else
+            call check(error, s(i)%wheel%n_members == 1 .and. same_bits([s(i)%wheel%fn, &
+               s(i)%wheel%fx, s(i)%wheel%fy, s(i)%wheel%area, s(i)%wheel%p_max], [s(i)%fn, &
+               s(i)%fx, s(i)%fy, s(i)%area, s(i)%p_max]) .and. &
+               abs(s(i)%wheel%fx_norm - s(i)%fx_norm) <= 1.0e-14_wp .and. &
+               abs(s(i)%wheel%fy_norm - s(i)%fy_norm) <= 1.0e-14_wp, message=at// &
+               ': the joined contact should be the main patch')
+         end if
+         if (allocated(error)) return
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_joined_contact
+
+   !> The library's value of a /summary column: the track-frame totals, the main patch's value
+   !> or the wheel's joined contact's (NaN for a column this test does not know, so that a new column fails the test until
    !> it is added here).
    function library_column(r, column) result(value)
       type(contact_result_type), intent(in) :: r
@@ -1109,6 +1181,14 @@ contains
       case ('nu_x'); value = r%main%nu_x
       case ('nu_y'); value = r%main%nu_y
       case ('phi'); value = r%main%phi
+      case ('wheel_patches'); value = real(r%wheel%n_members, wp)
+      case ('wheel_fn'); value = r%wheel%fn
+      case ('wheel_fx'); value = r%wheel%fx
+      case ('wheel_fy'); value = r%wheel%fy
+      case ('wheel_fx_norm'); value = r%wheel%fx_norm
+      case ('wheel_fy_norm'); value = r%wheel%fy_norm
+      case ('wheel_area'); value = r%wheel%area
+      case ('wheel_p_max'); value = r%wheel%p_max
       case default; value = ieee_value(value, ieee_quiet_nan)
       end select
    end function library_column

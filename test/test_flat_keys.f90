@@ -29,6 +29,7 @@ module test_flat_keys
    use shcontact_api_settings, only: library_setup_type, library_setup, config_load, &
       config_state, key_use, key_solver, key_state, key_creation, key_app
    use shcontact_api_keyed, only: output_keys, wheelset_keys, field_keys, output_key_type
+   use shcontact_pipeline_result, only: wheel_columns
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_set_option, &
       shcontact_set_value, shcontact_solve_state, shcontact_get_value, shcontact_last_error, &
       shcontact_create_wheelset, shcontact_solve_wheelset, shcontact_wheelset_wheel, &
@@ -569,7 +570,7 @@ contains
       character(kind=c_char), target :: wheel(14), rail(14)
       type(c_ptr), target :: h
       real(c_double) :: totals(4), cw(kinematic_value_count, 2)
-      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x
+      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x, y
       integer :: ih, istat, k
       integer(c_int) :: stat
 
@@ -612,6 +613,15 @@ contains
       call check(error, bitwise_equal([x], [expected%wheel(wheel_right)%patch(2)%fn]), &
          message='right%fn of patch 2')
       if (allocated(error)) return
+      ! The wheel's joined contact by name (doc/lobes.md), patch 0 only.
+      call check(error, c_get_value(h, 'right%wheel_fx_norm', 0, x), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, bitwise_equal([x], [expected%wheel(wheel_right)%wheel%fx_norm]) .and. &
+         x /= 0.0_wp, message='right%wheel_fx_norm')
+      if (allocated(error)) return
+      call check(error, c_get_value(h, 'right%wheel_fn', 1, x), stat_usage, &
+         message='right%wheel_fn of patch 1 should be refused')
+      if (allocated(error)) return
       stat = shcontact_solve(h, 4.733_c_double, 0.0_c_double, 1_c_int, 64.7e3_c_double, &
          0.0_c_double, 0.0_c_double, 0.0_c_double, cw(1:25, 1))
       call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
@@ -630,11 +640,13 @@ contains
       if (istat == 0) call shc_ws_wheel(ih, 1, 0, fw(:, 1), istat)
       if (istat == 0) call shc_ws_wheel(ih, -1, 0, fw(:, 2), istat)
       if (istat == 0) call shc_get_value(ih, 'left%fn', 0, x, istat)
+      if (istat == 0) call shc_get_value(ih, 'left%wheel_fy_norm', 0, y, istat)
       call shc_destroy(ih, k)
       call check(error, istat == 0 .and. bitwise_equal(ft, [expected%fx, expected%fy, &
          expected%fz, expected%mz]) .and. bitwise_equal(reshape(fw, [size(fw)]), &
-         reshape(ref, [size(ref)])) .and. bitwise_equal([x], [expected%wheel(wheel_left)%main%fn]), &
-         message='F77 wheelset differs')
+         reshape(ref, [size(ref)])) .and. bitwise_equal([x], [expected%wheel(wheel_left)%main%fn]) &
+         .and. bitwise_equal([y], [expected%wheel(wheel_left)%wheel%fy_norm]) .and. &
+         y /= 0.0_wp, message='F77 wheelset differs')
    end subroutine test_wheelset
 
    !> A field by name is the array of shcontact_fields.
@@ -682,7 +694,7 @@ contains
    end subroutine test_field_by_name
 
    !> doc/api.md lists every input key a handle takes with its units (those of the variable
-   !> table) and every output, wheelset and field key with its units.
+   !> table) and every output (the joined contact's too), wheelset and field key with its units.
    subroutine test_doc_keys(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: doc, units
@@ -707,17 +719,25 @@ contains
       call check_rows(wheelset_keys)
       if (allocated(error)) return
       call check_rows(field_keys)
+      if (allocated(error)) return
+      ! The wheel's joined contact (keys beyond the flat layout).
+      call check_rows([(output_key_type('', 0, wheel_columns(iv)%units, ''), &
+         iv=1, size(wheel_columns))], wheel_columns%name)
    contains
-      subroutine check_rows(keys)
+      subroutine check_rows(keys, names)
          type(output_key_type), intent(in) :: keys(:)
+         !> The keys' names when longer than output_key_type's (else keys%name).
+         character(len=*), intent(in), optional :: names(:)
          integer :: i
-         character(len=:), allocatable :: u
+         character(len=:), allocatable :: u, name
          do i = 1, size(keys)
+            name = trim(keys(i)%name)
+            if (present(names)) name = trim(names(i))
             u = trim(keys(i)%units)
             if (u == 'mm^2') u = 'mm²'
             if (u == 'N mm') u = 'N·mm'
-            call check(error, index(doc, new_line('a')//'| `'//trim(keys(i)%name)//'` | '//u// &
-               ' |') > 0, message='doc/api.md: no row of output key '//trim(keys(i)%name)// &
+            call check(error, index(doc, new_line('a')//'| `'//name//'` | '//u// &
+               ' |') > 0, message='doc/api.md: no row of output key '//name// &
                ' with units '//u)
             if (allocated(error)) return
          end do

@@ -24,7 +24,8 @@ module test_registry
    use shcontact_input_config_types, only: choice_value, number_value
    use shcontact_core_text, only: format_real
    use shcontact_core_strings, only: str_int
-   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column
+   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column, &
+      wheel_columns, wheel_value, find_wheel_column, wheel_contact_of
    use shcontact_case_result, only: case_summary_type, case_summary, summary_columns, &
       n_summary_columns, summary_value, summary_column_help
    use shcontact_output_descriptions, only: dataset_description
@@ -534,8 +535,9 @@ contains
    !> agrees with the flat layout (every column that is also a flat value: the same number by
    !> name, main patch and patch 1), with /summary (each main-patch column is the table's value,
    !> under the table's name and units) and with the HDF5 descriptions (every real /summary
-   !> column has the table's text). On the default case every value read is nonzero, so a
-   !> column wired to the wrong field shows.
+   !> column has the table's text), and so does the table of the wheel's joined contact
+   !> (wheel_columns: by name, patch 0 only, the last /summary columns). On the default case
+   !> every value read is nonzero, so a column wired to the wrong field shows.
    subroutine test_output_columns(error)
       type(error_type), allocatable, intent(out) :: error
       type(contact_context_type) :: ctx
@@ -581,8 +583,33 @@ contains
             trim(summary_columns(1, j))//': not the main patch''s column of the table')
          if (allocated(error)) return
       end do
-      call check(error, count(patch_columns%summary /= '') + 4, n_summary_columns, &
-         message='/summary has a main-patch column that is not in the table')
+      ! The wheel's joined contact (doc/lobes.md): by name (patch 0 only), its /summary
+      ! columns after the main patch's, the value of the result's `wheel`.
+      do k = 1, size(wheel_columns)
+         call check(error, find_wheel_column(trim(wheel_columns(k)%name)) == k .and. &
+            find_patch_column(trim(wheel_columns(k)%name), .false.) == 0 .and. &
+            find_patch_column(trim(wheel_columns(k)%name), .true.) == 0 .and. &
+            .not. any(output_keys%name == wheel_columns(k)%name), &
+            message=trim(wheel_columns(k)%name)//': name not unique among the outputs')
+         if (allocated(error)) return
+         stat = context_get_value(ctx, trim(wheel_columns(k)%name), 1, x)
+         call check(error, stat /= 0, message=trim(wheel_columns(k)%name)//': a joined '// &
+            'contact''s value of patch 1 should be refused')
+         if (allocated(error)) return
+         stat = context_get_value(ctx, trim(wheel_columns(k)%name), 0, x)
+         call check(error, stat == 0 .and. x == wheel_value(wheel_contact_of(ctx%result%wheel), &
+            k) .and. x /= 0.0_wp, message=trim(wheel_columns(k)%name)//': keyed value '// &
+            'differs from the joined contact''s, or is zero on the default case')
+         if (allocated(error)) return
+         j = n_summary_columns - size(wheel_columns) + k
+         call check(error, summary_columns(1, j) == wheel_columns(k)%summary .and. &
+            summary_columns(2, j) == wheel_columns(k)%units .and. summary_value(s, j) == x, &
+            message='/summary/'//trim(wheel_columns(k)%summary)//': not the joined contact''s '// &
+            'column of the table')
+         if (allocated(error)) return
+      end do
+      call check(error, count(patch_columns%summary /= '') + 4 + size(wheel_columns), &
+         n_summary_columns, message='/summary has a column that is not in the tables')
    end subroutine test_output_columns
 
 end module test_registry

@@ -9,7 +9,8 @@
 !>   the kinematic call), `&load`, `&creepage`, as the app solves one case;
 !> * [[context_get_value]]: a result value by its name in [[output_keys]] (or, beyond the flat
 !>   layout, in shcontact_pipeline_result's patch_columns), of the main patch
-!>   (patch 0) or of patch k; on a wheelset handle 'wheelset%fx' ... 'wheelset%mz' and
+!>   (patch 0) or of patch k, and the wheel's joined contact ('wheel_fx', ..., its
+!>   wheel_columns, patch 0: doc/lobes.md); on a wheelset handle 'wheelset%fx' ... 'wheelset%mz' and
 !>   'right%NAME', 'left%NAME';
 !> * [[context_get_field]]: one element field by its name in [[field_keys]].
 module shcontact_api_keyed
@@ -21,7 +22,8 @@ module shcontact_api_keyed
    use shcontact_input_config_types, only: output_config_type
    use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
-   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column
+   use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column, &
+      wheel_columns, wheel_value, find_wheel_column, wheel_contact_of
    use shcontact_api_wheelset, only: wheel_right, wheel_left
    use shcontact_api_settings, only: config_load, config_state
    use shcontact_api_values, only: kinematic_value_count, result_value_count, kinematic_values, value_fx, value_fy, &
@@ -276,13 +278,23 @@ contains
       real(wp), intent(out) :: x
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: values(kinematic_value_count)
-      integer :: i, k
+      integer :: i, k, w
       x = 0.0_wp
       i = findloc(output_keys%name, key, 1)
       ! A per-patch value beyond the frozen flat layout: by name from the column table.
       k = 0
       if (i == 0) k = find_patch_column(key, .false.)
-      if (i == 0 .and. k == 0) then
+      ! A value of the wheel's joined contact (one per wheel, patch 0).
+      w = 0
+      if (i == 0 .and. k == 0) w = find_wheel_column(key)
+      if (w > 0) then
+         if (patch /= 0) then
+            call fatal_error(error, 'patch '//str_int(patch)//': '//key//' is a value of the '// &
+               'wheel''s joined contact; expected patch 0', stat_usage)
+         else
+            x = wheel_value(wheel_contact_of(result%wheel), w)
+         end if
+      else if (i == 0 .and. k == 0) then
          call unknown_output(key, error)
       else if (patch < 0 .or. patch > min(result%n_patches, max_patches)) then
          call fatal_error(error, 'patch '//str_int(patch)//': expected 0 (the main patch) '// &
@@ -314,6 +326,9 @@ contains
       do i = 1, size(patch_columns)
          if (any(output_keys%name == patch_columns(i)%name)) cycle
          names = trim(names)//', '//trim(patch_columns(i)%name)
+      end do
+      do i = 1, size(wheel_columns)
+         names = trim(names)//', '//trim(wheel_columns(i)%name)
       end do
       call fatal_error(error, "value '"//visible(key)//"': unknown; expected one of "// &
          trim(names)//" (a wheelset handle: wheelset%fx, wheelset%fy, wheelset%fz, "// &

@@ -6,7 +6,8 @@ module shcontact_case_result
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_pipeline_result, only: contact_result_type, patch_result_type, &
-      patch_column_type, patch_columns, patch_value, set_patch_value
+      patch_column_type, patch_columns, patch_value, set_patch_value, wheel_contact_type, &
+      wheel_contact_of, wheel_columns, wheel_value, set_wheel_value
    implicit none
    private
 
@@ -21,8 +22,9 @@ module shcontact_case_result
    integer, parameter :: case_not_run = -1
 
    !> The numbers of one case that go into the `/summary` table (forces on the wheel,
-   !> doc/theory.md decision 2). The totals are summed over the loaded patches; the other values
-   !> are those of the main patch (the one carrying the largest normal force): the inherited
+   !> doc/theory.md decision 2). The totals are summed over the loaded patches, the `wheel_*`
+   !> values over the patches of the wheel's joined contact; the other values are those of the
+   !> main patch (the one carrying the largest normal force): the inherited
    !> components, whose `/summary` columns are those of shcontact_pipeline_result's
    !> `patch_columns` (e.g. `fn`, `fx`, `approach` as column `delta`, `x_track`, `nu_x`).
    type, extends(patch_result_type) :: case_summary_type
@@ -41,6 +43,9 @@ module shcontact_case_result
       !> Total forces in the track frame (N): ΣF_x (longitudinal), ΣF_y,track (lateral, towards
       !> the field side), ΣF_z,track (vertical, down).
       real(wp) :: fx_total = 0.0_wp, fy_total = 0.0_wp, fz_total = 0.0_wp
+      !> The wheel's joined contact (the patches the exact theory joins into one, doc/lobes.md;
+      !> its `/summary` columns are shcontact_pipeline_result's `wheel_columns`).
+      type(wheel_contact_type) :: wheel
    end type case_summary_type
 
    !> The totals' columns of `/summary` (name, units, description), before the main patch's.
@@ -54,12 +59,15 @@ module shcontact_case_result
       patch_column_type('fz_total', 'fz_total', 'N', .false., &
       'total vertical force on the wheel, track frame (down +)')]
    !> The real columns of `/summary` in file order: the totals, then the main patch's values
-   !> that have a `/summary` column.
+   !> that have a `/summary` column, then the wheel's joined contact.
    type(patch_column_type), parameter :: columns(*) = [total_columns, &
-      pack(patch_columns, patch_columns%summary /= '')]
-   !> Index in `patch_columns` of each real column (0 for a total).
+      pack(patch_columns, patch_columns%summary /= ''), wheel_columns]
+   !> Index in `patch_columns` of each real column (0 for a total or a joined contact's value).
    integer, parameter :: column_patch_index(*) = [spread(0, 1, size(total_columns)), &
-      pack([(k_, k_=1, size(patch_columns))], patch_columns%summary /= '')]
+      pack([(k_, k_=1, size(patch_columns))], patch_columns%summary /= ''), &
+      spread(0, 1, size(wheel_columns))]
+   !> Columns before the joined contact's.
+   integer, parameter :: first_wheel_column = size(columns) - size(wheel_columns)
    integer, parameter :: n_summary_columns = size(columns)
    !> Names and units of the real summary columns, in file order.
    character(len=*), parameter :: summary_columns(2, n_summary_columns) = reshape( &
@@ -107,6 +115,7 @@ contains
       s%fy_total = contact%track%fy
       s%fz_total = contact%track%fz
       s%patch_result_type = contact%main
+      s%wheel = wheel_contact_of(contact%wheel)
    end function case_summary
 
    !> True when real summary column `k` belongs to a run (kinematic or not).
@@ -129,6 +138,8 @@ contains
       case (2); summary_value = s%fx_total
       case (3); summary_value = s%fy_total
       case (4); summary_value = s%fz_total
+      case (first_wheel_column + 1:)
+         summary_value = wheel_value(s%wheel, k - first_wheel_column)
       case default; summary_value = patch_value(s%patch_result_type, column_patch_index(k))
       end select
    end function summary_value
@@ -146,6 +157,8 @@ contains
       case (2); s%fx_total = value
       case (3); s%fy_total = value
       case (4); s%fz_total = value
+      case (first_wheel_column + 1:)
+         call set_wheel_value(s%wheel, k - first_wheel_column, value)
       case default; call set_patch_value(s%patch_result_type, column_patch_index(k), value)
       end select
    end subroutine set_summary_value

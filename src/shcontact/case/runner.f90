@@ -370,7 +370,8 @@ contains
       end if
       creepages(1:n) = creepage
       call summarise_stages(stage%geometry, stage%normal, tangential(1:n), creepages(1:n), &
-         setup%position%side, axle_offset(setup%prepared%track), 0.0_wp, stage%dz, contact)
+         setup%position%side, axle_offset(setup%prepared%track), 0.0_wp, stage%dz, &
+         material%friction, contact)
       result%summary = case_summary(contact)
       if (fields) then
          result%geometry = stage%geometry

@@ -26,14 +26,15 @@ module shcontact_output_report
    character(len=*), parameter :: report_formats(4) = [character(len=4) :: 'text', 'csv', &
       'json', 'none']
 
-   !> Columns shown in the text table of a sweep (besides the swept inputs).
-   character(len=*), parameter :: text_columns(7) = [character(len=17) :: 'fn', 'fx', 'fy', &
-      'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction']
-   !> The same for a kinematic run: the patches found and loaded, the track-frame totals, and
-   !> the main patch's creepages and lead.
-   character(len=*), parameter :: kinematic_text_columns(10) = [character(len=17) :: &
+   !> Columns shown in the text table of a sweep (besides the swept inputs): the main patch's,
+   !> then the f of the wheel's joined contact (the exact theory's, doc/lobes.md).
+   character(len=*), parameter :: text_columns(9) = [character(len=17) :: 'fn', 'fx', 'fy', &
+      'mz', 'fx_norm', 'fy_norm', 'adhesion_fraction', 'wheel_fx_norm', 'wheel_fy_norm']
+   !> The same for a kinematic run: the patches found and loaded, the track-frame totals, the
+   !> main patch's creepages and lead, and the f of the wheel's joined contact.
+   character(len=*), parameter :: kinematic_text_columns(12) = [character(len=17) :: &
       'n_patches', 'n_loaded', 'fn_total', 'fx_total', 'fy_total', 'fz_total', 'nu_x', 'nu_y', &
-      'phi', 'x_track']
+      'phi', 'x_track', 'wheel_fx_norm', 'wheel_fy_norm']
    !> Units of the inputs, indexed as [[sweep_axis_names]] ('' for the choices).
    character(len=*), parameter :: input_units(n_sweep_axes) = [character(len=6) :: 'mm', &
       'rad', 'rad', 'N', 'mm', 'N', '1', '', '', 'mm/s', 'mm/s', 'mm/s', 'rad/s', 'rad/s', &
@@ -243,7 +244,12 @@ contains
             ', Coulomb ratio '//short_real(s%coulomb_ratio)//nl// &
             'total      Fx = '//short_real(s%fx_total)//' N, Fy = '//short_real(s%fy_total)// &
             ' N, Fz = '//short_real(s%fz_total)//' N, Fn = '//short_real(s%fn_total)// &
-            ' N (all patches, on the wheel, track frame: y to the field side, z down)'
+            ' N (all patches, on the wheel, track frame: y to the field side, z down)'//nl// &
+            'wheel      '//str_int(s%wheel%n_members)//' patch(es) joined (within 4 mm: the '// &
+            'exact theory''s one patch): Fn = '//short_real(s%wheel%fn)//' N, Fx = '// &
+            short_real(s%wheel%fx)//' N, Fy = '//short_real(s%wheel%fy)//' N, fx = '// &
+            short_real(s%wheel%fx_norm)//', fy = '//short_real(s%wheel%fy_norm)// &
+            ' (sum F/(mu sum Fn))'
       end associate
    end function report_case_text
 

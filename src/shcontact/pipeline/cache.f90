@@ -24,7 +24,6 @@ module shcontact_pipeline_cache
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_pipeline_load, only: contact_load_type
-   use shcontact_tangential_lobes, only: join_lobes
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
       solve_patch_stage, reference_axle_of, summarise_stages
@@ -230,30 +229,16 @@ contains
    end function reference_axle
 
    !> The result of the last call: the summary stage (shcontact_pipeline_stages) of the cached
-   !> stage results.
+   !> stage results, with the wheel's joined contact (doc/lobes.md).
    pure subroutine summarise(self, result)
       type(contact_cache_type), intent(in) :: self
       type(contact_result_type), intent(inout) :: result
-      real(wp) :: offset(max_patches), fx(max_patches), fy(max_patches)
-      integer :: k, n
+      integer :: n
 
       n = self%n_loaded
       call summarise_stages(self%patches%patch(1:self%patches%count), self%normal(1:n), &
          self%tangential(1:n), self%creepage(1:n), self%side, axle_offset(self%track), &
-         self%yaw, self%dz, result)
-      ! Issue 28 item 3: the joined lobes, the patches placed along the profile as the coupled
-      ! reduction places them (shcontact_normal_loading).
-      offset = 0.0_wp
-      do k = 1, n
-         fx(k) = result%patch(k)%fx
-         fy(k) = result%patch(k)%fy
-         if (k == 1) cycle
-         offset(k) = sign(hypot(self%patches%patch(k)%y_rail - self%patches%patch(1)%y_rail, &
-            self%patches%patch(k)%z_track - self%patches%patch(1)%z_track), &
-            self%patches%patch(k)%y_rail - self%patches%patch(1)%y_rail)
-      end do
-      call join_lobes(self%patches%patch(1:n), self%patches%points(1:n), self%normal(1:n), &
-         offset(1:n), fx(1:n), fy(1:n), self%material%friction, result%wheel)
+         self%yaw, self%dz, self%material%friction, result, self%patches%points(1:n))
    end subroutine summarise
 
    !> Copy the fields of the loaded patches, reusing the arrays of `fields`.

@@ -1,5 +1,6 @@
-!> The results of one contact solve: per patch, the main patch and the track-frame totals
-!> ([[contact_result_type]]), and copies of the fields ([[contact_fields_type]]).
+!> The results of one contact solve: per patch, the main patch, the track-frame totals and the
+!> wheel's joined contact ([[contact_result_type]]), and copies of the fields
+!> ([[contact_fields_type]]).
 module shcontact_pipeline_result
    use shcontact_core_kinds, only: wp
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -13,6 +14,8 @@ module shcontact_pipeline_result
 
    public :: contact_result_type, patch_result_type, contact_fields_type, max_patches
    public :: patch_column_type, patch_columns, patch_value, set_patch_value, find_patch_column
+   public :: wheel_contact_type, wheel_contact_of, wheel_columns, wheel_value, set_wheel_value, &
+      find_wheel_column
 
    !> Most patches one contact may have (the contact search follows at most 16 candidates).
    integer, parameter :: max_patches = max_candidates
@@ -111,6 +114,43 @@ module shcontact_pipeline_result
       patch_column_type('fz_track', '', 'N', .false., 'vertical force, track frame, z down'), &
       patch_column_type('z_track', '', 'mm', .false., 'reference point, track z (down)')]
 
+   !> The wheel's joined contact (contact_result_type%wheel, doc/lobes.md) as the outputs carry
+   !> it: the values of [[wheel_columns]] and no more (a sweep keeps one per case).
+   type :: wheel_contact_type
+      !> Patches joined (0: none loaded).
+      integer :: n_members = 0
+      !> Σ F_n, Σ F_x, Σ F_y (N), f = ΣF/(μΣF_n), Σ area (mm²), largest peak pressure (MPa).
+      real(wp) :: fn = 0.0_wp, fx = 0.0_wp, fy = 0.0_wp, fx_norm = 0.0_wp, fy_norm = 0.0_wp
+      real(wp) :: area = 0.0_wp, p_max = 0.0_wp
+   end type wheel_contact_type
+
+   !> The values of the wheel's joined contact by name (issue 28 item 3): the keyed getters'
+   !> name, the `/summary` column (the same), units and HDF5 description. Like
+   !> [[patch_columns]], a row here reaches `/summary`, the CSV / JSON reports and the keyed
+   !> getters; [[wheel_value]] and [[set_wheel_value]] are the one accessor of each.
+   type(patch_column_type), parameter :: wheel_columns(*) = [ &
+      patch_column_type('wheel_patches', 'wheel_patches', '1', .false., &
+      'patches in the wheel''s joined contact: the main patch and the loaded ones within 4 mm '// &
+      '(exact theory''s one patch)'), &
+      patch_column_type('wheel_fn', 'wheel_fn', 'N', .false., &
+      'normal force of the wheel''s joined contact (sum over its patches)'), &
+      patch_column_type('wheel_fx', 'wheel_fx', 'N', .false., &
+      'longitudinal creep force on the wheel, joined contact (sum over its patches, each '// &
+      'contact frame)'), &
+      patch_column_type('wheel_fy', 'wheel_fy', 'N', .false., &
+      'lateral creep force on the wheel, joined contact (sum over its patches, each contact '// &
+      'frame)'), &
+      patch_column_type('wheel_fx_norm', 'wheel_fx_norm', '1', .false., &
+      'normalised longitudinal force of the joined contact, sum F_x/(mu sum F_n): the exact '// &
+      'theory''s f_x'), &
+      patch_column_type('wheel_fy_norm', 'wheel_fy_norm', '1', .false., &
+      'normalised lateral force of the joined contact, sum F_y/(mu sum F_n): the exact '// &
+      'theory''s f_y'), &
+      patch_column_type('wheel_area', 'wheel_area', 'mm^2', .false., &
+      'contact area of the wheel''s joined contact (sum over its patches)'), &
+      patch_column_type('wheel_p_max', 'wheel_p_max', 'MPa', .false., &
+      'largest peak pressure of the wheel''s joined contact')]
+
    !> The result of one solve. Fixed size: filling it allocates nothing.
    type :: contact_result_type
       !> Patches found by the contact search (deepest first).
@@ -163,6 +203,62 @@ contains
          k = findloc(patch_columns%name, name, 1)
       end if
    end function find_patch_column
+
+   !> The joined contact's values that the outputs carry.
+   pure function wheel_contact_of(joined) result(w)
+      !> The joined contact (contact_result_type%wheel).
+      type(joined_lobes_type), intent(in) :: joined
+      type(wheel_contact_type) :: w
+      w = wheel_contact_type(joined%n_members, joined%fn, joined%fx, joined%fy, &
+         joined%fx_norm, joined%fy_norm, joined%area, joined%p_max)
+   end function wheel_contact_of
+
+   !> Index of value `name` in [[wheel_columns]]; 0 when there is none.
+   pure integer function find_wheel_column(name) result(k)
+      !> The name (getter and `/summary` column alike).
+      character(len=*), intent(in) :: name
+      k = findloc(wheel_columns%name, name, 1)
+   end function find_wheel_column
+
+   !> Value `k` ([[wheel_columns]]) of the wheel's joined contact.
+   pure real(wp) function wheel_value(w, k) result(x)
+      !> The joined contact.
+      type(wheel_contact_type), intent(in) :: w
+      !> Index in [[wheel_columns]].
+      integer, intent(in) :: k
+      select case (k)
+      case (findloc(wheel_columns%name, 'wheel_patches', 1)); x = real(w%n_members, wp)
+      case (findloc(wheel_columns%name, 'wheel_fn', 1)); x = w%fn
+      case (findloc(wheel_columns%name, 'wheel_fx', 1)); x = w%fx
+      case (findloc(wheel_columns%name, 'wheel_fy', 1)); x = w%fy
+      case (findloc(wheel_columns%name, 'wheel_fx_norm', 1)); x = w%fx_norm
+      case (findloc(wheel_columns%name, 'wheel_fy_norm', 1)); x = w%fy_norm
+      case (findloc(wheel_columns%name, 'wheel_area', 1)); x = w%area
+      case (findloc(wheel_columns%name, 'wheel_p_max', 1)); x = w%p_max
+      case default; x = 0.0_wp
+      end select
+   end function wheel_value
+
+   !> Set value `k` ([[wheel_columns]]) of the wheel's joined contact (a `/summary` row read back
+   !> from a file).
+   pure subroutine set_wheel_value(w, k, x)
+      !> The joined contact.
+      type(wheel_contact_type), intent(inout) :: w
+      !> Index in [[wheel_columns]].
+      integer, intent(in) :: k
+      !> The value.
+      real(wp), intent(in) :: x
+      select case (k)
+      case (findloc(wheel_columns%name, 'wheel_patches', 1)); w%n_members = nint(x)
+      case (findloc(wheel_columns%name, 'wheel_fn', 1)); w%fn = x
+      case (findloc(wheel_columns%name, 'wheel_fx', 1)); w%fx = x
+      case (findloc(wheel_columns%name, 'wheel_fy', 1)); w%fy = x
+      case (findloc(wheel_columns%name, 'wheel_fx_norm', 1)); w%fx_norm = x
+      case (findloc(wheel_columns%name, 'wheel_fy_norm', 1)); w%fy_norm = x
+      case (findloc(wheel_columns%name, 'wheel_area', 1)); w%area = x
+      case (findloc(wheel_columns%name, 'wheel_p_max', 1)); w%p_max = x
+      end select
+   end subroutine set_wheel_value
 
    !> Value `k` ([[patch_columns]]) of a patch. The cases are the rows' indices, constant
    !> expressions on the table, so that a lookup costs no string comparison (/summary reads

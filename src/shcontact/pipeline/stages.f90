@@ -8,7 +8,9 @@
 !>    load or position), [[solve_normal_stage]] solves it for the load (doc/theory.md §4.5–4.6);
 !> 3. tangential: [[solve_patch_stage]] solves one loaded patch for its creepages;
 !> 4. summary: [[summarise_stages]] turns the stage results into the per-patch values, the main
-!>    (most loaded) patch and the track-frame totals of a [[contact_result_type]].
+!>    (most loaded) patch, the track-frame totals and the wheel's joined contact (the patches
+!>    the exact theory joins into one, shcontact_tangential_lobes, doc/lobes.md) of a
+!>    [[contact_result_type]].
 !>
 !> Being the only copy of each stage, the solver and the program give the same numbers for the
 !> same case, bit for bit (test_app's app = library tests, both wheels).
@@ -28,9 +30,10 @@ module shcontact_pipeline_stages
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_tangential_lobes, only: join_lobes
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
       load_approach, load_vertical_position
-   use shcontact_pipeline_result, only: contact_result_type
+   use shcontact_pipeline_result, only: contact_result_type, max_patches
    implicit none
    private
 
@@ -156,9 +159,10 @@ contains
    end function reference_axle_of
 
    !> The summary of the stage results: every patch (geometry; for a loaded one its solution at
-   !> its reference point), the most loaded ("main") patch and the track-frame totals.
+   !> its reference point), the most loaded ("main") patch, the track-frame totals and the
+   !> wheel's joined contact ([[join_stage]]).
    pure subroutine summarise_stages(geometry, normal, tangential, creepage, side, axle, yaw, &
-         dz, result)
+         dz, friction, result, points)
       !> Every patch of the contact search (n_patches).
       type(patch_geometry_type), intent(in) :: geometry(:)
       !> Normal solutions of the loaded patches (n_loaded).
@@ -172,8 +176,12 @@ contains
       real(wp), intent(in) :: axle, yaw
       !> Rigid vertical approach Δz (mm).
       real(wp), intent(in) :: dz
-      !> The result (filled for patches 1..n_patches and the totals).
+      !> Friction coefficient μ of the solve (f = F/(μF_n) of the joined contact).
+      real(wp), intent(in) :: friction
+      !> The result (filled for patches 1..n_patches, the totals and the joined contact).
       type(contact_result_type), intent(inout) :: result
+      !> Table points of each patch when the geometry's tables are longer (a reused search).
+      integer, intent(in), optional :: points(:)
       integer :: k, m
 
       result%n_patches = size(geometry)
@@ -228,6 +236,56 @@ contains
       end do
       result%main_patch = m
       result%main = result%patch(m)
+      call join_stage(geometry, normal, tangential, friction, result, points)
    end subroutine summarise_stages
+
+   !> The wheel's joined contact (issue 28 item 3, doc/lobes.md) of the loaded patches:
+   !> shcontact_tangential_lobes's join_lobes, the patches placed along the profile by the signed
+   !> distance of their first contacts from the first patch's in the track's y–z plane, as the
+   !> coupled normal reduction places them (shcontact_normal_loading). The library's solver and
+   !> the program's runner both get it here, from the same numbers.
+   pure subroutine join_stage(geometry, normal, tangential, friction, result, points)
+      !> Every patch of the contact search; the normal and tangential solutions of the loaded
+      !> ones.
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      type(normal_patch_type), intent(in) :: normal(:)
+      type(tangential_patch_type), intent(in) :: tangential(:)
+      !> Friction coefficient μ.
+      real(wp), intent(in) :: friction
+      !> The result; its `wheel` is set.
+      type(contact_result_type), intent(inout) :: result
+      !> Table points of each patch (default: the whole table).
+      integer, intent(in), optional :: points(:)
+      ! Fixed-size work arrays: the summary allocates nothing (doc/api.md).
+      real(wp) :: offset(max_patches), fx(max_patches), fy(max_patches)
+      integer :: n_points(max_patches)
+      integer :: k, n
+      logical :: several
+
+      n = min(size(normal), max_patches)
+      ! The patches' extents along the profile matter only where two loaded patches may be
+      ! joined. With one loaded patch the joined contact is that patch, so its table is not
+      ! searched (no points: an empty extent): the search is most of this stage's cost, a few µs
+      ! per case on the default case (doc/lobes.md).
+      several = count(normal(1:n)%load > 0.0_wp) > 1
+      do k = 1, n
+         n_points(k) = 0
+         if (several .and. present(points)) then
+            n_points(k) = points(k)
+         else if (several) then
+            n_points(k) = geometry(k)%size()
+         end if
+         fx(k) = 0.0_wp
+         fy(k) = 0.0_wp
+         if (normal(k)%load > 0.0_wp) then
+            fx(k) = tangential(k)%fx
+            fy(k) = tangential(k)%fy
+         end if
+         offset(k) = sign(hypot(geometry(k)%y_rail - geometry(1)%y_rail, &
+            geometry(k)%z_track - geometry(1)%z_track), geometry(k)%y_rail - geometry(1)%y_rail)
+      end do
+      call join_lobes(geometry(1:n), n_points(1:n), normal(1:n), offset(1:n), fx(1:n), &
+         fy(1:n), friction, result%wheel)
+   end subroutine join_stage
 
 end module shcontact_pipeline_stages
