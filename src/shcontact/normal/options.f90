@@ -5,7 +5,8 @@ module shcontact_normal_options
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_ranges, only: check_range, check_int_range
-   use shcontact_core_choices, only: choice_code, choice_name, choice_list
+   use shcontact_core_choices, only: choice_code, choice_name, choice_list, &
+      choice_name_length
    use shcontact_normal_option_registry, only: method_semi_hertz, method_hertz, &
       reduction_local_hertz, reduction_constant, reduction_coupled, method_choices, &
       reduction_choices, default_method, default_reduction, default_epsilon, default_n_strips
@@ -135,7 +136,7 @@ contains
    pure function method_name(method) result(name)
       !> [[method_semi_hertz]] or [[method_hertz]].
       integer, intent(in) :: method
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(method_choices, method)) :: name
       name = choice_name(method_choices, method)
    end function method_name
 
@@ -143,7 +144,7 @@ contains
    pure function reduction_name(reduction) result(name)
       !> [[reduction_local_hertz]], [[reduction_constant]] or [[reduction_coupled]].
       integer, intent(in) :: reduction
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(reduction_choices, reduction)) :: name
       name = choice_name(reduction_choices, reduction)
    end function reduction_name
 

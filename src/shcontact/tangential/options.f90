@@ -4,7 +4,8 @@
 !> re-exports with the parsers (for the option setters) and name functions (for outputs).
 module shcontact_tangential_options
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list
+   use shcontact_core_choices, only: choice_type, choice_code, choice_name, choice_list, &
+      choice_name_length
    use shcontact_core_ranges, only: check_int_range
    use shcontact_tangential_option_registry, only: method_fastsim_sh, method_fastsim, &
       bound_ellipsoidal, bound_parabolic, bound_weighted, bound_weighted_slip, bound_clipped, &
@@ -186,7 +187,7 @@ contains
    pure function method_name(code) result(name)
       !> A `method_*` code.
       integer, intent(in) :: code
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(method_choices, code)) :: name
       name = choice_name(method_choices, code)
    end function method_name
 
@@ -194,7 +195,7 @@ contains
    pure function bound_name(code) result(name)
       !> A `bound_*` code.
       integer, intent(in) :: code
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(bound_choices, code)) :: name
       name = choice_name(bound_choices, code)
    end function bound_name
 
@@ -202,7 +203,7 @@ contains
    pure function spin_model_name(code) result(name)
       !> A `spin_*` code.
       integer, intent(in) :: code
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(spin_model_choices, code)) :: name
       name = choice_name(spin_model_choices, code)
    end function spin_model_name
 
@@ -210,7 +211,7 @@ contains
    pure function spin_flexibility_name(code) result(name)
       !> A `spin_flexibility_*` code.
       integer, intent(in) :: code
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(spin_flexibility_choices, code)) :: name
       name = choice_name(spin_flexibility_choices, code)
    end function spin_flexibility_name
 
@@ -218,7 +219,7 @@ contains
    pure function correction_name(code) result(name)
       !> A `correction_*` code.
       integer, intent(in) :: code
-      character(len=:), allocatable :: name
+      character(len=choice_name_length(correction_choices, code)) :: name
       name = choice_name(correction_choices, code)
    end function correction_name
 
