@@ -263,14 +263,21 @@ contains
       end do
    end subroutine gauge_point
 
+   !> [[real_text]]'s text, left-aligned in a fixed buffer.
+   pure function g_buffer(x) result(buf)
+      real(wp), intent(in) :: x
+      character(len=32) :: buf
+      write (buf, '(g0.6)') x
+      buf = adjustl(buf)
+   end function g_buffer
+
    !> A real value as short text for messages (six significant digits).
+   !> (No deferred-length result: doc/performance.md, "Threads and strings".)
    pure function real_text(x) result(text)
       !> The value.
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      write (buf, '(g0.6)') x
-      text = trim(adjustl(buf))
+      character(len=len_trim(g_buffer(x))) :: text
+      text = g_buffer(x)
    end function real_text
 
 end module shcontact_geometry_track

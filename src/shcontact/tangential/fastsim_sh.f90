@@ -17,6 +17,7 @@
 module shcontact_tangential_fastsim_sh
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
    use shcontact_core_constants, only: pi, half_pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_core_material, only: material_type, check_material
@@ -201,7 +202,7 @@ contains
 
       n = patch%n_strips
       if (n < 1) then
-         call fatal_error(error, 'normal patch: n_strips = '//itoa(n)// &
+         call fatal_error(error, 'normal patch: n_strips = '//str_int(n)// &
             ', expected at least one strip', stat_invalid_input)
          return
       end if
@@ -209,7 +210,7 @@ contains
          have(patch%strip_load, n) .and. have(patch%m, n) .and. have(patch%n, n) .and. &
          have(patch%gamma, n) .and. have(patch%delta_r, n))) then
          call fatal_error(error, 'normal patch: the strip arrays y, a, k, strip_load, m, n, '// &
-            'gamma, delta_r must hold n_strips = '//itoa(n)//' values', stat_invalid_input)
+            'gamma, delta_r must hold n_strips = '//str_int(n)//' values', stat_invalid_input)
          return
       end if
       if (.not. positive(patch%dy)) then
@@ -262,7 +263,7 @@ contains
          character(len=*), intent(in) :: item, expected
          real(wp), intent(in) :: value
          type(error_type), allocatable, intent(out) :: error
-         call fatal_error(error, 'normal patch, strip '//itoa(i)//': '//item//' = '// &
+         call fatal_error(error, 'normal patch, strip '//str_int(i)//': '//item//' = '// &
             rtoa(value)//', expected '//expected, stat_invalid_input)
       end subroutine strip_error
 
@@ -289,20 +290,21 @@ contains
       if (have) have = size(array) >= n
    end function have
 
-   pure function itoa(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function itoa
-
-   pure function rtoa(x) result(text)
+   !> [[rtoa]]'s text, left-aligned in a fixed buffer.
+   pure function es_buffer(x) result(buf)
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
       character(len=24) :: buf
       write (buf, '(es12.4)') x
-      text = trim(adjustl(buf))
+      buf = adjustl(buf)
+   end function es_buffer
+
+   !> A real for the input checks' messages (es12.4, no blanks). The length comes from a
+   !> specification function, not a deferred-length result: the checks run in the threads of a
+   !> sweep or of a vehicle code (doc/performance.md, "Threads and strings").
+   pure function rtoa(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=len_trim(es_buffer(x))) :: text
+      text = es_buffer(x)
    end function rtoa
 
 end module shcontact_tangential_fastsim_sh
