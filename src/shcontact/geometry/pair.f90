@@ -270,8 +270,8 @@ contains
       integer, intent(out) :: n_rows, n_basin
       real(wp), intent(out) :: s_basin
       type(frame_walk_type) :: walk_r, walk_w
-      real(wp), dimension(chunk) :: r_zeta, r_slope, r_curv, r_v, r_s, w_zeta, w_slope, w_curv, &
-         w_v, w_s, w_angle, w_a, w_tan
+      real(wp), dimension(chunk) :: r_zeta, r_curv, r_s, w_zeta, w_slope, w_curv, w_v, w_s, &
+         w_angle, w_a, w_tan
       real(wp) :: top, c, sn, tn
       integer :: j, j0, j_top, i, m, n_r, n_w, n_both
       logical :: cut, fixed_normal
@@ -295,10 +295,10 @@ contains
       m = chunk
       walk: do while (j0 < size(rows, 2))
          m = min(m, size(rows, 2) - j0)
-         call walk_points(prepared%rail, rmap, walk_r, step, j0, m, min_deta, r_zeta, r_slope, &
-            r_curv, r_v, r_s, n_r)
-         call walk_points(prepared%wheel, wmap, walk_w, step, j0, n_r, min_deta, w_zeta, &
-            w_slope, w_curv, w_v, w_s, n_w)
+         call walk_points(prepared%rail, rmap, walk_r, step, j0, m, min_deta, r_zeta, r_curv, &
+            r_s, n_r)
+         call walk_points(prepared%wheel, wmap, walk_w, step, j0, n_r, min_deta, w_zeta, w_curv, &
+            w_s, n_w, w_slope, w_v)
          n_both = min(n_r, n_w)
          ! Loops of their own over the chunk, so that they vectorise (the vector atan).
          do i = 1, n_both
