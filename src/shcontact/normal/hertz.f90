@@ -236,13 +236,24 @@ contains
       ! Estrin's scheme for degree 8: a dependency chain of 4 steps instead of Horner's 8.
       t2 = t*t
       t4 = t2*t2
-      do f = 1, n_values
-         values(f) = ((shape_coef(f, 0, cell) + shape_coef(f, 1, cell)*t) &
+      ! The strip method's functions in a loop of fixed length (unrolled and vectorised whole;
+      ! this runs at every table point), the others after them.
+      do f = 1, min(n_values, shape_strip_functions)
+         values(f) = estrin(f)
+      end do
+      do f = shape_strip_functions + 1, n_values
+         values(f) = estrin(f)
+      end do
+   contains
+      !> Function f of the cell at t.
+      pure real(wp) function estrin(f)
+         integer, intent(in) :: f
+         estrin = ((shape_coef(f, 0, cell) + shape_coef(f, 1, cell)*t) &
             + (shape_coef(f, 2, cell) + shape_coef(f, 3, cell)*t)*t2) &
             + ((shape_coef(f, 4, cell) + shape_coef(f, 5, cell)*t) &
             + (shape_coef(f, 6, cell) + shape_coef(f, 7, cell)*t)*t2)*t4 &
             + shape_coef(f, 8, cell)*(t4*t4)
-      end do
+      end function estrin
    end subroutine tabulated_shape
 
    !> Everything else from g and the orientation (doc/theory.md §1.3 items 3, 6 and §1.4).
