@@ -6,8 +6,9 @@
 !> difference divided by n is the count per call, the set-up call (and the yaw table it builds)
 !> left out:
 !>
-!>     valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*solve_kinematic' \
-!>        build/.../shcontact-kinematic-count hunting default 1000
+!>     fpm run --profile release --example shcontact-kinematic-count --runner \
+!>        "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*solve_kinematic'" \
+!>        -- hunting default 1000
 !>
 !> Arguments: hunting | flange | fixed, default | vehicle (the preset), n (default 1000).
 !> It prints n, the failed calls and the sum of the track-frame F_y (N) as a check.
