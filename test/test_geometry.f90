@@ -1373,7 +1373,7 @@ contains
                         block
                            real(wp), dimension(m) :: z1, s1, c1, v1, a1
                            call walk_points(spline, map, walk, step, j0, m, min_deta, z1, &
-                              s1, c1, v1, a1, got)
+                              c1, a1, got, s1, v1)
                            if (got > 0) then
                               write (where(72:), '(a,5es8.1)') ':', &
                                  maxval(abs(z1(1:got) - zeta(j0 + 1:j0 + got))), &

@@ -337,7 +337,7 @@ contains
       n_w = size(prepared%wheel_y)
       call reserve_search(prepared, work, 0)
       if (prepared%options%reference_search) then
-         call wheel_map%point(prepared%wheel_y, prepared%wheel_z, work%wheel_y(1:n_w), &
+         call wheel_map%points(prepared%wheel_y, prepared%wheel_z, work%wheel_y(1:n_w), &
             work%wheel_z(1:n_w))
          w_min = minval(work%wheel_y(1:n_w))
          w_max = maxval(work%wheel_y(1:n_w))
@@ -413,7 +413,7 @@ contains
             if (lo(b) > lowest_top .and. hi(b) < highest_bottom) cycle
             i1 = (b - 1)*sample_block + 1
             i2 = min(size(prepared%wheel_y), b*sample_block)
-            call wheel_map%point(prepared%wheel_y(i1:i2), prepared%wheel_z(i1:i2), &
+            call wheel_map%points(prepared%wheel_y(i1:i2), prepared%wheel_z(i1:i2), &
                work%wheel_y(i1:i2), work%wheel_z(i1:i2))
             if (lo(b) <= lowest_top) w_min = min(w_min, minval(work%wheel_y(i1:i2)))
             if (hi(b) >= highest_bottom) w_max = max(w_max, maxval(work%wheel_y(i1:i2)))
@@ -464,7 +464,7 @@ contains
                n_runs = n_runs + 1
                work%runs(:, n_runs) = [i1, i2]
                last = i2
-               call wheel_map%point(prepared%wheel_y(i1:i2 + 1), prepared%wheel_z(i1:i2 + 1), &
+               call wheel_map%points(prepared%wheel_y(i1:i2 + 1), prepared%wheel_z(i1:i2 + 1), &
                   work%wheel_y(i1:i2 + 1), work%wheel_z(i1:i2 + 1))
             end if
             b = b + 1
@@ -495,17 +495,18 @@ contains
 
       h = prepared%options%sample_step
       shift = 0.0_wp
+      ! The wheel's envelope (wzl, ws) is read only where it is covered (wc).
       wc = .false.
-      wzl = 0.0_wp
-      ws = 0.0_wp
       do r = 1, size(runs, 2)
          call envelope_segments(wy, wz, prepared%wheel_s, runs(1, r), runs(2, r), y0, h, .true., &
             wzl, ws, wc)
       end do
-      ! wc: where both envelopes are defined.
-      wc = rc .and. wc
-      gap = 0.0_wp
-      where (wc) gap = rz - wzl
+      ! wc: where both envelopes are defined; the gap there (0 elsewhere), in one pass.
+      do j = 1, size(gap)
+         wc(j) = rc(j) .and. wc(j)
+         gap(j) = 0.0_wp
+         if (wc(j)) gap(j) = rz(j) - wzl(j)
+      end do
       call gap_minima(gap, wc, prepared%options%merge_gap, minima, count, interior)
       if (.not. interior) then
          j = minloc(gap, 1, mask=wc)

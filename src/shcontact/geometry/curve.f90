@@ -161,8 +161,8 @@ contains
    !> ends at the first point where the profile ends or turns back. On a strictly monotone
    !> interval every point is solved from the interval's inverse interpolant by Newton steps on
    !> the projected cubic; anywhere else the point comes from [[walk_to_eta]].
-   pure subroutine walk_points(spline, map, walk, step, j0, m, min_deta, zeta, slope, curv, v, &
-         s, n)
+   pure subroutine walk_points(spline, map, walk, step, j0, m, min_deta, zeta, curv, s, n, &
+         slope, v)
       !> The profile.
       type(profile_spline_type), intent(in) :: spline
       !> Profile coordinates to frame coordinates (as for [[start_walk]]).
@@ -175,8 +175,10 @@ contains
       integer, intent(in) :: j0, m
       !> The walk ends where dη/ds ≤ this.
       real(wp), intent(in) :: min_deta
-      !> Frame height (mm), dζ/dη, d²ζ/dη² (1/mm), profile z (mm) and arc length (mm).
-      real(wp), intent(out) :: zeta(:), slope(:), curv(:), v(:), s(:)
+      !> Frame height (mm), dζ/dη, d²ζ/dη² (1/mm), profile z (mm) and arc length (mm); the
+      !> slope and z only when asked for (the rail's table rows use neither).
+      real(wp), intent(out) :: zeta(:), curv(:), s(:)
+      real(wp), intent(out), optional :: slope(:), v(:)
       !> Number of points found.
       integer, intent(out) :: n
       type(frame_point_type) :: pnt
@@ -245,9 +247,9 @@ contains
                   zeta(i) = zq + dt*(dq + dt*(0.5_wp*d2q + q(4)*dt))
                   dq = dq + dt*(d2q + 3.0_wp*q(4)*dt)
                   d2q = d2q + 6.0_wp*q(4)*dt
-                  slope(i) = dq*inv
+                  if (present(slope)) slope(i) = dq*inv
                   curv(i) = (d2q*df - dq*d2f)*inv**3
-                  v(i) = cz(1) + t1*(cz(2) + t1*(cz(3) + t1*cz(4)))
+                  if (present(v)) v(i) = cz(1) + t1*(cz(2) + t1*(cz(3) + t1*cz(4)))
                   s(i) = spline%s(walk%k) + t1
                   walk%last%s = s(i)
                   walk%last%k = walk%k
@@ -262,9 +264,9 @@ contains
             if (.not. found) return
             walk%last = pnt
             zeta(i) = pnt%zeta
-            slope(i) = pnt%slope
+            if (present(slope)) slope(i) = pnt%slope
             curv(i) = pnt%curv
-            v(i) = pnt%v
+            if (present(v)) v(i) = pnt%v
             s(i) = pnt%s
             call enter_interval(spline, walk, pnt%k)
          end if

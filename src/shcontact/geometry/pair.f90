@@ -270,8 +270,8 @@ contains
       integer, intent(out) :: n_rows, n_basin
       real(wp), intent(out) :: s_basin
       type(frame_walk_type) :: walk_r, walk_w
-      real(wp), dimension(chunk) :: r_zeta, r_slope, r_curv, r_v, r_s, w_zeta, w_slope, w_curv, &
-         w_v, w_s, w_angle, w_a, w_tan
+      real(wp), dimension(chunk) :: r_zeta, r_curv, r_s, w_zeta, w_slope, w_curv, w_v, w_s, &
+         w_angle, w_a, w_tan
       real(wp) :: top, c, sn, tn
       integer :: j, j0, j_top, i, m, n_r, n_w, n_both
       logical :: cut, fixed_normal
@@ -292,12 +292,13 @@ contains
       call start_walk(prepared%rail, rmap, r0, dir_r, step, walk_r)
       call start_walk(prepared%wheel, wmap, w0, dir_w, step, walk_w)
       j0 = 0
+      m = chunk
       walk: do while (j0 < size(rows, 2))
-         m = min(chunk, size(rows, 2) - j0)
-         call walk_points(prepared%rail, rmap, walk_r, step, j0, m, min_deta, r_zeta, r_slope, &
-            r_curv, r_v, r_s, n_r)
-         call walk_points(prepared%wheel, wmap, walk_w, step, j0, n_r, min_deta, w_zeta, &
-            w_slope, w_curv, w_v, w_s, n_w)
+         m = min(m, size(rows, 2) - j0)
+         call walk_points(prepared%rail, rmap, walk_r, step, j0, m, min_deta, r_zeta, r_curv, &
+            r_s, n_r)
+         call walk_points(prepared%wheel, wmap, walk_w, step, j0, n_r, min_deta, w_zeta, w_curv, &
+            w_s, n_w, w_slope, w_v)
          n_both = min(n_r, n_w)
          ! Loops of their own over the chunk, so that they vectorise (the vector atan).
          do i = 1, n_both
@@ -336,11 +337,32 @@ contains
          end do
          if (n_both < m) exit
          j0 = j0 + m
+         if (j0 >= 2) m = points_to_cut(rows(1, j0 - 1), rows(1, j0), prepared%options%table_gap)
       end do walk
       if (.not. cut) n_basin = n_rows
       s_basin = r0%s
       if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
+
+   !> How many points the next chunk of [[follow]] walks, so that the walk does not overrun
+   !> the table's end by a whole chunk: the table ends at the first point whose gap exceeds
+   !> table_gap, and where the gap rises convexly (a basin's flank) the last step's rise,
+   !> continued linearly, reaches table_gap no earlier than the gap itself; one point more, at
+   !> most `chunk`, at least 1. Only the cost depends on it: a walk's points do not depend on
+   !> where its chunks end, and where the gap rises more slowly the next chunk goes on.
+   pure integer function points_to_cut(gap_before, gap_last, table_gap) result(m)
+      !> The relative gaps of the last two points walked (mm).
+      real(wp), intent(in) :: gap_before, gap_last
+      !> The gap where the table ends (mm).
+      real(wp), intent(in) :: table_gap
+      real(wp) :: rise, steps
+
+      m = chunk
+      rise = gap_last - gap_before
+      if (.not. rise > 0.0_wp) return
+      steps = (table_gap - gap_last)/rise
+      if (steps < real(chunk - 1, wp)) m = max(1, int(steps) + 2)
+   end function points_to_cut
 
    !> [[follow]] point after point, each point from the last one by [[next_point]] (the
    !> reference search).

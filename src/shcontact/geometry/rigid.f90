@@ -21,6 +21,8 @@ module shcontact_geometry_rigid
    contains
       !> Image of a point.
       procedure :: point
+      !> Images of many points, in one loop.
+      procedure :: points
       !> Image of a direction (rotation only).
       procedure :: vector
       !> This map followed by another.
@@ -72,6 +74,21 @@ contains
       y1 = self%c*y - self%s*z + self%dy
       z1 = self%s*y + self%c*z + self%dz
    end subroutine point
+
+   !> Images of the points (y_i, z_i), the formula of [[point]] in one loop (the elemental
+   !> binding, called on arrays, costs a call per point).
+   pure subroutine points(self, y, z, y1, z1)
+      class(rigid_map_type), intent(in) :: self
+      !> Points (mm).
+      real(wp), intent(in) :: y(:), z(:)
+      !> Their images (mm; the size of y).
+      real(wp), intent(out) :: y1(:), z1(:)
+      integer :: i
+      do i = 1, size(y)
+         y1(i) = self%c*y(i) - self%s*z(i) + self%dy
+         z1(i) = self%s*y(i) + self%c*z(i) + self%dz
+      end do
+   end subroutine points
 
    !> Image of the direction (vy, vz).
    elemental subroutine vector(self, vy, vz, wy, wz)

@@ -177,16 +177,18 @@ contains
       !> Set for a non-positive curvature ratio (or a failed root search outside the table).
       type(error_type), allocatable, intent(out) :: error
       type(hertz_shape_type) :: shape
-      real(wp) :: v(shape_strip_functions), rho
+      real(wp) :: v(shape_strip_functions), rho, t
       logical :: inside
-      integer :: i
+      integer :: i, cell
 
       do i = 1, size(curv_a)
          rho = 0.0_wp
          if (max(curv_a(i), curv_b(i)) > 0.0_wp) rho = min(curv_a(i), curv_b(i))/ &
             max(curv_a(i), curv_b(i))
-         call tabulated_shape(rho, shape_strip_functions, v, inside)
+         ! tabulated_shape's two steps written out: no call per point.
+         call shape_cell(rho, cell, t, inside)
          if (inside) then
+            v = shape_polynomials(cell, t)
             call orient(v(shape_g), v(shape_c_major), v(shape_eps_minor), curv_a(i) <= curv_b(i), &
                eps_a(i), eps_b(i), m(i), n(i))
             p_factor(i) = sqrt(curv_a(i) + curv_b(i))*v(shape_inv_sqrt_ek)
@@ -212,14 +214,42 @@ contains
       integer, intent(in) :: n_values
       real(wp), intent(out) :: values(n_values)
       logical, intent(out) :: inside
+      real(wp) :: t
+      integer :: cell, f
+
+      call shape_cell(rho, cell, t, inside)
+      if (.not. inside) return
+      ! The strip method's functions in a loop of fixed length (unrolled and vectorised whole),
+      ! the others after them.
+      if (n_values >= shape_strip_functions) then
+         values(1:shape_strip_functions) = shape_polynomials(cell, t)
+      else
+         do f = 1, n_values
+            values(f) = shape_polynomial(f, cell, t, t*t, (t*t)*(t*t))
+         end do
+      end if
+      do f = shape_strip_functions + 1, n_values
+         values(f) = shape_polynomial(f, cell, t, t*t, (t*t)*(t*t))
+      end do
+   end subroutine tabulated_shape
+
+   !> The cell of the shape table holding ρ ∈ [2⁻¹⁴, 1) and the position t ∈ [−1, 1) in it;
+   !> `inside` is false elsewhere (and for NaN).
+   pure subroutine shape_cell(rho, cell, t, inside)
+      real(wp), intent(in) :: rho
+      integer, intent(out) :: cell
+      real(wp), intent(out) :: t
+      logical, intent(out) :: inside
       !> Bits of the significand of an IEEE double, and its exponent bias.
       integer(i8), parameter :: significand_mask = 2_i8**52 - 1
       integer, parameter :: exponent_bias = 1023
       real(wp), parameter :: significand_scale = real(shape_cells, wp)*2.0_wp**(-52)
-      real(wp) :: u, t, t2, t4
+      real(wp) :: u
       integer(i8) :: bits
-      integer :: octave, j, cell, f
+      integer :: octave, j
 
+      cell = 1
+      t = 0.0_wp
       inside = rho > 0.0_wp .and. rho < 1.0_wp
       if (.not. inside) return
       ! ρ = (1 + s)·2^(−1 − octave) with s ∈ [0, 1) (ρ < 1 is normal, positive): the octave and
@@ -233,17 +263,33 @@ contains
       j = min(int(u), shape_cells - 1)
       t = 2.0_wp*(u - j) - 1.0_wp
       cell = octave*shape_cells + j + 1
-      ! Estrin's scheme for degree 8: a dependency chain of 4 steps instead of Horner's 8.
+   end subroutine shape_cell
+
+   !> The strip method's shape_strip_functions tabulated functions of a cell at t.
+   pure function shape_polynomials(cell, t) result(values)
+      integer, intent(in) :: cell
+      real(wp), intent(in) :: t
+      real(wp) :: values(shape_strip_functions)
+      real(wp) :: t2, t4
+      integer :: f
       t2 = t*t
       t4 = t2*t2
-      do f = 1, n_values
-         values(f) = ((shape_coef(f, 0, cell) + shape_coef(f, 1, cell)*t) &
-            + (shape_coef(f, 2, cell) + shape_coef(f, 3, cell)*t)*t2) &
-            + ((shape_coef(f, 4, cell) + shape_coef(f, 5, cell)*t) &
-            + (shape_coef(f, 6, cell) + shape_coef(f, 7, cell)*t)*t2)*t4 &
-            + shape_coef(f, 8, cell)*(t4*t4)
+      do f = 1, shape_strip_functions
+         values(f) = shape_polynomial(f, cell, t, t2, t4)
       end do
-   end subroutine tabulated_shape
+   end function shape_polynomials
+
+   !> Function f of a cell at t (t2 = t², t4 = t⁴) by Estrin's scheme for degree 8: a dependency
+   !> chain of 4 steps instead of Horner's 8.
+   pure real(wp) function shape_polynomial(f, cell, t, t2, t4) result(value)
+      integer, intent(in) :: f, cell
+      real(wp), intent(in) :: t, t2, t4
+      value = ((shape_coef(f, 0, cell) + shape_coef(f, 1, cell)*t) &
+         + (shape_coef(f, 2, cell) + shape_coef(f, 3, cell)*t)*t2) &
+         + ((shape_coef(f, 4, cell) + shape_coef(f, 5, cell)*t) &
+         + (shape_coef(f, 6, cell) + shape_coef(f, 7, cell)*t)*t2)*t4 &
+         + shape_coef(f, 8, cell)*(t4*t4)
+   end function shape_polynomial
 
    !> Everything else from g and the orientation (doc/theory.md §1.3 items 3, 6 and §1.4).
    pure subroutine shape_from_g(g, ratio, shape)

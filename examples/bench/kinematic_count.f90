@@ -1,0 +1,105 @@
+!> Driver for instruction counts of the kinematic call (doc/performance.md, "Speed of the
+!> kinematic call"): one set-up call, then `solve_kinematic` on the first n states of a
+!> trajectory of the benchmark (shcontact-bench's hunting and flange trajectories, or the
+!> hunting velocities at the fixed position of state 200), in order. Run it under callgrind with
+!> the collection toggled on `solve_kinematic`, once with n = 0 and once with n = 1000; the
+!> difference divided by n is the count per call, the set-up call (and the yaw table it builds)
+!> left out:
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count --runner \
+!>        "valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*solve_kinematic'" \
+!>        -- hunting default 1000
+!>
+!> Arguments: hunting | flange | fixed, default | vehicle (the preset), n (default 1000).
+!> It prints n, the failed calls and the sum of the track-frame F_y (N) as a check.
+program kinematic_count
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   use shcontact, only: wp, error_type, contact_solver_type, contact_load_type, &
+      contact_result_type, wheelset_state_type, load_vertical_force, set_preset
+   use bench_moving, only: hunting_states, flange_states
+   implicit none
+   !> Vertical wheel load of the benchmark (N).
+   real(wp), parameter :: wheel_load = 64700.0_wp
+   type(contact_solver_type) :: solver
+   type(wheelset_state_type), allocatable :: states(:)
+   type(error_type), allocatable :: error
+   type(contact_result_type) :: result
+   character(len=32) :: which, preset, count_text
+   integer :: n, stat, failed
+   real(wp) :: checksum
+
+   call get_command_argument(1, which)
+   call get_command_argument(2, preset)
+   call get_command_argument(3, count_text)
+   n = 1000
+   if (len_trim(count_text) > 0) then
+      read (count_text, *, iostat=stat) n
+      if (stat /= 0 .or. n < 0 .or. n > 1000) call usage()
+   end if
+   select case (trim(which))
+   case ('flange')
+      states = flange_states(1000)
+   case ('hunting', 'fixed')
+      states = hunting_states(1000)
+      if (trim(which) == 'fixed') then
+         states%y_ws = states(200)%y_ws
+         states%yaw = states(200)%yaw
+      end if
+   case default
+      call usage()
+   end select
+   call solver%init('builtin:S1002', 'builtin:UIC60', error)
+   if (allocated(error)) call fail(error)
+   select case (trim(preset))
+   case ('vehicle')
+      call set_preset(solver, 'vehicle', error)
+      if (allocated(error)) call fail(error)
+   case ('default', '')
+   case default
+      call usage()
+   end select
+   call solver%solve_kinematic(states(1), contact_load_type(load_vertical_force, wheel_load), &
+      result, error)
+   if (allocated(error)) call fail(error)
+   call loop(solver, states(1:n), failed, checksum)
+   write (output_unit, '(a,i0,a,i0,a,es24.16)') 'calls ', n, ', failed ', failed, &
+      ', sum of F_y (N) ', checksum
+
+contains
+
+   !> The counted calls.
+   subroutine loop(solver, states, failed, checksum)
+      type(contact_solver_type), intent(inout) :: solver
+      type(wheelset_state_type), intent(in) :: states(:)
+      integer, intent(out) :: failed
+      real(wp), intent(out) :: checksum
+      type(error_type), allocatable :: error
+      type(contact_result_type) :: result
+      integer :: i
+
+      failed = 0
+      checksum = 0.0_wp
+      do i = 1, size(states)
+         call solver%solve_kinematic(states(i), contact_load_type(load_vertical_force, &
+            wheel_load), result, error)
+         if (allocated(error)) then
+            failed = failed + 1
+         else
+            checksum = checksum + result%track%fy
+         end if
+      end do
+   end subroutine loop
+
+   subroutine usage()
+      write (error_unit, '(a)') 'usage: shcontact-kinematic-count hunting|flange|fixed '// &
+         '[default|vehicle] [n = 0..1000]'
+      stop 1
+   end subroutine usage
+
+   subroutine fail(error)
+      type(error_type), intent(in) :: error
+      write (error_unit, '(a)') 'shcontact-kinematic-count: '//error%message
+      stop 5
+   end subroutine fail
+
+end program kinematic_count
