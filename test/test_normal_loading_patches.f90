@@ -11,7 +11,7 @@ module test_normal_loading_patches
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_options, only: normal_options_type, reduction_local_hertz, &
       reduction_coupled
-   use shcontact_normal_coupling, only: couple_strips, max_patches
+   use shcontact_normal_coupling, only: couple_strips, max_patches, coupling_start_type
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
    use test_semihertz, only: polynomial_patch
@@ -34,7 +34,8 @@ contains
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('more_than_max_patches_balance', test_more_than_joint), &
-         new_unittest('patches_not_placed_coupled_alone', test_not_placed) &
+         new_unittest('patches_not_placed_coupled_alone', test_not_placed), &
+         new_unittest('warm_coupling_same_fixed_point', test_warm_coupling) &
          ]
    end subroutine collect_normal_loading_patches
 
@@ -123,6 +124,64 @@ contains
          err)
       if (allocated(err)) call test_failed(error, err%message)
    end subroutine solve_row
+
+   !> The coupled solve started from the strip lengths of another one (coupling_start_type, as
+   !> the kinematic call's vertical balance does between its solves): three patches that press
+   !> each other (single solves, then the joint one), first at 3 % more load, then at the load
+   !> itself. The warm solve reaches the cold solve's fixed point: every strip load within
+   !> 1e-6 of the largest, the patch loads within 1e-6 of F_z (the length iteration stops at
+   !> 1e-7 in ln a), the balance exact.
+   subroutine test_warm_coupling(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 3
+      type(normal_contact_type) :: contacts(n)
+      type(normal_patch_type) :: cold(n), other(n), warm(n)
+      type(coupling_start_type) :: start
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(material_type) :: mat
+      type(lib_error), allocatable :: err
+      real(wp) :: dz_cold, dz_warm, dz_other, f_z, largest
+      integer :: k, m
+
+      options%reduction = reduction_coupled
+      f_z = n*load_per_patch
+      do k = 1, n
+         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
+            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
+         geom%y_rail = -spacing*(k - 1)
+         call prepare_normal_contact(contacts(k), geom, options, mat, err)
+         if (allocated(err)) exit
+      end do
+      if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, cold, dz_cold, err)
+      call start%reset()
+      if (.not. allocated(err)) call solve_vertical_load(contacts, 1.03_wp*f_z, other, dz_other, &
+         err, start)
+      if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, warm, dz_warm, err, start)
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      call check(error, start%n_slots >= 2, message='the joint problem and its single solves '// &
+         'should have recorded their lengths')
+      if (allocated(error)) return
+      call check(error, all(cold%load > 0.0_wp), message='every patch should carry')
+      if (allocated(error)) return
+      call check(error, maxval(abs(warm%load - cold%load)) <= 1.0e-6_wp*f_z, &
+         message='patch loads of the warm solve differ from the cold one''s')
+      if (allocated(error)) return
+      call check_balance(warm, f_z, dz_warm, dz_cold, error)
+      if (allocated(error)) return
+      do k = 1, n
+         m = cold(k)%n_strips
+         call check(error, warm(k)%n_strips == m, message='strip counts differ')
+         if (allocated(error)) return
+         largest = maxval(cold(k)%strip_load(1:m))
+         call check(error, maxval(abs(warm(k)%strip_load(1:m) - cold(k)%strip_load(1:m))) <= &
+            1.0e-6_wp*largest, message='strip loads of the warm solve differ from the cold one''s')
+         if (allocated(error)) return
+      end do
+   end subroutine test_warm_coupling
 
    !> Σ N_k cos γ_k = F_z and the rigid approach of the strips, kept by the coupling.
    subroutine check_balance(patches, f_z, dz, dz_alone, error)

@@ -104,7 +104,7 @@ contains
       integer, intent(out) :: ipiv(:)
       !> Set when the block is singular or does not fit.
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: t, f
+      real(wp) :: t, f, g
       integer :: info, i, j, k, p
 
       if (n < 1 .or. n > size(a, 1) .or. n > size(a, 2) .or. n > size(b) .or. &
@@ -150,12 +150,22 @@ contains
                a(i, k) = a(i, k)/f
             end do
          end if
-         do j = k + 1, n
+         ! Two columns at a time (each multiplier column read once for both; the same
+         ! operation on every element, so the same factors bit for bit).
+         do j = k + 1, n - 1, 2
             f = a(k, j)
+            g = a(k, j + 1)
             do i = k + 1, n
                a(i, j) = a(i, j) - a(i, k)*f
+               a(i, j + 1) = a(i, j + 1) - a(i, k)*g
             end do
          end do
+         if (modulo(n - k, 2) == 1) then
+            f = a(k, n)
+            do i = k + 1, n
+               a(i, n) = a(i, n) - a(i, k)*f
+            end do
+         end if
       end do
       call solve_factored_leading(n, a, ipiv, b)
    end subroutine solve_dense_leading

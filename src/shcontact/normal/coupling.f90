@@ -59,7 +59,7 @@ module shcontact_normal_coupling
    implicit none
    private
 
-   public :: couple_strips, couple_patches, max_groups, max_patches
+   public :: couple_strips, couple_patches, max_groups, max_patches, coupling_start_type
 
    !> Most length updates of [[consistent_lengths]], and the change of ln a below which the
    !> lengths have converged. The iteration is run to its fixed point (each step divides the error
@@ -86,6 +86,9 @@ module shcontact_normal_coupling
    !> length step is damped (weight peak/(entry_weight peak_max)): the step in ln a of a group
    !> with a tiny peak tends to −∞. The fixed point is the same ([[consistent_lengths]]).
    real(wp), parameter :: entry_weight = 1.0e-3_wp
+   !> Length iterations of one [[couple_patches]] that a [[coupling_start_type]] records (the
+   !> single solves of a joint problem and the joint one: max_patches + 1).
+   integer, parameter :: max_start_slots = max_patches + 1
 
    !> The factorised linear system of the groups in contact ([[solve_groups]]): the peaks and
    !> the shift Δ solve it.
@@ -109,6 +112,25 @@ module shcontact_normal_coupling
       real(wp) :: capacitance(max_held, max_held)
       integer :: capacitance_pivots(max_held)
    end type group_system_type
+
+   !> Coupled solves that repeat: the converged strip lengths of each length iteration of
+   !> the last [[couple_patches]], as the start of the same iteration in the next one. Within
+   !> one kinematic call the vertical balance solves the same wheel at loads that differ by
+   !> little, and the lengths of one solve are within a fraction of a percent of the next
+   !> one's: the iteration then starts next to its fixed point (the same fixed point to
+   !> length_tolerance, fewer steps; doc/performance.md, "Speed-up 5"). The caller empties it
+   !> ([[reset_start]]) where a new problem begins, so that no result depends on an earlier one.
+   type :: coupling_start_type
+      !> Iterations recorded, and the one [[couple_patches]] reaches next.
+      integer :: n_slots = 0, next = 0
+      !> Per iteration: its groups and patches, ln(a/a_fill) and the groups in contact.
+      integer :: n(max_start_slots) = 0, n_patches(max_start_slots) = 0
+      real(wp) :: stretch_log(max_total, max_start_slots)
+      logical :: in_contact(max_total, max_start_slots)
+   contains
+      !> Forget every recorded iteration.
+      procedure :: reset => reset_start
+   end type coupling_start_type
 
 contains
 
@@ -140,7 +162,7 @@ contains
 
    !> The coupled solve of a set that holds the groups of one patch alone (at offset 0 and
    !> contact angle 0, as [[couple_strips]] places them), scaled back onto the patch's strips.
-   pure subroutine couple_single(set, patch, e_star, error)
+   pure subroutine couple_single(set, patch, e_star, error, start)
       !> The groups of the patch.
       type(group_set_type), intent(inout) :: set
       !> The patch's strip table: local Hertz on entry, coupled on return.
@@ -149,9 +171,11 @@ contains
       real(wp), intent(in) :: e_star
       !> Set when the dense solve fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the length iterations ([[coupling_start_type]]).
+      type(coupling_start_type), intent(inout), optional :: start
 
       if (set%n < 1) return
-      call consistent_lengths(set, e_star, error)
+      call consistent_lengths(set, e_star, error, start=start)
       if (allocated(error)) return
       call scale_patch(set, 1, patch)
    end subroutine couple_single
@@ -167,7 +191,7 @@ contains
    !> patch's own load may change. A single loaded patch is [[couple_strips]]; loaded patches
    !> beyond [[max_patches]] (the least loaded) are coupled alone, and so is every patch when
    !> `offset` is absent (patches not placed press no other).
-   pure subroutine couple_patches(patches, e_star, error, offset)
+   pure subroutine couple_patches(patches, e_star, error, offset, start)
       !> The strip tables of the wheel's patches (unloaded ones are skipped).
       type(normal_patch_type), intent(inout) :: patches(:)
       !> E* = G/(1 − ν) (MPa).
@@ -176,12 +200,16 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Position of each patch's reference point along the rail profile (mm).
       real(wp), intent(in), optional :: offset(:)
+      !> Starts of the length iterations from the last coupling of the same wheel
+      !> ([[coupling_start_type]]); updated with this one's.
+      type(coupling_start_type), intent(inout), optional :: start
       type(group_set_type) :: set, single
       real(wp) :: weight(max_patches, max_patches), place
       integer :: order(max_patches), component(max_patches), chosen(max_patches), n_joint, k, &
          i, j, c, old, members
 
       call set%reset()
+      if (present(start)) start%next = 0
       ! The most loaded patches, at most max_patches of them, in one problem.
       n_joint = 0
       do k = 1, size(patches)
@@ -239,7 +267,7 @@ contains
             i = findloc(component(1:n_joint), c, dim=1)
             call single%reset()
             call copy_patch_groups(single, set, i, 0.0_wp, 0.0_wp)
-            call couple_single(single, patches(order(i)), e_star, error)
+            call couple_single(single, patches(order(i)), e_star, error, start)
             if (allocated(error)) return
             cycle
          end if
@@ -249,7 +277,7 @@ contains
             members = members + 1
             chosen(members) = i
          end do
-         call couple_component(set, chosen(1:members), order, patches, e_star, error)
+         call couple_component(set, chosen(1:members), order, patches, e_star, error, start)
          if (allocated(error)) return
       end do
    end subroutine couple_patches
@@ -258,7 +286,7 @@ contains
    !> alone first, for the shift c_k = δ'_k − δ_k of its own coupled solution; the joint
    !> problem starts from those, so that the patches' own load–approach relations stay the
    !> strips'.
-   pure subroutine couple_component(all, members, order, patches, e_star, error)
+   pure subroutine couple_component(all, members, order, patches, e_star, error, start)
       !> The groups of every jointly coupled patch, placed along the profile.
       type(group_set_type), intent(in) :: all
       !> The patches of `all` coupled together (at most max_patches).
@@ -271,6 +299,8 @@ contains
       real(wp), intent(in) :: e_star
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the length iterations ([[coupling_start_type]]).
+      type(coupling_start_type), intent(inout), optional :: start
       type(group_set_type) :: set, single
       real(wp) :: shift(max_patches)
       integer :: i, p, g1
@@ -282,7 +312,7 @@ contains
          call copy_patch_groups(single, all, p, 0.0_wp, all%gamma(p))
          shift(i) = 0.0_wp
          if (single%n < 1) cycle
-         call consistent_lengths(single, e_star, error, shift(i))
+         call consistent_lengths(single, e_star, error, shift(i), start)
          if (allocated(error)) return
          shift(i) = shift(i)*single%cos_gamma(1)
       end do
@@ -293,7 +323,7 @@ contains
          set%gc(g1:set%n) = set%gc(g1:set%n) + shift(i)*set%wc(g1:set%n)
       end do
       if (set%n < 1) return
-      call consistent_lengths(set, e_star, error)
+      call consistent_lengths(set, e_star, error, start=start)
       if (allocated(error)) return
       do i = 1, size(members)
          call scale_patch(set, i, patches(order(members(i))))
@@ -318,12 +348,15 @@ contains
    !> removes them together (9.5 instead of 14.3 solves per coupling on the hunting trajectory,
    !> doc/performance.md "Speed-up 3"); the fixed point is the same. The strips' lengths follow
    !> their loads in [[scale_patch]].
-   pure subroutine consistent_lengths(set, e_star, error, shift)
+   pure subroutine consistent_lengths(set, e_star, error, shift, start)
       type(group_set_type), intent(inout) :: set
       real(wp), intent(in) :: e_star
       type(error_type), allocatable, intent(out) :: error
       !> The vertical shift Δ of the solution (mm).
       real(wp), intent(out), optional :: shift
+      !> Where this iteration ended the last time ([[coupling_start_type]]): its start when it
+      !> has the same groups, and updated with this one's fixed point.
+      type(coupling_start_type), intent(inout), optional :: start
       real(wp) :: kern(max_total, max_total), slope(max_total, max_total), &
          weight(max_patches, max_patches)
       real(wp), dimension(max_total) :: ac_fill, log_a_fill, stretch_log, step, last_x, last_f, &
@@ -331,7 +364,7 @@ contains
       real(wp) :: history_x(max_total, anderson_memory), history_f(max_total, anderson_memory)
       type(group_system_type) :: system
       real(wp) :: peak, log_a, log_peak, take, peak_ref, largest, last_largest
-      integer :: it, g, n, used
+      integer :: it, g, n, used, slot
 
       n = set%n
       call patch_weights(set, weight)
@@ -339,6 +372,22 @@ contains
       ac_fill(1:n) = set%ac(1:n)
       log_a_fill(1:n) = log(ac_fill(1:n))
       stretch_log(1:n) = 0.0_wp
+      slot = 0
+      if (present(start)) then
+         start%next = start%next + 1
+         slot = start%next
+         if (slot > max_start_slots) slot = 0
+      end if
+      if (slot > 0) then
+         if (slot <= start%n_slots .and. start%n(slot) == n .and. &
+             start%n_patches(slot) == set%n_patches) then
+            stretch_log(1:n) = start%stretch_log(1:n, slot)
+            set%in_contact(1:n) = start%in_contact(1:n, slot)
+            do g = 1, n
+               set%ac(g) = ac_fill(g)*exp(stretch_log(g))
+            end do
+         end if
+      end if
       call solve_groups(set, kern, slope, stretch_log, system, error)
       if (allocated(error)) return
       ! A group's step is weighted by min(1, peak/p_ref): the step in ln a grows like ln(peak)
@@ -380,7 +429,21 @@ contains
          if (allocated(error)) return
       end do
       if (present(shift)) shift = system%x(system%mg + 1)
+      if (slot > 0) then
+         start%n_slots = max(start%n_slots, slot)
+         start%n(slot) = n
+         start%n_patches(slot) = set%n_patches
+         start%stretch_log(1:n, slot) = stretch_log(1:n)
+         start%in_contact(1:n, slot) = set%in_contact(1:n)
+      end if
    end subroutine consistent_lengths
+
+   !> Forget the starts recorded in a [[coupling_start_type]].
+   pure subroutine reset_start(self)
+      class(coupling_start_type), intent(inout) :: self
+      self%n_slots = 0
+      self%next = 0
+   end subroutine reset_start
 
    !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in
    !> contact, Σ_J cos γ_J (π/2) P_J a_J w_J = Σ_k cos γ_k N_k, P ≥ 0 (an active set, started

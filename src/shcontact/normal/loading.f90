@@ -16,7 +16,7 @@ module shcontact_normal_loading
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, check_normal_options, method_hertz, &
       reduction_coupled
-   use shcontact_normal_coupling, only: couple_strips, couple_patches
+   use shcontact_normal_coupling, only: couple_strips, couple_patches, coupling_start_type
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape_fast, hertz_from_load, &
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
@@ -211,13 +211,15 @@ contains
    !> `reduction = 'coupled'` for the patches of one wheel: their strips in one half-space problem
    !> (shcontact_normal_coupling's couple_patches), placed along the rail profile by their
    !> reference points; Σ_k N_k cos γ_k, hence the vertical balance, is kept.
-   pure subroutine patches_coupled_if_asked(contacts, patches, error)
+   pure subroutine patches_coupled_if_asked(contacts, patches, error, start)
       !> The prepared patches of one wheel.
       type(normal_contact_type), intent(in) :: contacts(:)
       !> Their solutions (local-Hertz on entry).
       type(normal_patch_type), intent(inout) :: patches(:)
       !> Set when a dense solve fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the coupling's length iterations (shcontact_normal_coupling).
+      type(coupling_start_type), intent(inout), optional :: start
       !> More patches than this on one wheel are not placed along the profile (a fixed-size work
       !> array): each is coupled alone.
       integer, parameter :: most = 32
@@ -226,7 +228,7 @@ contains
 
       if (contacts(1)%options%reduction /= reduction_coupled) return
       if (size(contacts) > most) then
-         call couple_patches(patches, contacts(1)%e_star, error)
+         call couple_patches(patches, contacts(1)%e_star, error, start=start)
          return
       end if
       do k = 1, size(contacts)
@@ -234,7 +236,7 @@ contains
          dz = contacts(k)%z_track - contacts(1)%z_track
          offset(k) = sign(sqrt(dy*dy + dz*dz), dy)
       end do
-      call couple_patches(patches, contacts(1)%e_star, error, offset(1:size(contacts)))
+      call couple_patches(patches, contacts(1)%e_star, error, offset(1:size(contacts)), start)
    end subroutine patches_coupled_if_asked
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
@@ -242,7 +244,7 @@ contains
    !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
    !> stays inside its own basin ([[confine_to_basin]]): neighbours that meet under load split
    !> the merged region at the ridge between them, and no region is counted twice.
-   subroutine solve_vertical_load(contacts, f_z, patches, dz, error)
+   subroutine solve_vertical_load(contacts, f_z, patches, dz, error, lengths)
       !> The prepared patches.
       type(normal_contact_type), intent(in), target :: contacts(:)
       !> Vertical wheel load F_z (N), positive.
@@ -253,6 +255,9 @@ contains
       real(wp), intent(out) :: dz
       !> Set for bad input or a load the tables cannot carry.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the coupling's length iterations (shcontact_normal_coupling's
+      !> coupling_start_type): a solve that repeats one of the same wheel at a nearby load.
+      type(coupling_start_type), intent(inout), optional :: lengths
 
       type(vertical_residual) :: f
       type(hertz_type) :: guess
@@ -321,7 +326,7 @@ contains
             stat_numerical)
          return
       end if
-      call patches_coupled_if_asked(contacts, patches, error)
+      call patches_coupled_if_asked(contacts, patches, error, lengths)
       if (.not. allocated(error)) call refer_patches(contacts, patches)
    end subroutine solve_vertical_load
 
@@ -329,7 +334,7 @@ contains
    !> position, doc/theory.md §4.6): δ_k = Δz cos γ_k − g₀,k, Δz measured from the height where the
    !> smallest gap is zero (the `dz` of [[solve_vertical_load]]). Patches that do not touch come
    !> back cleared; `f_z` = Σ_k N_k cos γ_k is the vertical load the position implies.
-   subroutine solve_vertical_approach(contacts, dz, patches, f_z, error)
+   subroutine solve_vertical_approach(contacts, dz, patches, f_z, error, lengths)
       !> The prepared patches.
       type(normal_contact_type), intent(in), target :: contacts(:)
       !> Vertical approach Δz (mm, ≥ 0).
@@ -340,6 +345,8 @@ contains
       real(wp), intent(out) :: f_z
       !> Set for bad input or an approach the tables cannot carry.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the coupling's length iterations, as in [[solve_vertical_load]].
+      type(coupling_start_type), intent(inout), optional :: lengths
       type(vertical_residual) :: f
       real(wp) :: residual
       character(len=64) :: buf
@@ -365,7 +372,7 @@ contains
          return
       end if
       f_z = f%force
-      call patches_coupled_if_asked(contacts, patches, error)
+      call patches_coupled_if_asked(contacts, patches, error, lengths)
       if (.not. allocated(error)) call refer_patches(contacts, patches)
    end subroutine solve_vertical_approach
 

@@ -22,6 +22,9 @@ module shcontact_pipeline_balance
    !> (0.65 N of 64.7 kN), within at most max_vertical_iterations solutions.
    real(wp), parameter :: vertical_rtol = 1.0e-5_wp
    integer, parameter :: max_vertical_iterations = 30
+   !> Most solutions of the balance's load steps (step 2 of [[vertical_balance]]), the first
+   !> one included, before it brackets the approach.
+   integer, parameter :: max_load_steps = 5
 
 contains
 
@@ -43,7 +46,12 @@ contains
       call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
       if (allocated(error)) return
       if (load%mode == load_vertical_force) then
+         ! Each solve of the balance starts the coupling's length iterations from the last
+         ! one's; none from a solve before this call.
+         call self%coupling_start%reset()
+         self%warm_coupling = .true.
          call vertical_balance(self, local, load%value, options, climbs, error)
+         self%warm_coupling = .false.
          return
       end if
       call update_normal(self, load, error)
@@ -62,9 +70,13 @@ contains
    !> only N(cos γ − μ sin γ) vertically, which nearly vanishes, so the load is a steep function
    !> of C and a load iteration diverges; in Δz the function stays well behaved. The residual is
    !> r = s(C) − s(F_z), s(c) = sign(|c|^{2/3}, c), nearly linear in Δz for a Hertzian
-   !> contact; the root finder is the Illinois regula falsi on the bracket. The first two points
-   !> come from the geometry: the normal problem alone carrying F_z, then carrying F_z²/C (the
-   !> tangential share taken proportional to the load). No state of an earlier call is used.
+   !> contact; the root finder is the Illinois regula falsi on the bracket. The first points
+   !> come from load steps: the normal problem alone carrying F_z, then carrying F_z²/C (the
+   !> tangential share taken proportional to the load), then the loads of the secant of ln C in
+   !> ln q while each halves the miss (C/q varies slowly with q, also on the flange, where C(Δz)
+   !> is far from linear). Every point found joins the bracket. No state of an earlier call is
+   !> used (the coupled solves of one call start their length iterations from the last one's,
+   !> shcontact_normal_coupling's coupling_start_type, emptied at the start of the call).
    !>
    !> C(Δz) is continuous (the normal force of a contact is a continuous function of the
    !> approach, and so are the tangential forces at fixed creepages; doc/kinematics.md), so the
@@ -85,7 +97,7 @@ contains
       logical, intent(out) :: climbs
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: x_lo, r_lo, x_hi, r_hi, x, r, c, q, x_cap, x_best, c_best, step, tol, touch, &
-         c_at_lo, c_at_hi
+         c_at_lo, c_at_hi, q_last, c_last, slope
       integer :: it, side
       logical :: bracketed
 
@@ -109,23 +121,38 @@ contains
       if (allocated(error)) return
       if (abs(c - f_z) <= tol) return
       call keep(x, c, r)
-      ! 2. The normal problem alone carrying F_z²/C (tangential share proportional to the load).
-      if (c > 0.0_wp) then
-         q = f_z*(f_z/c)
+      ! 2. The normal problem alone carrying the load q at which C(q) = F_z by the secant of
+      !    ln C in ln q: C/q (the share the tangential forces and the strips' own contact
+      !    angles add) varies slowly with q, so ln C is nearly linear in ln q with slope 1. The
+      !    first step takes that slope (q = F_z²/C: the tangential share proportional to the
+      !    load); the next ones the secant of the last two points, while each step at least
+      !    halves the miss and its C̃ lies inside the bracket in Δz.
+      q_last = f_z
+      c_last = c
+      slope = 1.0_wp
+      do it = 2, max_load_steps
+         if (.not. (c_last > 0.0_wp)) exit
+         q = q_last*(f_z/c_last)**(1.0_wp/slope)
+         if (it == 2) q = f_z*(f_z/c_last)
          call update_normal(self, contact_load_type(load_vertical_force, q), error)
          if (allocated(error)) then
             if (error%stat /= stat_no_contact) return
             deallocate (error)
-         else
-            x = self%dz
-            if (x > x_lo .and. x < x_hi) then
-               call tangential_at(x, c, r, error)
-               if (allocated(error)) return
-               if (abs(c - f_z) <= tol) return
-               call keep(x, c, r)
-            end if
+            exit
          end if
-      end if
+         x = self%dz
+         if (.not. (x > x_lo .and. x < x_hi)) exit
+         call tangential_at(x, c, r, error)
+         if (allocated(error)) return
+         if (abs(c - f_z) <= tol) return
+         call keep(x, c, r)
+         if (.not. (c > 0.0_wp .and. abs(c - f_z) < 0.5_wp*abs(c_last - f_z) .and. &
+                    q /= q_last)) exit
+         slope = log(c/c_last)/log(q/q_last)
+         if (.not. (slope >= 0.25_wp .and. slope <= 4.0_wp)) exit
+         q_last = q
+         c_last = c
+      end do
       ! 3. Grow Δz monotonically until C exceeds F_z (or the tables end).
       step = max(0.25_wp*(x_lo - touch), 1.0e-3_wp)
       do it = 1, max_vertical_iterations

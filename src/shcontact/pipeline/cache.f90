@@ -19,6 +19,7 @@ module shcontact_pipeline_cache
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type
    use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_coupling, only: coupling_start_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
@@ -69,6 +70,11 @@ module shcontact_pipeline_cache
       integer :: n_loaded = 0
       real(wp) :: dz = 0.0_wp
       type(normal_patch_type) :: normal(max_patches)
+      !> While `warm_coupling` (the vertical balance of one kinematic call, which empties
+      !> `coupling_start` first), each coupled normal solve starts its length iterations where
+      !> the last one ended (shcontact_normal_coupling's coupling_start_type).
+      logical :: warm_coupling = .false.
+      type(coupling_start_type) :: coupling_start
       !> Tangential workspace and solutions.
       type(march_workspace_type) :: ws
       type(tangential_patch_type) :: tangential(max_patches)
@@ -199,7 +205,12 @@ contains
       call prepare_normal_stage(self%patches%patch, self%normal_options, self%material, &
          self%contacts, self%n_prepared, n, error, self%patches%points)
       if (allocated(error)) return
-      call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error)
+      if (self%warm_coupling) then
+         call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
+            self%coupling_start)
+      else
+         call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error)
+      end if
       if (allocated(error)) return
       self%load = load
       self%n_loaded = n

@@ -25,6 +25,7 @@ module shcontact_pipeline_stages
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
       solve_approach, solve_vertical_load, solve_vertical_approach
    use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_coupling, only: coupling_start_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
@@ -93,7 +94,7 @@ contains
 
    !> The normal solution for the load on the prepared patches (size loaded_count): a normal
    !> force or an approach on the first, a vertical load or position on all.
-   subroutine solve_normal_stage(contacts, load, normal, dz, error)
+   subroutine solve_normal_stage(contacts, load, normal, dz, error, start)
       !> The prepared normal problems of the loaded patches.
       type(normal_contact_type), intent(inout) :: contacts(:)
       !> The load.
@@ -104,6 +105,9 @@ contains
       real(wp), intent(out) :: dz
       !> Set when the load cannot be carried.
       type(error_type), allocatable, intent(out) :: error
+      !> Starts of the coupling's length iterations for a vertical load or position
+      !> (shcontact_normal_coupling's coupling_start_type).
+      type(coupling_start_type), intent(inout), optional :: start
       real(wp) :: vertical
 
       dz = 0.0_wp
@@ -113,10 +117,10 @@ contains
       case (load_approach)
          call solve_approach(contacts(1), load%value, normal(1), error)
       case (load_vertical_position)
-         call solve_vertical_approach(contacts, load%value, normal, vertical, error)
+         call solve_vertical_approach(contacts, load%value, normal, vertical, error, start)
          dz = load%value
       case default
-         call solve_vertical_load(contacts, load%value, normal, dz, error)
+         call solve_vertical_load(contacts, load%value, normal, dz, error, start)
       end select
    end subroutine solve_normal_stage
 
