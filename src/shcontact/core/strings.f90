@@ -5,7 +5,8 @@ module shcontact_core_strings
    implicit none
    private
 
-   public :: to_lower, str_int, str_real, visible, str_format, control_characters
+   public :: to_lower, str_int, str_real, visible, str_format, format_length, &
+      control_characters
 
    !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
    !> file's tabs and line ends are taken by the line reader first).
@@ -91,23 +92,42 @@ contains
       text = real_buffer(x)
    end function str_real
 
+   !> [[str_format]]'s text, left-aligned in a fixed buffer.
+   pure function format_buffer(x, form) result(buffer)
+      real(wp), intent(in) :: x
+      character(len=*), intent(in) :: form
+      character(len=40) :: buffer
+      integer :: n
+      write (buffer, form) x
+      buffer = adjustl(buffer)
+      n = len_trim(buffer)
+      if (n > 1 .and. buffer(n:n) == '.') buffer(n:n) = ' '
+      if (buffer(1:1) == '.') then
+         buffer = '0'//buffer
+      else if (buffer(1:2) == '-.') then
+         buffer = '-0'//buffer(2:)
+      end if
+   end function format_buffer
+
+   !> The length of [[str_format]]'s result.
+   pure integer function format_length(x, form)
+      !> The number.
+      real(wp), intent(in) :: x
+      !> The format, with parentheses.
+      character(len=*), intent(in) :: form
+      format_length = len_trim(format_buffer(x, form))
+   end function format_length
+
    !> A real written with an edit descriptor for tables and messages ('(f0.1)', '(es9.2)'),
    !> without blanks, with a leading 0 before a bare decimal point and no trailing one
-   !> (f0.0 of 48 gives 48).
+   !> (f0.0 of 48 gives 48). (No deferred-length result: see [[str_int_default]].)
    pure function str_format(x, form) result(text)
       !> The number.
       real(wp), intent(in) :: x
       !> The format, with parentheses.
       character(len=*), intent(in) :: form
-      character(len=:), allocatable :: text
-      character(len=40) :: buffer
-      write (buffer, form) x
-      text = trim(adjustl(buffer))
-      if (len(text) > 1 .and. text(len(text):len(text)) == '.') text = text(:len(text) - 1)
-      if (text(1:1) == '.') text = '0'//text
-      if (len(text) > 1) then
-         if (text(1:2) == '-.') text = '-0'//text(2:)
-      end if
+      character(len=format_length(x, form)) :: text
+      text = format_buffer(x, form)
    end function str_format
 
    !> Text with control characters (other than line feed and tab) shown as `<0xNN>`, so that

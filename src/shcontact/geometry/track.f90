@@ -23,6 +23,7 @@ module shcontact_geometry_track
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_ranges, only: check_range, variables
+   use shcontact_core_strings, only: str_format, format_length
    use shcontact_profile_spline, only: profile_spline_type
    use shcontact_geometry_rigid, only: rigid_map_type, rotation_about, translation
    implicit none
@@ -263,21 +264,13 @@ contains
       end do
    end subroutine gauge_point
 
-   !> [[real_text]]'s text, left-aligned in a fixed buffer.
-   pure function g_buffer(x) result(buf)
-      real(wp), intent(in) :: x
-      character(len=32) :: buf
-      write (buf, '(g0.6)') x
-      buf = adjustl(buf)
-   end function g_buffer
-
    !> A real value as short text for messages (six significant digits).
    !> (No deferred-length result: doc/performance.md, "Threads and strings".)
    pure function real_text(x) result(text)
       !> The value.
       real(wp), intent(in) :: x
-      character(len=len_trim(g_buffer(x))) :: text
-      text = g_buffer(x)
+      character(len=format_length(x, '(g0.6)')) :: text
+      text = str_format(x, '(g0.6)')
    end function real_text
 
 end module shcontact_geometry_track

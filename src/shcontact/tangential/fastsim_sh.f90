@@ -17,7 +17,7 @@
 module shcontact_tangential_fastsim_sh
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, str_format
    use shcontact_core_constants, only: pi, half_pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_core_material, only: material_type, check_material
@@ -214,18 +214,20 @@ contains
          return
       end if
       if (.not. positive(patch%dy)) then
-         call fatal_error(error, 'normal patch: strip width dy = '//rtoa(patch%dy)// &
-            ' mm, expected a positive width', stat_invalid_input)
+         call fatal_error(error, 'normal patch: strip width dy = '// &
+            str_format(patch%dy, '(es12.4)')//' mm, expected a positive width', stat_invalid_input)
          return
       end if
       if (.not. positive(patch%r0)) then
-         call fatal_error(error, 'normal patch: rolling radius r0 = '//rtoa(patch%r0)// &
-            ' mm, expected a positive radius', stat_invalid_input)
+         call fatal_error(error, 'normal patch: rolling radius r0 = '// &
+            str_format(patch%r0, '(es12.4)')//' mm, expected a positive radius', &
+            stat_invalid_input)
          return
       end if
       if (.not. below(abs(patch%gamma0), half_pi)) then
          call fatal_error(error, 'normal patch: contact angle gamma0 = '// &
-            rtoa(patch%gamma0)//' rad, expected |gamma0| < pi/2', stat_invalid_input)
+            str_format(patch%gamma0, '(es12.4)')//' rad, expected |gamma0| < pi/2', &
+            stat_invalid_input)
          return
       end if
       loaded = .false.
@@ -264,7 +266,7 @@ contains
          real(wp), intent(in) :: value
          type(error_type), allocatable, intent(out) :: error
          call fatal_error(error, 'normal patch, strip '//str_int(i)//': '//item//' = '// &
-            rtoa(value)//', expected '//expected, stat_invalid_input)
+            str_format(value, '(es12.4)')//', expected '//expected, stat_invalid_input)
       end subroutine strip_error
 
    end subroutine check_normal_patch
@@ -290,21 +292,5 @@ contains
       if (have) have = size(array) >= n
    end function have
 
-   !> [[rtoa]]'s text, left-aligned in a fixed buffer.
-   pure function es_buffer(x) result(buf)
-      real(wp), intent(in) :: x
-      character(len=24) :: buf
-      write (buf, '(es12.4)') x
-      buf = adjustl(buf)
-   end function es_buffer
-
-   !> A real for the input checks' messages (es12.4, no blanks). The length comes from a
-   !> specification function, not a deferred-length result: the checks run in the threads of a
-   !> sweep or of a vehicle code (doc/performance.md, "Threads and strings").
-   pure function rtoa(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=len_trim(es_buffer(x))) :: text
-      text = es_buffer(x)
-   end function rtoa
 
 end module shcontact_tangential_fastsim_sh
