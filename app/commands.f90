@@ -7,7 +7,7 @@ module shcontact_app_commands
    use shcontact_core_strings, only: str_int, visible
    use shcontact_core_text, only: string_type
    use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
-      report_header, report_line, report_case_text, report_units, iso_timestamp, &
+      report_header, report_lines, report_case_text, report_units, iso_timestamp, &
       run_setup_type, prepare_run, solve_geometry, sweep_options_type, sweep_outcome_type, &
       run_sweep, patch_geometry_type, write_geometry_table
    use shcontact_app_output_guard, only: check_output_file
@@ -204,8 +204,11 @@ contains
       logical, intent(in) :: csv_units
       type(case_config_type), intent(in) :: config
       type(sweep_outcome_type), intent(in) :: outcome
+      !> Cases formatted at a time.
+      integer, parameter :: chunk = 8192
       character(len=:), allocatable :: header
-      integer :: icase, k
+      type(string_type), allocatable :: lines(:)
+      integer :: first, last, k
       if (format == 'none') return
       if (format == 'text' .and. outcome%n_cases == 1) then
          if (outcome%summaries(1)%stat == 0) write (output_unit, '(a)') &
@@ -215,18 +218,15 @@ contains
       header = report_header(config, format)
       if (len(header) > 0) write (output_unit, '(a)') header
       if (csv_units) write (output_unit, '(a)') report_units(config)
-      k = 1
-      do icase = outcome%first, outcome%last
-         if (outcome%summaries(icase)%stat > 0) then
-            do k = 1, size(outcome%failures)
-               if (outcome%failures(k)%case == icase) exit
-            end do
-            write (output_unit, '(a)') report_line(config, icase, outcome%summaries(icase), &
-               format, outcome%failures(min(k, size(outcome%failures)))%message)
-         else
-            write (output_unit, '(a)') report_line(config, icase, outcome%summaries(icase), &
-               format)
-         end if
+      ! The lines of a chunk of cases are formatted by the run's threads, then written in order.
+      allocate (lines(min(chunk, outcome%last - outcome%first + 1)))
+      do first = outcome%first, outcome%last, chunk
+         last = min(first + chunk - 1, outcome%last)
+         call report_lines(config, first, outcome%summaries(first:last), outcome%failures, &
+            format, outcome%n_threads, lines)
+         do k = 1, last - first + 1
+            write (output_unit, '(a)') lines(k)%text
+         end do
       end do
    end subroutine print_summary
 

@@ -88,6 +88,7 @@ contains
          new_unittest('killed_and_resumed', test_resume), &
          new_unittest('some_cases_fail', test_partial_failure), &
          new_unittest('summary_blocks_not_read_back', test_summary_blocks), &
+         new_unittest('report_lines_threads', test_report_lines_threads), &
          new_unittest('bad_input', test_bad_input), &
          new_unittest('usage_errors', test_usage), &
          new_unittest('profiles_and_geometry_commands', test_other_commands), &
@@ -545,6 +546,39 @@ contains
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_summary_blocks
+
+   !> Issue 27: the report lines printed after a sweep are formatted by the run's threads
+   !> (`report_lines`); with 2 threads they are the same bytes as with 1, in every format, on
+   !> an approach sweep of 400 cases of which some fail (their messages in the lines).
+   subroutine test_report_lines_threads(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      character(len=*), parameter :: formats(3) = [character(len=4) :: 'text', 'csv', 'json']
+      character(len=*), parameter :: sweep = 'run --set load%mode=approach '// &
+         '--set sweep%approach=0.05,5 --set sweep%approach_points=400 --no-output --format '
+      integer :: stat, k, t
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('report_threads')
+      do k = 1, size(formats)
+         do t = 1, 2
+            stat = run_program(dir, sweep//trim(formats(k))//' --threads '//str_int(t))
+            call check(error, stat, 4, message=trim(formats(k))//', some cases failed: '// &
+               file_text(dir//'/err.txt'))
+            if (allocated(error)) return
+            call shell('mv '//dir//'/out.txt '//dir//'/'//trim(formats(k))//str_int(t)//'.txt', &
+               stat)
+         end do
+         call shell('cmp -s '//dir//'/'//trim(formats(k))//'1.txt '//dir//'/'// &
+            trim(formats(k))//'2.txt', stat)
+         call check(error, stat, 0, message=trim(formats(k))//': the report with 2 threads '// &
+            'differs from the one with 1')
+         if (allocated(error)) return
+      end do
+      call expect_in(error, file_text(dir//'/csv2.txt'), 'load too large', &
+         'a failed case''s message in the CSV report')
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_report_lines_threads
 
    !> Each kind of bad input: exit status, a message naming the problem, no output left.
    subroutine test_bad_input(error)

@@ -7,7 +7,7 @@ module shcontact_core_text
    implicit none
    private
 
-   public :: format_real, quote_string, json_string, strip_quotes
+   public :: format_real, format_real_buffer, quote_string, json_string, strip_quotes
    public :: string_type, string_list_type
 
    !> A text of any length (for lists of texts of different lengths).
@@ -45,12 +45,39 @@ contains
       self%items(self%n)%text = text
    end subroutine string_list_push
 
-   !> A short decimal text that reads back to exactly `x` (16 or 17 significant digits without
-   !> trailing zeros: 0.1, 2.0e-3 and 64700 come out as written), in plain notation for
-   !> 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise.
-   pure function format_real(x) result(text)
+   !> The length of [[plain]]'s text.
+   pure integer function plain_length(nd, expo)
+      integer, intent(in) :: nd, expo
+      if (expo < 0) then
+         plain_length = 2 + (-expo - 1) + nd
+      else if (expo + 1 >= nd) then
+         plain_length = expo + 1 + 2
+      else
+         plain_length = nd + 1
+      end if
+   end function plain_length
+
+   !> Digits d₁d₂… with the decimal point after the (expo+1)-th digit, zero-padded.
+   pure function plain(digits, expo) result(text)
+      character(len=*), intent(in) :: digits
+      integer, intent(in) :: expo
+      character(len=plain_length(len(digits), expo)) :: text
+      integer :: nd
+      nd = len(digits)
+      if (expo < 0) then
+         text = '0.'//repeat('0', -expo - 1)//digits
+      else if (expo + 1 >= nd) then
+         text = digits//repeat('0', expo + 1 - nd)//'.0'
+      else
+         text = digits(1:expo + 1)//'.'//digits(expo + 2:nd)
+      end if
+   end function plain
+
+   !> [[format_real]]'s text, left-aligned in a fixed buffer.
+   pure function format_real_buffer(x) result(buffer)
       !> The number.
       real(wp), intent(in) :: x
+      character(len=40) :: buffer
       character(len=:), allocatable :: text
       character(len=40) :: buf
       character(len=20) :: digits
@@ -58,13 +85,13 @@ contains
       integer :: d, epos, expo, nd, ios
 
       if (ieee_is_nan(x)) then
-         text = 'NaN'
+         buffer = 'NaN'
          return
       else if (.not. ieee_is_finite(x)) then
-         text = merge('-Infinity', '+Infinity', x < 0.0_wp)
+         buffer = merge('-Infinity', '+Infinity', x < 0.0_wp)
          return
       else if (x == 0.0_wp) then
-         text = '0.0'
+         buffer = '0.0'
          return
       end if
       ! 16 significant digits read back exactly for most doubles (17 always do); trailing
@@ -104,23 +131,21 @@ contains
          end if
          text = text//'e'//str_int(expo)
       end if
+      buffer = text
+   end function format_real_buffer
+
+   !> A short decimal text that reads back to exactly `x` (16 or 17 significant digits without
+   !> trailing zeros: 0.1, 2.0e-3 and 64700 come out as written), in plain notation for
+   !> 1e-4 ≤ |x| < 1e7 (always with a decimal point) and as `1.5e-8` otherwise. (No
+   !> deferred-length result: the report lines are formatted by threads; doc/performance.md,
+   !> "Threads and strings".)
+   pure function format_real(x) result(text)
+      !> The number.
+      real(wp), intent(in) :: x
+      character(len=len_trim(format_real_buffer(x))) :: text
+      text = format_real_buffer(x)
    end function format_real
 
-   !> Digits d₁d₂… with the decimal point after the (expo+1)-th digit, zero-padded.
-   pure function plain(digits, expo) result(text)
-      character(len=*), intent(in) :: digits
-      integer, intent(in) :: expo
-      character(len=:), allocatable :: text
-      integer :: nd
-      nd = len(digits)
-      if (expo < 0) then
-         text = '0.'//repeat('0', -expo - 1)//digits
-      else if (expo + 1 >= nd) then
-         text = digits//repeat('0', expo + 1 - nd)//'.0'
-      else
-         text = digits(1:expo + 1)//'.'//digits(expo + 2:nd)
-      end if
-   end function plain
 
    !> A Fortran string literal in apostrophes (embedded apostrophes doubled), for namelists.
    pure function quote_string(s) result(q)
@@ -159,33 +184,59 @@ contains
       end do
    end function strip_quotes
 
-   !> A JSON string literal: quotes, backslashes and control characters escaped.
+   !> The length of [[json_string]]'s text.
+   pure integer function json_length(s)
+      character(len=*), intent(in) :: s
+      integer :: i, c
+      json_length = 2
+      do i = 1, len_trim(s)
+         c = iachar(s(i:i))
+         select case (c)
+         case (34, 92, 10, 9)
+            json_length = json_length + 2
+         case (0:8, 11:31)
+            json_length = json_length + 6
+         case default
+            json_length = json_length + 1
+         end select
+      end do
+   end function json_length
+
+   !> A JSON string literal: quotes, backslashes and control characters escaped. (No
+   !> deferred-length result: doc/performance.md, "Threads and strings".)
    pure function json_string(s) result(q)
       !> The text (trailing blanks are removed).
       character(len=*), intent(in) :: s
-      character(len=:), allocatable :: q
+      character(len=json_length(s)) :: q
       character(len=6) :: hex
-      integer :: i, c
-      q = '"'
+      integer :: i, c, at
+      q(1:1) = '"'
+      at = 1
       do i = 1, len_trim(s)
          c = iachar(s(i:i))
          select case (c)
          case (34)
-            q = q//'\"'
+            q(at + 1:at + 2) = '\"'
+            at = at + 2
          case (92)
-            q = q//'\\'
+            q(at + 1:at + 2) = '\\'
+            at = at + 2
          case (10)
-            q = q//'\n'
+            q(at + 1:at + 2) = '\n'
+            at = at + 2
          case (9)
-            q = q//'\t'
+            q(at + 1:at + 2) = '\t'
+            at = at + 2
          case (0:8, 11:31)
             write (hex, '(a,z4.4)') '\u', c
-            q = q//hex
+            q(at + 1:at + 6) = hex
+            at = at + 6
          case default
-            q = q//s(i:i)
+            q(at + 1:at + 1) = s(i:i)
+            at = at + 1
          end select
       end do
-      q = q//'"'
+      q(at + 1:at + 1) = '"'
    end function json_string
 
 end module shcontact_core_text

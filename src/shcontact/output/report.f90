@@ -13,13 +13,14 @@ module shcontact_output_report
    use shcontact_input_config, only: case_config_type, case_point_type, n_sweep_axes, &
       sweep_axis_names, case_point_value, case_point_label, is_kinematic_input, &
       load_mode_force, load_mode_approach, load_mode_vertical
-   use shcontact_core_text, only: format_real, json_string
+   use shcontact_core_text, only: format_real, format_real_buffer, json_string, string_type
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
-      summary_value, summary_column_used
+      summary_value, summary_column_used, failure_type
    implicit none
    private
 
-   public :: report_formats, report_header, report_line, report_case_text, report_units
+   public :: report_formats, report_header, report_line, report_lines, report_case_text, &
+      report_units
    public :: reports_case_input
 
    !> Accepted values of the format.
@@ -140,7 +141,27 @@ contains
       character(len=*), intent(in) :: format
       !> Why it failed (failed cases).
       character(len=*), intent(in), optional :: message
-      character(len=:), allocatable :: line, value
+      character(len=:), allocatable :: line
+      call report_line_into(config, icase, summary, format, line, message)
+   end function report_line
+
+   !> [[report_line]] as a subroutine: what [[report_lines]]' threads call (a function with a
+   !> deferred-length result may not be called by threads; doc/performance.md, "Threads and
+   !> strings"); nothing it calls returns one.
+   subroutine report_line_into(config, icase, summary, format, line, message)
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> Case number.
+      integer, intent(in) :: icase
+      !> Its summary.
+      type(case_summary_type), intent(in) :: summary
+      !> 'text', 'csv' or 'json'.
+      character(len=*), intent(in) :: format
+      !> The line.
+      character(len=:), allocatable, intent(out) :: line
+      !> Why it failed (failed cases).
+      character(len=*), intent(in), optional :: message
+      character(len=:), allocatable :: value
       type(case_point_type) :: p
       integer :: ia, k
       logical :: ok
@@ -152,12 +173,13 @@ contains
          line = str_int(icase)//','//str_int(summary%stat)//','// &
             str_int(summary%n_patches)//','//str_int(summary%n_loaded)
          do ia = 1, n_sweep_axes
-            if (reports_case_input(config, ia)) line = line//','//input_text(p, ia, .false.)
+            if (reports_case_input(config, ia)) line = line//','// &
+               trim(input_buffer(p, ia, .false., .false.))
          end do
          do k = 1, n_summary_columns
             if (.not. summary_column_used(k, config%is_kinematic())) cycle
             value = ''
-            if (ok) value = format_real(summary_value(summary, k))
+            if (ok) value = trim(format_real_buffer(summary_value(summary, k)))
             line = line//','//value
          end do
          line = line//','
@@ -168,13 +190,13 @@ contains
             str_int(summary%n_loaded)
          do ia = 1, n_sweep_axes
             if (reports_case_input(config, ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
-               '":'//input_text(p, ia, .true.)
+               '":'//trim(input_buffer(p, ia, .true., .false.))
          end do
          if (ok) then
             do k = 1, n_summary_columns
                if (.not. summary_column_used(k, config%is_kinematic())) cycle
                line = line//',"'//trim(summary_columns(1, k))//'":'// &
-                  json_number(summary_value(summary, k))
+                  trim(json_number_buffer(summary_value(summary, k)))
             end do
          end if
          if (present(message)) line = line//',"message":'//json_string(message)
@@ -182,26 +204,65 @@ contains
       case default
          line = pad(str_int(icase), 8)//pad(str_int(summary%stat), 7)
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//pad(input_text(p, ia, .false., &
-               short=.true.), 14)
+            if (config%sweep%axes(ia)%active) line = line// &
+               pad(trim(input_buffer(p, ia, .false., .true.)), 14)
          end do
          if (ok .and. config%is_kinematic()) then
             line = line//pad(str_int(summary%n_patches), 14)//pad(str_int(summary%n_loaded), 14)
             do k = 3, size(kinematic_text_columns)
-               line = line//pad(short_real(summary_value(summary, &
-                  column_index(kinematic_text_columns(k)))), 14)
+               line = line//pad(trim(short_buffer(summary_value(summary, &
+                  column_index(kinematic_text_columns(k))))), 14)
             end do
          else if (ok) then
             do k = 1, size(text_columns)
-               line = line//pad(short_real(summary_value(summary, column_index(text_columns(k)))), &
-                  14)
+               line = line//pad(trim(short_buffer(summary_value(summary, &
+                  column_index(text_columns(k))))), 14)
             end do
          else if (present(message)) then
             line = line//message
          end if
          line = trim(line)
       end select
-   end function report_line
+   end subroutine report_line_into
+
+   !> The report lines ([[report_line]]) of consecutive cases `first`, `first + 1`, ..., built
+   !> by `threads` threads (issue 27): formatting a case's line costs about 20 µs, most of
+   !> what solving a DOE case costs, so one thread made it a serial tail of a parallel run.
+   !> The same lines as [[report_line]]'s, case by case (test `app/report_lines_threads`).
+   subroutine report_lines(config, first, summaries, failures, format, threads, lines)
+      !> The configuration.
+      type(case_config_type), intent(in) :: config
+      !> Case number of the first summary.
+      integer, intent(in) :: first
+      !> Summaries of the cases `first`, `first + 1`, ...
+      type(case_summary_type), intent(in) :: summaries(:)
+      !> The failed cases of the run and their messages (any order; others are ignored).
+      type(failure_type), intent(in) :: failures(:)
+      !> 'text', 'csv' or 'json'.
+      character(len=*), intent(in) :: format
+      !> OpenMP threads to use.
+      integer, intent(in) :: threads
+      !> One line per summary (at least size(summaries) elements).
+      type(string_type), intent(inout) :: lines(:)
+      integer, allocatable :: failure_of(:)
+      integer :: i, k
+      allocate (failure_of(size(summaries)), source=0)
+      do k = 1, size(failures)
+         i = failures(k)%case - first + 1
+         if (i >= 1 .and. i <= size(summaries)) failure_of(i) = k
+      end do
+      !$omp parallel do default(none) schedule(dynamic, 64) num_threads(threads) &
+      !$omp shared(config, first, summaries, failures, format, lines, failure_of) private(i)
+      do i = 1, size(summaries)
+         if (summaries(i)%stat > 0 .and. failure_of(i) > 0) then
+            call report_line_into(config, first + i - 1, summaries(i), format, lines(i)%text, &
+               failures(failure_of(i))%message)
+         else
+            call report_line_into(config, first + i - 1, summaries(i), format, lines(i)%text)
+         end if
+      end do
+      !$omp end parallel do
+   end subroutine report_lines
 
    !> A readable block for a single case (text format).
    function report_case_text(config, summary) result(text)
@@ -266,41 +327,59 @@ contains
       if (p%yaw_rate /= 0.0_wp) text = text//', yaw rate = '//short_real(p%yaw_rate)//' rad/s'
    end function velocity_text
 
-   !> A swept input of a case as text (quoted for JSON when it is a choice).
-   function input_text(p, ia, json, short) result(text)
+   !> [[input_text]]'s text, left-aligned in a fixed buffer.
+   pure function input_buffer(p, ia, json, short) result(buffer)
       type(case_point_type), intent(in) :: p
       integer, intent(in) :: ia
-      logical, intent(in) :: json
-      !> Five significant digits instead of the exact value.
-      logical, intent(in), optional :: short
-      character(len=:), allocatable :: text
+      logical, intent(in) :: json, short
+      character(len=64) :: buffer
       real(wp) :: x
       select case (trim(sweep_axis_names(ia)))
       case ('bound', 'spin_model')
-         text = case_point_label(p, ia)
-         if (json) text = json_string(text)
+         if (json) then
+            buffer = json_string(case_point_label(p, ia))
+         else
+            buffer = case_point_label(p, ia)
+         end if
          return
       case default
          x = case_point_value(p, ia)
       end select
-      if (present(short)) then
-         if (short) then
-            text = short_real(x)
-            return
-         end if
+      if (short) then
+         buffer = short_buffer(x)
+      else
+         buffer = format_real_buffer(x)
       end if
-      text = format_real(x)
+   end function input_buffer
+
+   !> A swept input of a case as text (quoted for JSON when it is a choice); `short`: five
+   !> significant digits instead of the exact value. (No deferred-length results in what the
+   !> report lines call: they are formatted by threads; doc/performance.md, "Threads and
+   !> strings".)
+   pure function input_text(p, ia, json, short) result(text)
+      type(case_point_type), intent(in) :: p
+      integer, intent(in) :: ia
+      logical, intent(in) :: json, short
+      character(len=len_trim(input_buffer(p, ia, json, short))) :: text
+      text = input_buffer(p, ia, json, short)
    end function input_text
+
+   !> [[json_number]]'s text, left-aligned in a fixed buffer.
+   pure function json_number_buffer(x) result(buffer)
+      real(wp), intent(in) :: x
+      character(len=40) :: buffer
+      if (ieee_is_finite(x)) then
+         buffer = format_real_buffer(x)
+      else
+         buffer = 'null'
+      end if
+   end function json_number_buffer
 
    !> A number as JSON: `null` for NaN or an infinity (JSON has no such numbers).
    pure function json_number(x) result(text)
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      if (ieee_is_finite(x)) then
-         text = format_real(x)
-      else
-         text = 'null'
-      end if
+      character(len=len_trim(json_number_buffer(x))) :: text
+      text = json_number_buffer(x)
    end function json_number
 
    pure integer function column_index(name)
@@ -312,21 +391,26 @@ contains
       end do
    end function column_index
 
-   !> Five significant digits, for reading (one formatted write: tables of sweeps are long).
-   pure function short_real(x) result(text)
+   !> [[short_real]]'s text, left-aligned in a fixed buffer.
+   pure function short_buffer(x) result(buf)
       real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
       character(len=24) :: buf
       integer :: n
       if (x == 0.0_wp) then
-         text = '0'
+         buf = '0'
          return
       end if
       write (buf, '(1p,g14.5e2)') x
       buf = adjustl(buf)
       n = len_trim(buf)
-      if (buf(n:n) == '.') n = n - 1
-      text = buf(1:n)
+      if (buf(n:n) == '.') buf(n:n) = ' '
+   end function short_buffer
+
+   !> Five significant digits, for reading (one formatted write: tables of sweeps are long).
+   pure function short_real(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=len_trim(short_buffer(x))) :: text
+      text = short_buffer(x)
    end function short_real
 
    pure function pad(text, width) result(padded)
@@ -336,17 +420,32 @@ contains
       padded = text
    end function pad
 
+   !> Double quotes in the text (before its trailing blanks).
+   pure integer function quote_count(text)
+      character(len=*), intent(in) :: text
+      integer :: i
+      quote_count = 0
+      do i = 1, len_trim(text)
+         if (text(i:i) == '"') quote_count = quote_count + 1
+      end do
+   end function quote_count
+
    !> A CSV field in double quotes (embedded quotes doubled).
    pure function csv_quoted(text) result(q)
       character(len=*), intent(in) :: text
-      character(len=:), allocatable :: q
-      integer :: i
-      q = '"'
+      character(len=2 + len_trim(text) + quote_count(text)) :: q
+      integer :: i, at
+      q(1:1) = '"'
+      at = 1
       do i = 1, len_trim(text)
-         if (text(i:i) == '"') q = q//'"'
-         q = q//text(i:i)
+         if (text(i:i) == '"') then
+            q(at + 1:at + 1) = '"'
+            at = at + 1
+         end if
+         q(at + 1:at + 1) = text(i:i)
+         at = at + 1
       end do
-      q = q//'"'
+      q(at + 1:at + 1) = '"'
    end function csv_quoted
 
 end module shcontact_output_report

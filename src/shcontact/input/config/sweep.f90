@@ -2,7 +2,7 @@
 !> they span, either every combination ('grid') or the i-th value of every list ('list').
 module shcontact_input_config_sweep
    use shcontact_core_kinds, only: wp
-   use shcontact_core_choices, only: choice_name
+   use shcontact_core_choices, only: choice_name, choice_name_length
    use shcontact_input_config_limits, only: name_len
    use shcontact_input_config_choices, only: sweep_grid, sweep_list
    use shcontact_tangential_option_registry, only: bound_choices, spin_model_choices
@@ -264,6 +264,18 @@ contains
       end select
    end function case_point_value
 
+   !> The length of [[case_point_label]]'s text (no deferred-length result: the report lines
+   !> are formatted by threads; doc/performance.md, "Threads and strings").
+   pure integer function label_length(p, ia)
+      type(case_point_type), intent(in) :: p
+      integer, intent(in) :: ia
+      select case (ia)
+      case (ax_bound); label_length = choice_name_length(bound_choices, p%bound)
+      case (ax_spin_model); label_length = choice_name_length(spin_model_choices, p%spin_model)
+      case default; label_length = 0
+      end select
+   end function label_length
+
    !> The value of choice axis `ia` (bound or spin_model) of a case as its name; '' for the
    !> real axes.
    pure function case_point_label(p, ia) result(label)
@@ -271,7 +283,7 @@ contains
       type(case_point_type), intent(in) :: p
       !> Axis index.
       integer, intent(in) :: ia
-      character(len=:), allocatable :: label
+      character(len=label_length(p, ia)) :: label
       select case (ia)
       case (ax_bound); label = choice_name(bound_choices, p%bound)
       case (ax_spin_model); label = choice_name(spin_model_choices, p%spin_model)
