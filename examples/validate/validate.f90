@@ -24,6 +24,7 @@ program validate
    use validate_kinematic, only: run_kinematic
    use validate_patches, only: run_patches
    use validate_sets, only: write_sets
+   use validate_kinematic_sets, only: run_kinematic_sets
    implicit none
 
    character(len=:), allocatable :: ref_root, profiles_dir, out_dir, ref_dir
@@ -33,9 +34,13 @@ program validate
    type(recommended_type) :: rec
    type(error_type), allocatable :: error
    real(wp) :: y_geo
-   logical :: there, kinematic_only, patches_only
+   logical :: there, kinematic_only, patches_only, sets_only
 
-   call arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only)
+   call arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only, sets_only)
+   if (sets_only) then
+      call kinematic_sets(out_dir)
+      stop
+   end if
    if (kinematic_only) then
       call kinematic_sample(ref_root, profiles_dir, out_dir)
       stop
@@ -90,6 +95,7 @@ program validate
    end if
    write (output_unit, '(a)') 'shcontact-validate: tables written to '//out_dir
    call kinematic_sample(ref_root//'kinematic_sample/', profiles_dir, out_dir)
+   call kinematic_sets(out_dir)
    ! The summary of every exact-theory set (doc/validation.md §6.6), from the runs above.
    call write_sets(out_dir, error)
    if (allocated(error)) then
@@ -103,9 +109,9 @@ contains
 
    !> Optional arguments: --help; --kinematic or --patches; then REFERENCE PROFILES OUTPUT
    !> (directories; with --kinematic the first is the kinematic sample's directory).
-   subroutine arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only)
+   subroutine arguments(ref_root, profiles_dir, out_dir, kinematic_only, patches_only, sets_only)
       character(len=:), allocatable, intent(out) :: ref_root, profiles_dir, out_dir
-      logical, intent(out) :: kinematic_only, patches_only
+      logical, intent(out) :: kinematic_only, patches_only, sets_only
       character(len=64) :: first
       integer :: shift
 
@@ -116,12 +122,15 @@ contains
             'usage: shcontact-validate [REFERENCE [PROFILES [OUTPUT]]]', &
             '       shcontact-validate --kinematic [DIR [PROFILES [OUTPUT]]]', &
             '       shcontact-validate --patches [REFERENCE [PROFILES [OUTPUT]]]', &
+            '       shcontact-validate --kinematic-sets [OUTPUT]', &
             '', &
             'Compares shcontact with the exact theory (CONTACT) and writes the tables of', &
             'doc/validation.md. Without an option: every comparison, the kinematic sample', &
             'last. --kinematic: only solve_kinematic against the kinematic sample', &
             '(kinematic_cases.csv, kinematic_summary.csv, kinematic.md). --patches: only', &
             'the DOE on every shared patch (patches_doe.csv, .md, patches_strips_*.csv).', &
+            '--kinematic-sets: only the project''s kinematic sets of data/exact/kinematic_*/', &
+            '(kinematic_sets.csv, .md; no external data needed; run from the repository root).', &
             'Defaults: REFERENCE DATA/reference/, PROFILES DATA/profiles/, OUTPUT', &
             'doc/validation/, DIR DATA/reference/kinematic_sample/, where DATA is', &
             '$SHCONTACT_EXTERNAL_DATA (../shared when it is not set).'
@@ -129,6 +138,13 @@ contains
       end if
       kinematic_only = first == '--kinematic'
       patches_only = first == '--patches'
+      sets_only = first == '--kinematic-sets'
+      if (sets_only) then
+         ref_root = ''
+         profiles_dir = ''
+         out_dir = directory_argument(2, 'doc/validation/')
+         return
+      end if
       if (first(1:1) == '-' .and. .not. (kinematic_only .or. patches_only)) then
          write (error_unit, '(a)') 'shcontact-validate: unknown option "'//trim(first)// &
             '" (see --help)'
@@ -190,6 +206,19 @@ contains
       end if
       write (output_unit, '(a)') 'shcontact-validate: kinematic tables written to '//out_dir
    end subroutine kinematic_sample
+
+   !> The project's kinematic sets (data/exact/kinematic_*/), which need no external data.
+   subroutine kinematic_sets(out_dir)
+      character(len=*), intent(in) :: out_dir
+      type(error_type), allocatable :: error
+      call run_kinematic_sets(out_dir, error)
+      if (allocated(error)) then
+         write (error_unit, '(a)') 'shcontact-validate: '//error%message
+         error stop 1
+      end if
+      write (output_unit, '(a)') 'shcontact-validate: the kinematic sets written to '// &
+         out_dir//'kinematic_sets.csv, kinematic_sets.md'
+   end subroutine kinematic_sets
 
    !> CONTACT's y of the geometric contact point in its local coordinates (summary.csv y_geo).
    subroutine reference_y_geo(ref_dir, y_geo, error)
