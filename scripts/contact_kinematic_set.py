@@ -145,14 +145,14 @@ def main():
                 inp, log = (os.path.join(work, name + e) for e in ('.inp', '.log'))
                 if (a.reuse and os.path.exists(inp) and open(inp).read() == text
                         and os.path.exists(log) and 'ended succesfully' in open(log).read()):
-                    ok, wall = True, float('nan')
+                    ok, wall = True, None
                 else:
                     with open(inp, 'w') as f:
                         f.write(text)
                     ok, _, wall, _ = cr.run_contact(work, name)
                 base = dict(case=name, y_ws_mm=y, yaw_rad=yaw, vs_mm_s=cr.VS, vy_mm_s=vy,
                             vyaw_rad_s=vyaw, vpitch_rad_s=vpitch, xi_k=xi, eta_k=eta,
-                            omega_k=omega, wall_s='%.2f' % wall, status='failed', npatch=0,
+                            omega_k=omega, wall_s='' if wall is None else '%.2f' % wall, status='failed', npatch=0,
                             patch=0)
                 out = os.path.join(work, name + '.out')
                 got = patch_rows(out, base) if ok and os.path.exists(out) else []

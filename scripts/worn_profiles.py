@@ -12,7 +12,9 @@ along a running band):
   rail   crown          0.4 mm at 6 mm on the gauge side of the top, half-width 12 mm;
          gauge corner   1.0 mm where the head is inclined 45 deg, half-width 4 mm.
 
-(half-width = the Gaussian's standard deviation). The worn surfaces become more conformal (a
+(half-width = the Gaussian's standard deviation). The worn wheel is shifted so that its tape
+circle (y = 0) stays at z = 0 and the worn rail so that its highest point stays at z = 0, the
+origins of the new profiles. The worn surfaces become more conformal (a
 hollow tread on a flattened crown; a thinned flange face on a worn gauge corner), which is what
 the pair is for: exact-theory data on wide, non-elliptic patches on profiles nobody tuned on.
 The depths are typical of wheels and rails between reprofilings; they are not a wear
@@ -116,6 +118,12 @@ def main():
     _, rail = read_profile(os.path.join(new, 'UIC60-canted.txt'))
     w, dw = worn(wheel, WHEEL_WEAR)
     r, dr = worn(rail, RAIL_WEAR)
+    # The origins stay where the new profiles have them: the wheel's on its tape circle (z = 0
+    # at y = 0, so that the nominal radius is the worn wheel's radius there, for shcontact, which
+    # takes it at the tape circle, and for CONTACT, which takes it at the profile's z = 0), the
+    # rail's at its highest point.
+    w[:, 1] -= np.interp(0.0, w[::-1, 0], w[::-1, 1])
+    r[:, 1] -= r[:, 1].min()
     write(os.path.join(a.outdir, 'S1002-worn.txt'), 'builtin:S1002', 'wheel',
           'from the field side to the flange back', w, WHEEL_WEAR)
     write(os.path.join(a.outdir, 'UIC60-canted-worn.txt'), 'builtin:UIC60-canted', 'rail',

@@ -1,0 +1,198 @@
+!> The project's own kinematic exact-theory sets (data/exact/kinematic_flange/,
+!> data/exact/kinematic_worn/; doc/validation.md §6.7, doc/validation/kinematic_sets.md): every
+!> case solved with `solve_kinematic` (defaults, F_z = 64.7 kN vertical), every CONTACT patch
+!> compared with our loaded patches nearest to it in track y, joined (ΣF/(μΣF_n)). The pooled max
+!> and P80 of |Δf_x|, |Δf_y| and |ΔF_n|/F_n are held to the document's numbers within ±0.002, no
+!> CONTACT patch may be left without a patch of ours, and |f| ≤ 1 + 1e-12 on every patch of ours
+!> (the Coulomb bound, issue 28). Needs nothing outside the repository: the built-in profiles and
+!> the worn pair of data/profiles/worn/.
+module test_validation_kinematic_sets
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_real, str_int
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_core_material, only: material_type
+   use shcontact_geometry_track, only: track_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
+      contact_result_type, load_vertical_force
+   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use test_validation, only: percentile, read_columns
+   implicit none
+   private
+   public :: collect_validation_kinematic_sets
+
+   !> One set and its row of doc/validation/kinematic_sets.md ("all"): max and P80 of |Δf_x|,
+   !> |Δf_y|, |ΔF_n|/F_n.
+   type :: expected_type
+      character(len=64) :: file = '', wheel = '', rail = ''
+      real(wp) :: fx(2) = 0.0_wp, fy(2) = 0.0_wp, fn(2) = 0.0_wp
+   end type expected_type
+
+   type(expected_type), parameter :: flange_planar = expected_type( &
+      'data/exact/kinematic_flange/kinematic_planar.csv', 'builtin:S1002', &
+      'builtin:UIC60-canted', [0.013_wp, 0.009_wp], [0.023_wp, 0.014_wp], [0.092_wp, 0.036_wp])
+   type(expected_type), parameter :: flange_conformal = expected_type( &
+      'data/exact/kinematic_flange/kinematic_conformal.csv', 'builtin:S1002', &
+      'builtin:UIC60-canted', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp])
+   type(expected_type), parameter :: worn_planar = expected_type( &
+      'data/exact/kinematic_worn/kinematic_planar.csv', 'data/profiles/worn/S1002-worn.txt', &
+      'data/profiles/worn/UIC60-canted-worn.txt', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+      [0.0_wp, 0.0_wp])
+   type(expected_type), parameter :: worn_conformal = expected_type( &
+      'data/exact/kinematic_worn/kinematic_conformal.csv', 'data/profiles/worn/S1002-worn.txt', &
+      'data/profiles/worn/UIC60-canted-worn.txt', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
+      [0.0_wp, 0.0_wp])
+
+   !> The sets' vertical load (N), friction coefficient; tolerance on the table's numbers.
+   real(wp), parameter :: vertical_load = 64700.0_wp, mu = 0.3_wp, tolerance = 0.002_wp
+
+contains
+
+   !> The suite.
+   subroutine collect_validation_kinematic_sets(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [ &
+         new_unittest('flange_planar', test_flange_planar), &
+         new_unittest('flange_conformal', test_flange_conformal), &
+         new_unittest('worn_planar', test_worn_planar), &
+         new_unittest('worn_conformal', test_worn_conformal)]
+   end subroutine collect_validation_kinematic_sets
+
+   subroutine test_flange_planar(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_set(flange_planar, error)
+   end subroutine test_flange_planar
+
+   subroutine test_flange_conformal(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_set(flange_conformal, error)
+   end subroutine test_flange_conformal
+
+   subroutine test_worn_planar(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_set(worn_planar, error)
+   end subroutine test_worn_planar
+
+   subroutine test_worn_conformal(error)
+      type(error_type), allocatable, intent(out) :: error
+      call check_set(worn_conformal, error)
+   end subroutine test_worn_conformal
+
+   !> Solve a set, compare, check the table's numbers, the matching and the Coulomb bound.
+   subroutine check_set(set, error)
+      type(expected_type), intent(in) :: set
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: names(12) = [character(len=13) :: 'y_ws_mm', 'yaw_rad', &
+         'vs_mm_s', 'vy_mm_s', 'vyaw_rad_s', 'vpitch_rad_s', 'xi_k', 'eta_k', 'omega_k', &
+         'ycp_tr_mm', 'fx_norm', 'fs_norm']
+      real(wp), allocatable :: v(:, :), fn_ref(:, :), dfx(:), dfy(:), dfn(:)
+      type(contact_solver_type) :: solver
+      type(track_type) :: track
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: lib
+      integer :: first, last, n, missed
+      real(wp) :: f_max
+
+      call read_columns(trim(set%file), names, v, error, row_tag='ok')
+      if (allocated(error)) return
+      call read_columns(trim(set%file), ['fn_N'], fn_ref, error, row_tag='ok')
+      if (allocated(error)) return
+      track%rail_canted = .true.
+      call solver%init(trim(set%wheel), trim(set%rail), lib, track=track, &
+         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu))
+      if (allocated(lib)) then
+         call test_failed(error, lib%message)
+         return
+      end if
+      allocate (dfx(size(v, 1)), dfy(size(v, 1)), dfn(size(v, 1)))
+      n = 0
+      missed = 0
+      f_max = 0.0_wp
+      first = 1
+      do while (first <= size(v, 1))
+         ! The rows of one case: the same inputs.
+         last = first
+         do while (last < size(v, 1))
+            if (any(v(last + 1, 1:9) /= v(first, 1:9))) exit
+            last = last + 1
+         end do
+         call solver%solve_kinematic(wheelset_state_type(y_ws=v(first, 1), yaw=v(first, 2), &
+            v_forward=v(first, 3), v_lateral=v(first, 4), yaw_rate=v(first, 5), &
+            pitch_rate=v(first, 6)), contact_load_type(load_vertical_force, vertical_load), &
+            result, lib)
+         if (allocated(lib)) then
+            call test_failed(error, trim(set%file)//', Y_WS '//str_real(v(first, 1))//': '// &
+               lib%message)
+            return
+         end if
+         call compare(result, v(first:last, 10:12), fn_ref(first:last, 1), &
+            dfx(n + 1:n + 1 + last - first), dfy(n + 1:n + 1 + last - first), &
+            dfn(n + 1:n + 1 + last - first), missed, f_max)
+         n = n + last - first + 1
+         first = last + 1
+      end do
+      call check(error, missed == 0, message=trim(set%file)//': '//str_int(missed)// &
+         ' CONTACT patch(es) without a patch of ours')
+      if (allocated(error)) return
+      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, message=trim(set%file)// &
+         ': |f| of a patch past Coulomb: '//str_real(f_max))
+      if (allocated(error)) return
+      call check_pair(set%file, 'f_x', dfx(1:n), set%fx, error)
+      if (allocated(error)) return
+      call check_pair(set%file, 'f_y', dfy(1:n), set%fy, error)
+      if (allocated(error)) return
+      call check_pair(set%file, 'F_n', dfn(1:n), set%fn, error)
+   end subroutine check_set
+
+   !> Join our loaded patches at the CONTACT patch nearest each (ref: track y, f_x, f_y of its
+   !> rows) and give the differences, CONTACT's signs (forces on the rail); as
+   !> examples/validate/validate_kinematic_sets.f90 does.
+   pure subroutine compare(result, ref, fn_ref, dfx, dfy, dfn, missed, f_max)
+      type(contact_result_type), intent(in) :: result
+      real(wp), intent(in) :: ref(:, :), fn_ref(:)
+      real(wp), intent(out) :: dfx(:), dfy(:), dfn(:)
+      integer, intent(inout) :: missed
+      real(wp), intent(inout) :: f_max
+      real(wp) :: fx(size(ref, 1)), fy(size(ref, 1)), fn(size(ref, 1))
+      integer :: k, near
+
+      fx = 0.0_wp; fy = 0.0_wp; fn = 0.0_wp
+      do k = 1, result%n_loaded
+         associate (p => result%patch(k))
+            if (.not. (p%fn > 0.0_wp)) cycle
+            f_max = max(f_max, hypot(p%fx_norm, p%fy_norm))
+            near = minloc(abs(ref(:, 1) - p%y_track), 1)
+            ! A patch of ours farther than CONTACT's separation distance (8 mm) from every
+            ! CONTACT patch and carrying more than 1 % of the load has no counterpart.
+            if (abs(ref(near, 1) - p%y_track) > 8.0_wp .and. p%fn > 0.01_wp*result%track%fn) &
+               cycle
+            fx(near) = fx(near) - p%fx
+            fy(near) = fy(near) - p%fy
+            fn(near) = fn(near) + p%fn
+         end associate
+      end do
+      missed = missed + count(.not. (fn > 0.0_wp))
+      where (fn > 0.0_wp)
+         dfx = abs(fx/(mu*fn) - ref(:, 2))
+         dfy = abs(fy/(mu*fn) - ref(:, 3))
+         dfn = abs(fn - fn_ref)/fn_ref
+      elsewhere
+         dfx = 0.0_wp
+         dfy = 0.0_wp
+         dfn = 0.0_wp
+      end where
+   end subroutine compare
+
+   !> max and P80 of errors against the table's pair within the tolerance.
+   subroutine check_pair(file, what, errors, expected, error)
+      character(len=*), intent(in) :: file, what
+      real(wp), intent(in) :: errors(:), expected(2)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: got(2)
+      got = [maxval(errors), percentile(errors, 0.8_wp)]
+      call check(error, all(abs(got - expected) <= tolerance), message=trim(file)//', |Δ'// &
+         what//'| max ; P80 '//str_real(got(1))//' ; '//str_real(got(2))//', the table '// &
+         str_real(expected(1))//' ; '//str_real(expected(2)))
+   end subroutine check_pair
+
+end module test_validation_kinematic_sets
