@@ -33,7 +33,7 @@ module test_validation_kinematic_sets
       'builtin:UIC60-canted', [0.013_wp, 0.009_wp], [0.023_wp, 0.014_wp], [0.092_wp, 0.036_wp])
    type(expected_type), parameter :: flange_conformal = expected_type( &
       'data/exact/kinematic_flange/kinematic_conformal.csv', 'builtin:S1002', &
-      'builtin:UIC60-canted', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp])
+      'builtin:UIC60-canted', [0.014_wp, 0.010_wp], [0.028_wp, 0.018_wp], [0.044_wp, 0.021_wp])
    type(expected_type), parameter :: worn_planar = expected_type( &
       'data/exact/kinematic_worn/kinematic_planar.csv', 'data/profiles/worn/S1002-worn.txt', &
       'data/profiles/worn/UIC60-canted-worn.txt', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
