@@ -36,8 +36,8 @@ module test_validation_kinematic_sets
       'builtin:UIC60-canted', [0.014_wp, 0.010_wp], [0.028_wp, 0.018_wp], [0.044_wp, 0.021_wp])
    type(expected_type), parameter :: worn_planar = expected_type( &
       'data/exact/kinematic_worn/kinematic_planar.csv', 'data/profiles/worn/S1002-worn.txt', &
-      'data/profiles/worn/UIC60-canted-worn.txt', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &
-      [0.0_wp, 0.0_wp])
+      'data/profiles/worn/UIC60-canted-worn.txt', [0.013_wp, 0.004_wp], [0.007_wp, 0.003_wp], &
+      [0.001_wp, 0.000_wp])
    type(expected_type), parameter :: worn_conformal = expected_type( &
       'data/exact/kinematic_worn/kinematic_conformal.csv', 'data/profiles/worn/S1002-worn.txt', &
       'data/profiles/worn/UIC60-canted-worn.txt', [0.0_wp, 0.0_wp], [0.0_wp, 0.0_wp], &

@@ -15,7 +15,9 @@ module validate_kinematic_sets
    use, intrinsic :: iso_fortran_env, only: output_unit
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, track_type, &
       material_type, contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force, wheelset_state_type
+      load_vertical_force, wheelset_state_type, normal_options_type, new_normal_options, &
+      tangential_options_type
+   use shcontact_tangential_options, only: parse_correction
    use validate_csv, only: csv_table_type, read_csv, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
    use validate_sets, only: pool_errors
@@ -79,13 +81,15 @@ module validate_kinematic_sets
 
 contains
 
-   !> Solve every set present, pool its errors into the summary of every set (validate_sets)
-   !> and write kinematic_sets.csv and kinematic_sets.md to out_dir.
+   !> Solve every set present, pool its errors into the summary of every set (validate_sets;
+   !> the defaults and the main alternatives, normal reduction `local-hertz` and correction
+   !> `none`) and write kinematic_sets.csv and kinematic_sets.md (defaults) to out_dir.
    subroutine run_kinematic_sets(out_dir, error)
       character(len=*), intent(in) :: out_dir
       type(error_type), allocatable, intent(out) :: error
       type(set_patches_type) :: s(n_kinematic_sets)
       logical :: there(n_kinematic_sets)
+      type(set_patches_type) :: alt
       type(csv_writer_type) :: out
       integer :: k, i
 
@@ -94,10 +98,13 @@ contains
          if (.not. there(k)) cycle
          call solve_kinematic_set(kinematic_sets(k), s(k), error)
          if (allocated(error)) return
-         associate (ok => s(k)%members > 0)
-            call pool_errors(trim(kinematic_sets(k)%label), 1, pack(abs(s(k)%fx - &
-               s(k)%fx_ref), ok), pack(abs(s(k)%fy - s(k)%fy_ref), ok), s(k)%f_max)
-         end associate
+         call pool_set(kinematic_sets(k), s(k), 1)
+         call solve_kinematic_set(kinematic_sets(k), alt, error, reduction='local-hertz')
+         if (allocated(error)) return
+         call pool_set(kinematic_sets(k), alt, 2)
+         call solve_kinematic_set(kinematic_sets(k), alt, error, correction='none')
+         if (allocated(error)) return
+         call pool_set(kinematic_sets(k), alt, 3)
          write (output_unit, '(a,i0,a,i0,a)') 'kinematic set '//trim(kinematic_sets(k)%file)// &
             ': ', s(k)%n_cases, ' cases, ', s(k)%n, ' CONTACT patches'
       end do
@@ -120,11 +127,26 @@ contains
       call write_markdown(out_dir//'kinematic_sets.md', s, there, error)
    end subroutine run_kinematic_sets
 
-   !> Solve one set and compare every CONTACT patch (module text).
-   subroutine solve_kinematic_set(set, s, error)
+   !> The matched patches' errors to the summary of every set, configuration config.
+   subroutine pool_set(set, s, config)
+      type(kinematic_set_type), intent(in) :: set
+      type(set_patches_type), intent(in) :: s
+      integer, intent(in) :: config
+      logical :: ok(s%n)
+      ok = s%members > 0
+      call pool_errors(trim(set%label), config, pack(abs(s%fx - s%fx_ref), ok), &
+         pack(abs(s%fy - s%fy_ref), ok), s%f_max)
+   end subroutine pool_set
+
+   !> Solve one set and compare every CONTACT patch (module text); the defaults, or another
+   !> normal reduction or correction.
+   subroutine solve_kinematic_set(set, s, error, reduction, correction)
       type(kinematic_set_type), intent(in) :: set
       type(set_patches_type), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: reduction, correction
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
       type(csv_table_type) :: table
       type(contact_solver_type) :: solver
       type(track_type) :: track
@@ -164,8 +186,13 @@ contains
       ! 14 mm, flange-back distance 1360 mm at −70 mm, R₀ = 460 mm), the rail canted in the
       ! profile; G = 82670 MPa, ν = 0.27, μ = 0.3.
       track%rail_canted = .true.
+      if (present(reduction)) call new_normal_options(normal, error, reduction=reduction)
+      if (allocated(error)) return
+      if (present(correction)) call parse_correction(correction, tangential%correction, error)
+      if (allocated(error)) return
       call solver%init(trim(set%wheel), trim(set%rail), error, track=track, &
-         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=friction))
+         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=friction), &
+         normal_options=normal, tangential_options=tangential)
       if (allocated(error)) return
       call allocate_patches(s, count(table%cells(:, j_status) == 'ok'))
       s%n = 0
