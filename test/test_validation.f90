@@ -42,7 +42,7 @@ module test_validation
    public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
       skip_without_profiles, two_patch_solution, position_errors, recommended_options, &
-      exact_positions
+      exact_positions, reference_patch
 
    !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
    character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
