@@ -21,7 +21,7 @@ module test_validation_sets
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use test_validation, only: percentile, read_columns, summary_values, position_errors, &
       recommended_options, two_patch_solution, exact_positions, skip_without_profiles, &
-      reference_patch
+      reference_patch, summary_value
    use test_external_data, only: external_file
    use shcontact_geometry_track, only: track_type
    use shcontact_tangential_lobes, only: joined_lobes_type, join_lobes
@@ -108,33 +108,6 @@ contains
       end do
    end subroutine test_normal_every_position
 
-   !> One value of a key,value,... summary file (CONTACT runs' summary.csv).
-   subroutine summary_value(path, key, value, error)
-      character(len=*), intent(in) :: path, key
-      real(wp), intent(out) :: value
-      type(error_type), allocatable, intent(out) :: error
-      character(len=512) :: line
-      integer :: unit, stat, comma
-      value = 0.0_wp
-      open (newunit=unit, file=path, status='old', action='read', iostat=stat)
-      if (stat /= 0) then
-         call test_failed(error, path//': cannot open')
-         return
-      end if
-      do
-         read (unit, '(a)', iostat=stat) line
-         if (stat /= 0) exit
-         comma = index(line, ',')
-         if (comma == 0) cycle
-         if (line(1:comma - 1) /= key) cycle
-         read (line(comma + 1:), *, iostat=stat) value
-         close (unit)
-         if (stat /= 0) call test_failed(error, path//': '//key//' is not a number')
-         return
-      end do
-      close (unit)
-      call test_failed(error, path//': no key '//key)
-   end subroutine summary_value
 
    !> Collect the tests.
    subroutine collect_validation_sets(testsuite)

@@ -21,6 +21,7 @@ module validate_kinematic_sets
    use validate_csv, only: csv_table_type, read_csv, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
    use validate_sets, only: pool_errors
+   use validate_kinematic, only: ftext, itext
    implicit none
    private
 
@@ -328,13 +329,13 @@ contains
          call group_keys(s(k), keys)
          do g = 1, size(keys, 2)
             call table_row(unit, s(k), abs(s(k)%y_ws - keys(1, g)) < 1.0e-9_wp .and. &
-               abs(s(k)%yaw - keys(2, g)) < 1.0e-12_wp, 'Y_WS '//fixed(keys(1, g), 2)// &
-               ' mm, yaw '//fixed(1.0e3_wp*keys(2, g), 0)//' mrad')
+               abs(s(k)%yaw - keys(2, g)) < 1.0e-12_wp, 'Y_WS '//ftext(keys(1, g), 2)// &
+               ' mm, yaw '//ftext(1.0e3_wp*keys(2, g), 0)//' mrad')
          end do
          call table_row(unit, s(k), s(k)%y_ws == s(k)%y_ws, '**all**')
          write (unit, '(a,i0,a,i0,a,i0,a,a,a)') '', s(k)%n_cases, ' cases solved (', &
             s(k)%n_failed, ' failed in CONTACT), ', s(k)%n_extra, ' extra patches of ours; '// &
-            'largest |f| of our patches ', fixed(s(k)%f_max, 5), '.'
+            'largest |f| of our patches ', ftext(s(k)%f_max, 5), '.'
          write (unit, '(a)') ''
       end do
       close (unit)
@@ -368,8 +369,8 @@ contains
       character(len=*), intent(in) :: label
       logical :: m(s%n)
       m = in_group .and. s%members > 0
-      write (unit, '(a)') '| '//label//' | '//whole(count(in_group))//' | '// &
-         whole(count(in_group .and. s%members == 0))//' | '// &
+      write (unit, '(a)') '| '//label//' | '//itext(count(in_group))//' | '// &
+         itext(count(in_group .and. s%members == 0))//' | '// &
          pair(error_stats(pack(abs(s%fx - s%fx_ref), m)), 3)//' | '// &
          pair(error_stats(pack(abs(s%fy - s%fy_ref), m)), 3)//' | '// &
          pair(error_stats(pack(abs(s%fn - s%fn_ref)/s%fn_ref, m)), 3)//' | '// &
@@ -382,29 +383,7 @@ contains
       type(error_stats_type), intent(in) :: e
       integer, intent(in) :: decimals
       character(len=:), allocatable :: text
-      text = fixed(e%max, decimals)//' ; '//fixed(e%p80, decimals)
+      text = ftext(e%max, decimals)//' ; '//ftext(e%p80, decimals)
    end function pair
-
-   function fixed(x, decimals) result(text)
-      real(wp), intent(in) :: x
-      integer, intent(in) :: decimals
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      character(len=8) :: fmt
-      write (fmt, '(a,i0,a)') '(f0.', decimals, ')'
-      write (buf, fmt) x
-      if (buf(1:1) == '.') buf = '0'//buf
-      if (buf(1:2) == '-.') buf = '-0'//buf(2:)
-      if (decimals == 0) buf = buf(1:len_trim(buf) - 1)
-      text = trim(buf)
-   end function fixed
-
-   function whole(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function whole
 
 end module validate_kinematic_sets
