@@ -641,8 +641,11 @@ contains
       if (allocated(error)) return
       stat = run_program(dir, 'run long.nml -q -o out.h5')
       text = file_text(dir//'/err.txt')
+      ! Until the first run's status is written (the file exists before `echo` has written it).
       do k = 1, 6000
-         if (file_exists(dir//'/first_status.txt')) exit
+         if (file_exists(dir//'/first_status.txt')) then
+            if (len_trim(file_text(dir//'/first_status.txt')) > 0) exit
+         end if
          call shell('sleep 0.1')
       end do
       call check(error, stat, 3, message='the second run: '//text)
