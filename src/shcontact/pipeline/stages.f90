@@ -6,7 +6,9 @@
 !> 2. normal: [[prepare_normal_stage]] prepares the normal problem of the loaded patches
 !>    ([[loaded_count]]: the first one for a normal force or an approach, all for a vertical
 !>    load or position), [[solve_normal_stage]] solves it for the load (doc/theory.md §4.5–4.6);
-!> 3. tangential: [[solve_patch_stage]] solves one loaded patch for its creepages;
+!> 3. tangential: [[carry_creepage_stage]] gives every loaded patch its prescribed creepages
+!>    (given at the first patch's reference point, carried to the others by the rigid slip,
+!>    doc/lobes.md), [[solve_patch_stage]] solves one loaded patch for its creepages;
 !> 4. summary: [[summarise_stages]] turns the stage results into the per-patch values, the main
 !>    (most loaded) patch, the track-frame totals and the wheel's joined contact (the patches
 !>    the exact theory joins into one, shcontact_tangential_lobes, doc/lobes.md) of a
@@ -31,6 +33,7 @@ module shcontact_pipeline_stages
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_tangential_spin, only: carried_creepages
    use shcontact_tangential_lobes, only: join_lobes
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
       load_approach, load_vertical_position
@@ -38,8 +41,8 @@ module shcontact_pipeline_stages
    implicit none
    private
 
-   public :: loaded_count, prepare_normal_stage, solve_normal_stage, solve_patch_stage, &
-      reference_axle_of, summarise_stages
+   public :: loaded_count, prepare_normal_stage, solve_normal_stage, carry_creepage_stage, &
+      solve_patch_stage, reference_axle_of, summarise_stages
 
 contains
 
@@ -123,6 +126,60 @@ contains
          call solve_vertical_load(contacts, load%value, normal, dz, error, start)
       end select
    end subroutine solve_normal_stage
+
+   !> The prescribed creepages of every loaded patch (doc/lobes.md, "Prescribed creepages on
+   !> several patches"). They are the rigid slip of the wheel relative to the rail at the
+   !> reference point of the first (deepest) patch, the wheel's geometric contact point
+   !> (doc/theory.md decision 13), and that patch gets them as given. Every other loaded patch
+   !> gets the slip of the same rigid wheel at its own reference point:
+   !> shcontact_tangential_spin's carried_creepages with its lateral distance y_k from the
+   !> first reference point in the first patch's contact plane (the plane in which that patch's
+   !> strips are placed), its own contact angle and rolling radius; under the default spin model
+   !> ('uniform') ν_x,k = ν_x − φ y_k, ν_y,k = ν_y, φ_k = φ, CONTACT's rigid slip of one joined
+   !> patch. The prescribed-creepage calls have no yaw, so every reference point lies at x = 0.
+   !> One wheel's patches are in its own side frame (y towards its field side).
+   pure subroutine carry_creepage_stage(geometry, normal, creepage, model, side, carried, error)
+      !> The patches of the contact search (at least the loaded ones).
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      !> The normal solutions of the loaded patches (n_loaded).
+      type(normal_patch_type), intent(in) :: normal(:)
+      !> The prescribed creepages (ν_x, ν_y, φ in rad/mm) at the first patch's reference point.
+      type(creepage_type), intent(in) :: creepage
+      !> Spin model, `spin_*` of shcontact_tangential_options.
+      integer, intent(in) :: model
+      !> side_right or side_left (geometry's y_track is in the track frame).
+      integer, intent(in) :: side
+      !> The creepages of each loaded patch (at least n_loaded; an unloaded one gets those given).
+      type(creepage_type), intent(inout) :: carried(:)
+      !> Set by the scaled spin model without geometric spin at the first reference point.
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: y1, z1, dy, dz, gamma0, r0, cos_p, sin_p
+      integer :: k
+
+      carried(1:size(normal)) = creepage
+      if (count(normal(2:)%load > 0.0_wp) == 0) return
+      y1 = side*geometry(1)%y_track + normal(1)%lateral_offset()
+      z1 = geometry(1)%z_track + normal(1)%vertical_offset()
+      cos_p = cos(geometry(1)%gamma0)
+      sin_p = sin(geometry(1)%gamma0)
+      gamma0 = geometry(1)%gamma0
+      r0 = geometry(1)%r0
+      if (normal(1)%load > 0.0_wp) then
+         gamma0 = normal(1)%gamma0
+         r0 = normal(1)%r0
+      end if
+      do k = 2, size(normal)
+         if (.not. (normal(k)%load > 0.0_wp)) cycle
+         dy = side*geometry(k)%y_track + normal(k)%lateral_offset() - y1
+         dz = geometry(k)%z_track + normal(k)%vertical_offset() - z1
+         call carried_creepages(model, creepage, dy*cos_p + dz*sin_p, gamma0, r0, &
+            normal(k)%gamma0, normal(k)%r0, carried(k), error)
+         if (allocated(error)) then
+            call prefix_error(error, 'patch 1')
+            return
+         end if
+      end do
+   end subroutine carry_creepage_stage
 
    !> The tangential problem of loaded patch k of n for its creepages; nothing for a patch that
    !> carries no load.

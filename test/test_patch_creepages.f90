@@ -1,0 +1,240 @@
+!> Prescribed creepages on a wheel with several loaded patches (issue 28 item 3, doc/lobes.md
+!> "Prescribed creepages on several patches"): they are given at the first (deepest) patch's
+!> reference point and every other loaded patch gets the rigid slip of the same wheel at its
+!> own reference point (shcontact_pipeline_stages's carry_creepage_stage). Through the solver
+!> object at Y_WS = 5.0 and 5.3 mm on the built-in S1002 / UIC60 1:40 (a tread lobe and a
+!> gauge-corner lobe, both loaded by a vertical load): each patch's creepages against the closed
+!> form, each patch's forces against its own tangential solve with those creepages, and the
+!> right and the left wheel.
+module test_patch_creepages
+   use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_real
+   use shcontact_core_error, only: lib_error => error_type
+   use shcontact_geometry_track, only: side_left, side_right
+   use shcontact_tangential_options, only: tangential_options_type, spin_additive, spin_uniform
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_march, only: march_workspace_type
+   use shcontact_tangential_patch, only: tangential_patch_type
+   use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_core_material, only: material_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
+      contact_result_type, contact_fields_type, load_vertical_force, load_normal_force
+   implicit none
+   private
+   public :: collect_patch_creepages
+
+   !> The two-lobe positions (mm) and the vertical load (N).
+   real(wp), parameter :: positions(2) = [5.0_wp, 5.3_wp]
+   real(wp), parameter :: f_z = 64.7e3_wp
+   !> Creepages with spin (ν_x, ν_y, φ in rad/mm: 1.5 1/m).
+   type(creepage_type), parameter :: given = creepage_type(1.0e-3_wp, 0.5e-3_wp, 1.5e-3_wp)
+
+contains
+
+   !> Collect the tests.
+   subroutine collect_patch_creepages(testsuite)
+      type(unittest_type), allocatable, intent(out) :: testsuite(:)
+      testsuite = [new_unittest('uniform_rigid_slip_closed_form', test_uniform), &
+         new_unittest('no_spin_same_creepages', test_no_spin), &
+         new_unittest('additive_rigid_slip_closed_form', test_additive), &
+         new_unittest('patch_forces_use_carried_creepages', test_forces), &
+         new_unittest('left_wheel_mirrors_right', test_left)]
+   end subroutine collect_patch_creepages
+
+   !> A solver on the built-in profiles for one wheel side and spin model.
+   subroutine new_solver(solver, side, model, error)
+      type(contact_solver_type), intent(out) :: solver
+      integer, intent(in) :: side, model
+      type(error_type), allocatable, intent(out) :: error
+      type(tangential_options_type) :: options
+      type(lib_error), allocatable :: err
+      options%spin_model = model
+      call solver%init('builtin:S1002', 'builtin:UIC60', err, side=side, &
+         tangential_options=options)
+      if (allocated(err)) call test_failed(error, err%message)
+   end subroutine new_solver
+
+   !> Solve one two-lobe position; an error unless both patches are loaded.
+   subroutine solve_two(solver, t_y, creepage, result, error, fields)
+      type(contact_solver_type), intent(inout) :: solver
+      real(wp), intent(in) :: t_y
+      type(creepage_type), intent(in) :: creepage
+      type(contact_result_type), intent(out) :: result
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_fields_type), intent(inout), optional :: fields
+      type(lib_error), allocatable :: err
+      call solver%solve(t_y, 0.0_wp, contact_load_type(load_vertical_force, f_z), creepage, &
+         result, err, fields)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, result%n_loaded == 2 .and. result%patch(1)%fn > 1000.0_wp .and. &
+         result%patch(2)%fn > 1000.0_wp, message='t_y = '//str_real(t_y)// &
+         ' mm: two loaded patches expected')
+   end subroutine solve_two
+
+   !> Lateral distance y_2 of patch 2's reference point from patch 1's in patch 1's contact
+   !> plane (mm, towards the field side; the results' y_track is the track's, so the left
+   !> wheel's is mirrored).
+   pure real(wp) function lateral_distance(result, side) result(y2)
+      type(contact_result_type), intent(in) :: result
+      integer, intent(in) :: side
+      associate (p1 => result%patch(1), p2 => result%patch(2))
+         y2 = side*(p2%y_track - p1%y_track)*cos(p1%gamma_plane) + &
+            (p2%z_track - p1%z_track)*sin(p1%gamma_plane)
+      end associate
+   end function lateral_distance
+
+   !> Default spin model ('uniform'): patch 1 gets the creepages as given (bit for bit), patch 2
+   !> ν_x − φ y_2, ν_y, φ with y_2 its lateral distance in patch 1's plane (the patches are
+   !> 8–12 mm apart, so φ y_2 is about as large as ν_x).
+   subroutine test_uniform(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      real(wp) :: y2
+      integer :: ip
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call solve_two(solver, positions(ip), given, r, error)
+         if (allocated(error)) return
+         y2 = lateral_distance(r, side_right)
+         call check(error, abs(y2) > 5.0_wp .and. abs(y2) < 15.0_wp, message= &
+            'lateral distance of the patches '//str_real(y2)//' mm, expected 5-15 mm')
+         if (allocated(error)) return
+         call check(error, r%patch(1)%nu_x == given%nu_x .and. r%patch(1)%nu_y == given%nu_y &
+            .and. r%patch(1)%phi == given%phi, message='patch 1 should get the creepages as given')
+         if (allocated(error)) return
+         call check(error, r%patch(2)%nu_x, given%nu_x - given%phi*y2, thr=1.0e-15_wp, &
+            message='patch 2: nu_x - phi y_2')
+         if (allocated(error)) return
+         call check(error, r%patch(2)%nu_y == given%nu_y .and. r%patch(2)%phi == given%phi, &
+            message='patch 2: nu_y and phi as given under the uniform spin model')
+         if (allocated(error)) return
+      end do
+   end subroutine test_uniform
+
+   !> Pure longitudinal creepage, φ = 0: both patches get the same creepages, bit for bit.
+   subroutine test_no_spin(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(creepage_type), parameter :: pure = creepage_type(1.0e-3_wp, 0.0_wp, 0.0_wp)
+      integer :: ip
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call solve_two(solver, positions(ip), pure, r, error)
+         if (allocated(error)) return
+         call check(error, all(r%patch(1:2)%nu_x == pure%nu_x) .and. &
+            all(r%patch(1:2)%nu_y == 0.0_wp) .and. all(r%patch(1:2)%phi == 0.0_wp), &
+            message='pure longitudinal creepage: both patches should get it unchanged')
+         if (allocated(error)) return
+      end do
+   end subroutine test_no_spin
+
+   !> Spin model 'additive': the spin changes with the contact angle as a rolling wheel's does,
+   !> φ_2 = φ + (sin γ_2 − sin γ_1)/r_1, ν_x,2 = ν_x − φ y_2 − ρ with the geometric remainder
+   !> ρ = (r_2 − r_1)/r_1 − y_2 sin γ_1/r_1, and ν_y,2 = ν_y cos γ_1/cos γ_2 (doc/theory.md
+   !> §6.2, each strip's rule applied at patch 2's reference point).
+   subroutine test_additive(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      real(wp) :: y2, rho
+      integer :: ip
+
+      call new_solver(solver, side_right, spin_additive, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call solve_two(solver, positions(ip), given, r, error)
+         if (allocated(error)) return
+         y2 = lateral_distance(r, side_right)
+         associate (p1 => r%patch(1), p2 => r%patch(2))
+            rho = (p2%r0 - p1%r0)/p1%r0 - y2*sin(p1%gamma0)/p1%r0
+            call check(error, p1%nu_x == given%nu_x .and. p1%nu_y == given%nu_y .and. &
+               p1%phi == given%phi, message='additive: patch 1 gets the creepages as given')
+            if (allocated(error)) return
+            call check(error, p2%phi, given%phi + (sin(p2%gamma0) - sin(p1%gamma0))/p1%r0, &
+               thr=1.0e-15_wp, message='additive: patch 2 phi')
+            if (allocated(error)) return
+            call check(error, p2%nu_x, given%nu_x - given%phi*y2 - rho, thr=1.0e-15_wp, &
+               message='additive: patch 2 nu_x')
+            if (allocated(error)) return
+            call check(error, p2%nu_y, given%nu_y*cos(p1%gamma0)/cos(p2%gamma0), &
+               thr=1.0e-15_wp, message='additive: patch 2 nu_y')
+            if (allocated(error)) return
+            ! The contact angles differ by 0.1-0.2 rad: the spin changes by 2e-4 rad/mm.
+            call check(error, abs(p2%phi - given%phi) > 1.0e-4_wp, message= &
+               'additive: the spin of patch 2 should differ from the given one')
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine test_additive
+
+   !> Each patch's forces are its own tangential solve (shcontact_tangential_solver) with its
+   !> carried creepages, bit for bit; patch 2's differ from a solve with the creepages as given.
+   subroutine test_forces(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(contact_fields_type), allocatable :: fields
+      type(march_workspace_type) :: ws
+      type(tangential_patch_type) :: own, as_given
+      type(tangential_options_type) :: options
+      type(lib_error), allocatable :: err
+      integer :: ip, k
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      allocate (fields)
+      do ip = 1, size(positions)
+         call solve_two(solver, positions(ip), given, r, error, fields)
+         if (allocated(error)) return
+         do k = 1, 2
+            call solve_tangential(ws, fields%normal(k), material_type(), creepage_type( &
+               r%patch(k)%nu_x, r%patch(k)%nu_y, r%patch(k)%phi), options, own, err)
+            if (.not. allocated(err)) call solve_tangential(ws, fields%normal(k), &
+               material_type(), given, options, as_given, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            call check(error, own%fx == r%patch(k)%fx .and. own%fy == r%patch(k)%fy, &
+               message='patch forces should be the solve with its carried creepages')
+            if (allocated(error)) return
+         end do
+         call check(error, abs(as_given%fx - r%patch(2)%fx) > 0.01_wp*abs(as_given%fx), &
+            message='patch 2: the carried creepages should change its F_x')
+         if (allocated(error)) return
+      end do
+   end subroutine test_forces
+
+   !> The left wheel at −Y_WS is the right wheel's mirror: its patches get the same creepages
+   !> (the lateral distance is measured towards each wheel's own field side).
+   subroutine test_left(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: right, left
+      type(contact_result_type) :: rr, rl
+      integer :: ip
+
+      call new_solver(right, side_right, spin_uniform, error)
+      if (.not. allocated(error)) call new_solver(left, side_left, spin_uniform, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call solve_two(right, positions(ip), given, rr, error)
+         if (.not. allocated(error)) call solve_two(left, -positions(ip), given, rl, error)
+         if (allocated(error)) return
+         call check(error, rl%patch(2)%nu_x, rr%patch(2)%nu_x, thr=1.0e-12_wp, &
+            message='left wheel: patch 2 nu_x as the right wheel''s')
+         if (allocated(error)) return
+         call check(error, lateral_distance(rl, side_left), lateral_distance(rr, side_right), &
+            thr=1.0e-9_wp, message='left wheel: the same lateral distance')
+         if (allocated(error)) return
+      end do
+   end subroutine test_left
+
+end module test_patch_creepages
