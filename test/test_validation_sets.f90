@@ -194,8 +194,9 @@ contains
    !> patch > 0.2 (measured 0.442). The joined f is also Table 12's two-lobe comparison's
    !> ([[wheel_sum_errors]], which carries CONTACT's creepages to each patch's first contact
    !> through CONTACT's contact plane) within 0.008 (measured 0.0052: the solver measures the
-   !> second patch's distance from the first in the first patch's contact plane, 0.04 mm (5.0 mm)
-   !> and 0.15 mm (5.3 mm) shorter than the table's in CONTACT's plane: at φ = 2 1/m 0.3‰ of ν_x).
+   !> second patch's distance from the first in the first patch's contact plane, 0.04 mm longer
+   !> (5.0 mm) and 0.15 mm shorter (5.3 mm) than the table's in CONTACT's plane: at φ = 2 1/m
+   !> 0.3‰ of ν_x).
    subroutine test_wheel_contact(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: names(2) = [character(len=6) :: 'yws5p0', 'yws5p3']
