@@ -1,12 +1,14 @@
-!> Prescribed creepages on a wheel with several loaded patches (issue 28 item 3, doc/lobes.md
-!> "Prescribed creepages on several patches"): they are given at the first (deepest) patch's
-!> reference point and every other loaded patch gets the rigid slip of the same wheel at its
-!> own reference point (shcontact_pipeline_stages's carry_creepage_stage). Through the solver
+!> Prescribed creepages and a prescribed normal force on a wheel with several patches (issue 28
+!> item 3, doc/lobes.md). The creepages are given at the first (deepest) patch's reference point
+!> and every other loaded patch gets the rigid slip of the same wheel at its own reference point
+!> (shcontact_pipeline_stages's carry_creepage_stage); a normal force is shared by the patches
+!> through one rigid vertical approach, Σ_k N_k = N (share_normal_force). Through the solver
 !> object at Y_WS = 5.0 and 5.3 mm on the built-in S1002 / UIC60 1:40 (a tread lobe and a
-!> gauge-corner lobe, both loaded by a vertical load): each patch's creepages against the closed
-!> form, each patch's forces against its own tangential solve with those creepages, and the
-!> right and the left wheel.
-module test_patch_creepages
+!> gauge-corner lobe): each patch's creepages against the closed form, each patch's forces
+!> against its own tangential solve with those creepages, the right and the left wheel; the
+!> normal force's sum, its equality with the vertical load that gives the same approach, and
+!> the single-patch solve where only the first patch touches.
+module test_prescribed_patches
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_real
@@ -18,11 +20,15 @@ module test_patch_creepages
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: solve_tangential
    use shcontact_core_material, only: material_type
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
+   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_pipeline_stages, only: shared_force_rtol
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
       contact_result_type, contact_fields_type, load_vertical_force, load_normal_force
    implicit none
    private
-   public :: collect_patch_creepages
+   public :: collect_prescribed_patches
 
    !> The two-lobe positions (mm) and the vertical load (N).
    real(wp), parameter :: positions(2) = [5.0_wp, 5.3_wp]
@@ -33,14 +39,17 @@ module test_patch_creepages
 contains
 
    !> Collect the tests.
-   subroutine collect_patch_creepages(testsuite)
+   subroutine collect_prescribed_patches(testsuite)
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [new_unittest('uniform_rigid_slip_closed_form', test_uniform), &
          new_unittest('no_spin_same_creepages', test_no_spin), &
          new_unittest('additive_rigid_slip_closed_form', test_additive), &
          new_unittest('patch_forces_use_carried_creepages', test_forces), &
-         new_unittest('left_wheel_mirrors_right', test_left)]
-   end subroutine collect_patch_creepages
+         new_unittest('left_wheel_mirrors_right', test_left), &
+         new_unittest('normal_force_shared_sum', test_force_sum), &
+         new_unittest('normal_force_is_a_common_approach', test_force_vertical), &
+         new_unittest('normal_force_single_patch_unchanged', test_force_single)]
+   end subroutine collect_prescribed_patches
 
    !> A solver on the built-in profiles for one wheel side and spin model.
    subroutine new_solver(solver, side, model, error)
@@ -237,4 +246,118 @@ contains
       end do
    end subroutine test_left
 
-end module test_patch_creepages
+   !> A normal force N = 64.7 kN at the two-lobe positions and at the headline position
+   !> (4.733 mm, where a second patch carries 2.5 kN): both patches loaded, Σ F_n = N to
+   !> shared_force_rtol (1e-9), and the wheel's joined contact holds both (wheel F_n = N).
+   subroutine test_force_sum(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: t_y(3) = [5.0_wp, 5.3_wp, 4.733_wp]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: err
+      integer :: ip
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      do ip = 1, size(t_y)
+         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), given, &
+            r, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, r%n_loaded == 2 .and. all(r%patch(1:2)%fn > 1000.0_wp), &
+            message='t_y = '//str_real(t_y(ip))//' mm: a normal force should load both patches')
+         if (allocated(error)) return
+         call check(error, abs(r%track%fn - f_z) <= shared_force_rtol*f_z .and. &
+            abs(r%patch(1)%fn + r%patch(2)%fn - f_z) <= shared_force_rtol*f_z, &
+            message='t_y = '//str_real(t_y(ip))//' mm: sum of the normal forces '// &
+            str_real(r%track%fn)//' N, expected 64700 N')
+         if (allocated(error)) return
+         call check(error, r%wheel%n_members == 2 .and. abs(r%wheel%fn - f_z) <= &
+            shared_force_rtol*f_z, message='the joined contact should hold the normal force')
+         if (allocated(error)) return
+      end do
+   end subroutine test_force_sum
+
+   !> The shared normal force is the vertical load's solution: the patches move as one rigid
+   !> body, so a vertical load F_z = Σ_k N_k cos γ_plane,k (the normal problem's own vertical
+   !> balance, which the coupled reduction keeps) gives the same patch loads, approaches and
+   !> vertical approach Δz to a relative 1e-8.
+   subroutine test_force_vertical(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: rf, rv
+      type(lib_error), allocatable :: err
+      real(wp) :: vertical
+      integer :: ip, k
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      do ip = 1, size(positions)
+         call solver%solve(positions(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), &
+            given, rf, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         vertical = sum(rf%patch(1:2)%fn*cos(rf%patch(1:2)%gamma_plane))
+         call solver%solve(positions(ip), 0.0_wp, contact_load_type(load_vertical_force, &
+            vertical), given, rv, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         do k = 1, 2
+            call check(error, rv%patch(k)%fn, rf%patch(k)%fn, rel=.true., thr=1.0e-8_wp, &
+               message='patch load: normal force vs vertical load')
+            if (allocated(error)) return
+            call check(error, rv%patch(k)%approach, rf%patch(k)%approach, rel=.true., &
+               thr=1.0e-8_wp, message='patch approach: normal force vs vertical load')
+            if (allocated(error)) return
+         end do
+         call check(error, rv%dz, rf%dz, rel=.true., thr=1.0e-8_wp, &
+            message='vertical approach: normal force vs vertical load')
+         if (allocated(error)) return
+      end do
+   end subroutine test_force_vertical
+
+   !> Where only the first patch touches under the normal force (Y_WS = 4.5 mm: two candidates,
+   !> the second above the rail at the first's approach) and where the search finds one patch
+   !> (0 and 2 mm), the solver's result is the single-patch solve (solve_load on its first
+   !> patch's geometry) bit for bit: one loaded patch, the same load, approach, area and peak
+   !> pressure.
+   subroutine test_force_single(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: t_y(3) = [4.5_wp, 0.0_wp, 2.0_wp]
+      integer, parameter :: candidates(3) = [2, 1, 1]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(contact_fields_type), allocatable :: fields
+      type(normal_contact_type) :: contact
+      type(normal_patch_type) :: alone
+      type(lib_error), allocatable :: err
+      integer :: ip
+
+      call new_solver(solver, side_right, spin_uniform, error)
+      if (allocated(error)) return
+      allocate (fields)
+      do ip = 1, size(t_y)
+         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), given, &
+            r, err, fields)
+         if (.not. allocated(err)) call prepare_normal_contact(contact, fields%geometry(1), &
+            normal_options_type(), material_type(), err)
+         if (.not. allocated(err)) call solve_load(contact, f_z, alone, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, r%n_patches == candidates(ip) .and. r%n_loaded == 1, &
+            message='t_y = '//str_real(t_y(ip))//' mm: expected one loaded patch of '// &
+            achar(48 + candidates(ip)))
+         if (allocated(error)) return
+         call check(error, r%patch(1)%fn == alone%load .and. r%patch(1)%approach == &
+            alone%approach .and. r%patch(1)%area == alone%area .and. r%patch(1)%p_max == &
+            alone%p_max, message='t_y = '//str_real(t_y(ip))//' mm: the single-patch solve '// &
+            'bit for bit expected')
+         if (allocated(error)) return
+      end do
+   end subroutine test_force_single
+
+end module test_prescribed_patches
