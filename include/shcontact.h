@@ -35,6 +35,7 @@ extern "C" {
 #define SHCONTACT_LOAD_VERTICAL_FORCE 2 /* vertical wheel load (N) shared by all patches */
 #define SHCONTACT_LOAD_APPROACH 3       /* approach (mm) of the deepest patch */
 #define SHCONTACT_LOAD_VERTICAL_POSITION 4 /* vertical approach of the wheel (mm), all patches */
+#define SHCONTACT_LOAD_SHARED_FORCE 5   /* normal force N (N) of the wheel, shared by its patches */
 
 /* Values of one patch (shcontact_patch; also the first values of a result), 0-based (the
  * Fortran include file shcontact.fi has the same, 1-based). Side frame: for a left wheel the

@@ -1,8 +1,9 @@
 !> Prescribed creepages and a prescribed normal force on a wheel with several patches (issue 28
 !> item 3, doc/lobes.md). The creepages are given at the first (deepest) patch's reference point
 !> and every other loaded patch gets the rigid slip of the same wheel at its own reference point
-!> (shcontact_pipeline_stages's carry_creepage_stage); a normal force is shared by the patches
-!> through one rigid vertical approach, Σ_k N_k = N (share_normal_force). Through the solver
+!> (shcontact_pipeline_stages's carry_creepage_stage); the load mode shared normal force
+!> (load_shared_force) shares N among the patches through one rigid vertical approach,
+!> Σ_k N_k = N (share_normal_force), while the plain normal force loads the first patch. Through the solver
 !> object at Y_WS = 5.0 and 5.3 mm on the built-in S1002 / UIC60 1:40 (a tread lobe and a
 !> gauge-corner lobe): each patch's creepages against the closed form, each patch's forces
 !> against its own tangential solve with those creepages, the right and the left wheel; the
@@ -25,7 +26,8 @@ module test_prescribed_patches
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_pipeline_stages, only: shared_force_rtol
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
-      contact_result_type, contact_fields_type, load_vertical_force, load_normal_force
+      contact_result_type, contact_fields_type, load_vertical_force, load_normal_force, &
+      load_shared_force
    implicit none
    private
    public :: collect_prescribed_patches
@@ -46,9 +48,9 @@ contains
          new_unittest('additive_rigid_slip_closed_form', test_additive), &
          new_unittest('patch_forces_use_carried_creepages', test_forces), &
          new_unittest('left_wheel_mirrors_right', test_left), &
-         new_unittest('normal_force_shared_sum', test_force_sum), &
-         new_unittest('normal_force_is_a_common_approach', test_force_vertical), &
-         new_unittest('normal_force_single_patch_unchanged', test_force_single)]
+         new_unittest('shared_force_sum', test_force_sum), &
+         new_unittest('shared_force_is_a_common_approach', test_force_vertical), &
+         new_unittest('shared_force_single_patch_unchanged', test_force_single)]
    end subroutine collect_prescribed_patches
 
    !> A solver on the built-in profiles for one wheel side and spin model.
@@ -246,9 +248,10 @@ contains
       end do
    end subroutine test_left
 
-   !> A normal force N = 64.7 kN at the two-lobe positions and at the headline position
+   !> A shared normal force N = 64.7 kN at the two-lobe positions and at the headline position
    !> (4.733 mm, where a second patch carries 2.5 kN): both patches loaded, Σ F_n = N to
-   !> shared_force_rtol (1e-9), and the wheel's joined contact holds both (wheel F_n = N).
+   !> shared_force_rtol (1e-9), and the wheel's joined contact holds both (wheel F_n = N). The
+   !> plain normal force (load_normal_force) still loads the first patch alone, with F_n = N.
    subroutine test_force_sum(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: t_y(3) = [5.0_wp, 5.3_wp, 4.733_wp]
@@ -260,7 +263,7 @@ contains
       call new_solver(solver, side_right, spin_uniform, error)
       if (allocated(error)) return
       do ip = 1, size(t_y)
-         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), given, &
+         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_shared_force, f_z), given, &
             r, err)
          if (allocated(err)) then
             call test_failed(error, err%message); return
@@ -275,6 +278,14 @@ contains
          if (allocated(error)) return
          call check(error, r%wheel%n_members == 2 .and. abs(r%wheel%fn - f_z) <= &
             shared_force_rtol*f_z, message='the joined contact should hold the normal force')
+         if (allocated(error)) return
+         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), given, &
+            r, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, r%n_loaded == 1 .and. abs(r%patch(1)%fn - f_z) <= 1.0e-10_wp*f_z, &
+            message='the plain normal force should load the first patch alone')
          if (allocated(error)) return
       end do
    end subroutine test_force_sum
@@ -294,7 +305,7 @@ contains
       call new_solver(solver, side_right, spin_uniform, error)
       if (allocated(error)) return
       do ip = 1, size(positions)
-         call solver%solve(positions(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), &
+         call solver%solve(positions(ip), 0.0_wp, contact_load_type(load_shared_force, f_z), &
             given, rf, err)
          if (allocated(err)) then
             call test_failed(error, err%message); return
@@ -319,7 +330,7 @@ contains
       end do
    end subroutine test_force_vertical
 
-   !> Where only the first patch touches under the normal force (Y_WS = 4.5 mm: two candidates,
+   !> Where only the first patch touches under the shared normal force (Y_WS = 4.5 mm: two candidates,
    !> the second above the rail at the first's approach) and where the search finds one patch
    !> (0 and 2 mm), the solver's result is the single-patch solve (solve_load on its first
    !> patch's geometry) bit for bit: one loaded patch, the same load, approach, area and peak
@@ -340,7 +351,7 @@ contains
       if (allocated(error)) return
       allocate (fields)
       do ip = 1, size(t_y)
-         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_normal_force, f_z), given, &
+         call solver%solve(t_y(ip), 0.0_wp, contact_load_type(load_shared_force, f_z), given, &
             r, err, fields)
          if (.not. allocated(err)) call prepare_normal_contact(contact, fields%geometry(1), &
             normal_options_type(), material_type(), err)

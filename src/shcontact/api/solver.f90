@@ -8,9 +8,10 @@
 !> (`src/shcontact/case/runner.f90`) calls (doc/architecture.md):
 !>
 !> 1. contact search at (t_y, roll) → candidate patches, deepest first;
-!> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, or a
+!> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, a
 !>    prescribed vertical wheel load shared by all patches through one rigid approach
-!>    (doc/theory.md §4.5–4.6);
+!>    (doc/theory.md §4.5–4.6), or a normal force of the wheel's contact shared by its patches
+!>    through one rigid approach (load_shared_force, doc/lobes.md);
 !> 3. tangential problem of every loaded patch with the prescribed creepages: given at the
 !>    first (deepest) patch's reference point, the geometric contact point (doc/theory.md
 !>    decision 13), and carried to every other loaded patch's reference point by the rigid slip
@@ -49,7 +50,7 @@ module shcontact_api_solver
       spin_additive
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach, load_vertical_position, load_mode_name, load_mode_names
+      load_approach, load_vertical_position, load_shared_force, load_mode_name, load_mode_names
    use shcontact_pipeline_result, only: contact_result_type, patch_result_type, &
       contact_fields_type, max_patches
    use shcontact_pipeline_cache, only: contact_cache_type, update_geometry, update_normal, &
@@ -62,6 +63,7 @@ module shcontact_api_solver
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
    public :: contact_fields_type, load_profile
    public :: load_normal_force, load_vertical_force, load_approach, load_vertical_position, &
+      load_shared_force, &
       load_mode_name
    public :: max_patches
 
@@ -359,7 +361,8 @@ contains
       end if
       if (load%mode < 1 .or. load%mode > size(load_mode_names)) then
          call fatal_error(error, 'load mode = '//str_int(load%mode)//': expected 1 (normal '// &
-            'force), 2 (vertical force), 3 (approach) or 4 (vertical position)', &
+            'force), 2 (vertical force), 3 (approach), 4 (vertical position) or 5 (shared '// &
+            'normal force)', &
             stat_invalid_input)
          return
       end if

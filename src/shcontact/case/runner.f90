@@ -275,9 +275,9 @@ contains
       if (size(geometry) == 0) call fatal_error(error, 'no contact patch found', stat_invalid_input)
    end subroutine solve_geometry
 
-   !> Normal solution for one (t_y, roll, load) on its geometry. Loading 'approach' acts on the
-   !> first (deepest) patch, 'force' on the patches that share it (shcontact_pipeline_stages's
-   !> share_normal_force), 'vertical' on all patches at once (doc/theory.md §4.6).
+   !> Normal solution for one (t_y, roll, load) on its geometry. Loading 'force' and
+   !> 'approach' act on the first (deepest) patch, 'vertical' on all patches at once
+   !> (doc/theory.md §4.6).
    subroutine solve_stage(setup, point, geometry, stage)
       !> Shared data.
       type(run_setup_type), intent(in) :: setup
@@ -302,7 +302,7 @@ contains
       if (failed(stage, error)) return
       call solve_normal_stage(contacts, load, stage%normal, stage%dz, error, used=used)
       if (failed(stage, error)) return
-      ! A normal force that the first patch carries alone loads it alone.
+      ! A shared normal force that the first patch carries alone loads it alone.
       if (used < n) stage%normal = stage%normal(1:used)
    end subroutine solve_stage
 

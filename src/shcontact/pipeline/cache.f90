@@ -191,8 +191,8 @@ contains
    end subroutine prepare_yaw
 
    !> The normal solution for the load, unless it is that of the last call on this geometry.
-   !> An approach loads the first (deepest) patch, a normal force the patches that share it
-   !> (shcontact_pipeline_stages's solve_normal_stage), a vertical load all patches.
+   !> Force and approach load the first (deepest) patch, a vertical load all patches, a shared
+   !> normal force those that touch (shcontact_pipeline_stages's solve_normal_stage).
    subroutine update_normal(self, load, error)
       type(contact_cache_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load

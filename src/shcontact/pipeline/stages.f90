@@ -4,9 +4,9 @@
 !>
 !> 1. geometry: the contact search (shcontact_geometry_contact) gives the candidate patches;
 !> 2. normal: [[prepare_normal_stage]] prepares the normal problem of the patches the load may
-!>    reach ([[loaded_count]]: the first one for an approach, all for a normal force, a
-!>    vertical load or a position), [[solve_normal_stage]] solves it for the load
-!>    (doc/theory.md §4.5–4.6; a normal force is shared as [[share_normal_force]] says);
+!>    reach ([[loaded_count]]: the first one for a normal force or an approach, all for a
+!>    vertical load, a position or a shared normal force), [[solve_normal_stage]] solves it for
+!>    the load (doc/theory.md §4.5–4.6; a shared normal force as [[share_normal_force]] says);
 !> 3. tangential: [[carry_creepage_stage]] gives every loaded patch its prescribed creepages
 !>    (given at the first patch's reference point, carried to the others by the rigid slip,
 !>    doc/lobes.md), [[solve_patch_stage]] solves one loaded patch for its creepages;
@@ -37,7 +37,7 @@ module shcontact_pipeline_stages
    use shcontact_tangential_spin, only: carried_creepages
    use shcontact_tangential_lobes, only: join_lobes
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach, load_vertical_position
+      load_approach, load_vertical_position, load_shared_force
    use shcontact_pipeline_result, only: contact_result_type, max_patches
    implicit none
    private
@@ -51,17 +51,18 @@ module shcontact_pipeline_stages
 
 contains
 
-   !> Number of patches a load may act on (to prepare): the first (deepest) one for an approach,
-   !> every patch found for a normal force, a vertical load or a position (doc/theory.md §4.6).
-   !> A normal force that only the first patch carries loads it alone ([[solve_normal_stage]]'s
-   !> `used`).
+   !> Number of patches a load may act on (to prepare): the first (deepest) one for a normal force
+   !> or an approach, every patch found for a vertical load, a position or a shared normal force
+   !> (doc/theory.md §4.6). A shared normal force that only the first patch carries loads it
+   !> alone ([[solve_normal_stage]]'s `used`).
    pure integer function loaded_count(load, n_patches) result(n)
       !> The load.
       type(contact_load_type), intent(in) :: load
       !> Patches found by the contact search.
       integer, intent(in) :: n_patches
-      n = n_patches
-      if (load%mode == load_approach) n = 1
+      n = 1
+      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position .or. &
+         load%mode == load_shared_force) n = n_patches
    end function loaded_count
 
    !> Prepare the normal problems of patches n_prepared+1..n (patches 1..n_prepared are
@@ -101,9 +102,9 @@ contains
       end do
    end subroutine prepare_normal_stage
 
-   !> The normal solution for the load on the prepared patches (size loaded_count): an approach
-   !> on the first, a normal force shared as [[share_normal_force]] says, a vertical load or
-   !> position on all.
+   !> The normal solution for the load on the prepared patches (size loaded_count): a normal
+   !> force or an approach on the first, a shared normal force as [[share_normal_force]] says, a
+   !> vertical load or position on all.
    subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used)
       !> The prepared normal problems of the loaded patches.
       type(normal_contact_type), intent(inout) :: contacts(:)
@@ -118,8 +119,8 @@ contains
       !> Starts of the coupling's length iterations for a vertical load or position
       !> (shcontact_normal_coupling's coupling_start_type).
       type(coupling_start_type), intent(inout), optional :: start
-      !> The patches the solution loads, 1..used (default: all of `contacts`): 1 for a normal
-      !> force that only the first patch carries (patches 2.. are then not solved).
+      !> The patches the solution loads, 1..used (all of `contacts` but for a shared normal force
+      !> that only the first patch carries: 1, and patches 2.. are then not solved).
       integer, intent(out), optional :: used
       real(wp) :: vertical
       integer :: n_used
@@ -128,6 +129,8 @@ contains
       n_used = size(contacts)
       select case (load%mode)
       case (load_normal_force)
+         call solve_load(contacts(1), load%value, normal(1), error)
+      case (load_shared_force)
          call share_normal_force(contacts, load%value, normal, dz, n_used, error, start)
       case (load_approach)
          call solve_approach(contacts(1), load%value, normal(1), error)
@@ -140,8 +143,8 @@ contains
       if (present(used)) used = n_used
    end subroutine solve_normal_stage
 
-   !> A prescribed normal force N on a wheel (doc/lobes.md, "A prescribed normal force on
-   !> several patches"): the wheel is one rigid body whose lateral position is given, so its
+   !> A normal force N of the wheel's contact, shared by its patches (load_shared_force;
+   !> doc/lobes.md, "A normal force shared by the patches"): the wheel is one rigid body whose lateral position is given, so its
    !> patches share one rigid vertical approach Δz, as under a vertical load, and N is what they
    !> carry together along their normals, Σ_k N_k = N (CONTACT's module 3 prescribes F_n of its
    !> one patch, which holds every lobe it joins). The first patch is solved alone first
