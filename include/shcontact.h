@@ -115,7 +115,7 @@ extern "C" {
  * material%shear_modulus = 82670.0: 1000.0 <= shear_modulus <= 1000000.0 MPa
  * material%poisson = 0.27 [-]: 0.0 <= poisson < 0.5
  * material%friction = 0.3 [-]: 0.001 <= friction <= 10.0
- * load%mode = 'force': 'force', 'approach', 'vertical'
+ * load%mode = 'force': 'force', 'approach', 'vertical', 'shared-force'
  * load%normal_force = 64700.0: 1.0 <= normal_force <= 1.0e7 N
  * load%approach = 0.05: 0.0 < approach <= 5.0 mm
  * load%vertical_force = 64700.0: 1.0 <= vertical_force <= 1.0e7 N

@@ -25,6 +25,11 @@ module test_prescribed_patches
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_pipeline_stages, only: shared_force_rtol
+   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_input_config, only: case_config_type, case_point_type, load_config
+   use shcontact_case_result, only: case_result_type
+   use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
+      solve_stage, solve_case, case_workspace_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
       contact_result_type, contact_fields_type, load_vertical_force, load_normal_force, &
       load_shared_force
@@ -50,7 +55,8 @@ contains
          new_unittest('left_wheel_mirrors_right', test_left), &
          new_unittest('shared_force_sum', test_force_sum), &
          new_unittest('shared_force_is_a_common_approach', test_force_vertical), &
-         new_unittest('shared_force_single_patch_unchanged', test_force_single)]
+         new_unittest('shared_force_single_patch_unchanged', test_force_single), &
+         new_unittest('program_shared_force_equals_library', test_program_shared)]
    end subroutine collect_prescribed_patches
 
    !> A solver on the built-in profiles for one wheel side and spin model.
@@ -370,5 +376,53 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_force_single
+
+   !> The program's `&load mode = 'shared-force'` (its case runner, as a run solves a case) is
+   !> the library's load_shared_force bit for bit at Y_WS = 5.0 mm with the seed's creepages:
+   !> two loaded patches, the totals, the main patch and the joined contact.
+   subroutine test_program_shared(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(case_config_type) :: config
+      type(case_point_type) :: point
+      type(run_setup_type) :: setup
+      type(stage_type) :: stage
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(case_workspace_type) :: ws
+      type(tangential_patch_type), allocatable :: tangential(:)
+      type(case_result_type) :: app
+      type(lib_error), allocatable :: err
+
+      call load_config('', [character(len=40) :: 'load%mode=shared-force', &
+         'position%t_y=5.0'], config, err)
+      if (.not. allocated(err)) call prepare_run(config, setup, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      point = config%case_point(1)
+      call solve_geometry(setup, point, geometry, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call solve_stage(setup, point, geometry, stage)
+      call solve_case(setup, point, stage, 1, ws, tangential, app, .false.)
+      call check(error, app%summary%stat, 0, message='the case runner failed')
+      if (allocated(error)) return
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call solver%solve(5.0_wp, 0.0_wp, contact_load_type( &
+         load_shared_force, point%normal_force), creepage_type(point%nu_x, point%nu_y, &
+         point%phi), r, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      call check(error, app%summary%n_loaded == 2 .and. r%n_loaded == 2, &
+         message='shared-force: two loaded patches expected')
+      if (allocated(error)) return
+      call check(error, all([app%summary%fn_total, app%summary%fx_total, app%summary%fx, &
+         app%summary%fy, app%summary%fn, app%summary%wheel%fx_norm] == [r%track%fn, &
+         r%track%fx, r%main%fx, r%main%fy, r%main%fn, r%wheel%fx_norm]), &
+         message='the program''s shared force differs from the library''s')
+   end subroutine test_program_shared
 
 end module test_prescribed_patches
