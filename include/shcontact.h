@@ -35,6 +35,7 @@ extern "C" {
 #define SHCONTACT_LOAD_VERTICAL_FORCE 2 /* vertical wheel load (N) shared by all patches */
 #define SHCONTACT_LOAD_APPROACH 3       /* approach (mm) of the deepest patch */
 #define SHCONTACT_LOAD_VERTICAL_POSITION 4 /* vertical approach of the wheel (mm), all patches */
+#define SHCONTACT_LOAD_SHARED_FORCE 5   /* normal force N (N) of the wheel, shared by its patches */
 
 /* Values of one patch (shcontact_patch; also the first values of a result), 0-based (the
  * Fortran include file shcontact.fi has the same, 1-based). Side frame: for a left wheel the
@@ -114,7 +115,7 @@ extern "C" {
  * material%shear_modulus = 82670.0: 1000.0 <= shear_modulus <= 1000000.0 MPa
  * material%poisson = 0.27 [-]: 0.0 <= poisson < 0.5
  * material%friction = 0.3 [-]: 0.001 <= friction <= 10.0
- * load%mode = 'force': 'force', 'approach', 'vertical'
+ * load%mode = 'force': 'force', 'approach', 'vertical', 'shared-force'
  * load%normal_force = 64700.0: 1.0 <= normal_force <= 1.0e7 N
  * load%approach = 0.05: 0.0 < approach <= 5.0 mm
  * load%vertical_force = 64700.0: 1.0 <= vertical_force <= 1.0e7 N

@@ -62,7 +62,7 @@ module shcontact
    ! api
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       patch_result_type, contact_fields_type, load_profile, load_normal_force, &
-      load_vertical_position, &
+      load_vertical_position, load_shared_force, &
       load_vertical_force, load_approach, load_mode_name, max_patches
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
@@ -111,7 +111,8 @@ module shcontact
       state_adhesion, state_slip
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type, &
       contact_fields_type, load_profile, load_normal_force, load_vertical_force, load_approach, &
-      load_vertical_position, load_mode_name, max_patches, patch_value_count, result_value_count, kinematic_value_count, &
+      load_vertical_position, load_shared_force, load_mode_name, max_patches, &
+      patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
    public :: written_builtins, noise_estimate_type, estimate_noise, suggested_smoothing, &
       curvature_noise, rail_cant_type, estimate_rail_cant, default_curvature_tolerance, &

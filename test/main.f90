@@ -55,6 +55,7 @@ program tester
    use test_profile_diagnostics, only: collect_profile_diagnostics
    use test_figures, only: collect_figures
    use test_preset, only: collect_preset
+   use test_prescribed_patches, only: collect_prescribed_patches
    implicit none
 
    integer, parameter :: skipped_stat = 77
@@ -65,6 +66,7 @@ program tester
    suites = [ &
       new_testsuite('testdrive', collect_testdrive), &
       new_testsuite('preset', collect_preset), &
+      new_testsuite('prescribed_patches', collect_prescribed_patches), &
       new_testsuite('layout', collect_layout), &
       new_testsuite('registry', collect_registry), &
       new_testsuite('elliptic', collect_elliptic), &

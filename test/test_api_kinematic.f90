@@ -15,7 +15,8 @@ module test_api_kinematic
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       contact_fields_type, &
-      load_normal_force, load_vertical_force, load_approach, load_vertical_position
+      load_normal_force, load_vertical_force, load_approach, load_vertical_position, &
+      load_shared_force
    use shcontact_api_values, only: kinematic_value_count, kinematic_values, patch_value_count, &
       result_value_count, value_fx, value_fy, value_mz, value_fn, value_fx_norm, &
       value_fy_norm, value_fy_track, value_fz_track, value_approach, value_area, value_p_max, &
@@ -421,6 +422,9 @@ contains
       call check(error, SHC_LOAD_VERTICAL_POSITION, load_vertical_position, &
          message='shcontact.fi SHC_LOAD_VERTICAL_POSITION')
       if (allocated(error)) return
+      call check(error, SHC_LOAD_SHARED_FORCE, load_shared_force, &
+         message='shcontact.fi SHC_LOAD_SHARED_FORCE')
+      if (allocated(error)) return
       call check(error, all([SHC_STATE_EXTERIOR, SHC_STATE_ADHESION, SHC_STATE_SLIP] == &
          int([state_exterior, state_adhesion, state_slip])), &
          message='shcontact.fi element states')
@@ -433,15 +437,15 @@ contains
    !> 0-based), and every define is checked.
    subroutine test_c_header(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), parameter :: names(48) = [character(len=24) :: 'OK', 'USAGE', &
+      character(len=24), parameter :: names(49) = [character(len=24) :: 'OK', 'USAGE', &
          'INVALID_INPUT', 'IO', 'NUMERICAL', 'NO_CONTACT', 'RIGHT', 'LEFT', &
          'LOAD_NORMAL_FORCE', 'LOAD_VERTICAL_FORCE', 'LOAD_APPROACH', 'FX', 'FY', 'MZ', 'FN', &
          'FX_NORM', 'FY_NORM', 'FY_TRACK', 'FZ_TRACK', 'APPROACH', 'AREA', 'P_MAX', 'GAMMA0', &
          'R0', 'Y_TRACK', 'Z_TRACK', 'COULOMB', 'ADHESION', 'PATCH_SIZE', 'N_PATCHES', &
          'N_LOADED', 'MAIN_PATCH', 'SUM_FX', 'SUM_FY', 'SUM_FZ', 'SUM_FN', 'DZ', 'RESULT_SIZE', &
          'NU_X', 'NU_Y', 'PHI', 'X_TRACK', 'LOAD_VERTICAL_POSITION', 'STATE_EXTERIOR', &
-         'STATE_ADHESION', 'STATE_SLIP', 'PROFILE_RAIL', 'PROFILE_WHEEL']
-      integer :: expected(49), found(49), unit, stat, i, value, n_defines
+         'STATE_ADHESION', 'STATE_SLIP', 'PROFILE_RAIL', 'PROFILE_WHEEL', 'LOAD_SHARED_FORCE']
+      integer :: expected(50), found(50), unit, stat, i, value, n_defines
       character(len=256) :: line
       character(len=64) :: word, name
 
@@ -455,7 +459,7 @@ contains
          value_sum_fy - 1, value_sum_fz - 1, value_sum_fn - 1, value_dz - 1, &
          result_value_count, value_nu_x - 1, value_nu_y - 1, value_phi - 1, value_x_track - 1, &
          load_vertical_position, int(state_exterior), int(state_adhesion), int(state_slip), &
-         profile_kind_rail, profile_kind_wheel, kinematic_value_count]
+         profile_kind_rail, profile_kind_wheel, load_shared_force, kinematic_value_count]
       found = huge(1)
       n_defines = 0
       open (newunit=unit, file='include/shcontact.h', status='old', action='read', iostat=stat)

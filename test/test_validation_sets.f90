@@ -171,11 +171,14 @@ contains
    !> rigid slip (ν_x,k = ξ − φ (y_k − y_G), y_k = (y_track,k − y_ref)/cos δ), and the wheel's
    !> Σ F/(μ Σ F_n) against CONTACT's one f of its joined patch: |Δf_x|, |Δf_y| of both
    !> positions' 216 cases.
-   subroutine wheel_sum_errors(reduction, correction, ex, ey, error)
+   subroutine wheel_sum_errors(reduction, correction, ex, ey, error, sum_x, sum_y)
       character(len=*), intent(in) :: reduction
       integer, intent(in) :: correction
       real(wp), allocatable, intent(out) :: ex(:), ey(:)
       type(error_type), allocatable, intent(out) :: error
+      !> The wheel's Σ F_x/(μ Σ F_n), Σ F_y/(μ Σ F_n) of every case (CONTACT's sign), both
+      !> positions in turn.
+      real(wp), allocatable, intent(out), optional :: sum_x(:), sum_y(:)
       character(len=*), parameter :: names(2) = [character(len=6) :: 'yws5p0', 'yws5p3']
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: patches(:)
@@ -188,6 +191,7 @@ contains
       integer :: ip, k, i
 
       allocate (ex(0), ey(0))
+      if (present(sum_x)) allocate (sum_x(0), sum_y(0))
       call recommended_options(options)
       options%correction = correction
       do ip = 1, size(names)
@@ -223,17 +227,28 @@ contains
          end do
          ex = [ex, abs(wx - cases(:, 4))]
          ey = [ey, abs(wy - cases(:, 5))]
+         if (present(sum_x)) then
+            sum_x = [sum_x, wx]
+            sum_y = [sum_y, wy]
+         end if
       end do
    end subroutine wheel_sum_errors
 
    !> Issue 28 item 3 through the API: at Y_WS = 5.0 and 5.3 mm, where CONTACT joins two lobes
    !> into one patch, the solver's joined contact (contact_result_type%wheel,
    !> shcontact_tangential_lobes) holds both patches and its f = ΣF/(μΣF_n) follows CONTACT's one
-   !> f of the joined patch, while the main (most loaded) patch's own f does not. The DOE's cases
-   !> without spin (36 per position; with spin each patch needs the creepages of its own point,
-   !> which the prescribed-creepage call does not carry, doc/lobes.md), the vertical load for
-   !> which Σ F_n = 64.7 kN: max |Δf| of the joined contact ≤ 0.025 (measured 0.0175), of the
-   !> main patch > 0.05 (measured 0.0615).
+   !> f of the joined patch, while the main (most loaded) patch's own f does not. Every case of
+   !> the DOE (216 per position, with spin), under the vertical load for which Σ F_n = 64.7 kN
+   !> (the load steps of the Table-12 comparison, test_validation's two_patch_solution), the
+   !> prescribed creepages given at our first patch's reference point (CONTACT's, carried from
+   !> its point G there by the rigid slip) and carried by the solver to the other patch
+   !> (doc/lobes.md): max |Δf| of the joined contact ≤ 0.025 (measured 0.0223), of the main
+   !> patch > 0.2 (measured 0.442). The joined f is also Table 12's two-lobe comparison's
+   !> ([[wheel_sum_errors]], which carries CONTACT's creepages to each patch's first contact
+   !> through CONTACT's contact plane) within 0.008 (measured 0.0052: the solver measures the
+   !> second patch's distance from the first in the first patch's contact plane, 0.04 mm longer
+   !> (5.0 mm) and 0.15 mm shorter (5.3 mm) than the table's in CONTACT's plane: at φ = 2 1/m
+   !> 0.3‰ of ν_x).
    subroutine test_wheel_contact(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: names(2) = [character(len=6) :: 'yws5p0', 'yws5p3']
@@ -241,15 +256,18 @@ contains
       type(contact_result_type) :: result
       type(track_type) :: track
       type(lib_error), allocatable :: err
-      real(wp), allocatable :: cases(:, :)
+      real(wp), allocatable :: cases(:, :), ex(:), ey(:), sum_x(:), sum_y(:)
       character(len=:), allocatable :: wheel, rail
-      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref, f_z, worst_joined, worst_main
+      real(wp) :: y_ws, y_geo, pen, ycp_r, delt, y_ref, f_z, worst_joined, worst_main, &
+         worst_table, y_1, nux, phi
       integer :: ip, i, it, n
 
       call skip_without_profiles(error)
       if (allocated(error)) return
       wheel = external_file('profiles/MBench_S1002_v3.prw', error)
       if (.not. allocated(error)) rail = external_file('profiles/MBench_UIC60_v3.prr', error)
+      if (allocated(error)) return
+      call wheel_sum_errors('coupled', correction_exact_ellipse, ex, ey, error, sum_x, sum_y)
       if (allocated(error)) return
       track%rail_canted = .true.
       call solver%init(wheel, rail, err, track=track, material=material_type())
@@ -258,6 +276,7 @@ contains
       end if
       worst_joined = 0.0_wp
       worst_main = 0.0_wp
+      worst_table = 0.0_wp
       n = 0
       do ip = 1, size(names)
          call summary_values('data/exact/'//names(ip)//'/summary.csv', y_ws, y_geo, pen, &
@@ -266,18 +285,27 @@ contains
          call read_columns('data/exact/'//names(ip)//'/doe_6x6x6_exact_nonhertz.csv', &
             [character(len=11) :: 'nux', 'nuy', 'phi_1_per_m', 'fx', 'fy'], cases, error)
          if (allocated(error)) return
+         ! The load steps of two_patch_solution, so that the normal solution is the table's.
          f_z = 64700.0_wp
+         do it = 1, 4
+            call solver%solve(y_ws, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
+               creepage_type(), result, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            if (it < 4) f_z = f_z*64700.0_wp/result%track%fn
+         end do
+         ! Our first patch's reference point in CONTACT's local y (as y_k of the table).
+         y_1 = (result%patch(1)%y_track - y_ref)/cos(delt)
          do i = 1, size(cases, 1)
-            if (cases(i, 3) /= 0.0_wp) cycle
-            do it = 1, 4
-               call solver%solve(y_ws, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
-                  creepage_type(-cases(i, 1), -cases(i, 2), 0.0_wp), result, err)
-               if (allocated(err)) then
-                  call test_failed(error, err%message); return
-               end if
-               if (abs(result%wheel%fn - 64700.0_wp) < 1.0_wp) exit
-               f_z = f_z*64700.0_wp/result%wheel%fn
-            end do
+            phi = 1.0e-3_wp*cases(i, 3)
+            nux = cases(i, 1) - phi*(y_1 - y_geo)
+            ! CONTACT's sign (rail relative to wheel): all three flip.
+            call solver%solve(y_ws, 0.0_wp, contact_load_type(load_vertical_force, f_z), &
+               creepage_type(-nux, -cases(i, 2), -phi), result, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
             call check(error, result%n_loaded == 2 .and. result%wheel%n_members == 2, &
                message=names(ip)//': the joined contact should hold both patches')
             if (allocated(error)) return
@@ -287,13 +315,18 @@ contains
                abs(-result%wheel%fy_norm - cases(i, 5)))
             worst_main = max(worst_main, abs(-result%main%fx_norm - cases(i, 4)), &
                abs(-result%main%fy_norm - cases(i, 5)))
+            worst_table = max(worst_table, abs(-result%wheel%fx_norm - sum_x(n)), &
+               abs(-result%wheel%fy_norm - sum_y(n)))
          end do
       end do
-      call check(error, n == 72, message='cases without spin: 72 expected')
+      call check(error, n == 432 .and. size(sum_x) == 432, message='432 cases expected')
       if (allocated(error)) return
-      call check(error, worst_joined <= 0.025_wp .and. worst_main > 0.05_wp, message= &
+      call check(error, worst_joined <= 0.025_wp .and. worst_main > 0.2_wp, message= &
          'max |Delta f| of the joined contact '//str_real(worst_joined)//' (<= 0.025), '// &
-         'of the main patch '//str_real(worst_main)//' (> 0.05)')
+         'of the main patch '//str_real(worst_main)//' (> 0.2)')
+      if (allocated(error)) return
+      call check(error, worst_table <= 0.008_wp, message='max |Delta f| of the joined '// &
+         'contact from Table 12''s wheel sum '//str_real(worst_table)//' (<= 0.008)')
    end subroutine test_wheel_contact
 
    !> shcontact_tangential_lobes on two synthetic patches: a parabolic gap g = y²/(2R) around

@@ -61,7 +61,8 @@ UNITS = {
 }
 
 #: Load modes (SHCONTACT_LOAD_*), by the keyword that gives the load to a solve.
-LOAD_MODES = {"normal_force": 1, "vertical_force": 2, "approach": 3, "vertical_position": 4}
+LOAD_MODES = {"normal_force": 1, "vertical_force": 2, "approach": 3, "vertical_position": 4,
+              "shared_force": 5}
 
 #: Status codes (SHCONTACT_OK, ...).
 STATUS = {"ok": 0, "usage": 1, "invalid_input": 2, "io": 3, "numerical": 5, "no_contact": 6}

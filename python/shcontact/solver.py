@@ -159,16 +159,21 @@ class Contact:
     # --- solving -------------------------------------------------------------------------------
 
     def solve(self, t_y, *, nu_x=0.0, nu_y=0.0, phi=0.0, roll=0.0, normal_force=None,
-              vertical_force=None, approach=None, vertical_position=None, errors="raise"):
+              vertical_force=None, approach=None, vertical_position=None, shared_force=None,
+              errors="raise"):
         """Contact with prescribed creepages (``shcontact_solve``): lateral wheelset shift
         ``t_y`` (mm, CONTACT's Y_WS), creepages ``nu_x``, ``nu_y``, spin ``phi`` (rad/mm), wheelset
         ``roll`` (rad), and exactly one load: ``normal_force`` (N, on the deepest patch),
         ``vertical_force`` (N, the wheel load shared by the patches), ``approach`` (mm, of the
-        deepest patch) or ``vertical_position`` (mm, of the wheel). Arrays broadcast.
+        deepest patch), ``vertical_position`` (mm, of the wheel) or ``shared_force`` (N, the
+        normal force of the wheel's contact, shared by its patches; doc/lobes.md). The creepages
+        are those at the deepest patch's reference point; other loaded patches get the rigid
+        slip at their own. Arrays broadcast.
 
         ``errors="raise"`` raises :class:`ShcontactError` at the first failed case;
         ``errors="nan"`` gives NaN values (0 counts) and the status in ``status``."""
-        mode, load = self._load(normal_force, vertical_force, approach, vertical_position)
+        mode, load = self._load(normal_force, vertical_force, approach, vertical_position,
+                                shared_force)
         inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64)
                                        for v in (t_y, roll, load, nu_x, nu_y, phi)])
         function = self._lib.shcontact_solve
@@ -181,7 +186,7 @@ class Contact:
     def solve_kinematic(self, y_ws, *, v_forward, yaw=0.0, roll=0.0, v_lateral=0.0,
                         v_vertical=0.0, roll_rate=0.0, yaw_rate=0.0, pitch_rate=None,
                         vertical_force=None, normal_force=None, approach=None,
-                        vertical_position=None, errors="raise"):
+                        vertical_position=None, shared_force=None, errors="raise"):
         """One wheel from the wheelset's position and velocities (``shcontact_solve_kinematic``,
         CONTACT's module 1; track frame x forward, y to the right, z down): ``y_ws`` (mm),
         ``yaw``, ``roll`` (rad), ``v_forward`` (> 0), ``v_lateral``, ``v_vertical`` (mm/s),
@@ -189,7 +194,8 @@ class Contact:
         -v_forward / nominal_radius) and one load (``vertical_force``, N, is what a vehicle code
         gives). The result adds the main patch's creepages ``nu_x``, ``nu_y``, ``phi`` and
         ``x_track``. Arrays broadcast; ``errors`` as in :meth:`solve`."""
-        mode, load = self._load(normal_force, vertical_force, approach, vertical_position)
+        mode, load = self._load(normal_force, vertical_force, approach, vertical_position,
+                                shared_force)
         if pitch_rate is None:
             pitch_rate = -np.asarray(v_forward, dtype=np.float64) / self._nominal_radius
         inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
@@ -249,14 +255,15 @@ class Contact:
     _main_patch = 1
 
     @staticmethod
-    def _load(normal_force, vertical_force, approach, vertical_position):
+    def _load(normal_force, vertical_force, approach, vertical_position, shared_force=None):
         given = {name: value for name, value in (
             ("normal_force", normal_force), ("vertical_force", vertical_force),
-            ("approach", approach), ("vertical_position", vertical_position))
-            if value is not None}
+            ("approach", approach), ("vertical_position", vertical_position),
+            ("shared_force", shared_force)) if value is not None}
         if len(given) != 1:
             raise TypeError("shcontact: give exactly one load: normal_force, vertical_force, "
-                            f"approach or vertical_position (got {sorted(given) or 'none'})")
+                            "approach, vertical_position or shared_force "
+                            f"(got {sorted(given) or 'none'})")
         (name, value), = given.items()
         return layout.LOAD_MODES[name], value
 

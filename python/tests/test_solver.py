@@ -183,3 +183,13 @@ def test_preset_option():
         with pytest.raises(shcontact.ShcontactError, match="normal%preset.*'default', 'vehicle'") as info:
             v.set_option("normal%preset", "fast")
         assert info.value.status == layout.STATUS["invalid_input"]
+
+
+def test_shared_force_loads_both_lobes(contact):
+    """The normal force shared by the patches (doc/lobes.md): at t_y = 5.0 mm both patches
+    carry it and their normal forces add up to it; the plain normal force loads the first."""
+    r = contact.solve(5.0, shared_force=64.7e3, nu_x=0.58e-3, phi=2.74e-4)
+    assert r["n_loaded"] == 2 and r["sum_fn"] == pytest.approx(64.7e3, rel=1e-9)
+    assert r["fn"] < 0.9 * 64.7e3
+    plain = contact.solve(5.0, normal_force=64.7e3, nu_x=0.58e-3, phi=2.74e-4)
+    assert plain["n_loaded"] == 1 and plain["fn"] == pytest.approx(64.7e3, rel=1e-10)

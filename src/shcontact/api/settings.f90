@@ -21,13 +21,14 @@ module shcontact_api_settings
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_input_config, only: case_config_type, case_point_type, apply_override, &
-      normal_options_of, tangential_options_of, load_mode_force, load_mode_approach
+      normal_options_of, tangential_options_of, load_mode_force, load_mode_approach, &
+      load_mode_shared
    use shcontact_input_config_types, only: set_origin, track_of, contact_options_of
    use shcontact_input_config_variables, only: variables, find_variable, &
       join_words, k_real, k_real_list, key_use, key_solver, key_state, key_fields, key_creation, &
       key_app
    use shcontact_api_solver, only: contact_load_type, load_normal_force, load_approach, &
-      load_vertical_force
+      load_vertical_force, load_shared_force
    implicit none
    private
 
@@ -83,8 +84,9 @@ contains
       load = point_load(config%load%mode, point)
    end function config_load
 
-   !> The load of a case for load mode `mode` (load_mode_force, load_mode_approach or
-   !> load_mode_vertical: the configuration's `&load mode`) and the case's value; the one translation of the load that
+   !> The load of a case for load mode `mode` (load_mode_force, load_mode_approach,
+   !> load_mode_vertical or load_mode_shared: the configuration's `&load mode`) and the case's
+   !> value; the one translation of the load that
    !> the handles and the program's runner (shcontact_case_runner) share.
    pure function point_load(mode, point) result(load)
       !> `&load mode`.
@@ -97,6 +99,8 @@ contains
          load = contact_load_type(load_normal_force, point%normal_force)
       case (load_mode_approach)
          load = contact_load_type(load_approach, point%approach)
+      case (load_mode_shared)
+         load = contact_load_type(load_shared_force, point%normal_force)
       case default
          load = contact_load_type(load_vertical_force, point%vertical_force)
       end select

@@ -8,11 +8,15 @@
 !> (`src/shcontact/case/runner.f90`) calls (doc/architecture.md):
 !>
 !> 1. contact search at (t_y, roll) → candidate patches, deepest first;
-!> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, or a
+!> 2. normal problem: a prescribed normal force or approach on the first (deepest) patch, a
 !>    prescribed vertical wheel load shared by all patches through one rigid approach
-!>    (doc/theory.md §4.5–4.6);
-!> 3. tangential problem of every loaded patch with the same creepages (prescribed at the
-!>    geometric contact point, doc/theory.md decision 13), forces on the wheel (decision 2);
+!>    (doc/theory.md §4.5–4.6), or a normal force of the wheel's contact shared by its patches
+!>    through one rigid approach (load_shared_force, doc/lobes.md);
+!> 3. tangential problem of every loaded patch with the prescribed creepages: given at the
+!>    first (deepest) patch's reference point, the geometric contact point (doc/theory.md
+!>    decision 13), and carried to every other loaded patch's reference point by the rigid slip
+!>    (shcontact_pipeline_stages's carry_creepage_stage, doc/lobes.md); forces on the wheel
+!>    (decision 2);
 !> 4. summary: the most loaded ("main") patch, every patch, and the totals in the track frame.
 !>
 !> **The call path.** [[solve]] prints nothing, opens no file, touches no global state (the
@@ -46,18 +50,20 @@ module shcontact_api_solver
       spin_additive
    use shcontact_tangential_creepage, only: creepage_type, check_creepage
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach, load_vertical_position, load_mode_name, load_mode_names
+      load_approach, load_vertical_position, load_shared_force, load_mode_name, load_mode_names
    use shcontact_pipeline_result, only: contact_result_type, patch_result_type, &
       contact_fields_type, max_patches
    use shcontact_pipeline_cache, only: contact_cache_type, update_geometry, update_normal, &
       solve_patch, summarise, copy_fields, same, forget_normal
    use shcontact_pipeline_balance, only: kinematic_contact, kinematic_tangential
+   use shcontact_pipeline_stages, only: carry_creepage_stage
    implicit none
    private
 
    public :: contact_solver_type, contact_load_type, contact_result_type, patch_result_type
    public :: contact_fields_type, load_profile
    public :: load_normal_force, load_vertical_force, load_approach, load_vertical_position, &
+      load_shared_force, &
       load_mode_name
    public :: max_patches
 
@@ -204,7 +210,8 @@ contains
       real(wp), intent(in) :: roll
       !> The load: a normal force, a vertical wheel load or an approach.
       type(contact_load_type), intent(in) :: load
-      !> Creepages at the geometric contact point (ν_x, ν_y, φ in rad/mm), wheel relative to rail.
+      !> Creepages at the geometric contact point (ν_x, ν_y, φ in rad/mm), wheel relative to rail:
+      !> the first patch's reference point; other loaded patches get the rigid slip at their own.
       type(creepage_type), intent(in) :: creepage
       !> The forces and the per-patch summary.
       type(contact_result_type), intent(out) :: result
@@ -213,7 +220,8 @@ contains
       !> When present: filled with copies of the geometry, normal and tangential fields.
       type(contact_fields_type), intent(inout), optional :: fields
       type(tangential_options_type) :: options
-      integer :: k
+      type(creepage_type) :: carried(max_patches)
+      integer :: k, n
 
       call check_ready(self, error)
       if (allocated(error)) return
@@ -226,8 +234,12 @@ contains
 
       options = self%cache%tangential_options
       options%fields = present(fields)
-      do k = 1, self%cache%n_loaded
-         call solve_patch(self%cache, k, creepage, options, error)
+      n = self%cache%n_loaded
+      call carry_creepage_stage(self%cache%patches%patch(1:n), self%cache%normal(1:n), &
+         creepage, options%spin_model, self%cache%side, carried(1:n), error)
+      if (allocated(error)) return
+      do k = 1, n
+         call solve_patch(self%cache, k, carried(k), options, error)
          if (allocated(error)) return
       end do
       call summarise(self%cache, result)
@@ -349,7 +361,8 @@ contains
       end if
       if (load%mode < 1 .or. load%mode > size(load_mode_names)) then
          call fatal_error(error, 'load mode = '//str_int(load%mode)//': expected 1 (normal '// &
-            'force), 2 (vertical force), 3 (approach) or 4 (vertical position)', &
+            'force), 2 (vertical force), 3 (approach), 4 (vertical position) or 5 (shared '// &
+            'normal force)', &
             stat_invalid_input)
          return
       end if

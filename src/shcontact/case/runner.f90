@@ -50,7 +50,7 @@ module shcontact_case_runner
    use shcontact_pipeline_load, only: contact_load_type
    use shcontact_pipeline_result, only: contact_result_type, contact_fields_type, max_patches
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
-      solve_patch_stage, summarise_stages
+      solve_patch_stage, summarise_stages, carry_creepage_stage
    use shcontact_input_config, only: case_config_type, case_point_type, load_mode_force
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
@@ -290,7 +290,7 @@ contains
       type(normal_contact_type), allocatable :: contacts(:)
       type(contact_load_type) :: load
       type(error_type), allocatable :: error
-      integer :: n, n_prepared
+      integer :: n, n_prepared, used
 
       stage%geometry = geometry
       load = point_load(setup%load_mode, point)
@@ -300,8 +300,10 @@ contains
       call prepare_normal_stage(geometry, setup%normal, setup%material, contacts, n_prepared, n, &
          error)
       if (failed(stage, error)) return
-      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error)
+      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error, used=used)
       if (failed(stage, error)) return
+      ! A shared normal force that the first patch carries alone loads it alone.
+      if (used < n) stage%normal = stage%normal(1:used)
    end subroutine solve_stage
 
    !> Record an error in the stage; true when there was one.
@@ -353,6 +355,8 @@ contains
          if (size(tangential) < n) deallocate (tangential)
       end if
       if (.not. allocated(tangential)) allocate (tangential(n))
+      call carry_creepage_stage(stage%geometry, stage%normal, creepage, options%spin_model, &
+         setup%position%side, creepages(1:n), error)
       do k = 1, n
          if (allocated(error)) exit
          if (.not. (stage%normal(k)%load > 0.0_wp)) then
@@ -361,14 +365,13 @@ contains
             cycle
          end if
          call solve_patch(ws%patch(k), stage_key, k, n, stage%normal(k), material, options, &
-            creepage, tangential(k), error)
+            creepages(k), tangential(k), error)
       end do
       if (allocated(error)) then
          result%summary%stat = error%stat
          result%message = error%message
          return
       end if
-      creepages(1:n) = creepage
       call summarise_stages(stage%geometry, stage%normal, tangential(1:n), creepages(1:n), &
          setup%position%side, axle_offset(setup%prepared%track), 0.0_wp, stage%dz, &
          material%friction, contact)

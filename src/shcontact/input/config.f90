@@ -31,7 +31,7 @@ module shcontact_input_config
    use shcontact_input_config_types, only: case_config_type, normal_options_of, &
       tangential_options_of, table_step_of
    use shcontact_input_config_choices, only: load_mode_force, load_mode_approach, &
-      load_mode_vertical, curvature_reference, precision_single, precision_double
+      load_mode_vertical, load_mode_shared, curvature_reference, precision_single, precision_double
    use shcontact_input_config_assign, only: read_group_variable, stat_unknown_choice
    use shcontact_input_config_validate, only: validate_config
    use shcontact_input_config_writer, only: config_namelist
@@ -47,7 +47,8 @@ module shcontact_input_config
    public :: path_len, name_len, max_sweep_values
    public :: case_point_value, case_point_label, is_kinematic_input
    public :: normal_options_of, tangential_options_of, table_step_of, read_group_variable, stat_unknown_choice
-   public :: load_mode_force, load_mode_approach, load_mode_vertical, curvature_reference
+   public :: load_mode_force, load_mode_approach, load_mode_vertical, load_mode_shared, &
+      curvature_reference
    public :: precision_single, precision_double
    public :: max_cases, max_grid_cells
 

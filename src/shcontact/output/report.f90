@@ -12,7 +12,7 @@ module shcontact_output_report
    use shcontact_core_strings, only: str_int
    use shcontact_input_config, only: case_config_type, case_point_type, n_sweep_axes, &
       sweep_axis_names, case_point_value, case_point_label, is_kinematic_input, &
-      load_mode_force, load_mode_approach, load_mode_vertical
+      load_mode_force, load_mode_approach, load_mode_vertical, load_mode_shared
    use shcontact_core_text, only: format_real, format_real_buffer, json_string, string_type
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
       summary_value, summary_column_used, failure_type
@@ -117,7 +117,8 @@ contains
       case ('t_y', 'roll', 'friction', 'bound')
          reports_case_input = .true.
       case ('normal_force')
-         reports_case_input = config%load%mode == load_mode_force
+         reports_case_input = config%load%mode == load_mode_force .or. &
+            config%load%mode == load_mode_shared
       case ('approach')
          reports_case_input = config%load%mode == load_mode_approach
       case ('vertical_force')

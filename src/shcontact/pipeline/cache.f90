@@ -191,12 +191,13 @@ contains
    end subroutine prepare_yaw
 
    !> The normal solution for the load, unless it is that of the last call on this geometry.
-   !> Force and approach load the first (deepest) patch, a vertical load all patches.
+   !> Force and approach load the first (deepest) patch, a vertical load all patches, a shared
+   !> normal force those that touch (shcontact_pipeline_stages's solve_normal_stage).
    subroutine update_normal(self, load, error)
       type(contact_cache_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load
       type(error_type), allocatable, intent(out) :: error
-      integer :: n
+      integer :: n, used
 
       if (self%has_normal .and. load%mode == self%load%mode .and. &
          same(load%value, self%load%value)) return
@@ -207,13 +208,14 @@ contains
       if (allocated(error)) return
       if (self%warm_coupling) then
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
-            self%coupling_start)
+            self%coupling_start, used=used)
       else
-         call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error)
+         call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
+            used=used)
       end if
       if (allocated(error)) return
       self%load = load
-      self%n_loaded = n
+      self%n_loaded = used
       self%has_normal = .true.
    end subroutine update_normal
 

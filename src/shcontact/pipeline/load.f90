@@ -1,12 +1,12 @@
-!> The load of one contact solve: its mode (a normal force, a vertical wheel load, an approach or
-!> a vertical position) and its value.
+!> The load of one contact solve: its mode (a normal force, a vertical wheel load, an approach, a
+!> vertical position or a normal force shared by the wheel's patches) and its value.
 module shcontact_pipeline_load
    use shcontact_core_kinds, only: wp
    implicit none
    private
 
    public :: contact_load_type, load_normal_force, load_vertical_force, load_approach, &
-      load_vertical_position, load_mode_name, load_mode_names
+      load_vertical_position, load_shared_force, load_mode_name, load_mode_names
 
    !> Load mode: normal force N (N) on the first (deepest) patch.
    integer, parameter :: load_normal_force = 1
@@ -17,12 +17,16 @@ module shcontact_pipeline_load
    !> Load mode: vertical position, the rigid vertical approach Δz (mm) of the wheel from first
    !> contact, shared by all patches (doc/theory.md §4.6).
    integer, parameter :: load_vertical_position = 4
-   character(len=*), parameter :: load_mode_names(4) = [character(len=17) :: 'normal force', &
-      'vertical force', 'approach', 'vertical position']
+   !> Load mode: normal force N (N) of the wheel's contact, shared by its patches through one
+   !> rigid vertical approach, Σ_k N_k = N (doc/lobes.md, "A normal force shared by the patches").
+   integer, parameter :: load_shared_force = 5
+   character(len=*), parameter :: load_mode_names(5) = [character(len=19) :: 'normal force', &
+      'vertical force', 'approach', 'vertical position', 'shared normal force']
 
    !> The load of one solve.
    type :: contact_load_type
-      !> [[load_normal_force]], [[load_vertical_force]] or [[load_approach]].
+      !> [[load_normal_force]], [[load_vertical_force]], [[load_approach]],
+      !> [[load_vertical_position]] or [[load_shared_force]].
       integer :: mode = load_normal_force
       !> The force (N, > 0) or the approach (mm).
       real(wp) :: value = 0.0_wp

@@ -3,10 +3,13 @@
 !> runner (shcontact_case_runner, which shares them between the cases of a sweep):
 !>
 !> 1. geometry: the contact search (shcontact_geometry_contact) gives the candidate patches;
-!> 2. normal: [[prepare_normal_stage]] prepares the normal problem of the loaded patches
-!>    ([[loaded_count]]: the first one for a normal force or an approach, all for a vertical
-!>    load or position), [[solve_normal_stage]] solves it for the load (doc/theory.md §4.5–4.6);
-!> 3. tangential: [[solve_patch_stage]] solves one loaded patch for its creepages;
+!> 2. normal: [[prepare_normal_stage]] prepares the normal problem of the patches the load may
+!>    reach ([[loaded_count]]: the first one for a normal force or an approach, all for a
+!>    vertical load, a position or a shared normal force), [[solve_normal_stage]] solves it for
+!>    the load (doc/theory.md §4.5–4.6; a shared normal force as [[share_normal_force]] says);
+!> 3. tangential: [[carry_creepage_stage]] gives every loaded patch its prescribed creepages
+!>    (given at the first patch's reference point, carried to the others by the rigid slip,
+!>    doc/lobes.md), [[solve_patch_stage]] solves one loaded patch for its creepages;
 !> 4. summary: [[summarise_stages]] turns the stage results into the per-patch values, the main
 !>    (most loaded) patch, the track-frame totals and the wheel's joined contact (the patches
 !>    the exact theory joins into one, shcontact_tangential_lobes, doc/lobes.md) of a
@@ -16,7 +19,7 @@
 !> same case, bit for bit (test_app's app = library tests, both wheels).
 module shcontact_pipeline_stages
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, prefix_error
+   use shcontact_core_error, only: error_type, prefix_error, fatal_error, stat_numerical
    use shcontact_core_material, only: material_type
    use shcontact_core_strings, only: str_int
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -31,28 +34,35 @@ module shcontact_pipeline_stages
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_solver, only: solve_tangential
+   use shcontact_tangential_spin, only: carried_creepages
    use shcontact_tangential_lobes, only: join_lobes
    use shcontact_pipeline_load, only: contact_load_type, load_normal_force, load_vertical_force, &
-      load_approach, load_vertical_position
+      load_approach, load_vertical_position, load_shared_force
    use shcontact_pipeline_result, only: contact_result_type, max_patches
    implicit none
    private
 
-   public :: loaded_count, prepare_normal_stage, solve_normal_stage, solve_patch_stage, &
-      reference_axle_of, summarise_stages
+   public :: loaded_count, prepare_normal_stage, solve_normal_stage, carry_creepage_stage, &
+      solve_patch_stage, reference_axle_of, summarise_stages
+
+   !> Relative accuracy of Σ_k N_k = N for a normal force shared by several patches
+   !> ([[share_normal_force]]; doc/lobes.md).
+   real(wp), parameter, public :: shared_force_rtol = 1.0e-9_wp
 
 contains
 
-   !> Number of patches a load acts on: the first (deepest) one for a normal force or an
-   !> approach, every patch found for a vertical load or position (doc/theory.md §4.6).
+   !> Number of patches a load may act on (to prepare): the first (deepest) one for a normal force
+   !> or an approach, every patch found for a vertical load, a position or a shared normal force
+   !> (doc/theory.md §4.6). A shared normal force that only the first patch carries loads it
+   !> alone ([[solve_normal_stage]]'s `used`).
    pure integer function loaded_count(load, n_patches) result(n)
       !> The load.
       type(contact_load_type), intent(in) :: load
       !> Patches found by the contact search.
       integer, intent(in) :: n_patches
       n = 1
-      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position) &
-         n = n_patches
+      if (load%mode == load_vertical_force .or. load%mode == load_vertical_position .or. &
+         load%mode == load_shared_force) n = n_patches
    end function loaded_count
 
    !> Prepare the normal problems of patches n_prepared+1..n (patches 1..n_prepared are
@@ -93,8 +103,9 @@ contains
    end subroutine prepare_normal_stage
 
    !> The normal solution for the load on the prepared patches (size loaded_count): a normal
-   !> force or an approach on the first, a vertical load or position on all.
-   subroutine solve_normal_stage(contacts, load, normal, dz, error, start)
+   !> force or an approach on the first, a shared normal force as [[share_normal_force]] says, a
+   !> vertical load or position on all.
+   subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used)
       !> The prepared normal problems of the loaded patches.
       type(normal_contact_type), intent(inout) :: contacts(:)
       !> The load.
@@ -108,12 +119,19 @@ contains
       !> Starts of the coupling's length iterations for a vertical load or position
       !> (shcontact_normal_coupling's coupling_start_type).
       type(coupling_start_type), intent(inout), optional :: start
+      !> The patches the solution loads, 1..used (all of `contacts` but for a shared normal force
+      !> that only the first patch carries: 1, and patches 2.. are then not solved).
+      integer, intent(out), optional :: used
       real(wp) :: vertical
+      integer :: n_used
 
       dz = 0.0_wp
+      n_used = size(contacts)
       select case (load%mode)
       case (load_normal_force)
          call solve_load(contacts(1), load%value, normal(1), error)
+      case (load_shared_force)
+         call share_normal_force(contacts, load%value, normal, dz, n_used, error, start)
       case (load_approach)
          call solve_approach(contacts(1), load%value, normal(1), error)
       case (load_vertical_position)
@@ -122,7 +140,128 @@ contains
       case default
          call solve_vertical_load(contacts, load%value, normal, dz, error, start)
       end select
+      if (present(used)) used = n_used
    end subroutine solve_normal_stage
+
+   !> A normal force N of the wheel's contact, shared by its patches (load_shared_force;
+   !> doc/lobes.md, "A normal force shared by the patches"): the wheel is one rigid body whose lateral position is given, so its
+   !> patches share one rigid vertical approach Δz, as under a vertical load, and N is what they
+   !> carry together along their normals, Σ_k N_k = N (CONTACT's module 3 prescribes F_n of its
+   !> one patch, which holds every lobe it joins). The first patch is solved alone first
+   !> (solve_load, the single-patch solve): when no other patch touches at the Δz where it
+   !> carries N (δ_k = Δz cos γ_k − g₀,k at or below its first contact), that is the solution and
+   !> `used` = 1. Otherwise the vertical load F_z for which the coupled solution's Σ_k N_k = N
+   !> (to [[shared_force_rtol]]), by secant steps in ln F_z (Σ N_k/F_z, about 1/cos γ, varies
+   !> slowly with F_z), each a vertical-load solve (solve_vertical_load).
+   subroutine share_normal_force(contacts, force, normal, dz, used, error, start)
+      !> The prepared patches, the first (deepest) first.
+      type(normal_contact_type), intent(inout) :: contacts(:)
+      !> Normal force N (N).
+      real(wp), intent(in) :: force
+      !> The normal solution of each patch (1..used filled).
+      type(normal_patch_type), intent(inout) :: normal(:)
+      !> Rigid vertical approach Δz of the wheel (mm) when shared, else 0.
+      real(wp), intent(out) :: dz
+      !> The patches loaded: 1, or all of them.
+      integer, intent(out) :: used
+      !> Set when the load cannot be carried or Σ N_k does not converge.
+      type(error_type), allocatable, intent(out) :: error
+      !> Starts of the coupling's length iterations.
+      type(coupling_start_type), intent(inout), optional :: start
+      integer, parameter :: max_steps = 40
+      real(wp) :: dz_first, x, x_old, r, r_old, step
+      integer :: k, it
+      logical :: shared
+
+      dz = 0.0_wp
+      used = 1
+      call solve_load(contacts(1), force, normal(1), error)
+      if (allocated(error) .or. size(contacts) < 2) return
+      associate (g => contacts(1)%geometry)
+         if (.not. (cos(g%gamma0) > 0.0_wp)) return
+         dz_first = (normal(1)%approach + g%gap0)/cos(g%gamma0)
+      end associate
+      shared = .false.
+      do k = 2, size(contacts)
+         associate (g => contacts(k)%geometry)
+            shared = shared .or. (cos(g%gamma0) > 0.0_wp .and. &
+               dz_first*cos(g%gamma0) - g%gap0 > g%approach_touch)
+         end associate
+      end do
+      if (.not. shared) return
+      used = size(contacts)
+      ! r(x) = ln Σ N_k − ln N at F_z = e^x; the first step takes dr/dx = 1.
+      x = log(force*cos(contacts(1)%geometry%gamma0))
+      x_old = 0.0_wp
+      r_old = 0.0_wp
+      do it = 1, max_steps
+         call solve_vertical_load(contacts, exp(x), normal, dz, error, start)
+         if (allocated(error)) return
+         r = log(sum(normal%load)/force)
+         if (abs(sum(normal%load) - force) <= shared_force_rtol*force) return
+         step = -r
+         if (it > 1 .and. r /= r_old) step = -r*(x - x_old)/(r - r_old)
+         x_old = x
+         r_old = r
+         x = x + step
+      end do
+      call fatal_error(error, 'normal force shared by the patches: their sum did not '// &
+         'converge to the prescribed normal force', stat_numerical)
+   end subroutine share_normal_force
+
+   !> The prescribed creepages of every loaded patch (doc/lobes.md, "Prescribed creepages on
+   !> several patches"). They are the rigid slip of the wheel relative to the rail at the
+   !> reference point of the first (deepest) patch, the wheel's geometric contact point
+   !> (doc/theory.md decision 13), and that patch gets them as given. Every other loaded patch
+   !> gets the slip of the same rigid wheel at its own reference point:
+   !> shcontact_tangential_spin's carried_creepages with its lateral distance y_k from the
+   !> first reference point in the first patch's contact plane (the plane in which that patch's
+   !> strips are placed), its own contact angle and rolling radius; under the default spin model
+   !> ('uniform') ν_x,k = ν_x − φ y_k, ν_y,k = ν_y, φ_k = φ, CONTACT's rigid slip of one joined
+   !> patch. The prescribed-creepage calls have no yaw, so every reference point lies at x = 0.
+   !> One wheel's patches are in its own side frame (y towards its field side).
+   pure subroutine carry_creepage_stage(geometry, normal, creepage, model, side, carried, error)
+      !> The patches of the contact search (at least the loaded ones).
+      type(patch_geometry_type), intent(in) :: geometry(:)
+      !> The normal solutions of the loaded patches (n_loaded).
+      type(normal_patch_type), intent(in) :: normal(:)
+      !> The prescribed creepages (ν_x, ν_y, φ in rad/mm) at the first patch's reference point.
+      type(creepage_type), intent(in) :: creepage
+      !> Spin model, `spin_*` of shcontact_tangential_options.
+      integer, intent(in) :: model
+      !> side_right or side_left (geometry's y_track is in the track frame).
+      integer, intent(in) :: side
+      !> The creepages of each loaded patch (at least n_loaded; an unloaded one gets those given).
+      type(creepage_type), intent(inout) :: carried(:)
+      !> Set by the scaled spin model without geometric spin at the first reference point.
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: y1, z1, dy, dz, gamma0, r0, cos_p, sin_p
+      integer :: k
+
+      carried(1:size(normal)) = creepage
+      if (count(normal(2:)%load > 0.0_wp) == 0) return
+      y1 = side*geometry(1)%y_track + normal(1)%lateral_offset()
+      z1 = geometry(1)%z_track + normal(1)%vertical_offset()
+      cos_p = cos(geometry(1)%gamma0)
+      sin_p = sin(geometry(1)%gamma0)
+      gamma0 = geometry(1)%gamma0
+      r0 = geometry(1)%r0
+      if (normal(1)%load > 0.0_wp) then
+         gamma0 = normal(1)%gamma0
+         r0 = normal(1)%r0
+      end if
+      do k = 2, size(normal)
+         if (.not. (normal(k)%load > 0.0_wp)) cycle
+         dy = side*geometry(k)%y_track + normal(k)%lateral_offset() - y1
+         dz = geometry(k)%z_track + normal(k)%vertical_offset() - z1
+         call carried_creepages(model, creepage, dy*cos_p + dz*sin_p, gamma0, r0, &
+            normal(k)%gamma0, normal(k)%r0, carried(k), error)
+         if (allocated(error)) then
+            call prefix_error(error, 'patch 1')
+            return
+         end if
+      end do
+   end subroutine carry_creepage_stage
 
    !> The tangential problem of loaded patch k of n for its creepages; nothing for a patch that
    !> carries no load.

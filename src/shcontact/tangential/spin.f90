@@ -24,15 +24,25 @@
 !> rolling-radius profile). ν_xi is returned split as ν_xi = ν_x,c − φ_x·y_i: the "creep" part
 !> ν_x,c and the rigid-spin part φ_x, because the two may build up with different flexibilities
 !> (option `spin_flexibility`).
+!>
+!> **Other patches of the same wheel** ([[carried_creepages]], doc/lobes.md). Prescribed
+!> creepages are the rigid slip of the wheel relative to the rail at one point, the reference
+!> point of the first (deepest) patch. Another patch of the same wheel is more of the same
+!> surface: it gets the slip the same model gives a strip at its reference point, a lateral
+!> distance y_k from that point in its contact plane, with its own γ_k and r_k. Under the
+!> default 'uniform' this is the planar rigid slip of CONTACT's joined patch,
+!> (ν_x − φ y_k, ν_y, φ); under 'additive' the spin also changes with the contact angle,
+!> φ_k = φ + (sin γ_k − sin γ₀)/r₀, as a rolling wheel's does.
 module shcontact_tangential_spin
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_tangential_options, only: spin_uniform, spin_scaled, spin_geometric
+   use shcontact_tangential_creepage, only: creepage_type
    implicit none
    private
 
    public :: geometric_spin, strip_spin_terms, local_creepages, scaled_spin_factor, &
-      min_geometric_spin
+      min_geometric_spin, carried_creepages
 
    !> Smallest |φ_geo,0| (rad/mm) accepted by the scaled spin model.
    real(wp), parameter :: min_geometric_spin = 1.0e-9_wp
@@ -146,5 +156,44 @@ contains
          phi_loc = phi + dphi_geo
       end select
    end subroutine local_creepages
+
+   !> The creepages at another point of the same wheel (module text): those the spin model
+   !> gives a strip there, ν_x,k = ν_x,c − φ_x y_k, ν_y,k, φ_k of [[local_creepages]] with the
+   !> point's lateral distance y_k, contact angle γ_k and rolling-radius change r_k − r₀.
+   !> Under 'uniform' (ν_x − φ y_k, ν_y, φ). At y_k = 0, γ_k = γ₀, r_k = r₀ the creepages are
+   !> those given.
+   pure subroutine carried_creepages(model, creepage, lateral, gamma0, r0, gamma, radius, &
+         carried, error)
+      !> Spin model, `spin_*` of shcontact_tangential_options.
+      integer, intent(in) :: model
+      !> Creepages at the reference point (ν_x, ν_y, φ in rad/mm).
+      type(creepage_type), intent(in) :: creepage
+      !> Lateral distance y_k of the point from the reference point in the reference contact
+      !> plane (mm, towards the field side).
+      real(wp), intent(in) :: lateral
+      !> Contact angle γ₀ (rad, CONTACT's sign) and rolling radius r₀ (mm, > 0) at the reference
+      !> point.
+      real(wp), intent(in) :: gamma0, r0
+      !> Contact angle γ_k (rad, |γ_k| < π/2) and rolling radius r_k (mm) at the point.
+      real(wp), intent(in) :: gamma, radius
+      !> The creepages at the point.
+      type(creepage_type), intent(out) :: carried
+      !> Set by the scaled model when φ_geo,0 vanishes ([[scaled_spin_factor]]).
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: phi_geo, dphi_geo, cos_ratio, phi_geo0, rho, lambda, nu_x_creep, phi_x
+
+      phi_geo0 = geometric_spin(gamma0, r0)
+      call strip_spin_terms(gamma, sin(gamma0), cos(gamma0), r0, phi_geo, dphi_geo, cos_ratio)
+      rho = (radius - r0)/r0 - phi_geo0*lateral
+      lambda = 0.0_wp
+      if (model == spin_scaled) then
+         call scaled_spin_factor(creepage%phi, phi_geo0, lambda, error)
+         if (allocated(error)) return
+      end if
+      call local_creepages(model, creepage%nu_x, creepage%nu_y, creepage%phi, lambda, &
+         cos_ratio, phi_geo, dphi_geo, rho, phi_geo0, nu_x_creep, phi_x, carried%nu_y, &
+         carried%phi)
+      carried%nu_x = nu_x_creep - phi_x*lateral
+   end subroutine carried_creepages
 
 end module shcontact_tangential_spin

@@ -14,7 +14,7 @@ module shcontact_input_config_choices
    public :: precision_choices, sweep_mode_choices, format_choices, mirror_choices, field_choices
    public :: side_right, side_left
    public :: kinematics_off, kinematics_on
-   public :: load_mode_force, load_mode_vertical, load_mode_approach
+   public :: load_mode_force, load_mode_vertical, load_mode_approach, load_mode_shared
    public :: curvature_local, curvature_reference
    public :: precision_double, precision_single
    public :: sweep_grid, sweep_list
@@ -23,7 +23,8 @@ module shcontact_input_config_choices
    integer, parameter :: kinematics_off = 1, kinematics_on = 2
    !> `&load mode`; the codes are those of the library's `contact_load_type` (`load_normal_force`,
    !> `load_vertical_force`, `load_approach` of shcontact_api_solver; test `registry`).
-   integer, parameter :: load_mode_force = 1, load_mode_vertical = 2, load_mode_approach = 3
+   integer, parameter :: load_mode_force = 1, load_mode_vertical = 2, load_mode_approach = 3, &
+      load_mode_shared = 4
    !> `&normal longitudinal_curvature`: γ(y) or γ₀ in A(y).
    integer, parameter :: curvature_local = 1, curvature_reference = 2
    !> `&output precision` of the per-element fields.
@@ -43,7 +44,9 @@ module shcontact_input_config_choices
    type(choice_type), parameter :: load_mode_choices(*) = [ &
       choice_type('force', load_mode_force, 'normal force on the first (deepest) patch'), &
       choice_type('approach', load_mode_approach, 'rigid approach of that patch'), &
-      choice_type('vertical', load_mode_vertical, 'vertical wheel load shared by all patches')]
+      choice_type('vertical', load_mode_vertical, 'vertical wheel load shared by all patches'), &
+      choice_type('shared-force', load_mode_shared, &
+      'normal force shared by the patches that touch (sum = normal_force)')]
    !> `&normal longitudinal_curvature`.
    type(choice_type), parameter :: curvature_choices(*) = [ &
       choice_type('local', curvature_local, 'A(y) = cos(gamma(y))/(2 r_w)'), &

@@ -23,7 +23,7 @@ module shcontact_input_config_validate
    use shcontact_input_config_variables, only: variable_choices
    use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
       load_mode_choices, load_mode_force, load_mode_approach, &
-      load_mode_vertical, sweep_list
+      load_mode_vertical, sweep_list, load_mode_shared
    use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
    use shcontact_tangential_option_registry, only: method_fastsim, spin_additive, &
       spin_model_choices
@@ -439,7 +439,7 @@ contains
       integer, intent(in) :: mode
       select case (name)
       case ('normal_force')
-         load_axis_matches = mode == load_mode_force
+         load_axis_matches = mode == load_mode_force .or. mode == load_mode_shared
       case ('approach')
          load_axis_matches = mode == load_mode_approach
       case default
