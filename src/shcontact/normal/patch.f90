@@ -49,8 +49,13 @@ module shcontact_normal_patch
       real(wp), allocatable :: m(:), n(:)
       !> Local penetration split ε_a,i (dimensionless).
       real(wp), allocatable :: eps_a(:)
-      !> Local contact angle γ_i (rad).
+      !> Local contact angle γ_i (rad): the wheel surface's (its spin, its rolling radius).
       real(wp), allocatable :: gamma(:)
+      !> Direction of the strip's pressure γ_n,i (rad, CONTACT's sign): the angle of the
+      !> deformed interface, midway between the undeformed surfaces (doc/theory.md §4.5); the
+      !> strip's normal and tangential forces are resolved in the track frame with it. A table
+      !> built without it (unallocated) is resolved with γ_i.
+      real(wp), allocatable :: gamma_n(:)
       !> Rolling-radius variation δr_i = r_w(y_i) − r₀ (mm).
       real(wp), allocatable :: delta_r(:)
       !> Local wheel rolling radius r_w,i (mm).
@@ -91,8 +96,8 @@ contains
       p0 = 1.5_wp*load/(pi*semi_a*semi_b)
       allocate (patch%y(n_strips), patch%a(n_strips), patch%k(n_strips), patch%p0(n_strips), &
          patch%strip_load(n_strips), patch%m(n_strips), patch%n(n_strips), &
-         patch%eps_a(n_strips), patch%gamma(n_strips), patch%delta_r(n_strips), &
-         patch%r_wheel(n_strips))
+         patch%eps_a(n_strips), patch%gamma(n_strips), patch%gamma_n(n_strips), &
+         patch%delta_r(n_strips), patch%r_wheel(n_strips))
       do i = 1, n_strips
          eta = (2.0_wp*i - 1.0_wp)/n_strips - 1.0_wp
          patch%y(i) = eta*semi_b
@@ -105,6 +110,7 @@ contains
       patch%n = semi_b/semi_a
       patch%eps_a = 0.5_wp
       patch%gamma = 0.0_wp
+      patch%gamma_n = 0.0_wp
       patch%delta_r = 0.0_wp
       patch%r_wheel = r0
       patch%load = sum(patch%strip_load)

@@ -24,7 +24,7 @@ module shcontact_tangential_fastsim_sh
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
-      bound_ellipsoidal, spin_flexibility_spin, corrected_model
+      bound_ellipsoidal, spin_flexibility_spin, corrected_model, pressure_interface
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
       prepare_ellipse_correction
    use shcontact_tangential_creepage, only: creepage_type
@@ -129,8 +129,9 @@ contains
             ws%cos_ratio(s))
          ws%rho(s) = patch%delta_r(i)/r0 - ws%phi_geo0*y
          ws%strip_normal(s) = strip_load
-         ws%sin_gamma(s) = sin(patch%gamma(i))
-         ws%cos_gamma(s) = cos(patch%gamma(i))
+         ! The strip's forces act along and across the surface of [[pressure_angle]].
+         ws%sin_gamma(s) = sin(pressure_angle(i))
+         ws%cos_gamma(s) = cos(pressure_angle(i))
 
          ws%load = ws%load + strip_load
          ws%parabolic_load_ratio = ws%parabolic_load_ratio + k*strip_load
@@ -161,6 +162,18 @@ contains
       end if
 
    contains
+
+      !> The direction of strip i's pressure: the wheel's γ_i, or with `pressure_direction =
+      !> 'interface'` the interface's γ_n,i where the normal solution gave it (not on a strip
+      !> table made by hand).
+      pure real(wp) function pressure_angle(i)
+         integer, intent(in) :: i
+         pressure_angle = patch%gamma(i)
+         if (options%pressure_direction /= pressure_interface) return
+         if (allocated(patch%gamma_n)) then
+            if (size(patch%gamma_n) >= patch%n_strips) pressure_angle = patch%gamma_n(i)
+         end if
+      end function pressure_angle
 
       !> Σ N_s v_s / Σ N_s over the loaded strips.
       pure real(wp) function load_mean(v)
