@@ -51,10 +51,10 @@ module shcontact_normal_patch
       real(wp), allocatable :: eps_a(:)
       !> Local contact angle γ_i (rad): the wheel surface's (its spin, its rolling radius).
       real(wp), allocatable :: gamma(:)
-      !> Direction of the strip's pressure γ_n,i (rad, CONTACT's sign): the angle of the
-      !> deformed interface, midway between the undeformed surfaces (doc/theory.md §4.5); the
-      !> strip's normal and tangential forces are resolved in the track frame with it. A table
-      !> built without it (unallocated) is resolved with γ_i.
+      !> The interface's angle γ_n,i (rad, CONTACT's sign): the deformed interface lies midway
+      !> between the undeformed surfaces (doc/geometry.md, "The direction of the pressure"). With
+      !> `&tangential pressure_direction = 'interface'` the strip's forces are resolved in the
+      !> track frame with it; a table built without it (unallocated) is resolved with γ_i.
       real(wp), allocatable :: gamma_n(:)
       !> Rolling-radius variation δr_i = r_w(y_i) − r₀ (mm).
       real(wp), allocatable :: delta_r(:)

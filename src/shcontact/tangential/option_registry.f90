@@ -117,8 +117,8 @@ module shcontact_tangential_option_registry
    integer, parameter :: default_spin_model = spin_uniform
    integer, parameter :: default_spin_flexibility = spin_flexibility_longitudinal
    integer, parameter :: default_correction = correction_exact_ellipse
-   !> 'wheel': 'interface' moves the flange normal forces by ±3 % but not nearer the exact
-   !> theory on every position (doc/validation.md §6.7).
+   !> 'wheel': 'interface' moves the flange normal forces by up to 3.5 %, but not nearer the
+   !> exact theory on every position (doc/validation.md §6.8).
    integer, parameter :: default_pressure_direction = pressure_wheel
    !> Elements per strip n_x (decision 11): the default and range of `tangential%n_elements` in
    !> the variable table (shcontact_core_ranges).
