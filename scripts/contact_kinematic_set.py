@@ -12,7 +12,7 @@ VS = 2000 mm/s) but the profiles and the grid:
   --pair worn   the project's synthetic worn pair, data/profiles/worn/ (scripts/worn_profiles.py).
 
 Kinematic set k = (xi_k, eta_k, omega_k): VY = eta_k VS, VYAW = omega_k VS / 750 mm,
-VPITCH = -(VS/R0)(1 + xi_k); the six sets of the sample, numbered 1..6:
+VPITCH = -(VS/R)(1 + xi_k) with R = R0 or --pitch-radius; the six sets of the sample, numbered 1..6:
 (0,0,0), (1e-3,0,0), (0,1e-3,0), (0,0,1e-3), (-1e-3,-1e-3,0), (1e-3,1e-3,1e-3).
 
 --approach planar (CONTACT's D = 2, the sample's) or conformal (D = 4).
@@ -70,11 +70,11 @@ def profiles(pair, workdir):
     return names
 
 
-def deck(y, yaw, kset, rail, wheel, approach):
+def deck(y, yaw, kset, rail, wheel, approach, pitch_radius):
     xi, eta, omega = SETS[kset - 1]
     vy = eta * cr.VS
     vyaw = omega * cr.VS / HALF_BASE
-    vpitch = -(cr.VS / cr.RNOM) * (1.0 + xi)
+    vpitch = -(cr.VS / pitch_radius) * (1.0 + xi)
     text = cr.module1_deck(y, FZ, vpitch, rail, wheel, 0.0)
     pos = re.compile(r'^(\s*0\.0\s+\S+\s+\S+\s+\S+\s+)0\.0(\s+0\.0\s+S, Y, FZ, ROLL, YAW, PITCH)',
                      re.M)
@@ -127,6 +127,9 @@ def main():
     ap.add_argument('--sets', default='1,2,3,4,5,6')
     ap.add_argument('--approach', default='planar', choices=('planar', 'conformal'))
     ap.add_argument('--workdir', default=None)
+    ap.add_argument('--pitch-radius', type=float, default=cr.RNOM,
+                    help='mm: the pitch rate is -(VS/R)(1 + xi_k) (default R0 = 460 mm); the '
+                         'rolling radius of the centred wheelset makes it roll freely there')
     ap.add_argument('--reuse', action='store_true',
                     help='take a case from WORKDIR/CASE.out where CONTACT already ended there '
                          'with the same deck')
@@ -141,7 +144,7 @@ def main():
                 k += 1
                 name = 'c%04d' % k
                 text, (xi, eta, omega, vy, vyaw, vpitch) = deck(y, yaw, kset, rail, wheel,
-                                                                a.approach)
+                                                                a.approach, a.pitch_radius)
                 inp, log = (os.path.join(work, name + e) for e in ('.inp', '.log'))
                 if (a.reuse and os.path.exists(inp) and open(inp).read() == text
                         and os.path.exists(log) and 'ended succesfully' in open(log).read()):

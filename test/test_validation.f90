@@ -42,7 +42,7 @@ module test_validation
    public :: collect_validation, percentile, read_columns, manchester_profiles, &
       summary_values, &
       skip_without_profiles, two_patch_solution, position_errors, recommended_options, &
-      exact_positions
+      exact_positions, reference_patch, summary_value
 
    !> Files of the external data (SHCONTACT_EXTERNAL_DATA, test_external_data).
    character(len=*), parameter :: mbench_wheel = 'profiles/MBench_S1002_v3.prw', &
@@ -1028,12 +1028,23 @@ contains
       character(len=*), intent(in) :: path
       real(wp), intent(out) :: y_ws, y_geo, pen, ycp_r, delt, ycp_tr
       type(error_type), allocatable, intent(out) :: error
-      character(len=512) :: line
-      character(len=64) :: key
-      real(wp) :: value
-      integer :: unit, stat, comma, found
+      call summary_value(path, 'y_ws', y_ws, error)
+      if (.not. allocated(error)) call summary_value(path, 'y_geo', y_geo, error)
+      if (.not. allocated(error)) call summary_value(path, 'pen', pen, error)
+      if (.not. allocated(error)) call summary_value(path, 'ycp_r', ycp_r, error)
+      if (.not. allocated(error)) call summary_value(path, 'delt', delt, error)
+      if (.not. allocated(error)) call summary_value(path, 'ycp_tr', ycp_tr, error)
+   end subroutine summary_values
 
-      found = 0
+   !> One value of a summary.csv (key,value,unit,note; CONTACT runs' summaries).
+   subroutine summary_value(path, key, value, error)
+      character(len=*), intent(in) :: path, key
+      real(wp), intent(out) :: value
+      type(error_type), allocatable, intent(out) :: error
+      character(len=512) :: line
+      integer :: unit, stat, comma, last
+
+      value = 0.0_wp
       open (newunit=unit, file=path, status='old', action='read', iostat=stat)
       if (stat /= 0) then
          call test_failed(error, path//': cannot open')
@@ -1044,24 +1055,16 @@ contains
          if (stat /= 0) exit
          comma = index(line, ',')
          if (comma < 2) cycle
-         key = line(1:comma - 1)
-         line = line(comma + 1:)
-         comma = index(line, ',')
-         if (comma < 2) cycle
-         read (line(1:comma - 1), *, iostat=stat) value
-         if (stat /= 0) cycle
-         select case (trim(key))
-         case ('y_ws'); y_ws = value; found = found + 1
-         case ('y_geo'); y_geo = value; found = found + 1
-         case ('pen'); pen = value; found = found + 1
-         case ('ycp_r'); ycp_r = value; found = found + 1
-         case ('delt'); delt = value; found = found + 1
-         case ('ycp_tr'); ycp_tr = value; found = found + 1
-         end select
+         if (line(1:comma - 1) /= key) cycle
+         last = index(line(comma + 1:), ',')
+         if (last == 0) last = len_trim(line(comma + 1:)) + 1
+         read (line(comma + 1:comma + last - 1), *, iostat=stat) value
+         close (unit)
+         if (stat /= 0) call test_failed(error, path//': '//key//' is not a number')
+         return
       end do
       close (unit)
-      if (found /= 6) call test_failed(error, path//': expected y_ws, y_geo, pen, ycp_r, delt '// &
-         'and ycp_tr')
-   end subroutine summary_values
+      call test_failed(error, path//': no key '//key)
+   end subroutine summary_value
 
 end module test_validation

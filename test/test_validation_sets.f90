@@ -20,7 +20,8 @@ module test_validation_sets
    use shcontact_tangential_march, only: march_workspace_type, solve_prepared
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use test_validation, only: percentile, read_columns, summary_values, position_errors, &
-      recommended_options, two_patch_solution, exact_positions, skip_without_profiles
+      recommended_options, two_patch_solution, exact_positions, skip_without_profiles, &
+      reference_patch, summary_value
    use test_external_data, only: external_file
    use shcontact_geometry_track, only: track_type
    use shcontact_tangential_lobes, only: joined_lobes_type, join_lobes
@@ -58,12 +59,63 @@ module test_validation_sets
 
 contains
 
+   !> doc/validation/patches_normal.md (doc/validation.md §6.6, issue 28's normal goal): our
+   !> p_max and area (defaults, 100 strips, F_n = 64.7 kN) against CONTACT's pressure grid at the
+   !> 19 single-lobe positions of data/exact/ (in exact_positions' order) and the shared ty0 and
+   !> ty5p8, held to the table's relative differences within ±0.3 points (so its counts within
+   !> 10 % and 5 % too).
+   subroutine test_normal_every_position(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: dp(21) = [-0.3_wp, -0.3_wp, -0.2_wp, -0.3_wp, 11.7_wp, 2.2_wp, &
+         10.0_wp, 0.0_wp, 7.0_wp, -1.6_wp, -1.2_wp, -0.7_wp, -0.3_wp, -0.5_wp, -0.8_wp, -0.4_wp, &
+         -1.0_wp, -2.1_wp, 0.3_wp, 5.9_wp, -1.3_wp]
+      real(wp), parameter :: da(21) = [-1.1_wp, -0.5_wp, -0.4_wp, -2.6_wp, -2.0_wp, -3.7_wp, &
+         -4.9_wp, -6.1_wp, -6.8_wp, -2.2_wp, 1.0_wp, 0.9_wp, 0.5_wp, -1.1_wp, -0.5_wp, 0.1_wp, &
+         -0.9_wp, 2.4_wp, -6.6_wp, -1.6_wp, 1.3_wp]
+      type(normal_patch_type) :: patch
+      real(wp), allocatable :: grid(:, :)
+      real(wp) :: y_ws, y_ref, got(2, 21)
+      character(len=:), allocatable :: dir
+      integer :: k
+
+      call skip_without_profiles(error)
+      if (allocated(error)) return
+      do k = 1, size(dp)
+         if (k <= size(exact_positions)) then
+            dir = 'data/exact/'//trim(exact_positions(k))//'/'
+         else
+            dir = external_file('reference/'//trim(merge('ty0_literal  ', 'ty5p8_literal', &
+               k == 20))//'/', error)
+            if (allocated(error)) return
+         end if
+         call summary_value(dir//'summary.csv', 'y_ws', y_ws, error)
+         if (.not. allocated(error)) call summary_value(dir//'summary.csv', 'ycp_tr', y_ref, &
+            error)
+         if (allocated(error)) return
+         call read_columns(dir//'grid_module3_exact_nonhertz.csv', &
+            [character(len=6) :: 'pn_MPa'], grid, error)
+         if (allocated(error)) return
+         call reference_patch(patch, error, y_ws=y_ws, y_ref=y_ref)
+         if (allocated(error)) return
+         ! CONTACT's elements are 0.2 × 0.2 mm (its summary's grid_dx, grid_dy).
+         got(:, k) = 100.0_wp*[patch%p_max/maxval(grid(:, 1)) - 1.0_wp, &
+            patch%area/(0.04_wp*count(grid(:, 1) > 0.0_wp)) - 1.0_wp]
+         call check(error, abs(got(1, k) - dp(k)) <= 0.3_wp .and. abs(got(2, k) - da(k)) <= &
+            0.3_wp, message=dir//': p_max, area against CONTACT (%) '// &
+            str_real(got(1, k))//', '//str_real(got(2, k))//'; the table '//str_real(dp(k))// &
+            ', '//str_real(da(k)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_normal_every_position
+
+
    !> Collect the tests.
    subroutine collect_validation_sets(testsuite)
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [new_unittest('project_positions_pooled_vs_exact', test_pooled), &
          new_unittest('two_lobe_wheel_contact_vs_joined_exact', test_wheel_contact), &
-         new_unittest('join_lobes_rule', test_join_rule)]
+         new_unittest('join_lobes_rule', test_join_rule), &
+         new_unittest('normal_pmax_area_every_position', test_normal_every_position)]
    end subroutine collect_validation_sets
 
    !> The three data/exact rows of the table, each configuration.

@@ -47,7 +47,7 @@ module validate_kinematic
    private
 
    public :: run_kinematic, kinematic_case_type, kinematic_group_type, solve_sample, &
-      group_statistics
+      group_statistics, ftext, itext
 
    !> The sample's vertical wheel load (N), README.
    real(wp), parameter :: vertical_load = 64700.0_wp

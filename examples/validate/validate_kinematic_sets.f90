@@ -15,10 +15,13 @@ module validate_kinematic_sets
    use, intrinsic :: iso_fortran_env, only: output_unit
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, track_type, &
       material_type, contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force, wheelset_state_type
+      load_vertical_force, wheelset_state_type, normal_options_type, new_normal_options, &
+      tangential_options_type
+   use shcontact_tangential_options, only: parse_correction
    use validate_csv, only: csv_table_type, read_csv, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
    use validate_sets, only: pool_errors
+   use validate_kinematic, only: ftext, itext
    implicit none
    private
 
@@ -79,13 +82,15 @@ module validate_kinematic_sets
 
 contains
 
-   !> Solve every set present, pool its errors into the summary of every set (validate_sets)
-   !> and write kinematic_sets.csv and kinematic_sets.md to out_dir.
+   !> Solve every set present, pool its errors into the summary of every set (validate_sets;
+   !> the defaults and the main alternatives, normal reduction `local-hertz` and correction
+   !> `none`) and write kinematic_sets.csv and kinematic_sets.md (defaults) to out_dir.
    subroutine run_kinematic_sets(out_dir, error)
       character(len=*), intent(in) :: out_dir
       type(error_type), allocatable, intent(out) :: error
       type(set_patches_type) :: s(n_kinematic_sets)
       logical :: there(n_kinematic_sets)
+      type(set_patches_type) :: alt
       type(csv_writer_type) :: out
       integer :: k, i
 
@@ -94,10 +99,13 @@ contains
          if (.not. there(k)) cycle
          call solve_kinematic_set(kinematic_sets(k), s(k), error)
          if (allocated(error)) return
-         associate (ok => s(k)%members > 0)
-            call pool_errors(trim(kinematic_sets(k)%label), 1, pack(abs(s(k)%fx - &
-               s(k)%fx_ref), ok), pack(abs(s(k)%fy - s(k)%fy_ref), ok), s(k)%f_max)
-         end associate
+         call pool_set(kinematic_sets(k), s(k), 1)
+         call solve_kinematic_set(kinematic_sets(k), alt, error, reduction='local-hertz')
+         if (allocated(error)) return
+         call pool_set(kinematic_sets(k), alt, 2)
+         call solve_kinematic_set(kinematic_sets(k), alt, error, correction='none')
+         if (allocated(error)) return
+         call pool_set(kinematic_sets(k), alt, 3)
          write (output_unit, '(a,i0,a,i0,a)') 'kinematic set '//trim(kinematic_sets(k)%file)// &
             ': ', s(k)%n_cases, ' cases, ', s(k)%n, ' CONTACT patches'
       end do
@@ -120,11 +128,26 @@ contains
       call write_markdown(out_dir//'kinematic_sets.md', s, there, error)
    end subroutine run_kinematic_sets
 
-   !> Solve one set and compare every CONTACT patch (module text).
-   subroutine solve_kinematic_set(set, s, error)
+   !> The matched patches' errors to the summary of every set, configuration config.
+   subroutine pool_set(set, s, config)
+      type(kinematic_set_type), intent(in) :: set
+      type(set_patches_type), intent(in) :: s
+      integer, intent(in) :: config
+      logical :: ok(s%n)
+      ok = s%members > 0
+      call pool_errors(trim(set%label), config, pack(abs(s%fx - s%fx_ref), ok), &
+         pack(abs(s%fy - s%fy_ref), ok), s%f_max)
+   end subroutine pool_set
+
+   !> Solve one set and compare every CONTACT patch (module text); the defaults, or another
+   !> normal reduction or correction.
+   subroutine solve_kinematic_set(set, s, error, reduction, correction)
       type(kinematic_set_type), intent(in) :: set
       type(set_patches_type), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in), optional :: reduction, correction
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
       type(csv_table_type) :: table
       type(contact_solver_type) :: solver
       type(track_type) :: track
@@ -164,8 +187,13 @@ contains
       ! 14 mm, flange-back distance 1360 mm at −70 mm, R₀ = 460 mm), the rail canted in the
       ! profile; G = 82670 MPa, ν = 0.27, μ = 0.3.
       track%rail_canted = .true.
+      if (present(reduction)) call new_normal_options(normal, error, reduction=reduction)
+      if (allocated(error)) return
+      if (present(correction)) call parse_correction(correction, tangential%correction, error)
+      if (allocated(error)) return
       call solver%init(trim(set%wheel), trim(set%rail), error, track=track, &
-         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=friction))
+         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=friction), &
+         normal_options=normal, tangential_options=tangential)
       if (allocated(error)) return
       call allocate_patches(s, count(table%cells(:, j_status) == 'ok'))
       s%n = 0
@@ -301,13 +329,13 @@ contains
          call group_keys(s(k), keys)
          do g = 1, size(keys, 2)
             call table_row(unit, s(k), abs(s(k)%y_ws - keys(1, g)) < 1.0e-9_wp .and. &
-               abs(s(k)%yaw - keys(2, g)) < 1.0e-12_wp, 'Y_WS '//fixed(keys(1, g), 2)// &
-               ' mm, yaw '//fixed(1.0e3_wp*keys(2, g), 0)//' mrad')
+               abs(s(k)%yaw - keys(2, g)) < 1.0e-12_wp, 'Y_WS '//ftext(keys(1, g), 2)// &
+               ' mm, yaw '//ftext(1.0e3_wp*keys(2, g), 0)//' mrad')
          end do
          call table_row(unit, s(k), s(k)%y_ws == s(k)%y_ws, '**all**')
          write (unit, '(a,i0,a,i0,a,i0,a,a,a)') '', s(k)%n_cases, ' cases solved (', &
             s(k)%n_failed, ' failed in CONTACT), ', s(k)%n_extra, ' extra patches of ours; '// &
-            'largest |f| of our patches ', fixed(s(k)%f_max, 5), '.'
+            'largest |f| of our patches ', ftext(s(k)%f_max, 5), '.'
          write (unit, '(a)') ''
       end do
       close (unit)
@@ -341,8 +369,8 @@ contains
       character(len=*), intent(in) :: label
       logical :: m(s%n)
       m = in_group .and. s%members > 0
-      write (unit, '(a)') '| '//label//' | '//whole(count(in_group))//' | '// &
-         whole(count(in_group .and. s%members == 0))//' | '// &
+      write (unit, '(a)') '| '//label//' | '//itext(count(in_group))//' | '// &
+         itext(count(in_group .and. s%members == 0))//' | '// &
          pair(error_stats(pack(abs(s%fx - s%fx_ref), m)), 3)//' | '// &
          pair(error_stats(pack(abs(s%fy - s%fy_ref), m)), 3)//' | '// &
          pair(error_stats(pack(abs(s%fn - s%fn_ref)/s%fn_ref, m)), 3)//' | '// &
@@ -355,29 +383,7 @@ contains
       type(error_stats_type), intent(in) :: e
       integer, intent(in) :: decimals
       character(len=:), allocatable :: text
-      text = fixed(e%max, decimals)//' ; '//fixed(e%p80, decimals)
+      text = ftext(e%max, decimals)//' ; '//ftext(e%p80, decimals)
    end function pair
-
-   function fixed(x, decimals) result(text)
-      real(wp), intent(in) :: x
-      integer, intent(in) :: decimals
-      character(len=:), allocatable :: text
-      character(len=32) :: buf
-      character(len=8) :: fmt
-      write (fmt, '(a,i0,a)') '(f0.', decimals, ')'
-      write (buf, fmt) x
-      if (buf(1:1) == '.') buf = '0'//buf
-      if (buf(1:2) == '-.') buf = '-0'//buf(2:)
-      if (decimals == 0) buf = buf(1:len_trim(buf) - 1)
-      text = trim(buf)
-   end function fixed
-
-   function whole(i) result(text)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: text
-      character(len=16) :: buf
-      write (buf, '(i0)') i
-      text = trim(buf)
-   end function whole
 
 end module validate_kinematic_sets

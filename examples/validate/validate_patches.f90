@@ -12,7 +12,7 @@ module validate_patches
       prepared_profiles_type, patch_geometry_type, normal_patch_type, find_contact_patches, &
       wheelset_position_type, tangential_options_type, parse_bound, parse_spin_model
    use shcontact_tangential_options, only: parse_spin_flexibility, parse_correction
-   use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type
+   use validate_csv, only: csv_table_type, read_csv, summary_value, csv_writer_type, column
    use validate_case, only: solve_normal, reference_material
    use validate_normal, only: reference_pressure_patch, write_strips
    use validate_tangential, only: case_set_type, read_case_set, solve_set, error_stats_type, &
@@ -104,6 +104,7 @@ contains
       integer :: n_cases(size(patch_names))
       type(csv_writer_type) :: out
       character(len=48) :: cells(10)
+      real(wp) :: normal(4, size(patch_names))
       integer :: ip, ic
 
       ! The order of the summary's rows (validate_sets).
@@ -115,9 +116,12 @@ contains
       do ip = 1, size(patch_names)
          call run_patch(patch_dir(ref_root, ip), prepared, out_dir// &
             'patches_strips_'//trim(patch_names(ip)), ex(:, ip), ey(:, ip), bx(:, ip), &
-            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error, ip)
+            by(:, ip), cost(:, ip), fmax(:, ip), doe_names(ip), n_cases(ip), error, ip, &
+            normal(:, ip))
          if (allocated(error)) return
       end do
+      call write_normal(out_dir, normal, error)
+      if (allocated(error)) return
       call out%open(out_dir//'patches_doe.csv', 'patch,doe,configuration,bound,spin_model,'// &
          'spin_flexibility,flexibility,reduction,pressure,correction,n_cases,dfx_max,dfx_p80,'// &
          'dfx_mean,dfx_bias,dfy_max,dfy_p80,dfy_mean,dfy_bias,f_max,us_per_case', &
@@ -153,7 +157,7 @@ contains
    !> One patch: geometry, normal solution per reduction, the DOE per configuration; the strip
    !> tables of our default patch and of CONTACT's pressure to strips_base_{ours,contact}.csv.
    subroutine run_patch(ref_dir, prepared, strips_base, ex, ey, bx, by, cost, fmax, doe_name, &
-      n, error, ip)
+      n, error, ip, normal)
       character(len=*), intent(in) :: ref_dir
       type(prepared_profiles_type), intent(in) :: prepared
       character(len=*), intent(in) :: strips_base
@@ -170,6 +174,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> The patch's index in patch_names (its set in the summary).
       integer, intent(in) :: ip
+      !> The normal contact under F_n = 64.7 kN, ours (the defaults) and CONTACT's: p_max ours,
+      !> CONTACT's (MPa), area ours, CONTACT's (mm²: its elements with p_n > 0); −1 without
+      !> CONTACT's pressure grid.
+      real(wp), intent(out) :: normal(4)
       type(csv_table_type) :: summary
       type(patch_geometry_type) :: geometry
       type(normal_patch_type) :: patch, default_patch, contact_patch, coupled_patch
@@ -262,7 +270,30 @@ contains
          end if
          by(ic) = sum((fy - set%fy)*sign(1.0_wp, set%fy))/n
       end do
+      normal = -1.0_wp
+      if (has_grid) call normal_against_grid(ref_dir, summary, coupled_patch, normal, error)
    end subroutine run_patch
+
+   !> Our p_max and area beside CONTACT's from its pressure grid (run_patch's `normal`).
+   subroutine normal_against_grid(ref_dir, summary, patch, normal, error)
+      character(len=*), intent(in) :: ref_dir
+      type(csv_table_type), intent(in) :: summary
+      type(normal_patch_type), intent(in) :: patch
+      real(wp), intent(out) :: normal(4)
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_table_type) :: grid
+      real(wp), allocatable :: pn(:)
+      real(wp) :: dx, dy
+
+      normal = -1.0_wp
+      call summary_value(summary, 'grid_dx', dx, error)
+      if (.not. allocated(error)) call summary_value(summary, 'grid_dy', dy, error)
+      if (.not. allocated(error)) call read_csv(ref_dir//'grid_module3_exact_nonhertz.csv', &
+         grid, error)
+      if (.not. allocated(error)) call column(grid, 'pn_MPa', pn, error)
+      if (allocated(error)) return
+      normal = [patch%p_max, maxval(pn), patch%area, count(pn > 0.0_wp)*dx*dy]
+   end subroutine normal_against_grid
 
    !> The folder of patch ip: ../shared/reference/<name>/ for the shared ones, data/exact/<name>/.
    function patch_dir(ref_root, ip) result(dir)
@@ -314,6 +345,59 @@ contains
       options%n_elements = 50
       options%fields = .false.
    end subroutine options_of
+
+   !> patches_normal.csv and patches_normal.md: p_max and area, ours (defaults, F_n = 64.7 kN)
+   !> and CONTACT's, at every position with CONTACT's pressure grid, and how many are within
+   !> 10 % and 5 % (issue 28's goal: 21/21 and 18/21).
+   subroutine write_normal(out_dir, normal, error)
+      character(len=*), intent(in) :: out_dir
+      real(wp), intent(in) :: normal(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_writer_type) :: out
+      real(wp) :: dp(size(normal, 2)), da(size(normal, 2))
+      logical :: has(size(normal, 2))
+      integer :: ip, unit, stat
+
+      has = normal(2, :) > 0.0_wp
+      where (has)
+         dp = normal(1, :)/normal(2, :) - 1.0_wp
+         da = normal(3, :)/normal(4, :) - 1.0_wp
+      elsewhere
+         dp = 0.0_wp
+         da = 0.0_wp
+      end where
+      call out%open(out_dir//'patches_normal.csv', 'patch,p_max_MPa,p_max_contact_MPa,'// &
+         'area_mm2,area_contact_mm2,dp_rel,darea_rel', error)
+      if (allocated(error)) return
+      do ip = 1, size(patch_names)
+         if (.not. has(ip)) cycle
+         call out%row([normal(:, ip), dp(ip), da(ip)], text=[patch_names(ip)], digits=5)
+      end do
+      call out%close()
+      open (newunit=unit, file=out_dir//'patches_normal.md', status='replace', action='write', &
+         iostat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, out_dir//'patches_normal.md: cannot write')
+         return
+      end if
+      write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
+         'release` (patches_normal.csv) -->', '', 'Normal contact under F_n = 64.7 kN, the '// &
+         'defaults against CONTACT (module 3, exact):', '', &
+         '| position | p_max ours (MPa) | CONTACT | Δ | area ours (mm²) | CONTACT | Δ |', &
+         '|---|---|---|---|---|---|---|'
+      do ip = 1, size(patch_names)
+         if (.not. has(ip)) cycle
+         write (unit, '(a,2(" | ",i0," | ",i0," | ",sp,f5.1,"%",ss)," |")') &
+            '| '//trim(patch_names(ip)), nint(normal(1:2, ip)), 1.0e2_wp*dp(ip), &
+            nint(normal(3:4, ip)), 1.0e2_wp*da(ip)
+      end do
+      write (unit, '(a,i0,a,i0,a,i0,a,i0,a,i0,a)') '', count(has), ' positions: p_max within '// &
+         '10 % at ', count(has .and. abs(dp) <= 0.1_wp), ', within 5 % at ', &
+         count(has .and. abs(dp) <= 0.05_wp), '; area within 10 % at ', &
+         count(has .and. abs(da) <= 0.1_wp), ', within 5 % at ', &
+         count(has .and. abs(da) <= 0.05_wp), '.'
+      close (unit)
+   end subroutine write_normal
 
    !> patches_doe.md: first the positions as rows against the defaults and the main alternatives
    !> ([[summary_configs]]; doc/validation.md Table 10), then every configuration as a row.

@@ -94,10 +94,10 @@ contains
             load_i = patch%strip_load(i)
             set%yc(g) = set%yc(g) + load_i*patch%y(i)
             set%ac(g) = set%ac(g) + load_i*patch%a(i)
-            ! δ_i = k_i² δ = δ − g_i/ε_b,i (doc/theory.md §4.3 step 3): the interpenetration
-            ! δ − g_i of the strip, its gap below the patch's approach.
+            ! δ_i = k_i² δ_ref = δ − g_i/ε_b,i (doc/theory.md §4.3 step 3): the
+            ! interpenetration δ − g_i of the strip, its gap below the patch's approach.
             set%gc(g) = set%gc(g) + load_i*(patch%approach - (1.0_wp - patch%eps_a(i))* &
-               patch%approach*(1.0_wp - patch%k(i)**2))
+               (patch%approach - patch%k(i)**2*patch%approach_reference))
             set%wc(g) = set%wc(g) + load_i*patch%gamma(i)
             set%local(g) = set%local(g) + load_i
          end do

@@ -20,6 +20,10 @@ module shcontact_normal_patch
       real(wp) :: ellipse_y_centre = 0.0_wp
       !> Approach δ of the patch (mm).
       real(wp) :: approach = 0.0_wp
+      !> The penetration the strips' k_i are measured against (mm): k_i² = δ_i/δ_ref with
+      !> δ_ref = max(δ, max_i δ_i), the approach unless a strip beside the reference point
+      !> penetrates deeper (the vertical approach's tilt can do that, even with δ ≤ 0).
+      real(wp) :: approach_reference = 0.0_wp
       !> Total normal force Σ N_i (N).
       real(wp) :: load = 0.0_wp
       !> Contact area Σ 2 a_i dy (mm²).

@@ -379,7 +379,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       integer :: i, c, n
-      real(wp) :: y_lo, dy, t, delta_i, a_max
+      real(wp) :: y_lo, dy, t, delta_i, a_max, reference
       logical :: touching
 
       n = options%n_strips
@@ -399,7 +399,8 @@ contains
          patch%y(i) = y_lo + (i - 0.5_wp)*dy
          call strip_load(prepared, e_star, approach, patch%y(i), dy, c, t, delta_i, &
             patch%eps_a(i), patch%a(i), patch%p0(i), patch%strip_load(i))
-         patch%k(i) = sqrt(delta_i/approach)
+         ! δ_i for now; k_i = √(δ_i/δ_ref) below.
+         patch%k(i) = delta_i
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
          patch%gamma(i) = lerp(prepared%gamma, c, t)
@@ -408,6 +409,16 @@ contains
          patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
          a_max = max(a_max, patch%a(i))
       end do
+      ! k_i against the deepest penetration: the approach at the reference point, unless the
+      ! vertical approach's tilt takes a strip beside it deeper (then k_i ≤ 1 all the same, and
+      ! with δ ≤ 0 there is no 0/0).
+      reference = max(approach, maxval(patch%k(1:n)))
+      patch%approach_reference = reference
+      if (reference > 0.0_wp) then
+         patch%k(1:n) = sqrt(patch%k(1:n)/reference)
+      else
+         patch%k(1:n) = 0.0_wp
+      end if
       ! Decision 6: without a local ellipse, k_i is measured against the longest strip.
       if (options%reduction == reduction_constant .and. a_max > 0.0_wp) &
          patch%k(1:n) = patch%a(1:n)/a_max
@@ -697,6 +708,7 @@ contains
       patch%ellipse_b = sol%b
       patch%ellipse_y_centre = 0.0_wp
       patch%approach = sol%approach
+      patch%approach_reference = sol%approach
       dy = 2.0_wp*sol%b/n_strips
       patch%dy = dy
       do i = 1, n_strips
@@ -763,6 +775,7 @@ contains
       patch%ellipse_b = 0.0_wp
       patch%ellipse_y_centre = 0.0_wp
       patch%approach = 0.0_wp
+      patch%approach_reference = 0.0_wp
       patch%load = 0.0_wp
       patch%area = 0.0_wp
       patch%p_max = 0.0_wp

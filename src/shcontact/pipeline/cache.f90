@@ -281,6 +281,7 @@ contains
       dst%ellipse_b = src%ellipse_b
       dst%ellipse_y_centre = src%ellipse_y_centre
       dst%approach = src%approach
+      dst%approach_reference = src%approach_reference
       dst%load = src%load
       dst%area = src%area
       dst%p_max = src%p_max
