@@ -2,7 +2,7 @@
 !> direction of the pressure"): the interface angle γ_n = γ₀ + atan(w' + g'/2) of the prepared
 !> table and of the strips against its closed form on an asymmetric polynomial gap, and the
 !> flange normal forces of the kinematic flange set's pure-rolling cases (CONTACT's conformal
-!> approach, data/exact/kinematic_flange/) with both choices, held to doc/validation.md §6.7's
+!> approach, data/exact/kinematic_flange/) with both choices, held to doc/validation.md §6.8's
 !> table. Needs nothing outside the repository.
 module test_pressure_direction
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
@@ -33,7 +33,7 @@ module test_pressure_direction
 
    !> The pure-rolling cases of kinematic_conformal.csv (Y_WS mm, yaw mrad) and (F_n,ours −
    !> F_n,CONTACT)/F_n,CONTACT with `pressure_direction` 'wheel' and 'interface' (the table of
-   !> doc/validation.md §6.7), held within ±tolerance.
+   !> doc/validation.md §6.8), held within ±tolerance.
    integer, parameter :: n_cases = 15
    real(wp), parameter :: held_wheel(n_cases) = [0.0012_wp, 0.0041_wp, 0.0051_wp, &
       0.0420_wp, 0.0213_wp, 0.0150_wp, 0.0325_wp, 0.0183_wp, 0.0144_wp, &
@@ -117,7 +117,7 @@ contains
    end function interface_slope
 
    !> The flange set's pure-rolling cases with both choices: the relative F_n differences of
-   !> doc/validation.md §6.7 within ±0.002; 'interface' brings Y_WS 8.5 mm, yaw −8 mrad within
+   !> doc/validation.md §6.8 within ±0.002; 'interface' brings Y_WS 8.5 mm, yaw −8 mrad within
    !> 1.2 % of CONTACT's conformal F_n where 'wheel' is 4.4 % low, and moves no F_n by more than
    !> 4 %.
    subroutine test_flange_forces(error)
