@@ -134,7 +134,7 @@ extern "C" {
  * tangential%spin_model = 'uniform': 'additive', 'uniform', 'scaled', 'geometric'
  * tangential%spin_flexibility = 'longitudinal': 'longitudinal', 'spin'
  * tangential%correction = 'exact-ellipse': 'exact-ellipse', 'none'
- * tangential%pressure_direction = 'wheel': 'wheel', 'interface'
+ * tangential%contact_surface = 'wheel': 'wheel', 'interface'
  * tangential%n_elements = 50: 2 <= n_elements <= 100000
  * -- end options --
  */

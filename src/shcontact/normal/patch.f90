@@ -53,12 +53,13 @@ module shcontact_normal_patch
       real(wp), allocatable :: m(:), n(:)
       !> Local penetration split ε_a,i (dimensionless).
       real(wp), allocatable :: eps_a(:)
-      !> Local contact angle γ_i (rad): the wheel surface's (its spin, its rolling radius).
+      !> Local contact angle γ_i (rad): the wheel surface's (its rolling radius, A, the tilt).
       real(wp), allocatable :: gamma(:)
       !> The interface's angle γ_n,i (rad, CONTACT's sign): the deformed interface lies midway
       !> between the undeformed surfaces (doc/geometry.md, "The direction of the pressure"). With
-      !> `&tangential pressure_direction = 'interface'` the strip's forces are resolved in the
-      !> track frame with it; a table built without it (unallocated) is resolved with γ_i.
+      !> `&tangential contact_surface = 'interface'` the strip's forces are resolved in the
+      !> track frame, and its spin taken, with it; a table built without it (unallocated) uses
+      !> γ_i.
       real(wp), allocatable :: gamma_n(:)
       !> Rolling-radius variation δr_i = r_w(y_i) − r₀ (mm).
       real(wp), allocatable :: delta_r(:)

@@ -1,10 +1,10 @@
-!> The direction of the strips' pressure (`&tangential pressure_direction`, doc/geometry.md "The
+!> The direction of the strips' pressure (`&tangential contact_surface`, doc/geometry.md "The
 !> direction of the pressure"): the interface angle γ_n = γ₀ + atan(w' + g'/2) of the prepared
 !> table and of the strips against its closed form on an asymmetric polynomial gap, and the
 !> flange normal forces of the kinematic flange set's pure-rolling cases (CONTACT's conformal
 !> approach, data/exact/kinematic_flange/) with both choices, held to doc/validation.md §6.8's
 !> table. Needs nothing outside the repository.
-module test_pressure_direction
+module test_contact_surface
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
    use shcontact_core_strings, only: str_real
@@ -16,15 +16,15 @@ module test_pressure_direction
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
-   use shcontact_tangential_options, only: tangential_options_type, pressure_wheel, &
-      pressure_interface
+   use shcontact_tangential_options, only: tangential_options_type, surface_wheel, &
+      surface_interface
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
       contact_result_type, load_vertical_force
    use test_semihertz, only: polynomial_patch
    use test_validation, only: read_columns
    implicit none
    private
-   public :: collect_pressure_direction
+   public :: collect_contact_surface
 
    !> The asymmetric gap g = B₀y² + c₃y³ (1/mm, 1/mm²), the wheel's slope w' = k y in the table's
    !> frame (1/mm) and its contact angle γ₀ (rad), as on a flange (doc/geometry.md).
@@ -32,27 +32,27 @@ module test_pressure_direction
       gamma_flange = -1.2_wp, spacing = 0.01_wp
 
    !> The pure-rolling cases of kinematic_conformal.csv (Y_WS mm, yaw mrad) and (F_n,ours −
-   !> F_n,CONTACT)/F_n,CONTACT with `pressure_direction` 'wheel' and 'interface' (the table of
+   !> F_n,CONTACT)/F_n,CONTACT with `contact_surface` 'wheel' and 'interface' (the table of
    !> doc/validation.md §6.8), held within ±tolerance.
    integer, parameter :: n_cases = 15
    real(wp), parameter :: held_wheel(n_cases) = [0.0012_wp, 0.0041_wp, 0.0051_wp, &
       0.0420_wp, 0.0213_wp, 0.0150_wp, 0.0325_wp, 0.0183_wp, 0.0144_wp, &
       -0.0182_wp, 0.0000_wp, 0.0011_wp, -0.0438_wp, -0.0182_wp, -0.0041_wp]
-   real(wp), parameter :: held_interface(n_cases) = [0.0003_wp, 0.0039_wp, 0.0053_wp, &
-      0.0412_wp, 0.0198_wp, 0.0152_wp, 0.0329_wp, 0.0185_wp, 0.0146_wp, &
-      0.0172_wp, 0.0156_wp, 0.0118_wp, -0.0088_wp, 0.0032_wp, 0.0091_wp]
+   real(wp), parameter :: held_interface(n_cases) = [0.0003_wp, 0.0040_wp, 0.0053_wp, &
+      0.0423_wp, 0.0198_wp, 0.0149_wp, 0.0342_wp, 0.0185_wp, 0.0143_wp, &
+      0.0282_wp, 0.0156_wp, 0.0086_wp, 0.0000_wp, 0.0031_wp, 0.0059_wp]
    real(wp), parameter :: tolerance = 0.002_wp
    real(wp), parameter :: vertical_load = 64700.0_wp, mu = 0.3_wp
 
 contains
 
    !> Collect the tests.
-   subroutine collect_pressure_direction(testsuite)
+   subroutine collect_contact_surface(testsuite)
       type(unittest_type), allocatable, intent(out) :: testsuite(:)
       testsuite = [ &
          new_unittest('interface_angle_closed_form', test_closed_form), &
          new_unittest('flange_normal_forces', test_flange_forces)]
-   end subroutine collect_pressure_direction
+   end subroutine collect_contact_surface
 
    !> γ_n − γ = atan(w' + g'/2) − atan(w') at every table point, to the central difference's
    !> c₃h² (the table), and at the strips to linear interpolation's error; γ_n = γ₀ at the
@@ -119,7 +119,7 @@ contains
    !> The flange set's pure-rolling cases with both choices: the relative F_n differences of
    !> doc/validation.md §6.8 within ±0.002; 'interface' brings Y_WS 8.5 mm, yaw −8 mrad within
    !> 1.2 % of CONTACT's conformal F_n where 'wheel' is 4.4 % low, and moves no F_n by more than
-   !> 4 %.
+   !> 5 %.
    subroutine test_flange_forces(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: file = 'data/exact/kinematic_flange/kinematic_conformal.csv'
@@ -145,7 +145,7 @@ contains
       end if
       do choice = 1, 2
          options = tangential_options_type()
-         options%pressure_direction = merge(pressure_wheel, pressure_interface, choice == 1)
+         options%contact_surface = merge(surface_wheel, surface_interface, choice == 1)
          call solver%set_options(lib, tangential=options)
          if (allocated(lib)) then
             call test_failed(error, lib%message)
@@ -182,8 +182,8 @@ contains
          message='Y_WS 8.5 mm, yaw −8 mrad: ΔF_n/F_n wheel '//str_real(dfn(13, 1))// &
          ', interface '//str_real(dfn(13, 2)))
       if (allocated(error)) return
-      call check(error, maxval(abs(dfn(:, 2) - dfn(:, 1))) <= 0.04_wp, &
+      call check(error, maxval(abs(dfn(:, 2) - dfn(:, 1))) <= 0.05_wp, &
          message='the interface moves an F_n by '//str_real(maxval(abs(dfn(:, 2) - dfn(:, 1)))))
    end subroutine test_flange_forces
 
-end module test_pressure_direction
+end module test_contact_surface
