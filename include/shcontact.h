@@ -135,6 +135,7 @@ extern "C" {
  * tangential%spin_model = 'uniform': 'additive', 'uniform', 'scaled', 'geometric'
  * tangential%spin_flexibility = 'longitudinal': 'longitudinal', 'spin'
  * tangential%correction = 'exact-ellipse': 'exact-ellipse', 'none'
+ * tangential%contact_surface = 'wheel': 'wheel', 'interface'
  * tangential%n_elements = 50: 2 <= n_elements <= 100000
  * -- end options --
  */

@@ -47,6 +47,7 @@ program tester
    use test_validation_normal, only: collect_validation_normal
    use test_validation_sets, only: collect_validation_sets
    use test_validation_kinematic_sets, only: collect_validation_kinematic_sets
+   use test_contact_surface, only: collect_contact_surface
    use test_vertical_approach, only: collect_vertical_approach
    use test_performance_invariants, only: collect_performance_invariants
    use test_robustness, only: collect_robustness
@@ -103,6 +104,7 @@ program tester
       new_testsuite('validation_normal', collect_validation_normal), &
       new_testsuite('validation_sets', collect_validation_sets), &
       new_testsuite('validation_kinematic_sets', collect_validation_kinematic_sets), &
+      new_testsuite('contact_surface', collect_contact_surface), &
       new_testsuite('vertical_approach', collect_vertical_approach), &
       new_testsuite('performance_invariants', collect_performance_invariants), &
       new_testsuite('input', collect_input), &

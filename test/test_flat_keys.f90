@@ -65,7 +65,8 @@ module test_flat_keys
       'normal%b_min=0.05', 'normal%longitudinal_curvature=reference', &
       'normal%method=hertz;tangential%method=fastsim', 'tangential%bound=ellipsoidal', &
       'tangential%spin_model=additive', 'tangential%spin_flexibility=spin', &
-      'tangential%correction=none', 'tangential%n_elements=30', 'normal%preset=vehicle']
+      'tangential%correction=none', 'tangential%n_elements=30', 'normal%preset=vehicle', &
+      'tangential%contact_surface=interface']
 
    !> A kinematic state with two patches on the right wheel (flange root) for the wheelset call.
    type(wheelset_state_type), parameter :: ws_state = wheelset_state_type(y_ws=5.0_wp, &

@@ -34,6 +34,7 @@ contains
             if (allocated(n%n)) deallocate (n%n)
             if (allocated(n%eps_a)) deallocate (n%eps_a)
             if (allocated(n%gamma)) deallocate (n%gamma)
+            if (allocated(n%gamma_n)) deallocate (n%gamma_n)
             if (allocated(n%delta_r)) deallocate (n%delta_r)
             if (allocated(n%r_wheel)) deallocate (n%r_wheel)
          end associate

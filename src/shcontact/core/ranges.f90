@@ -181,6 +181,9 @@ module shcontact_core_ranges
       'flexibility of the spin part of the longitudinal slip'), &
       variable_info_type('tangential', 'correction', k_choice, '', &
       'correction of the tangential forces (doc/tangential.md)'), &
+      variable_info_type('tangential', 'contact_surface', k_choice, '', &
+      "the surface whose angle resolves each strip's forces and gives its spin "// &
+      '(doc/geometry.md)'), &
       variable_info_type('tangential', 'n_elements', k_int, '', &
       'number of elements per strip (n_x)', &
       50.0_wp, 2.0_wp, 1.0e5_wp), &

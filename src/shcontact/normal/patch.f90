@@ -53,8 +53,14 @@ module shcontact_normal_patch
       real(wp), allocatable :: m(:), n(:)
       !> Local penetration split ε_a,i (dimensionless).
       real(wp), allocatable :: eps_a(:)
-      !> Local contact angle γ_i (rad).
+      !> Local contact angle γ_i (rad): the wheel surface's (its rolling radius, A, the tilt).
       real(wp), allocatable :: gamma(:)
+      !> The interface's angle γ_n,i (rad, CONTACT's sign): the deformed interface lies midway
+      !> between the undeformed surfaces (doc/geometry.md, "The direction of the pressure"). With
+      !> `&tangential contact_surface = 'interface'` the strip's forces are resolved in the
+      !> track frame, and its spin taken, with it; a table built without it (unallocated) uses
+      !> γ_i.
+      real(wp), allocatable :: gamma_n(:)
       !> Rolling-radius variation δr_i = r_w(y_i) − r₀ (mm).
       real(wp), allocatable :: delta_r(:)
       !> Local wheel rolling radius r_w,i (mm).
@@ -95,8 +101,8 @@ contains
       p0 = 1.5_wp*load/(pi*semi_a*semi_b)
       allocate (patch%y(n_strips), patch%a(n_strips), patch%k(n_strips), patch%p0(n_strips), &
          patch%strip_load(n_strips), patch%m(n_strips), patch%n(n_strips), &
-         patch%eps_a(n_strips), patch%gamma(n_strips), patch%delta_r(n_strips), &
-         patch%r_wheel(n_strips))
+         patch%eps_a(n_strips), patch%gamma(n_strips), patch%gamma_n(n_strips), &
+         patch%delta_r(n_strips), patch%r_wheel(n_strips))
       do i = 1, n_strips
          eta = (2.0_wp*i - 1.0_wp)/n_strips - 1.0_wp
          patch%y(i) = eta*semi_b
@@ -109,6 +115,7 @@ contains
       patch%n = semi_b/semi_a
       patch%eps_a = 0.5_wp
       patch%gamma = 0.0_wp
+      patch%gamma_n = 0.0_wp
       patch%delta_r = 0.0_wp
       patch%r_wheel = r0
       patch%load = sum(patch%strip_load)

@@ -64,6 +64,9 @@ module shcontact_normal_semihertz
       logical :: has_strip_data = .false.
       !> g(y) (mm), A(y) (1/mm), γ(y) (rad), r_w(y) (mm).
       real(wp), allocatable :: gap(:), curv_a(:), gamma(:), r_wheel(:)
+      !> γ_n(y): the direction of the pressure, the angle of the interface midway between the
+      !> undeformed surfaces ([[interface_angles]]) (rad).
+      real(wp), allocatable :: gamma_n(:)
       !> Penetration split used by the strips: local Hertz ε_a, ε_b, or the constant ε.
       real(wp), allocatable :: eps_a(:), eps_b(:)
       !> Tilt term c(y) = tan γ₀ tan(γ(y) − γ₀) of the vertical approach ([[vertical_tilt]]):
@@ -131,6 +134,8 @@ contains
       prepared%curv_a(1:n) = geometry%curv_a(i1:i2)
       prepared%gamma(1:n) = geometry%gamma(i1:i2)
       prepared%r_wheel(1:n) = geometry%r_wheel(i1:i2)
+      call interface_angles(prepared%gap(1:n), prepared%gamma(1:n), prepared%gamma0, &
+         prepared%h, prepared%gamma_n(1:n))
 
       prepared%has_strip_data = options%method == method_semi_hertz
       if (.not. prepared%has_strip_data) then
@@ -165,6 +170,42 @@ contains
       ! ends).
       prepared%approach_max = min(prepared%cover(1), prepared%cover(n))
    end subroutine prepare_semihertz
+
+   !> The direction of the pressure at each table point (doc/geometry.md, "The direction of the
+   !> pressure"): with equal elastic constants the bodies' normal displacements are equal and
+   !> opposite, so the deformed interface lies midway between the undeformed surfaces, and its
+   !> slope in the table's frame (contact angle γ₀) is the mean of the rail's and the wheel's,
+   !> w' + g'/2, with the wheel's slope w' = tan(γ − γ₀) and the relative slope g' = dg/dy:
+   !> γ_n = γ₀ + atan(tan(γ − γ₀) + g'/2). g' by central differences (one-sided at the ends); a
+   !> table of one point keeps γ.
+   pure subroutine interface_angles(gap, gamma, gamma0, h, gamma_n)
+      !> g(y) on the table's uniform grid (mm).
+      real(wp), intent(in) :: gap(:)
+      !> The wheel's contact angle γ(y) (rad).
+      real(wp), intent(in) :: gamma(:)
+      !> The table frame's contact angle γ₀ (rad) and the grid spacing h (mm).
+      real(wp), intent(in) :: gamma0, h
+      !> γ_n(y) (rad).
+      real(wp), intent(out) :: gamma_n(:)
+      real(wp) :: slope
+      integer :: i, n
+
+      n = size(gap)
+      if (n < 2) then
+         gamma_n = gamma
+         return
+      end if
+      do i = 1, n
+         if (i == 1) then
+            slope = (gap(2) - gap(1))/h
+         else if (i == n) then
+            slope = (gap(n) - gap(n - 1))/h
+         else
+            slope = (gap(i + 1) - gap(i - 1))/(2.0_wp*h)
+         end if
+         gamma_n(i) = gamma0 + atan(tan(gamma(i) - gamma0) + 0.5_wp*slope)
+      end do
+   end subroutine interface_angles
 
    !> The approach from which the strips cover each table point, on one side of the
    !> first-contact point (`touch(1)`, the smallest value) outwards.
@@ -363,6 +404,7 @@ contains
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
          patch%gamma(i) = lerp(prepared%gamma, c, t)
+         patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
          patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
          patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
          a_max = max(a_max, patch%a(i))
@@ -682,6 +724,7 @@ contains
          patch%eps_a(i) = sol%shape%eps_a
          call locate(prepared, patch%y(i), c, t)
          patch%gamma(i) = lerp(prepared%gamma, c, t)
+         patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
          patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
          patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
       end do
@@ -697,6 +740,10 @@ contains
       !> Number of strips.
       integer, intent(in) :: n_strips
       patch%n_strips = n_strips
+      if (allocated(patch%gamma_n)) then
+         if (size(patch%gamma_n) /= n_strips) deallocate (patch%gamma_n)
+      end if
+      if (.not. allocated(patch%gamma_n)) allocate (patch%gamma_n(n_strips))
       if (allocated(patch%y)) then
          if (size(patch%y) == n_strips) return
          deallocate (patch%y, patch%a, patch%k, patch%p0, patch%strip_load, patch%m, patch%n, &
@@ -752,6 +799,7 @@ contains
       patch%n(:) = 1.0_wp
       patch%eps_a(:) = 0.5_wp
       patch%gamma(:) = gamma0
+      patch%gamma_n(:) = gamma0
       patch%delta_r(:) = 0.0_wp
       patch%r_wheel(:) = r0
    end subroutine clear_arrays
@@ -779,11 +827,12 @@ contains
       if (allocated(prepared%gap)) then
          if (size(prepared%gap) >= n) return
          c = max(n, size(prepared%gap) + size(prepared%gap)/2)
-         deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%r_wheel, &
-            prepared%eps_a, prepared%eps_b, prepared%tilt, prepared%psi_slope, prepared%touch, &
+         deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%gamma_n, &
+            prepared%r_wheel, prepared%eps_a, prepared%eps_b, prepared%tilt, prepared%psi_slope, prepared%touch, &
             prepared%cover, prepared%m, prepared%n, prepared%p_factor)
       end if
-      allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%r_wheel(c), &
+      allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%gamma_n(c), &
+         prepared%r_wheel(c), &
          prepared%eps_a(c), prepared%eps_b(c), prepared%tilt(c), prepared%psi_slope(c), &
          prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c))
    end subroutine reserve_table

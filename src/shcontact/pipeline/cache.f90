@@ -301,6 +301,7 @@ contains
       call copy_vector(src%n, dst%n)
       call copy_vector(src%eps_a, dst%eps_a)
       call copy_vector(src%gamma, dst%gamma)
+      call copy_vector(src%gamma_n, dst%gamma_n)
       call copy_vector(src%delta_r, dst%delta_r)
       call copy_vector(src%r_wheel, dst%r_wheel)
    end subroutine copy_normal

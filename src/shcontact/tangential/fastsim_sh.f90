@@ -24,7 +24,7 @@ module shcontact_tangential_fastsim_sh
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, check_tangential_options, &
-      bound_ellipsoidal, spin_flexibility_spin, corrected_model
+      bound_ellipsoidal, spin_flexibility_spin, corrected_model, surface_interface
    use shcontact_tangential_ellipse_correction, only: ellipse_correction_type, &
       prepare_ellipse_correction
    use shcontact_tangential_creepage, only: creepage_type
@@ -124,13 +124,15 @@ contains
          end if
          ws%weight(s) = 0.75_wp/k
 
-         ! Geometric spin terms (shcontact_tangential_spin; CONTACT's sign of γ).
-         call strip_spin_terms(patch%gamma(i), sin0, cos0, r0, ws%phi_geo(s), ws%dphi_geo(s), &
+         ! Geometric spin terms (shcontact_tangential_spin; CONTACT's sign of γ) on the
+         ! contact surface of [[surface_angle]].
+         call strip_spin_terms(surface_angle(i), sin0, cos0, r0, ws%phi_geo(s), ws%dphi_geo(s), &
             ws%cos_ratio(s))
          ws%rho(s) = patch%delta_r(i)/r0 - ws%phi_geo0*y
          ws%strip_normal(s) = strip_load
-         ws%sin_gamma(s) = sin(patch%gamma(i))
-         ws%cos_gamma(s) = cos(patch%gamma(i))
+         ! The strip's forces act along and across the surface of [[surface_angle]].
+         ws%sin_gamma(s) = sin(surface_angle(i))
+         ws%cos_gamma(s) = cos(surface_angle(i))
 
          ws%load = ws%load + strip_load
          ws%parabolic_load_ratio = ws%parabolic_load_ratio + k*strip_load
@@ -161,6 +163,19 @@ contains
       end if
 
    contains
+
+      !> The angle of strip i's contact surface (the direction of its pressure, the plane of its
+      !> traction and slip): the wheel's γ_i, or with `contact_surface = 'interface'` the
+      !> interface's γ_n,i where the normal solution gave it (not on a strip table made by
+      !> hand).
+      pure real(wp) function surface_angle(i)
+         integer, intent(in) :: i
+         surface_angle = patch%gamma(i)
+         if (options%contact_surface /= surface_interface) return
+         if (allocated(patch%gamma_n)) then
+            if (size(patch%gamma_n) >= patch%n_strips) surface_angle = patch%gamma_n(i)
+         end if
+      end function surface_angle
 
       !> Σ N_s v_s / Σ N_s over the loaded strips.
       pure real(wp) function load_mean(v)

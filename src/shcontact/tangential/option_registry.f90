@@ -1,5 +1,6 @@
 !> The registry of the tangential solver's option choices (issue 26): for every choice option
-!> (`&tangential method, bound, spin_model, spin_flexibility, correction`) its allowed values
+!> (`&tangential method, bound, spin_model, spin_flexibility, correction, contact_surface`)
+!> its allowed values
 !> with their integer codes and descriptions, and its default. [[shcontact_tangential_options]]
 !> (the library's options and parsers), the case file's variable table
 !> (shcontact_input_config_variables), the documentation's tables and the headers' option lists are
@@ -15,10 +16,11 @@ module shcontact_tangential_option_registry
    public :: spin_additive, spin_uniform, spin_scaled, spin_geometric
    public :: spin_flexibility_spin, spin_flexibility_longitudinal
    public :: correction_none, correction_exact_ellipse
+   public :: surface_wheel, surface_interface
    public :: method_choices, bound_choices, spin_model_choices, spin_flexibility_choices, &
-      correction_choices, option_choices
+      correction_choices, contact_surface_choices, option_choices
    public :: default_method, default_bound, default_spin_model, default_spin_flexibility, &
-      default_correction, default_n_elements
+      default_correction, default_contact_surface, default_n_elements
 
    !> `method = 'fastsim-sh'`: FASTSIM_SH on the strips of the normal patch (doc/theory.md §6.5).
    integer, parameter :: method_fastsim_sh = 1
@@ -60,6 +62,15 @@ module shcontact_tangential_option_registry
    !> applies to that model only.
    integer, parameter :: correction_exact_ellipse = 2
 
+   !> `contact_surface = 'wheel'`: each strip's normal and tangential forces are resolved in
+   !> the track frame, and its geometric spin taken, with the wheel surface's local contact
+   !> angle γ_i.
+   integer, parameter :: surface_wheel = 1
+   !> `contact_surface = 'interface'`: with the angle γ_n,i of the interface midway between
+   !> the undeformed surfaces (equal elastic constants; doc/geometry.md, "The direction of the
+   !> pressure").
+   integer, parameter :: surface_interface = 2
+
    !> `&tangential method`.
    type(choice_type), parameter :: method_choices(*) = [ &
       choice_type('fastsim-sh', method_fastsim_sh, 'FASTSIM_SH on the strips of the '// &
@@ -95,6 +106,11 @@ module shcontact_tangential_option_registry
       choice_type('exact-ellipse', correction_exact_ellipse, "add the exact theory's defect "// &
       'of the equivalent Hertz ellipse (default model only)'), &
       choice_type('none', correction_none, "the march's forces")]
+   !> `&tangential contact_surface` (doc/geometry.md, "The direction of the pressure").
+   type(choice_type), parameter :: contact_surface_choices(*) = [ &
+      choice_type('wheel', surface_wheel, "the wheel surface's local contact angle gamma_i"), &
+      choice_type('interface', surface_interface, 'the interface midway between the '// &
+      'undeformed surfaces, gamma_0 + atan(w'' + g''/2), for the forces and the spin')]
 
    !> The defaults (decisions 8–11; doc/validation.md for the spin model and flexibility).
    integer, parameter :: default_method = method_fastsim_sh
@@ -102,6 +118,9 @@ module shcontact_tangential_option_registry
    integer, parameter :: default_spin_model = spin_uniform
    integer, parameter :: default_spin_flexibility = spin_flexibility_longitudinal
    integer, parameter :: default_correction = correction_exact_ellipse
+   !> 'wheel': 'interface' moves the flange normal forces by up to 4.6 %, but not nearer the
+   !> exact theory on every position (doc/validation.md §6.8).
+   integer, parameter :: default_contact_surface = surface_wheel
    !> Elements per strip n_x (decision 11): the default and range of `tangential%n_elements` in
    !> the variable table (shcontact_core_ranges).
    integer, parameter :: default_n_elements = nint(variables(findloc(variables%name, &
@@ -122,6 +141,7 @@ contains
       case ('spin_model'); choices = spin_model_choices
       case ('spin_flexibility'); choices = spin_flexibility_choices
       case ('correction'); choices = correction_choices
+      case ('contact_surface'); choices = contact_surface_choices
       case default; allocate (choices(0))
       end select
    end function option_choices

@@ -13,7 +13,8 @@ module shcontact_tangential_options
       spin_flexibility_longitudinal, correction_none, correction_exact_ellipse, method_choices, &
       bound_choices, spin_model_choices, spin_flexibility_choices, correction_choices, &
       default_method, default_bound, default_spin_model, default_spin_flexibility, &
-      default_correction, default_n_elements
+      default_correction, default_n_elements, surface_wheel, surface_interface, &
+      contact_surface_choices, default_contact_surface
    implicit none
    private
 
@@ -23,6 +24,7 @@ module shcontact_tangential_options
    public :: spin_additive, spin_uniform, spin_scaled, spin_geometric
    public :: spin_flexibility_spin, spin_flexibility_longitudinal
    public :: correction_none, correction_exact_ellipse
+   public :: surface_wheel, surface_interface
    public :: parse_method, parse_bound, parse_spin_model, parse_spin_flexibility, parse_correction
    public :: method_name, bound_name, spin_model_name, spin_flexibility_name, correction_name, &
       corrected_model
@@ -46,6 +48,10 @@ module shcontact_tangential_options
       !> Correction of the totals, `correction_*`. Default [[correction_exact_ellipse]]; it is
       !> applied when the model is the one it was tabulated for ([[corrected_model]]).
       integer :: correction = default_correction
+      !> The strips' contact surface, `surface_*` (the angle that resolves their forces in the
+      !> track frame and gives their geometric spin): default [[surface_wheel]] (the wheel's
+      !> γ_i); [[surface_interface]] the interface's γ_n,i where the normal solution gives it.
+      integer :: contact_surface = default_contact_surface
       !> Fill the per-element fields of the result; .false. computes the totals only (faster).
       logical :: fields = .true.
    contains
@@ -75,6 +81,9 @@ contains
       if (allocated(error)) return
       call check_code('correction', options%correction, correction_choices, error)
       if (allocated(error)) return
+      call check_code('contact_surface', options%contact_surface, &
+         contact_surface_choices, error)
+      if (allocated(error)) return
       ! The app's range (shcontact_core_ranges): one table for the app and the library.
       call check_int_range('tangential%n_elements', options%n_elements, &
          'tangential option n_elements', error)
@@ -95,6 +104,7 @@ contains
       case ('spin_model'); code = options%spin_model
       case ('spin_flexibility'); code = options%spin_flexibility
       case ('correction'); code = options%correction
+      case ('contact_surface'); code = options%contact_surface
       case default; code = 0
       end select
    end function get_tangential_choice
@@ -114,6 +124,7 @@ contains
       case ('spin_model'); options%spin_model = code
       case ('spin_flexibility'); options%spin_flexibility = code
       case ('correction'); options%correction = code
+      case ('contact_surface'); options%contact_surface = code
       end select
    end subroutine set_tangential_choice
 
