@@ -15,7 +15,8 @@ module test_contact_surface
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
+   use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
+      interface_contact_angles
    use shcontact_tangential_options, only: tangential_options_type, surface_wheel, &
       surface_interface
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
@@ -74,6 +75,11 @@ contains
          return
       end if
       n = size(geom%y)
+      ! Prepared for the default ('wheel'): the wheel's angles, no interface computed.
+      call check(error, all(contact%geometry%gamma_n(1:n) == geom%gamma(1:n)), &
+         message='γ_n without contact_surface = ''interface'' is not the wheel''s γ')
+      if (allocated(error)) return
+      call interface_contact_angles(contact)
       worst = 0.0_wp
       do j = 2, n - 1
          y = geom%y(j)

@@ -42,7 +42,7 @@ module shcontact_case_runner
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type
    use shcontact_tangential_patch, only: tangential_patch_type
-   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_options, only: tangential_options_type, surface_interface
    use shcontact_tangential_option_registry, only: method_fastsim
    use shcontact_tangential_fastsim_sh, only: prepare_fastsim_sh
    use shcontact_tangential_creepage, only: creepage_type
@@ -298,7 +298,7 @@ contains
       allocate (contacts(n), stage%normal(n))
       n_prepared = 0
       call prepare_normal_stage(geometry, setup%normal, setup%material, contacts, n_prepared, n, &
-         error)
+         error, interface=setup%tangential%contact_surface == surface_interface)
       if (failed(stage, error)) return
       call solve_normal_stage(contacts, load, stage%normal, stage%dz, error, used=used)
       if (failed(stage, error)) return

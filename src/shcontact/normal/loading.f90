@@ -21,12 +21,12 @@ module shcontact_normal_loading
       hertz_from_approach
    use shcontact_normal_semihertz, only: semihertz_geometry_type, prepare_semihertz, &
       semihertz_strips, semihertz_load, ellipse_strips, reserve_strips, clear_strips, &
-      refer_to_loaded_point
+      refer_to_loaded_point, use_interface_angles
    use shcontact_normal_patch, only: normal_patch_type
    implicit none
    private
 
-   public :: normal_contact_type, prepare_normal_contact
+   public :: normal_contact_type, prepare_normal_contact, interface_contact_angles
    public :: solve_approach, solve_load, solve_vertical_load, solve_vertical_approach
 
    !> Relative accuracy of the force matching (the issue asks for 1e-10).
@@ -123,6 +123,13 @@ contains
       call hertz_shape_fast(contact%geometry%curv_a0/contact%geometry%curv_b0, contact%ref_shape, &
          error)
    end subroutine prepare_normal_contact
+
+   !> The strips of this prepared contact carry the interface's angle γ_n (doc/geometry.md, "The
+   !> direction of the pressure") instead of the wheel's γ in their `gamma_n`.
+   pure subroutine interface_contact_angles(contact)
+      type(normal_contact_type), intent(inout) :: contact
+      call use_interface_angles(contact%geometry)
+   end subroutine interface_contact_angles
 
    !> The normal solution for a prescribed approach δ of the patch (no iteration).
    subroutine solve_approach(contact, approach, patch, error)

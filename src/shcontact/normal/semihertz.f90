@@ -29,7 +29,8 @@ module shcontact_normal_semihertz
 
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
-   public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt
+   public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt, &
+      use_interface_angles
 
    !> Smallest relative growth of δ over which the strips sweep across table points out of
    !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
@@ -134,8 +135,9 @@ contains
       prepared%curv_a(1:n) = geometry%curv_a(i1:i2)
       prepared%gamma(1:n) = geometry%gamma(i1:i2)
       prepared%r_wheel(1:n) = geometry%r_wheel(i1:i2)
-      call interface_angles(prepared%gap(1:n), prepared%gamma(1:n), prepared%gamma0, &
-         prepared%h, prepared%gamma_n(1:n))
+      ! The interface angles only where a caller asks for them ([[use_interface_angles]]):
+      ! a tangent and an arctangent per table point are not for the default path.
+      prepared%gamma_n(1:n) = prepared%gamma(1:n)
 
       prepared%has_strip_data = options%method == method_semi_hertz
       if (.not. prepared%has_strip_data) then
@@ -170,6 +172,18 @@ contains
       ! ends).
       prepared%approach_max = min(prepared%cover(1), prepared%cover(n))
    end subroutine prepare_semihertz
+
+   !> Give the prepared tables the interface angles γ_n ([[interface_angles]]) in place of the
+   !> wheel's γ that [[prepare_semihertz]] puts there (`&tangential contact_surface =
+   !> 'interface'`; the pipeline calls it after preparing).
+   pure subroutine use_interface_angles(prepared)
+      type(semihertz_geometry_type), intent(inout) :: prepared
+      integer :: n
+      n = prepared%n_table
+      if (n < 1) return
+      call interface_angles(prepared%gap(1:n), prepared%gamma(1:n), prepared%gamma0, &
+         prepared%h, prepared%gamma_n(1:n))
+   end subroutine use_interface_angles
 
    !> The direction of the pressure at each table point (doc/geometry.md, "The direction of the
    !> pressure"): with equal elastic constants the bodies' normal displacements are equal and

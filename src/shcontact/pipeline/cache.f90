@@ -20,7 +20,7 @@ module shcontact_pipeline_cache
    use shcontact_normal_loading, only: normal_contact_type
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_coupling, only: coupling_start_type
-   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_options, only: tangential_options_type, surface_interface
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_march, only: march_workspace_type
    use shcontact_tangential_patch, only: tangential_patch_type
@@ -204,7 +204,8 @@ contains
       self%has_normal = .false.
       n = loaded_count(load, self%patches%count)
       call prepare_normal_stage(self%patches%patch, self%normal_options, self%material, &
-         self%contacts, self%n_prepared, n, error, self%patches%points)
+         self%contacts, self%n_prepared, n, error, self%patches%points, interface= &
+         self%tangential_options%contact_surface == surface_interface)
       if (allocated(error)) return
       if (self%warm_coupling) then
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &

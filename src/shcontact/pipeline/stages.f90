@@ -26,7 +26,7 @@ module shcontact_pipeline_stages
    use shcontact_geometry_kinematics, only: contact_lead
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load, solve_vertical_approach
+      solve_approach, solve_vertical_load, solve_vertical_approach, interface_contact_angles
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_coupling, only: coupling_start_type
    use shcontact_tangential_options, only: tangential_options_type
@@ -68,7 +68,7 @@ contains
    !> Prepare the normal problems of patches n_prepared+1..n (patches 1..n_prepared are
    !> prepared already). On error n_prepared is the last patch prepared.
    subroutine prepare_normal_stage(geometry, options, material, contacts, n_prepared, n, &
-         error, points)
+         error, points, interface)
       !> The patches of the contact search, deepest first.
       type(patch_geometry_type), intent(in) :: geometry(:)
       !> Normal options.
@@ -85,6 +85,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Table points of each patch when the geometry's tables are longer (a reused search).
       integer, intent(in), optional :: points(:)
+      !> The strips carry the interface's angles (`&tangential contact_surface = 'interface'`;
+      !> default: the wheel's, at no cost).
+      logical, intent(in), optional :: interface
       integer :: k
 
       do k = n_prepared + 1, n
@@ -97,6 +100,9 @@ contains
          if (allocated(error)) then
             if (n > 1) call prefix_error(error, 'patch '//str_int(k))
             return
+         end if
+         if (present(interface)) then
+            if (interface) call interface_contact_angles(contacts(k))
          end if
          n_prepared = k
       end do
