@@ -29,6 +29,13 @@ module shcontact_normal_coupling_groups
    !> Y_WS = 1 mm's P80 |Δf_x| at 0.021; 10 % acts on the established tread groups and spoils
    !> Y_WS = 1.25–1.5 mm: doc/validation.md §6.4.)
    real(wp), parameter :: entry_share = 3.0e-2_wp
+   !> Share of the patch's most loaded group below which a group's coupled/local load ratio is
+   !> blended, in [[scale_patch]]'s interpolation, with its neighbour's towards that group: the
+   !> ratio of a group whose load vanishes is that of a vanishing load and must not set its
+   !> neighbours' strips. Far below entry_share (a group that carries 0.1 % of the largest
+   !> changes no force of doc/validation.md), so that only groups that are leaving or entering
+   !> the contact are touched; any positive share makes the loads continuous.
+   real(wp), parameter :: ratio_share = 1.0e-3_wp
 
    !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
    !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
@@ -184,7 +191,7 @@ contains
    end subroutine open_patch
 
    !> Scale the strips of the set's patch ip by their groups' load ratios, interpolated between
-   !> group centres (constant beyond the outer ones; a group below entry_share of the patch's
+   !> group centres (constant beyond the outer ones; a group below ratio_share of the patch's
    !> largest load blended with its inner neighbour's), and their half-lengths by its square root;
    !> strips whose ratio vanishes leave the contact. The patch's load becomes the sum of its coupled groups' loads.
    pure subroutine scale_patch(set, ip, patch)
@@ -201,14 +208,14 @@ contains
       if (g2 < g1) return
       load = sum(set%ratio(g1:g2)*set%local(g1:g2))
       ! The ratios interpolated between the group centres: a group whose local load is below
-      ! entry_share of the patch's largest enters with its own ratio in proportion to that
+      ! ratio_share of the patch's largest enters with its own ratio in proportion to that
       ! share and otherwise takes that of its neighbour towards the largest group, as its
       ! interpenetration enters ([[add_patch_groups]]). Its own ratio is that of a load that
       ! tends to 0 with the group's (0 when it is out of the coupled contact); taken at full
       ! weight, it pulled the interpolated ratios of its neighbours' strips towards it and let
       ! them jump when the group left the set (its strips out of contact): the coupled loads
       ! then jumped with the approach (doc/kinematics.md, "Robustness with other table steps").
-      full = entry_share*maxval(set%local(g1:g2))
+      full = ratio_share*maxval(set%local(g1:g2))
       gm = g1 - 1 + maxloc(set%local(g1:g2), 1)
       ratio(gm) = set%ratio(gm)
       do jg = gm + 1, g2
