@@ -64,7 +64,7 @@ module shcontact_api_solver
    !> One wheel–rail contact: its data, its prepared geometry and all its workspace (the cache
    !> of the pipeline's stages, shcontact_pipeline_cache).
    type :: contact_solver_type
-      !private DEBUG
+      private
       !> True once [[init]] has succeeded.
       logical :: ready = .false.
       !> The data, the stage results of the last call and the workspace.

@@ -53,9 +53,10 @@ module shcontact_normal_strip_influence
    !> vertical force, jump where the distance of two groups crossed it (doc/kinematics.md,
    !> "Robustness with other table steps"). The band is narrow so that the rules validated
    !> before (doc/validation.md) hold everywhere else: a band to 4 widths moved the coupled
-   !> strips of a Hertz gap by 0.2 % of the peak strip load and the DOE positions' P80
-   !> |Δf_x| at Y_WS = −1 mm from 0.002 to 0.004 (the midpoint rule's error there partly
-   !> offsets that of the groups' means); any band makes the column continuous.
+   !> strips of a Hertz gap by 0.2 % of the peak strip load (the midpoint rule's error there
+   !> partly offsets that of the groups' means), and together with a wider ratio blend
+   !> (shcontact_normal_coupling_groups' ratio_share at 3 %) it moved the DOE positions' P80
+   !> |Δf_x| at Y_WS = −1 mm from 0.002 to 0.004; any band makes the column continuous.
    real(wp), parameter :: near_widths = 2.5_wp, far_widths = 2.6_wp
    !> Targets gathered per kernel sweep: the work arrays have a fixed size (nothing is
    !> allocated), longer columns are done in chunks.
