@@ -32,9 +32,9 @@ module shcontact_normal_coupling_groups
    !> Share of the patch's most loaded group below which a group's coupled/local load ratio is
    !> blended, in [[scale_patch]]'s interpolation, with its neighbour's towards that group: the
    !> ratio of a group whose load vanishes is that of a vanishing load and must not set its
-   !> neighbours' strips. Far below entry_share (a group that carries 0.1 % of the largest
-   !> changes no force of doc/validation.md), so that only groups that are leaving or entering
-   !> the contact are touched; any positive share makes the loads continuous.
+   !> neighbours' strips. Far below entry_share, so that only groups that are leaving or
+   !> entering the contact are touched (doc/validation.md's targets all hold); any positive
+   !> share makes the loads continuous.
    real(wp), parameter :: ratio_share = 1.0e-3_wp
 
    !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
