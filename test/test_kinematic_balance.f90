@@ -12,6 +12,9 @@ module test_kinematic_balance
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       load_vertical_force, load_vertical_position
+   use shcontact_geometry_contact, only: contact_options_type
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
    implicit none
    private
 
@@ -42,7 +45,9 @@ contains
          new_unittest('hunting_state_937', test_state_937), &
          new_unittest('balance_within_tolerance', test_one_percent_case), &
          new_unittest('random_states', test_random), &
-         new_unittest('climbing_wheel_has_no_equilibrium', test_climbing)]
+         new_unittest('climbing_wheel_has_no_equilibrium', test_climbing), &
+         new_unittest('flange_states_other_table_steps', test_table_steps), &
+         new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity)]
    end subroutine collect_kinematic_balance
 
    !> The vertical force carried by the contact (N, up on the wheel).
@@ -303,5 +308,107 @@ contains
       call check(error, carried(result) < f_z .and. carried(result) < normal_part, &
          'the tangential forces lift the wheel at the best state')
    end subroutine test_climbing
+
+   !> State i of the benchmark's flange trajectory (examples/bench/bench_moving.f90's
+   !> flange_states: t_y = 7 + 2 sin(ω₁t) mm, yaw = 10 sin(ω₂t) mrad, t = (i − 1) ms, with the
+   !> velocities of the motion).
+   pure function flange_state(i) result(state)
+      integer, intent(in) :: i
+      type(wheelset_state_type) :: state
+      real(wp), parameter :: two_pi = 6.283185307179586_wp, w1 = two_pi*2.5_wp, &
+         w2 = two_pi*1.6180339887_wp
+      real(wp) :: t
+      t = (i - 1)*1.0e-3_wp
+      state = wheelset_state_type(y_ws=7.0_wp + 2.0_wp*sin(w1*t), yaw=0.01_wp*sin(w2*t), &
+         v_forward=speed, v_lateral=2.0_wp*w1*cos(w1*t), yaw_rate=0.01_wp*w2*cos(w2*t), &
+         pitch_rate=pure_rolling_pitch_rate(speed, r_nom)*(1.0_wp + 2.0e-4_wp))
+   end function flange_state
+
+   !> A solver on the vehicle preset's grid (60 strips × 40 elements) with strip tables every
+   !> `step` mm (the contact option table_step, a user option).
+   subroutine coarse_solver(solver, step, error)
+      type(contact_solver_type), intent(out) :: solver
+      real(wp), intent(in) :: step
+      type(error_type), allocatable, intent(out) :: error
+      type(lib_error), allocatable :: err
+      type(contact_options_type) :: contact
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) then
+         contact = solver%get_contact_options()
+         contact%table_step = step
+         call solver%set_track(err, contact_options=contact)
+      end if
+      if (.not. allocated(err)) then
+         call solver%get_options(normal, tangential)
+         normal%n_strips = 60
+         tangential%n_elements = 40
+         call solver%set_options(err, normal=normal, tangential=tangential)
+      end if
+      if (allocated(err)) call test_failed(error, 'set-up: '//err%message)
+   end subroutine coarse_solver
+
+   !> The flange trajectory's states 400–415 (state 408 failed with table_step = 0.04 mm: the
+   !> bracket closed on a jump of C(Δz) at Δz = 0.71255 mm) and every 50th state, on 60 strips ×
+   !> 40 elements with table steps 0.02, 0.04 and 0.05 mm: every call balances within 1e-5.
+   subroutine test_table_steps(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: steps(3) = [0.02_wp, 0.04_wp, 0.05_wp]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      integer :: i, j
+
+      do j = 1, size(steps)
+         call coarse_solver(solver, steps(j), error)
+         if (allocated(error)) return
+         do i = 1, 1000
+            if (.not. ((i >= 400 .and. i <= 415) .or. mod(i, 50) == 0)) cycle
+            call balanced(solver, flange_state(i), f_z, result, error)
+            if (allocated(error)) then
+               write (*, '(4x,a,i0,a,f5.3,a)') 'flange state ', i, ', table_step ', steps(j), ' mm'
+               return
+            end if
+         end do
+      end do
+   end subroutine test_table_steps
+
+   !> C(Δz) of flange state 408 on 60 strips × 40 elements, tables every 0.04 mm, across the two
+   !> places where it jumped: at Δz = 0.712545 mm by 5.2 N (the quadrature of the coupling
+   !> kernel switched from Simpson's rule to the midpoint rule where two groups' distance crossed
+   !> 2.5 widths) and at 0.7288765 mm by −103 N (a group at the patch's edge left the coupled
+   !> set with its last strip, and its neighbours' strips lost the ratio interpolated towards
+   !> its own). Over 1e-5 and 1e-6 mm there C changes by what its slope gives (≈ 0.9 N and
+   !> 0.1 N): below 2 N.
+   subroutine test_coarse_continuity(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: centre(2) = [0.712545_wp, 0.7288765_wp], half(2) = [5.0e-6_wp, &
+         5.0e-7_wp]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: c(2)
+      character(len=80) :: where
+      integer :: j, k
+
+      call coarse_solver(solver, 0.04_wp, error)
+      if (allocated(error)) return
+      do j = 1, size(centre)
+         do k = 1, 2
+            call solver%solve_kinematic(flange_state(408), contact_load_type( &
+               load_vertical_position, centre(j) + (2*k - 3)*half(j)), result, err)
+            if (allocated(err)) then
+               call test_failed(error, err%message)
+               return
+            end if
+            c(k) = carried(result)
+         end do
+         write (where, '(a,f10.7,a,f8.3,a)') 'dz = ', centre(j), ' mm: C changes by ', &
+            c(2) - c(1), ' N'
+         call check(error, abs(c(2) - c(1)) < 2.0_wp, trim(where))
+         if (allocated(error)) return
+      end do
+   end subroutine test_coarse_continuity
 
 end module test_kinematic_balance

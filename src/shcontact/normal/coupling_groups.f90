@@ -29,6 +29,13 @@ module shcontact_normal_coupling_groups
    !> Y_WS = 1 mm's P80 |Δf_x| at 0.021; 10 % acts on the established tread groups and spoils
    !> Y_WS = 1.25–1.5 mm: doc/validation.md §6.4.)
    real(wp), parameter :: entry_share = 3.0e-2_wp
+   !> Share of the patch's most loaded group below which a group's coupled/local load ratio is
+   !> blended, in [[scale_patch]]'s interpolation, with its neighbour's towards that group: the
+   !> ratio of a group whose load vanishes is that of a vanishing load and must not set its
+   !> neighbours' strips. Far below entry_share, so that only groups that are leaving or
+   !> entering the contact are touched (doc/validation.md's targets all hold); any positive
+   !> share makes the loads continuous.
+   real(wp), parameter :: ratio_share = 1.0e-3_wp
 
    !> The groups of one coupled problem (fixed size: nothing is allocated per solve). Group g
    !> belongs to patch patch(g) of the set; the groups of set patch p are first_group(p) …
@@ -184,20 +191,41 @@ contains
    end subroutine open_patch
 
    !> Scale the strips of the set's patch ip by their groups' load ratios, interpolated between
-   !> group centres (constant beyond the outer ones), and their half-lengths by its square root;
+   !> group centres (constant beyond the outer ones; a group below ratio_share of the patch's
+   !> largest load blended with its inner neighbour's), and their half-lengths by its square root;
    !> strips whose ratio vanishes leave the contact. The patch's load becomes the sum of its coupled groups' loads.
    pure subroutine scale_patch(set, ip, patch)
       type(group_set_type), intent(in) :: set
       integer, intent(in) :: ip
       type(normal_patch_type), intent(inout) :: patch
-      real(wp) :: load, total, t, r, g, root
-      integer :: i, jg, g1, g2, n
+      real(wp) :: load, total, t, r, g, root, full, share
+      real(wp) :: ratio(max_total)
+      integer :: i, jg, g1, g2, n, gm
 
       n = patch%n_strips
       g1 = set%first_group(ip)
       g2 = set%last_group(ip)
       if (g2 < g1) return
       load = sum(set%ratio(g1:g2)*set%local(g1:g2))
+      ! The ratios interpolated between the group centres: a group whose local load is below
+      ! ratio_share of the patch's largest enters with its own ratio in proportion to that
+      ! share and otherwise takes that of its neighbour towards the largest group, as its
+      ! interpenetration enters ([[add_patch_groups]]). Its own ratio is that of a load that
+      ! tends to 0 with the group's (0 when it is out of the coupled contact); taken at full
+      ! weight, it pulled the interpolated ratios of its neighbours' strips towards it and let
+      ! them jump when the group left the set (its strips out of contact): the coupled loads
+      ! then jumped with the approach (doc/kinematics.md, "Robustness with other table steps").
+      full = ratio_share*maxval(set%local(g1:g2))
+      gm = g1 - 1 + maxloc(set%local(g1:g2), 1)
+      ratio(gm) = set%ratio(gm)
+      do jg = gm + 1, g2
+         share = min(1.0_wp, set%local(jg)/full)
+         ratio(jg) = share*set%ratio(jg) + (1.0_wp - share)*ratio(jg - 1)
+      end do
+      do jg = gm - 1, g1, -1
+         share = min(1.0_wp, set%local(jg)/full)
+         ratio(jg) = share*set%ratio(jg) + (1.0_wp - share)*ratio(jg + 1)
+      end do
       ! The ratio of every strip first (p0 holds it until the last loop), 0 for a strip out of
       ! contact or whose ratio vanishes.
       jg = g1
@@ -209,12 +237,12 @@ contains
                jg = jg + 1
             end do
             if (g1 == g2 .or. patch%y(i) <= set%yc(g1)) then
-               r = set%ratio(g1)
+               r = ratio(g1)
             else if (jg >= g2) then
-               r = set%ratio(g2)
+               r = ratio(g2)
             else
                t = (patch%y(i) - set%yc(jg))/(set%yc(jg + 1) - set%yc(jg))
-               r = (1.0_wp - t)*set%ratio(jg) + t*set%ratio(jg + 1)
+               r = (1.0_wp - t)*ratio(jg) + t*ratio(jg + 1)
             end if
          end if
          patch%p0(i) = max(r, 0.0_wp)
