@@ -92,14 +92,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: yaw(2) = [0.0_wp, -0.008_wp], quoted(2) = [179.1e3_wp, 297.4e3_wp]
       type(contact_solver_type) :: solver
-      type(track_type) :: track
       type(contact_result_type) :: result
       type(lib_error), allocatable :: lib
       integer :: k
 
-      track%rail_canted = .true.
-      call solver%init('builtin:S1002', 'builtin:UIC60-canted', lib, track=track, &
-         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu))
+      call set_solver(solver, 'builtin:S1002', 'builtin:UIC60-canted', lib)
       do k = 1, size(yaw)
          if (.not. allocated(lib)) call solver%solve_kinematic(wheelset_state_type(y_ws=7.0_wp, &
             yaw=yaw(k), v_forward=2000.0_wp, pitch_rate=-2000.0_wp/460.0_wp), &
@@ -125,15 +122,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: yaw(3) = [-0.008_wp, 0.0_wp, 0.008_wp]
       type(contact_solver_type) :: solver
-      type(track_type) :: track
       type(contact_result_type) :: result
       type(lib_error), allocatable :: lib
       integer :: i, k
       real(wp) :: y
 
-      track%rail_canted = .true.
-      call solver%init(trim(worn_planar%wheel), trim(worn_planar%rail), lib, track=track, &
-         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu))
+      call set_solver(solver, trim(worn_planar%wheel), trim(worn_planar%rail), lib)
       if (allocated(lib)) then
          call test_failed(error, lib%message)
          return
@@ -187,7 +181,6 @@ contains
          'ycp_tr_mm', 'fx_norm', 'fs_norm']
       real(wp), allocatable :: v(:, :), fn_ref(:, :), dfx(:), dfy(:), dfn(:)
       type(contact_solver_type) :: solver
-      type(track_type) :: track
       type(contact_result_type) :: result
       type(lib_error), allocatable :: lib
       integer :: first, last, n, missed
@@ -197,10 +190,7 @@ contains
       if (allocated(error)) return
       call read_columns(trim(set%file), ['fn_N'], fn_ref, error, row_tag='ok')
       if (allocated(error)) return
-      track%rail_canted = .true.
-      call solver%init(trim(set%wheel), trim(set%rail), lib, track=track, &
-         material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu), &
-         normal_options=normal, tangential_options=tangential)
+      call set_solver(solver, trim(set%wheel), trim(set%rail), lib, normal, tangential)
       if (allocated(lib)) then
          call test_failed(error, lib%message)
          return
@@ -293,6 +283,21 @@ contains
          dfn = 0.0_wp
       end where
    end subroutine compare
+
+   !> The sets' solver (scripts/contact_kinematic_set.py): the rail canted in its profile,
+   !> G = 82670 MPa, ν = 0.27, μ = 0.3, the track_type's Manchester defaults; options as given.
+   subroutine set_solver(solver, wheel, rail, lib, normal, tangential)
+      type(contact_solver_type), intent(inout) :: solver
+      character(len=*), intent(in) :: wheel, rail
+      type(lib_error), allocatable, intent(out) :: lib
+      type(normal_options_type), intent(in), optional :: normal
+      type(tangential_options_type), intent(in), optional :: tangential
+      type(track_type) :: track
+      track%rail_canted = .true.
+      call solver%init(wheel, rail, lib, track=track, material=material_type( &
+         shear_modulus=82670.0_wp, poisson=0.27_wp, friction=mu), normal_options=normal, &
+         tangential_options=tangential)
+   end subroutine set_solver
 
    !> max and P80 of errors against the table's pair within the tolerance.
    subroutine check_pair(file, what, errors, expected, error)

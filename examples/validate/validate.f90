@@ -48,10 +48,7 @@ program validate
    if (patches_only) then
       call load_manchester(profiles_dir, prepared, error)
       if (.not. allocated(error)) call run_patches(ref_root, prepared, out_dir, error)
-      if (allocated(error)) then
-         write (error_unit, '(a)') 'shcontact-validate: '//error%message
-         error stop 1
-      end if
+      call stop_on(error)
       stop
    end if
    ref_dir = ref_root//'ty0_literal/'
@@ -89,19 +86,13 @@ program validate
    if (.not. allocated(error)) call run_tangential(ref_dir, out_dir, geometry, material, rec, &
       error)
    if (.not. allocated(error)) call run_patches(ref_root, prepared, out_dir, error)
-   if (allocated(error)) then
-      write (error_unit, '(a)') 'shcontact-validate: '//error%message
-      error stop 1
-   end if
+   call stop_on(error)
    write (output_unit, '(a)') 'shcontact-validate: tables written to '//out_dir
    call kinematic_sample(ref_root//'kinematic_sample/', profiles_dir, out_dir)
    call kinematic_sets(out_dir)
    ! The summary of every exact-theory set (doc/validation.md §6.6), from the runs above.
    call write_sets(out_dir, error)
-   if (allocated(error)) then
-      write (error_unit, '(a)') 'shcontact-validate: '//error%message
-      error stop 1
-   end if
+   call stop_on(error)
    write (output_unit, '(a)') 'shcontact-validate: the summary of every set written to '// &
       out_dir//'sets.csv, sets.md'
 
@@ -200,22 +191,24 @@ contains
          return
       end if
       call run_kinematic(sample_dir, profiles_dir, out_dir, error)
-      if (allocated(error)) then
-         write (error_unit, '(a)') 'shcontact-validate: '//error%message
-         error stop 1
-      end if
+      call stop_on(error)
       write (output_unit, '(a)') 'shcontact-validate: kinematic tables written to '//out_dir
    end subroutine kinematic_sample
+
+   !> Stop with the error's message and status 1 when there is one.
+   subroutine stop_on(error)
+      type(error_type), allocatable, intent(in) :: error
+      if (.not. allocated(error)) return
+      write (error_unit, '(a)') 'shcontact-validate: '//error%message
+      error stop 1
+   end subroutine stop_on
 
    !> The project's kinematic sets (data/exact/kinematic_*/), which need no external data.
    subroutine kinematic_sets(out_dir)
       character(len=*), intent(in) :: out_dir
       type(error_type), allocatable :: error
       call run_kinematic_sets(out_dir, error)
-      if (allocated(error)) then
-         write (error_unit, '(a)') 'shcontact-validate: '//error%message
-         error stop 1
-      end if
+      call stop_on(error)
       write (output_unit, '(a)') 'shcontact-validate: the kinematic sets written to '// &
          out_dir//'kinematic_sets.csv, kinematic_sets.md'
    end subroutine kinematic_sets
