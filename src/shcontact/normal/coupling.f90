@@ -34,8 +34,9 @@
 !>
 !> The conditions are imposed on at most [[max_groups]] groups of neighbouring strips (the load
 !> moves over distances of the patch width, which the groups resolve) and the strips take their
-!> group's coupled/local load ratio, interpolated between group centres (and their lengths its
-!> square root). The groups are a fixed partition of the patch's strips by index, narrower at
+!> group's coupled/local load ratio, interpolated between group centres and applied to their local
+!> loads averaged over a group's width (doc/validation.md §6.9: the local loads step where the
+!> gap's curvature steps), and their lengths the square root of the change. The groups are a fixed partition of the patch's strips by index, narrower at
 !> the ends (shcontact_normal_coupling_groups), and their centre, length, interpenetration and
 !> contact angle are means weighted by the strip loads: the strips move continuously with the approach, and a
 !> strip entering or leaving the contact changes its group continuously, so the coupled loads

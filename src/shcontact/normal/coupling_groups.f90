@@ -80,11 +80,7 @@ contains
       n = patch%n_strips
       call open_patch(set, sum(patch%strip_load(1:n)), offset, gamma)
       if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
-      ! A fixed partition of all the strips (module text): an odd number of strips needs an odd
-      ! number of groups for a mirror-symmetric partition (a middle group).
-      ng = min(n, max_groups)
-      if (mod(n, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
-      call group_strips(n, ng, first, last)
+      call patch_partition(n, ng, first, last)
       g = set%n
       do j = 1, ng
          g = g + 1
@@ -192,13 +188,15 @@ contains
 
    !> Scale the strips of the set's patch ip by their groups' load ratios, interpolated between
    !> group centres (constant beyond the outer ones; a group below ratio_share of the patch's
-   !> largest load blended with its inner neighbour's), and their half-lengths by its square root;
-   !> strips whose ratio vanishes leave the contact. The patch's load becomes the sum of its coupled groups' loads.
+   !> largest load blended with its inner neighbour's), applied to the strips' local loads
+   !> averaged over the groups' widths ([[group_width_means]]), and their half-lengths by the
+   !> square root of the change; strips whose ratio vanishes leave the contact. The patch's load
+   !> becomes the sum of its coupled groups' loads.
    pure subroutine scale_patch(set, ip, patch)
       type(group_set_type), intent(in) :: set
       integer, intent(in) :: ip
       type(normal_patch_type), intent(inout) :: patch
-      real(wp) :: load, total, t, r, g, root, full, share
+      real(wp) :: load, total, t, r, g, root, full, share, mean
       real(wp) :: ratio(max_total)
       integer :: i, jg, g1, g2, n, gm
 
@@ -226,8 +224,16 @@ contains
          share = min(1.0_wp, set%local(jg)/full)
          ratio(jg) = share*set%ratio(jg) + (1.0_wp - share)*ratio(jg + 1)
       end do
-      ! The ratio of every strip first (p0 holds it until the last loop), 0 for a strip out of
-      ! contact or whose ratio vanishes.
+      ! The local-Hertz loads averaged over the groups' widths ([[group_width_means]]; p0 holds
+      ! them until the ratio loop below).
+      call group_width_means(patch%strip_load(1:n), patch%p0(1:n))
+      ! The ratio of every strip's coupled load to its local one (p0 holds it until the last
+      ! loop), 0 for a strip out of contact or whose ratio vanishes. The coupled load is the
+      ! interpolated group ratio r times the smaller of the strip's window mean q̄ and the
+      ! geometric mean √(q̄ q) with its own local load q: a strip on the low side of a step of
+      ! the local-Hertz loads is raised towards its neighbours, one at the contact's edge,
+      ! whose local load vanishes, keeps a load that vanishes with it (the contact ends where
+      ! the strips end, and a strip entering the contact enters with no load).
       jg = g1
       do i = 1, n
          r = 0.0_wp
@@ -245,7 +251,12 @@ contains
                r = (1.0_wp - t)*ratio(jg) + t*ratio(jg + 1)
             end if
          end if
-         patch%p0(i) = max(r, 0.0_wp)
+         if (r > 0.0_wp) then
+            mean = patch%p0(i)
+            patch%p0(i) = r*min(mean, sqrt(mean*patch%strip_load(i)))/patch%strip_load(i)
+         else
+            patch%p0(i) = 0.0_wp
+         end if
       end do
       ! The strip's length follows its load as its own a = c P does: q = (π/2) P a ∝ a², so
       ! a/a_local = √(q/q_local) (module text); k_i = a_i/a_H,i with it. A strip with ratio 0
@@ -316,6 +327,54 @@ contains
       set%n = 0
       set%n_patches = 0
    end subroutine reset_group_set
+
+   !> The partition of a patch's n strips into its groups (module text, [[group_strips]]): an
+   !> odd number of strips needs an odd number of groups for a mirror-symmetric partition (a
+   !> middle group).
+   pure subroutine patch_partition(n, ng, first, last)
+      !> Number of strips.
+      integer, intent(in) :: n
+      !> Number of groups, and the first and last strip of each.
+      integer, intent(out) :: ng, first(:), last(:)
+
+      ng = min(n, max_groups)
+      if (mod(n, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
+      call group_strips(n, ng, first, last)
+   end subroutine patch_partition
+
+   !> The strips' local-Hertz loads averaged over the width the coupled problem resolves: each
+   !> strip's load replaced by the mean over a window of its group's width centred on it (± half
+   !> the group's strips; zeros beyond the strip interval). The coupled problem fixes the load of
+   !> every group; within a group the shape is the local-Hertz one, which steps where the gap's
+   !> lateral curvature steps (the arcs of a profile's section) or crosses its clamp B_min (the
+   !> end of a conformal plateau): a local ellipse sees the curvature of its own strip, the
+   !> half-space spreads the pressure over the contact (doc/validation.md §6.9). The mean is a
+   !> continuous function of the loads, leaves a load linear across the window unchanged, and
+   !> with one strip per group is no average at all.
+   pure subroutine group_width_means(load, mean)
+      !> Local-Hertz strip loads (N).
+      real(wp), intent(in) :: load(:)
+      !> Their means over the windows (N).
+      real(wp), intent(out) :: mean(:)
+      integer :: first(max_groups), last(max_groups)
+      integer :: n, ng, j, i, m
+      real(wp) :: window
+
+      n = size(load)
+      call patch_partition(n, ng, first, last)
+      do j = 1, ng
+         m = (last(j) - first(j))/2
+         ! A sliding sum over the group's strips.
+         window = sum(load(max(1, first(j) - m):min(n, first(j) + m)))
+         do i = first(j), last(j)
+            if (i > first(j)) then
+               if (i + m <= n) window = window + load(i + m)
+               if (i - m - 1 >= 1) window = window - load(i - m - 1)
+            end if
+            mean(i) = window/real(2*m + 1, wp)
+         end do
+      end do
+   end subroutine group_width_means
 
    !> The groups of a patch's n strips: a fixed partition by strip index, ng groups whose
    !> widths grade from about 4 % of the strips at the ends to 8 % in the middle (half uniform,
