@@ -24,6 +24,11 @@
 !> preset's deviation"):
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- flange deviation 1000
+!>
+!> With `scan` it solves state n at prescribed vertical positions (doc/kinematics.md, "The
+!> patch's reference point"):
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count -- flange scan 789 0.1715 0.1725 10
 program kinematic_count
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact, only: wp, error_type, contact_solver_type, contact_load_type, &
@@ -192,7 +197,9 @@ contains
       end do
    end subroutine show
 
-   !> SCRATCH: C(dz), gamma0 of state over dz0..dz1 (args 4..6), preset arg 7.
+   !> `scan`: state n (the third argument) at the vertical positions Δz = dz0 … dz1 (mm) in m
+   !> steps (arguments 4–6; a seventh `vehicle` takes the preset): Δz, the carried vertical
+   !> force C (N), then per loaded patch γ₀ (rad), F_n (N), f_x, f_y.
    subroutine scan(solver, state)
       type(contact_solver_type), intent(inout) :: solver
       type(wheelset_state_type), intent(in) :: state
@@ -203,10 +210,12 @@ contains
       call get_command_argument(5, a5)
       call get_command_argument(6, a6)
       call get_command_argument(7, a7)
-      read (a4, *) dz0
-      read (a5, *) dz1
-      read (a6, *) m
+      read (a4, *, iostat=stat) dz0
+      if (stat == 0) read (a5, *, iostat=stat) dz1
+      if (stat == 0) read (a6, *, iostat=stat) m
+      if (stat /= 0 .or. state%v_forward <= 0.0_wp) call usage()
       if (trim(a7) == 'vehicle') call set_preset(solver, 'vehicle', error)
+      if (allocated(error)) call fail(error)
       do j = 0, m
          dz = dz0 + (dz1 - dz0)*j/max(m, 1)
          call solver%solve_kinematic(state, contact_load_type(load_vertical_position, dz), &
@@ -216,14 +225,16 @@ contains
             cycle
          end if
          write (output_unit, '(f12.7,f12.2,99(1x,f9.5,f10.1,2f9.5))') dz, -result%track%fz, &
-            (result%patch(k)%gamma0, result%patch(k)%fn, result%patch(k)%fx/(0.3_wp*result%patch(k)%fn), &
+            (result%patch(k)%gamma0, result%patch(k)%fn, &
+            result%patch(k)%fx/(0.3_wp*result%patch(k)%fn), &
             result%patch(k)%fy/(0.3_wp*result%patch(k)%fn), k = 1, result%n_loaded)
       end do
    end subroutine scan
 
    subroutine usage()
       write (error_unit, '(a)') 'usage: shcontact-kinematic-count hunting|flange|fixed '// &
-         '[default|vehicle|deviation] [n = 0..1000] [table_step mm]'
+         '[default|vehicle|deviation|scan] [n = 0..1000] '// &
+         '[table_step mm | strips | dz0 dz1 steps [vehicle]]'
       stop 1
    end subroutine usage
 

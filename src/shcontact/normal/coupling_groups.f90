@@ -73,17 +73,18 @@ contains
       type(normal_patch_type), intent(in) :: patch
       !> Position of the patch's reference point along the profile (mm) and its contact angle.
       real(wp), intent(in) :: offset, gamma
-      real(wp) :: bound(0:max_groups)
+      integer :: first(max_groups), last(max_groups)
       integer :: ng, i, j, g, n, g1
-      real(wp) :: load_i, share, y_i
+      real(wp) :: load_i
 
       n = patch%n_strips
       call open_patch(set, sum(patch%strip_load(1:n)), offset, gamma)
       if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
-      ! A partition fixed in position (module text): a strip across a boundary is shared by the
-      ! two groups in proportion to its overlap with each.
+      ! A fixed partition of all the strips (module text): an odd number of strips needs an odd
+      ! number of groups for a mirror-symmetric partition (a middle group).
       ng = min(n, max_groups)
-      call group_bounds(n, ng, bound)
+      if (mod(n, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
+      call group_strips(n, ng, first, last)
       g = set%n
       do j = 1, ng
          g = g + 1
@@ -95,15 +96,10 @@ contains
          set%local(g) = 0.0_wp
          ! Means weighted by the strip loads, so that a strip entering or leaving the contact
          ! (its load goes to zero with it) changes the group continuously.
-         do i = max(1, floor(bound(j - 1)) + 1), min(n, ceiling(bound(j)))
+         do i = first(j), last(j)
             if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) cycle
-            share = min(real(i, wp), bound(j)) - max(real(i - 1, wp), bound(j - 1))
-            if (.not. (share > 0.0_wp)) cycle
-            load_i = share*patch%strip_load(i)
-            ! The centre of the strip's part in the group.
-            y_i = patch%y(i) + (0.5_wp*(min(real(i, wp), bound(j)) + &
-               max(real(i - 1, wp), bound(j - 1))) - (i - 0.5_wp))*patch%dy
-            set%yc(g) = set%yc(g) + load_i*y_i
+            load_i = patch%strip_load(i)
+            set%yc(g) = set%yc(g) + load_i*patch%y(i)
             set%ac(g) = set%ac(g) + load_i*patch%a(i)
             ! δ_i = k_i² δ_ref = δ − g_i/ε_b,i (doc/theory.md §4.3 step 3): the
             ! interpenetration δ − g_i of the strip, its gap below the patch's approach.
@@ -117,7 +113,7 @@ contains
             g = g - 1
             cycle
          end if
-         set%width(g) = (bound(j) - bound(j - 1))*patch%dy
+         set%width(g) = real(last(j) - first(j) + 1, wp)*patch%dy
          set%yc(g) = set%yc(g)/set%local(g)
          set%ac(g) = set%ac(g)/set%local(g)
          set%gc(g) = set%gc(g)/set%local(g)
@@ -321,23 +317,36 @@ contains
       set%n_patches = 0
    end subroutine reset_group_set
 
-   !> The group boundaries of a patch's n strips, in strips from the first strip's outer edge:
-   !> ng groups fixed in position along the strips' interval, whose widths grade from about 4 %
-   !> of it at the ends to 8 % in the middle (half uniform, half Chebyshev-spaced boundaries,
-   !> t_j = j/(2ng) + (1 − cos(πj/ng))/4, bound_j = n t_j): the strips move continuously with the
-   !> approach and so do the groups, the ends of the contact, where the lengths change fastest,
-   !> get narrower groups, and the groups do not change with the strip count beyond the strips'
-   !> own resolution (doc/performance.md, "The preset's deviation and the strip count": with
-   !> boundaries rounded to whole strips they moved with n by up to half a strip). Mirror-symmetric.
-   pure subroutine group_bounds(n, ng, bound)
+   !> The groups of a patch's n strips: a fixed partition by strip index, ng groups whose
+   !> widths grade from about 4 % of the strips at the ends to 8 % in the middle (half uniform,
+   !> half Chebyshev-spaced boundaries, t_j = j/(2ng) + (1 − cos(πj/ng))/4): the strips move
+   !> continuously with the approach and so do the groups, and the ends of the contact, where
+   !> the lengths change fastest, get narrower groups. Mirror-symmetric; every group holds at
+   !> least one strip.
+   pure subroutine group_strips(n, ng, first, last)
       integer, intent(in) :: n, ng
-      real(wp), intent(out) :: bound(0:)
-      integer :: j
-      bound(0) = 0.0_wp
+      integer, intent(out) :: first(:), last(:)
+      integer :: j, b(0:max_groups)
+
+      b(0) = 0
+      b(ng) = n
       do j = 1, ng - 1
-         bound(j) = n*(0.5_wp*real(j, wp)/ng + 0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng)))
+         if (2*j <= ng) then
+            b(j) = max(b(j - 1) + 1, nint(n*boundary(j)))
+         end if
       end do
-      bound(ng) = real(n, wp)
-   end subroutine group_bounds
+      do j = ng - 1, 1, -1
+         if (2*j > ng) b(j) = min(b(j + 1) - 1, n - b(ng - j))
+      end do
+      do j = 1, ng
+         first(j) = b(j - 1) + 1
+         last(j) = b(j)
+      end do
+   contains
+      pure real(wp) function boundary(j)
+         integer, intent(in) :: j
+         boundary = 0.5_wp*real(j, wp)/ng + 0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng))
+      end function boundary
+   end subroutine group_strips
 
 end module shcontact_normal_coupling_groups
