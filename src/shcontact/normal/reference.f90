@@ -50,36 +50,74 @@ contains
       integer, intent(in) :: first, last
       !> The depth band s (mm).
       real(wp), intent(in) :: scale
-      real(wp) :: weight, total, band, t, g_min, g_k
-      integer :: n, k, jm
+      !> Most minima gathered in the search itself; more (a noisy table) take a second pass.
+      integer, parameter :: max_gathered = 8
+      real(wp) :: total, g_min, g_k, g_prev, g_next, depth(max_gathered)
+      integer :: n, k, jm, found, at(max_gathered)
+      logical :: overflow
 
       n = min(size(gap), size(tilt))
+      ! One pass: the deepest point, and the local minima that may lie within the band of it
+      ! (within s of the deepest so far, which is never below the final one).
+      found = 0
+      overflow = .false.
+      g_prev = huge(1.0_wp)
+      if (first > 1) g_prev = gap(first - 1) + approach*tilt(first - 1)
+      g_k = gap(first) + approach*tilt(first)
+      g_min = g_k
       jm = first
-      g_min = loaded(first)
-      do k = first + 1, last
-         g_k = loaded(k)
+      do k = first, last
+         g_next = huge(1.0_wp)
+         if (k < n) g_next = gap(k + 1) + approach*tilt(k + 1)
          if (g_k < g_min) then
             g_min = g_k
             jm = k
          end if
+         if (g_k < g_prev .and. g_k <= g_next .and. g_k - g_min < scale .and. k > 1 .and. &
+               k < n) then
+            if (found < max_gathered) then
+               found = found + 1
+               at(found) = k
+               depth(found) = g_k
+            else
+               overflow = .true.
+            end if
+         end if
+         g_prev = g_k
+         g_k = g_next
       end do
       x = vertex(jm)
       if (.not. (scale > 0.0_wp)) return
       total = 1.0_wp
-      do k = max(first, 2), min(last, n - 1)
-         if (k == jm) cycle
-         g_k = loaded(k)
-         if (.not. (g_k < loaded(k - 1) .and. g_k <= loaded(k + 1))) cycle
-         band = min(scale, persistence(k, g_k))
-         if (.not. (band > 0.0_wp)) cycle
-         t = min(1.0_wp, max(0.0_wp, (g_k - g_min)/band))
-         weight = 1.0_wp - t*t*(3.0_wp - 2.0_wp*t)
-         if (.not. (weight > 0.0_wp)) cycle
-         x = x + weight*vertex(k)
-         total = total + weight
-      end do
+      if (overflow) then
+         do k = max(first, 2), min(last, n - 1)
+            g_k = gap(k) + approach*tilt(k)
+            if (g_k < gap(k - 1) + approach*tilt(k - 1) .and. &
+               g_k <= gap(k + 1) + approach*tilt(k + 1)) call add(k, g_k, x, total)
+         end do
+      else
+         do k = 1, found
+            call add(at(k), depth(k), x, total)
+         end do
+      end if
       x = x/total
    contains
+      !> Add minimum j (loaded gap g_j), other than the deepest, with its weight (module text)
+      !> to the weighted sum x of positions and the sum of the weights.
+      pure subroutine add(j, g_j, x, total)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: g_j
+         real(wp), intent(inout) :: x, total
+         real(wp) :: band, t, weight
+         if (j == jm .or. .not. (g_j - g_min < scale)) return
+         band = min(scale, persistence(j, g_j))
+         if (.not. (band > 0.0_wp)) return
+         t = min(1.0_wp, max(0.0_wp, (g_j - g_min)/band))
+         weight = 1.0_wp - t*t*(3.0_wp - 2.0_wp*t)
+         x = x + weight*vertex(j)
+         total = total + weight
+      end subroutine add
+
       !> The loaded gap at table point i (mm, up to a constant).
       pure real(wp) function loaded(i)
          integer, intent(in) :: i
