@@ -19,9 +19,9 @@
 !>     fpm run --profile release --example shcontact-kinematic-count -- flange vehicle 1000 0.04
 !>
 !> With `deviation` in place of the preset it solves the n states with the default and with the
-!> vehicle preset (the fourth argument, if given, its strip count instead of 60) and prints the largest |Δf| of f_x, f_y (ΣF/(μΣF_n) over the loaded patches,
-!> contact planes), the states beyond 0.01 and the worst state (doc/performance.md, "The
-!> preset's deviation"):
+!> vehicle preset (the fourth argument, if given, its strip count instead of 60) and prints the
+!> largest |Δf| of f_x, f_y (ΣF/(μΣF_n) over the loaded patches, contact planes), the states
+!> beyond 0.01 and the worst state's patches (doc/performance.md, "The preset's deviation"):
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- flange deviation 1000
 !>
@@ -72,6 +72,7 @@ program kinematic_count
    call solver%init('builtin:S1002', 'builtin:UIC60', error)
    if (allocated(error)) call fail(error)
    if (trim(preset) == 'scan') then
+      if (n < 1) call usage()
       call scan(solver, states(n))
       stop
    end if
@@ -173,7 +174,7 @@ contains
       write (output_unit, '(a,i0,a,i0,a,f7.4,a,i0,a,i0)') 'states ', size(states), ', failed ', &
          failed, ', largest |df| ', worst, ' (state ', i_worst, '), beyond 0.01: ', beyond
       if (i_worst > 0) then
-         call show(solver, states(i_worst), 'vehicle')
+         call show(solver, states(i_worst), 'preset')
          call set_preset(solver, 'default', error)
          if (allocated(error)) call fail(error)
          call show(solver, states(i_worst), 'default')
