@@ -47,7 +47,8 @@ contains
          new_unittest('random_states', test_random), &
          new_unittest('climbing_wheel_has_no_equilibrium', test_climbing), &
          new_unittest('flange_states_other_table_steps', test_table_steps), &
-         new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity)]
+         new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity), &
+         new_unittest('reference_point_continuous_flange_789', test_reference_789)]
    end subroutine collect_kinematic_balance
 
    !> The vertical force carried by the contact (N, up on the wheel).
@@ -410,5 +411,65 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_coarse_continuity
+
+   !> Flange state 789 (default grid): the patch spans the flange root and the flange, and its
+   !> loaded gap has two minima whose depths cross at Δz = 0.172083 mm; the reference point
+   !> jumped there from the flange (γ₀ = −1.222 rad) to the root (−0.561 rad), C(Δz) dropped by
+   !> 565 N and f_x by 0.035 (doc/kinematics.md, "The patch's reference point"). Across
+   !> 0.172083 ± 5e-7 mm γ₀ now changes by less than 0.01 rad, C by less than 10 N and f_x by
+   !> less than 0.002; over Δz = 0.155 … 0.195 mm in steps of 0.5 µm γ₀ moves from the flange
+   !> to the root by less than 0.1 rad per step, and C grows at every step.
+   subroutine test_reference_789(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: c(2), gamma(2), fx(2), c_last, gamma_last, step_largest
+      integer :: k
+      logical :: growing
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      do k = 1, 2
+         if (.not. allocated(err)) call solver%solve_kinematic(flange_state(789), &
+            contact_load_type(load_vertical_position, 0.172083_wp + (2*k - 3)*5.0e-7_wp), &
+            result, err)
+         if (allocated(err)) exit
+         c(k) = carried(result)
+         gamma(k) = result%main%gamma0
+         fx(k) = result%main%fx/(0.3_wp*result%main%fn)
+      end do
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      call check(error, abs(gamma(2) - gamma(1)) < 0.01_wp .and. abs(c(2) - c(1)) < 10.0_wp &
+         .and. abs(fx(2) - fx(1)) < 0.002_wp, 'continuous at dz = 0.172083 mm')
+      if (allocated(error)) then
+         write (*, '(4x,a,2f9.4,a,2f10.1,a,2f8.4)') 'gamma0 ', gamma, ', C ', c, ', f_x ', fx
+         return
+      end if
+      step_largest = 0.0_wp
+      growing = .true.
+      do k = 0, 80
+         call solver%solve_kinematic(flange_state(789), contact_load_type( &
+            load_vertical_position, 0.155_wp + k*5.0e-4_wp), result, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message)
+            return
+         end if
+         if (k > 0) then
+            step_largest = max(step_largest, abs(result%main%gamma0 - gamma_last))
+            growing = growing .and. carried(result) > c_last
+         end if
+         c_last = carried(result)
+         gamma_last = result%main%gamma0
+         if (k == 0) gamma(1) = gamma_last
+      end do
+      call check(error, gamma(1) < -1.2_wp .and. gamma_last > -0.6_wp .and. &
+         step_largest < 0.1_wp .and. growing, 'gamma0 from the flange to the root, C growing')
+      if (.not. allocated(error)) return
+      write (*, '(4x,a,3f9.4,l2)') 'gamma0 first, last, largest step ', gamma(1), gamma_last, &
+         step_largest, growing
+   end subroutine test_reference_789
 
 end module test_kinematic_balance

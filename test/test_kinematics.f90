@@ -241,11 +241,14 @@ contains
       end do
    end subroutine test_vertical_balance
 
-   !> Where the geometric contact point jumps across the patch (t_y ≈ 0.2145 mm on S1002/UIC60)
-   !> the creepages at the reference point jump, but the rigid slip field does not: the forces
-   !> from kinematics change between t_y = 0.20 and 0.22 mm by no more than their smooth trend.
-   !> The prescribed-creepage mode (same creepages at whichever point is the reference) shows
-   !> the jump, so the test can tell the two apart.
+   !> Where the deepest minimum of the loaded gap jumps across the patch (t_y ≈ 0.2145 mm on
+   !> S1002/UIC60, two minima of nearly the same depth on the tread) the reference point is
+   !> blended between them (shcontact_normal_reference) and moves continuously: the creepage at
+   !> it changes by less than 1e-5 between neighbouring positions 0.5 µm apart (it jumped by
+   !> ~1e-3 when the point was the deepest minimum alone), the forces from kinematics change
+   !> between t_y = 0.20 and 0.22 mm by no more than their smooth trend, and so do those of
+   !> the same creepages prescribed at the reference point (within 0.005 in f_x, 1.2e-4
+   !> measured; they jumped).
    subroutine test_continuity(error)
       type(error_type), allocatable, intent(out) :: error
       type(contact_solver_type) :: wheel
@@ -268,9 +271,10 @@ contains
          fy_tr(i) = result%track%fy/(0.3_wp*result%track%fn)
          nu_x(i) = result%main%nu_x
       end do
-      ! The reference point does jump in this interval (the creepage there jumps by ~1e-3).
-      call check(error, maxval(abs(nu_x(2:) - nu_x(:n - 1))) > 5.0e-4_wp, &
-         'expected the geometric contact point to jump between t_y = 0.20 and 0.22 mm')
+      ! The reference point no longer jumps in this interval (the creepage there jumped by
+      ! ~1e-3 between neighbours; now 1e-6).
+      call check(error, maxval(abs(nu_x(2:) - nu_x(:n - 1))) < 1.0e-5_wp, &
+         'the reference point jumps between t_y = 0.20 and 0.22 mm')
       if (allocated(error)) return
       trend = abs(fx(n) - fx(1))/(n - 1)
       jump = maxval(abs(fx(2:) - fx(:n - 1)))
@@ -292,9 +296,8 @@ contains
       fx_fixed(2) = result%main%fx_norm
       call check(error, .not. allocated(err), 'prescribed-creepage solve failed')
       if (allocated(error)) return
-      call check(error, abs(fx(n) - fx(1)) < 0.1_wp*abs(fx_fixed(2) - fx_fixed(1)) .or. &
-         abs(fx_fixed(2) - fx_fixed(1)) < 0.02_wp, 'kinematic forces should vary far less '// &
-         'than the prescribed-creepage ones across the jump')
+      call check(error, abs(fx_fixed(2) - fx_fixed(1)) < 5.0e-3_wp, &
+         'prescribed-creepage f_x jumps')
    end subroutine test_continuity
 
    !> Positions where the normal load match failed before (issue 12): t_y = 3.87 and 3.88 mm

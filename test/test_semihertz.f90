@@ -15,6 +15,7 @@ module test_semihertz
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_approach, solve_load
    use shcontact_normal_pressure, only: element_pressure
+   use shcontact_normal_reference, only: reference_index
    implicit none
    private
    public :: collect_semihertz, polynomial_patch
@@ -43,7 +44,8 @@ contains
          new_unittest('coupled_is_hertz_on_quadratic_gap', test_coupled_hertz), &
          new_unittest('coupled_smooth_across_curvature_step', test_coupled_step), &
          new_unittest('options_parser', test_options), &
-         new_unittest('element_pressure', test_element_pressure) &
+         new_unittest('element_pressure', test_element_pressure), &
+         new_unittest('reference_point_continuous_between_minima', test_reference_blend) &
          ]
    end subroutine collect_semihertz
 
@@ -736,5 +738,53 @@ contains
       call check(error, rel(2) < rel(1)/4 .and. rel(3) < rel(2)/4 .and. rel(2) < 2.0e-3_wp, &
          message='element pressure does not integrate to the strip loads')
    end subroutine test_element_pressure
+
+   !> The reference point on a loaded gap with two minima whose depths cross
+   !> (shcontact_normal_reference): g(x) = (x² − 1)²/4 + e x on x = −2 … 2 (the table's tilt
+   !> term times the approach is the e x), minima near ±1 and a ridge of 1/4 between them. For
+   !> e beyond the band s = 0.05 (the minima's depths differ by ≈ 2|e| > s) it is the deepest
+   !> minimum refined by the parabola, exactly as the minimum search alone; at e = 0 it lies
+   !> midway; over e = −0.05 … 0.05 in steps of 1e-4 it moves by less than 2 steps of the
+   !> table between neighbours (the minimum alone jumps by 80 steps at e = 0), and
+   !> monotonically. A single minimum (e = 0.5: the left one only) is the parabola's vertex.
+   subroutine test_reference_blend(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 161
+      real(wp), parameter :: band = 0.05_wp
+      real(wp) :: x(n), gap(n), slope(n), here, last, alone, largest
+      integer :: i, k
+      logical :: monotone
+
+      do i = 1, n
+         x(i) = -2.0_wp + 4.0_wp*(i - 1)/(n - 1)
+         gap(i) = 0.25_wp*(x(i)**2 - 1.0_wp)**2
+         slope(i) = x(i)
+      end do
+      ! Far from the crossing: the deepest minimum as the search alone gives it.
+      do k = -1, 1, 2
+         here = reference_index(gap, slope, k*0.06_wp, 1, n, band)
+         alone = reference_index(gap, slope, k*0.06_wp, 1, n, 0.0_wp)
+         call check(error, here == alone .and. abs(here - (81 - k*40)) < 2.0_wp, &
+            'beyond the band: the deepest minimum')
+         if (allocated(error)) return
+      end do
+      here = reference_index(gap, slope, 0.0_wp, 1, n, band)
+      call check(error, abs(here - 81.0_wp) < 1.0e-12_wp, 'equal depths: midway')
+      if (allocated(error)) return
+      largest = 0.0_wp
+      monotone = .true.
+      last = reference_index(gap, slope, -0.05_wp, 1, n, band)
+      do k = -499, 500
+         here = reference_index(gap, slope, k*1.0e-4_wp, 1, n, band)
+         largest = max(largest, abs(here - last))
+         monotone = monotone .and. here <= last
+         last = here
+      end do
+      call check(error, largest < 2.0_wp .and. monotone, 'continuous across the crossing')
+      if (allocated(error)) return
+      here = reference_index(gap, slope, 0.5_wp, 1, n, band)
+      alone = reference_index(gap, slope, 0.5_wp, 1, n, 0.0_wp)
+      call check(error, here == alone, 'one minimum: its vertex')
+   end subroutine test_reference_blend
 
 end module test_semihertz

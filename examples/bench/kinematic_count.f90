@@ -17,12 +17,25 @@
 !> steps (doc/kinematics.md):
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- flange vehicle 1000 0.04
+!>
+!> With `deviation` in place of the preset it solves the n states with the default and with the
+!> vehicle preset (the fourth argument, if given, its strip count instead of 60) and prints the
+!> largest |Δf| of f_x, f_y (ΣF/(μΣF_n) over the loaded patches, contact planes), the states
+!> beyond 0.01 and the worst state's patches (doc/performance.md, "The preset's deviation"):
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count -- flange deviation 1000
+!>
+!> With `scan` it solves state n at prescribed vertical positions (doc/kinematics.md, "The
+!> patch's reference point"):
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count -- flange scan 789 0.1715 0.1725 10
 program kinematic_count
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact, only: wp, error_type, contact_solver_type, contact_load_type, &
       contact_result_type, wheelset_state_type, load_vertical_force, set_preset, &
-      contact_options_type
-   use bench_moving, only: hunting_states, flange_states
+      contact_options_type, load_vertical_position, normal_options_type, &
+      tangential_options_type
+   use bench_moving, only: hunting_states, flange_states, trajectory_forces, values_per_state
    implicit none
    !> Vertical wheel load of the benchmark (N).
    real(wp), parameter :: wheel_load = 64700.0_wp
@@ -58,6 +71,15 @@ program kinematic_count
    end select
    call solver%init('builtin:S1002', 'builtin:UIC60', error)
    if (allocated(error)) call fail(error)
+   if (trim(preset) == 'scan') then
+      if (n < 1) call usage()
+      call scan(solver, states(n))
+      stop
+   end if
+   if (trim(preset) == 'deviation') then
+      call deviation(solver, states(1:n))
+      stop
+   end if
    select case (trim(preset))
    case ('vehicle')
       call set_preset(solver, 'vehicle', error)
@@ -108,9 +130,112 @@ contains
       end do
    end subroutine loop
 
+   !> The preset's f_x, f_y against the default's on the states (module text).
+   subroutine deviation(solver, states)
+      type(contact_solver_type), intent(inout) :: solver
+      type(wheelset_state_type), intent(in) :: states(:)
+      real(wp), allocatable :: reference(:), preset(:)
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
+      real(wp) :: d, worst
+      integer :: i, beyond, failed, i_worst
+
+      reference = trajectory_forces(solver, states)
+      call set_preset(solver, 'vehicle', error)
+      if (allocated(error)) call fail(error)
+      if (len_trim(step_text) > 0) then
+         ! The preset with another strip count.
+         call solver%get_options(normal, tangential)
+         read (step_text, *, iostat=stat) normal%n_strips
+         if (stat /= 0) call usage()
+         call solver%set_options(error, normal=normal, tangential=tangential)
+         if (allocated(error)) call fail(error)
+      end if
+      preset = trajectory_forces(solver, states)
+      worst = 0.0_wp
+      i_worst = 0
+      beyond = 0
+      failed = 0
+      do i = 1, size(states)
+         associate (r => reference(values_per_state*(i - 1) + 5:values_per_state*i), &
+               p => preset(values_per_state*(i - 1) + 5:values_per_state*i))
+            if (any(r == huge(1.0_wp)) .or. any(p == huge(1.0_wp))) then
+               failed = failed + 1
+               cycle
+            end if
+            d = maxval(abs(p - r))
+         end associate
+         if (d > 0.01_wp) beyond = beyond + 1
+         if (d > worst) then
+            worst = d
+            i_worst = i
+         end if
+      end do
+      write (output_unit, '(a,i0,a,i0,a,f7.4,a,i0,a,i0)') 'states ', size(states), ', failed ', &
+         failed, ', largest |df| ', worst, ' (state ', i_worst, '), beyond 0.01: ', beyond
+      if (i_worst > 0) then
+         call show(solver, states(i_worst), 'preset')
+         call set_preset(solver, 'default', error)
+         if (allocated(error)) call fail(error)
+         call show(solver, states(i_worst), 'default')
+      end if
+   end subroutine deviation
+
+   !> The loaded patches of one state: γ₀ (rad), F_n (N), f_x, f_y.
+   subroutine show(solver, state, label)
+      type(contact_solver_type), intent(inout) :: solver
+      type(wheelset_state_type), intent(in) :: state
+      character(len=*), intent(in) :: label
+      integer :: k
+      call solver%solve_kinematic(state, contact_load_type(load_vertical_force, wheel_load), &
+         result, error)
+      if (allocated(error)) call fail(error)
+      do k = 1, result%n_loaded
+         write (output_unit, '(2x,a,a,i0,a,f9.5,a,f10.1,a,2f9.5)') label, ' patch ', k, &
+            ': gamma0 ', result%patch(k)%gamma0, ' rad, F_n ', result%patch(k)%fn, &
+            ' N, f_x, f_y ', result%patch(k)%fx/(0.3_wp*result%patch(k)%fn), &
+            result%patch(k)%fy/(0.3_wp*result%patch(k)%fn)
+      end do
+   end subroutine show
+
+   !> `scan`: state n (the third argument) at the vertical positions Δz = dz0 … dz1 (mm) in m
+   !> steps (arguments 4–6; a seventh `vehicle` takes the preset): Δz, the carried vertical
+   !> force C (N), then per loaded patch γ₀ (rad), F_n (N), f_x, f_y.
+   subroutine scan(solver, state)
+      type(contact_solver_type), intent(inout) :: solver
+      type(wheelset_state_type), intent(in) :: state
+      character(len=32) :: a4, a5, a6, a7
+      real(wp) :: dz0, dz1, dz
+      integer :: m, j, k
+      call get_command_argument(4, a4)
+      call get_command_argument(5, a5)
+      call get_command_argument(6, a6)
+      call get_command_argument(7, a7)
+      read (a4, *, iostat=stat) dz0
+      if (stat == 0) read (a5, *, iostat=stat) dz1
+      if (stat == 0) read (a6, *, iostat=stat) m
+      if (stat /= 0 .or. state%v_forward <= 0.0_wp) call usage()
+      if (trim(a7) == 'vehicle') call set_preset(solver, 'vehicle', error)
+      if (allocated(error)) call fail(error)
+      do j = 0, m
+         dz = dz0 + (dz1 - dz0)*j/max(m, 1)
+         call solver%solve_kinematic(state, contact_load_type(load_vertical_position, dz), &
+            result, error)
+         if (allocated(error)) then
+            write (output_unit, '(f12.7,1x,a)') dz, error%message
+            cycle
+         end if
+         write (output_unit, '(f12.7,f12.2,99(1x,f9.5,f10.1,2f9.5))') dz, -result%track%fz, &
+            (result%patch(k)%gamma0, result%patch(k)%fn, &
+            result%patch(k)%fx/(0.3_wp*result%patch(k)%fn), &
+            result%patch(k)%fy/(0.3_wp*result%patch(k)%fn), k = 1, result%n_loaded)
+      end do
+   end subroutine scan
+
    subroutine usage()
       write (error_unit, '(a)') 'usage: shcontact-kinematic-count hunting|flange|fixed '// &
-         '[default|vehicle] [n = 0..1000] [table_step mm]'
+         '[default|vehicle|deviation|scan] [n = 0..1000] '// &
+         '[table_step mm | strips | dz0 dz1 steps [vehicle]]'
       stop 1
    end subroutine usage
 

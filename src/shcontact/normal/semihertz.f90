@@ -24,6 +24,7 @@ module shcontact_normal_semihertz
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_reference, only: reference_index, blend_depth
    implicit none
    private
 
@@ -644,7 +645,8 @@ contains
    !> Refer a solved strip table to the geometric contact point of the loaded state (module
    !> text): the minimum over the table of the undeformed distance g(y) + (δ + g₀)c(y),
    !> refined by a parabola through its neighbours, as CONTACT defines the point where creepages
-   !> are given (doc/geometry.md, "Vertical approach"). The strips' y is then measured from
+   !> are given (doc/geometry.md, "Vertical approach"), blended continuously with another
+   !> minimum of nearly the same depth (shcontact_normal_reference). The strips' y is then measured from
    !> there, and γ₀, r₀ and δr_i are those of that point; `y_shift` keeps where it lies from the
    !> table's origin (the first contact) and `gamma_plane` the contact plane's angle. A patch out
    !> of contact, a Hertz ellipse and a table without strip data keep the table's origin.
@@ -653,15 +655,14 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       !> The solved strip table.
       type(normal_patch_type), intent(inout) :: patch
-      integer :: j, jm, n, c, j_lo, j_hi
-      real(wp) :: approach, g_lo, g_mid, g_hi, curvature, offset, t
+      integer :: n, c, j_lo, j_hi
+      real(wp) :: t
 
       patch%gamma_plane = prepared%gamma0
       patch%y_shift = 0.0_wp
       if (patch%is_hertz .or. .not. prepared%has_strip_data .or. .not. (patch%load > 0.0_wp)) &
          return
       n = prepared%n_table
-      approach = patch%approach + prepared%gap0
       ! The minimum lies where the strips are: the loaded gap is 0 at the first contact, and
       ! wherever it is ≤ 0 the strip penetration δ_i ≥ δ > 0. So only the table points under
       ! the strips are searched (and one more on each side, for the parabola).
@@ -669,34 +670,15 @@ contains
       call locate(prepared, patch%y(patch%n_strips) + 0.5_wp*patch%dy, j_hi, t)
       j_lo = max(1, j_lo - 1)
       j_hi = min(n, j_hi + 2)
-      jm = j_lo
-      g_mid = loaded_gap(j_lo)
-      do j = j_lo + 1, j_hi
-         g_lo = loaded_gap(j)
-         if (g_lo < g_mid) then
-            g_mid = g_lo
-            jm = j
-         end if
-      end do
-      offset = 0.0_wp
-      if (jm > 1 .and. jm < n) then
-         g_lo = loaded_gap(jm - 1)
-         g_hi = loaded_gap(jm + 1)
-         curvature = g_lo - 2.0_wp*g_mid + g_hi
-         if (curvature > 0.0_wp) offset = max(-0.5_wp, min(0.5_wp, 0.5_wp*(g_lo - g_hi)/curvature))
-      end if
-      patch%y_shift = table_y(prepared, jm) + offset*prepared%h
+      ! The deepest minimum, blended with others of nearly its depth (shcontact_normal_reference).
+      patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
+         prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
+         blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
       call locate(prepared, patch%y_shift, c, t)
       patch%gamma0 = lerp(prepared%gamma, c, t)
       patch%r0 = lerp(prepared%r_wheel, c, t)
       patch%y(1:patch%n_strips) = patch%y(1:patch%n_strips) - patch%y_shift
       patch%delta_r(1:patch%n_strips) = patch%r_wheel(1:patch%n_strips) - patch%r0
-   contains
-      !> The undeformed distance of the loaded state at table point i, up to a constant (mm).
-      pure real(wp) function loaded_gap(i)
-         integer, intent(in) :: i
-         loaded_gap = prepared%gap(i) + approach*prepared%tilt(i)
-      end function loaded_gap
    end subroutine refer_to_loaded_point
 
    !> The strip table of one Hertz ellipse centred at the reference point (`method = 'hertz'`):
