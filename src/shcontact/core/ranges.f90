@@ -272,7 +272,11 @@ contains
       find_range = 0
       p = index(key, '%')
       if (p == 0) return
+      if (p == len(key)) return
       do i = 1, size(ranges)
+         ! The first letter first: the options' checks run on every solve, and a full
+         ! comparison of each row's padded name is a library call.
+         if (ranges(i)%name(1:1) /= key(p + 1:p + 1)) cycle
          if (ranges(i)%name == key(p + 1:) .and. ranges(i)%group == key(1:p - 1)) then
             find_range = i
             return

@@ -133,7 +133,7 @@ contains
       do it = 2, max_load_steps
          if (.not. (c_last > 0.0_wp)) exit
          q = q_last*(f_z/c_last)**(1.0_wp/slope)
-         if (it == 2) q = f_z*(f_z/c_last)
+         if (it == 2) q = first_load_step(self, q_last, c_last, f_z)
          call update_normal(self, contact_load_type(load_vertical_force, q), error)
          if (allocated(error)) then
             if (error%stat /= stat_no_contact) return
@@ -285,6 +285,77 @@ contains
          reach = touch + 10.0_wp
       end if
    end subroutine touch_and_reach
+
+   !> The balance's second load q₂ from its first solution (the normal problem carrying q₁,
+   !> with C₁ carried vertically): the load at which a model of C(q) built from that solution
+   !> carries F_z. Each loaded patch k carries v_k = Σ N_i cos γ_i of q₁ (taken ∝ N_k cos γ₀,k
+   !> and scaled so that Σ v_k = q₁) and t_k = C_k − v_k through its tangential forces. Under a
+   !> further vertical approach x its normal force grows as Hertz's, N_k ∝ (1 + x/d_k)^{3/2}
+   !> with d_k the vertical approach since its first touch, v_k in proportion to N_k, and t_k
+   !> as N_k^{s_k}: at fixed creepages the tangential force grows as N^{2/3} while it is linear
+   !> in the creepages (F ∝ G c² ν, c² ∝ N^{2/3}) and as N when saturated (F = μN); between,
+   !> s_k = 1 − (1 − u)u²/f from the saturation law f = 1 − u³, u = 1 − ξ/3, ξ ∝ N^{−1/3}, at
+   !> the patch's f = |F_t|/(μN). The root x of Σ(v_k + t_k) = F_z gives q₂ = Σ v_k(x). On
+   !> one patch the normal part is exact in q, so only the tangential share's growth is
+   !> modelled (the step F_z²/C₁ takes s = 1); on several patches the split of the load between
+   !> them follows Hertz's law. Falls back to F_z²/C₁ where the model does not apply.
+   function first_load_step(self, q1, c1, f_z) result(q2)
+      type(contact_cache_type), intent(in) :: self
+      !> The first load and what it carried vertically (N); the target (N).
+      real(wp), intent(in) :: q1, c1, f_z
+      real(wp) :: q2
+      integer, parameter :: most = 8
+      real(wp) :: v(most), t(most), d(most), s(most), f, u, sum_v, x, res, dres, r, dx, g0
+      integer :: k, n, it
+
+      q2 = f_z*(f_z/c1)
+      n = 0
+      sum_v = 0.0_wp
+      do k = 1, self%n_loaded
+         if (.not. (self%normal(k)%load > 0.0_wp)) cycle
+         if (n == most .or. k > self%n_prepared) return
+         n = n + 1
+         g0 = self%contacts(k)%geometry%gamma0
+         v(n) = self%normal(k)%load*cos(g0)
+         t(n) = -self%tangential(k)%fz_track
+         d(n) = (self%normal(k)%approach - self%contacts(k)%geometry%approach_touch)/cos(g0)
+         f = min(hypot(self%tangential(k)%fx_norm, self%tangential(k)%fy_norm), 1.0_wp)
+         if (f > 1.0e-6_wp) then
+            u = (1.0_wp - f)**(1.0_wp/3.0_wp)
+            s(n) = 1.0_wp - (1.0_wp - u)*u*u/f
+         else
+            s(n) = 2.0_wp/3.0_wp
+         end if
+         if (.not. (d(n) > 0.0_wp .and. v(n) > 0.0_wp)) return
+         sum_v = sum_v + v(n)
+      end do
+      if (n == 0 .or. .not. (sum_v > 0.0_wp)) return
+      v(1:n) = v(1:n)*(q1/sum_v)
+      t(1:n) = t(1:n) - v(1:n)
+      ! Newton on Σ_k v_k r_k + t_k r_k^{s_k} − F_z, r_k = (1 + x/d_k)^{3/2}, from x = 0.
+      x = 0.0_wp
+      do it = 1, 20
+         res = -f_z
+         dres = 0.0_wp
+         do k = 1, n
+            r = 1.0_wp + x/d(k)
+            if (.not. (r > 0.0_wp)) return
+            res = res + v(k)*r**1.5_wp + t(k)*r**(1.5_wp*s(k))
+            dres = dres + (1.5_wp*v(k)*sqrt(r) + 1.5_wp*s(k)*t(k)*r**(1.5_wp*s(k) - 1.0_wp))/d(k)
+         end do
+         if (.not. (dres > 0.0_wp)) return
+         dx = -res/dres
+         x = x + dx
+         if (abs(dx) <= 1.0e-12_wp*maxval(d(1:n))) exit
+      end do
+      if (abs(dx) > 1.0e-9_wp*maxval(d(1:n))) return
+      r = 0.0_wp
+      do k = 1, n
+         if (.not. (1.0_wp + x/d(k) > 0.0_wp)) return
+         r = r + v(k)*(1.0_wp + x/d(k))**1.5_wp
+      end do
+      if (r > 0.0_wp .and. c1 > 0.0_wp) q2 = r
+   end function first_load_step
 
    !> sign(|c|^{2/3}, c): the load's power that is nearly linear in the approach.
    elemental real(wp) function signed_23(c)
