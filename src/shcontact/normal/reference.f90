@@ -62,13 +62,13 @@ contains
       found = 0
       overflow = .false.
       g_prev = huge(1.0_wp)
-      if (first > 1) g_prev = gap(first - 1) + approach*tilt(first - 1)
-      g_k = gap(first) + approach*tilt(first)
+      if (first > 1) g_prev = loaded(first - 1)
+      g_k = loaded(first)
       g_min = g_k
       jm = first
       do k = first, last
          g_next = huge(1.0_wp)
-         if (k < n) g_next = gap(k + 1) + approach*tilt(k + 1)
+         if (k < n) g_next = loaded(k + 1)
          if (g_k < g_min) then
             g_min = g_k
             jm = k
@@ -91,9 +91,8 @@ contains
       total = 1.0_wp
       if (overflow) then
          do k = max(first, 2), min(last, n - 1)
-            g_k = gap(k) + approach*tilt(k)
-            if (g_k < gap(k - 1) + approach*tilt(k - 1) .and. &
-               g_k <= gap(k + 1) + approach*tilt(k + 1)) call add(k, g_k, x, total)
+            g_k = loaded(k)
+            if (g_k < loaded(k - 1) .and. g_k <= loaded(k + 1)) call add(k, g_k, x, total)
          end do
       else
          do k = 1, found
