@@ -156,7 +156,7 @@ contains
       if (allocated(error)) return
       ! Issue 13: Table 10's defaults row (doc/validation.md §6.4) within ±0.002 and the targets
       ! P80 |Δf_x|, P80 |Δf_y| ≤ 0.02, max |Δf| ≤ 0.05.
-      call check_row(ex, ey, [0.012_wp, 0.014_wp, 0.003_wp, 0.007_wp], 'ty0 defaults', error)
+      call check_row(ex, ey, [0.018_wp, 0.019_wp, 0.002_wp, 0.006_wp], 'ty0 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
          0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
@@ -257,10 +257,10 @@ contains
       ! doc/validation.md Table 9, "all".
       call check(error, maxval(ex), 0.049_wp, thr=0.002_wp, message='max |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(ex, 0.8_wp), 0.018_wp, thr=0.002_wp, &
+      call check(error, percentile(ex, 0.8_wp), 0.013_wp, thr=0.002_wp, &
          message='P80 |Delta f_x|')
       if (allocated(error)) return
-      call check(error, maxval(ey), 0.020_wp, thr=0.002_wp, message='max |Delta f_y|')
+      call check(error, maxval(ey), 0.026_wp, thr=0.002_wp, message='max |Delta f_y|')
       if (allocated(error)) return
       call check(error, percentile(ey, 0.8_wp), 0.006_wp, thr=0.002_wp, &
          message='P80 |Delta f_y|')
@@ -270,12 +270,12 @@ contains
       call check(error, percentile(en, 0.8_wp), 0.032_wp, thr=0.005_wp, &
          message='P80 |Delta F_n|/F_n')
       if (allocated(error)) return
-      ! doc/validation.md Table 12, the wheel's joined contact: max |Delta f| 0.049, P80 0.018 /
+      ! doc/validation.md Table 12, the wheel's joined contact: max |Delta f| 0.049, P80 0.013 /
       ! 0.008 (at Y_WS = 4.733 mm it holds both of our patches, CONTACT one).
       call check(error, max(maxval(wx), maxval(wy)), 0.049_wp, thr=0.002_wp, &
          message='joined contact: max |Delta f|')
       if (allocated(error)) return
-      call check(error, percentile(wx, 0.8_wp), 0.018_wp, thr=0.002_wp, &
+      call check(error, percentile(wx, 0.8_wp), 0.013_wp, thr=0.002_wp, &
          message='joined contact: P80 |Delta f_x|')
       if (allocated(error)) return
       call check(error, percentile(wy, 0.8_wp), 0.008_wp, thr=0.002_wp, &
@@ -286,7 +286,7 @@ contains
 
    !> The same patches against CONTACT's conformal approach on the same decks
    !> (data/exact/kinematic_conformal/, doc/validation.md §6.3 item 6, Table 12): max |Δf|
-   !> 0.020, P80 |Δf_x| 0.006, P80 |Δf_y| 0.010 within ±0.002. The file lists the 35 cases in
+   !> 0.020, P80 |Δf_x| 0.008, P80 |Δf_y| 0.009 within ±0.002. The file lists the 35 cases in
    !> the sample's order; the rows are matched by CONTACT's reference point (the two approaches
    !> put it within 0.005 mm of each other). It also keeps what the comparison shows: at
    !> Y_WS = 0, where the planar sample differs by up to 0.049 in f_x, the conformal approach
@@ -315,10 +315,10 @@ contains
       call check(error, max(maxval(cx), maxval(cy)), 0.020_wp, thr=0.002_wp, &
          message='conformal: max |Delta f|')
       if (allocated(error)) return
-      call check(error, percentile(cx, 0.8_wp), 0.006_wp, thr=0.002_wp, &
+      call check(error, percentile(cx, 0.8_wp), 0.008_wp, thr=0.002_wp, &
          message='conformal: P80 |Delta f_x|')
       if (allocated(error)) return
-      call check(error, percentile(cy, 0.8_wp), 0.010_wp, thr=0.002_wp, &
+      call check(error, percentile(cy, 0.8_wp), 0.009_wp, thr=0.002_wp, &
          message='conformal: P80 |Delta f_y|')
       if (allocated(error)) return
       call check(error, maxval(cx, mask=rows(:, 1) == 0.0_wp) < 0.016_wp .and. &
@@ -338,7 +338,7 @@ contains
       if (allocated(error)) return
       call doe_errors(doe, 5.8_wp, 726.0468_wp, 8000, ex, ey, error)
       if (allocated(error) .or. .not. allocated(ex)) return
-      call check_row(ex, ey, [0.013_wp, 0.024_wp, 0.006_wp, 0.006_wp], 'ty5p8 defaults', error)
+      call check_row(ex, ey, [0.011_wp, 0.016_wp, 0.005_wp, 0.005_wp], 'ty5p8 defaults', error)
       if (allocated(error)) return
       call check(error, percentile(ex, 0.8_wp) <= 0.02_wp .and. percentile(ey, 0.8_wp) <= &
          0.02_wp .and. max(maxval(ex), maxval(ey)) <= 0.05_wp, &
@@ -369,24 +369,24 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: n_positions = size(exact_positions)
       real(wp), parameter :: rows(4, n_positions) = reshape([ &
-         0.010_wp, 0.009_wp, 0.003_wp, 0.002_wp, &
+         0.009_wp, 0.009_wp, 0.003_wp, 0.002_wp, &
          0.009_wp, 0.008_wp, 0.003_wp, 0.002_wp, &
          0.008_wp, 0.009_wp, 0.003_wp, 0.002_wp, &
          0.008_wp, 0.009_wp, 0.003_wp, 0.002_wp, &
-         0.023_wp, 0.015_wp, 0.013_wp, 0.007_wp, &
-         0.024_wp, 0.024_wp, 0.015_wp, 0.010_wp, &
-         0.026_wp, 0.032_wp, 0.016_wp, 0.011_wp, &
-         0.018_wp, 0.042_wp, 0.006_wp, 0.016_wp, &
-         0.015_wp, 0.033_wp, 0.006_wp, 0.010_wp, &
-         0.014_wp, 0.014_wp, 0.008_wp, 0.008_wp, &
-         0.012_wp, 0.011_wp, 0.007_wp, 0.007_wp, &
-         0.010_wp, 0.011_wp, 0.003_wp, 0.005_wp, &
-         0.009_wp, 0.009_wp, 0.004_wp, 0.004_wp, &
-         0.011_wp, 0.010_wp, 0.003_wp, 0.002_wp, &
+         0.019_wp, 0.021_wp, 0.014_wp, 0.007_wp, &
+         0.020_wp, 0.015_wp, 0.015_wp, 0.009_wp, &
+         0.023_wp, 0.015_wp, 0.017_wp, 0.009_wp, &
+         0.018_wp, 0.028_wp, 0.005_wp, 0.009_wp, &
+         0.015_wp, 0.021_wp, 0.006_wp, 0.005_wp, &
+         0.014_wp, 0.015_wp, 0.008_wp, 0.007_wp, &
+         0.009_wp, 0.011_wp, 0.007_wp, 0.006_wp, &
+         0.009_wp, 0.011_wp, 0.003_wp, 0.004_wp, &
+         0.009_wp, 0.009_wp, 0.004_wp, 0.003_wp, &
+         0.011_wp, 0.010_wp, 0.004_wp, 0.002_wp, &
          0.009_wp, 0.009_wp, 0.003_wp, 0.005_wp, &
          0.009_wp, 0.009_wp, 0.005_wp, 0.004_wp, &
-         0.011_wp, 0.012_wp, 0.007_wp, 0.005_wp, &
-         0.017_wp, 0.015_wp, 0.013_wp, 0.009_wp, &
+         0.011_wp, 0.012_wp, 0.006_wp, 0.005_wp, &
+         0.015_wp, 0.016_wp, 0.013_wp, 0.008_wp, &
          0.010_wp, 0.011_wp, 0.003_wp, 0.009_wp], [4, n_positions])
       real(wp), allocatable :: ex(:), ey(:)
       integer :: k
@@ -571,12 +571,12 @@ contains
       real(wp), parameter :: y_lobe(2, 2) = reshape([726.61_wp, 737.03_wp, 726.50_wp, &
          736.36_wp], [2, 2])
       real(wp), parameter :: rows(4, 2, 2) = reshape([ &
-         0.025_wp, 0.035_wp, 0.004_wp, 0.005_wp, 0.010_wp, 0.019_wp, 0.006_wp, 0.009_wp, &
-         0.020_wp, 0.023_wp, 0.010_wp, 0.018_wp, 0.024_wp, 0.029_wp, 0.005_wp, 0.013_wp], &
+         0.022_wp, 0.029_wp, 0.002_wp, 0.007_wp, 0.011_wp, 0.019_wp, 0.006_wp, 0.009_wp, &
+         0.017_wp, 0.023_wp, 0.012_wp, 0.018_wp, 0.024_wp, 0.028_wp, 0.005_wp, 0.013_wp], &
          [4, 2, 2])
       !> The wheel's sum against the joined patch, per position.
       real(wp), parameter :: wheel_rows(4, 2) = reshape([ &
-         0.010_wp, 0.017_wp, 0.002_wp, 0.004_wp, 0.015_wp, 0.022_wp, 0.011_wp, 0.010_wp], [4, 2])
+         0.008_wp, 0.015_wp, 0.003_wp, 0.003_wp, 0.013_wp, 0.013_wp, 0.008_wp, 0.008_wp], [4, 2])
       real(wp), allocatable :: joined(:, :), wx(:), wy(:)
       type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_patch_type), allocatable :: patches(:)

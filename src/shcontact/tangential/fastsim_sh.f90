@@ -53,7 +53,7 @@ contains
       !> Set for invalid input; stat_no_contact when no strip is loaded.
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: c11, c22, c23, g, mu, k, a, y, strip_load, s_ratio, akphi, pe, pp, r0, sin0, &
-         cos0, ae, be, y_c, spread, area
+         cos0, ae, be, y_c, spread
       integer :: i, s, n_inactive
 
       call check_material(material, error)
@@ -142,22 +142,19 @@ contains
       call set_element_grid(ws)
       ws%correction = ellipse_correction_type()
       if (corrected_model(options)) then
-         ! The correction's ellipse: b_e from the load's lateral spread (on an ellipse the load
-         ! per unit width is ∝ 1 − y²/b², of variance b²/5), a_e from the area of the strips
-         ! that carry load, π a_e b_e. A strip counts in the area in proportion to its load up
-         ! to 1 % of the mean strip load (the coupled reduction can leave a strip its length
-         ! with no load). Unlike the loaded width and area, both move continuously when an
-         ! edge strip takes or loses a little load (the wheel in motion).
+         ! The correction's ellipse from two load-weighted moments that are exact on an
+         ! ellipse (doc/tangential.md): b_e from the load's lateral spread (on an ellipse the
+         ! load per unit width is ∝ 1 − y²/b², of variance b²/5), a_e from the load-weighted
+         ! mean strip length (on an ellipse ∫(1 − t²)^{3/2} dt / ∫(1 − t²) dt = 9π/32 of a): the
+         ! length over which the traction builds up where the load is. Both move continuously
+         ! when an edge strip takes or loses a little load (the wheel in motion).
          y_c = load_mean(ws%y)
          spread = 0.0_wp
-         area = 0.0_wp
          do s = 1, ws%n_active
             spread = spread + ws%strip_normal(s)*(ws%y(s) - y_c)**2
-            area = area + 2.0_wp*ws%a(s)*ws%dy*min(1.0_wp, &
-               100.0_wp*ws%n_active*ws%strip_normal(s)/ws%load)
          end do
          be = max(sqrt(5.0_wp*spread/ws%load), 0.5_wp*ws%dy)
-         ae = area/(pi*be)
+         ae = load_mean(ws%a)/(9.0_wp*pi/32.0_wp)
          call prepare_ellipse_correction(ws%correction, ae, be, ws%load, material, y_c, &
             load_mean(ws%cos_gamma), load_mean(ws%sin_gamma))
       end if
