@@ -56,8 +56,13 @@ module shcontact_geometry_curve
       !> whether g = sigma·η is strictly increasing along the walk over the whole interval
       !> (dir·η' > 0 at both ends and at the extremum of η'), so that a crossing is unique;
       logical :: regular(batch) = .false.
-      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included;
-      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp
+      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included, and the
+      !> multiples of their coefficients that their derivatives take: 2c₃, 3c₄, 6c₄ of η (rows
+      !> 1–3) and of ζ (rows 4–6); the arc length s(k) at the interval's start;
+      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp, d(6, batch) = 0.0_wp
+      real(wp) :: s0(batch) = 0.0_wp
+      !> The profile's own z from the frame point: z = ay·ζ + az·η + v0 (the map is a rotation).
+      real(wp) :: v0 = 0.0_wp
       !> the interval length, t at its near end (in the walk's sense), g at both ends;
       real(wp), dimension(batch) :: len = 0.0_wp, t_near = 0.0_wp, g_near = 0.0_wp, &
          g_far = 0.0_wp
@@ -89,6 +94,7 @@ contains
 
       walk%ay = map%c; walk%az = -map%s; walk%ey = map%dy
       walk%by = map%s; walk%bz = map%c; walk%ez = map%dz
+      walk%v0 = map%s*map%dy - map%c*map%dz
       walk%dir = dir
       walk%sigma = merge(1, -1, step >= 0.0_wp)
       walk%sd = dir*walk%sigma
@@ -121,6 +127,9 @@ contains
          walk%p(1, b) = walk%p(1, b) + walk%ey
          walk%q(:, b) = walk%by*spline%cy(:, kb) + walk%bz*spline%cz(:, kb)
          walk%q(1, b) = walk%q(1, b) + walk%ez
+         walk%d(:, b) = [2.0_wp*walk%p(3, b), 3.0_wp*walk%p(4, b), 6.0_wp*walk%p(4, b), &
+            2.0_wp*walk%q(3, b), 3.0_wp*walk%q(4, b), 6.0_wp*walk%q(4, b)]
+         walk%s0(b) = spline%s(kb)
          t_near = merge(0.0_wp, len, walk%sd > 0)
          t_far = len - t_near
          walk%t_near(b) = t_near
@@ -182,8 +191,8 @@ contains
       !> Number of points found.
       integer, intent(out) :: n
       type(frame_point_type) :: pnt
-      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, zq, inv, e
-      integer :: i, it, kn, last_k, attempt, b
+      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, inv
+      integer :: i, it, kn, last_k, b
       logical :: ok, found
 
       n = 0
@@ -209,48 +218,42 @@ contains
             end if
          end do
          if (ok) then
-            associate (p => walk%p(:, b), q => walk%q(:, b), cz => spline%cz(:, walk%k))
+            associate (p => walk%p(:, b), q => walk%q(:, b), c => walk%d(:, b))
                u = (g - walk%g_near(b))*walk%inv_span(b)
                t = walk%t_near(b) + walk%sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
-               ! Everything at the start t, then one Newton step dt: the cubics at t + dt follow
-               ! exactly from their derivatives at t, and 1/η'(t + dt) to second order in the
-               ! relative change of η' (below 1e-6 where dt is this small), so that the point
-               ! costs one division on its critical path instead of three.
-               do attempt = 1, 2
-                  f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
-                  df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
-                  d2f = 2.0_wp*p(3) + 6.0_wp*t*p(4)
-                  dq = q(2) + t*(2.0_wp*q(3) + 3.0_wp*t*q(4))
-                  d2q = 2.0_wp*q(3) + 6.0_wp*t*q(4)
-                  zq = q(1) + t*(q(2) + t*(q(3) + t*q(4)))
-                  inv = 1.0_wp/df
-                  dt = -f*inv
-                  if (abs(dt) <= newton_tol .or. attempt == 2) exit
-                  ! A poor start (rare): Newton to convergence, then the point from there.
+               ! One Newton step on η(t) = eta from the interpolant's start, then the point's
+               ! height, slope and curvature evaluated at the step's end t1 (c holds the
+               ! multiples 2p₃, 3p₄, 6p₄, 2q₃, 3q₄, 6q₄ of the coefficients).
+               f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+               df = p(2) + t*(c(1) + t*c(2))
+               dt = -f/df
+               if (.not. abs(dt) <= newton_tol) then
+                  ! A poor start (rare): Newton to convergence, then one step more from there.
                   t = t + dt
                   do it = 2, max_newton
                      f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
-                     df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
+                     df = p(2) + t*(c(1) + t*c(2))
                      dt = f/df
                      t = t - dt
                      if (abs(dt) <= newton_tol) exit
                   end do
-               end do
+                  f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+                  df = p(2) + t*(c(1) + t*c(2))
+                  dt = -f/df
+               end if
                t1 = t + dt
                ok = abs(dt) <= newton_tol .and. t1 >= 0.0_wp .and. t1 <= walk%len(b)
                if (ok) then
-                  e = dt*(d2f + 3.0_wp*p(4)*dt)
-                  df = df + e
-                  e = e*inv
-                  inv = inv*(1.0_wp - e*(1.0_wp - e))
-                  d2f = d2f + 6.0_wp*p(4)*dt
-                  zeta(i) = zq + dt*(dq + dt*(0.5_wp*d2q + q(4)*dt))
-                  dq = dq + dt*(d2q + 3.0_wp*q(4)*dt)
-                  d2q = d2q + 6.0_wp*q(4)*dt
+                  df = p(2) + t1*(c(1) + t1*c(2))
+                  d2f = c(1) + t1*c(3)
+                  zeta(i) = q(1) + t1*(q(2) + t1*(q(3) + t1*q(4)))
+                  dq = q(2) + t1*(c(4) + t1*c(5))
+                  d2q = c(4) + t1*c(6)
+                  inv = 1.0_wp/df
                   if (present(slope)) slope(i) = dq*inv
-                  curv(i) = (d2q*df - dq*d2f)*inv**3
-                  if (present(v)) v(i) = cz(1) + t1*(cz(2) + t1*(cz(3) + t1*cz(4)))
-                  s(i) = spline%s(walk%k) + t1
+                  curv(i) = (d2q*df - dq*d2f)*(inv*inv*inv)
+                  if (present(v)) v(i) = walk%ay*zeta(i) + walk%az*eta + walk%v0
+                  s(i) = walk%s0(b) + t1
                   walk%last%s = s(i)
                   walk%last%k = walk%k
                   walk%last%eta = eta
