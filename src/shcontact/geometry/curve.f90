@@ -191,15 +191,22 @@ contains
       !> Number of points found.
       integer, intent(out) :: n
       type(frame_point_type) :: pnt
-      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, inv
-      integer :: i, it, kn, last_k, b
+      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, inv, sd, sigma, dir
+      ! The fast path's last point, written to walk%last only where the walk leaves it.
+      real(wp) :: l_s, l_eta, l_deta, l_d2eta
+      integer :: i, it, kn, last_k, b, l_k
       logical :: ok, found
 
       n = 0
       last_k = size(spline%s) - 1
+      sd = real(walk%sd, wp)
+      sigma = real(walk%sigma, wp)
+      dir = real(walk%dir, wp)
+      l_s = walk%last%s; l_k = walk%last%k; l_eta = walk%last%eta
+      l_deta = walk%last%deta; l_d2eta = walk%last%d2eta
       do i = 1, m
          eta = (j0 + i)*step
-         g = walk%sigma*eta
+         g = sigma*eta
          ok = .false.
          do while (walk%k /= 0)
             b = walk%idx
@@ -220,7 +227,7 @@ contains
          if (ok) then
             associate (p => walk%p(:, b), q => walk%q(:, b), c => walk%d(:, b))
                u = (g - walk%g_near(b))*walk%inv_span(b)
-               t = walk%t_near(b) + walk%sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
+               t = walk%t_near(b) + sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
                ! One Newton step on η(t) = eta from the interpolant's start, then the point's
                ! height, slope and curvature evaluated at the step's end t1 (c holds the
                ! multiples 2p₃, 3p₄, 6p₄, 2q₃, 3q₄, 6q₄ of the coefficients).
@@ -254,15 +261,16 @@ contains
                   curv(i) = (d2q*df - dq*d2f)*(inv*inv*inv)
                   if (present(v)) v(i) = walk%ay*zeta(i) + walk%az*eta + walk%v0
                   s(i) = walk%s0(b) + t1
-                  walk%last%s = s(i)
-                  walk%last%k = walk%k
-                  walk%last%eta = eta
-                  walk%last%deta = walk%dir*df
-                  walk%last%d2eta = d2f
+                  l_s = s(i)
+                  l_k = walk%k
+                  l_eta = eta
+                  l_deta = dir*df
+                  l_d2eta = d2f
                end if
             end associate
          end if
          if (.not. ok) then
+            call keep_last(walk, l_s, l_k, l_eta, l_deta, l_d2eta)
             call walk_to_eta(spline, map, eta, walk%dir, walk%last, pnt, found)
             if (.not. found) return
             walk%last = pnt
@@ -272,11 +280,27 @@ contains
             if (present(v)) v(i) = pnt%v
             s(i) = pnt%s
             call enter_interval(spline, walk, pnt%k)
+            l_s = pnt%s; l_k = pnt%k; l_eta = pnt%eta
+            l_deta = pnt%deta; l_d2eta = pnt%d2eta
          end if
-         if (.not. walk%last%deta > min_deta) return
+         if (.not. l_deta > min_deta) exit
          n = i
       end do
+      call keep_last(walk, l_s, l_k, l_eta, l_deta, l_d2eta)
    end subroutine walk_points
+
+   !> The fast path's last point of [[walk_points]] into the walk's `last` (s, k, eta, deta and
+   !> d2eta: what [[walk_to_eta]] reads).
+   pure subroutine keep_last(walk, s, k, eta, deta, d2eta)
+      type(frame_walk_type), intent(inout) :: walk
+      real(wp), intent(in) :: s, eta, deta, d2eta
+      integer, intent(in) :: k
+      walk%last%s = s
+      walk%last%k = k
+      walk%last%eta = eta
+      walk%last%deta = deta
+      walk%last%d2eta = d2eta
+   end subroutine keep_last
 
    !> The point of `spline` at arc length s, mapped by `map`; `dir` = ±1 is the sense in which
    !> s runs along +η (the slope and curvature of the graph do not depend on it; `deta` does).
