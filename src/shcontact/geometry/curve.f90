@@ -108,7 +108,7 @@ contains
       type(profile_spline_type), intent(in) :: spline
       type(frame_walk_type), intent(inout) :: walk
       integer, intent(in) :: k
-      real(wp) :: t_near, t_far, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
+      real(wp) :: e_end, de_end, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
       integer :: b, kb
       logical :: regular
 
@@ -127,18 +127,31 @@ contains
          walk%p(1, b) = walk%p(1, b) + walk%ey
          walk%q(:, b) = walk%by*spline%cy(:, kb) + walk%bz*spline%cz(:, kb)
          walk%q(1, b) = walk%q(1, b) + walk%ez
-         walk%d(:, b) = [2.0_wp*walk%p(3, b), 3.0_wp*walk%p(4, b), 6.0_wp*walk%p(4, b), &
-            2.0_wp*walk%q(3, b), 3.0_wp*walk%q(4, b), 6.0_wp*walk%q(4, b)]
+         walk%d(1, b) = 2.0_wp*walk%p(3, b)
+         walk%d(2, b) = 3.0_wp*walk%p(4, b)
+         walk%d(3, b) = 6.0_wp*walk%p(4, b)
+         walk%d(4, b) = 2.0_wp*walk%q(3, b)
+         walk%d(5, b) = 3.0_wp*walk%q(4, b)
+         walk%d(6, b) = 6.0_wp*walk%q(4, b)
          walk%s0(b) = spline%s(kb)
-         t_near = merge(0.0_wp, len, walk%sd > 0)
-         t_far = len - t_near
-         walk%t_near(b) = t_near
          associate (p => walk%p(:, b))
-            walk%g_near(b) = walk%sigma*(p(1) + t_near*(p(2) + t_near*(p(3) + t_near*p(4))))
-            walk%g_far(b) = walk%sigma*(p(1) + t_far*(p(2) + t_far*(p(3) + t_far*p(4))))
-            ! dg/dτ = dir·η'(t) along the walk.
-            d_near = walk%dir*(p(2) + t_near*(2.0_wp*p(3) + 3.0_wp*t_near*p(4)))
-            d_far = walk%dir*(p(2) + t_far*(2.0_wp*p(3) + 3.0_wp*t_far*p(4)))
+            ! η and dη/dt at t = len; at t = 0 they are p(1) and p(2). dg/dτ = dir·η'(t) along
+            ! the walk.
+            e_end = p(1) + len*(p(2) + len*(p(3) + len*p(4)))
+            de_end = p(2) + len*(2.0_wp*p(3) + 3.0_wp*len*p(4))
+            if (walk%sd > 0) then
+               walk%t_near(b) = 0.0_wp
+               walk%g_near(b) = walk%sigma*p(1)
+               walk%g_far(b) = walk%sigma*e_end
+               d_near = walk%dir*p(2)
+               d_far = walk%dir*de_end
+            else
+               walk%t_near(b) = len
+               walk%g_near(b) = walk%sigma*e_end
+               walk%g_far(b) = walk%sigma*p(1)
+               d_near = walk%dir*de_end
+               d_far = walk%dir*p(2)
+            end if
             regular = d_near > 0.0_wp .and. d_far > 0.0_wp .and. &
                walk%g_far(b) > walk%g_near(b)
             ! η' is quadratic in t: its extremum inside the interval must keep the sign too.
