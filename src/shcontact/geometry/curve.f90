@@ -56,8 +56,13 @@ module shcontact_geometry_curve
       !> whether g = sigma·η is strictly increasing along the walk over the whole interval
       !> (dir·η' > 0 at both ends and at the extremum of η'), so that a crossing is unique;
       logical :: regular(batch) = .false.
-      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included;
-      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp
+      !> η and ζ on the interval as cubics in t = s − s(k), the frame offsets included, and the
+      !> multiples of their coefficients that their derivatives take: 2c₃, 3c₄, 6c₄ of η (rows
+      !> 1–3) and of ζ (rows 4–6); the arc length s(k) at the interval's start;
+      real(wp) :: p(4, batch) = 0.0_wp, q(4, batch) = 0.0_wp, d(6, batch) = 0.0_wp
+      real(wp) :: s0(batch) = 0.0_wp
+      !> The profile's own z from the frame point: z = ay·ζ + az·η + v0 (the map is a rotation).
+      real(wp) :: v0 = 0.0_wp
       !> the interval length, t at its near end (in the walk's sense), g at both ends;
       real(wp), dimension(batch) :: len = 0.0_wp, t_near = 0.0_wp, g_near = 0.0_wp, &
          g_far = 0.0_wp
@@ -89,6 +94,7 @@ contains
 
       walk%ay = map%c; walk%az = -map%s; walk%ey = map%dy
       walk%by = map%s; walk%bz = map%c; walk%ez = map%dz
+      walk%v0 = map%s*map%dy - map%c*map%dz
       walk%dir = dir
       walk%sigma = merge(1, -1, step >= 0.0_wp)
       walk%sd = dir*walk%sigma
@@ -102,7 +108,7 @@ contains
       type(profile_spline_type), intent(in) :: spline
       type(frame_walk_type), intent(inout) :: walk
       integer, intent(in) :: k
-      real(wp) :: t_near, t_far, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
+      real(wp) :: e_end, de_end, d_near, d_far, span, m0, m1, t_ext, dp_ext, len
       integer :: b, kb
       logical :: regular
 
@@ -121,15 +127,31 @@ contains
          walk%p(1, b) = walk%p(1, b) + walk%ey
          walk%q(:, b) = walk%by*spline%cy(:, kb) + walk%bz*spline%cz(:, kb)
          walk%q(1, b) = walk%q(1, b) + walk%ez
-         t_near = merge(0.0_wp, len, walk%sd > 0)
-         t_far = len - t_near
-         walk%t_near(b) = t_near
+         walk%d(1, b) = 2.0_wp*walk%p(3, b)
+         walk%d(2, b) = 3.0_wp*walk%p(4, b)
+         walk%d(3, b) = 6.0_wp*walk%p(4, b)
+         walk%d(4, b) = 2.0_wp*walk%q(3, b)
+         walk%d(5, b) = 3.0_wp*walk%q(4, b)
+         walk%d(6, b) = 6.0_wp*walk%q(4, b)
+         walk%s0(b) = spline%s(kb)
          associate (p => walk%p(:, b))
-            walk%g_near(b) = walk%sigma*(p(1) + t_near*(p(2) + t_near*(p(3) + t_near*p(4))))
-            walk%g_far(b) = walk%sigma*(p(1) + t_far*(p(2) + t_far*(p(3) + t_far*p(4))))
-            ! dg/dτ = dir·η'(t) along the walk.
-            d_near = walk%dir*(p(2) + t_near*(2.0_wp*p(3) + 3.0_wp*t_near*p(4)))
-            d_far = walk%dir*(p(2) + t_far*(2.0_wp*p(3) + 3.0_wp*t_far*p(4)))
+            ! η and dη/dt at t = len; at t = 0 they are p(1) and p(2). dg/dτ = dir·η'(t) along
+            ! the walk.
+            e_end = p(1) + len*(p(2) + len*(p(3) + len*p(4)))
+            de_end = p(2) + len*(2.0_wp*p(3) + 3.0_wp*len*p(4))
+            if (walk%sd > 0) then
+               walk%t_near(b) = 0.0_wp
+               walk%g_near(b) = walk%sigma*p(1)
+               walk%g_far(b) = walk%sigma*e_end
+               d_near = walk%dir*p(2)
+               d_far = walk%dir*de_end
+            else
+               walk%t_near(b) = len
+               walk%g_near(b) = walk%sigma*e_end
+               walk%g_far(b) = walk%sigma*p(1)
+               d_near = walk%dir*de_end
+               d_far = walk%dir*p(2)
+            end if
             regular = d_near > 0.0_wp .and. d_far > 0.0_wp .and. &
                walk%g_far(b) > walk%g_near(b)
             ! η' is quadratic in t: its extremum inside the interval must keep the sign too.
@@ -182,15 +204,22 @@ contains
       !> Number of points found.
       integer, intent(out) :: n
       type(frame_point_type) :: pnt
-      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, zq, inv, e
-      integer :: i, it, kn, last_k, attempt, b
+      real(wp) :: eta, g, u, t, t1, f, df, dt, d2f, dq, d2q, inv, sd, sigma, dir
+      ! The fast path's last point, written to walk%last only where the walk leaves it.
+      real(wp) :: l_s, l_eta, l_deta, l_d2eta
+      integer :: i, it, kn, last_k, b, l_k
       logical :: ok, found
 
       n = 0
       last_k = size(spline%s) - 1
+      sd = real(walk%sd, wp)
+      sigma = real(walk%sigma, wp)
+      dir = real(walk%dir, wp)
+      l_s = walk%last%s; l_k = walk%last%k; l_eta = walk%last%eta
+      l_deta = walk%last%deta; l_d2eta = walk%last%d2eta
       do i = 1, m
          eta = (j0 + i)*step
-         g = walk%sigma*eta
+         g = sigma*eta
          ok = .false.
          do while (walk%k /= 0)
             b = walk%idx
@@ -209,57 +238,52 @@ contains
             end if
          end do
          if (ok) then
-            associate (p => walk%p(:, b), q => walk%q(:, b), cz => spline%cz(:, walk%k))
+            associate (p => walk%p(:, b), q => walk%q(:, b), c => walk%d(:, b))
                u = (g - walk%g_near(b))*walk%inv_span(b)
-               t = walk%t_near(b) + walk%sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
-               ! Everything at the start t, then one Newton step dt: the cubics at t + dt follow
-               ! exactly from their derivatives at t, and 1/η'(t + dt) to second order in the
-               ! relative change of η' (below 1e-6 where dt is this small), so that the point
-               ! costs one division on its critical path instead of three.
-               do attempt = 1, 2
-                  f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
-                  df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
-                  d2f = 2.0_wp*p(3) + 6.0_wp*t*p(4)
-                  dq = q(2) + t*(2.0_wp*q(3) + 3.0_wp*t*q(4))
-                  d2q = 2.0_wp*q(3) + 6.0_wp*t*q(4)
-                  zq = q(1) + t*(q(2) + t*(q(3) + t*q(4)))
-                  inv = 1.0_wp/df
-                  dt = -f*inv
-                  if (abs(dt) <= newton_tol .or. attempt == 2) exit
-                  ! A poor start (rare): Newton to convergence, then the point from there.
+               t = walk%t_near(b) + sd*(u*(walk%a1(b) + u*(walk%a2(b) + u*walk%a3(b))))
+               ! One Newton step on η(t) = eta from the interpolant's start, then the point's
+               ! height, slope and curvature evaluated at the step's end t1 (c holds the
+               ! multiples 2p₃, 3p₄, 6p₄, 2q₃, 3q₄, 6q₄ of the coefficients).
+               f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+               df = p(2) + t*(c(1) + t*c(2))
+               dt = -f/df
+               if (.not. abs(dt) <= newton_tol) then
+                  ! A poor start (rare): Newton to convergence, then one step more from there.
                   t = t + dt
                   do it = 2, max_newton
                      f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
-                     df = p(2) + t*(2.0_wp*p(3) + 3.0_wp*t*p(4))
+                     df = p(2) + t*(c(1) + t*c(2))
                      dt = f/df
                      t = t - dt
                      if (abs(dt) <= newton_tol) exit
                   end do
-               end do
+                  f = p(1) + t*(p(2) + t*(p(3) + t*p(4))) - eta
+                  df = p(2) + t*(c(1) + t*c(2))
+                  dt = -f/df
+               end if
                t1 = t + dt
                ok = abs(dt) <= newton_tol .and. t1 >= 0.0_wp .and. t1 <= walk%len(b)
                if (ok) then
-                  e = dt*(d2f + 3.0_wp*p(4)*dt)
-                  df = df + e
-                  e = e*inv
-                  inv = inv*(1.0_wp - e*(1.0_wp - e))
-                  d2f = d2f + 6.0_wp*p(4)*dt
-                  zeta(i) = zq + dt*(dq + dt*(0.5_wp*d2q + q(4)*dt))
-                  dq = dq + dt*(d2q + 3.0_wp*q(4)*dt)
-                  d2q = d2q + 6.0_wp*q(4)*dt
+                  df = p(2) + t1*(c(1) + t1*c(2))
+                  d2f = c(1) + t1*c(3)
+                  zeta(i) = q(1) + t1*(q(2) + t1*(q(3) + t1*q(4)))
+                  dq = q(2) + t1*(c(4) + t1*c(5))
+                  d2q = c(4) + t1*c(6)
+                  inv = 1.0_wp/df
                   if (present(slope)) slope(i) = dq*inv
-                  curv(i) = (d2q*df - dq*d2f)*inv**3
-                  if (present(v)) v(i) = cz(1) + t1*(cz(2) + t1*(cz(3) + t1*cz(4)))
-                  s(i) = spline%s(walk%k) + t1
-                  walk%last%s = s(i)
-                  walk%last%k = walk%k
-                  walk%last%eta = eta
-                  walk%last%deta = walk%dir*df
-                  walk%last%d2eta = d2f
+                  curv(i) = (d2q*df - dq*d2f)*(inv*inv*inv)
+                  if (present(v)) v(i) = walk%ay*zeta(i) + walk%az*eta + walk%v0
+                  s(i) = walk%s0(b) + t1
+                  l_s = s(i)
+                  l_k = walk%k
+                  l_eta = eta
+                  l_deta = dir*df
+                  l_d2eta = d2f
                end if
             end associate
          end if
          if (.not. ok) then
+            call keep_last(walk, l_s, l_k, l_eta, l_deta, l_d2eta)
             call walk_to_eta(spline, map, eta, walk%dir, walk%last, pnt, found)
             if (.not. found) return
             walk%last = pnt
@@ -269,11 +293,27 @@ contains
             if (present(v)) v(i) = pnt%v
             s(i) = pnt%s
             call enter_interval(spline, walk, pnt%k)
+            l_s = pnt%s; l_k = pnt%k; l_eta = pnt%eta
+            l_deta = pnt%deta; l_d2eta = pnt%d2eta
          end if
-         if (.not. walk%last%deta > min_deta) return
+         if (.not. l_deta > min_deta) exit
          n = i
       end do
+      call keep_last(walk, l_s, l_k, l_eta, l_deta, l_d2eta)
    end subroutine walk_points
+
+   !> The fast path's last point of [[walk_points]] into the walk's `last` (s, k, eta, deta and
+   !> d2eta: what [[walk_to_eta]] reads).
+   pure subroutine keep_last(walk, s, k, eta, deta, d2eta)
+      type(frame_walk_type), intent(inout) :: walk
+      real(wp), intent(in) :: s, eta, deta, d2eta
+      integer, intent(in) :: k
+      walk%last%s = s
+      walk%last%k = k
+      walk%last%eta = eta
+      walk%last%deta = deta
+      walk%last%d2eta = d2eta
+   end subroutine keep_last
 
    !> The point of `spline` at arc length s, mapped by `map`; `dir` = ±1 is the sense in which
    !> s runs along +η (the slope and curvature of the graph do not depend on it; `deta` does).
