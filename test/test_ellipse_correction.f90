@@ -39,7 +39,8 @@ contains
          new_unittest('symmetries', test_symmetries), &
          new_unittest('limits', test_limits), &
          new_unittest('other_models_uncorrected', test_other_models), &
-         new_unittest('option_parsing', test_option) &
+         new_unittest('option_parsing', test_option), &
+         new_unittest('equivalent_ellipse_of_an_ellipse', test_equivalent_ellipse) &
          ]
    end subroutine collect_ellipse_correction
 
@@ -299,5 +300,46 @@ contains
       call check(error, index(lerr%message, 'exact-ellipse') > 0, &
          message='the error names the choices: '//lerr%message)
    end subroutine test_option
+
+   !> The equivalent ellipse of a Hertz ellipse's strip table is that ellipse (doc/tangential.md
+   !> step 1: b_e from the load's lateral variance, a_e from the load-weighted strip length over
+   !> 9π/32): the correction set up by the solver's preparation equals the one set up from the
+   !> true semi-axes, at a/b = 0.3, 1 and 6 with 200 strips, to the strips' midpoint rule
+   !> (scales within 0.2 %, ln(a/b) within 0.003). A wrong factor (the area's π/4 instead of 9π/32,
+   !> 12 % in a_e) fails it.
+   subroutine test_equivalent_ellipse(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: ratios(3) = [0.3_wp, 1.0_wp, 6.0_wp], area = 36.0_wp
+      type(normal_patch_type) :: patch
+      type(tangential_options_type) :: options
+      type(march_workspace_type) :: ws
+      type(ellipse_correction_type) :: exact
+      type(lib_error), allocatable :: lerr
+      real(wp) :: a, b
+      integer :: i
+
+      options%fields = .false.
+      do i = 1, size(ratios)
+         b = sqrt(area/(acos(-1.0_wp)*ratios(i)))
+         a = ratios(i)*b
+         call ellipse_strip_patch(a, b, 64700.0_wp, 200, 460.0_wp, patch)
+         call prepare_fastsim_sh(ws, patch, table_material(), options, lerr)
+         call check(error, .not. allocated(lerr), message='prepare_fastsim_sh failed')
+         if (allocated(error)) return
+         call check(error, ws%correction%active, message='correction not active')
+         if (allocated(error)) return
+         call prepare_ellipse_correction(exact, a, b, patch%load, table_material(), 0.0_wp, &
+            1.0_wp, 0.0_wp)
+         call check(error, abs(ws%correction%log_ratio - exact%log_ratio) <= 3.0e-3_wp .and. &
+            abs(ws%correction%scale_x/exact%scale_x - 1.0_wp) <= 2.0e-3_wp .and. &
+            abs(ws%correction%scale_phi/exact%scale_phi - 1.0_wp) <= 2.0e-3_wp, &
+            message='a/b = '//str_real(ratios(i))//': equivalent ln(a/b), s_x, s_phi '// &
+            str_real(ws%correction%log_ratio)//', '//str_real(ws%correction%scale_x)//', '// &
+            str_real(ws%correction%scale_phi)//' against the ellipse''s '// &
+            str_real(exact%log_ratio)//', '//str_real(exact%scale_x)//', '// &
+            str_real(exact%scale_phi))
+         if (allocated(error)) return
+      end do
+   end subroutine test_equivalent_ellipse
 
 end module test_ellipse_correction
