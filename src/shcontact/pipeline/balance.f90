@@ -28,7 +28,7 @@ module shcontact_pipeline_balance
    !> The balance's first solution (the normal problem carrying F_z, a predictor that only
    !> chooses the next load) iterates the coupled reduction's strip lengths to this step of
    !> ln a instead of the reduction's 1e-7 (shcontact_normal_coupling's coupling_start_type):
-   !> its vertical force C₁ then lies within 0.054 |C₁ − F_z| (and 1e-4 F_z) of the converged
+   !> its vertical force C₁ then lies within 0.054 |C₁ − F_z| (and 1.1e-4 F_z) of the converged
    !> one on the bench's 2000 states (doc/performance.md, "Speed-up 8"). Where |C₁ − F_z| ≤
    !> refine_margin tolerances, it is solved again to the full tolerance before it may end the
    !> balance: the balance ends only on solutions to the full tolerance.
