@@ -35,7 +35,8 @@ contains
       testsuite = [ &
          new_unittest('more_than_max_patches_balance', test_more_than_joint), &
          new_unittest('patches_not_placed_coupled_alone', test_not_placed), &
-         new_unittest('warm_coupling_same_fixed_point', test_warm_coupling) &
+         new_unittest('warm_coupling_same_fixed_point', test_warm_coupling), &
+         new_unittest('predictor_then_guessed_load_same_solution', test_predictor) &
          ]
    end subroutine collect_normal_loading_patches
 
@@ -182,6 +183,65 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_warm_coupling
+
+   !> The vertical balance's sequence (shcontact_pipeline_balance): a predictor solve at
+   !> 1.03 F_z with the coupling's lengths to coupling_start_type%tolerance = 1e-3 (its loads
+   !> differ from the converged ones, by less than 1e-3 F_z), then F_z with the tolerance
+   !> reset, started from the predictor's lengths and with Δz bracketed from the predictor's
+   !> Δz scaled by Hertz's q^{2/3} (dz_guess): the same Δz to 1e-12 and the same loads to
+   !> 1e-6 F_z as a cold solve at F_z; reset() empties the tolerance.
+   subroutine test_predictor(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 3
+      type(normal_contact_type) :: contacts(n)
+      type(normal_patch_type) :: cold(n), tight(n), loose(n), guessed(n)
+      type(coupling_start_type) :: start
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(material_type) :: mat
+      type(lib_error), allocatable :: err
+      real(wp) :: dz_cold, dz_tight, dz_loose, dz_guessed, f_z
+      integer :: k
+
+      options%reduction = reduction_coupled
+      f_z = n*load_per_patch
+      do k = 1, n
+         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
+            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
+         geom%y_rail = -spacing*(k - 1)
+         call prepare_normal_contact(contacts(k), geom, options, mat, err)
+         if (allocated(err)) exit
+      end do
+      if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, cold, dz_cold, err)
+      if (.not. allocated(err)) call solve_vertical_load(contacts, 1.03_wp*f_z, tight, &
+         dz_tight, err)
+      call start%reset()
+      start%tolerance = 1.0e-3_wp
+      if (.not. allocated(err)) call solve_vertical_load(contacts, 1.03_wp*f_z, loose, &
+         dz_loose, err, start)
+      start%tolerance = 0.0_wp
+      if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, guessed, dz_guessed, &
+         err, start, dz_guess=dz_loose*(1.0_wp/1.03_wp)**(2.0_wp/3.0_wp))
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      call check(error, any(loose%load /= tight%load) .and. &
+         maxval(abs(loose%load - tight%load)) <= 1.0e-3_wp*f_z, &
+         message='the predictor''s loads should differ a little from the converged ones')
+      if (allocated(error)) return
+      call check(error, dz_guessed, dz_cold, thr=1.0e-12_wp, rel=.true., &
+         message='the guessed bracket should find the same vertical approach')
+      if (allocated(error)) return
+      call check(error, maxval(abs(guessed%load - cold%load)) <= 1.0e-6_wp*f_z, &
+         message='patch loads after the predictor differ from a cold solve''s')
+      if (allocated(error)) return
+      call check_balance(guessed, f_z, dz_guessed, dz_guessed, error)
+      if (allocated(error)) return
+      start%tolerance = 1.0e-3_wp
+      call start%reset()
+      call check(error, start%tolerance == 0.0_wp, message='reset should empty the tolerance')
+   end subroutine test_predictor
 
    !> Σ N_k cos γ_k = F_z and the rigid approach of the strips, kept by the coupling.
    subroutine check_balance(patches, f_z, dz, dz_alone, error)

@@ -124,6 +124,10 @@ module shcontact_normal_coupling
    type :: coupling_start_type
       !> Iterations recorded, and the one [[couple_patches]] reaches next.
       integer :: n_slots = 0, next = 0
+      !> Where larger than length_tolerance, the step of ln a below which the iterations stop
+      !> (the vertical balance's predictor solve, whose loads only choose the next load:
+      !> shcontact_pipeline_balance); 0, the default: length_tolerance.
+      real(wp) :: tolerance = 0.0_wp
       !> Per iteration: its groups and patches, ln(a/a_fill) and the groups in contact.
       integer :: n(max_start_slots) = 0, n_patches(max_start_slots) = 0
       real(wp) :: stretch_log(max_total, max_start_slots)
@@ -365,9 +369,12 @@ contains
       real(wp) :: history_x(max_total, anderson_memory), history_f(max_total, anderson_memory)
       type(group_system_type) :: system
       real(wp) :: peak, log_a, log_peak, take, peak_ref, largest, last_largest
+      real(wp) :: stop
       integer :: it, g, n, used, slot
 
       n = set%n
+      stop = length_tolerance
+      if (present(start)) stop = max(stop, start%tolerance)
       call patch_weights(set, weight)
       call fill_kernel(set, e_star, weight, kern, slope)
       ac_fill(1:n) = set%ac(1:n)
@@ -414,7 +421,7 @@ contains
             step(g) = take*(log_peak - log_a)/(1.0_wp - length_sensitivity)
          end do
          largest = maxval(abs(step(1:n)))
-         if (largest <= length_tolerance) exit
+         if (largest <= stop) exit
          ! The plain steps accelerated (Anderson), restarted where they stop shrinking.
          if (.not. (largest < last_largest)) used = 0
          last_largest = largest
@@ -444,6 +451,7 @@ contains
       class(coupling_start_type), intent(inout) :: self
       self%n_slots = 0
       self%next = 0
+      self%tolerance = 0.0_wp
    end subroutine reset_start
 
    !> The coupled group loads of a set: Σ_I K_JI P_I − Δ cos γ_J w_J = δ_J − g_J on every group in

@@ -35,6 +35,9 @@ module shcontact_normal_loading
    real(wp), parameter :: root_rtol = 1.0e-13_wp
    !> Bracket steps around the first guess (Hertz at the reference point).
    real(wp), parameter :: grow = 1.25_wp, shrink = 0.8_wp
+   !> The first bracket step (relative) around a close guess ([[solve_vertical_load]]'s
+   !> dz_guess), doubled at every further step up to the default steps.
+   real(wp), parameter :: guess_step = 1.0e-3_wp
    !> Keep the bracket this far (relative) inside the largest approach the table allows.
    real(wp), parameter :: table_margin = 1.0e-12_wp
 
@@ -251,7 +254,7 @@ contains
    !> not touch at the solution come back cleared (zero strips, zero load). Each patch's contact
    !> stays inside its own basin ([[confine_to_basin]]): neighbours that meet under load split
    !> the merged region at the ridge between them, and no region is counted twice.
-   subroutine solve_vertical_load(contacts, f_z, patches, dz, error, lengths)
+   subroutine solve_vertical_load(contacts, f_z, patches, dz, error, lengths, dz_guess)
       !> The prepared patches.
       type(normal_contact_type), intent(in), target :: contacts(:)
       !> Vertical wheel load F_z (N), positive.
@@ -265,10 +268,14 @@ contains
       !> Starts of the coupling's length iterations (shcontact_normal_coupling's
       !> coupling_start_type): a solve that repeats one of the same wheel at a nearby load.
       type(coupling_start_type), intent(inout), optional :: lengths
+      !> A close first guess of Δz (mm; the vertical balance's next load step): the root is then
+      !> bracketed by steps of guess_step (relative) growing twofold, not by Hertz's guess and
+      !> steps of 25 %. The root is the same to the search's 1e-13.
+      real(wp), intent(in), optional :: dz_guess
 
       type(vertical_residual) :: f
       type(hertz_type) :: guess
-      real(wp) :: cos_g, start, x_max, root, residual
+      real(wp) :: cos_g, start, x_max, root, residual, x_guess
       integer :: k, k_first
       character(len=96) :: buf
 
@@ -317,7 +324,13 @@ contains
       f%contacts => contacts
       f%patches => patches
       f%target_23 = f_z**(2.0_wp/3.0_wp)
-      call solve_increasing(f, guess%approach/cos_g, x_max, root, error)
+      x_guess = -1.0_wp
+      if (present(dz_guess)) x_guess = dz_guess - f%origin
+      if (x_guess > 0.0_wp .and. x_guess < x_max) then
+         call solve_increasing(f, x_guess, x_max, root, error, first_step=guess_step)
+      else
+         call solve_increasing(f, guess%approach/cos_g, x_max, root, error)
+      end if
       if (allocated(f%error)) call move_alloc(f%error, error)
       if (allocated(error)) return
       f%fill = .true.
@@ -498,12 +511,15 @@ contains
 
    !> Root of an increasing residual with f(0) < 0 on (0, x_max]: bracket from the guess by
    !> geometric steps, then Brent. Beyond x_max the geometry cannot carry the load.
-   subroutine solve_increasing(f, x_guess, x_max, root, error)
+   subroutine solve_increasing(f, x_guess, x_max, root, error, first_step)
       class(scalar_function_type), intent(inout) :: f
       real(wp), intent(in) :: x_guess, x_max
       real(wp), intent(out) :: root
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: lo, hi, flo, fhi
+      !> The first step, relative (default grow − 1), doubled at each further step up to
+      !> grow − 1.
+      real(wp), intent(in), optional :: first_step
+      real(wp) :: lo, hi, flo, fhi, up, down, d
       character(len=96) :: buf
       integer :: i
 
@@ -513,15 +529,24 @@ contains
             'ends where contact starts', stat_no_contact)
          return
       end if
+      up = grow
+      down = shrink
+      d = grow - 1.0_wp
+      if (present(first_step)) then
+         d = min(first_step, d)
+         up = 1.0_wp + d
+         down = 1.0_wp/up
+      end if
       hi = min(x_guess, x_max)
       fhi = f%eval(hi)
       if (fhi >= 0.0_wp) then
          lo = hi; flo = fhi
          do i = 1, 400
             hi = lo; fhi = flo
-            lo = shrink*hi
+            lo = down*hi
             flo = f%eval(lo)
             if (flo < 0.0_wp) exit
+            call widen()
          end do
       else
          do i = 1, 400
@@ -533,13 +558,26 @@ contains
                return
             end if
             lo = hi; flo = fhi
-            hi = min(x_max, grow*hi)
+            hi = min(x_max, up*hi)
             fhi = f%eval(hi)
             if (fhi >= 0.0_wp) exit
+            call widen()
          end do
       end if
       call find_root(f, lo, hi, root, error, xtol=0.0_wp, rtol=root_rtol, f_lower=flo, &
          f_upper=fhi)
+   contains
+      !> The next bracket step twice the last, up to the default steps.
+      subroutine widen()
+         if (d >= grow - 1.0_wp) return
+         d = min(2.0_wp*d, grow - 1.0_wp)
+         up = 1.0_wp + d
+         down = 1.0_wp/up
+         if (d >= grow - 1.0_wp) then
+            up = grow
+            down = shrink
+         end if
+      end subroutine widen
    end subroutine solve_increasing
 
    !> Error unless a force is positive and finite.

@@ -193,10 +193,12 @@ contains
    !> The normal solution for the load, unless it is that of the last call on this geometry.
    !> Force and approach load the first (deepest) patch, a vertical load all patches, a shared
    !> normal force those that touch (shcontact_pipeline_stages's solve_normal_stage).
-   subroutine update_normal(self, load, error)
+   subroutine update_normal(self, load, error, dz_guess)
       type(contact_cache_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load
       type(error_type), allocatable, intent(out) :: error
+      !> A close guess of the vertical approach Δz (mm) for a vertical load.
+      real(wp), intent(in), optional :: dz_guess
       integer :: n, used
 
       if (self%has_normal .and. load%mode == self%load%mode .and. &
@@ -209,10 +211,10 @@ contains
       if (allocated(error)) return
       if (self%warm_coupling) then
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
-            self%coupling_start, used=used)
+            self%coupling_start, used=used, dz_guess=dz_guess)
       else
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
-            used=used)
+            used=used, dz_guess=dz_guess)
       end if
       if (allocated(error)) return
       self%load = load

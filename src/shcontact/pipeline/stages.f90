@@ -111,7 +111,7 @@ contains
    !> The normal solution for the load on the prepared patches (size loaded_count): a normal
    !> force or an approach on the first, a shared normal force as [[share_normal_force]] says, a
    !> vertical load or position on all.
-   subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used)
+   subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used, dz_guess)
       !> The prepared normal problems of the loaded patches.
       type(normal_contact_type), intent(inout) :: contacts(:)
       !> The load.
@@ -128,6 +128,9 @@ contains
       !> The patches the solution loads, 1..used (all of `contacts` but for a shared normal force
       !> that only the first patch carries: 1, and patches 2.. are then not solved).
       integer, intent(out), optional :: used
+      !> A close guess of Δz (mm) for a vertical load (shcontact_normal_loading's
+      !> solve_vertical_load).
+      real(wp), intent(in), optional :: dz_guess
       real(wp) :: vertical
       integer :: n_used
 
@@ -144,7 +147,7 @@ contains
          call solve_vertical_approach(contacts, load%value, normal, vertical, error, start)
          dz = load%value
       case default
-         call solve_vertical_load(contacts, load%value, normal, dz, error, start)
+         call solve_vertical_load(contacts, load%value, normal, dz, error, start, dz_guess)
       end select
       if (present(used)) used = n_used
    end subroutine solve_normal_stage
