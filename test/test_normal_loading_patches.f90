@@ -92,6 +92,28 @@ contains
       end do
    end subroutine test_not_placed
 
+   !> The row of solve_row's patches prepared with the given normal reduction (n = size of
+   !> contacts): contact angles −0.03 − 0.02 (k − 1) rad, gaps 0.5 (k − 1) µm, y_rail spaced by
+   !> `spacing`.
+   subroutine prepare_row(contacts, reduction, err)
+      type(normal_contact_type), intent(out) :: contacts(:)
+      integer, intent(in) :: reduction
+      type(lib_error), allocatable, intent(out) :: err
+      type(patch_geometry_type) :: geom
+      type(normal_options_type) :: options
+      type(material_type) :: mat
+      integer :: k
+
+      options%reduction = reduction
+      do k = 1, size(contacts)
+         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
+            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
+         geom%y_rail = -spacing*(k - 1)
+         call prepare_normal_contact(contacts(k), geom, options, mat, err)
+         if (allocated(err)) return
+      end do
+   end subroutine prepare_row
+
    !> n tread-like patches in a row (contact angles −0.03 − 0.02 (k − 1) rad, gaps
    !> 0.5 (k − 1) µm) under n·load_per_patch: the coupled solution, and the local-Hertz one with
    !> each patch then coupled alone.
@@ -101,20 +123,11 @@ contains
       real(wp), intent(out) :: dz_alone, dz
       type(error_type), allocatable, intent(out) :: error
       type(normal_contact_type) :: contacts(n)
-      type(patch_geometry_type) :: geom
       type(normal_options_type) :: options
-      type(material_type) :: mat
       type(lib_error), allocatable :: err
       integer :: k
 
-      options%reduction = reduction_local_hertz
-      do k = 1, n
-         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
-            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
-         geom%y_rail = -spacing*(k - 1)
-         call prepare_normal_contact(contacts(k), geom, options, mat, err)
-         if (allocated(err)) exit
-      end do
+      call prepare_row(contacts, reduction_local_hertz, err)
       if (.not. allocated(err)) call solve_vertical_load(contacts, n*load_per_patch, alone, &
          dz_alone, err)
       do k = 1, n
@@ -138,22 +151,12 @@ contains
       type(normal_contact_type) :: contacts(n)
       type(normal_patch_type) :: cold(n), other(n), warm(n)
       type(coupling_start_type) :: start
-      type(patch_geometry_type) :: geom
-      type(normal_options_type) :: options
-      type(material_type) :: mat
       type(lib_error), allocatable :: err
       real(wp) :: dz_cold, dz_warm, dz_other, f_z, largest
       integer :: k, m
 
-      options%reduction = reduction_coupled
       f_z = n*load_per_patch
-      do k = 1, n
-         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
-            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
-         geom%y_rail = -spacing*(k - 1)
-         call prepare_normal_contact(contacts(k), geom, options, mat, err)
-         if (allocated(err)) exit
-      end do
+      call prepare_row(contacts, reduction_coupled, err)
       if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, cold, dz_cold, err)
       call start%reset()
       if (.not. allocated(err)) call solve_vertical_load(contacts, 1.03_wp*f_z, other, dz_other, &
@@ -196,22 +199,11 @@ contains
       type(normal_contact_type) :: contacts(n)
       type(normal_patch_type) :: cold(n), tight(n), loose(n), guessed(n)
       type(coupling_start_type) :: start
-      type(patch_geometry_type) :: geom
-      type(normal_options_type) :: options
-      type(material_type) :: mat
       type(lib_error), allocatable :: err
       real(wp) :: dz_cold, dz_tight, dz_loose, dz_guessed, f_z
-      integer :: k
 
-      options%reduction = reduction_coupled
       f_z = n*load_per_patch
-      do k = 1, n
-         call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
-            gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
-         geom%y_rail = -spacing*(k - 1)
-         call prepare_normal_contact(contacts(k), geom, options, mat, err)
-         if (allocated(err)) exit
-      end do
+      call prepare_row(contacts, reduction_coupled, err)
       if (.not. allocated(err)) call solve_vertical_load(contacts, f_z, cold, dz_cold, err)
       if (.not. allocated(err)) call solve_vertical_load(contacts, 1.03_wp*f_z, tight, &
          dz_tight, err)
