@@ -4,7 +4,7 @@ module shcontact_app_commands
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
-   use shcontact_core_strings, only: str_int, visible
+   use shcontact_core_strings, only: str_int, str_real, visible
    use shcontact_core_text, only: string_type
    use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
       report_header, report_lines, report_case_text, report_units, iso_timestamp, &
@@ -273,6 +273,17 @@ contains
       ! Refused before anything is computed: never over a file this run did not write.
       call check_output_file(name, what, cli%force, [cli%case_file], error)
       if (.not. allocated(error)) call configure(plain, config, error)
+      ! The tables are those of the wheelset without yaw: a yawed wheel's (the contact locus,
+      ! doc/kinematics.md) exist only inside the kinematic call, so writing these would be a
+      ! wrong answer for the case asked.
+      if (.not. allocated(error)) then
+         associate (first => config%case_point(1))
+            if (first%yaw /= 0.0_wp) call fatal_error(error, case_source(cli)// &
+               ': &kinematics yaw = '//str_real(first%yaw)//' rad: `shcontact geometry` '// &
+               'writes the tables of a wheelset without yaw only; set yaw = 0', &
+               stat_invalid_input)
+         end associate
+      end if
       if (.not. allocated(error)) call prepare_run(config, setup, error)
       if (.not. allocated(error)) call solve_geometry(setup, config%case_point(1), patches, error)
       if (.not. allocated(error)) call write_geometry_table(patches, name, error)
@@ -283,5 +294,13 @@ contains
       if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: geometry of '// &
          str_int(size(patches))//' patch(es) written to '//name
    end function geometry_command
+
+   !> Where a case's inputs come from, for messages: the case file, or the built-in case.
+   pure function case_source(cli) result(text)
+      type(cli_type), intent(in) :: cli
+      character(len=:), allocatable :: text
+      text = 'the built-in case'
+      if (len(cli%case_file) > 0) text = cli%case_file
+   end function case_source
 
 end module shcontact_app_commands

@@ -189,6 +189,14 @@ contains
       if (allocated(error)) return
       call run_expect(error, dir, 'geometry --format csv', 1, out, err)
       if (allocated(error)) return
+      ! A yawed case's geometry is not the yaw-0 table: refused, nothing written.
+      call run_expect(error, dir, 'geometry -o yawed.txt --set kinematics%mode=on '// &
+         '--set kinematics%yaw=0.004', 2, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'the built-in case: &kinematics yaw = ', 'geometry with yaw')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/yawed.txt'), message='geometry with yaw wrote a file')
+      if (allocated(error)) return
       call run_expect(error, dir, 'run --csv-units', 1, out, err)
       if (allocated(error)) return
       call expect_in(error, err, '--csv-units needs --format csv', 'run --csv-units')
