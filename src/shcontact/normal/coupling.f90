@@ -369,12 +369,12 @@ contains
       real(wp) :: history_x(max_total, anderson_memory), history_f(max_total, anderson_memory)
       type(group_system_type) :: system
       real(wp) :: peak, log_a, log_peak, take, peak_ref, largest, last_largest
-      real(wp) :: stop
+      real(wp) :: converged_step
       integer :: it, g, n, used, slot
 
       n = set%n
-      stop = length_tolerance
-      if (present(start)) stop = max(stop, start%tolerance)
+      converged_step = length_tolerance
+      if (present(start)) converged_step = max(converged_step, start%tolerance)
       call patch_weights(set, weight)
       call fill_kernel(set, e_star, weight, kern, slope)
       ac_fill(1:n) = set%ac(1:n)
@@ -421,7 +421,7 @@ contains
             step(g) = take*(log_peak - log_a)/(1.0_wp - length_sensitivity)
          end do
          largest = maxval(abs(step(1:n)))
-         if (largest <= stop) exit
+         if (largest <= converged_step) exit
          ! The plain steps accelerated (Anderson), restarted where they stop shrinking.
          if (.not. (largest < last_largest)) used = 0
          last_largest = largest
