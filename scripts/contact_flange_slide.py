@@ -12,8 +12,11 @@ scripts/contact_kinematic_set.py, set 1, with T = 0: no tangential problem) and 
   the loaded state (the .mat file), ours from the geometry table of the first contact.
 CONTACT's approach times tan(delta) is the slide of the vertical approach along the flange face.
 
+With --scan-fn F1,F2,... it prints instead, for ours alone, where the loaded strips end on the
+root side (s, mm from the first contact) with the normal force prescribed at each F_n (N).
+
 usage: scripts/contact_flange_slide.py [--approach conformal|planar] [--fz 30000,64700,...]
-           [--yaw-mrad 0,8,-8] [--workdir DIR]
+           [--yaw-mrad 0,8,-8] [--workdir DIR] [--scan-fn F1,F2,...]
   CONTACT_EXE: CONTACT (scripts/contact_build.sh); SHCONTACT_EXE: the shcontact program (release
   build); needs numpy and h5py. Not part of the build or the tests.
 """
@@ -84,23 +87,28 @@ def contact_case(work, rail, wheel, fz, yaw, approach):
                 dist=root_distance(g['s'], hmin, g['s'][np.argmin(hmin)] + 0.1))
 
 
-def ours_case(work, fz, yaw):
+def ours_case(work, fz, yaw, load='vertical'):
+    """Our solution; load 'vertical' (fz: F_z) or 'force' (fz: F_n)."""
     import h5py
-    name = os.path.join(work, 'ours_fz%d_yaw%+d' % (round(fz), round(yaw * 1e3)))
+    name = os.path.join(work, 'ours_%s%d_yaw%+d' % (load, round(fz), round(yaw * 1e3)))
     with open(name + '.nml', 'w') as f:
         f.write("&profiles wheel = 'builtin:S1002', rail = 'builtin:UIC60-canted' /\n"
                 "&track rail_canted = .true. /\n&position t_y = %.4f, roll = 0.0 /\n"
                 "&kinematics mode = 'on', yaw = %.6f, v_forward = 2000.0 /\n"
                 "&material shear_modulus = 82670.0, poisson = 0.27, friction = 0.001 /\n"
-                "&load mode = 'vertical', vertical_force = %.1f /\n"
-                "&output fields = 'all' /\n" % (Y_WS, yaw, fz))
+                "&load mode = '%s', %s = %.1f /\n"
+                "&output fields = 'all' /\n"
+                % (Y_WS, yaw, load, {'vertical': 'vertical_force', 'force': 'normal_force'}[load],
+                   fz))
     subprocess.run(cr.shcontact_command() + ['run', name + '.nml', '-o', name + '.h5'],
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     with h5py.File(name + '.h5') as f:
         g = f['geometry/patch_1']
         s, gap = g['y'][:], g['gap'][:]
         fn, area = float(f['summary/fn_total'][0]), float(f['summary/area'][0])
-    return dict(fn=fn, area=area, dist=root_distance(s, gap, 0.1))
+        strips = f['cases/000001/patch_1/normal']
+        loaded = strips['y'][:][strips['strip_load'][:] > 0]
+    return dict(fn=fn, area=area, dist=root_distance(s, gap, 0.1), s_end=loaded.max())
 
 
 def main():
@@ -109,9 +117,19 @@ def main():
     ap.add_argument('--fz', default='30000,64700,97000,150000')
     ap.add_argument('--yaw-mrad', default='0,8,-8')
     ap.add_argument('--workdir', default=None)
+    ap.add_argument('--scan-fn', default=None)
     a = ap.parse_args()
     work = a.workdir or tempfile.mkdtemp(prefix='contact_flange_slide_')
     os.makedirs(work, exist_ok=True)
+    if a.scan_fn:
+        yaws = [float(v) * 1e-3 for v in a.yaw_mrad.split(',')]
+        print('ours, F_n prescribed, Y_WS %.1f mm: end of the loaded strips on the root side (mm)'
+              % Y_WS)
+        print('  F_n kN | ' + ' '.join('yaw %+4.0f' % (y * 1e3) for y in yaws))
+        for fn in (float(v) for v in a.scan_fn.split(',')):
+            print('  %6.1f | ' % (fn / 1e3) + ' '.join('%8.3f' % ours_case(work, fn, y, 'force')
+                                                      ['s_end'] for y in yaws), flush=True)
+        return
     rail, wheel = ks.profiles('new', work)
     print('%s approach; Y_WS %.1f mm, frictionless; angle = acos(F_z/F_n); dist = gap minimum '
           'to the flange root (mm)' % (a.approach, Y_WS))
