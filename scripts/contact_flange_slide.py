@@ -12,11 +12,15 @@ scripts/contact_kinematic_set.py, set 1, with T = 0: no tangential problem) and 
   the loaded state (the .mat file), ours from the geometry table of the first contact.
 CONTACT's approach times tan(delta) is the slide of the vertical approach along the flange face.
 
+With --write-rows FILE it also writes CONTACT's rows (F_z, yaw, approach, delta_cp, s, min over x of
+h) to FILE (data/exact/kinematic_flange/h_rows_7mm.csv, read by the test
+vertical_approach/flange_root_slide).
+
 With --scan-fn F1,F2,... it prints instead, for ours alone, where the loaded strips end on the
 root side (s, mm from the first contact) with the normal force prescribed at each F_n (N).
 
 usage: scripts/contact_flange_slide.py [--approach conformal|planar] [--fz 30000,64700,...]
-           [--yaw-mrad 0,8,-8] [--workdir DIR] [--scan-fn F1,F2,...]
+           [--yaw-mrad 0,8,-8] [--workdir DIR] [--write-rows FILE] [--scan-fn F1,F2,...]
   CONTACT_EXE: CONTACT (scripts/contact_build.sh); SHCONTACT_EXE: the shcontact program (release
   build); needs numpy and h5py. Not part of the build or the tests.
 """
@@ -82,7 +86,8 @@ def contact_case(work, rail, wheel, fz, yaw, approach):
     g = read_mat(os.path.join(work, name + '.0001a.mat'))
     hmin = np.nanmin(g['h'], axis=1)
     fn = g['pn'].sum() * g['dx'] * g['dy']
-    return dict(fn=fn, area=(g['pn'] > 0).sum() * g['dx'] * g['dy'], approach=app,
+    rows = [(fz, yaw, app, g['delta'], s, h) for s, h in zip(g['s'], hmin) if np.isfinite(h)]
+    return dict(fn=fn, area=(g['pn'] > 0).sum() * g['dx'] * g['dy'], approach=app, rows=rows,
                 slide=app * abs(np.tan(g['delta'])),
                 dist=root_distance(g['s'], hmin, g['s'][np.argmin(hmin)] + 0.1))
 
@@ -118,6 +123,7 @@ def main():
     ap.add_argument('--yaw-mrad', default='0,8,-8')
     ap.add_argument('--workdir', default=None)
     ap.add_argument('--scan-fn', default=None)
+    ap.add_argument('--write-rows', default=None)
     a = ap.parse_args()
     work = a.workdir or tempfile.mkdtemp(prefix='contact_flange_slide_')
     os.makedirs(work, exist_ok=True)
@@ -135,15 +141,22 @@ def main():
           'to the flange root (mm)' % (a.approach, Y_WS))
     print('  F_z kN  yaw | CONTACT: F_n kN  angle  area  approach  slide  dist | ours: F_n kN  '
           'angle  area  dist (first contact)')
+    rows = []
     for fz in (float(v) for v in a.fz.split(',')):
         for yaw in (float(v) * 1e-3 for v in a.yaw_mrad.split(',')):
             c = contact_case(work, rail, wheel, fz, yaw, a.approach)
+            rows += c['rows']
             o = ours_case(work, fz, yaw)
             ang = lambda fn: np.degrees(np.arccos(fz / fn))  # noqa: E731
             print('  %6.1f %+4.0f | %7.1f %6.2f %5.1f %8.4f %6.3f %5.3f | %7.1f %6.2f %5.1f %5.3f'
                   % (fz / 1e3, yaw * 1e3, c['fn'] / 1e3, ang(c['fn']), c['area'], c['approach'],
                      c['slide'], c['dist'], o['fn'] / 1e3, ang(o['fn']), o['area'], o['dist']),
                   flush=True)
+    if a.write_rows:
+        with open(a.write_rows, 'w') as f:
+            f.write('fz_N,yaw_rad,approach_mm,delta_rad,s_mm,h_mm\n')
+            for r in rows:
+                f.write('%.1f,%.4f,%.6f,%.6f,%.4f,%.6e\n' % r)
 
 
 if __name__ == '__main__':

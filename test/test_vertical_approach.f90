@@ -10,7 +10,10 @@ module test_vertical_approach
    use shcontact_core_material, only: material_type
    use shcontact_profile_points, only: profile_type
    use shcontact_geometry_track, only: track_type, wheelset_position_type
-   use shcontact_geometry_contact, only: contact_options_type, find_contact_patches
+   use shcontact_geometry_contact, only: contact_options_type, find_contact_patches, &
+      prepared_profiles_type, prepare_profiles, prepare_wheel
+   use shcontact_geometry_kinematics, only: yawed_wheel_profile
+   use shcontact_profile_builtin, only: builtin_profile
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, reduction_local_hertz
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
@@ -25,8 +28,9 @@ module test_vertical_approach
 
    !> The project's CONTACT positions (data/exact/, README there).
    !> Y_WS = 7 mm (yws7p0, a 69.7° flange) is not among them: there our loaded gap differs from
-   !> CONTACT's h by more than this test's 4 % + 0.2 µm; not analysed yet (doc/geometry.md
-   !> "Vertical approach").
+   !> CONTACT's h by more than this test's 4 % + 0.2 µm: the finite slide of the vertical approach
+   !> carries the flange root towards the contact there (test flange_root_slide, doc/validation.md
+   !> §6.8 "Yaw and the flange root").
    character(len=*), parameter :: positions(18) = [character(len=7) :: 'yws-6p0', 'yws-4p0', &
       'yws-2p0', 'yws-1p0', 'yws0p5', 'yws0p75', 'yws1p0', 'yws1p25', 'yws1p5', 'yws2p0', &
       'yws2p5', 'yws3p0', 'yws3p5', 'yws4p0', 'yws4p4', 'yws4p6', 'yws6p0', 'yws6p5']
@@ -39,7 +43,8 @@ contains
       testsuite = [ &
          new_unittest('tilted_hertz_contact_follows_loaded_gap', test_tilted_hertz), &
          new_unittest('flat_contact_keeps_first_contact', test_flat), &
-         new_unittest('loaded_gap_is_contacts_h', test_contact_h) &
+         new_unittest('loaded_gap_is_contacts_h', test_contact_h), &
+         new_unittest('flange_root_slide', test_flange_root_slide) &
          ]
    end subroutine collect_vertical_approach
 
@@ -194,6 +199,136 @@ contains
          end associate
       end do
    end subroutine test_contact_h
+
+   !> S1002 / UIC60 1:40 at Y_WS = 7 mm, the straight 70° flange face against the gauge corner,
+   !> yaw 0 and 8 mrad (the contact locus), against CONTACT's undeformed distance h of the loaded
+   !> state at F_z = 30, 64.7 and 97 kN (frictionless, conformal approach; per grid row s the
+   !> smallest h over x, data/exact/kinematic_flange/h_rows_7mm.csv, scripts/
+   !> contact_flange_slide.py). The distance from the gap's minimum to the flange root (where the
+   !> gap leaves the face's parabola by 0.003 mm, [[root_distance]]) in our first-contact table
+   !> and in CONTACT's h: the face's curvature within 2 %; yaw's shift of the root (0.165 mm in
+   !> ours) within 0.02 mm of CONTACT's at every load; and CONTACT's loaded distance is ours less
+   !> the slide of the vertical approach along the face, δ tan|δ_cp| (0.28–0.57 mm), within
+   !> 0.08 mm, while without the slide the two differ by more than 0.2 mm (doc/validation.md
+   !> §6.8, "Yaw and the flange root": the slide that our tilt term, linear in the wheel's slope,
+   !> does not make on the straight face).
+   subroutine test_flange_root_slide(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: yaws(2) = [0.0_wp, 0.008_wp], loads(3) = [30000.0_wp, &
+         64700.0_wp, 97000.0_wp]
+      type(profile_type) :: wheel, rail, locus
+      type(track_type) :: track
+      type(prepared_profiles_type) :: unyawed, yawed
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(lib_error), allocatable :: err
+      real(wp), allocatable :: rows(:, :)
+      real(wp) :: ours(2), b_ours(2), theirs(3, 2), b_theirs, slide(3, 2)
+      logical, allocatable :: this(:)
+      integer :: j, k
+
+      track%rail_canted = .true.
+      call builtin_profile('S1002', wheel, err)
+      if (.not. allocated(err)) call builtin_profile('UIC60-canted', rail, err)
+      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track, &
+         contact_options_type(), unyawed, err)
+      if (allocated(err)) then
+         call test_failed(error, err%message); return
+      end if
+      do j = 1, size(yaws)
+         yawed = unyawed
+         call yawed_wheel_profile(wheel, unyawed%wheel, track, unyawed%z_tape, yaws(j), locus)
+         call prepare_wheel(locus, track, contact_options_type(), yawed, err)
+         if (.not. allocated(err)) call find_contact_patches(yawed, &
+            wheelset_position_type(y_ws=7.0_wp), geometry, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message); return
+         end if
+         call check(error, size(geometry) == 1, message='one patch expected on the flange')
+         if (allocated(error)) return
+         call root_distance(geometry(1)%y, geometry(1)%gap, 0.1_wp, ours(j), b_ours(j))
+      end do
+      call read_columns('data/exact/kinematic_flange/h_rows_7mm.csv', [character(len=11) :: &
+         'fz_N', 'yaw_rad', 'approach_mm', 'delta_rad', 's_mm', 'h_mm'], rows, error)
+      if (allocated(error)) return
+      do k = 1, size(loads)
+         do j = 1, size(yaws)
+            this = abs(rows(:, 1) - loads(k)) < 1.0_wp .and. abs(rows(:, 2) - yaws(j)) < 1.0e-6_wp
+            call check(error, count(this) > 20, message='too few CONTACT rows')
+            if (allocated(error)) return
+            associate (s => pack(rows(:, 5), this), h => pack(rows(:, 6), this))
+               call root_distance(s, h, s(minloc(h, dim=1)) + 0.1_wp, theirs(k, j), b_theirs)
+            end associate
+            slide(k, j) = maxval(pack(rows(:, 3)*abs(tan(rows(:, 4))), this))
+            call check(error, b_theirs, b_ours(j), rel=.true., thr=0.02_wp, &
+               message='the flange face''s curvature B')
+            if (allocated(error)) return
+            call check(error, ours(j) - slide(k, j), theirs(k, j), thr=0.08_wp, &
+               message='CONTACT''s loaded root distance = ours less the slide')
+            if (allocated(error)) return
+            call check(error, abs(ours(j) - theirs(k, j)) > 0.2_wp, &
+               message='the slide should be what separates the root distances')
+            if (allocated(error)) return
+         end do
+         call check(error, ours(2) - ours(1), theirs(k, 2) - theirs(k, 1), thr=0.02_wp, &
+            message='yaw''s shift of the flange root')
+         if (allocated(error)) return
+      end do
+      call check(error, ours(2) - ours(1) > 0.1_wp, message='yaw should move the root away')
+   end subroutine test_flange_root_slide
+
+   !> Distance (mm) from the minimum of a gap h(s) to the flange root: a least-squares parabola
+   !> through the points with s < s_face and h < 0.15 mm (the flange face), and the first s
+   !> beyond its vertex where h lies 0.003 mm below it (linear interpolation); b its curvature.
+   pure subroutine root_distance(s, h, s_face, distance, b)
+      real(wp), intent(in) :: s(:), h(:), s_face
+      real(wp), intent(out) :: distance, b
+      real(wp) :: m(3, 3), r(3), c(3), s0, dev, dev_prev
+      integer :: i, p, q
+
+      m = 0.0_wp
+      r = 0.0_wp
+      do i = 1, size(s)
+         if (.not. (s(i) < s_face .and. h(i) < 0.15_wp)) cycle
+         do p = 1, 3
+            do q = 1, 3
+               m(p, q) = m(p, q) + s(i)**(p + q - 2)
+            end do
+            r(p) = r(p) + h(i)*s(i)**(p - 1)
+         end do
+      end do
+      c = solve3(m, r)
+      b = c(3)
+      s0 = -c(2)/(2.0_wp*c(3))
+      distance = huge(1.0_wp)
+      dev_prev = 0.0_wp
+      do i = 1, size(s)
+         dev = c(1) + s(i)*(c(2) + s(i)*c(3)) - h(i)
+         if (s(i) > s0 .and. dev > 0.003_wp .and. i > 1) then
+            distance = s(i - 1) + (0.003_wp - dev_prev)/(dev - dev_prev)*(s(i) - s(i - 1)) - s0
+            return
+         end if
+         dev_prev = dev
+      end do
+   end subroutine root_distance
+
+   !> x with m x = r (3 × 3, Cramer's rule; m well conditioned here).
+   pure function solve3(m, r) result(x)
+      real(wp), intent(in) :: m(3, 3), r(3)
+      real(wp) :: x(3), a(3, 3), d
+      integer :: k
+      d = det3(m)
+      do k = 1, 3
+         a = m
+         a(:, k) = r
+         x(k) = det3(a)/d
+      end do
+   end function solve3
+
+   pure real(wp) function det3(a)
+      real(wp), intent(in) :: a(3, 3)
+      det3 = a(1, 1)*(a(2, 2)*a(3, 3) - a(2, 3)*a(3, 2)) - a(1, 2)*(a(2, 1)*a(3, 3) - &
+         a(2, 3)*a(3, 1)) + a(1, 3)*(a(2, 1)*a(3, 2) - a(2, 2)*a(3, 1))
+   end function det3
 
    !> Linear interpolation of (x, f) at t (x increasing; clamped at the ends).
    pure real(wp) function interpolate(x, f, t) result(v)
