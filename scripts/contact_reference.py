@@ -122,6 +122,11 @@ FLOAT = r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?'
 
 
 def ffloat(s):
+    """A Fortran number as CONTACT prints it: D exponents, and 0.145781-310 (an exponent below
+    -99 written without its letter)."""
+    m = re.match(r'^([-+]?\d*\.\d+)([-+]\d{3})$', s)
+    if m:
+        return float(m.group(1) + 'E' + m.group(2))
     return float(s.replace('D', 'E').replace('d', 'e'))
 
 
