@@ -479,12 +479,6 @@ contains
             if (allocated(error)) return
          end do
       end do
-   contains
-      pure function real_text(x) result(text)
-         real(wp), intent(in) :: x
-         character(len=24) :: text
-         write (text, '(es12.4)') x
-      end function real_text
    end subroutine test_short_tables_yawed_vertical
 
    !> The yawed wheel interpolated in ψ² (shcontact_geometry_yaw) against the direct fit of the
@@ -523,12 +517,6 @@ contains
             'yaw table differs from the direct fit at yaw '//real_text(yaws(i)))
          if (allocated(error)) return
       end do
-   contains
-      pure function real_text(x) result(text)
-         real(wp), intent(in) :: x
-         character(len=24) :: text
-         write (text, '(es12.4)') x
-      end function real_text
    end subroutine test_yaw_table
 
    !> The yawed wheel's effective profile (the contact locus, yawed_wheel_profile) against the
@@ -624,11 +612,6 @@ contains
             height = r*sqrt(1.0_wp - sin_t**2)
          end if
       end function height
-      pure function real_text(x) result(text)
-         real(wp), intent(in) :: x
-         character(len=24) :: text
-         write (text, '(es12.4)') x
-      end function real_text
    end subroutine test_yawed_silhouette
 
    !> A MiniProf wheel file through the solver object: without a track, its flange back is at 0
@@ -748,5 +731,12 @@ contains
          load_vertical_position, -0.01_wp), by_position, err)
       call check(error, allocated(err), 'a negative vertical position was accepted')
    end subroutine test_vertical_position
+
+   !> A number for a message.
+   pure function real_text(x) result(text)
+      real(wp), intent(in) :: x
+      character(len=24) :: text
+      write (text, '(es12.4)') x
+   end function real_text
 
 end module test_kinematics
