@@ -32,28 +32,17 @@ import contact_reference as cr  # noqa: E402
 import contact_kinematic_set as ks  # noqa: E402
 
 Y_WS = 7.0
-COLUMNS = ('I', 'IGS', 'H', 'MU', 'PN', 'PX', 'PY', 'UN', 'UX', 'UY')
-
-
-def number(text):
-    """A number of CONTACT's .mat file, also in the form 0.145781-310 (exponent < -99)."""
-    m = re.match(r'^([-+]?\d*\.\d+)([-+]\d{3})$', text)
-    return float(m.group(1) + 'E' + m.group(2)) if m else float(text.replace('D', 'E'))
 
 
 def read_mat(path):
-    """The grid of a module-1 .mat file: s (rows, mm), h and pn (rows x columns), dx, dy, delta."""
-    rows = [[number(t) for t in line.split()] for line in open(path) if not line.startswith('%')]
-    mx, my = int(rows[3][0]), int(rows[3][1])
-    dx, dy, yl = rows[3][4], rows[3][5], rows[3][3]
-    el = np.array(rows[6:])
-    grid = {}
-    for k, name in enumerate(COLUMNS[1:], start=1):
-        a = np.full(mx * my, np.nan)
-        a[el[:, 0].astype(int) - 1] = el[:, k]
-        grid[name] = a.reshape(my, mx)
-    return dict(s=yl + (np.arange(my) + 0.5) * dy, h=grid['H'], pn=np.nan_to_num(grid['PN']),
-                dx=dx, dy=dy, delta=rows[2][3])
+    """The grid of a module-1 .mat file: s (rows, mm), h and pn (rows x columns; h NaN where
+    CONTACT lists no element), dx, dy, delta (contact angle, rad)."""
+    m = cr.read_mat(path)
+    g = m['grid']
+    shape = (m['my'], m['mx'])
+    h = np.where(g['listed'], g['h'], np.nan).reshape(shape)
+    return dict(s=m['yl'] + (np.arange(m['my']) + 0.5) * m['dy'], h=h,
+                pn=g['pn'].reshape(shape), dx=m['dx'], dy=m['dy'], delta=m['delt_r'])
 
 
 def root_distance(s, gap, tip_side_limit):
