@@ -159,7 +159,7 @@ contains
       ! inner 80 % of the width (0.0034 measured). The coupled reduction's strip lengths follow
       ! the coupled loads; on the outer strips (k 0.16–0.6, half-lengths of 0.7–2.8 mm over
       ! 0.2 mm wide strips) the coupled solution, collocated on a few narrow groups, is off by up
-      ! to 0.047 in k (measured): within 0.05 there. The local-Hertz strips themselves are exact
+      ! to 0.045 in k (measured; 0.047 with the former partition by index): within 0.05 there. The local-Hertz strips themselves are exact
       ! (test quadratic_gap_local_hertz_k).
       call check(error, maxval(abs(patch%k - sqrt(1.0_wp - (patch%y/hz%b)**2)), &
          mask=abs(patch%y) < 0.8_wp*hz%b) < 5.0e-3_wp, &
@@ -180,8 +180,12 @@ contains
    !> the half-space condition on every strip's centre line, so the coupled strips stay Hertz's:
    !> the load exactly (it is kept), the approach and p₀ within 2 %, and every strip keeps load.
    !> Against the local-Hertz strips (Hertz's own on this gap): the approach is theirs (the
-   !> coupling keeps the load–approach relation) and every strip load within 2 % of the largest
-   !> (1.4 % measured: the groups' mean lengths near the ellipse's ends).
+   !> coupling keeps the load–approach relation) and every strip load within 2.5 % of the largest
+!> at 50 strips (2.18 % measured, at the ellipse's ends: the end group's single length and
+!> width), and within 5 % at every even strip count 40 … 64 (1.9–4.6 % measured with the groups
+!> fixed in position, shcontact_normal_coupling_groups; 2.0–8.6 % with the former partition by
+!> index, which this check held at its 2.0 % of 50 strips alone: doc/performance.md, "The
+!> preset's deviation and the strip count").
    subroutine test_coupled_hertz(error)
       type(error_type), allocatable, intent(out) :: error
       type(lib_error), allocatable :: err
@@ -225,10 +229,35 @@ contains
       call check(error, patch%approach, local%approach, thr=1.0e-14_wp, rel=.true., &
          message='approach of the local-Hertz strips')
       if (allocated(error)) return
-      ! 1.99 % at the contact's edge before the group-width mean (doc/validation.md §6.9),
-      ! 2.01 % with it: the mean of a parabolic load over a group's width is 0.1 % below it.
       call check(error, maxval(abs(patch%strip_load - local%strip_load)) <= &
-         2.1e-2_wp*maxval(local%strip_load), message='strip loads differ from Hertz by > 2.1 %')
+         2.5e-2_wp*maxval(local%strip_load), message='strip loads differ from Hertz by > 2.5 %')
+      if (allocated(error)) return
+      block
+         integer :: n
+         character(len=80) :: buf
+         do n = 40, 64, 2
+            call new_normal_options(options, err, reduction='coupled', n_strips=n)
+            if (.not. allocated(err)) then
+               call prepare(contact, geom, options, error)
+               if (allocated(error)) return
+               call solve_load(contact, seed_load, patch, err)
+            end if
+            if (.not. allocated(err)) then
+               options%reduction = reduction_local_hertz
+               call prepare(contact, geom, options, error)
+               if (allocated(error)) return
+               call solve_load(contact, seed_load, local, err)
+            end if
+            if (allocated(err)) then
+               call test_failed(error, err%message); return
+            end if
+            write (buf, '(a, i0, a, f6.2, a)') 'strip loads at ', n, ' strips differ from Hertz by ', &
+               1.0e2_wp*maxval(abs(patch%strip_load - local%strip_load))/maxval(local%strip_load), ' %'
+            call check(error, maxval(abs(patch%strip_load - local%strip_load)) <= &
+               5.0e-2_wp*maxval(local%strip_load), message=trim(buf)//' (> 5 %)')
+            if (allocated(error)) return
+         end do
+      end block
    end subroutine test_coupled_hertz
 
    !> A gap whose lateral curvature steps from B to B/4 at y_s = b/3 inside the patch (g and g'

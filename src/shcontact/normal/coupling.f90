@@ -36,8 +36,9 @@
 !> moves over distances of the patch width, which the groups resolve) and the strips take their
 !> group's coupled/local load ratio, interpolated between group centres and applied to their local
 !> loads averaged over a group's width (doc/validation.md §6.9: the local loads step where the
-!> gap's curvature steps), and their lengths the square root of the change. The groups are a fixed partition of the patch's strips by index, narrower at
-!> the ends (shcontact_normal_coupling_groups), and their centre, length, interpenetration and
+!> gap's curvature steps), and their lengths the square root of the change. The groups are a partition of the patch's strip interval fixed in
+!> position, narrower at the ends, a strip across a boundary shared by the two groups
+!> (shcontact_normal_coupling_groups), and their centre, length, interpenetration and
 !> contact angle are means weighted by the strip loads: the strips move continuously with the approach, and a
 !> strip entering or leaving the contact changes its group continuously, so the coupled loads
 !> are a continuous function of the wheel's position (a partition of the loaded strips by

@@ -1,5 +1,5 @@
 !> The groups of strips of the coupled reduction (shcontact_normal_coupling, module text there):
-!> a fixed partition of each patch's strips by index ([[group_strips]]), each group one strip of
+!> a partition of each patch's strip interval fixed in position ([[group_bounds]]), each group one strip of
 !> its summed width and load-weighted mean centre, length, interpenetration and contact angle
 !> ([[add_patch_groups]]); where the patches of a wheel press each other ([[patch_weights]]); and
 !> the strips scaled back by their groups' coupled/local load ratios ([[scale_patch]]).
@@ -15,6 +15,9 @@ module shcontact_normal_coupling_groups
 
    !> Most groups of strips per patch in the coupled solve (shcontact_normal_coupling).
    integer, parameter, public :: max_groups = 16
+   !> The strip count whose whole-strip groups every strip count shares ([[group_bounds]]): the
+   !> default grid's 100 strips.
+   integer, parameter :: reference_strips = 100
    !> Most patches of a wheel coupled together (shcontact_normal_coupling's couple_patches).
    integer, parameter, public :: max_patches = 4
    !> Most groups of one coupled problem.
@@ -55,6 +58,9 @@ module shcontact_normal_coupling_groups
       real(wp), dimension(max_total) :: length_per_peak
       !> The groups in contact at the last solve (the next one starts from them).
       logical :: in_contact(max_total)
+      !> The group's place 1 … ng in its patch's partition ([[group_bounds]]; groups without
+      !> loaded strips are left out of the set, [[scale_patch]] places them back).
+      integer :: slot(max_total)
       integer, dimension(max_patches) :: first_group, last_group
       !> Per set patch: local-Hertz load N_k (N), position of the reference point along the
       !> profile (mm), contact angle γ_k (rad) and cos γ_k.
@@ -73,14 +79,14 @@ contains
       type(normal_patch_type), intent(in) :: patch
       !> Position of the patch's reference point along the profile (mm) and its contact angle.
       real(wp), intent(in) :: offset, gamma
-      integer :: first(max_groups), last(max_groups)
+      real(wp) :: bound(0:max_groups)
       integer :: ng, i, j, g, n, g1
-      real(wp) :: load_i
+      real(wp) :: load_i, share, lo, hi
 
       n = patch%n_strips
       call open_patch(set, sum(patch%strip_load(1:n)), offset, gamma)
       if (.not. (set%patch_load(set%n_patches) > 0.0_wp)) return
-      call patch_partition(n, ng, first, last)
+      call group_bounds(n, ng, bound)
       g = set%n
       do j = 1, ng
          g = g + 1
@@ -92,10 +98,16 @@ contains
          set%local(g) = 0.0_wp
          ! Means weighted by the strip loads, so that a strip entering or leaving the contact
          ! (its load goes to zero with it) changes the group continuously.
-         do i = first(j), last(j)
+         ! A strip across a boundary belongs to both groups in proportion to its overlap with
+         ! each, at the centre of its part in each ([[group_bounds]]).
+         do i = max(1, floor(bound(j - 1)) + 1), min(n, ceiling(bound(j)))
             if (.not. (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp)) cycle
-            load_i = patch%strip_load(i)
-            set%yc(g) = set%yc(g) + load_i*patch%y(i)
+            lo = max(real(i - 1, wp), bound(j - 1))
+            hi = min(real(i, wp), bound(j))
+            share = hi - lo
+            if (.not. (share > 0.0_wp)) cycle
+            load_i = share*patch%strip_load(i)
+            set%yc(g) = set%yc(g) + load_i*(patch%y(i) + (min(hi, max(lo, i - 0.5_wp)) - (i - 0.5_wp))*patch%dy)
             set%ac(g) = set%ac(g) + load_i*patch%a(i)
             ! δ_i = k_i² δ_ref = δ − g_i/ε_b,i (doc/theory.md §4.3 step 3): the
             ! interpenetration δ − g_i of the strip, its gap below the patch's approach.
@@ -109,7 +121,7 @@ contains
             g = g - 1
             cycle
          end if
-         set%width(g) = real(last(j) - first(j) + 1, wp)*patch%dy
+         set%width(g) = (bound(j) - bound(j - 1))*patch%dy
          set%yc(g) = set%yc(g)/set%local(g)
          set%ac(g) = set%ac(g)/set%local(g)
          set%gc(g) = set%gc(g)/set%local(g)
@@ -121,6 +133,7 @@ contains
          ! The local-Hertz strips have a_i = (a_H,i/p₀H,i) p₀,ᵢ: the group's own ratio.
          set%length_per_peak(g) = 0.5_wp*pi*set%ac(g)**2*set%width(g)/set%local(g)
          set%in_contact(g) = .true.
+         set%slot(g) = j
       end do
       set%n = g
       set%last_group(set%n_patches) = set%n
@@ -165,6 +178,7 @@ contains
          set%local(h) = source%local(g)
          set%length_per_peak(h) = source%length_per_peak(g)
          set%in_contact(h) = .true.
+         set%slot(h) = source%slot(g)
          set%s(h) = offset + set%yc(h)
          set%n = h
       end do
@@ -197,32 +211,55 @@ contains
       integer, intent(in) :: ip
       type(normal_patch_type), intent(inout) :: patch
       real(wp) :: load, total, t, r, g, root, full, share, mean
-      real(wp) :: ratio(max_total)
-      integer :: i, jg, g1, g2, n, gm
+      !> Per group of the patch's partition (in order along the strips; a group without loaded
+      !> strips is not in the set): the interpolation node y (mm), local load (N), own and
+      !> interpolated ratio.
+      real(wp), dimension(max_groups) :: node_y, node_local, node_own, ratio
+      real(wp) :: bound(0:max_groups)
+      integer :: i, j, jg, g1, g2, n, ng, jm
 
       n = patch%n_strips
       g1 = set%first_group(ip)
       g2 = set%last_group(ip)
       if (g2 < g1) return
       load = sum(set%ratio(g1:g2)*set%local(g1:g2))
-      ! The ratios interpolated between the group centres: a group whose local load is below
-      ! ratio_share of the patch's largest enters with its own ratio in proportion to that
-      ! share and otherwise takes that of its neighbour towards the largest group, as its
-      ! interpenetration enters ([[add_patch_groups]]). Its own ratio is that of a load that
-      ! tends to 0 with the group's (0 when it is out of the coupled contact); taken at full
-      ! weight, it pulled the interpolated ratios of its neighbours' strips towards it and let
-      ! them jump when the group left the set (its strips out of contact): the coupled loads
-      ! then jumped with the approach (doc/kinematics.md, "Robustness with other table steps").
-      full = ratio_share*maxval(set%local(g1:g2))
-      gm = g1 - 1 + maxloc(set%local(g1:g2), 1)
-      ratio(gm) = set%ratio(gm)
-      do jg = gm + 1, g2
-         share = min(1.0_wp, set%local(jg)/full)
-         ratio(jg) = share*set%ratio(jg) + (1.0_wp - share)*ratio(jg - 1)
+      ! The interpolation nodes: the groups of the set at their centres, and the groups of the
+      ! partition without loaded strips (a gap between two lobes of the patch, or its unloaded
+      ! ends) at the middle of their intervals, with no load. The ratios are interpolated
+      ! between the nodes: a group whose local load is below ratio_share of the patch's
+      ! largest enters with its own ratio in proportion to that share and otherwise takes that
+      ! of its neighbour towards the largest group, as its interpenetration enters
+      ! ([[add_patch_groups]]); a group without load takes its neighbour's. Its own ratio is
+      ! that of a load that tends to 0 with the group's (0 when it is out of the coupled
+      ! contact); taken at full weight, it pulled the interpolated ratios of its neighbours'
+      ! strips towards it and let them jump when the group left the set (its strips out of
+      ! contact): the coupled loads then jumped with the approach (doc/kinematics.md,
+      ! "Robustness with other table steps"). Without the unloaded groups as nodes, a lobe's
+      ! last strips took a ratio interpolated across the gap towards the next lobe's, and
+      ! jumped when the lobe's last group emptied (flange state 599 of the benchmark with the
+      ! vehicle preset: doc/performance.md, "Groups fixed in position, tried again").
+      call group_bounds(n, ng, bound)
+      do j = 1, ng
+         node_y(j) = patch%y(1) + (0.5_wp*(bound(j - 1) + bound(j)) - 0.5_wp)*patch%dy
       end do
-      do jg = gm - 1, g1, -1
-         share = min(1.0_wp, set%local(jg)/full)
-         ratio(jg) = share*set%ratio(jg) + (1.0_wp - share)*ratio(jg + 1)
+      node_local(1:ng) = 0.0_wp
+      node_own(1:ng) = 0.0_wp
+      do jg = g1, g2
+         j = set%slot(jg)
+         node_y(j) = set%yc(jg)
+         node_local(j) = set%local(jg)
+         node_own(j) = set%ratio(jg)
+      end do
+      full = ratio_share*maxval(node_local(1:ng))
+      jm = maxloc(node_local(1:ng), 1)
+      ratio(jm) = node_own(jm)
+      do j = jm + 1, ng
+         share = min(1.0_wp, node_local(j)/full)
+         ratio(j) = share*node_own(j) + (1.0_wp - share)*ratio(j - 1)
+      end do
+      do j = jm - 1, 1, -1
+         share = min(1.0_wp, node_local(j)/full)
+         ratio(j) = share*node_own(j) + (1.0_wp - share)*ratio(j + 1)
       end do
       ! The local-Hertz loads averaged over the groups' widths ([[group_width_means]]; p0 holds
       ! them until the ratio loop below).
@@ -234,21 +271,24 @@ contains
       ! the local-Hertz loads is raised towards its neighbours, one at the contact's edge,
       ! whose local load vanishes, keeps a load that vanishes with it (the contact ends where
       ! the strips end, and a strip entering the contact enters with no load).
-      jg = g1
+      j = 1
       do i = 1, n
          r = 0.0_wp
          if (patch%a(i) > 0.0_wp .and. patch%k(i) > 0.0_wp) then
-            do while (jg < g2)
-               if (patch%y(i) < set%yc(jg + 1)) exit
-               jg = jg + 1
+            do while (j < ng)
+               if (patch%y(i) < node_y(j + 1)) exit
+               j = j + 1
             end do
-            if (g1 == g2 .or. patch%y(i) <= set%yc(g1)) then
-               r = ratio(g1)
-            else if (jg >= g2) then
-               r = ratio(g2)
+            if (ng == 1 .or. patch%y(i) <= node_y(1)) then
+               r = ratio(1)
+            else if (j >= ng) then
+               r = ratio(ng)
+            else if (ratio(j) == ratio(j + 1)) then
+               ! (Beyond a lobe's outer group: its ratio, as before the unloaded nodes.)
+               r = ratio(j)
             else
-               t = (patch%y(i) - set%yc(jg))/(set%yc(jg + 1) - set%yc(jg))
-               r = (1.0_wp - t)*ratio(jg) + t*ratio(jg + 1)
+               t = (patch%y(i) - node_y(j))/(node_y(j + 1) - node_y(j))
+               r = (1.0_wp - t)*ratio(j) + t*ratio(j + 1)
             end if
          end if
          if (r > 0.0_wp) then
@@ -328,84 +368,87 @@ contains
       set%n_patches = 0
    end subroutine reset_group_set
 
-   !> The partition of a patch's n strips into its groups (module text, [[group_strips]]): an
-   !> odd number of strips needs an odd number of groups for a mirror-symmetric partition (a
-   !> middle group).
-   pure subroutine patch_partition(n, ng, first, last)
-      !> Number of strips.
-      integer, intent(in) :: n
-      !> Number of groups, and the first and last strip of each.
-      integer, intent(out) :: ng, first(:), last(:)
-
-      ng = min(n, max_groups)
-      if (mod(n, 2) == 1 .and. mod(ng, 2) == 0) ng = ng - 1
-      call group_strips(n, ng, first, last)
-   end subroutine patch_partition
-
    !> The strips' local-Hertz loads averaged over the width the coupled problem resolves: each
-   !> strip's load replaced by the mean over a window of its group's width centred on it (± half
-   !> the group's strips; zeros beyond the strip interval). The coupled problem fixes the load of
+   !> strip's load replaced by the mean over a window centred on it of the largest odd number of
+   !> strips that fits in its group's width (the group that holds the strip's centre,
+   !> [[group_bounds]]; zeros beyond the strip interval). The coupled problem fixes the load of
    !> every group; within a group the shape is the local-Hertz one, which steps where the gap's
    !> lateral curvature steps (the arcs of a profile's section) or crosses its clamp B_min (the
    !> end of a conformal plateau): a local ellipse sees the curvature of its own strip, the
    !> half-space spreads the pressure over the contact (doc/validation.md §6.9). The mean is a
    !> continuous function of the loads, leaves a load linear across the window unchanged, and
-   !> with one strip per group is no average at all.
+   !> with groups narrower than three strips is no average at all.
    pure subroutine group_width_means(load, mean)
       !> Local-Hertz strip loads (N).
       real(wp), intent(in) :: load(:)
       !> Their means over the windows (N).
       real(wp), intent(out) :: mean(:)
-      integer :: first(max_groups), last(max_groups)
-      integer :: n, ng, j, i, m
+      real(wp) :: bound(0:max_groups)
+      integer :: n, ng, j, i, m, first, last
       real(wp) :: window
 
       n = size(load)
-      call patch_partition(n, ng, first, last)
+      call group_bounds(n, ng, bound)
+      first = 1
       do j = 1, ng
-         m = (last(j) - first(j))/2
+         m = max(0, floor(0.5_wp*(bound(j) - bound(j - 1) - 1.0_wp)))
+         ! The strips whose centres lie in the group (the last group takes the rest).
+         last = first - 1
+         do while (last < n)
+            if (j < ng .and. real(last, wp) + 0.5_wp >= bound(j)) exit
+            last = last + 1
+         end do
+         if (last < first) cycle
          ! A sliding sum over the group's strips.
-         window = sum(load(max(1, first(j) - m):min(n, first(j) + m)))
-         do i = first(j), last(j)
-            if (i > first(j)) then
+         window = sum(load(max(1, first - m):min(n, first + m)))
+         do i = first, last
+            if (i > first) then
                if (i + m <= n) window = window + load(i + m)
                if (i - m - 1 >= 1) window = window - load(i - m - 1)
             end if
             mean(i) = window/real(2*m + 1, wp)
          end do
+         first = last + 1
       end do
    end subroutine group_width_means
 
-   !> The groups of a patch's n strips: a fixed partition by strip index, ng groups whose
-   !> widths grade from about 4 % of the strips at the ends to 8 % in the middle (half uniform,
-   !> half Chebyshev-spaced boundaries, t_j = j/(2ng) + (1 − cos(πj/ng))/4): the strips move
-   !> continuously with the approach and so do the groups, and the ends of the contact, where
-   !> the lengths change fastest, get narrower groups. Mirror-symmetric; every group holds at
-   !> least one strip.
-   pure subroutine group_strips(n, ng, first, last)
-      integer, intent(in) :: n, ng
-      integer, intent(out) :: first(:), last(:)
+   !> The group boundaries of a patch's n strips, in strip widths from the outer edge of the first
+   !> strip: ng = min(n, [[max_groups]]) groups fixed in position along the strips' interval
+   !> (which moves continuously with the approach, and so do the groups). They are those of the
+   !> default grid of [[reference_strips]] strips, whose group widths grade from 4 strips (4 %) at
+   !> the ends to 8 in the middle (half uniform, half Chebyshev-spaced boundaries, t_j = j/(2ng)
+   !> + (1 − cos(πj/ng))/4, rounded to whole strips of that grid, mirror-symmetric), scaled to n
+   !> strips: every strip count resolves the same groups of the contact, and the default's groups
+   !> are whole strips. A strip across a boundary is shared by the two groups
+   !> ([[add_patch_groups]]). Boundaries rounded to whole strips of each grid instead moved with n
+   !> by up to half a strip, so that the coupled solution did not converge smoothly with the strip
+   !> count (doc/performance.md, "The preset's deviation and the strip count"). With fewer than
+   !> ng strips every strip is a group.
+   pure subroutine group_bounds(n, ng, bound)
+      !> Number of strips.
+      integer, intent(in) :: n
+      !> Number of groups.
+      integer, intent(out) :: ng
+      !> Boundaries 0 = bound(0) < … < bound(ng) = n (strip widths).
+      real(wp), intent(out) :: bound(0:)
       integer :: j, b(0:max_groups)
 
+      ng = min(n, max_groups)
+      if (ng < max_groups) then
+         bound(0:ng) = [(real(j, wp), j = 0, ng)]
+         return
+      end if
       b(0) = 0
-      b(ng) = n
-      do j = 1, ng - 1
-         if (2*j <= ng) then
-            b(j) = max(b(j - 1) + 1, nint(n*boundary(j)))
-         end if
+      b(ng) = reference_strips
+      do j = 1, ng/2
+         b(j) = max(b(j - 1) + 1, nint(reference_strips*(0.5_wp*real(j, wp)/ng + &
+            0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng)))))
       end do
-      do j = ng - 1, 1, -1
-         if (2*j > ng) b(j) = min(b(j + 1) - 1, n - b(ng - j))
+      do j = ng - 1, ng/2 + 1, -1
+         b(j) = reference_strips - b(ng - j)
       end do
-      do j = 1, ng
-         first(j) = b(j - 1) + 1
-         last(j) = b(j)
-      end do
-   contains
-      pure real(wp) function boundary(j)
-         integer, intent(in) :: j
-         boundary = 0.5_wp*real(j, wp)/ng + 0.25_wp*(1.0_wp - cos(pi*real(j, wp)/ng))
-      end function boundary
-   end subroutine group_strips
+      ! Exact where n is the reference count: the default's groups are whole strips.
+      bound(0:ng) = real(b(0:ng), wp)*real(n, wp)/real(reference_strips, wp)
+   end subroutine group_bounds
 
 end module shcontact_normal_coupling_groups
