@@ -15,7 +15,7 @@ module test_preset
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force
+      load_vertical_force, load_vertical_position
    use shcontact_api_preset, only: set_preset, apply_preset, preset_names
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type
@@ -54,6 +54,7 @@ contains
          new_unittest('vehicle_preset_options', test_options), &
          new_unittest('unknown_preset_rejected', test_unknown), &
          new_unittest('vehicle_forces_near_default', test_forces), &
+         new_unittest('vehicle_flange_state_599_continuous', test_state_599), &
          new_unittest('vehicle_kinematic_sample_vs_exact', test_exact), &
          new_unittest('namelist_preset_is_set_preset', test_namelist), &
          new_unittest('keyed_preset_is_set_preset', test_keyed), &
@@ -157,6 +158,49 @@ contains
          end do
       end do
    end subroutine test_forces
+
+   !> State 599 of the benchmark's flange trajectory (t_y = 7 + 2 sin(5π t) mm, yaw = 10
+   !> sin(2π·1.618 t) mrad at t = 0.598 s), where the main lobe's last strip leaves the contact
+   !> next to a loaded fillet strip: with the vehicle preset the carried vertical force C(Δz)
+   !> jumped by 15 N between two approaches 2.5e-5 mm apart, right at F_z, and the call failed
+   !> (the lobe's last strips took a ratio interpolated across the unloaded gap when their
+   !> group emptied; shcontact_normal_coupling_groups' scale_patch, doc/performance.md, "Every
+   !> group a node of the ratio interpolation"). C(Δz) over 0.5369 … 0.5372 mm in steps of
+   !> 2.5e-5 mm rises by 2.5–4.2 N a step now: every step within 8 N, and the call balances F_z.
+   subroutine test_state_599(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: vehicle
+      type(contact_result_type) :: result
+      type(wheelset_state_type) :: state
+      type(lib_error), allocatable :: lib
+      real(wp), parameter :: two_pi = 6.283185307179586_wp, t = 0.598_wp, &
+         w1 = two_pi*2.5_wp, w2 = two_pi*1.6180339887_wp
+      real(wp) :: carried(0:12)
+      character(len=80) :: text
+      integer :: j
+
+      state = wheelset_state_type(y_ws=7.0_wp + 2.0_wp*sin(w1*t), yaw=0.01_wp*sin(w2*t), &
+         v_forward=speed, v_lateral=2.0_wp*w1*cos(w1*t), yaw_rate=0.01_wp*w2*cos(w2*t), &
+         pitch_rate=pure_rolling_pitch_rate(speed, 460.0_wp)*(1.0_wp + 2.0e-4_wp))
+      call vehicle%init('builtin:S1002', 'builtin:UIC60', lib)
+      if (.not. allocated(lib)) call set_preset(vehicle, 'vehicle', lib)
+      do j = 0, 12
+         if (.not. allocated(lib)) call vehicle%solve_kinematic(state, &
+            contact_load_type(load_vertical_position, 0.5369_wp + 2.5e-5_wp*j), result, lib)
+         if (.not. allocated(lib)) carried(j) = -result%track%fz
+      end do
+      if (.not. allocated(lib)) call vehicle%solve_kinematic(state, &
+         contact_load_type(load_vertical_force, wheel_load), result, lib)
+      if (allocated(lib)) then
+         call test_failed(error, 'flange state 599, vehicle preset: '//lib%message); return
+      end if
+      write (text, '(a, f7.2, a)') 'largest step of C ', maxval(abs(carried(1:) - carried(:11))), ' N'
+      call check(error, maxval(abs(carried(1:) - carried(:11))) <= 8.0_wp, &
+         'C(dz) jumps at flange state 599', more=text)
+      if (allocated(error)) return
+      call check(error, abs(result%track%fz + wheel_load) <= 1.0e-5_wp*wheel_load, &
+         'vertical balance at flange state 599')
+   end subroutine test_state_599
 
    !> The vehicle preset on CONTACT's kinematic sample (external data; doc/validation.md §6, the
    !> 35 cases CONTACT solved): the targets of doc/validation.md for the kinematic call, max |Δf|
