@@ -21,6 +21,7 @@ module test_preset
    use shcontact_geometry_track, only: track_type
    use test_external_data, only: external_file
    use test_validation, only: read_columns, percentile, skip_without_profiles
+   use test_kinematic_balance, only: flange_state
    use shcontact_input_config, only: case_config_type, case_point_type, read_config_text, &
       normal_options_of, tangential_options_of, table_step_of
    use shcontact_case_runner, only: run_setup_type, prepare_run, solve_kinematic_case
@@ -173,15 +174,11 @@ contains
       type(contact_result_type) :: result
       type(wheelset_state_type) :: state
       type(lib_error), allocatable :: lib
-      real(wp), parameter :: two_pi = 6.283185307179586_wp, t = 0.598_wp, &
-         w1 = two_pi*2.5_wp, w2 = two_pi*1.6180339887_wp
       real(wp) :: carried(0:12)
       character(len=80) :: text
       integer :: j
 
-      state = wheelset_state_type(y_ws=7.0_wp + 2.0_wp*sin(w1*t), yaw=0.01_wp*sin(w2*t), &
-         v_forward=speed, v_lateral=2.0_wp*w1*cos(w1*t), yaw_rate=0.01_wp*w2*cos(w2*t), &
-         pitch_rate=pure_rolling_pitch_rate(speed, 460.0_wp)*(1.0_wp + 2.0e-4_wp))
+      state = flange_state(599)
       call vehicle%init('builtin:S1002', 'builtin:UIC60', lib)
       if (.not. allocated(lib)) call set_preset(vehicle, 'vehicle', lib)
       do j = 0, 12

@@ -333,16 +333,44 @@ contains
                   n_basin = j_top
                end if
             end if
-            if (rows(1, j) > prepared%options%table_gap) exit walk
+            if (table_reach(prepared, rows(1, j), gap0, tn, rows(7, j)) > &
+               prepared%options%table_gap) exit walk
          end do
          if (n_both < m) exit
          j0 = j0 + m
-         if (j0 >= 2) m = points_to_cut(rows(1, j0 - 1), rows(1, j0), prepared%options%table_gap)
+         if (j0 >= 2 .and. .not. prepared%table_end_by_touch) &
+            m = points_to_cut(rows(1, j0 - 1), rows(1, j0), prepared%options%table_gap)
       end do walk
       if (.not. cut) n_basin = n_rows
       s_basin = r0%s
       if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
+
+   !> What the table end is measured by (mm; the table ends at the first point beyond
+   !> table_gap): the gap g itself, or, for the kinematic call's first try
+   !> (prepared%table_end_by_touch), a lower bound of the approach at which the point touches
+   !> under a vertical approach. The strip method puts the point in contact at the approach
+   !> (g + g₀c)/(ε_b − c) (shcontact_normal_semihertz's `touch`), with the vertical approach's
+   !> tilt c = tan γ₀ tan(γ − γ₀) (doc/geometry.md, "Vertical approach") and ε_b < 1, so
+   !> (g + g₀c)/(1 − c) bounds it from below where c < 0; where c ≥ 0 the gap does (g₀c ≥ 0).
+   !> Where γ turns away from γ₀ (towards a flange root) c < 0: a vertical translation closes
+   !> the gap there faster than at the reference point, and a region whose gap exceeds table_gap
+   !> can touch at an approach below it. A table ended by the gap cut such a region off
+   !> (the strips then ended short of a contact that was there, and the first try's forces
+   !> differed from the full tables' by up to 0.021 in f: doc/performance.md, "Tables bounded by
+   !> the load's reach").
+   pure real(wp) function table_reach(prepared, gap, gap0, tan_gamma0, tan_gamma) result(t)
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Gap g and the reference point's gap g₀ (mm); tan γ₀ of the patch, tan γ of the point.
+      real(wp), intent(in) :: gap, gap0, tan_gamma0, tan_gamma
+      real(wp) :: den, c
+      t = gap
+      if (.not. prepared%table_end_by_touch) return
+      den = 1.0_wp + tan_gamma*tan_gamma0
+      if (.not. (den > 0.0_wp)) return
+      c = tan_gamma0*(tan_gamma - tan_gamma0)/den
+      if (c < 0.0_wp) t = (gap + gap0*c)/(1.0_wp - c)
+   end function table_reach
 
    !> How many points the next chunk of [[follow]] walks, so that the walk does not overrun
    !> the table's end by a whole chunk: the table ends at the first point whose gap exceeds
@@ -403,7 +431,8 @@ contains
                n_basin = j_top
             end if
          end if
-         if (rows(1, j) > prepared%options%table_gap) exit
+         if (table_reach(prepared, rows(1, j), gap0, tan(theta), rows(7, j)) > &
+            prepared%options%table_gap) exit
       end do
       if (.not. cut) n_basin = n_rows
       s_basin = r0%s

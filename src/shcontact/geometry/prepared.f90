@@ -89,6 +89,10 @@ module shcontact_geometry_prepared
       !> every position where the wheel overlaps the whole rail head (see [[polyline_envelope]]).
       real(wp), allocatable :: rail_env(:), rail_env_s(:)
       logical, allocatable :: rail_env_covered(:)
+      !> The strip tables end where a lower bound of the approach at which a point touches under
+      !> a vertical approach, (g + g₀c)/(1 − c) for c < 0, exceeds table_gap (instead of the gap g
+      !> itself): the kinematic call's first try.
+      logical :: table_end_by_touch = .false.
    end type prepared_profiles_type
 
 contains

@@ -114,7 +114,9 @@ contains
          table_gap = self%prepared%options%table_gap
          if (short) self%prepared%options%table_gap = min(table_gap, &
             self%prepared%options%kinematic_table_gap)
+         self%prepared%table_end_by_touch = short
          call find_contact_patches(self%prepared, position, self%patches, error)
+         self%prepared%table_end_by_touch = .false.
          self%prepared%options%table_gap = table_gap
       else
          call prepare_yaw(self, yaw, error)
@@ -122,7 +124,9 @@ contains
          table_gap = self%yawed%options%table_gap
          if (short) self%yawed%options%table_gap = min(table_gap, &
             self%yawed%options%kinematic_table_gap)
+         self%yawed%table_end_by_touch = short
          call find_contact_patches(self%yawed, position, self%patches, error)
+         self%yawed%table_end_by_touch = .false.
          self%yawed%options%table_gap = table_gap
       end if
       if (allocated(error)) return
