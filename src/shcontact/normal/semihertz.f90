@@ -21,7 +21,8 @@ module shcontact_normal_semihertz
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
+   use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant, &
+      slide_exact
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_reference, only: reference_index, blend_depth
@@ -31,7 +32,7 @@ module shcontact_normal_semihertz
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
    public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt, &
-      use_interface_angles
+      use_interface_angles, loaded_gap
 
    !> Smallest relative growth of δ over which the strips sweep across table points out of
    !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
@@ -42,6 +43,8 @@ module shcontact_normal_semihertz
    !> ε_b (far out on a steep flank) would never come into contact; it then comes in only at
    !> approaches far beyond any load.
    real(wp), parameter :: min_slope = 0.01_wp
+   !> d/(δ + g₀) = slide_sign tan γ₀ ([[prepare_slide]]).
+   real(wp), parameter :: slide_sign = -1.0_wp
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
@@ -75,6 +78,18 @@ module shcontact_normal_semihertz
       !> a vertical translation of the wheel that closes the gap by Δ at the reference point
       !> closes it by Δ(1 − c(y)) at y, along the contact normal.
       real(wp), allocatable :: tilt(:)
+      !> Whether the approach slides the wheel exactly ([[slide_tilt]], `&normal slide =
+      !> 'exact'`): the loaded gap g + (δ + g₀)c̄(d) with the secant tilt c̄ over the slide d,
+      !> instead of the tilt's linear term (δ + g₀)c.
+      logical :: exact_slide = .false.
+      !> The slide per unit approach d/(δ + g₀) = −tan γ₀ (mm/mm): a vertical translation of
+      !> the wheel that closes the gap by δ + g₀ at the reference point carries the wheel's
+      !> surface by d along the contact plane: the wheel point above table point y after it is
+      !> the one at y + d before.
+      real(wp) :: slide_rate = 0.0_wp
+      !> Running integral of the tilt, Q(y_j) = ∫ c dy from the first point (trapezoids of the
+      !> piecewise linear c) (mm), for the secant tilt of the exact slide.
+      real(wp), allocatable :: tilt_integral(:)
       !> ψ per unit approach, ε_b − c (clamped at a small fraction of ε_b).
       real(wp), allocatable :: psi_slope(:)
       !> Approach at which each table point comes into contact, (g + g₀c)/(ε_b − c) (mm).
@@ -163,6 +178,8 @@ contains
          min_slope*prepared%eps_b(1:n))
       prepared%touch(1:n) = (prepared%gap(1:n) + prepared%gap0*prepared%tilt(1:n))/ &
          prepared%psi_slope(1:n)
+      prepared%exact_slide = options%slide == slide_exact
+      if (prepared%exact_slide) call prepare_slide(prepared)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
       associate (i0 => prepared%i_first)
@@ -394,7 +411,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       integer :: i, c, n
-      real(wp) :: y_lo, dy, t, delta_i, a_max, reference
+      real(wp) :: y_lo, dy, t, delta_i, a_max, reference, slide
       logical :: touching
 
       n = options%n_strips
@@ -410,6 +427,7 @@ contains
       ! Every strip array is written below: no clearing needed.
       patch%dy = dy
       a_max = 0.0_wp
+      slide = slide_at(prepared, approach)
       do i = 1, n
          patch%y(i) = y_lo + (i - 0.5_wp)*dy
          call strip_load(prepared, e_star, approach, patch%y(i), dy, c, t, delta_i, &
@@ -418,6 +436,8 @@ contains
          patch%k(i) = delta_i
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
+         ! The wheel's point above the strip: slid by d with the exact slide.
+         if (slide /= 0.0_wp) call locate(prepared, patch%y(i) + slide, c, t)
          patch%gamma(i) = lerp(prepared%gamma, c, t)
          patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
          patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
@@ -655,8 +675,8 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       !> The solved strip table.
       type(normal_patch_type), intent(inout) :: patch
-      integer :: n, c, j_lo, j_hi
-      real(wp) :: t
+      integer :: n, c, j_lo, j_hi, j
+      real(wp) :: t, slide, loaded_tilt(prepared%n_table)
 
       patch%gamma_plane = prepared%gamma0
       patch%y_shift = 0.0_wp
@@ -671,10 +691,23 @@ contains
       j_lo = max(1, j_lo - 1)
       j_hi = min(n, j_hi + 2)
       ! The deepest minimum, blended with others of nearly its depth (shcontact_normal_reference).
-      patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
-         prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
-         blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
-      call locate(prepared, patch%y_shift, c, t)
+      slide = slide_at(prepared, patch%approach)
+      if (slide == 0.0_wp) then
+         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
+            prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
+            blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
+      else
+         ! The exact slide's loaded gap g + (δ + g₀)c̄ ([[prepare_slide]]) under the strips.
+         loaded_tilt(1:n) = prepared%tilt(1:n)
+         do j = j_lo, j_hi
+            loaded_tilt(j) = slide_tilt(prepared, j, patch%approach)
+         end do
+         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
+            loaded_tilt, patch%approach + prepared%gap0, j_lo, j_hi, &
+            blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
+      end if
+      ! The wheel's point there (slid by d with the exact slide).
+      call locate(prepared, patch%y_shift + slide, c, t)
       patch%gamma0 = lerp(prepared%gamma, c, t)
       patch%r0 = lerp(prepared%r_wheel, c, t)
       patch%y(1:patch%n_strips) = patch%y(1:patch%n_strips) - patch%y_shift
@@ -825,12 +858,13 @@ contains
          c = max(n, size(prepared%gap) + size(prepared%gap)/2)
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%gamma_n, &
             prepared%r_wheel, prepared%eps_a, prepared%eps_b, prepared%tilt, prepared%psi_slope, prepared%touch, &
-            prepared%cover, prepared%m, prepared%n, prepared%p_factor)
+            prepared%cover, prepared%m, prepared%n, prepared%p_factor, prepared%tilt_integral)
       end if
       allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%gamma_n(c), &
          prepared%r_wheel(c), &
          prepared%eps_a(c), prepared%eps_b(c), prepared%tilt(c), prepared%psi_slope(c), &
-         prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c))
+         prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c), &
+         prepared%tilt_integral(c))
    end subroutine reserve_table
 
    !> "load too large for the patch geometry", with where the table ends.
@@ -849,12 +883,121 @@ contains
 
    !> ψ_j = (ε_b,j − c_j)(δ − touch_j) = ε_b,j δ − g_j − (δ + g₀)c_j = ε_b,j δ_j: its sign is
    !> exactly that of δ − touch_j.
+   !> With the exact slide ([[prepare_slide]]) ψ_j = ε_b,j δ − g_j − (δ + g₀)c̄_j, the secant
+   !> tilt c̄ in place of c (the clamp of ψ's slope kept), zero at touch_j.
    pure real(wp) function psi_at(prepared, approach, j)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       integer, intent(in) :: j
-      psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
+      if (.not. prepared%exact_slide) then
+         psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
+      else
+         psi_at = prepared%psi_slope(j)*approach - (prepared%gap(j) + prepared%gap0* &
+            prepared%tilt(j)) - (approach + prepared%gap0)*(slide_tilt(prepared, j, &
+            approach) - prepared%tilt(j))
+      end if
    end function psi_at
+
+   !> The exact slide of the vertical approach (`&normal slide = 'exact'`, doc/geometry.md
+   !> "Vertical approach"): a vertical translation of the wheel that closes the gap by
+   !> δ + g₀ at the reference point also carries its surface along the contact plane by
+   !> d = −(δ + g₀) tan γ₀ (2.7 (δ + g₀) on a 70° flange face), so the wheel point above table
+   !> point y is then the one that was at y + d, and the undeformed distance of the loaded
+   !> state is exactly g(y) + (δ + g₀)c̄(y), with the secant tilt
+   !> c̄(y) = (1/d) ∫_y^{y+d} c(u) du of the tilt term c = tan γ₀ tan(γ − γ₀) (the wheel's
+   !> slope integrated over the slide: w(y + d) − w(y) = ∫ w', c = −tan γ₀ w'/… per unit
+   !> approach). Its linear term is c(y), the tilt's: on a straight face (c constant) the two
+   !> agree, but the slide carries a curvature change of the wheel (the flange root's fillet)
+   !> by d towards or away from the contact, which the linear term cannot. Here: the tilt's
+   !> running integral and each point's touch approach, the root of ψ_j(δ) = 0 (a fixed point,
+   !> from the linear term's touch).
+   pure subroutine prepare_slide(prepared)
+      type(semihertz_geometry_type), intent(inout) :: prepared
+      integer, parameter :: most = 40
+      real(wp) :: delta, next, c_bar
+      integer :: n, j, it
+
+      n = prepared%n_table
+      prepared%slide_rate = slide_sign*tan(prepared%gamma0)
+      prepared%tilt_integral(1) = 0.0_wp
+      do j = 2, n
+         prepared%tilt_integral(j) = prepared%tilt_integral(j - 1) + 0.5_wp*prepared%h* &
+            (prepared%tilt(j - 1) + prepared%tilt(j))
+      end do
+      if (prepared%slide_rate == 0.0_wp) return
+      do j = 1, n
+         delta = prepared%touch(j)
+         do it = 1, most
+            c_bar = slide_tilt(prepared, j, delta)
+            next = (prepared%gap(j) + prepared%gap0*c_bar)/max(prepared%psi_slope(j) - &
+               (c_bar - prepared%tilt(j)), min_slope*prepared%eps_b(j))
+            if (abs(next - delta) <= 1.0e-14_wp*(abs(next) + prepared%h)) exit
+            delta = next
+         end do
+         prepared%touch(j) = next
+      end do
+   end subroutine prepare_slide
+
+   !> The secant tilt c̄_j at approach δ ([[prepare_slide]]): (1/d) ∫ c over [y_j, y_j + d],
+   !> d = slide_rate (δ + g₀), c linear between table points and constant beyond the ends;
+   !> c_j itself where d vanishes.
+   pure real(wp) function slide_tilt(prepared, j, approach) result(c_bar)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      integer, intent(in) :: j
+      real(wp), intent(in) :: approach
+      real(wp) :: d, p, f
+      integer :: k, n
+
+      d = prepared%slide_rate*(approach + prepared%gap0)
+      if (.not. (abs(d) > 1.0e-9_wp*prepared%h)) then
+         c_bar = prepared%tilt(j)
+         return
+      end if
+      n = prepared%n_table
+      ! Position of y_j + d in table points from the first (0-based).
+      p = real(j - 1, wp) + d/prepared%h
+      if (p <= 0.0_wp) then
+         c_bar = prepared%tilt_integral(1) + p*prepared%h*prepared%tilt(1)
+      else if (p >= real(n - 1, wp)) then
+         c_bar = prepared%tilt_integral(n) + (p - (n - 1))*prepared%h*prepared%tilt(n)
+      else
+         k = min(n - 1, 1 + int(p))
+         f = p - (k - 1)
+         c_bar = prepared%tilt_integral(k) + prepared%h*f*(prepared%tilt(k) + 0.5_wp*f* &
+            (prepared%tilt(k + 1) - prepared%tilt(k)))
+      end if
+      c_bar = (c_bar - prepared%tilt_integral(j))/d
+   end function slide_tilt
+
+   !> The undeformed distance of the loaded state at every table point, g + (δ + g₀)c with
+   !> the linear slide, g + (δ + g₀)c̄ with the exact one ([[prepare_slide]]) (mm); the table's
+   !> y is `prepared%y_first + (j − 1) prepared%h`.
+   pure subroutine loaded_gap(prepared, approach, gap)
+      !> Prepared geometry (with strip data).
+      type(semihertz_geometry_type), intent(in) :: prepared
+      !> Approach δ (mm).
+      real(wp), intent(in) :: approach
+      !> The loaded gap at the n_table points (mm).
+      real(wp), intent(out) :: gap(:)
+      integer :: j
+      do j = 1, prepared%n_table
+         if (prepared%exact_slide) then
+            gap(j) = prepared%gap(j) + (approach + prepared%gap0)*slide_tilt(prepared, j, &
+               approach)
+         else
+            gap(j) = prepared%gap(j) + (approach + prepared%gap0)*prepared%tilt(j)
+         end if
+      end do
+   end subroutine loaded_gap
+
+   !> The slide d of the wheel along the contact plane at approach δ (mm; 0 without the exact
+   !> slide, [[prepare_slide]]).
+   pure real(wp) function slide_at(prepared, approach) result(d)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      d = 0.0_wp
+      if (prepared%exact_slide) d = prepared%slide_rate*(approach + prepared%gap0)
+   end function slide_at
 
    !> Fraction of a cell from the inside point (ψ_in > 0) to the zero of the linear ψ, in [0, 1].
    pure real(wp) function crossing(psi_in, psi_out)
