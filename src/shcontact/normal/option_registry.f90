@@ -33,10 +33,11 @@ module shcontact_normal_option_registry
 
    !> `slide = 'exact'`: the vertical approach carries the wheel along the contact plane by
    !> −(δ + g₀) tan γ₀, and the loaded gap takes the wheel's offset there (issue 28;
-   !> shcontact_normal_semihertz's prepare_slide).
+   !> shcontact_normal_semihertz's prepare_slide). Not the default: it moves the flange
+   !> positions' F_n away from CONTACT's (doc/validation.md §6.8).
    integer, parameter :: slide_exact = 1
-   !> `slide = 'linear'`: the slide to first order, the tilt term (δ + g₀) tan γ₀ tan(γ − γ₀)
-   !> (issue 13).
+   !> `slide = 'linear'` (default): the slide to first order, the tilt term
+   !> (δ + g₀) tan γ₀ tan(γ − γ₀) (issue 13).
    integer, parameter :: slide_linear = 2
 
    !> `&normal method`.
@@ -55,16 +56,16 @@ module shcontact_normal_option_registry
 
    !> `&normal slide` (semi-Hertz method only).
    type(choice_type), parameter :: slide_choices(*) = [ &
+      choice_type('linear', slide_linear, 'the slide to first order, the tilt term '// &
+      '(doc/geometry.md, "Vertical approach")'), &
       choice_type('exact', slide_exact, 'the wheel''s slide along the contact plane under '// &
-      'the vertical approach, exactly (doc/geometry.md, "Vertical approach")'), &
-      choice_type('linear', slide_linear, 'the slide to first order, the tilt term (the '// &
-      'default before issue 28)')]
+      'the vertical approach, exactly (doc/validation.md §6.8)')]
 
    !> The defaults (decisions 5, 6, 11); those of `epsilon` and `n_strips`, and their ranges,
    !> are the variable table's (shcontact_core_ranges, `normal%epsilon`, `normal%n_strips`).
    integer, parameter :: default_method = method_semi_hertz
    integer, parameter :: default_reduction = reduction_coupled
-   integer, parameter :: default_slide = slide_exact
+   integer, parameter :: default_slide = slide_linear
    real(wp), parameter :: default_epsilon = variables(findloc(variables%name, 'epsilon', 1, &
       mask=variables%group == 'normal'))%default
    integer, parameter :: default_n_strips = nint(variables(findloc(variables%name, 'n_strips', &
