@@ -231,34 +231,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: yaws(2) = [0.0_wp, 0.008_wp], loads(3) = [30000.0_wp, &
          64700.0_wp, 97000.0_wp]
-      type(profile_type) :: wheel, rail, locus
-      type(track_type) :: track
-      type(prepared_profiles_type) :: unyawed, yawed
       type(patch_geometry_type), allocatable :: geometry(:)
-      type(lib_error), allocatable :: err
       real(wp), allocatable :: rows(:, :)
       real(wp) :: ours(2), b_ours(2), theirs(3, 2), b_theirs, slide(3, 2)
       logical, allocatable :: this(:)
       integer :: j, k
 
-      track%rail_canted = .true.
-      call builtin_profile('S1002', wheel, err)
-      if (.not. allocated(err)) call builtin_profile('UIC60-canted', rail, err)
-      if (.not. allocated(err)) call prepare_profiles(wheel, rail, track, &
-         contact_options_type(), unyawed, err)
-      if (allocated(err)) then
-         call test_failed(error, err%message); return
-      end if
       do j = 1, size(yaws)
-         yawed = unyawed
-         call yawed_wheel_profile(wheel, unyawed%wheel, track, unyawed%z_tape, yaws(j), locus)
-         call prepare_wheel(locus, track, contact_options_type(), yawed, err)
-         if (.not. allocated(err)) call find_contact_patches(yawed, &
-            wheelset_position_type(y_ws=7.0_wp), geometry, err)
-         if (allocated(err)) then
-            call test_failed(error, err%message); return
-         end if
-         call check(error, size(geometry) == 1, message='one patch expected on the flange')
+         call flange_7mm_geometry(yaws(j), geometry, error)
          if (allocated(error)) return
          call root_distance(geometry(1)%y, geometry(1)%gap, 0.1_wp, ours(j), b_ours(j))
       end do

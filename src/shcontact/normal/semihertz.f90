@@ -675,8 +675,11 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       !> The solved strip table.
       type(normal_patch_type), intent(inout) :: patch
-      integer :: n, c, j_lo, j_hi, j
-      real(wp) :: t, slide, loaded_tilt(prepared%n_table)
+      !> Most table points of the exact slide's window (a fixed buffer on the stack: the
+      !> strips' window is a few hundred points; a longer one keeps the linear tilt).
+      integer, parameter :: most = 4096
+      integer :: n, c, j_lo, j_hi, j, lo, hi
+      real(wp) :: t, slide, loaded_tilt(most)
 
       patch%gamma_plane = prepared%gamma0
       patch%y_shift = 0.0_wp
@@ -692,19 +695,22 @@ contains
       j_hi = min(n, j_hi + 2)
       ! The deepest minimum, blended with others of nearly its depth (shcontact_normal_reference).
       slide = slide_at(prepared, patch%approach)
-      if (slide == 0.0_wp) then
+      lo = max(1, j_lo - 1)
+      hi = min(n, j_hi + 1)
+      if (slide == 0.0_wp .or. hi - lo + 1 > most) then
          patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
             prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
             blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
       else
-         ! The exact slide's loaded gap g + (δ + g₀)c̄ ([[prepare_slide]]) under the strips.
-         loaded_tilt(1:n) = prepared%tilt(1:n)
-         do j = j_lo, j_hi
-            loaded_tilt(j) = slide_tilt(prepared, j, patch%approach)
+         ! The exact slide's loaded gap g + (δ + g₀)c̄ ([[prepare_slide]]) under the strips
+         ! (and one point beyond each end), on that window of the table.
+         do j = lo, hi
+            loaded_tilt(j - lo + 1) = slide_tilt(prepared, j, patch%approach)
          end do
-         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
-            loaded_tilt, patch%approach + prepared%gap0, j_lo, j_hi, &
-            blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
+         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(lo:hi), &
+            loaded_tilt(1:hi - lo + 1), patch%approach + prepared%gap0, j_lo - lo + 1, &
+            j_hi - lo + 1, blend_depth*patch%approach_reference) + real(lo - 2, wp))* &
+            prepared%h
       end if
       ! The wheel's point there (slid by d with the exact slide).
       call locate(prepared, patch%y_shift + slide, c, t)
@@ -904,13 +910,13 @@ contains
    !> d = −(δ + g₀) tan γ₀ (2.7 (δ + g₀) on a 70° flange face), so the wheel point above table
    !> point y is then the one that was at y + d, and the undeformed distance of the loaded
    !> state is exactly g(y) + (δ + g₀)c̄(y), with the secant tilt
-   !> c̄(y) = (1/d) ∫_y^{y+d} c(u) du of the tilt term c = tan γ₀ tan(γ − γ₀) (the wheel's
-   !> slope integrated over the slide: w(y + d) − w(y) = ∫ w', c = −tan γ₀ w'/… per unit
-   !> approach). Its linear term is c(y), the tilt's: on a straight face (c constant) the two
-   !> agree, but the slide carries a curvature change of the wheel (the flange root's fillet)
-   !> by d towards or away from the contact, which the linear term cannot. Here: the tilt's
-   !> running integral and each point's touch approach, the root of ψ_j(δ) = 0 (a fixed point,
-   !> from the linear term's touch).
+   !> c̄(y) = (1/d) ∫_y^{y+d} c(u) du of the tilt term c = tan γ₀ tan(γ − γ₀) (c is tan γ₀ times
+   !> the wheel's slope in the table's frame, so (δ + g₀)c̄ is the wheel's offset difference
+   !> between y + d and y). Its linear term is c(y), the tilt's: on a straight face (c
+   !> constant) the two agree, but the slide carries a curvature change of the wheel (the
+   !> flange root's fillet) by d towards or away from the contact, which the linear term
+   !> cannot. Here: the tilt's running integral and each point's touch approach, the root of
+   !> ψ_j(δ) = 0 (a fixed point from the linear term's touch, at most 40 steps).
    pure subroutine prepare_slide(prepared)
       type(semihertz_geometry_type), intent(inout) :: prepared
       integer, parameter :: most = 40
