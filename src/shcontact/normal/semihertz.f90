@@ -26,6 +26,7 @@ module shcontact_normal_semihertz
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_reference, only: reference_index, blend_depth
+   use shcontact_normal_slide, only: secant_tilt, running_integral
    implicit none
    private
 
@@ -411,7 +412,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       integer :: i, c, n
-      real(wp) :: y_lo, dy, t, delta_i, a_max, reference, slide
+      real(wp) :: y_lo, dy, t, delta_i, a_max, reference
       logical :: touching
 
       n = options%n_strips
@@ -427,7 +428,6 @@ contains
       ! Every strip array is written below: no clearing needed.
       patch%dy = dy
       a_max = 0.0_wp
-      slide = slide_at(prepared, approach)
       do i = 1, n
          patch%y(i) = y_lo + (i - 0.5_wp)*dy
          call strip_load(prepared, e_star, approach, patch%y(i), dy, c, t, delta_i, &
@@ -436,14 +436,14 @@ contains
          patch%k(i) = delta_i
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
-         ! The wheel's point above the strip: slid by d with the exact slide.
-         if (slide /= 0.0_wp) call locate(prepared, patch%y(i) + slide, c, t)
+         ! As wheel_point, written out: this loop is on every solve's path.
          patch%gamma(i) = lerp(prepared%gamma, c, t)
          patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
          patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
          patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
          a_max = max(a_max, patch%a(i))
       end do
+      if (prepared%exact_slide) call slid_strips(prepared, e_star, approach, patch, a_max)
       ! k_i against the deepest penetration: the approach at the reference point, unless the
       ! vertical approach's tilt takes a strip beside it deeper (then k_i ≤ 1 all the same, and
       ! with δ ≤ 0 there is no 0/0).
@@ -459,6 +459,42 @@ contains
          patch%k(1:n) = patch%a(1:n)/a_max
       call strip_totals(patch)
    end subroutine semihertz_strips
+
+   !> The strips of [[semihertz_strips]] again with the exact slide ([[prepare_slide]]): their
+   !> loads from its ψ, and the wheel's γ, γ_n, r_w at the slid point y + d (a pass of its own:
+   !> the linear path's loop stays as it was). m, n belong to the table point under the strip.
+   pure subroutine slid_strips(prepared, e_star, approach, patch, a_max)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach
+      type(normal_patch_type), intent(inout) :: patch
+      !> The longest strip (mm).
+      real(wp), intent(out) :: a_max
+      integer :: i, c
+      real(wp) :: t, slide, delta_i
+
+      slide = slide_at(prepared, approach)
+      a_max = 0.0_wp
+      do i = 1, patch%n_strips
+         call strip_load_slid(prepared, e_star, approach, patch%y(i), patch%dy, c, t, delta_i, &
+            patch%eps_a(i), patch%a(i), patch%p0(i), patch%strip_load(i))
+         patch%k(i) = delta_i
+         call locate(prepared, patch%y(i) + slide, c, t)
+         call wheel_point(prepared, c, t, patch, i)
+         a_max = max(a_max, patch%a(i))
+      end do
+   end subroutine slid_strips
+
+   !> Strip i's wheel point: γ, γ_n, r_w at cell c, fraction t, and δr_i = r_w − r₀.
+   pure subroutine wheel_point(prepared, c, t, patch, i)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      integer, intent(in) :: c, i
+      real(wp), intent(in) :: t
+      type(normal_patch_type), intent(inout) :: patch
+      patch%gamma(i) = lerp(prepared%gamma, c, t)
+      patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
+      patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
+      patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
+   end subroutine wheel_point
 
    !> The normal force Σ N_i of the strips of [[semihertz_strips]] alone, bit for bit the same,
    !> for the load iteration (the other strip quantities are needed only at its end). Zero below
@@ -485,6 +521,10 @@ contains
       n = options%n_strips
       call contact_interval(prepared, approach, n, touching, y_lo, dy, error)
       if (.not. touching .or. allocated(error)) return
+      if (prepared%exact_slide) then
+         call slid_load(prepared, e_star, approach, n, y_lo, dy, load)
+         return
+      end if
       ! Summed in strip order, as strip_totals does.
       do i = 1, n
          call strip_load(prepared, e_star, approach, y_lo + (i - 0.5_wp)*dy, dy, c, t, delta_i, &
@@ -492,6 +532,23 @@ contains
          load = load + strip_n
       end do
    end subroutine semihertz_load
+
+   !> [[semihertz_load]] with the exact slide ([[strip_load_slid]]; a procedure of its own, so
+   !> that the linear path's loop stays as it was).
+   pure subroutine slid_load(prepared, e_star, approach, n, y_lo, dy, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach, y_lo, dy
+      integer, intent(in) :: n
+      real(wp), intent(out) :: load
+      integer :: i, c
+      real(wp) :: t, delta_i, eps_a, a, p0, strip_n
+      load = 0.0_wp
+      do i = 1, n
+         call strip_load_slid(prepared, e_star, approach, y_lo + (i - 0.5_wp)*dy, dy, c, t, &
+            delta_i, eps_a, a, p0, strip_n)
+         load = load + strip_n
+      end do
+   end subroutine slid_load
 
    !> The interval of the strips for approach δ, cut into n strips: its start y_lo and the strip
    !> width dy; `touching` is false below contact. ψ = ε_b δ − g − (δ + g₀)c is linear on
@@ -534,7 +591,11 @@ contains
       integer, intent(in) :: j_in, j_out
       real(wp) :: c_in, c_out
 
-      t = crossing(psi_at(prepared, approach, j_in), psi_at(prepared, approach, j_out))
+      if (prepared%exact_slide) then
+         t = crossing(psi_slid(prepared, approach, j_in), psi_slid(prepared, approach, j_out))
+      else
+         t = crossing(psi_at(prepared, approach, j_in), psi_at(prepared, approach, j_out))
+      end if
       c_in = prepared%cover(j_in)
       c_out = prepared%cover(j_out)
       if (c_in == prepared%touch(j_in) .and. c_out == prepared%touch(j_out)) return
@@ -550,6 +611,7 @@ contains
       real(wp), intent(in) :: e_star, approach, y, dy
       integer, intent(out) :: c
       real(wp), intent(out) :: t, delta_i, eps_a, a, p0, load
+
       real(wp) :: psi, eps_b
 
       call locate(prepared, y, c, t)
@@ -561,6 +623,35 @@ contains
       p0 = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
       load = 0.5_wp*pi*p0*a*dy
    end subroutine strip_load
+
+   !> [[strip_load]] with the exact slide's ψ ([[psi_slid]]): a procedure of its own, so that
+   !> the linear path's loop stays as it was (inlined, no test per strip).
+   pure subroutine strip_load_slid(prepared, e_star, approach, y, dy, c, t, delta_i, eps_a, a, &
+      p0, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach, y, dy
+      integer, intent(out) :: c
+      real(wp), intent(out) :: t, delta_i, eps_a, a, p0, load
+
+      call locate(prepared, y, c, t)
+      call strip_of_psi(prepared, e_star, dy, c, t, (1.0_wp - t)*psi_slid(prepared, approach, &
+         c) + t*psi_slid(prepared, approach, c + 1), delta_i, eps_a, a, p0, load)
+   end subroutine strip_load_slid
+
+   !> Steps 4–6 from the strip's ψ at cell c, fraction t.
+   pure subroutine strip_of_psi(prepared, e_star, dy, c, t, psi, delta_i, eps_a, a, p0, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, dy
+      integer, intent(in) :: c
+      real(wp), intent(in) :: t, psi
+      real(wp), intent(out) :: delta_i, eps_a, a, p0, load
+
+      delta_i = max(0.0_wp, psi/lerp(prepared%eps_b, c, t))
+      eps_a = lerp(prepared%eps_a, c, t)
+      a = sqrt(eps_a*delta_i/lerp(prepared%curv_a, c, t))
+      p0 = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
+      load = 0.5_wp*pi*p0*a*dy
+   end subroutine strip_of_psi
 
    !> The smallest j ≤ i_first with cover(j) < δ (cover does not increase from 1 to i_first;
    !> cover(i_first) < δ).
@@ -889,20 +980,24 @@ contains
 
    !> ψ_j = (ε_b,j − c_j)(δ − touch_j) = ε_b,j δ − g_j − (δ + g₀)c_j = ε_b,j δ_j: its sign is
    !> exactly that of δ − touch_j.
-   !> With the exact slide ([[prepare_slide]]) ψ_j = ε_b,j δ − g_j − (δ + g₀)c̄_j, the secant
-   !> tilt c̄ in place of c (the clamp of ψ's slope kept), zero at touch_j.
+   !> The linear slide's ψ_j; with the exact slide ([[prepare_slide]]) see [[psi_slid]].
    pure real(wp) function psi_at(prepared, approach, j)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       integer, intent(in) :: j
-      if (.not. prepared%exact_slide) then
-         psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
-      else
-         psi_at = prepared%psi_slope(j)*approach - (prepared%gap(j) + prepared%gap0* &
-            prepared%tilt(j)) - (approach + prepared%gap0)*(slide_tilt(prepared, j, &
-            approach) - prepared%tilt(j))
-      end if
+      psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
    end function psi_at
+
+   !> ψ_j with the exact slide ([[prepare_slide]]): ε_b,j δ − g_j − (δ + g₀)c̄_j, the secant
+   !> tilt c̄ in place of c (the clamp of ψ's slope kept), zero at touch_j.
+   pure real(wp) function psi_slid(prepared, approach, j)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      integer, intent(in) :: j
+      psi_slid = prepared%psi_slope(j)*approach - (prepared%gap(j) + prepared%gap0* &
+         prepared%tilt(j)) - (approach + prepared%gap0)*(slide_tilt(prepared, j, approach) - &
+         prepared%tilt(j))
+   end function psi_slid
 
    !> The exact slide of the vertical approach (`&normal slide = 'exact'`, doc/geometry.md
    !> "Vertical approach"): a vertical translation of the wheel that closes the gap by
@@ -925,11 +1020,7 @@ contains
 
       n = prepared%n_table
       prepared%slide_rate = slide_sign*tan(prepared%gamma0)
-      prepared%tilt_integral(1) = 0.0_wp
-      do j = 2, n
-         prepared%tilt_integral(j) = prepared%tilt_integral(j - 1) + 0.5_wp*prepared%h* &
-            (prepared%tilt(j - 1) + prepared%tilt(j))
-      end do
+      call running_integral(prepared%tilt(1:n), prepared%h, prepared%tilt_integral(1:n))
       if (prepared%slide_rate == 0.0_wp) return
       do j = 1, n
          delta = prepared%touch(j)
@@ -944,35 +1035,15 @@ contains
       end do
    end subroutine prepare_slide
 
-   !> The secant tilt c̄_j at approach δ ([[prepare_slide]]): (1/d) ∫ c over [y_j, y_j + d],
-   !> d = slide_rate (δ + g₀), c linear between table points and constant beyond the ends;
-   !> c_j itself where d vanishes.
+   !> The secant tilt c̄_j at approach δ ([[prepare_slide]]; shcontact_normal_slide's
+   !> secant_tilt, in a module of its own so that this one's hot loops stay inlined).
    pure real(wp) function slide_tilt(prepared, j, approach) result(c_bar)
       type(semihertz_geometry_type), intent(in) :: prepared
       integer, intent(in) :: j
       real(wp), intent(in) :: approach
-      real(wp) :: d, p, f
-      integer :: k, n
-
-      d = prepared%slide_rate*(approach + prepared%gap0)
-      if (.not. (abs(d) > 1.0e-9_wp*prepared%h)) then
-         c_bar = prepared%tilt(j)
-         return
-      end if
-      n = prepared%n_table
-      ! Position of y_j + d in table points from the first (0-based).
-      p = real(j - 1, wp) + d/prepared%h
-      if (p <= 0.0_wp) then
-         c_bar = prepared%tilt_integral(1) + p*prepared%h*prepared%tilt(1)
-      else if (p >= real(n - 1, wp)) then
-         c_bar = prepared%tilt_integral(n) + (p - (n - 1))*prepared%h*prepared%tilt(n)
-      else
-         k = min(n - 1, 1 + int(p))
-         f = p - (k - 1)
-         c_bar = prepared%tilt_integral(k) + prepared%h*f*(prepared%tilt(k) + 0.5_wp*f* &
-            (prepared%tilt(k + 1) - prepared%tilt(k)))
-      end if
-      c_bar = (c_bar - prepared%tilt_integral(j))/d
+      c_bar = secant_tilt(prepared%tilt(1:prepared%n_table), &
+         prepared%tilt_integral(1:prepared%n_table), prepared%h, j, &
+         prepared%slide_rate*(approach + prepared%gap0))
    end function slide_tilt
 
    !> The undeformed distance of the loaded state at every table point, g + (δ + g₀)c with
