@@ -124,6 +124,7 @@ extern "C" {
  * creepage%phi = 0.000274: -0.1 <= phi <= 0.1 rad/mm
  * normal%method = 'semi-hertz': 'semi-hertz', 'hertz'
  * normal%reduction = 'coupled': 'coupled', 'local-hertz', 'constant'
+ * normal%slide = 'linear': 'linear', 'exact'
  * normal%epsilon = 0.55 [-]: 0.01 <= epsilon <= 1.0
  * normal%n_strips = 100: 2 <= n_strips <= 100000
  * normal%b_min = 0.0001: 1.0e-8 <= b_min <= 1.0 1/mm

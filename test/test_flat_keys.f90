@@ -61,7 +61,7 @@ module test_flat_keys
       'load%mode=vertical;load%vertical_force=60000', &
       'creepage%nu_x=1e-3', 'creepage%nu_y=1e-4', 'creepage%phi=1e-4', &
       'normal%method=hertz', 'normal%reduction=constant', &
-      'normal%reduction=constant;normal%epsilon=0.4', 'normal%n_strips=60', &
+      'normal%reduction=constant;normal%epsilon=0.4', 'normal%n_strips=60', 'normal%slide=exact', &
       'normal%b_min=0.05', 'normal%longitudinal_curvature=reference', &
       'normal%method=hertz;tangential%method=fastsim', 'tangential%bound=ellipsoidal', &
       'tangential%spin_model=additive', 'tangential%spin_flexibility=spin', &

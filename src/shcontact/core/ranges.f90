@@ -159,6 +159,8 @@ module shcontact_core_ranges
       variable_info_type('normal', 'method', k_choice, '', 'normal contact model'), &
       variable_info_type('normal', 'reduction', k_choice, '', &
       'penetration reduction of the semi-Hertzian strips'), &
+      variable_info_type('normal', 'slide', k_choice, '', &
+      'slide of the wheel along the contact plane under the vertical approach'), &
       variable_info_type('normal', 'epsilon', k_real, '1', &
       "penetration reduction of reduction = 'constant'", &
       0.55_wp, 0.01_wp, 1.0_wp), &

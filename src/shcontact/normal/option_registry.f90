@@ -12,8 +12,9 @@ module shcontact_normal_option_registry
 
    public :: method_semi_hertz, method_hertz, reduction_local_hertz, reduction_constant, &
       reduction_coupled
-   public :: method_choices, reduction_choices, option_choices
-   public :: default_method, default_reduction, default_epsilon, default_n_strips
+   public :: slide_exact, slide_linear
+   public :: method_choices, reduction_choices, slide_choices, option_choices
+   public :: default_method, default_reduction, default_epsilon, default_n_strips, default_slide
 
    !> `method = 'semi-hertz'`: the strip algorithm of doc/theory.md §4.3 (default).
    integer, parameter :: method_semi_hertz = 1
@@ -30,6 +31,15 @@ module shcontact_normal_option_registry
    !> about 10 µs per solve; doc/validation.md §6.4).
    integer, parameter :: reduction_coupled = 3
 
+   !> `slide = 'exact'`: the vertical approach carries the wheel along the contact plane by
+   !> −(δ + g₀) tan γ₀, and the loaded gap takes the wheel's offset there (issue 28;
+   !> shcontact_normal_semihertz's prepare_slide). Not the default: it moves the flange
+   !> positions' F_n away from CONTACT's (doc/validation.md §6.8).
+   integer, parameter :: slide_exact = 1
+   !> `slide = 'linear'` (default): the slide to first order, the tilt term
+   !> (δ + g₀) tan γ₀ tan(γ − γ₀) (issue 13).
+   integer, parameter :: slide_linear = 2
+
    !> `&normal method`.
    type(choice_type), parameter :: method_choices(*) = [ &
       choice_type('semi-hertz', method_semi_hertz, 'strips of the semi-Hertzian patch '// &
@@ -44,10 +54,18 @@ module shcontact_normal_option_registry
       choice_type('constant', reduction_constant, "penetration reduced by the constant "// &
       "'epsilon' (Kik-Piotrowski)")]
 
+   !> `&normal slide` (semi-Hertz method only).
+   type(choice_type), parameter :: slide_choices(*) = [ &
+      choice_type('linear', slide_linear, 'the slide to first order, the tilt term '// &
+      '(doc/geometry.md, "Vertical approach")'), &
+      choice_type('exact', slide_exact, 'the wheel''s slide along the contact plane under '// &
+      'the vertical approach, exactly (doc/validation.md §6.8)')]
+
    !> The defaults (decisions 5, 6, 11); those of `epsilon` and `n_strips`, and their ranges,
    !> are the variable table's (shcontact_core_ranges, `normal%epsilon`, `normal%n_strips`).
    integer, parameter :: default_method = method_semi_hertz
    integer, parameter :: default_reduction = reduction_coupled
+   integer, parameter :: default_slide = slide_linear
    real(wp), parameter :: default_epsilon = variables(findloc(variables%name, 'epsilon', 1, &
       mask=variables%group == 'normal'))%default
    integer, parameter :: default_n_strips = nint(variables(findloc(variables%name, 'n_strips', &
@@ -65,6 +83,7 @@ contains
       select case (name)
       case ('method'); choices = method_choices
       case ('reduction'); choices = reduction_choices
+      case ('slide'); choices = slide_choices
       case default; allocate (choices(0))
       end select
    end function option_choices

@@ -9,7 +9,8 @@ module shcontact_normal_options
       choice_name_length
    use shcontact_normal_option_registry, only: method_semi_hertz, method_hertz, &
       reduction_local_hertz, reduction_constant, reduction_coupled, method_choices, &
-      reduction_choices, default_method, default_reduction, default_epsilon, default_n_strips
+      reduction_choices, default_method, default_reduction, default_epsilon, default_n_strips, &
+      slide_exact, slide_linear, slide_choices, default_slide
    implicit none
    private
 
@@ -17,6 +18,7 @@ module shcontact_normal_options
    public :: method_semi_hertz, method_hertz, reduction_local_hertz, reduction_constant, &
       reduction_coupled
    public :: method_name, reduction_name
+   public :: slide_exact, slide_linear
 
    !> The normal-contact options; build them with [[new_normal_options]] or check them with
    !> [[check_normal_options]] before use.
@@ -30,6 +32,9 @@ module shcontact_normal_options
       real(wp) :: epsilon = default_epsilon
       !> Number of strips per patch n_y (decision 11).
       integer :: n_strips = default_n_strips
+      !> The vertical approach's slide along the contact plane: exact or to first order
+      !> (`slide_exact`, `slide_linear`; issue 28).
+      integer :: slide = default_slide
    contains
       !> The code of a choice option by its `&normal` name.
       procedure :: get_choice => get_normal_choice
@@ -51,6 +56,7 @@ contains
       select case (name)
       case ('method'); code = options%method
       case ('reduction'); code = options%reduction
+      case ('slide'); code = options%slide
       case default; code = 0
       end select
    end function get_normal_choice
@@ -67,6 +73,7 @@ contains
       select case (name)
       case ('method'); options%method = code
       case ('reduction'); options%reduction = code
+      case ('slide'); options%slide = code
       end select
    end subroutine set_normal_choice
 
@@ -124,6 +131,10 @@ contains
          call fatal_error(error, 'normal option reduction code '//trim(buf)// &
             ': expected the code of one of '//choice_list(reduction_choices), &
             stat_invalid_input)
+      else if (.not. any(slide_choices%code == options%slide)) then
+         write (buf, '(i0)') options%slide
+         call fatal_error(error, 'normal option slide code '//trim(buf)// &
+            ': expected the code of one of '//choice_list(slide_choices), stat_invalid_input)
       else
          ! The app's ranges (shcontact_core_ranges): one table for the app and the library.
          call check_range('normal%epsilon', options%epsilon, 'normal option epsilon', error)

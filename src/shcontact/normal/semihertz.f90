@@ -21,17 +21,19 @@ module shcontact_normal_semihertz
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
    use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant
+   use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant, &
+      slide_exact
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_reference, only: reference_index, blend_depth
+   use shcontact_normal_slide, only: secant_tilt, running_integral
    implicit none
    private
 
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
    public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt, &
-      use_interface_angles
+      use_interface_angles, loaded_gap
 
    !> Smallest relative growth of δ over which the strips sweep across table points out of
    !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
@@ -42,6 +44,8 @@ module shcontact_normal_semihertz
    !> ε_b (far out on a steep flank) would never come into contact; it then comes in only at
    !> approaches far beyond any load.
    real(wp), parameter :: min_slope = 0.01_wp
+   !> d/(δ + g₀) = slide_sign tan γ₀ ([[prepare_slide]]).
+   real(wp), parameter :: slide_sign = -1.0_wp
 
    !> A patch geometry prepared for the strip method: the tables of the input on the same uniform
    !> grid, plus the per-point quantities that depend only on A/B. Reused across loads.
@@ -75,6 +79,18 @@ module shcontact_normal_semihertz
       !> a vertical translation of the wheel that closes the gap by Δ at the reference point
       !> closes it by Δ(1 − c(y)) at y, along the contact normal.
       real(wp), allocatable :: tilt(:)
+      !> Whether the approach slides the wheel exactly ([[slide_tilt]], `&normal slide =
+      !> 'exact'`): the loaded gap g + (δ + g₀)c̄(d) with the secant tilt c̄ over the slide d,
+      !> instead of the tilt's linear term (δ + g₀)c.
+      logical :: exact_slide = .false.
+      !> The slide per unit approach d/(δ + g₀) = −tan γ₀ (mm/mm): a vertical translation of
+      !> the wheel that closes the gap by δ + g₀ at the reference point carries the wheel's
+      !> surface by d along the contact plane: the wheel point above table point y after it is
+      !> the one at y + d before.
+      real(wp) :: slide_rate = 0.0_wp
+      !> Running integral of the tilt, Q(y_j) = ∫ c dy from the first point (trapezoids of the
+      !> piecewise linear c) (mm), for the secant tilt of the exact slide.
+      real(wp), allocatable :: tilt_integral(:)
       !> ψ per unit approach, ε_b − c (clamped at a small fraction of ε_b).
       real(wp), allocatable :: psi_slope(:)
       !> Approach at which each table point comes into contact, (g + g₀c)/(ε_b − c) (mm).
@@ -163,6 +179,8 @@ contains
          min_slope*prepared%eps_b(1:n))
       prepared%touch(1:n) = (prepared%gap(1:n) + prepared%gap0*prepared%tilt(1:n))/ &
          prepared%psi_slope(1:n)
+      prepared%exact_slide = options%slide == slide_exact
+      if (prepared%exact_slide) call prepare_slide(prepared)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
       associate (i0 => prepared%i_first)
@@ -418,12 +436,14 @@ contains
          patch%k(i) = delta_i
          patch%m(i) = lerp(prepared%m, c, t)
          patch%n(i) = lerp(prepared%n, c, t)
+         ! As wheel_point, written out: this loop is on every solve's path.
          patch%gamma(i) = lerp(prepared%gamma, c, t)
          patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
          patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
          patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
          a_max = max(a_max, patch%a(i))
       end do
+      if (prepared%exact_slide) call slid_strips(prepared, e_star, approach, patch, a_max)
       ! k_i against the deepest penetration: the approach at the reference point, unless the
       ! vertical approach's tilt takes a strip beside it deeper (then k_i ≤ 1 all the same, and
       ! with δ ≤ 0 there is no 0/0).
@@ -439,6 +459,42 @@ contains
          patch%k(1:n) = patch%a(1:n)/a_max
       call strip_totals(patch)
    end subroutine semihertz_strips
+
+   !> The strips of [[semihertz_strips]] again with the exact slide ([[prepare_slide]]): their
+   !> loads from its ψ, and the wheel's γ, γ_n, r_w at the slid point y + d (a pass of its own:
+   !> the linear path's loop stays as it was). m, n belong to the table point under the strip.
+   pure subroutine slid_strips(prepared, e_star, approach, patch, a_max)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach
+      type(normal_patch_type), intent(inout) :: patch
+      !> The longest strip (mm).
+      real(wp), intent(out) :: a_max
+      integer :: i, c
+      real(wp) :: t, slide, delta_i
+
+      slide = slide_at(prepared, approach)
+      a_max = 0.0_wp
+      do i = 1, patch%n_strips
+         call strip_load_slid(prepared, e_star, approach, patch%y(i), patch%dy, c, t, delta_i, &
+            patch%eps_a(i), patch%a(i), patch%p0(i), patch%strip_load(i))
+         patch%k(i) = delta_i
+         call locate(prepared, patch%y(i) + slide, c, t)
+         call wheel_point(prepared, c, t, patch, i)
+         a_max = max(a_max, patch%a(i))
+      end do
+   end subroutine slid_strips
+
+   !> Strip i's wheel point: γ, γ_n, r_w at cell c, fraction t, and δr_i = r_w − r₀.
+   pure subroutine wheel_point(prepared, c, t, patch, i)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      integer, intent(in) :: c, i
+      real(wp), intent(in) :: t
+      type(normal_patch_type), intent(inout) :: patch
+      patch%gamma(i) = lerp(prepared%gamma, c, t)
+      patch%gamma_n(i) = lerp(prepared%gamma_n, c, t)
+      patch%r_wheel(i) = lerp(prepared%r_wheel, c, t)
+      patch%delta_r(i) = patch%r_wheel(i) - prepared%r0
+   end subroutine wheel_point
 
    !> The normal force Σ N_i of the strips of [[semihertz_strips]] alone, bit for bit the same,
    !> for the load iteration (the other strip quantities are needed only at its end). Zero below
@@ -465,6 +521,10 @@ contains
       n = options%n_strips
       call contact_interval(prepared, approach, n, touching, y_lo, dy, error)
       if (.not. touching .or. allocated(error)) return
+      if (prepared%exact_slide) then
+         call slid_load(prepared, e_star, approach, n, y_lo, dy, load)
+         return
+      end if
       ! Summed in strip order, as strip_totals does.
       do i = 1, n
          call strip_load(prepared, e_star, approach, y_lo + (i - 0.5_wp)*dy, dy, c, t, delta_i, &
@@ -472,6 +532,23 @@ contains
          load = load + strip_n
       end do
    end subroutine semihertz_load
+
+   !> [[semihertz_load]] with the exact slide ([[strip_load_slid]]; a procedure of its own, so
+   !> that the linear path's loop stays as it was).
+   pure subroutine slid_load(prepared, e_star, approach, n, y_lo, dy, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach, y_lo, dy
+      integer, intent(in) :: n
+      real(wp), intent(out) :: load
+      integer :: i, c
+      real(wp) :: t, delta_i, eps_a, a, p0, strip_n
+      load = 0.0_wp
+      do i = 1, n
+         call strip_load_slid(prepared, e_star, approach, y_lo + (i - 0.5_wp)*dy, dy, c, t, &
+            delta_i, eps_a, a, p0, strip_n)
+         load = load + strip_n
+      end do
+   end subroutine slid_load
 
    !> The interval of the strips for approach δ, cut into n strips: its start y_lo and the strip
    !> width dy; `touching` is false below contact. ψ = ε_b δ − g − (δ + g₀)c is linear on
@@ -514,7 +591,11 @@ contains
       integer, intent(in) :: j_in, j_out
       real(wp) :: c_in, c_out
 
-      t = crossing(psi_at(prepared, approach, j_in), psi_at(prepared, approach, j_out))
+      if (prepared%exact_slide) then
+         t = crossing(psi_slid(prepared, approach, j_in), psi_slid(prepared, approach, j_out))
+      else
+         t = crossing(psi_at(prepared, approach, j_in), psi_at(prepared, approach, j_out))
+      end if
       c_in = prepared%cover(j_in)
       c_out = prepared%cover(j_out)
       if (c_in == prepared%touch(j_in) .and. c_out == prepared%touch(j_out)) return
@@ -530,6 +611,7 @@ contains
       real(wp), intent(in) :: e_star, approach, y, dy
       integer, intent(out) :: c
       real(wp), intent(out) :: t, delta_i, eps_a, a, p0, load
+
       real(wp) :: psi, eps_b
 
       call locate(prepared, y, c, t)
@@ -541,6 +623,35 @@ contains
       p0 = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
       load = 0.5_wp*pi*p0*a*dy
    end subroutine strip_load
+
+   !> [[strip_load]] with the exact slide's ψ ([[psi_slid]]): a procedure of its own, so that
+   !> the linear path's loop stays as it was (inlined, no test per strip).
+   pure subroutine strip_load_slid(prepared, e_star, approach, y, dy, c, t, delta_i, eps_a, a, &
+      p0, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, approach, y, dy
+      integer, intent(out) :: c
+      real(wp), intent(out) :: t, delta_i, eps_a, a, p0, load
+
+      call locate(prepared, y, c, t)
+      call strip_of_psi(prepared, e_star, dy, c, t, (1.0_wp - t)*psi_slid(prepared, approach, &
+         c) + t*psi_slid(prepared, approach, c + 1), delta_i, eps_a, a, p0, load)
+   end subroutine strip_load_slid
+
+   !> Steps 4–6 from the strip's ψ at cell c, fraction t.
+   pure subroutine strip_of_psi(prepared, e_star, dy, c, t, psi, delta_i, eps_a, a, p0, load)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: e_star, dy
+      integer, intent(in) :: c
+      real(wp), intent(in) :: t, psi
+      real(wp), intent(out) :: delta_i, eps_a, a, p0, load
+
+      delta_i = max(0.0_wp, psi/lerp(prepared%eps_b, c, t))
+      eps_a = lerp(prepared%eps_a, c, t)
+      a = sqrt(eps_a*delta_i/lerp(prepared%curv_a, c, t))
+      p0 = e_star*lerp(prepared%p_factor, c, t)*sqrt(delta_i)
+      load = 0.5_wp*pi*p0*a*dy
+   end subroutine strip_of_psi
 
    !> The smallest j ≤ i_first with cover(j) < δ (cover does not increase from 1 to i_first;
    !> cover(i_first) < δ).
@@ -655,8 +766,11 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       !> The solved strip table.
       type(normal_patch_type), intent(inout) :: patch
-      integer :: n, c, j_lo, j_hi
-      real(wp) :: t
+      !> Most table points of the exact slide's window (a fixed buffer on the stack: the
+      !> strips' window is a few hundred points; a longer one keeps the linear tilt).
+      integer, parameter :: most = 4096
+      integer :: n, c, j_lo, j_hi, j, lo, hi
+      real(wp) :: t, slide, loaded_tilt(most)
 
       patch%gamma_plane = prepared%gamma0
       patch%y_shift = 0.0_wp
@@ -671,10 +785,26 @@ contains
       j_lo = max(1, j_lo - 1)
       j_hi = min(n, j_hi + 2)
       ! The deepest minimum, blended with others of nearly its depth (shcontact_normal_reference).
-      patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
-         prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
-         blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
-      call locate(prepared, patch%y_shift, c, t)
+      slide = slide_at(prepared, patch%approach)
+      lo = max(1, j_lo - 1)
+      hi = min(n, j_hi + 1)
+      if (slide == 0.0_wp .or. hi - lo + 1 > most) then
+         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(1:n), &
+            prepared%tilt(1:n), patch%approach + prepared%gap0, j_lo, j_hi, &
+            blend_depth*patch%approach_reference) - 1.0_wp)*prepared%h
+      else
+         ! The exact slide's loaded gap g + (δ + g₀)c̄ ([[prepare_slide]]) under the strips
+         ! (and one point beyond each end), on that window of the table.
+         do j = lo, hi
+            loaded_tilt(j - lo + 1) = slide_tilt(prepared, j, patch%approach)
+         end do
+         patch%y_shift = prepared%y_first + (reference_index(prepared%gap(lo:hi), &
+            loaded_tilt(1:hi - lo + 1), patch%approach + prepared%gap0, j_lo - lo + 1, &
+            j_hi - lo + 1, blend_depth*patch%approach_reference) + real(lo - 2, wp))* &
+            prepared%h
+      end if
+      ! The wheel's point there (slid by d with the exact slide).
+      call locate(prepared, patch%y_shift + slide, c, t)
       patch%gamma0 = lerp(prepared%gamma, c, t)
       patch%r0 = lerp(prepared%r_wheel, c, t)
       patch%y(1:patch%n_strips) = patch%y(1:patch%n_strips) - patch%y_shift
@@ -825,12 +955,13 @@ contains
          c = max(n, size(prepared%gap) + size(prepared%gap)/2)
          deallocate (prepared%gap, prepared%curv_a, prepared%gamma, prepared%gamma_n, &
             prepared%r_wheel, prepared%eps_a, prepared%eps_b, prepared%tilt, prepared%psi_slope, prepared%touch, &
-            prepared%cover, prepared%m, prepared%n, prepared%p_factor)
+            prepared%cover, prepared%m, prepared%n, prepared%p_factor, prepared%tilt_integral)
       end if
       allocate (prepared%gap(c), prepared%curv_a(c), prepared%gamma(c), prepared%gamma_n(c), &
          prepared%r_wheel(c), &
          prepared%eps_a(c), prepared%eps_b(c), prepared%tilt(c), prepared%psi_slope(c), &
-         prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c))
+         prepared%touch(c), prepared%cover(c), prepared%m(c), prepared%n(c), prepared%p_factor(c), &
+         prepared%tilt_integral(c))
    end subroutine reserve_table
 
    !> "load too large for the patch geometry", with where the table ends.
@@ -849,12 +980,101 @@ contains
 
    !> ψ_j = (ε_b,j − c_j)(δ − touch_j) = ε_b,j δ − g_j − (δ + g₀)c_j = ε_b,j δ_j: its sign is
    !> exactly that of δ − touch_j.
+   !> The linear slide's ψ_j; with the exact slide ([[prepare_slide]]) see [[psi_slid]].
    pure real(wp) function psi_at(prepared, approach, j)
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       integer, intent(in) :: j
       psi_at = prepared%psi_slope(j)*(approach - prepared%touch(j))
    end function psi_at
+
+   !> ψ_j with the exact slide ([[prepare_slide]]): ε_b,j δ − g_j − (δ + g₀)c̄_j, the secant
+   !> tilt c̄ in place of c (the clamp of ψ's slope kept), zero at touch_j.
+   pure real(wp) function psi_slid(prepared, approach, j)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      integer, intent(in) :: j
+      psi_slid = prepared%psi_slope(j)*approach - (prepared%gap(j) + prepared%gap0* &
+         prepared%tilt(j)) - (approach + prepared%gap0)*(slide_tilt(prepared, j, approach) - &
+         prepared%tilt(j))
+   end function psi_slid
+
+   !> The exact slide of the vertical approach (`&normal slide = 'exact'`, doc/geometry.md
+   !> "Vertical approach"): a vertical translation of the wheel that closes the gap by
+   !> δ + g₀ at the reference point also carries its surface along the contact plane by
+   !> d = −(δ + g₀) tan γ₀ (2.7 (δ + g₀) on a 70° flange face), so the wheel point above table
+   !> point y is then the one that was at y + d, and the undeformed distance of the loaded
+   !> state is exactly g(y) + (δ + g₀)c̄(y), with the secant tilt
+   !> c̄(y) = (1/d) ∫_y^{y+d} c(u) du of the tilt term c = tan γ₀ tan(γ − γ₀) (c is tan γ₀ times
+   !> the wheel's slope in the table's frame, so (δ + g₀)c̄ is the wheel's offset difference
+   !> between y + d and y). Its linear term is c(y), the tilt's: on a straight face (c
+   !> constant) the two agree, but the slide carries a curvature change of the wheel (the
+   !> flange root's fillet) by d towards or away from the contact, which the linear term
+   !> cannot. Here: the tilt's running integral and each point's touch approach, the root of
+   !> ψ_j(δ) = 0 (a fixed point from the linear term's touch, at most 40 steps).
+   pure subroutine prepare_slide(prepared)
+      type(semihertz_geometry_type), intent(inout) :: prepared
+      integer, parameter :: most = 40
+      real(wp) :: delta, next, c_bar
+      integer :: n, j, it
+
+      n = prepared%n_table
+      prepared%slide_rate = slide_sign*tan(prepared%gamma0)
+      call running_integral(prepared%tilt(1:n), prepared%h, prepared%tilt_integral(1:n))
+      if (prepared%slide_rate == 0.0_wp) return
+      do j = 1, n
+         delta = prepared%touch(j)
+         do it = 1, most
+            c_bar = slide_tilt(prepared, j, delta)
+            next = (prepared%gap(j) + prepared%gap0*c_bar)/max(prepared%psi_slope(j) - &
+               (c_bar - prepared%tilt(j)), min_slope*prepared%eps_b(j))
+            if (abs(next - delta) <= 1.0e-14_wp*(abs(next) + prepared%h)) exit
+            delta = next
+         end do
+         prepared%touch(j) = next
+      end do
+   end subroutine prepare_slide
+
+   !> The secant tilt c̄_j at approach δ ([[prepare_slide]]; shcontact_normal_slide's
+   !> secant_tilt, in a module of its own so that this one's hot loops stay inlined).
+   pure real(wp) function slide_tilt(prepared, j, approach) result(c_bar)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      integer, intent(in) :: j
+      real(wp), intent(in) :: approach
+      c_bar = secant_tilt(prepared%tilt(1:prepared%n_table), &
+         prepared%tilt_integral(1:prepared%n_table), prepared%h, j, &
+         prepared%slide_rate*(approach + prepared%gap0))
+   end function slide_tilt
+
+   !> The undeformed distance of the loaded state at every table point, g + (δ + g₀)c with
+   !> the linear slide, g + (δ + g₀)c̄ with the exact one ([[prepare_slide]]) (mm); the table's
+   !> y is `prepared%y_first + (j − 1) prepared%h`.
+   pure subroutine loaded_gap(prepared, approach, gap)
+      !> Prepared geometry (with strip data).
+      type(semihertz_geometry_type), intent(in) :: prepared
+      !> Approach δ (mm).
+      real(wp), intent(in) :: approach
+      !> The loaded gap at the n_table points (mm).
+      real(wp), intent(out) :: gap(:)
+      integer :: j
+      do j = 1, prepared%n_table
+         if (prepared%exact_slide) then
+            gap(j) = prepared%gap(j) + (approach + prepared%gap0)*slide_tilt(prepared, j, &
+               approach)
+         else
+            gap(j) = prepared%gap(j) + (approach + prepared%gap0)*prepared%tilt(j)
+         end if
+      end do
+   end subroutine loaded_gap
+
+   !> The slide d of the wheel along the contact plane at approach δ (mm; 0 without the exact
+   !> slide, [[prepare_slide]]).
+   pure real(wp) function slide_at(prepared, approach) result(d)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      d = 0.0_wp
+      if (prepared%exact_slide) d = prepared%slide_rate*(approach + prepared%gap0)
+   end function slide_at
 
    !> Fraction of a cell from the inside point (ψ_in > 0) to the zero of the linear ψ, in [0, 1].
    pure real(wp) function crossing(psi_in, psi_out)
