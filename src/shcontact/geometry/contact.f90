@@ -215,6 +215,7 @@ contains
          patch%h = src%h
          patch%basin_lower = src%basin_lower
          patch%basin_upper = src%basin_upper
+         patch%touch_reach = src%touch_reach
          call copy_table(src%y, n, patch%y)
          call copy_table(src%gap, n, patch%gap)
          call copy_table(src%curv_a, n, patch%curv_a)
@@ -661,6 +662,8 @@ contains
          patch%h = h
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
+         patch%touch_reach = huge(1.0_wp)
+         if (prepared%table_end_by_touch) patch%touch_reach = prepared%options%table_gap
          patch%gap(i0) = 0.0_wp
          patch%y_track = side*pair%y
          patch%z_track = pair%z

@@ -52,6 +52,10 @@ module shcontact_geometry_patch
       !> The defaults (±huge) say "no neighbour".
       real(wp) :: basin_lower = -huge(1.0_wp)
       real(wp) :: basin_upper = huge(1.0_wp)
+      !> The approach (mm) up to which the table holds every point that can touch: the bound of
+      !> a kinematic call's first-try table, ended by the touch approach
+      !> (shcontact_geometry_pair's table_reach); huge for a table ended by the gap.
+      real(wp) :: touch_reach = huge(1.0_wp)
       !> Lateral coordinate of the table points (mm), uniform spacing h, y(i0) = 0.
       real(wp), allocatable :: y(:)
       !> g(y) ≥ 0 (mm).

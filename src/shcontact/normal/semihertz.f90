@@ -66,6 +66,11 @@ module shcontact_normal_semihertz
       real(wp) :: approach_touch = 0.0_wp
       !> Largest approach whose contact interval stays inside the table (mm).
       real(wp) :: approach_max = 0.0_wp
+      !> Approach beyond which a table ended by the touch approach (the geometry's touch_reach)
+      !> may miss a region that its strips would sweep towards ([[outward_cover]]): (1 −
+      !> cover_ramp) touch_reach (mm; huge for a table ended by the gap). A larger approach is
+      !> treated as the table's end, so that every such table gives the full table's strips.
+      real(wp) :: approach_reach = huge(1.0_wp)
       !> True when the per-point strip quantities below were computed (semi-Hertz method).
       logical :: has_strip_data = .false.
       !> g(y) (mm), A(y) (1/mm), γ(y) (rad), r_w(y) (mm).
@@ -161,6 +166,7 @@ contains
          prepared%i_first = 0
          prepared%approach_touch = 0.0_wp
          prepared%approach_max = huge(1.0_wp)
+         prepared%approach_reach = huge(1.0_wp)
          return
       end if
 
@@ -189,7 +195,10 @@ contains
       end associate
       ! The strips reach a table end once δ exceeds the touch value there (cover = touch at the
       ! ends).
-      prepared%approach_max = min(prepared%cover(1), prepared%cover(n))
+      prepared%approach_reach = huge(1.0_wp)
+      if (geometry%touch_reach < huge(1.0_wp)) prepared%approach_reach = &
+         (1.0_wp - cover_ramp)*geometry%touch_reach
+      prepared%approach_max = min(prepared%cover(1), prepared%cover(n), prepared%approach_reach)
    end subroutine prepare_semihertz
 
    !> Give the prepared tables the interface angles γ_n ([[interface_angles]]) in place of the
@@ -571,8 +580,9 @@ contains
       ! The table points covered: outwards from the first-contact point while cover < δ.
       j_lo = first_reached(prepared%cover, prepared%i_first, approach)
       j_hi = last_reached(prepared%cover, prepared%i_first, prepared%n_table, approach)
-      ! An interval that ends on the first or last point found it in contact (δ > touch there).
-      if (j_lo == 1 .or. j_hi == prepared%n_table) then
+      ! An interval that ends on the first or last point found it in contact (δ > touch there),
+      ! or an approach beyond what the table holds.
+      if (j_lo == 1 .or. j_hi == prepared%n_table .or. approach > prepared%approach_reach) then
          call table_end_error(prepared, approach, error)
          return
       end if
