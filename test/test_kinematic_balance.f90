@@ -329,8 +329,9 @@ contains
    !> The kinematic call's first try (strip tables to kinematic_table_gap, 0.25 mm) gives the
    !> forces of the full 2 mm tables (kinematic_table_gap = 2 mm: the full tables at once), and so
    !> does a first try to 0.12 mm, on flange states 396, 406, 607 and 997 of the benchmark
-   !> (flange contact reaching towards the root): within 1e-4 in f and 1e-4 F_n, what the
-   !> balance's 1e-5 F_z leaves. With tables ended by the gap, the first try cut off the flange
+   !> (flange contact reaching towards the root) and 300, 310 (t_y ≈ 5 mm, two tread patches),
+   !> each patch's table bounded by its load (shcontact_geometry_pair's load_reach) up to that
+   !> cap: within 1e-4 in f and 1e-4 F_n, what the balance's 1e-5 F_z leaves. With tables ended by the gap, the first try cut off the flange
    !> root region that a vertical approach closes faster than the flank (state 396: 0.021 in
    !> f_y, 1 % in F_n); with tables ended by the touch approach but trusted up to their bound,
    !> a region just beyond it was missing from the strips' sweep (0.12 against 0.25 mm: 2.5e-3
@@ -340,7 +341,7 @@ contains
    !> doc/performance.md, "Tables bounded by the load's reach".
    subroutine test_first_try_tables(error)
       type(error_type), allocatable, intent(out) :: error
-      integer, parameter :: states(4) = [396, 406, 607, 997]
+      integer, parameter :: states(6) = [300, 310, 396, 406, 607, 997]
       real(wp), parameter :: first_gaps(2) = [0.25_wp, 0.12_wp]
       type(contact_solver_type) :: first, full
       type(contact_result_type) :: a, b

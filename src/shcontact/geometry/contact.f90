@@ -53,7 +53,7 @@ module shcontact_geometry_contact
    use shcontact_geometry_prepared, only: contact_options_type, prepared_profiles_type, &
       check_contact_options, prepare_profiles, prepare_wheel, sampling_grid_size, sample_block, &
       box_pad
-   use shcontact_geometry_pair, only: normal_pair_type, refine_all, select_candidates, follow, &
+   use shcontact_geometry_pair, only: normal_pair_type, refine_all, select_candidates, follow, load_reach, &
       strip_row, row_count, max_candidates
    implicit none
    private
@@ -618,7 +618,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(rigid_map_type) :: rmap, wmap, frame
       type(frame_point_type) :: r0, w0
-      real(wp) :: h, gap0, swap
+      real(wp) :: h, gap0, swap, end_gap, row0(row_count)
       integer :: n_left, n_right, basin_left, basin_right, n_max, dir_r, dir_w, n, i, i0
 
       h = prepared%options%table_step
@@ -632,13 +632,17 @@ contains
       r0 = frame_point(prepared%rail, rmap, pair%s_r, dir_r, pair%k_r)
       w0 = frame_point(prepared%wheel, wmap, pair%s_w, dir_w, pair%k_w)
       gap0 = r0%zeta - w0%zeta
+      row0 = strip_row(prepared, r0, w0, pair%theta, gap0)
+      end_gap = prepared%options%table_gap
+      if (prepared%table_end_by_touch) end_gap = load_reach(prepared, row0(6), &
+         max(0.5_wp*row0(2), prepared%options%b_min), pair%theta)
       n_max = int(min(prepared%rail%length(), prepared%wheel%length())/h) + 2
       call reserve_rows(patches%left, row_count, n_max)
       call reserve_rows(patches%right, row_count, n_max)
       call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, &
-         patches%right(:, 1:n_max), n_right, basin_right, covered(2))
+         patches%right(:, 1:n_max), n_right, basin_right, covered(2), end_gap)
       call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, &
-         patches%left(:, 1:n_max), n_left, basin_left, covered(1))
+         patches%left(:, 1:n_max), n_left, basin_left, covered(1), end_gap)
       if (covered(1) > covered(2)) then
          swap = covered(1)
          covered(1) = covered(2)
@@ -650,8 +654,8 @@ contains
       call reserve_patch(patches%patch(k), n)
       patches%points(k) = n
       associate (patch => patches%patch(k))
-         call put_rows(1, reshape(strip_row(prepared, r0, w0, pair%theta, gap0), &
-            [row_count, 1]), i0, i0, 1, h, prepared%options%b_min, patch%y, patch%gap, &
+         call put_rows(1, reshape(row0, [row_count, 1]), i0, i0, 1, h, &
+            prepared%options%b_min, patch%y, patch%gap, &
             patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel, patch%tan_gamma)
          call put_rows(n_right, patches%right, i0, i0 + 1, 1, h, prepared%options%b_min, &
             patch%y, patch%gap, patch%curv_a, patch%curv_b, patch%gamma, patch%r_wheel, &
@@ -663,7 +667,7 @@ contains
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
          patch%touch_reach = huge(1.0_wp)
-         if (prepared%table_end_by_touch) patch%touch_reach = prepared%options%table_gap
+         if (prepared%table_end_by_touch) patch%touch_reach = end_gap
          patch%gap(i0) = 0.0_wp
          patch%y_track = side*pair%y
          patch%z_track = pair%z

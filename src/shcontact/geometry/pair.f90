@@ -23,7 +23,8 @@ module shcontact_geometry_pair
    implicit none
    private
 
-   public :: normal_pair_type, refine_all, select_candidates, follow, strip_row, row_count
+   public :: normal_pair_type, refine_all, select_candidates, follow, strip_row, row_count, &
+      load_reach
    public :: max_candidates
 
    !> Largest number of candidates followed at one position (and of patches found).
@@ -260,12 +261,15 @@ contains
    !> and the rail arc length `s_basin` there. The table runs on past it into the neighbour's
    !> basin, so that the patch can grow into its neighbour under load.
    pure subroutine follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, rows, &
-         n_rows, n_basin, s_basin)
+         n_rows, n_basin, s_basin, end_gap)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: rmap, wmap
       type(frame_point_type), intent(in) :: r0, w0
       integer, intent(in) :: dir_r, dir_w
       real(wp), intent(in) :: theta, gap0, step
+      !> Where the table ends, in [[table_reach]]'s measure (mm): table_gap, or a first-try
+      !> table's own bound.
+      real(wp), intent(in) :: end_gap
       real(wp), intent(out) :: rows(:, :)
       integer, intent(out) :: n_rows, n_basin
       real(wp), intent(out) :: s_basin
@@ -278,7 +282,7 @@ contains
 
       if (prepared%options%reference_search) then
          call follow_pointwise(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, step, &
-            rows, n_rows, n_basin, s_basin)
+            rows, n_rows, n_basin, s_basin, end_gap)
          return
       end if
       top = 0.0_wp; j_top = 0
@@ -333,13 +337,12 @@ contains
                   n_basin = j_top
                end if
             end if
-            if (table_reach(prepared, rows(1, j), gap0, tn, rows(7, j)) > &
-               prepared%options%table_gap) exit walk
+            if (table_reach(prepared, rows(1, j), gap0, tn, rows(7, j)) > end_gap) exit walk
          end do
          if (n_both < m) exit
          j0 = j0 + m
          if (j0 >= 2 .and. .not. prepared%table_end_by_touch) &
-            m = points_to_cut(rows(1, j0 - 1), rows(1, j0), prepared%options%table_gap)
+            m = points_to_cut(rows(1, j0 - 1), rows(1, j0), end_gap)
       end do walk
       if (.not. cut) n_basin = n_rows
       s_basin = r0%s
@@ -372,6 +375,27 @@ contains
       if (c < 0.0_wp) t = (gap + gap0*c)/(1.0_wp - c)
    end function table_reach
 
+   !> A first-try table's bound from the load (mm): reach_factor times the Hertz approach of a
+   !> load F_z/cos γ₀ (the vertical load carried by this patch alone, along its normal) on the
+   !> reference point's curvatures A, B (equivalent radius R_e = 1/(2√(AB)), δ =
+   !> (9N²/(16E*²R_e))^{1/3}; the ellipse's own factor is ≤ 1), at most table_gap. A patch
+   !> that carries more (friction on a flange, a load shared otherwise) reaches past it, and
+   !> the call falls back to the full tables (shcontact_normal_semihertz's approach_reach): the
+   !> bound changes the cost, not the forces.
+   pure real(wp) function load_reach(prepared, curv_a, curv_b, theta) result(t)
+      type(prepared_profiles_type), intent(in) :: prepared
+      !> Curvatures A, B at the reference point (1/mm) and its contact angle γ₀ (rad).
+      real(wp), intent(in) :: curv_a, curv_b, theta
+      real(wp), parameter :: reach_factor = 1.5_wp, min_cos = 0.1_wp
+      real(wp) :: load, r_e
+      t = prepared%options%table_gap
+      if (.not. (prepared%reach_load > 0.0_wp .and. prepared%reach_modulus > 0.0_wp .and. &
+         curv_a > 0.0_wp .and. curv_b > 0.0_wp)) return
+      load = prepared%reach_load/max(abs(cos(theta)), min_cos)
+      r_e = 0.5_wp/sqrt(curv_a*curv_b)
+      t = min(t, reach_factor*(9.0_wp*load**2/(16.0_wp*prepared%reach_modulus**2*r_e))**(1.0_wp/3.0_wp))
+   end function load_reach
+
    !> How many points the next chunk of [[follow]] walks, so that the walk does not overrun
    !> the table's end by a whole chunk: the table ends at the first point whose gap exceeds
    !> table_gap, and where the gap rises convexly (a basin's flank) the last step's rise,
@@ -396,12 +420,12 @@ contains
    !> reference search).
    pure subroutine follow_pointwise(prepared, rmap, wmap, r0, w0, dir_r, dir_w, theta, gap0, &
          step, rows, &
-         n_rows, n_basin, s_basin)
+         n_rows, n_basin, s_basin, end_gap)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: rmap, wmap
       type(frame_point_type), intent(in) :: r0, w0
       integer, intent(in) :: dir_r, dir_w
-      real(wp), intent(in) :: theta, gap0, step
+      real(wp), intent(in) :: theta, gap0, step, end_gap
       real(wp), intent(out) :: rows(:, :)
       integer, intent(out) :: n_rows, n_basin
       real(wp), intent(out) :: s_basin
@@ -431,8 +455,7 @@ contains
                n_basin = j_top
             end if
          end if
-         if (table_reach(prepared, rows(1, j), gap0, tan(theta), rows(7, j)) > &
-            prepared%options%table_gap) exit
+         if (table_reach(prepared, rows(1, j), gap0, tan(theta), rows(7, j)) > end_gap) exit
       end do
       if (.not. cut) n_basin = n_rows
       s_basin = r0%s

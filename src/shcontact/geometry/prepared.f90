@@ -95,6 +95,9 @@ module shcontact_geometry_prepared
       !> a vertical approach, (g + g₀c)/(1 − c) for c < 0, exceeds table_gap (instead of the gap g
       !> itself): the kinematic call's first try.
       logical :: table_end_by_touch = .false.
+      !> With table_end_by_touch: the vertical wheel load (N) and E* (MPa) from which each patch's
+      !> table takes its own bound (shcontact_geometry_pair's load_reach); 0: table_gap.
+      real(wp) :: reach_load = 0.0_wp, reach_modulus = 0.0_wp
    end type prepared_profiles_type
 
 contains

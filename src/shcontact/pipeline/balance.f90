@@ -52,7 +52,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       climbs = .false.
-      call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
+      if (load%mode == load_vertical_force) then
+         call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables, &
+            load%value)
+      else
+         call update_geometry(self, state%y_ws, state%roll, local%yaw, error, short_tables)
+      end if
       if (allocated(error)) return
       if (load%mode == load_vertical_force) then
          ! Each solve of the balance starts the coupling's length iterations from the last

@@ -60,6 +60,8 @@ module shcontact_pipeline_cache
       real(wp) :: t_y = 0.0_wp, roll = 0.0_wp, yaw = 0.0_wp
       !> The strip tables end at the options' kinematic_table_gap (a kinematic call's first try).
       logical :: short_tables = .false.
+      !> The vertical load the first-try tables were bounded by (N; 0: none).
+      real(wp) :: reach_load = 0.0_wp
       type(contact_patches_type) :: patches
       !> Patches whose normal problem is prepared for this geometry.
       integer :: n_prepared = 0
@@ -88,7 +90,7 @@ contains
    !> angle the search runs on the yawed wheel's contact locus (profiles prepared once per yaw
    !> angle, [[prepare_yaw]]); the table's rolling radii are then turned back into the true
    !> ones, and each reference point gets its longitudinal lead.
-   subroutine update_geometry(self, t_y, roll, yaw, error, short_tables)
+   subroutine update_geometry(self, t_y, roll, yaw, error, short_tables, reach_load)
       type(contact_cache_type), intent(inout) :: self
       !> Lateral shift (mm) and roll (rad), track frame.
       real(wp), intent(in) :: t_y, roll
@@ -97,15 +99,21 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Strip tables to kinematic_table_gap at most (default: the options' table_gap).
       logical, intent(in), optional :: short_tables
+      !> With short_tables: the vertical wheel load (N) from which each patch's first-try table
+      !> takes its bound (shcontact_geometry_pair's load_reach); absent or 0: kinematic_table_gap.
+      real(wp), intent(in), optional :: reach_load
       type(wheelset_position_type) :: position
-      real(wp) :: table_gap, sin_yaw
+      real(wp) :: table_gap, sin_yaw, load
       logical :: short
       integer :: k
 
       short = .false.
       if (present(short_tables)) short = short_tables
+      load = 0.0_wp
+      if (short .and. present(reach_load)) load = reach_load
       if (self%has_geometry .and. same(t_y, self%t_y) .and. same(roll, self%roll) .and. &
-         same(yaw, self%yaw) .and. (short .eqv. self%short_tables)) return
+         same(yaw, self%yaw) .and. (short .eqv. self%short_tables) .and. &
+         same(load, self%reach_load)) return
       self%has_geometry = .false.
       self%has_normal = .false.
       self%n_prepared = 0
@@ -115,8 +123,11 @@ contains
          if (short) self%prepared%options%table_gap = min(table_gap, &
             self%prepared%options%kinematic_table_gap)
          self%prepared%table_end_by_touch = short
+         self%prepared%reach_load = load
+         self%prepared%reach_modulus = self%material%e_star()
          call find_contact_patches(self%prepared, position, self%patches, error)
          self%prepared%table_end_by_touch = .false.
+         self%prepared%reach_load = 0.0_wp
          self%prepared%options%table_gap = table_gap
       else
          call prepare_yaw(self, yaw, error)
@@ -125,8 +136,11 @@ contains
          if (short) self%yawed%options%table_gap = min(table_gap, &
             self%yawed%options%kinematic_table_gap)
          self%yawed%table_end_by_touch = short
+         self%yawed%reach_load = load
+         self%yawed%reach_modulus = self%material%e_star()
          call find_contact_patches(self%yawed, position, self%patches, error)
          self%yawed%table_end_by_touch = .false.
+         self%yawed%reach_load = 0.0_wp
          self%yawed%options%table_gap = table_gap
       end if
       if (allocated(error)) return
@@ -153,6 +167,7 @@ contains
       self%roll = roll
       self%yaw = yaw
       self%short_tables = short
+      self%reach_load = load
       self%has_geometry = .true.
    end subroutine update_geometry
 
