@@ -58,8 +58,9 @@ module shcontact_geometry_prepared
       !> Strip tables of a kinematic call (shcontact_api_solver's solve_kinematic) end where the
       !> approach at which a point touches under the vertical approach exceeds this (mm; a lower
       !> bound of it, shcontact_geometry_pair's table_reach: the gap on the tread, more towards a
-      !> flange root), unless the contact reaches their end, when the call is solved again with
-      !> table_gap. Enough for the approach of a wheel load: on S1002/UIC60 at
+      !> flange root), or earlier at each patch's own bound from the vertical load
+      !> (shcontact_geometry_pair's load_reach), unless the contact comes within 1 % of that end,
+      !> when the call is solved again with table_gap. Enough for the approach of a wheel load: on S1002/UIC60 at
       !> 64.7 kN at most 0.25 mm (the flange), 0.05–0.1 mm on the tread. A value ≥ table_gap
       !> makes the kinematic call use the full tables at once.
       real(wp) :: kinematic_table_gap = 0.25_wp
