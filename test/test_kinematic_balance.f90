@@ -6,6 +6,7 @@
 !> own status with the best state found.
 module test_kinematic_balance
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
+   use test_external_data, only: external_file
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_no_contact
    use shcontact_core_material, only: material_type
@@ -45,6 +46,7 @@ contains
          new_unittest('hunting_state_937', test_state_937), &
          new_unittest('balance_within_tolerance', test_one_percent_case), &
          new_unittest('random_states', test_random), &
+         new_unittest('random_states_measured_pair', test_random_measured), &
          new_unittest('climbing_wheel_has_no_equilibrium', test_climbing), &
          new_unittest('flange_states_other_table_steps', test_table_steps), &
          new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity), &
@@ -194,12 +196,17 @@ contains
    !> A seeded loop of random states: t_y in ±10 mm, yaw in ±10 mrad, F_z in 32–97 kN, one of the
    !> six kinematic sets; `failures` calls failed, `worst` is the largest relative miss of the
    !> balance of the others, `misses` the calls beyond 1e-5. The states depend on `seed` alone.
-   subroutine random_balance_loop(n, seed, failures, misses, worst, first_failure)
+   subroutine random_balance_loop(n, seed, failures, misses, worst, first_failure, wheel, rail, &
+         largest_f)
       integer, intent(in) :: n, seed
       integer, intent(out) :: failures, misses
       real(wp), intent(out) :: worst
       !> The state and message of the first failed call (empty when none).
       character(len=:), allocatable, intent(out) :: first_failure
+      !> The wheel and rail profiles (files or builtin: names; default S1002 on UIC60).
+      character(len=*), intent(in), optional :: wheel, rail
+      !> The largest |f| = |F_t|/(μF_n) of any loaded patch of the calls that balanced.
+      real(wp), intent(out), optional :: largest_f
       type(contact_solver_type) :: solver
       type(contact_result_type) :: result
       type(lib_error), allocatable :: err
@@ -213,7 +220,12 @@ contains
       misses = 0
       worst = 0.0_wp
       first_failure = ''
-      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      if (present(largest_f)) largest_f = 0.0_wp
+      if (present(wheel) .and. present(rail)) then
+         call solver%init(wheel, rail, err)
+      else
+         call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      end if
       if (allocated(err)) then
          failures = n
          first_failure = 'init: '//err%message
@@ -245,6 +257,7 @@ contains
          end if
          miss = abs(carried(result) - load)/load
          worst = max(worst, miss)
+         if (present(largest_f)) largest_f = max(largest_f, largest_patch_f(result))
          if (miss > rtol) misses = misses + 1
       end do
    end subroutine random_balance_loop
@@ -254,17 +267,11 @@ contains
    !> failed call, every balance within 1e-5.
    subroutine test_random(error)
       type(error_type), allocatable, intent(out) :: error
-      integer :: failures, misses, n, length, stat
+      integer :: failures, misses, n
       real(wp) :: worst
       character(len=:), allocatable :: first
-      character(len=16) :: value
 
-      n = suite_states
-      call get_environment_variable('SHCONTACT_BALANCE_STATES', value, length, stat)
-      if (stat == 0 .and. length > 0) then
-         read (value, *, iostat=stat) n
-         if (stat /= 0 .or. n < 1) n = suite_states
-      end if
+      n = loop_states()
       call random_balance_loop(n, 25, failures, misses, worst, first)
       write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2)') 'random states: ', n, ', failed calls ', &
          failures, ', beyond 1e-5 ', misses, ', largest relative miss ', worst
@@ -272,6 +279,56 @@ contains
       if (allocated(error)) return
       call check(error, misses == 0, 'balance beyond 1e-5 in the random loop')
    end subroutine test_random
+
+   !> The seeded random loop of [[random_balance_loop]] on the measured pair of the external
+   !> data, a worn wheel (MiniProf Car7216_0001r.whl) on a measured rail (avg_HR.BAN), read with
+   !> the solver's defaults as a vehicle code would: no failed call, every balance within 1e-5,
+   !> and no patch past Coulomb (|f| ≤ 1 + 1e-12). suite_states states, or as many as
+   !> SHCONTACT_BALANCE_STATES says (doc/kinematics.md runs 20 000). Skipped without the
+   !> external data.
+   subroutine test_random_measured(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: failures, misses, n
+      real(wp) :: worst, f_max
+      character(len=:), allocatable :: first, wheel, rail
+
+      wheel = external_file('profiles/Car7216_0001r.whl', error)
+      if (allocated(error)) return
+      rail = external_file('profiles/avg_HR.BAN', error)
+      if (allocated(error)) return
+      n = loop_states()
+      call random_balance_loop(n, 26, failures, misses, worst, first, wheel, rail, f_max)
+      write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2,a,f10.7)') 'measured pair, random states: ', n, &
+         ', failed calls ', failures, ', beyond 1e-5 ', misses, ', largest relative miss ', &
+         worst, ', largest |f| ', f_max
+      call check(error, failures == 0, 'failed calls on the measured pair; first: '//first)
+      if (allocated(error)) return
+      call check(error, misses == 0, 'balance beyond 1e-5 on the measured pair')
+      if (allocated(error)) return
+      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, 'a patch past Coulomb on the measured pair')
+   end subroutine test_random_measured
+
+   !> The random loops' state count: suite_states, or SHCONTACT_BALANCE_STATES when set.
+   integer function loop_states() result(n)
+      integer :: length, stat
+      character(len=16) :: value
+      n = suite_states
+      call get_environment_variable('SHCONTACT_BALANCE_STATES', value, length, stat)
+      if (stat == 0 .and. length > 0) then
+         read (value, *, iostat=stat) n
+         if (stat /= 0 .or. n < 1) n = suite_states
+      end if
+   end function loop_states
+
+   !> The largest |f| = |F_t|/(μF_n) over the loaded patches of a result.
+   pure real(wp) function largest_patch_f(result) result(f)
+      type(contact_result_type), intent(in) :: result
+      integer :: k
+      f = 0.0_wp
+      do k = 1, result%n_loaded
+         f = max(f, hypot(result%patch(k)%fx_norm, result%patch(k)%fy_norm))
+      end do
+   end function largest_patch_f
 
    !> With μ = 0.8, t_y = 7 mm and a yaw of −60 mrad the flange (γ ≈ −1.08 rad) slides nearly
    !> fully (|f_y| ≈ 1): a patch then carries N (cos γ − μ |f_y| sin|γ|) < 0 vertically, the
