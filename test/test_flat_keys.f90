@@ -37,6 +37,7 @@ module test_flat_keys
    use test_flat_api, only: shc_create, shc_destroy, shc_set_option, shc_solve_state, &
       shc_get_value, shc_errmsg, shc_set_value, shc_create_ws, shc_solve_ws, shc_ws_wheel, &
       to_chars, from_chars, bitwise_equal
+   use test_external_data, only: external_file
    implicit none
    private
    public :: collect_flat_keys
@@ -83,6 +84,7 @@ contains
          new_unittest('every_layout_value_named', test_output_names), &
          new_unittest('bad_keys_and_values', test_bad_keys), &
          new_unittest('wheelset_from_c_and_f77', test_wheelset), &
+         new_unittest('wheelset_option_keeps_miniprof_origin', test_wheelset_miniprof), &
          new_unittest('field_by_name', test_field_by_name), &
          new_unittest('doc_lists_every_key', test_doc_keys) &
          ]
@@ -649,6 +651,52 @@ contains
          .and. bitwise_equal([y], [expected%wheel(wheel_left)%wheel%fy_norm]) .and. &
          y /= 0.0_wp, message='F77 wheelset differs')
    end subroutine test_wheelset
+
+   !> An option set on a wheelset handle creates both wheels again from the handle's
+   !> configuration: with a MiniProf wheel (origin at its flange back, so flange_back_position
+   !> 0 when no track is given) that configuration must keep the wheels' track. Setting the
+   !> smoothing to its default value leaves every force of the F77 wheelset call bitwise the
+   !> same, and equal to the Fortran wheelset's (before the fix the wheels were re-created with
+   !> the default −70 mm and the centred rolling radius moved from 459.8 to 479.1 mm). Skipped
+   !> without the external data (its measured MiniProf wheel on the built-in UIC60).
+   subroutine test_wheelset_miniprof(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(wheelset_solver_type) :: ws
+      type(wheelset_result_type) :: expected
+      type(lib_error), allocatable :: err
+      character(len=:), allocatable :: whl
+      real(wp) :: before(4), after(4)
+      integer :: ih, istat, k
+
+      whl = external_file('profiles/Car7216_0001r.whl', error)
+      if (allocated(error)) return
+      call ws%init(whl, 'builtin:UIC60', err)
+      if (.not. allocated(err)) call ws%solve(ws_state, contact_load_type(2, 64.7e3_wp), &
+         contact_load_type(2, 60.0e3_wp), expected, err)
+      if (allocated(err)) then
+         call test_failed(error, 'Fortran wheelset: '//err%message)
+         return
+      end if
+      call shc_create_ws(ih, whl, 'builtin:UIC60', istat)
+      if (istat == 0) call solve_ws(before)
+      if (istat == 0) call shc_set_option(ih, 'profiles%wheel_smoothing', '0', istat)
+      if (istat == 0) call solve_ws(after)
+      call shc_destroy(ih, k)
+      call check(error, istat, 0, message='F77 wheelset with a MiniProf wheel failed')
+      if (allocated(error)) return
+      call check(error, bitwise_equal(before, [expected%fx, expected%fy, expected%fz, &
+         expected%mz]), message='F77 wheelset differs from the Fortran wheelset')
+      if (allocated(error)) return
+      call check(error, bitwise_equal(after, before), message='an option set to its default '// &
+         'value moved the MiniProf wheel (its flange back origin lost)')
+   contains
+      subroutine solve_ws(totals)
+         real(wp), intent(out) :: totals(4)
+         call shc_solve_ws(ih, ws_state%y_ws, ws_state%yaw, ws_state%roll, &
+            ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, &
+            ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, totals, istat)
+      end subroutine solve_ws
+   end subroutine test_wheelset_miniprof
 
    !> A field by name is the array of shcontact_fields.
    subroutine test_field_by_name(error)

@@ -579,8 +579,14 @@ contains
       ctx%config%profiles%wheel = wheel
       ctx%config%profiles%rail = rail
       ctx%config%track%side = side
-      if (.not. ctx%solver%is_ready()) return
-      track = ctx%solver%get_track()
+      if (ctx%is_wheelset) then
+         ! The options of a wheelset handle create both wheels again from this configuration.
+         if (.not. ctx%wheelset_ready) return
+         track = ctx%wheelset%get_track()
+      else
+         if (.not. ctx%solver%is_ready()) return
+         track = ctx%solver%get_track()
+      end if
       ctx%config%track%flange_back_position = track%flange_back_position
    end subroutine start_config
 

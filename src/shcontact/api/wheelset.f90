@@ -50,6 +50,8 @@ module shcontact_api_wheelset
       procedure :: init
       !> Solve both wheels for one wheelset state.
       procedure :: solve
+      !> The track the wheels took (a MiniProf wheel's flange back at 0 when none was given).
+      procedure :: get_track
    end type wheelset_solver_type
 
 contains
@@ -83,6 +85,15 @@ contains
          end if
       end do
    end subroutine init
+
+   !> The track and wheelset dimensions the wheels took ([[init]]; the right wheel's, the left
+   !> wheel's differing only in its side).
+   pure function get_track(self) result(track)
+      !> The wheelset.
+      class(wheelset_solver_type), intent(in) :: self
+      type(track_type) :: track
+      track = self%wheel(1)%get_track()
+   end function get_track
 
    !> Solve both wheels for the wheelset state (track frame) and add up the forces.
    subroutine solve(self, state, load_right, load_left, result, error)
