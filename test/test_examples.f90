@@ -25,6 +25,7 @@ module test_examples
       value_sum_fy, value_sum_fz, value_fn, value_nu_x, value_nu_y, value_phi, value_x_track
    use test_api, only: headline_result, headline_t_y
    use test_api_kinematic, only: kinematic_case_result
+   use test_external_data, only: external_file
    implicit none
    private
 
@@ -70,7 +71,8 @@ contains
          new_unittest('interfaces_agree', test_agree), &
          new_unittest('doc_api_numbers', test_doc_numbers), &
          new_unittest('no_allocation_in_solve', test_allocations), &
-         new_unittest('vehicle_wheelset_short_run', test_vehicle) &
+         new_unittest('vehicle_wheelset_short_run', test_vehicle), &
+         new_unittest('vehicle_wheelset_measured_pair', test_vehicle_measured) &
          ]
    end subroutine collect_examples
 
@@ -473,12 +475,7 @@ contains
       real(wp), allocatable :: rows(:, :)
       real(wp) :: failed
 
-      call ensure_installed(error)
-      if (allocated(error)) return
-      call check(error, run('gfortran examples/vehicle/wheelset.f $('//pkg_config// &
-         ' --cflags --libs shcontact) -o '//scratch//'/wheelset 2> '//output('vehicle_build')), &
-         0, message='building examples/vehicle/wheelset.f failed: see '// &
-         output('vehicle_build'))
+      call build_vehicle(error)
       if (allocated(error)) return
       call check(error, run(scratch//'/wheelset --duration 0.05 --dt 2.5e-4 --every 1 --csv '// &
          csv//' > '//output('vehicle')//' 2> '//output('vehicle_stderr')), 0, &
@@ -513,6 +510,67 @@ contains
       call check(error, rows(2, size(rows, 2)) < 0.5_wp*rows(2, 1), &
          message='the wheelset does not move back towards the centre')
    end subroutine test_vehicle
+
+   !> The vehicle example built against the installed library, as scratch/wheelset.
+   subroutine build_vehicle(error)
+      type(error_type), allocatable, intent(out) :: error
+      call ensure_installed(error)
+      if (allocated(error)) return
+      call check(error, run('gfortran examples/vehicle/wheelset.f $('//pkg_config// &
+         ' --cflags --libs shcontact) -o '//scratch//'/wheelset 2> '//output('vehicle_build')), &
+         0, message='building examples/vehicle/wheelset.f failed: see '// &
+         output('vehicle_build'))
+   end subroutine build_vehicle
+
+   !> The vehicle example on profile files (`--wheel`, `--rail`) with options (`--set`, through
+   !> SHC_SET_OPTION on the wheelset handle): the external data's measured pair, a worn MiniProf
+   !> wheel on a measured rail, smoothed and the rail taken as canted as `shcontact profiles`
+   !> suggests, for 0.05 s from a 3 mm offset (doc/vehicle.md, "Other profiles"): the files and
+   !> options named in its output, the centred rolling radius within 5 mm of the nominal 460 mm
+   !> (the MiniProf wheel's flange back at its origin: 479 mm when an option moved it to the
+   !> default −70 mm), no failed contact call, finite forces, each wheel carrying about its
+   !> 64.7 kN. Skipped without the external data.
+   subroutine test_vehicle_measured(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: csv = scratch//'/vehicle_measured.csv'
+      character(len=:), allocatable :: wheel, rail
+      real(wp), allocatable :: rows(:, :)
+
+      wheel = external_file('profiles/Car7216_0001r.whl', error, absolute=.true.)
+      if (allocated(error)) return
+      rail = external_file('profiles/avg_HR.BAN', error, absolute=.true.)
+      if (allocated(error)) return
+      call build_vehicle(error)
+      if (allocated(error)) return
+      call check(error, run(scratch//'/wheelset --duration 0.05 --every 1 --wheel '''//wheel// &
+         ''' --rail '''//rail//''' --set profiles%wheel_smoothing=2.9 --set '// &
+         'profiles%rail_smoothing=8.1 --set track%rail_canted=.true. --csv '//csv//' > '// &
+         output('vehicle_measured')//' 2>&1'), &
+         0, message='the vehicle example on the measured pair failed: see '// &
+         output('vehicle_measured'))
+      if (allocated(error)) return
+      call check(error, run('grep -q "^wheel .*Car7216_0001r.whl$" '// &
+         output('vehicle_measured')//' && grep -q "^rail .*avg_HR.BAN$" '// &
+         output('vehicle_measured')//' && grep -q "^set track%rail_canted=.true.$" '// &
+         output('vehicle_measured')), 0, &
+         message='the output does not name the profile files and options: '// &
+         output('vehicle_measured'))
+      if (allocated(error)) return
+      call check(error, abs(value_of(output('vehicle_measured'), 'centred_rolling_radius_mm') - &
+         460.0_wp) < 5.0_wp, message='centred rolling radius far from 460 mm: the wheel moved')
+      if (allocated(error)) return
+      call check(error, value_of(output('vehicle_measured'), 'failed_calls'), 0.0_wp, &
+         message='failed contact calls on the measured pair')
+      if (allocated(error)) return
+      call read_csv(csv, 15, rows, error)
+      if (allocated(error)) return
+      call check(error, size(rows, 2), 201, message='CSV rows')
+      if (allocated(error)) return
+      call check(error, all(ieee_is_finite(rows)), message='non-finite value in '//csv)
+      if (allocated(error)) return
+      call check(error, all(abs(abs(rows([8, 12], :)) - 64.7e3_wp) < 0.05_wp*64.7e3_wp), &
+         message='vertical wheel force far from 64.7 kN on the measured pair')
+   end subroutine test_vehicle_measured
 
    !> A CSV file with a header line and n numeric columns, as rows(n, lines).
    subroutine read_csv(file, n, rows, error)

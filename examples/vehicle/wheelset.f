@@ -5,7 +5,7 @@ C
 C     Degrees of freedom: lateral shift Y (m) and yaw angle PSI (rad) of
 C     the wheelset; the frame moves straight at speed V. Suspension:
 C     lateral spring KY (N/m) and yaw spring KPSI (N m/rad) with dampers
-C     CY, CPSI to the frame. Contact: S1002 wheels on UIC60 rails 1:40,
+C     CY, CPSI to the frame. Contact: by default S1002 wheels on UIC60 rails 1:40,
 C     one wheelset handle for both wheels (SHC_CREATE_WS), vertical load
 C     64.7 kN per wheel (SHC_LOAD_VERTICAL_FORCE), creepages from the
 C     wheelset's motion, one call per step for both wheels
@@ -25,6 +25,11 @@ C     Build:  gfortran wheelset.f $(pkg-config --cflags --libs shcontact)
 C     Run:    ./a.out [--duration S] [--dt S] [--speed M/S] [--y0 MM]
 C                     [--ky N/M] [--kpsi NM/RAD] [--cy NS/M]
 C                     [--cpsi NMS/RAD] [--every N] [--csv FILE]
+C                     [--wheel FILE] [--rail FILE] [--set KEY=VALUE]
+C     (--wheel and --rail: profile files or builtin: names as
+C     SHC_CREATE_WS takes them; default the built-in S1002 and UIC60.
+C     --set: an option of SHC_SET_OPTION, e.g.
+C     --set profiles%wheel_smoothing=2.9; repeatable, at most 16.)
 C
 C     Prints the run's summary as 'key value' lines: calls, failed
 C     calls, median cost per wheelset call (us) with the CPU model and
@@ -43,8 +48,8 @@ C     Most contact-call timings kept for the median.
       COMMON /TIMES/ TUS
 C     Run options (GETOPT).
       DOUBLE PRECISION TEND, DT, SPEED, Y0MM, KY, KPSI, CY, CPSI
-      INTEGER NEVERY
-      CHARACTER*256 CSV
+      INTEGER NEVERY, NSET, ISET, IEQ
+      CHARACTER*256 CSV, WHEEL, RAIL, SETS(16)
 C     State: Y (m), PSI (rad), VY (m/s), R (rad/s).
       DOUBLE PRECISION Y, PSI, VY, R, T
 C     Per wheel: forces in the track frame (N).
@@ -59,10 +64,17 @@ C     Per wheel: forces in the track frame (N).
       DATA ISIDE /1, -1/
 C
       CALL GETOPT(TEND, DT, SPEED, Y0MM, KY, KPSI, CY, CPSI, NEVERY,
-     &            CSV)
+     &            CSV, WHEEL, RAIL, SETS, NSET)
       V = SPEED
-      CALL SHC_CREATE_WS(IH, 'builtin:S1002', 'builtin:UIC60', ISTAT)
+      CALL SHC_CREATE_WS(IH, WHEEL(1:LEN_TRIM(WHEEL)),
+     &                   RAIL(1:LEN_TRIM(RAIL)), ISTAT)
       IF (ISTAT .NE. SHC_OK) GOTO 900
+      DO 2 ISET = 1, NSET
+         IEQ = INDEX(SETS(ISET), '=')
+         CALL SHC_SET_OPTION(IH, SETS(ISET)(1:IEQ - 1),
+     &      SETS(ISET)(IEQ + 1:LEN_TRIM(SETS(ISET))), ISTAT)
+         IF (ISTAT .NE. SHC_OK) GOTO 900
+    2 CONTINUE
 C
 C     Rolling radius of the centred wheelset (any pitch rate will do
 C     for this call), then the pitch rate of pure rolling on it.
@@ -149,7 +161,12 @@ C
       ELSE
          MEDIAN = 0.5D0*(TUS(NKEPT/2) + TUS(NKEPT/2 + 1))
       END IF
-      WRITE (*, '(A)') '# single wheelset, S1002/UIC60, legacy API'
+      WRITE (*, '(A)') '# single wheelset, legacy API'
+      WRITE (*, '(2A)') 'wheel ', WHEEL(1:LEN_TRIM(WHEEL))
+      WRITE (*, '(2A)') 'rail ', RAIL(1:LEN_TRIM(RAIL))
+      DO 3 ISET = 1, NSET
+         WRITE (*, '(2A)') 'set ', SETS(ISET)(1:LEN_TRIM(SETS(ISET)))
+    3 CONTINUE
       WRITE (*, 400) 'speed_m_s', V
       WRITE (*, 400) 'duration_s', TEND
       WRITE (*, 400) 'dt_s', DT
@@ -234,11 +251,11 @@ C
 C     Command-line options, with the defaults of doc/vehicle.md.
 C
       SUBROUTINE GETOPT(TEND, DT, SPEED, Y0MM, KY, KPSI, CY, CPSI,
-     &                  NEVERY, CSV)
+     &                  NEVERY, CSV, WHEEL, RAIL, SETS, NSET)
       IMPLICIT NONE
       DOUBLE PRECISION TEND, DT, SPEED, Y0MM, KY, KPSI, CY, CPSI
-      INTEGER NEVERY
-      CHARACTER*(*) CSV
+      INTEGER NEVERY, NSET
+      CHARACTER*(*) CSV, WHEEL, RAIL, SETS(16)
       CHARACTER*256 KEY, ARG
       INTEGER I, N, IOS
 C
@@ -252,6 +269,9 @@ C
       CPSI = 0.0D0
       NEVERY = 4
       CSV = 'wheelset.csv'
+      WHEEL = 'builtin:S1002'
+      RAIL = 'builtin:UIC60'
+      NSET = 0
       N = COMMAND_ARGUMENT_COUNT()
       DO 5 I = 1, N
          CALL GET_COMMAND_ARGUMENT(I, KEY)
@@ -260,13 +280,18 @@ C
      &         // ' [--speed M/S] [--y0 MM] [--ky N/M] [--kpsi NM/RAD]'
             WRITE (*, '(A)') '                [--cy NS/M]'
      &         // ' [--cpsi NMS/RAD] [--every N] [--csv FILE]'
+            WRITE (*, '(A)') '                [--wheel FILE]'
+     &         // ' [--rail FILE] [--set KEY=VALUE]'
             WRITE (*, '(A)') 'A wheelset integrated in time through'
      &         // ' SHC_SOLVE_WS (doc/vehicle.md). Defaults:'
      &         // ' --duration 20 --dt 2.5e-4 --speed 40 --y0 3'
             WRITE (*, '(A)') '  --ky 0.5e6 --kpsi 0.4e6 --cy 0'
-     &         // ' --cpsi 0 --every 4 --csv wheelset.csv. Exit'
-     &         // ' status: 1 library error, 2 failed calls, 3 bad'
-     &         // ' option.'
+     &         // ' --cpsi 0 --every 4 --csv wheelset.csv'
+            WRITE (*, '(A)') '  --wheel builtin:S1002 --rail'
+     &         // ' builtin:UIC60 (profile files or builtin: names);'
+     &         // ' --set: an SHC_SET_OPTION key and value (up to 16).'
+            WRITE (*, '(A)') 'Exit status: 1 library error,'
+     &         // ' 2 failed calls, 3 bad option.'
             STOP
          END IF
     5 CONTINUE
@@ -295,6 +320,17 @@ C
          READ (ARG, *, IOSTAT=IOS) NEVERY
       ELSE IF (KEY .EQ. '--csv') THEN
          CSV = ARG
+      ELSE IF (KEY .EQ. '--wheel') THEN
+         WHEEL = ARG
+      ELSE IF (KEY .EQ. '--rail') THEN
+         RAIL = ARG
+      ELSE IF (KEY .EQ. '--set') THEN
+         IF (NSET .EQ. 16 .OR. INDEX(ARG, '=') .LT. 2) THEN
+            IOS = 1
+         ELSE
+            NSET = NSET + 1
+            SETS(NSET) = ARG
+         END IF
       ELSE
          IOS = 1
       END IF
