@@ -253,7 +253,9 @@ int shcontact_set_value(shcontact_contact *handle, const char *key, double value
  * headline case. On a wheelset handle both wheels get the same load. */
 int shcontact_solve_state(shcontact_contact *handle);
 
-/* A result value of the last solve by name: "fx", "fy", "mz", "fn", "fx_norm", "fy_norm",
+/* A numeric input by its key "group%variable", as the handle holds it now (a default, or what
+ * the handle resolved: "track%flange_back_position" is 0 for a MiniProf wheel), at any time; or
+ * a result value of the last solve by name: "fx", "fy", "mz", "fn", "fx_norm", "fy_norm",
  * "fy_track", "fz_track", "approach", "area", "p_max", "gamma0", "r0", "y_track", "z_track",
  * "coulomb", "adhesion", "n_patches", "n_loaded", "main_patch", "sum_fx", "sum_fy", "sum_fz",
  * "sum_fn", "dz", "nu_x", "nu_y", "phi", "x_track" (the kinematic layout's values, units as

@@ -665,7 +665,7 @@ contains
       type(wheelset_result_type) :: expected
       type(lib_error), allocatable :: err
       character(len=:), allocatable :: whl
-      real(wp) :: before(4), after(4)
+      real(wp) :: before(4), after(4), position, builtin_position
       integer :: ih, istat, k
 
       whl = external_file('profiles/Car7216_0001r.whl', error)
@@ -677,12 +677,21 @@ contains
          call test_failed(error, 'Fortran wheelset: '//err%message)
          return
       end if
+      call shc_create_ws(ih, 'builtin:S1002', 'builtin:UIC60', istat)
+      if (istat == 0) call shc_get_value(ih, 'track%flange_back_position', 0, builtin_position, &
+         istat)
+      call shc_destroy(ih, k)
       call shc_create_ws(ih, whl, 'builtin:UIC60', istat)
       if (istat == 0) call solve_ws(before)
       if (istat == 0) call shc_set_option(ih, 'profiles%wheel_smoothing', '0', istat)
       if (istat == 0) call solve_ws(after)
+      if (istat == 0) call shc_get_value(ih, 'track%flange_back_position', 0, position, istat)
       call shc_destroy(ih, k)
       call check(error, istat, 0, message='F77 wheelset with a MiniProf wheel failed')
+      if (allocated(error)) return
+      ! The input read back by key: the wheel's resolved flange-back position.
+      call check(error, position == 0.0_wp .and. builtin_position == -70.0_wp, &
+         message='track%flange_back_position read back: not 0 (MiniProf) and -70 (S1002)')
       if (allocated(error)) return
       call check(error, bitwise_equal(before, [expected%fx, expected%fy, expected%fz, &
          expected%mz]), message='F77 wheelset differs from the Fortran wheelset')

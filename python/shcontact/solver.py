@@ -64,6 +64,7 @@ class Contact:
         self._start(library)
         self._check(self._lib.shcontact_create(ctypes.byref(self._handle), wheel.encode(),
                                                rail.encode(), self._side(side)))
+        self._track_defaults = self._resolved_track_defaults()
         self._configure(material, track, options, fields)
 
     @classmethod
@@ -83,6 +84,7 @@ class Contact:
                              "equal length each")
         self._check(self._lib.shcontact_create_arrays(ctypes.byref(self._handle), wy.size, pwy,
                                                       pwz, ry.size, pry, prz, cls._side(side)))
+        self._track_defaults = self._resolved_track_defaults()
         self._configure(material, track, options, fields)
         return self
 
@@ -93,6 +95,13 @@ class Contact:
         self._handle = ctypes.c_void_p()
         self._fields = False
         self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
+        self._track_defaults = dict(DEFAULT_TRACK)
+
+    def _resolved_track_defaults(self):
+        # The library's defaults for this wheel: a MiniProf wheel has its origin at its flange
+        # back, so its flange-back position is 0, not S1002's -70 mm (doc/app.md, "&track").
+        return dict(DEFAULT_TRACK,
+                    flange_back_position=self.value("track%flange_back_position"))
 
     @staticmethod
     def _side(side):
@@ -119,12 +128,13 @@ class Contact:
         """Track: ``gauge``, ``gauge_height`` (mm), ``inclination`` (slope, 1:40 = 0.025),
         ``rail_canted`` (the rail profile is already canted), ``flange_back_distance``,
         ``flange_back_position``, ``nominal_radius`` (mm); those not given keep the library's
-        defaults (:data:`DEFAULT_TRACK`), not earlier calls' values."""
+        defaults (:data:`DEFAULT_TRACK`, with the flange-back position the library took for this
+        wheel: 0 for a MiniProf wheel), not earlier calls' values."""
         unknown = set(track) - set(DEFAULT_TRACK)
         if unknown:
             raise TypeError(f"shcontact: set_track: unknown keyword(s) {sorted(unknown)}; "
                             f"expected {sorted(DEFAULT_TRACK)}")
-        t = dict(DEFAULT_TRACK, **track)
+        t = dict(self._track_defaults, **track)
         self._check(self._lib.shcontact_set_track(
             self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
             int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
@@ -136,6 +146,16 @@ class Contact:
         self._check(self._lib.shcontact_set_option(self._ptr(), key.encode(), str(value).encode()))
         if key == "output%fields":
             self._fields = str(value).strip().lower() in ("all", "1")
+
+    def value(self, key, patch=0):
+        """One number by key (``shcontact_get_value``): a numeric input ``group%variable`` as
+        the handle holds it now (``"track%flange_back_position"``, ``"material%friction"``, ...),
+        or a result value of the last solve by name (``"fx"``, ``"p_max"``, ...; ``patch`` 0 the
+        main patch, else 1-based)."""
+        x = ctypes.c_double()
+        self._check(self._lib.shcontact_get_value(self._ptr(), key.encode(), patch,
+                                                  ctypes.byref(x)))
+        return x.value
 
     def profile(self, kind):
         """The points (y, z) in mm of the contact's ``"wheel"`` or ``"rail"`` profile, as created

@@ -1,6 +1,8 @@
 """The numpy interface to the solver against the shcontact program (same library, same case):
 the headline case with prescribed creepages, the kinematic case and the kinematic sweep (arrays
 of cases), element fields against the result file's, and the errors."""
+import os
+
 import numpy as np
 import pytest
 
@@ -168,6 +170,37 @@ def test_material_track_and_options():
         assert c.solve(T_Y, **HEADLINE)["fx"] != base["fx"]
     with pytest.raises(TypeError, match="unknown keyword"):
         shcontact.Contact(track={"gage": 1435.0})
+
+
+def test_value_reads_inputs_and_results():
+    """``Contact.value``: a numeric input as the handle holds it, a result of the last solve."""
+    with shcontact.Contact() as c:
+        assert c.value("track%flange_back_position") == -70.0
+        assert c.value("material%friction") == 0.3
+        with pytest.raises(shcontact.ShcontactError, match="no result yet"):
+            c.value("fx")
+        with pytest.raises(shcontact.ShcontactError, match="not a number"):
+            c.value("normal%method")
+        r = c.solve(T_Y, **HEADLINE)
+        assert c.value("fx") == r["fx"]
+
+
+def test_track_keeps_miniprof_origin():
+    """A MiniProf wheel has its origin at its flange back, so the library's flange-back
+    position for it is 0 (doc/app.md, "&track"); ``track={...}`` without that keyword keeps 0
+    (it sent S1002's -70 mm before, and the wheel moved by 70 mm: centred rolling radius 479.2
+    instead of 459.9 mm). Needs the external data's measured wheel (SHCONTACT_EXTERNAL_DATA)."""
+    folder = os.environ.get("SHCONTACT_EXTERNAL_DATA")
+    if not folder:
+        pytest.skip("SHCONTACT_EXTERNAL_DATA is not set")
+    wheel = os.path.join(folder, "profiles", "Car7216_0001r.whl")
+    with shcontact.Contact(wheel, "builtin:UIC60") as plain, \
+            shcontact.Contact(wheel, "builtin:UIC60", track={"gauge": 1435.0}) as tracked:
+        assert tracked.value("track%flange_back_position") == 0.0
+        a = plain.solve_kinematic(0.0, v_forward=30000.0, vertical_force=64.7e3)
+        b = tracked.solve_kinematic(0.0, v_forward=30000.0, vertical_force=64.7e3)
+        assert a["status"] == 0 and b["r0"] == a["r0"] and b["fy"] == a["fy"]
+        assert abs(a["r0"] - 460.0) < 5.0
 
 
 def test_preset_option():

@@ -7,7 +7,9 @@
 !>   context_set_option;
 !> * [[context_solve_state]]: solve the state of the keys `&position`, `&kinematics` (mode 'on':
 !>   the kinematic call), `&load`, `&creepage`, as the app solves one case;
-!> * [[context_get_value]]: a result value by its name in [[output_keys]] (or, beyond the flat
+!> * [[context_get_value]]: a numeric input by its key `group%variable` (the handle's current
+!>   setting: a default, or what the handle resolved, e.g. a MiniProf wheel's flange-back
+!>   position 0), or a result value by its name in [[output_keys]] (or, beyond the flat
 !>   layout, in shcontact_pipeline_result's patch_columns), of the main patch
 !>   (patch 0) or of patch k, and the wheel's joined contact ('wheel_fx', ..., its
 !>   wheel_columns, patch 0: doc/lobes.md); on a wheelset handle 'wheelset%fx' ... 'wheelset%mz' and
@@ -19,13 +21,14 @@ module shcontact_api_keyed
    use shcontact_core_strings, only: to_lower, str_int, visible
    use shcontact_core_text, only: format_real
    use shcontact_input_config, only: case_config_type, case_point_type, validate_config
-   use shcontact_input_config_types, only: output_config_type
-   use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list
+   use shcontact_input_config_types, only: output_config_type, number_value
+   use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list, &
+      find_variable
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
    use shcontact_pipeline_result, only: patch_columns, patch_value, find_patch_column, &
       wheel_columns, wheel_value, find_wheel_column, wheel_contact_of
    use shcontact_api_wheelset, only: wheel_right, wheel_left
-   use shcontact_api_settings, only: config_load, config_state
+   use shcontact_api_settings, only: config_load, config_state, split_key
    use shcontact_api_values, only: kinematic_value_count, result_value_count, kinematic_values, value_fx, value_fy, &
       value_mz, value_fn, value_fx_norm, value_fy_norm, value_fy_track, value_fz_track, &
       value_approach, value_area, value_p_max, value_gamma0, value_r0, value_y_track, &
@@ -234,14 +237,25 @@ contains
       !> The value (0 on failure).
       real(wp), intent(out) :: x
       type(error_type), allocatable :: error
-      character(len=:), allocatable :: k
+      character(len=:), allocatable :: k, group, name
       integer :: i, wheel
       real(wp) :: totals(size(wheelset_keys))
 
       x = 0.0_wp
       k = trim(adjustl(to_lower(key)))
+      call split_key(k, group, name)
+      i = find_variable(group, name)
+      if (i > 0 .and. group /= 'sweep') then
+         if (variables(i)%kind /= k_real .and. variables(i)%kind /= k_int) i = -1
+      end if
       if (.not. context_usable(ctx, error)) then
          continue
+      else if (i > 0 .and. group /= 'sweep') then
+         ! A numeric input: the handle's current setting (no solve needed).
+         x = number_value(ctx%config, group, name)
+      else if (i < 0) then
+         call fatal_error(error, "value '"//visible(key)//"': not a number (read back only "// &
+            'numeric inputs)', stat_invalid_input)
       else if (.not. ctx%has_result) then
          call fatal_error(error, "value '"//visible(key)//"': no result yet (the last solve "// &
             'failed or none was made)', stat_usage)
