@@ -13,6 +13,7 @@ module test_flat_keys
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_usage
    use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type
    use shcontact_api_values, only: kinematic_value_count, kinematic_values
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type, wheel_right, &
@@ -565,7 +566,6 @@ contains
    !> (wheelset%fy, left%fn) match them; one-wheel calls on it are refused (status 1).
    subroutine test_wheelset(error)
       type(error_type), allocatable, intent(out) :: error
-      type(wheelset_solver_type) :: ws
       type(wheelset_result_type) :: expected
       type(lib_error), allocatable :: err
       type(library_setup_type) :: setup
@@ -579,14 +579,12 @@ contains
 
       call read_config_text("&tangential bound = 'ellipsoidal' /", 'ws', config, err)
       if (.not. allocated(err)) call library_setup(config, setup, err)
-      if (.not. allocated(err)) call ws%init('builtin:S1002', 'builtin:UIC60', err, &
-         tangential_options=setup%tangential)
-      if (.not. allocated(err)) call ws%solve(ws_state, contact_load_type(2, 64.7e3_wp), &
-         contact_load_type(2, 60.0e3_wp), expected, err)
       if (allocated(err)) then
-         call test_failed(error, 'Fortran wheelset: '//err%message)
+         call test_failed(error, 'configuration: '//err%message)
          return
       end if
+      call fortran_wheelset('builtin:S1002', expected, error, setup%tangential)
+      if (allocated(error)) return
       call check(error, expected%wheel(wheel_right)%n_loaded, 2, message='two right patches')
       if (allocated(error)) return
       do k = 1, 2
@@ -661,22 +659,15 @@ contains
    !> without the external data (its measured MiniProf wheel on the built-in UIC60).
    subroutine test_wheelset_miniprof(error)
       type(error_type), allocatable, intent(out) :: error
-      type(wheelset_solver_type) :: ws
       type(wheelset_result_type) :: expected
-      type(lib_error), allocatable :: err
       character(len=:), allocatable :: whl
       real(wp) :: before(4), after(4), position, builtin_position
       integer :: ih, istat, k
 
       whl = external_file('profiles/Car7216_0001r.whl', error)
       if (allocated(error)) return
-      call ws%init(whl, 'builtin:UIC60', err)
-      if (.not. allocated(err)) call ws%solve(ws_state, contact_load_type(2, 64.7e3_wp), &
-         contact_load_type(2, 60.0e3_wp), expected, err)
-      if (allocated(err)) then
-         call test_failed(error, 'Fortran wheelset: '//err%message)
-         return
-      end if
+      call fortran_wheelset(whl, expected, error)
+      if (allocated(error)) return
       call shc_create_ws(ih, 'builtin:S1002', 'builtin:UIC60', istat)
       if (istat == 0) call shc_get_value(ih, 'track%flange_back_position', 0, builtin_position, &
          istat)
@@ -706,6 +697,21 @@ contains
             ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, totals, istat)
       end subroutine solve_ws
    end subroutine test_wheelset_miniprof
+
+   !> The Fortran wheelset on `wheel` and the built-in UIC60 (default track and material;
+   !> `tangential` options if given) at ws_state, 64.7 kN on the right wheel and 60 kN on the left.
+   subroutine fortran_wheelset(wheel, expected, error, tangential)
+      character(len=*), intent(in) :: wheel
+      type(wheelset_result_type), intent(out) :: expected
+      type(error_type), allocatable, intent(out) :: error
+      type(tangential_options_type), intent(in), optional :: tangential
+      type(wheelset_solver_type) :: ws
+      type(lib_error), allocatable :: err
+      call ws%init(wheel, 'builtin:UIC60', err, tangential_options=tangential)
+      if (.not. allocated(err)) call ws%solve(ws_state, contact_load_type(2, 64.7e3_wp), &
+         contact_load_type(2, 60.0e3_wp), expected, err)
+      if (allocated(err)) call test_failed(error, 'Fortran wheelset: '//err%message)
+   end subroutine fortran_wheelset
 
    !> A field by name is the array of shcontact_fields.
    subroutine test_field_by_name(error)
