@@ -9,7 +9,8 @@ module shcontact_app_commands
    use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
       report_header, report_lines, report_case_text, report_units, iso_timestamp, &
       run_setup_type, prepare_run, solve_geometry, sweep_options_type, sweep_outcome_type, &
-      run_sweep, patch_geometry_type, write_geometry_table
+      run_sweep, patch_geometry_type, write_geometry_table, read_case_profiles, profile_type
+   use shcontact_app_profile_advice, only: profile_notes
    use shcontact_app_output_guard, only: check_output_file
    use shcontact_app_cli, only: cli_type
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
@@ -86,6 +87,7 @@ contains
          status = report_error(error)
          return
       end if
+      if (.not. cli%quiet) call print_profile_notes(config)
       if (cli%check) then
          ! Reading the profiles is part of validating the input.
          call prepare_run(config, setup, error)
@@ -158,6 +160,25 @@ contains
          'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM), '// &
          str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'
    end function run_command
+
+   !> The notes on the case's profiles and their settings ([[profile_notes]]) on stderr, one
+   !> 'shcontact: note: ...' line each. A profile that cannot be read gets none here: the run
+   !> reports it.
+   subroutine print_profile_notes(config)
+      type(case_config_type), intent(in) :: config
+      type(profile_type) :: wheel, rail, wheel_read, rail_read
+      type(error_type), allocatable :: error
+      character(len=:), allocatable :: notes
+      integer :: i
+      call read_case_profiles(config, wheel, rail, error, wheel_read, rail_read)
+      if (allocated(error)) return
+      notes = profile_notes(config, wheel_read, rail_read, rail)
+      do while (len(notes) > 0)
+         i = index(notes, new_line('a'))
+         write (error_unit, '(a)') 'shcontact: '//notes(1:i - 1)
+         notes = notes(i + 1:)
+      end do
+   end subroutine print_profile_notes
 
    function resumed_note(outcome) result(text)
       type(sweep_outcome_type), intent(in) :: outcome

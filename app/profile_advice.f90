@@ -1,16 +1,17 @@
 !> `shcontact profiles FILE`: what the points suggest for a case (doc/profiles.md, *Measured
 !> profiles: cant and smoothing*): whether a rail looks canted already, the noise of the points
-!> and the smoothing length it calls for.
+!> and the smoothing length it calls for; and `shcontact run`'s notes where a case's settings
+!> disagree with that ([[profile_notes]]).
 module shcontact_app_profile_advice
    use shcontact_core_kinds, only: wp
-   use shcontact_core_strings, only: str_format
+   use shcontact_core_strings, only: str_format, to_lower
    use shcontact, only: profile_type, profile_kind_wheel, noise_estimate_type, estimate_noise, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
-      default_curvature_tolerance
+      default_curvature_tolerance, case_config_type
    implicit none
    private
 
-   public :: profile_advice
+   public :: profile_advice, profile_notes
 
    !> A head within this slope of upright (mm/mm) looks upright; half of the usual 1:40.
    real(wp), parameter :: upright_band = 0.0125_wp
@@ -86,5 +87,61 @@ contains
             noise%spacing, 2.0_wp), '(es8.1)')//' 1/mm at 2 mm); doc/profiles.md'
       end if
    end function noise_lines
+
+   !> The notes `shcontact run` prints (one per line, each starting 'note: ') where the case's
+   !> settings disagree with what its profiles' points suggest: a profile file whose measurement
+   !> noise calls for smoothing while its smoothing length is 0 (the spline then interpolates
+   !> the noise into the curvatures), and a rail whose head looks canted already while
+   !> track%rail_canted is false (the track's inclination is then applied a second time), or
+   !> upright while it is true. Built-in profiles get the cant note only.
+   function profile_notes(config, wheel_read, rail_read, rail) result(text)
+      !> The case, its profiles' points as read and its rail as the run cleans it (the noise
+      !> from the points read and the cant from the clean rail, as [[profile_advice]]).
+      type(case_config_type), intent(in) :: config
+      type(profile_type), intent(in) :: wheel_read, rail_read, rail
+      character(len=:), allocatable :: text
+      type(rail_cant_type) :: cant
+      text = smoothing_note('wheel', config%profiles%wheel, wheel_read, &
+         config%profiles%wheel_smoothing, 'profiles%wheel_smoothing')
+      text = text//smoothing_note('rail', config%profiles%rail, rail_read, &
+         config%profiles%rail_smoothing, 'profiles%rail_smoothing')
+      call estimate_rail_cant(rail, cant)
+      if (.not. cant%found) return
+      if (cant%slope >= upright_band .and. .not. config%track%rail_canted) then
+         text = text//'note: rail profile '//trim(config%profiles%rail)//': the head looks '// &
+            'inclined by about 1:'//str_format(1.0_wp/cant%slope, '(f0.0)')//' already, and '// &
+            'track%rail_canted = .false. inclines it by the track''s rail_inclination again; '// &
+            'set track%rail_canted = .true. if the points are canted (shcontact profiles '// &
+            'FILE, doc/profiles.md)'//new_line('a')
+      else if (abs(cant%slope) < upright_band .and. config%track%rail_canted) then
+         text = text//'note: rail profile '//trim(config%profiles%rail)//': the head looks '// &
+            'upright, and track%rail_canted = .true. leaves it so (no rail cant); set '// &
+            'track%rail_canted = .false. for the track''s rail_inclination (doc/profiles.md)'// &
+            new_line('a')
+      end if
+   end function profile_notes
+
+   !> The smoothing note of one profile file ('' when it is built in, smoothed or clean).
+   function smoothing_note(what, spec, profile, smoothing, variable) result(text)
+      character(len=*), intent(in) :: what, spec, variable
+      type(profile_type), intent(in) :: profile
+      real(wp), intent(in) :: smoothing
+      character(len=:), allocatable :: text
+      type(noise_estimate_type) :: noise
+      real(wp) :: l_filt
+      text = ''
+      if (smoothing > 0.0_wp .or. index(to_lower(adjustl(spec)), 'builtin:') == 1) return
+      call estimate_noise(profile, noise)
+      if (noise%windows == 0) return
+      l_filt = suggested_smoothing(noise%sigma, noise%spacing)
+      if (l_filt < negligible_smoothing) return
+      text = 'note: '//what//' profile '//trim(spec)//': measurement noise '// &
+         str_format(noise%sigma, '(es9.2)')//' mm rms and '//variable//' = 0: the spline '// &
+         'interpolates the noise into the curvatures ('//str_format(curvature_noise( &
+         noise%sigma, noise%spacing, 2.0_wp), '(es8.1)')//' 1/mm at 2 mm); '//variable// &
+         ' = '//str_format(l_filt, '(f0.1)')//' mm keeps it below '// &
+         str_format(default_curvature_tolerance, '(es8.1)')//' 1/mm (shcontact profiles '// &
+         'FILE, doc/profiles.md)'//new_line('a')
+   end function smoothing_note
 
 end module shcontact_app_profile_advice

@@ -10,7 +10,7 @@ module shcontact_app_profiles
    use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_usage
    use shcontact_core_strings, only: str_int
    use shcontact_core_files, only: make_directory, join_path
-   use shcontact, only: profile_type, profile_kind_wheel, profile_kind_rail, read_profile, &
+   use shcontact, only: profile_type, profile_kind_wheel, profile_kind_rail, &
       profile_file_format, load_profile => load_profile_file, write_profile_plain, &
       write_builtin_profiles, written_builtins
    use shcontact_app_cli, only: cli_type
@@ -96,10 +96,7 @@ contains
       if (len(cli%mirror_y) > 0) mirror_y = cli%mirror_y == 'yes'
       if (len(cli%mirror_z) > 0) mirror_z = cli%mirror_z == 'yes'
       call load_profile(cli%profile_file, kind, cleaned, error, cli%file_format, &
-         mirror_y=mirror_y, mirror_z=mirror_z, scale=scale, option_prefix='--')
-      if (allocated(error)) return
-      call read_profile(cli%profile_file, read, error, format=cli%file_format, kind=kind, &
-         mirror_y=mirror_y, mirror_z=mirror_z, scale=scale, option_prefix='--')
+         mirror_y=mirror_y, mirror_z=mirror_z, scale=scale, option_prefix='--', as_read=read)
    end subroutine load_file
 
    !> What was read and what the clean-up made of it.

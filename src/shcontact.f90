@@ -71,7 +71,8 @@ module shcontact
    use shcontact_api_preset, only: preset_names, apply_preset, set_preset
    ! case files, runs and output (the program's layers)
    use shcontact_input_config, only: case_config_type, load_config, config_namelist
-   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry
+   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry, &
+      read_case_profiles
    use shcontact_output_results, only: merge_result_files
    use shcontact_output_report, only: report_header, report_line, report_lines, &
       report_case_text, report_units
@@ -119,7 +120,7 @@ module shcontact
       profile_file_format, load_profile_file, roll_angle_parameter, contact_distance, &
       centre_radius
    public :: case_config_type, load_config, config_namelist, run_setup_type, prepare_run, &
-      solve_geometry, merge_result_files, report_header, report_line, report_lines, &
+      read_case_profiles, solve_geometry, merge_result_files, report_header, report_line, report_lines, &
       report_case_text, &
       report_units, iso_timestamp, wall_seconds, sweep_options_type, sweep_outcome_type, &
       run_sweep, max_threads

@@ -60,6 +60,8 @@ contains
          new_unittest('profiles_output_never_the_input', test_profiles_own_input), &
          new_unittest('profiles_geometry_never_overwrite', test_no_overwrite), &
          new_unittest('miniprof_wheel_written_same_contact', test_miniprof_written), &
+         new_unittest('run_notes_on_profiles', test_profile_notes), &
+         new_unittest('run_notes_on_measured_profiles', test_profile_notes_measured), &
          new_unittest('collinear_points_same_forces', test_collinear_points), &
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
          ]
@@ -742,6 +744,70 @@ contains
    !> The reproducer of issue 24, item 2: `profiles Car7216_0001r.whl -o clean.txt`, then a case
    !> reading clean.txt as a plain file gives the contact of the .whl (γ₀ −0.068, not +0.088;
    !> 2 patches, not 3; p_max 1734 MPa, not 4805; to the 5 digits of the text summary).
+   !> `run` notes on stderr where the case's settings disagree with its profiles' points
+   !> (doc/app.md, "Notes on the profiles"): the built-in canted rail without
+   !> track%rail_canted, the upright one with it; none for the default case, none with -q.
+   subroutine test_profile_notes(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_profile_notes')
+      call run_expect(error, dir, 'run -o a.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(err, 'note:') == 0, message='a note on the default case: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -o b.h5 --set profiles%rail=builtin:UIC60-canted', 0, &
+         out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: note: rail profile builtin:UIC60-canted: the head '// &
+         'looks inclined by about 1:40 already', 'the canted rail without rail_canted')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -o c.h5 --set track%rail_canted=.true.', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: note: rail profile builtin:UIC60: the head looks '// &
+         'upright', 'the upright rail with rail_canted')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -o d.h5 --set profiles%rail=builtin:UIC60-canted '// &
+         '--set track%rail_canted=.true.', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(err, 'note:') == 0, message='a note on a consistent case: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q -o e.h5 --set track%rail_canted=.true.', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(err) == 0, message='-q prints no note: '//err)
+      call shell('rm -rf '//dir)
+   end subroutine test_profile_notes
+
+   !> The same notes on the external data's measured pair: the noise of each unsmoothed file
+   !> with the smoothing `shcontact profiles FILE` suggests (2.9 and 8.1 mm), the rail's 1:48
+   !> cant; none once the case sets them. Skipped without the external data.
+   subroutine test_profile_notes_measured(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, whl, ban, out, err, pair
+      if (unavailable(error, .false.)) return
+      whl = external_file('profiles/Car7216_0001r.whl', error, absolute=.true.)
+      if (allocated(error)) return
+      ban = external_file('profiles/avg_HR.BAN', error, absolute=.true.)
+      if (allocated(error)) return
+      dir = scratch_directory('cli_profile_notes_measured')
+      pair = ' --set profiles%wheel='//whl//' --set profiles%rail='//ban
+      call run_expect(error, dir, 'run -o a.h5'//pair, 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'profiles%wheel_smoothing = 2.9 mm keeps it below', &
+         'the wheel smoothing note')
+      if (allocated(error)) return
+      call expect_in(error, err, 'profiles%rail_smoothing = 8.1 mm keeps it below', &
+         'the rail smoothing note')
+      if (allocated(error)) return
+      call expect_in(error, err, 'looks inclined by about 1:48 already', 'the rail cant note')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -o b.h5'//pair//' --set profiles%wheel_smoothing=2.9 '// &
+         '--set profiles%rail_smoothing=8.1 --set track%rail_canted=.true.', 0, out, err)
+      if (allocated(error)) return
+      call check(error, index(err, 'note:') == 0, message='a note on a consistent case: '//err)
+      call shell('rm -rf '//dir)
+   end subroutine test_profile_notes_measured
+
    subroutine test_miniprof_written(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, whl, out, err, a, b

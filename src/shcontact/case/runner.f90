@@ -60,6 +60,7 @@ module shcontact_case_runner
    private
 
    public :: run_setup_type, stage_type, prepare_run, solve_geometry, solve_stage
+   public :: read_case_profiles
    public :: solve_case, case_workspace_type, tangential_patch_type
    public :: solve_kinematic_case, kinematic_state, contact_solver_type
 
@@ -123,12 +124,14 @@ contains
    !> A profile of the case: `&profiles` names, format, mirrors ('auto' leaves them to the
    !> file and its format) and scale (0 likewise).
    subroutine load_case_profile(spec, kind, format, mirror_y, mirror_z, scale, prefix, &
-         profile, error)
+         profile, error, as_read)
       character(len=*), intent(in) :: spec, format, mirror_y, mirror_z, prefix
       integer, intent(in) :: kind
       real(wp), intent(in) :: scale
       type(profile_type), intent(out) :: profile
       type(error_type), allocatable, intent(out) :: error
+      !> The points as read, before the clean-up.
+      type(profile_type), intent(out), optional :: as_read
       ! Unallocated, they are absent arguments of load_profile.
       logical, allocatable :: flip_y, flip_z
       real(wp), allocatable :: factor
@@ -136,8 +139,30 @@ contains
       if (trim(mirror_z) /= 'auto') flip_z = trim(mirror_z) == 'yes'
       if (scale > 0.0_wp) factor = scale
       call load_profile(spec, kind, profile, error, format, mirror_y=flip_y, mirror_z=flip_z, &
-         scale=factor, option_prefix=prefix)
+         scale=factor, option_prefix=prefix, as_read=as_read)
    end subroutine load_case_profile
+
+   !> The wheel and rail profiles of a case as a run reads them (`&profiles`: names, formats,
+   !> mirrors, scales; read, checked and cleaned), and optionally their points as read.
+   subroutine read_case_profiles(config, wheel, rail, error, wheel_read, rail_read)
+      !> The validated configuration.
+      type(case_config_type), intent(in) :: config
+      !> The profiles.
+      type(profile_type), intent(out) :: wheel, rail
+      !> Set for an unreadable or bad profile.
+      type(error_type), allocatable, intent(out) :: error
+      !> The points as read, before the clean-up.
+      type(profile_type), intent(out), optional :: wheel_read, rail_read
+      call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
+         config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
+         config%profiles%wheel_mirror_z, config%profiles%wheel_scale, '&profiles wheel_', &
+         wheel, error, wheel_read)
+      if (allocated(error)) return
+      call load_case_profile(config%profiles%rail, profile_kind_rail, &
+         config%profiles%rail_format, config%profiles%rail_mirror_y, &
+         config%profiles%rail_mirror_z, config%profiles%rail_scale, '&profiles rail_', &
+         rail, error, rail_read)
+   end subroutine read_case_profiles
 
    !> Read the profiles and prepare everything the cases share.
    subroutine prepare_run(config, setup, error)
@@ -149,15 +174,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(library_setup_type) :: lib
 
-      call load_case_profile(config%profiles%wheel, profile_kind_wheel, &
-         config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
-         config%profiles%wheel_mirror_z, config%profiles%wheel_scale, '&profiles wheel_', &
-         setup%wheel, error)
-      if (allocated(error)) return
-      call load_case_profile(config%profiles%rail, profile_kind_rail, &
-         config%profiles%rail_format, config%profiles%rail_mirror_y, &
-         config%profiles%rail_mirror_z, config%profiles%rail_scale, '&profiles rail_', &
-         setup%rail, error)
+      call read_case_profiles(config, setup%wheel, setup%rail, error)
       if (allocated(error)) return
 
       call library_setup(config, lib, error)

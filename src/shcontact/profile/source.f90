@@ -26,7 +26,7 @@ contains
    !> A profile from `builtin:NAME` (case-insensitive prefix) or from a file, which is read and
    !> then checked and cleaned (messages name the file line).
    subroutine load_profile(spec, kind, profile, error, format, mirror_y, mirror_z, scale, &
-         option_prefix)
+         option_prefix, as_read)
       !> `builtin:NAME` or a file name.
       character(len=*), intent(in) :: spec
       !> profile_kind_wheel or profile_kind_rail; absent: as the file or its extension says
@@ -44,12 +44,16 @@ contains
       real(wp), intent(in), optional :: scale
       !> How the caller names these options in messages (as [[read_profile]]).
       character(len=*), intent(in), optional :: option_prefix
+      !> The points as read, before the clean-up (a built-in profile as it is), e.g. for the
+      !> noise of a measured file (shcontact_profile_diagnostics).
+      type(profile_type), intent(out), optional :: as_read
       integer, allocatable :: lines(:)
       character(len=:), allocatable :: fmt, text
 
       text = trim(adjustl(spec))
       if (index(to_lower(text), 'builtin:') == 1) then
          call builtin_profile(text(9:), profile, error)
+         if (present(as_read)) as_read = profile
          return
       end if
       fmt = 'auto'
@@ -57,6 +61,7 @@ contains
       call read_profile(text, profile, error, format=fmt, kind=kind, mirror_y=mirror_y, &
          mirror_z=mirror_z, scale=scale, line_of_point=lines, option_prefix=option_prefix)
       if (allocated(error)) return
+      if (present(as_read)) as_read = profile
       call clean_profile(profile, error, lines, option_prefix=option_prefix)
       if (allocated(error)) return
       call drop_collinear(profile, lines)
