@@ -274,10 +274,10 @@ def main():
         surface(a, work, positions, [float(v) * 1e-3 for v in a.yaw_mrad.split(',')])
         return
     global Y_WS
-    if len(positions) != 1:
-        raise SystemExit('--y-ws: one position, except with --surface')
-    Y_WS = positions[0]
     if a.scan_fn:
+        if len(positions) != 1:
+            raise SystemExit('--scan-fn: one position')
+        Y_WS = positions[0]
         yaws = [float(v) * 1e-3 for v in a.yaw_mrad.split(',')]
         print('ours, F_n prescribed, Y_WS %.1f mm: end of the loaded strips on the root side (mm)'
               % Y_WS)
@@ -286,27 +286,34 @@ def main():
             print('  %6.1f | ' % (fn / 1e3) + ' '.join('%8.3f' % ours_case(work, fn, y, 'force')
                                                       ['s_end'] for y in yaws), flush=True)
         return
-    rail, wheel = ks.profiles('new', work)
-    print('%s approach; Y_WS %.1f mm, frictionless; angle = acos(F_z/F_n); dist = gap minimum '
-          'to the flange root (mm)' % (a.approach, Y_WS))
-    print('  F_z kN  yaw | CONTACT: F_n kN  angle  area  approach  slide  dist | ours: F_n kN  '
-          'angle  area  dist (first contact)')
     rows = []
-    for fz in (float(v) for v in a.fz.split(',')):
-        for yaw in (float(v) * 1e-3 for v in a.yaw_mrad.split(',')):
-            c = contact_case(work, rail, wheel, fz, yaw, a.approach)
-            rows += c['rows']
-            o = ours_case(work, fz, yaw)
-            ang = lambda fn: np.degrees(np.arccos(fz / fn))  # noqa: E731
-            print('  %6.1f %+4.0f | %7.1f %6.2f %5.1f %8.4f %6.3f %5.3f | %7.1f %6.2f %5.1f %5.3f'
-                  % (fz / 1e3, yaw * 1e3, c['fn'] / 1e3, ang(c['fn']), c['area'], c['approach'],
-                     c['slide'], c['dist'], o['fn'] / 1e3, ang(o['fn']), o['area'], o['dist']),
-                  flush=True)
+    for Y_WS in positions:
+        # One folder per position (the case files are named by F_z and yaw).
+        folder = work if len(positions) == 1 else os.path.join(work, 'rows_y%.2f' % Y_WS)
+        os.makedirs(folder, exist_ok=True)
+        rail, wheel = ks.profiles('new', folder)
+        print('%s approach; Y_WS %.1f mm, frictionless; angle = acos(F_z/F_n); dist = gap minimum '
+              'to the flange root (mm)' % (a.approach, Y_WS))
+        print('  F_z kN  yaw | CONTACT: F_n kN  angle  area  approach  slide  dist | ours: F_n kN  '
+              'angle  area  dist (first contact)')
+        for fz in (float(v) for v in a.fz.split(',')):
+            for yaw in (float(v) * 1e-3 for v in a.yaw_mrad.split(',')):
+                c = contact_case(folder, rail, wheel, fz, yaw, a.approach)
+                rows += [(Y_WS,) + r for r in c['rows']]
+                o = ours_case(folder, fz, yaw)
+                ang = lambda fn: np.degrees(np.arccos(fz / fn))  # noqa: E731
+                print('  %6.1f %+4.0f | %7.1f %6.2f %5.1f %8.4f %6.3f %5.3f | %7.1f %6.2f %5.1f %5.3f'
+                      % (fz / 1e3, yaw * 1e3, c['fn'] / 1e3, ang(c['fn']), c['area'],
+                         c['approach'], c['slide'], c['dist'], o['fn'] / 1e3, ang(o['fn']),
+                         o['area'], o['dist']), flush=True)
     if a.write_rows:
+        # A column of the position only when there are several (h_rows_7mm.csv has one).
+        several = len(positions) > 1
         with open(a.write_rows, 'w') as f:
-            f.write('fz_N,yaw_rad,approach_mm,delta_rad,s_mm,h_mm\n')
+            f.write(('y_ws_mm,' if several else '') + 'fz_N,yaw_rad,approach_mm,delta_rad,s_mm,h_mm\n')
             for r in rows:
-                f.write('%.1f,%.4f,%.6f,%.6f,%.4f,%.6e\n' % r)
+                f.write(('%.2f,' % r[0] if several else '') + '%.1f,%.4f,%.6f,%.6f,%.4f,%.6e\n'
+                        % r[1:])
 
 
 if __name__ == '__main__':
