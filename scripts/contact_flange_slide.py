@@ -236,8 +236,8 @@ def surface(a, work, positions, yaws):
             o = ours_case(work, fz, yaw, friction=mu)
             x = ours_case(work, fz, yaw, slide='exact', friction=mu)
             deg = np.degrees
-            print(' %4.1f %+4.0f | %6.1f %+6.3f %6.2f %+5.2f %6.2f %6.1f | %6.1f %+6.3f %6.2f %6.2f '
-                  '%6.1f | %6.1f %6.2f | %6.1f %6.2f'
+            print(' %4.1f %+4.0f | %6.1f %+6.3f %6.2f %+5.2f %6.2f %6.1f | %6.1f %+6.3f %6.2f '
+                  '%6.2f %6.1f | %6.1f %6.2f | %6.1f %6.2f'
                   % (Y_WS, yaw * 1e3, p['fn'] / 1e3, p['fy'], deg(p['delta']), p['s_c'],
                      deg(p['rail_angle']), normal_force_at(fz, p['rail_angle'], mu * p['fy']) / 1e3,
                      c['fn'] / 1e3, c['fy'], deg(c['surface_angle']), deg(c['rail_angle']),
@@ -302,7 +302,8 @@ def main():
                 rows += [(Y_WS,) + r for r in c['rows']]
                 o = ours_case(folder, fz, yaw)
                 ang = lambda fn: np.degrees(np.arccos(fz / fn))  # noqa: E731
-                print('  %6.1f %+4.0f | %7.1f %6.2f %5.1f %8.4f %6.3f %5.3f | %7.1f %6.2f %5.1f %5.3f'
+                print('  %6.1f %+4.0f | %7.1f %6.2f %5.1f %8.4f %6.3f %5.3f | %7.1f %6.2f %5.1f '
+                      '%5.3f'
                       % (fz / 1e3, yaw * 1e3, c['fn'] / 1e3, ang(c['fn']), c['area'],
                          c['approach'], c['slide'], c['dist'], o['fn'] / 1e3, ang(o['fn']),
                          o['area'], o['dist']), flush=True)
@@ -310,7 +311,8 @@ def main():
         # A column of the position only when there are several (h_rows_7mm.csv has one).
         several = len(positions) > 1
         with open(a.write_rows, 'w') as f:
-            f.write(('y_ws_mm,' if several else '') + 'fz_N,yaw_rad,approach_mm,delta_rad,s_mm,h_mm\n')
+            f.write(('y_ws_mm,' if several else '')
+                    + 'fz_N,yaw_rad,approach_mm,delta_rad,s_mm,h_mm\n')
             for r in rows:
                 f.write(('%.2f,' % r[0] if several else '') + '%.1f,%.4f,%.6f,%.6f,%.4f,%.6e\n'
                         % r[1:])

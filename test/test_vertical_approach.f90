@@ -336,8 +336,9 @@ contains
    !> our loaded gap at CONTACT's approach, both less their minimum (each refined by a parabola):
    !> with `slide = 'exact'` within 2 µm wherever |s − s_min| ≤ 1.6 mm (0.09–0.6 µm found;
    !> CONTACT's h reaches 0.09–0.16 mm there), with the linear slide more than 1.5 µm and three
-   !> times as far off at every state (2.2–22 µm found, the least on 7.5 mm's straight face). The gap is right with the exact slide; what separates our flange F_n
-   !> from CONTACT's is the direction CONTACT gives its pressure (doc/validation.md §6.8).
+   !> times as far off at every state (2.2–22 µm found, the least on 7.5 mm's straight face).
+   !> The gap is right with the exact slide; what separates our flange F_n from CONTACT's is the
+   !> direction CONTACT gives its pressure (doc/validation.md §6.8).
    subroutine test_flange_loaded_gap(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: reach = 1.6_wp
@@ -356,7 +357,8 @@ contains
       m = 0
       do r = 1, size(rows, 1)
          if (done(r)) cycle
-         this = abs(rows(:, 1) - rows(r, 1)) < 1.0e-6_wp .and. abs(rows(:, 2) - rows(r, 2)) < 1.0e-6_wp
+         this = abs(rows(:, 1) - rows(r, 1)) < 1.0e-6_wp .and. &
+            abs(rows(:, 2) - rows(r, 2)) < 1.0e-6_wp
          done = done .or. this
          m = m + 1
          call flange_geometry(rows(r, 1), rows(r, 2), geometry, error)
