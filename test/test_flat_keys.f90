@@ -573,8 +573,9 @@ contains
       character(kind=c_char), target :: wheel(14), rail(14)
       type(c_ptr), target :: h
       real(c_double) :: totals(4), cw(kinematic_value_count, 2)
-      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x, y
-      integer :: ih, istat, k
+      real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x, y, &
+         again(4)
+      integer :: ih, istat, k, bad, bad_gauge
       integer(c_int) :: stat
 
       call read_config_text("&tangential bound = 'ellipsoidal' /", 'ws', config, err)
@@ -642,7 +643,19 @@ contains
       if (istat == 0) call shc_ws_wheel(ih, -1, 0, fw(:, 2), istat)
       if (istat == 0) call shc_get_value(ih, 'left%fn', 0, x, istat)
       if (istat == 0) call shc_get_value(ih, 'left%wheel_fy_norm', 0, y, istat)
+      ! A refused value leaves the wheelset handle as it was: the same solve, the same totals.
+      if (istat == 0) then
+         call shc_set_option(ih, 'material%friction', '-1', bad)
+         call shc_set_option(ih, 'track%gauge', '99999', bad_gauge)
+         call shc_solve_ws(ih, ws_state%y_ws, ws_state%yaw, ws_state%roll, &
+            ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, &
+            ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, again, istat)
+      end if
       call shc_destroy(ih, k)
+      call check(error, istat == 0 .and. bad == stat_invalid_input .and. &
+         bad_gauge == stat_invalid_input .and. bitwise_equal(again, ft), &
+         message='a refused value changed or disabled the wheelset handle')
+      if (allocated(error)) return
       call check(error, istat == 0 .and. bitwise_equal(ft, [expected%fx, expected%fy, &
          expected%fz, expected%mz]) .and. bitwise_equal(reshape(fw, [size(fw)]), &
          reshape(ref, [size(ref)])) .and. bitwise_equal([x], [expected%wheel(wheel_left)%main%fn]) &

@@ -80,6 +80,8 @@ contains
             gap0=gap)
          geom%y_rail = -40.0_wp
          if (present(y_flange)) geom%y_rail = y_flange
+         ! The right wheel, the rail upright: track y = rail-profile y.
+         geom%y_track = geom%y_rail
          call prepare_normal_contact(contacts(2), geom, options, mat, err)
       end if
       if (allocated(err)) call test_failed(error, err%message)

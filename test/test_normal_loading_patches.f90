@@ -93,8 +93,8 @@ contains
    end subroutine test_not_placed
 
    !> The row of solve_row's patches prepared with the given normal reduction (n = size of
-   !> contacts): contact angles −0.03 − 0.02 (k − 1) rad, gaps 0.5 (k − 1) µm, y_rail spaced by
-   !> `spacing`.
+   !> contacts): contact angles −0.03 − 0.02 (k − 1) rad, gaps 0.5 (k − 1) µm, y_rail (and
+   !> y_track) spaced by `spacing`.
    subroutine prepare_row(contacts, reduction, err)
       type(normal_contact_type), intent(out) :: contacts(:)
       integer, intent(in) :: reduction
@@ -109,6 +109,8 @@ contains
          call polynomial_patch(geom, tread_a, tread_b, 12.0_wp, 0.01_wp, &
             gamma0=-0.03_wp - 0.02_wp*(k - 1), gap0=0.0005_wp*(k - 1))
          geom%y_rail = -spacing*(k - 1)
+         ! The right wheel, the rail upright: track y = rail-profile y.
+         geom%y_track = geom%y_rail
          call prepare_normal_contact(contacts(k), geom, options, mat, err)
          if (allocated(err)) return
       end do

@@ -94,7 +94,6 @@ class Contact:
         self._lib = load_library(library)
         self._handle = ctypes.c_void_p()
         self._fields = False
-        self._nominal_radius = DEFAULT_TRACK["nominal_radius"]
         self._track_defaults = dict(DEFAULT_TRACK)
 
     def _resolved_track_defaults(self):
@@ -139,12 +138,11 @@ class Contact:
             self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
             int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
             t["nominal_radius"]))
-        self._nominal_radius = float(t["nominal_radius"])
 
     def set_option(self, key, value):
         """One option as in the app's case files (``"tangential%bound"``, ``"clipped"``)."""
         self._check(self._lib.shcontact_set_option(self._ptr(), key.encode(), str(value).encode()))
-        if key == "output%fields":
+        if key.strip().lower() == "output%fields":
             self._fields = str(value).strip().lower() in ("all", "1")
 
     def value(self, key, patch=0):
@@ -217,7 +215,9 @@ class Contact:
         mode, load = self._load(normal_force, vertical_force, approach, vertical_position,
                                 shared_force)
         if pitch_rate is None:
-            pitch_rate = -np.asarray(v_forward, dtype=np.float64) / self._nominal_radius
+            # The nominal radius the handle holds now (set by set_track or by option key).
+            pitch_rate = (-np.asarray(v_forward, dtype=np.float64)
+                          / self.value("track%nominal_radius"))
         inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
             y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate,
             load)])

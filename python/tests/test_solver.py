@@ -183,6 +183,22 @@ def test_value_reads_inputs_and_results():
             c.value("normal%method")
         r = c.solve(T_Y, **HEADLINE)
         assert c.value("fx") == r["fx"]
+        # The grid as the vehicle preset resolves it (doc/kinematics.md, "The vehicle preset").
+        assert (c.value("normal%n_strips"), c.value("tangential%n_elements")) == (100, 50)
+        c.set_option("normal%preset", "vehicle")
+        assert (c.value("normal%n_strips"), c.value("tangential%n_elements")) == (60, 40)
+
+
+def test_pitch_rate_of_nominal_radius_by_option():
+    """Pure rolling's pitch rate comes from the nominal radius the handle holds, however it
+    was set (set_track or the option key): the same creepages both ways (it used a radius cached
+    by set_track only, so an option key gave nu_x = +2.06e-2 instead of -1.33e-3)."""
+    state = dict(v_forward=30000.0, yaw=0.002, vertical_force=64.7e3)
+    with shcontact.Contact(track={"nominal_radius": 450.0}) as a, \
+            shcontact.Contact(options={"track%nominal_radius": 450}) as b:
+        ra, rb = a.solve_kinematic(2.0, **state), b.solve_kinematic(2.0, **state)
+        assert ra["nu_x"] == rb["nu_x"] and ra["fx"] == rb["fx"]
+        assert abs(ra["nu_x"]) < 2e-3
 
 
 def test_track_keeps_miniprof_origin():

@@ -287,16 +287,22 @@ contains
       type(library_setup_type) :: setup, old
       type(normal_options_type) :: normal
       type(tangential_options_type) :: tangential
+      type(wheelset_solver_type), allocatable :: wheelset
 
       call library_setup(config, setup, error)
       if (allocated(error)) return
       if (ctx%is_wheelset) then
-         ctx%has_result = .false.
-         call ctx%wheelset%init(trim(config%profiles%wheel), trim(config%profiles%rail), &
+         ! Both wheels created anew, and kept only if that succeeds: a refused value leaves the
+         ! handle as it was (nothing changes on error).
+         allocate (wheelset)
+         call wheelset%init(trim(config%profiles%wheel), trim(config%profiles%rail), &
             error, track=setup%track, material=setup%material, &
             contact_options=setup%contact_options, normal_options=setup%normal, &
             tangential_options=setup%tangential)
-         ctx%wheelset_ready = .not. allocated(error)
+         if (allocated(error)) return
+         ctx%has_result = .false.
+         call move_alloc(wheelset, ctx%wheelset)
+         ctx%wheelset_ready = .true.
          return
       end if
       if (present(material_only)) then

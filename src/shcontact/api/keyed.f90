@@ -21,7 +21,10 @@ module shcontact_api_keyed
    use shcontact_core_strings, only: to_lower, str_int, visible
    use shcontact_core_text, only: format_real
    use shcontact_input_config, only: case_config_type, case_point_type, validate_config
-   use shcontact_input_config_types, only: output_config_type, number_value
+   use shcontact_input_config_types, only: output_config_type, number_value, normal_options_of, &
+      tangential_options_of
+   use shcontact_normal_options, only: normal_options_type
+   use shcontact_tangential_options, only: tangential_options_type
    use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list, &
       find_variable
    use shcontact_api_solver, only: contact_result_type, contact_load_type, max_patches
@@ -238,6 +241,8 @@ contains
       real(wp), intent(out) :: x
       type(error_type), allocatable :: error
       character(len=:), allocatable :: k, group, name
+      type(normal_options_type) :: normal
+      type(tangential_options_type) :: tangential
       integer :: i, wheel
       real(wp) :: totals(size(wheelset_keys))
 
@@ -251,8 +256,18 @@ contains
       if (.not. context_usable(ctx, error)) then
          continue
       else if (i > 0 .and. group /= 'sweep') then
-         ! A numeric input: the handle's current setting (no solve needed).
-         x = number_value(ctx%config, group, name)
+         ! A numeric input: the handle's current setting (no solve needed), the grid as the
+         ! preset resolves it unless given.
+         select case (k)
+         case ('normal%n_strips')
+            normal = normal_options_of(ctx%config)
+            x = normal%n_strips
+         case ('tangential%n_elements')
+            tangential = tangential_options_of(ctx%config)
+            x = tangential%n_elements
+         case default
+            x = number_value(ctx%config, group, name)
+         end select
       else if (i < 0) then
          call fatal_error(error, "value '"//visible(key)//"': not a number (read back only "// &
             'numeric inputs)', stat_invalid_input)

@@ -26,7 +26,7 @@ module shcontact_normal_loading
    implicit none
    private
 
-   public :: normal_contact_type, prepare_normal_contact, interface_contact_angles
+   public :: normal_contact_type, prepare_normal_contact, interface_contact_angles, patch_offset
    public :: solve_approach, solve_load, solve_vertical_load, solve_vertical_approach
 
    !> Relative accuracy of the force matching (the issue asks for 1e-10).
@@ -54,9 +54,10 @@ module shcontact_normal_loading
       type(semihertz_geometry_type) :: geometry
       !> Hertz shape at A(0)/B(0): the `'hertz'` method and the first guess of force matching.
       type(hertz_shape_type) :: ref_shape
-      !> The reference point on the rail profile (side frame, mm) and its track height (mm):
-      !> where the patch lies along the profile, for the coupling between patches.
-      real(wp) :: y_rail = 0.0_wp, z_track = 0.0_wp
+      !> The reference point's lateral and vertical track coordinates (mm) and its lateral
+      !> coordinate on the rail profile (mm): where the patch lies along the profile, for the
+      !> coupling between patches ([[patch_offset]]).
+      real(wp) :: y_track = 0.0_wp, z_track = 0.0_wp, y_rail = 0.0_wp
    end type normal_contact_type
 
    !> N(δ)^{2/3} − N_target^{2/3} of one patch, with δ = origin + x.
@@ -113,8 +114,9 @@ contains
       contact%options = options
       contact%material = material
       contact%e_star = material%e_star()
-      contact%y_rail = geometry%y_rail
+      contact%y_track = geometry%y_track
       contact%z_track = geometry%z_track
+      contact%y_rail = geometry%y_rail
       call confine_to_basin(geometry, n_points, first, last, gap_first, gap_last, confined)
       if (confined) then
          call prepare_semihertz(geometry, options, contact%geometry, error, first=first, &
@@ -233,7 +235,7 @@ contains
       !> More patches than this on one wheel are not placed along the profile (a fixed-size work
       !> array): each is coupled alone.
       integer, parameter :: most = 32
-      real(wp) :: offset(most), dy, dz
+      real(wp) :: offset(most)
       integer :: k
 
       if (contacts(1)%options%reduction /= reduction_coupled) return
@@ -242,12 +244,21 @@ contains
          return
       end if
       do k = 1, size(contacts)
-         dy = contacts(k)%y_rail - contacts(1)%y_rail
-         dz = contacts(k)%z_track - contacts(1)%z_track
-         offset(k) = sign(sqrt(dy*dy + dz*dz), dy)
+         offset(k) = patch_offset(contacts(k)%y_track - contacts(1)%y_track, &
+            contacts(k)%z_track - contacts(1)%z_track, contacts(k)%y_rail - contacts(1)%y_rail)
       end do
       call couple_patches(patches, contacts(1)%e_star, error, offset(1:size(contacts)), start)
    end subroutine patches_coupled_if_asked
+
+   !> The position of a patch along the profile relative to another, for the coupling between
+   !> them: their reference points' distance in the track frame, hypot(Δy_track, Δz_track) (mm;
+   !> both differences in one frame, so that a rail canted by the track and the same rail given
+   !> canted give the same distance), signed as their order on the rail profile, Δy_rail
+   !> (positive towards the field side on either wheel).
+   elemental real(wp) function patch_offset(dy_track, dz_track, dy_rail) result(offset)
+      real(wp), intent(in) :: dy_track, dz_track, dy_rail
+      offset = sign(hypot(dy_track, dz_track), dy_rail)
+   end function patch_offset
 
    !> Several patches of one wheel under a prescribed vertical load F_z: one rigid approach Δz
    !> with δ_k = Δz cos γ_k − g₀,k and Σ_k N_k cos γ_k = F_z (doc/theory.md §4.6). Patches that do

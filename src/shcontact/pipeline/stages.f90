@@ -26,7 +26,8 @@ module shcontact_pipeline_stages
    use shcontact_geometry_kinematics, only: contact_lead
    use shcontact_normal_options, only: normal_options_type
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load, &
-      solve_approach, solve_vertical_load, solve_vertical_approach, interface_contact_angles
+      solve_approach, solve_vertical_load, solve_vertical_approach, interface_contact_angles, &
+      patch_offset
    use shcontact_normal_patch, only: normal_patch_type
    use shcontact_normal_coupling, only: coupling_start_type
    use shcontact_tangential_options, only: tangential_options_type
@@ -433,8 +434,8 @@ contains
             fx(k) = tangential(k)%fx
             fy(k) = tangential(k)%fy
          end if
-         offset(k) = sign(hypot(geometry(k)%y_rail - geometry(1)%y_rail, &
-            geometry(k)%z_track - geometry(1)%z_track), geometry(k)%y_rail - geometry(1)%y_rail)
+         offset(k) = patch_offset(geometry(k)%y_track - geometry(1)%y_track, &
+            geometry(k)%z_track - geometry(1)%z_track, geometry(k)%y_rail - geometry(1)%y_rail)
       end do
       call join_lobes(geometry(1:n), n_points(1:n), normal(1:n), offset(1:n), fx(1:n), &
          fy(1:n), friction, result%wheel)
