@@ -15,6 +15,10 @@ module test_normal_loading_patches
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, &
       solve_vertical_load
    use test_semihertz, only: polynomial_patch
+   use shcontact_geometry_track, only: track_type
+   use shcontact_tangential_creepage, only: creepage_type
+   use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
+      load_vertical_force
    implicit none
    private
    public :: collect_normal_loading_patches
@@ -36,7 +40,8 @@ contains
          new_unittest('more_than_max_patches_balance', test_more_than_joint), &
          new_unittest('patches_not_placed_coupled_alone', test_not_placed), &
          new_unittest('warm_coupling_same_fixed_point', test_warm_coupling), &
-         new_unittest('predictor_then_guessed_load_same_solution', test_predictor) &
+         new_unittest('predictor_then_guessed_load_same_solution', test_predictor), &
+         new_unittest('canted_rail_two_ways_same_coupling', test_canted_two_ways) &
          ]
    end subroutine collect_normal_loading_patches
 
@@ -248,5 +253,44 @@ contains
       if (allocated(error)) return
       call check(error, dz, dz_alone, thr=1.0e-14_wp, rel=.true., message='rigid approach')
    end subroutine check_balance
+
+   !> The same canted rail given two ways, UIC60 canted 1:40 by the track (the default set-up)
+   !> and the built-in UIC60-canted with track%rail_canted, carries the same loads on the same
+   !> two patches (t_y = 5.0 and 4.75 mm, vertical load 64.7 kN, ν_x = 1e-3, the coupled
+   !> reduction): the patches' distance is taken in the track frame (normal/loading.f90
+   !> patch_offset). It mixed the rail profile's y with the track's z before: 3e-4 apart.
+   subroutine test_canted_two_ways(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: by_track, given
+      type(contact_result_type) :: a, b
+      type(lib_error), allocatable :: err
+      real(wp), parameter :: t_y(2) = [5.0_wp, 4.75_wp]
+      integer :: i, k
+
+      call by_track%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call given%init('builtin:S1002', 'builtin:UIC60-canted', err, &
+         track=track_type(rail_canted=.true.))
+      do i = 1, size(t_y)
+         if (.not. allocated(err)) call by_track%solve(t_y(i), 0.0_wp, contact_load_type( &
+            load_vertical_force, 64.7e3_wp), creepage_type(1.0e-3_wp, 0.0_wp, 0.0_wp), a, err)
+         if (.not. allocated(err)) call given%solve(t_y(i), 0.0_wp, contact_load_type( &
+            load_vertical_force, 64.7e3_wp), creepage_type(1.0e-3_wp, 0.0_wp, 0.0_wp), b, err)
+         if (allocated(err)) then
+            call test_failed(error, err%message)
+            return
+         end if
+         call check(error, a%n_loaded == 2 .and. b%n_loaded == 2, &
+            message='two loaded patches expected')
+         if (allocated(error)) return
+         do k = 1, 2
+            call check(error, b%patch(k)%fn, a%patch(k)%fn, rel=.true., thr=1.0e-8_wp, &
+               message='a patch''s normal force depends on how the rail cant is given')
+            if (allocated(error)) return
+         end do
+         call check(error, b%wheel%fn, a%wheel%fn, rel=.true., thr=1.0e-8_wp, &
+            message='the joined contact depends on how the rail cant is given')
+         if (allocated(error)) return
+      end do
+   end subroutine test_canted_two_ways
 
 end module test_normal_loading_patches
