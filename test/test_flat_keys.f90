@@ -36,7 +36,7 @@ module test_flat_keys
       shcontact_create_wheelset, shcontact_solve_wheelset, shcontact_wheelset_wheel, &
       shcontact_field_size, shcontact_fields, shcontact_get_field, shcontact_solve
    use test_flat_api, only: shc_create, shc_destroy, shc_set_option, shc_solve_state, &
-      shc_get_value, shc_errmsg, shc_set_value, shc_create_ws, shc_solve_ws, shc_ws_wheel, &
+      shc_solve_kin, shc_get_value, shc_errmsg, shc_set_value, shc_create_ws, shc_solve_ws, shc_ws_wheel, &
       to_chars, from_chars, bitwise_equal
    use test_external_data, only: external_file
    implicit none
@@ -87,6 +87,7 @@ contains
          new_unittest('wheelset_from_c_and_f77', test_wheelset), &
          new_unittest('wheelset_option_keeps_miniprof_origin', test_wheelset_miniprof), &
          new_unittest('field_by_name', test_field_by_name), &
+         new_unittest('kinematic_call_refuses_spin_model', test_kinematic_spin_model), &
          new_unittest('doc_lists_every_key', test_doc_keys) &
          ]
    end subroutine collect_flat_keys
@@ -725,6 +726,46 @@ contains
          contact_load_type(2, 60.0e3_wp), expected, err)
       if (allocated(err)) call test_failed(error, 'Fortran wheelset: '//err%message)
    end subroutine fortran_wheelset
+
+   !> A kinematic call takes the spin from the wheelset motion (spin model 'additive'): a spin
+   !> model set otherwise on a handle makes SHC_SOLVE_KIN and SHC_SOLVE_WS refuse the call
+   !> (status 2, the message names 'additive'), as the program refuses it in kinematic mode,
+   !> rather than ignore it; 'additive' set again makes them solve.
+   subroutine test_kinematic_spin_model(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: values(kinematic_value_count), totals(4)
+      character(len=512) :: message
+      integer :: ih, iw, istat, k, refused, refused_ws, solved, solved_ws
+
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      call shc_create_ws(iw, 'builtin:S1002', 'builtin:UIC60', k)
+      call check(error, istat == 0 .and. k == 0, message='handles not created')
+      if (allocated(error)) return
+      call shc_set_option(ih, 'tangential%spin_model', 'geometric', istat)
+      call shc_set_option(iw, 'tangential%spin_model', 'geometric', k)
+      call solve(refused, refused_ws)
+      call shc_errmsg(ih, message)
+      call shc_set_option(ih, 'tangential%spin_model', 'additive', istat)
+      call shc_set_option(iw, 'tangential%spin_model', 'additive', k)
+      call solve(solved, solved_ws)
+      call shc_destroy(ih, k)
+      call shc_destroy(iw, k)
+      call check(error, refused == stat_invalid_input .and. refused_ws == stat_invalid_input &
+         .and. index(message, "'additive'") > 0, message='a non-additive spin model should '// &
+         'be refused by the kinematic calls: '//trim(message))
+      if (allocated(error)) return
+      call check(error, solved == 0 .and. solved_ws == 0, message='additive should solve')
+   contains
+      subroutine solve(one, both)
+         integer, intent(out) :: one, both
+         call shc_solve_kin(ih, ws_state%y_ws, ws_state%yaw, ws_state%roll, ws_state%v_forward, &
+            ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, ws_state%yaw_rate, &
+            ws_state%pitch_rate, 2, 64.7d3, values, one)
+         call shc_solve_ws(iw, ws_state%y_ws, ws_state%yaw, ws_state%roll, ws_state%v_forward, &
+            ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, ws_state%yaw_rate, &
+            ws_state%pitch_rate, 2, 64.7d3, 64.7d3, totals, both)
+      end subroutine solve
+   end subroutine test_kinematic_spin_model
 
    !> A field by name is the array of shcontact_fields.
    subroutine test_field_by_name(error)

@@ -24,6 +24,9 @@ module shcontact_api_context
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
       contact_fields_type, max_patches
    use shcontact_input_config, only: case_config_type
+   use shcontact_input_config_types, only: origin
+   use shcontact_tangential_option_registry, only: spin_additive, spin_model_choices
+   use shcontact_core_choices, only: choice_name
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type
    use shcontact_api_settings, only: library_setup_type, library_setup, set_config_value, &
       split_key, key_use, key_solver, key_fields, key_creation, key_app
@@ -159,6 +162,9 @@ contains
          call fatal_error(error, 'a one-wheel handle: create a wheelset handle '// &
             '(shcontact_create_wheelset, shc_create_ws) for the wheelset call', stat_usage)
       else if (usable(ctx, error, wheelset=.true.)) then
+         call check_kinematic_spin_model(ctx, error)
+      end if
+      if (.not. allocated(error)) then
          call ctx%wheelset%solve(state, contact_load_type(load_mode, load_right), &
             contact_load_type(load_mode, load_left), ctx%wheelset_result, error)
          if (.not. allocated(error)) then
@@ -412,7 +418,8 @@ contains
       values = 0.0_wp
       ctx%has_result = .false.
       ctx%has_fields = .false.
-      if (usable(ctx, error)) then
+      if (usable(ctx, error)) call check_kinematic_spin_model(ctx, error)
+      if (.not. allocated(error)) then
          if (ctx%keep_fields) then
             call ctx%solver%solve_kinematic(state, contact_load_type(load_mode, load), &
                ctx%result, error, ctx%fields)
@@ -428,6 +435,20 @@ contains
       end if
       stat = record(ctx, error)
    end function context_solve_kinematic
+
+   !> A kinematic call takes the spin of every strip from the wheelset motion (the additive
+   !> model, doc/kinematics.md): a spin model set otherwise on the handle is refused, as the
+   !> program refuses it in kinematic mode, rather than ignored.
+   subroutine check_kinematic_spin_model(ctx, error)
+      type(contact_context_type), intent(in) :: ctx
+      type(error_type), allocatable, intent(out) :: error
+      if (origin(ctx%config, 'tangential%spin_model') == 'default' .or. &
+         ctx%config%tangential%spin_model == spin_additive) return
+      call fatal_error(error, "tangential%spin_model = '"// &
+         choice_name(spin_model_choices, ctx%config%tangential%spin_model)// &
+         "': the kinematic call needs spin_model = 'additive' (the rigid slip of the wheelset "// &
+         "motion carried to each strip); set 'additive' for kinematic calls", stat_invalid_input)
+   end subroutine check_kinematic_spin_model
 
    !> The flat values of patch k of the last solve ([[patch_values]]).
    integer function context_patch(ctx, k, values) result(stat)
