@@ -283,29 +283,19 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: yaws(2) = [0.0_wp, 0.008_wp], loads(3) = [30000.0_wp, &
          64700.0_wp, 97000.0_wp]
-      type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_contact_type) :: exact, linear
-      type(lib_error), allocatable :: err
       real(wp), allocatable :: rows(:, :), y(:), gap(:)
       real(wp) :: theirs, ours, first, b, approach
       logical, allocatable :: this(:)
-      integer :: j, k, n, i
+      integer :: j, k, n
 
       call read_columns('data/exact/kinematic_flange/h_rows_7mm.csv', [character(len=11) :: &
          'fz_N', 'yaw_rad', 'approach_mm', 'delta_rad', 's_mm', 'h_mm'], rows, error)
       if (allocated(error)) return
       do j = 1, size(yaws)
-         call flange_geometry(7.0_wp, yaws(j), geometry, error)
+         call flange_both_slides(7.0_wp, yaws(j), exact, linear, y, error)
          if (allocated(error)) return
-         call prepare_normal_contact(exact, geometry(1), normal_options_type(slide=slide_exact), &
-            material_type(), err)
-         if (.not. allocated(err)) call prepare_normal_contact(linear, geometry(1), &
-            normal_options_type(slide=slide_linear), material_type(), err)
-         if (allocated(err)) then
-            call test_failed(error, err%message); return
-         end if
-         n = exact%geometry%n_table
-         y = [(exact%geometry%y_first + (i - 1)*exact%geometry%h, i=1, n)]
+         n = size(y)
          allocate (gap(n))
          do k = 1, size(loads)
             this = abs(rows(:, 1) - loads(k)) < 1.0_wp .and. abs(rows(:, 2) - yaws(j)) < 1.0e-6_wp
@@ -342,13 +332,11 @@ contains
    subroutine test_flange_loaded_gap(error)
       type(error_type), allocatable, intent(out) :: error
       real(wp), parameter :: reach = 1.6_wp
-      type(patch_geometry_type), allocatable :: geometry(:)
       type(normal_contact_type) :: exact, linear
-      type(lib_error), allocatable :: err
       real(wp), allocatable :: rows(:, :), y(:), gap(:)
       real(wp) :: worst(2), s0, h0
       logical, allocatable :: this(:), done(:)
-      integer :: i, k, n, m, r
+      integer :: k, n, m, r
 
       call read_columns('data/exact/kinematic_flange/h_rows_planar.csv', [character(len=11) :: &
          'y_ws_mm', 'yaw_rad', 'approach_mm', 's_mm', 'h_mm'], rows, error)
@@ -361,17 +349,9 @@ contains
             abs(rows(:, 2) - rows(r, 2)) < 1.0e-6_wp
          done = done .or. this
          m = m + 1
-         call flange_geometry(rows(r, 1), rows(r, 2), geometry, error)
+         call flange_both_slides(rows(r, 1), rows(r, 2), exact, linear, y, error)
          if (allocated(error)) return
-         call prepare_normal_contact(exact, geometry(1), normal_options_type(slide=slide_exact), &
-            material_type(), err)
-         if (.not. allocated(err)) call prepare_normal_contact(linear, geometry(1), &
-            normal_options_type(slide=slide_linear), material_type(), err)
-         if (allocated(err)) then
-            call test_failed(error, err%message); return
-         end if
-         n = exact%geometry%n_table
-         y = [(exact%geometry%y_first + (i - 1)*exact%geometry%h, i=1, n)]
+         n = size(y)
          if (allocated(gap)) deallocate (gap)
          allocate (gap(n))
          associate (s => pack(rows(:, 4), this), h => pack(rows(:, 5), this))
@@ -430,6 +410,30 @@ contains
 
    !> The one patch of S1002 / UIC60 (canted) at Y_WS = y_ws (mm) with the wheel yawed by `yaw`
    !> (rad; its contact locus, shcontact_geometry_kinematics).
+   !> The flange patch of [[flange_geometry]] prepared with the exact and with the linear slide
+   !> of the vertical approach, and its table abscissae y (mm).
+   subroutine flange_both_slides(y_ws, yaw, exact, linear, y, error)
+      real(wp), intent(in) :: y_ws, yaw
+      type(normal_contact_type), intent(out) :: exact, linear
+      real(wp), allocatable, intent(out) :: y(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type), allocatable :: geometry(:)
+      type(lib_error), allocatable :: err
+      integer :: i, n
+      call flange_geometry(y_ws, yaw, geometry, error)
+      if (allocated(error)) return
+      call prepare_normal_contact(exact, geometry(1), normal_options_type(slide=slide_exact), &
+         material_type(), err)
+      if (.not. allocated(err)) call prepare_normal_contact(linear, geometry(1), &
+         normal_options_type(slide=slide_linear), material_type(), err)
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      n = exact%geometry%n_table
+      y = [(exact%geometry%y_first + (i - 1)*exact%geometry%h, i=1, n)]
+   end subroutine flange_both_slides
+
    subroutine flange_geometry(y_ws, yaw, geometry, error)
       real(wp), intent(in) :: y_ws, yaw
       type(patch_geometry_type), allocatable, intent(out) :: geometry(:)
