@@ -50,6 +50,8 @@ contains
          new_unittest('control_characters', test_control_characters), &
          new_unittest('work_folder_symlink', test_work_folder_symlink), &
          new_unittest('existing_work_folder', test_existing_work_folder), &
+         new_unittest('profile_file_changed_resume_merge', test_profile_changed), &
+         new_unittest('threads_attribute_is_the_runs', test_threads_attribute), &
          new_unittest('two_runs_one_output', test_two_runs), &
          new_unittest('special_outputs', test_special_outputs), &
          new_unittest('own_files_replaced', test_own_files_replaced), &
@@ -612,6 +614,83 @@ contains
          message='the completed run removes its work folder')
       call shell('rm -rf '//dir)
    end subroutine test_existing_work_folder
+
+   !> A profile file rewritten under the same name between the blocks or shards of a run: the
+   !> configuration text is the same, the points are not. `--resume` refuses the checkpoint
+   !> (its key holds a fingerprint of the profiles as read) and `merge` refuses the shards (their
+   !> /input/profiles differ), status 2, instead of mixing cases solved on two profiles; with the
+   !> file restored the run resumes.
+   subroutine test_profile_changed(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      character(len=*), parameter :: worn = 'data/profiles/worn/S1002-worn.txt'
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_profile_changed')
+      call write_lines(dir//'/sw.nml', [character(len=72) :: small_sweep, &
+         "&profiles wheel = 'wheel.txt' /"])
+      call shell('cp data/profiles/S1002.txt '//dir//'/wheel.txt')
+      stat = run_program(dir, 'run sw.nml -q -o out.h5', 'SHCONTACT_TEST_ABORT_AFTER_BLOCKS=1')
+      call shell('cp '//worn//' '//dir//'/wheel.txt')
+      stat = run_program(dir, 'run sw.nml -q -o out.h5 --resume')
+      call check(error, stat, 2, message='resume after the profile changed: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'profile files whose points have '// &
+         'changed', 'resume after the profile changed')
+      if (allocated(error)) return
+      call shell('cp data/profiles/S1002.txt '//dir//'/wheel.txt')
+      stat = run_program(dir, 'run sw.nml -q -o out.h5 --resume')
+      call check(error, stat, 0, message='resume with the profile restored: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sw.nml -q -o s.h5 --shard 1/2')
+      call shell('cp '//worn//' '//dir//'/wheel.txt')
+      if (stat == 0) stat = run_program(dir, 'run sw.nml -q -o s.h5 --shard 2/2')
+      call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge m.h5 s-shard1of2.h5 s-shard2of2.h5')
+      call check(error, stat, 2, message='merge of shards with another profile: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'was solved with another wheel profile', &
+         'merge of shards with another profile')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/m.h5'), message='no merged file')
+      call shell('rm -rf '//dir)
+   end subroutine test_profile_changed
+
+   !> The root attribute `threads` records the threads the run solved with: `--threads 1` under
+   !> OMP_NUM_THREADS=2 gives 1, in a file written from memory and in one merged from checkpoint
+   !> blocks (it recorded OMP_NUM_THREADS's 2).
+   subroutine test_threads_attribute(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      type(h5_file_type) :: file
+      type(lib_error), allocatable :: lerr
+      integer :: stat, threads, k
+      ! Without fields (written from memory), and with fields in blocks of 2 cases (merged).
+      character(len=*), parameter :: blocks(2) = [character(len=40) :: &
+         ' --set output%fields=none', '']
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_threads')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      do k = 1, size(blocks)
+         stat = run_program(dir, 'run sw.nml -q --force -o t.h5 --threads 1'//trim(blocks(k)))
+         call check(error, stat, 0, message='run: '//file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+         call h5_open(file, dir//'/t.h5', lerr)
+         if (.not. allocated(lerr)) call h5_read_attribute(file, '/', 'threads', threads, lerr)
+         call h5_close(file)
+         if (allocated(lerr)) then
+            call test_failed(error, lerr%message)
+            return
+         end if
+         call check(error, threads, 1, message='the threads attribute'//trim(blocks(k)))
+         if (allocated(error)) return
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_threads_attribute
 
    !> Two runs with the same -o: the loser failed with misleading messages, and once both
    !> failed. Now the second gets one message and the first completes.

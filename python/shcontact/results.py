@@ -84,7 +84,9 @@ class ResultFile:
 
     def summary(self):
         """The /summary table: dict of column name to a 1-D array over the cases of the file
-        (text columns as str arrays). ``units()`` gives the units."""
+        (text columns as str arrays). ``units()`` gives the units. A failed case's row has
+        ``status`` != 0 and 0 in every result column: select ``summary["status"] == 0`` before
+        averaging or plotting."""
         return self._group("summary")
 
     def failures(self):

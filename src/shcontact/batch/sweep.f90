@@ -62,6 +62,7 @@ module shcontact_batch_sweep
       solve_kinematic_case, kinematic_state, contact_solver_type
    use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
       stage_bytes
+   use shcontact_core_fingerprint, only: fingerprint
    use shcontact_batch_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
       read_manifest, write_text_file, read_text_file, clear_checkpoint
    implicit none
@@ -309,6 +310,9 @@ contains
       if (allocated(options%command_line)) info%command_line = options%command_line
       info%date = iso_timestamp()
       info%n_cases = n
+      ! The threads the run solves with (--threads, else OMP_NUM_THREADS), for the file's
+      ! provenance.
+      info%threads = outcome%n_threads
       info%shard = ''
       if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
          str_int(options%n_shards)
@@ -397,14 +401,14 @@ contains
       else if (options%resume) then
          ! The blocks of a resumed run carry the namelist of the run that started it (which may
          ! differ in the output name or the spelling of the profile paths).
-         call read_checkpoint(dir, checkpoint_key(config), info%namelist, n, outcome, blocks, &
-            error)
+         call read_checkpoint(dir, checkpoint_key(config, setup), info%namelist, n, outcome, &
+            blocks, error)
          if (allocated(error)) return
       else
          ! A new folder, or one taken over with --force: shcontact's own files only go.
          call clear_checkpoint(dir, keep_directory=.true.)
          blocks%n = 0
-         call write_text_file(dir//'/'//key_name, checkpoint_key(config), error)
+         call write_text_file(dir//'/'//key_name, checkpoint_key(config, setup), error)
          if (allocated(error)) return
       end if
 
@@ -586,7 +590,7 @@ contains
          outcome%block_files = blocks%n
          call merge_result_files(outcome%output, blocks%items(1:blocks%n), info%command_line, &
             info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
-            temp_name=dir//'/'//merged_temp_name, force=options%force)
+            temp_name=dir//'/'//merged_temp_name, threads=info%threads, force=options%force)
       end if
       if (allocated(error)) return
       call clear_checkpoint(dir, keep_directory=.false.)
@@ -950,15 +954,18 @@ contains
       character(len=*), intent(in) :: dir
       type(error_type), allocatable, intent(out) :: error
       call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made with '// &
-         'another configuration; start again with --force (or after removing it)', &
-         stat_invalid_input)
+         'another configuration (or profile files whose points have changed since); start '// &
+         'again with --force (or after removing it)', stat_invalid_input)
    end subroutine another_configuration
 
    !> The configuration as the checkpoint knows it: the resolved namelist without the output
    !> name and with the profile files as absolute paths, so that a run resumed from another
    !> working directory (or with an absolute -o) is recognised.
-   function checkpoint_key(config) result(key)
+   function checkpoint_key(config, setup) result(key)
       type(case_config_type), intent(in) :: config
+      !> The run's profiles as read: a profile file rewritten under the same name between the
+      !> start of a run and its resumption gives another key (its cases are not mixed).
+      type(run_setup_type), intent(in) :: setup
       character(len=:), allocatable :: key
       type(case_config_type) :: c
       c = config
@@ -967,7 +974,9 @@ contains
          canonical_path(trim(c%profiles%wheel))
       if (index(c%profiles%rail, 'builtin:') /= 1) c%profiles%rail = &
          canonical_path(trim(c%profiles%rail))
-      key = config_namelist(c)
+      key = config_namelist(c)//'! profiles as read: wheel '// &
+         fingerprint([setup%wheel%y, setup%wheel%z])//', rail '// &
+         fingerprint([setup%rail%y, setup%rail%z])//new_line('a')
    end function checkpoint_key
 
    function trim_text(text) result(t)

@@ -79,6 +79,8 @@ module shcontact_output_results
 
    !> Tables of a patch geometry group, of the normal strips and element fields: the datasets
    !> their group's `y` is the dimension scale of.
+   !> The profiles under /input/profiles.
+   character(len=*), parameter :: profile_names(2) = ['wheel', 'rail ']
    character(len=*), parameter :: geometry_tables(5) = [character(len=8) :: 'gap', 'curv_a', &
       'curv_b', 'gamma', 'r_wheel']
    character(len=*), parameter :: strip_tables(10) = [character(len=10) :: 'a', 'k', 'p0', &
@@ -255,7 +257,6 @@ contains
       integer, intent(in) :: cases_in_file
       type(error_type), allocatable, intent(out) :: error
       integer :: k
-      character(len=*), parameter :: profile_names(2) = ['wheel', 'rail ']
 
       call write_root_attributes(file, info, cases_in_file, error)
       if (allocated(error)) return
@@ -410,6 +411,46 @@ contains
    end subroutine attach_profile_scales
 
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
+   !> Two result files of one configuration hold the same profiles (`/input/profiles/wheel`,
+   !> `rail`, the points as the run read them): a profile file changed between the shards of a
+   !> run names the same path but not the same points, and its cases must not be merged.
+   subroutine check_same_profiles(first, other, error)
+      character(len=*), intent(in) :: first, other
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type) :: a, b
+      real(wp), allocatable :: pa(:, :), pb(:, :)
+      integer :: k
+      call h5_open(a, first, error)
+      if (allocated(error)) return
+      call h5_open(b, other, error)
+      if (allocated(error)) then
+         call h5_close(a)
+         return
+      end if
+      do k = 1, size(profile_names)
+         call h5_read(a, 'input/profiles/'//trim(profile_names(k)), pa, error)
+         if (.not. allocated(error)) call h5_read(b, 'input/profiles/'// &
+            trim(profile_names(k)), pb, error)
+         if (allocated(error)) exit
+         if (size(pa, 1) /= size(pb, 1) .or. size(pa, 2) /= size(pb, 2)) then
+            call profile_mismatch(k)
+         else if (any(pa /= pb)) then
+            call profile_mismatch(k)
+         end if
+         if (allocated(error)) exit
+      end do
+      call h5_close(a)
+      call h5_close(b)
+   contains
+      subroutine profile_mismatch(k)
+         integer, intent(in) :: k
+         call fatal_error(error, 'merge: "'//other//'" was solved with another '// &
+            trim(profile_names(k))//' profile than "'//first//'" (the same file name, other '// &
+            'points in /input/profiles/'//trim(profile_names(k))//': the file changed between '// &
+            'the shards); solve them again with one profile file', stat_invalid_input)
+      end subroutine profile_mismatch
+   end subroutine check_same_profiles
+
    subroutine write_profile(file, path, profile, error)
       type(h5_file_type), intent(in) :: file
       character(len=*), intent(in) :: path
@@ -931,6 +972,9 @@ contains
             call fatal_error(error, 'merge: "'//inputs(f)%text//'" comes from another run '// &
                'than "'//inputs(1)%text//'" (configurations differ)', stat_invalid_input)
             return
+         else
+            call check_same_profiles(inputs(1)%text, inputs(f)%text, error)
+            if (allocated(error)) return
          end if
          do i = 1, size(indices)
             icase = indices(i)
