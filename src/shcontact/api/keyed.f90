@@ -244,20 +244,22 @@ contains
       type(normal_options_type) :: normal
       type(tangential_options_type) :: tangential
       integer :: i, wheel
+      logical :: numeric
       real(wp) :: totals(size(wheelset_keys))
 
       x = 0.0_wp
       k = trim(adjustl(to_lower(key)))
+      ! An input key (not a sweep's) reads the handle's setting; only numbers can be returned.
       call split_key(k, group, name)
       i = find_variable(group, name)
-      if (i > 0 .and. group /= 'sweep') then
-         if (variables(i)%kind /= k_real .and. variables(i)%kind /= k_int) i = -1
-      end if
+      if (group == 'sweep') i = 0
+      numeric = .false.
+      if (i > 0) numeric = variables(i)%kind == k_real .or. variables(i)%kind == k_int
       if (.not. context_usable(ctx, error)) then
          continue
-      else if (i > 0 .and. group /= 'sweep') then
-         ! A numeric input: the handle's current setting (no solve needed), the grid as the
-         ! preset resolves it unless given.
+      else if (numeric) then
+         ! The handle's current setting (no solve needed), the grid as the preset resolves it
+         ! unless given.
          select case (k)
          case ('normal%n_strips')
             normal = normal_options_of(ctx%config)
@@ -268,7 +270,7 @@ contains
          case default
             x = number_value(ctx%config, group, name)
          end select
-      else if (i < 0) then
+      else if (i > 0) then
          call fatal_error(error, "value '"//visible(key)//"': not a number (read back only "// &
             'numeric inputs)', stat_invalid_input)
       else if (.not. ctx%has_result) then

@@ -411,52 +411,32 @@ contains
    end subroutine attach_profile_scales
 
    !> A profile as an (n, 2) array of (y, z) seen from C/h5py.
-   !> Two result files of one configuration hold the same profiles (`/input/profiles/wheel`,
-   !> `rail`, the points as the run read them): a profile file changed between the shards of a
-   !> run names the same path but not the same points, and its cases must not be merged.
-   subroutine check_same_profiles(first, other, error)
-      character(len=*), intent(in) :: first, other
+   !> The profiles a result file holds under /input/profiles (the points as the run read them):
+   !> y, z of the wheel then of the rail, each preceded by its point count (−1 when the file
+   !> holds none: a library caller's file), to tell two runs apart that name the same files.
+   subroutine read_input_profiles(name, points, error)
+      character(len=*), intent(in) :: name
+      real(wp), allocatable, intent(out) :: points(:)
       type(error_type), allocatable, intent(out) :: error
-      type(h5_file_type) :: a, b
-      real(wp), allocatable :: pa(:, :), pb(:, :)
+      type(h5_file_type) :: file
+      real(wp), allocatable :: yz(:, :)
+      character(len=:), allocatable :: path
       integer :: k
-      call h5_open(a, first, error)
+      allocate (points(0))
+      call h5_open(file, name, error)
       if (allocated(error)) return
-      call h5_open(b, other, error)
-      if (allocated(error)) then
-         call h5_close(a)
-         return
-      end if
       do k = 1, size(profile_names)
-         ! Files written without their profiles (a library caller's) compare by the rest.
-         if (h5_exists(a, 'input/profiles/'//trim(profile_names(k))) .neqv. &
-             h5_exists(b, 'input/profiles/'//trim(profile_names(k)))) then
-            call profile_mismatch(k)
-            exit
+         path = 'input/profiles/'//trim(profile_names(k))
+         if (.not. h5_exists(file, path)) then
+            points = [points, -1.0_wp]
+            cycle
          end if
-         if (.not. h5_exists(a, 'input/profiles/'//trim(profile_names(k)))) cycle
-         call h5_read(a, 'input/profiles/'//trim(profile_names(k)), pa, error)
-         if (.not. allocated(error)) call h5_read(b, 'input/profiles/'// &
-            trim(profile_names(k)), pb, error)
+         call h5_read(file, path, yz, error)
          if (allocated(error)) exit
-         if (size(pa, 1) /= size(pb, 1) .or. size(pa, 2) /= size(pb, 2)) then
-            call profile_mismatch(k)
-         else if (any(pa /= pb)) then
-            call profile_mismatch(k)
-         end if
-         if (allocated(error)) exit
+         points = [points, real(size(yz), wp), reshape(yz, [size(yz)])]
       end do
-      call h5_close(a)
-      call h5_close(b)
-   contains
-      subroutine profile_mismatch(k)
-         integer, intent(in) :: k
-         call fatal_error(error, 'merge: "'//other//'" was solved with another '// &
-            trim(profile_names(k))//' profile than "'//first//'" (the same file name, other '// &
-            'points in /input/profiles/'//trim(profile_names(k))//': the file changed between '// &
-            'the shards); solve them again with one profile file', stat_invalid_input)
-      end subroutine profile_mismatch
-   end subroutine check_same_profiles
+      call h5_close(file)
+   end subroutine read_input_profiles
 
    subroutine write_profile(file, path, profile, error)
       type(h5_file_type), intent(in) :: file
@@ -952,7 +932,8 @@ contains
       integer :: f, n_cases, n_first, i, icase, open_index, n_fail, longest, k
       type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
-      logical :: partial, src_has_cases
+      real(wp), allocatable :: first_profiles(:), profiles(:)
+      logical :: partial, src_has_cases, same
 
       partial = .false.
       if (present(allow_partial)) partial = allow_partial
@@ -971,6 +952,8 @@ contains
          if (allocated(error)) return
          if (f == 1) then
             first_text = text
+            call read_input_profiles(inputs(f)%text, first_profiles, error)
+            if (allocated(error)) return
             n_first = n_cases
             allocate (all(n_cases), source(n_cases))
             source = 0
@@ -980,8 +963,22 @@ contains
                'than "'//inputs(1)%text//'" (configurations differ)', stat_invalid_input)
             return
          else
-            call check_same_profiles(inputs(1)%text, inputs(f)%text, error)
+            ! A profile file rewritten under its name between the shards: the same
+            ! configuration text, other points.
+            call read_input_profiles(inputs(f)%text, profiles, error)
             if (allocated(error)) return
+            if (size(profiles) /= size(first_profiles)) then
+               same = .false.
+            else
+               same = .not. any(profiles /= first_profiles)
+            end if
+            if (.not. same) then
+               call fatal_error(error, 'merge: "'//inputs(f)%text//'" was solved with other '// &
+                  'profiles than "'//inputs(1)%text//'" (the same file names, other points in '// &
+                  '/input/profiles: a file changed between the shards); solve them again with '// &
+                  'one set of profile files', stat_invalid_input)
+               return
+            end if
          end if
          do i = 1, size(indices)
             icase = indices(i)
