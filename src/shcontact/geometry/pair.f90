@@ -386,7 +386,7 @@ contains
       type(prepared_profiles_type), intent(in) :: prepared
       !> Curvatures A, B at the reference point (1/mm) and its contact angle γ₀ (rad).
       real(wp), intent(in) :: curv_a, curv_b, theta
-      real(wp), parameter :: reach_factor = 1.5_wp, min_cos = 0.1_wp
+      real(wp), parameter :: reach_factor = 1.2_wp, min_cos = 0.1_wp
       real(wp) :: load, r_e
       t = prepared%options%table_gap
       if (.not. (prepared%reach_load > 0.0_wp .and. prepared%reach_modulus > 0.0_wp .and. &
