@@ -13,6 +13,7 @@ module shcontact_app_commands
    use shcontact_app_profile_advice, only: profile_notes
    use shcontact_app_output_guard, only: check_output_file
    use shcontact_app_cli, only: cli_type
+   use shcontact_app_stdout, only: put_line, put_text
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
    use shcontact_app_environment, only: slurm_shard, in_slurm_array
@@ -95,8 +96,7 @@ contains
             status = report_error(error)
             return
          end if
-         write (output_unit, '(a)', advance='no') config_namelist(config)
-         flush (output_unit)
+         call put_text(config_namelist(config))
          if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: the configuration is '// &
             'valid ('//str_int(config%n_cases())//' case(s))'
          return
@@ -108,6 +108,8 @@ contains
       options%write_output = .not. cli%no_output
       if (cli%block_memory > 0) options%block_bytes = int(cli%block_memory, int64)*1048576_int64
       options%command_line = command_line()
+      allocate (options%inputs(1))
+      options%inputs(1)%text = cli%case_file
       call choose_shard(cli, options%shard, options%n_shards, error)
       if (allocated(error)) then
          status = report_error(error)
@@ -232,13 +234,13 @@ contains
       integer :: first, last, k
       if (format == 'none') return
       if (format == 'text' .and. outcome%n_cases == 1) then
-         if (outcome%summaries(1)%stat == 0) write (output_unit, '(a)') &
-            report_case_text(config, outcome%summaries(1))
+         if (outcome%summaries(1)%stat == 0) call put_line( &
+            report_case_text(config, outcome%summaries(1)))
          return
       end if
       header = report_header(config, format)
-      if (len(header) > 0) write (output_unit, '(a)') header
-      if (csv_units) write (output_unit, '(a)') report_units(config)
+      if (len(header) > 0) call put_line(header)
+      if (csv_units) call put_line(report_units(config))
       ! The lines of a chunk of cases are formatted by the run's threads, then written in order.
       allocate (lines(min(chunk, outcome%last - outcome%first + 1)))
       do first = outcome%first, outcome%last, chunk
@@ -246,7 +248,7 @@ contains
          call report_lines(config, first, outcome%summaries(first:last), outcome%failures, &
             format, outcome%n_threads, lines)
          do k = 1, last - first + 1
-            write (output_unit, '(a)') lines(k)%text
+            call put_line(lines(k)%text)
          end do
       end do
    end subroutine print_summary
@@ -281,6 +283,7 @@ contains
       type(patch_geometry_type), allocatable :: patches(:)
       type(error_type), allocatable :: error
       character(len=:), allocatable :: name, what
+      character(len=4096) :: inputs(3)
       type(cli_type) :: plain
       status = 0
       plain = cli
@@ -291,9 +294,15 @@ contains
          name = cli%output
          what = '-o'
       end if
-      ! Refused before anything is computed: never over a file this run did not write.
-      call check_output_file(name, what, cli%force, [cli%case_file], error)
-      if (.not. allocated(error)) call configure(plain, config, error)
+      ! Refused before anything is computed: never over a file this run did not write, nor
+      ! over a file it reads (the case file, the profile files).
+      call configure(plain, config, error)
+      if (.not. allocated(error)) then
+         inputs(1) = cli%case_file
+         inputs(2) = config%profiles%wheel
+         inputs(3) = config%profiles%rail
+         call check_output_file(name, what, cli%force, inputs, error)
+      end if
       ! The tables are those of the wheelset without yaw: a yawed wheel's (the contact locus,
       ! doc/kinematics.md) exist only inside the kinematic call, so writing these would be a
       ! wrong answer for the case asked.

@@ -3,17 +3,19 @@
 !> 5 numerical failure, 6 no contact).
 program shcontact_main
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use shcontact, only: shcontact_version, error_type
+   use shcontact, only: shcontact_version, error_type, h5_skip_exit_cleanup
    use shcontact_app_cli, only: cli_type, parse_command_line
    use shcontact_app_help, only: usage_text, command_help
    use shcontact_app_commands, only: run_command, merge_command, geometry_command, report_error
    use shcontact_app_profiles, only: profiles_command
    use shcontact_app_wheelset, only: wheelset_command
+   use shcontact_app_stdout, only: put_line, stdout_flush, stdout_failed
    implicit none
    type(cli_type) :: cli
    type(error_type), allocatable :: error
    integer :: status
 
+   call h5_skip_exit_cleanup()
    call parse_command_line(cli, error)
    if (allocated(error)) then
       status = report_error(error)
@@ -21,17 +23,17 @@ program shcontact_main
       stop status, quiet = .true.
    end if
    if (cli%help) then
-      write (output_unit, '(a)') command_help(cli%command)
-      stop 0, quiet = .true.
+      call put_line(command_help(cli%command))
+      call finish(0)
    end if
    select case (cli%command)
    case ('help')
-      write (output_unit, '(a)') 'shcontact '//shcontact_version// &
-         ': wheel-rail rolling contact (semi-Hertzian normal contact, FASTSIM_SH)'
-      write (output_unit, '(a)') usage_text()
+      call put_line('shcontact '//shcontact_version// &
+         ': wheel-rail rolling contact (semi-Hertzian normal contact, FASTSIM_SH)')
+      call put_line(usage_text())
       status = 0
    case ('version')
-      write (output_unit, '(a)') 'shcontact '//shcontact_version
+      call put_line('shcontact '//shcontact_version)
       status = 0
    case ('merge')
       status = merge_command(cli)
@@ -46,5 +48,20 @@ program shcontact_main
    case default
       status = run_command(cli)
    end select
-   stop status, quiet = .true.
+   call finish(status)
+
+contains
+
+   !> End with `status`, or with the I/O status 3 when the standard output could not be
+   !> written (a full disk: the tables and reports are the run's results).
+   subroutine finish(status)
+      integer, intent(in) :: status
+      call stdout_flush()
+      if (stdout_failed()) then
+         write (error_unit, '(a)') 'shcontact: error: the standard output could not be '// &
+            'written (a full disk or device?); what it should hold is lost'
+         if (status == 0 .or. status == 4) stop 3, quiet = .true.
+      end if
+      stop status, quiet = .true.
+   end subroutine finish
 end program shcontact_main

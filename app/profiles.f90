@@ -17,6 +17,7 @@ module shcontact_app_profiles
    use shcontact_app_commands, only: report_error
    use shcontact_app_profile_advice, only: profile_advice
    use shcontact_app_output_guard, only: check_output_file, same_file
+   use shcontact_app_stdout, only: put_line
    implicit none
    private
 
@@ -58,8 +59,8 @@ contains
          status = report_error(error)
          return
       end if
-      if (.not. cli%quiet) write (output_unit, '(a)') profile_summary(cli, read, cleaned)// &
-         new_line('a')//profile_advice(read, cleaned)
+      if (.not. cli%quiet) call put_line(profile_summary(cli, read, cleaned)// &
+         new_line('a')//profile_advice(read, cleaned))
    end function profiles_command
 
    !> -o OUT and --plot SCRIPT: neither the profile read, nor one another, nor (without --force)

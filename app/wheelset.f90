@@ -11,6 +11,7 @@ module shcontact_app_wheelset
       equivalent_conicity, conicity_en15302, conicity_harmonic, klingel_wavelength
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: configure, report_error
+   use shcontact_app_stdout, only: put_line
    implicit none
    private
 
@@ -47,14 +48,14 @@ contains
          status = report_error(error)
          return
       end if
-      write (output_unit, '(a)') '# wheelset contact geometry: wheel '// &
+      call put_line('# wheelset contact geometry: wheel '// &
          trim(config%profiles%wheel)//', rail '//trim(config%profiles%rail)//'; gauge '// &
          str_format(setup%prepared%track%gauge, '(f0.2)')//' mm, flange-back distance '// &
          str_format(setup%prepared%track%flange_back_distance, '(f0.2)')// &
          ' mm, rail inclination '// &
          str_format(setup%prepared%track%rail_inclination, '(f0.4)')// &
          trim(merge(' (profile already canted)', '                         ', &
-         setup%prepared%track%rail_canted))
+         setup%prepared%track%rail_canted)))
       if (cli%wheelset_given) then
          call wheelset_geometry_table(setup%prepared, shifts(cli%wheelset_range(1), &
             cli%wheelset_range(2), cli%wheelset_range(3)), table, error)
@@ -92,19 +93,21 @@ contains
    !> The contact table, one line per shift.
    subroutine print_table(table)
       type(wheelset_contact_type), intent(in) :: table(:)
+      character(len=256) :: row
       integer :: i
-      write (output_unit, '(a)') '# per wheel (R right, L left): contact point on the rail '// &
+      call put_line('# per wheel (R right, L left): contact point on the rail '// &
          '(track y, from the track centre line), on the wheel (wheel profile y), rolling '// &
-         'radius, contact angle (side frame, < 0 on the tread), number of contact patches'
-      write (output_unit, '(a)') '#    y_mm  roll_mrad    z_ws_mm  rail_yR_mm  rail_yL_mm  whe'// &
+         'radius, contact angle (side frame, < 0 on the tread), number of contact patches')
+      call put_line('#    y_mm  roll_mrad    z_ws_mm  rail_yR_mm  rail_yL_mm  whe'// &
          'el_yR_mm  wheel_yL_mm      r_R_mm      r_L_mm      dr_mm  ga'// &
-         'mma_R_rad  gamma_L_rad  n_R  n_L'
+         'mma_R_rad  gamma_L_rad  n_R  n_L')
       do i = 1, size(table)
          associate (t => table(i))
-            write (output_unit, row_format) &
+            write (row, row_format) &
                t%y, tidy(1.0e3_wp*t%roll), t%z_centre, t%rail_y, t%wheel_y, t%radius, &
                tidy(t%delta_r()), &
                t%gamma, t%patches
+            call put_line(trim(row))
          end associate
       end do
    end subroutine print_table
@@ -117,17 +120,18 @@ contains
       integer, intent(inout) :: status
       type(error_type), allocatable :: error
       real(wp) :: tan_en, tan_h, e0, r0, y(size(table)), dr(size(table))
+      character(len=256) :: row
       integer :: k
       y = table%y
       dr = table%delta_r()
       e0 = contact_distance(table)
       r0 = centre_radius(table)
-      write (output_unit, '(a)') '# equivalent conicity: EN 15302 (wavelength of the '// &
+      call put_line('# equivalent conicity: EN 15302 (wavelength of the '// &
          'kinematic motion) and first-harmonic balance of dr; Klingel wavelength with '// &
          'e0 = '//str_format(e0, '(f0.2)')//' mm, r0 = '//str_format(r0, '(f0.3)')//' mm; roll-angle '// &
-         'parameter sigma (roll = -sigma*y/(e0/2), first harmonic)'
-      write (output_unit, '(a)') '# amplitude_mm  tan_gamma_e_EN15302  tan_gamma_e_harmonic  '// &
-         'wavelength_m        sigma'
+         'parameter sigma (roll = -sigma*y/(e0/2), first harmonic)')
+      call put_line('# amplitude_mm  tan_gamma_e_EN15302  tan_gamma_e_harmonic  '// &
+         'wavelength_m        sigma')
       do k = 1, size(amplitudes)
          call equivalent_conicity(y, dr, amplitudes(k), tan_en, error, conicity_en15302)
          if (.not. allocated(error)) call equivalent_conicity(y, dr, amplitudes(k), tan_h, &
@@ -136,9 +140,10 @@ contains
             status = report_error(error)
             cycle
          end if
-         write (output_unit, '(f14.3,f21.5,f22.5,f14.3,f13.5)') amplitudes(k), tan_en, tan_h, &
+         write (row, '(f14.3,f21.5,f22.5,f14.3,f13.5)') amplitudes(k), tan_en, tan_h, &
             1.0e-3_wp*klingel_wavelength(tan_en, e0, r0), &
             roll_angle_parameter(table, amplitudes(k))
+         call put_line(trim(row))
       end do
    end subroutine print_conicity
 

@@ -74,6 +74,7 @@ module shcontact
    use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry, &
       read_case_profiles
    use shcontact_output_results, only: merge_result_files
+   use shcontact_output_hdf5, only: h5_skip_exit_cleanup
    use shcontact_output_report, only: report_header, report_line, report_lines, &
       report_case_text, report_units
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
@@ -87,6 +88,7 @@ module shcontact
    public :: wp, error_type, fatal_error
    public :: stat_invalid_input, stat_io, stat_numerical, stat_no_contact, stat_usage
    public :: shcontact_version
+   public :: h5_skip_exit_cleanup
    public :: material_type, check_material
    public :: profile_type, profile_kind_rail, profile_kind_wheel, read_profile, &
       profile_format_names, clean_profile, builtin_profile, builtin_profile_names, &

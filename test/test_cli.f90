@@ -63,7 +63,10 @@ contains
          new_unittest('run_notes_on_profiles', test_profile_notes), &
          new_unittest('run_notes_on_measured_profiles', test_profile_notes_measured), &
          new_unittest('collinear_points_same_forces', test_collinear_points), &
-         new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs) &
+         new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs), &
+         new_unittest('run_never_writes_its_inputs', test_run_inputs_kept), &
+         new_unittest('stdout_write_error_is_status_3', test_stdout_full), &
+         new_unittest('shard_of_failed_cases_writes_its_file', test_failed_shard) &
          ]
    end subroutine collect_cli
 
@@ -120,6 +123,101 @@ contains
    end subroutine run_expect
 
    ! ------------------------------------------------------------------------------------------
+
+   !> `run -o OUT --force` never replaces a file the run reads: the case file, a profile file,
+   !> or a case file that is OUT's sidecar name (it did: the case file became the HDF5 file).
+   subroutine test_run_inputs_kept(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      character(len=*), parameter :: case_text = '&position t_y = 3.0 /'
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_run_inputs')
+      call write_lines(dir//'/c.nml', [case_text])
+      call write_lines(dir//'/g.xmf', [case_text])
+      call run_expect(error, dir, 'run c.nml -o c.nml --force -q', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'is also an input of this command', '-o the case file')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/c.nml') == case_text//new_line('a'), &
+         message='the case file was changed')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run g.xmf -o g.h5 --force -q', 1, out, err)
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/g.xmf') == case_text//new_line('a') .and. &
+         .not. file_exists(dir//'/g.h5'), message='the case file g.xmf was replaced')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'profiles --write prof -q', 0, out, err)
+      if (allocated(error)) return
+      out = file_text(dir//'/prof/S1002.txt')
+      call run_expect(error, dir, 'run c.nml --set profiles%wheel=prof/S1002.txt '// &
+         '-o prof/S1002.txt --force -q', 1, err, err)
+      if (allocated(error)) return
+      call check(error, len(out) > 0 .and. file_text(dir//'/prof/S1002.txt') == out, &
+         message='the wheel profile file was replaced')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'geometry c.nml --set profiles%wheel=prof/S1002.txt '// &
+         '-o prof/S1002.txt --force -q', 3, err, err)
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/prof/S1002.txt') == out, &
+         message='geometry replaced the wheel profile file')
+   end subroutine test_run_inputs_kept
+
+   !> A write error on the standard output (a full disk) ends the program with status 3 and a
+   !> message; gfortran's own unit 6 ignores it (the CSV report was lost with status 0).
+   subroutine test_stdout_full(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      if (.not. file_exists('/dev/full')) then
+         call skip_test(error, 'no /dev/full on this system')
+         return
+      end if
+      dir = scratch_directory('cli_stdout_full')
+      call write_lines(dir//'/c.nml', ['&sweep t_y = 1.0, 2.0, 3.0 /'])
+      call shell('cd '//dir//' && '//program_path()//' run c.nml --no-output --format csv '// &
+         '-q > /dev/full 2> err.txt', stat)
+      call check(error, stat, 3, message='csv to a full device: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the standard output could not be '// &
+         'written', 'csv to a full device')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && '//program_path()//' --version > /dev/full 2> err.txt', stat)
+      call check(error, stat, 3, message='--version to a full device')
+      if (allocated(error)) return
+      ! The same run to a file: status 0, four lines.
+      call shell('cd '//dir//' && '//program_path()//' run c.nml --no-output --format csv '// &
+         '-q > out.csv 2> err.txt', stat)
+      call check(error, stat == 0 .and. count_lines(file_text(dir//'/out.csv')) == 4, &
+         message='csv to a file: '//file_text(dir//'/err.txt'))
+   end subroutine test_stdout_full
+
+   !> A shard whose cases all fail writes its file (status 4), so that the shards of a run
+   !> merge (before, it wrote none and the merge reported missing cases).
+   subroutine test_failed_shard(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      character(len=*), parameter :: sweep = 'run --set track%gauge=1600 '// &
+         '--set sweep%t_y=-30,-20,-10,0,10,20,30 -q --format none -o f.h5'
+      integer :: k
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_failed_shard')
+      call run_expect(error, dir, sweep, 4, out, err)
+      if (allocated(error)) return
+      do k = 1, 3
+         call run_expect(error, dir, sweep//' --shard '//achar(iachar('0') + k)//'/3', 4, &
+            out, err)
+         if (allocated(error)) return
+      end do
+      call check(error, file_exists(dir//'/f-shard1of3.h5'), message='shard 1, every case '// &
+         'failed: no file')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'merge -q m.h5 f-shard1of3.h5 f-shard2of3.h5 '// &
+         'f-shard3of3.h5', 0, out, err)
+      if (allocated(error)) return
+      call shell('h5diff -q --exclude-attribute=/ '//dir//'/m.h5 '//dir//'/f.h5', k)
+      call check(error, k, 0, message='the merged shards differ from the unsharded run')
+   end subroutine test_failed_shard
 
    !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0; every
    !> option a command's help lists is one the command accepts.
@@ -285,7 +383,14 @@ contains
       call run_expect(error, dir, 'run --shard slurm -o one.h5', 1, out, err, &
          env=slurm_task_3_of_8)
       if (allocated(error)) return
-      call expect_in(error, err, 'shard 3/8 of a run of 1 cases is empty', '--shard slurm')
+      call expect_in(error, err, 'shard 3/8: a run of 1 cases has fewer cases than shards', &
+         '--shard slurm')
+      if (allocated(error)) return
+      ! Every task of such an array is refused, also the one whose slice is not empty.
+      call run_expect(error, dir, 'run --shard 1/8 -o one.h5', 1, out, err)
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/one-shard1of8.h5'), &
+         message='no file from a shard of an over-split run')
       if (allocated(error)) return
       call run_expect(error, dir, 'run --shard slurm -o one.h5', 1, out, err)
       if (allocated(error)) return

@@ -37,6 +37,7 @@ module test_flat_keys
       shcontact_field_size, shcontact_fields, shcontact_get_field, shcontact_solve
    use test_flat_api, only: shc_create, shc_destroy, shc_set_option, shc_solve_state, &
       shc_solve_kin, shc_get_value, shc_errmsg, shc_set_value, shc_create_ws, shc_solve_ws, shc_ws_wheel, &
+      shc_set_material, &
       to_chars, from_chars, bitwise_equal
    use test_external_data, only: external_file
    implicit none
@@ -86,6 +87,7 @@ contains
          new_unittest('bad_keys_and_values', test_bad_keys), &
          new_unittest('wheelset_from_c_and_f77', test_wheelset), &
          new_unittest('wheelset_option_keeps_miniprof_origin', test_wheelset_miniprof), &
+         new_unittest('vehicle_call_guards', test_vehicle_call_guards), &
          new_unittest('field_by_name', test_field_by_name), &
          new_unittest('kinematic_call_refuses_spin_model', test_kinematic_spin_model), &
          new_unittest('doc_lists_every_key', test_doc_keys) &
@@ -706,11 +708,98 @@ contains
    contains
       subroutine solve_ws(totals)
          real(wp), intent(out) :: totals(4)
-         call shc_solve_ws(ih, ws_state%y_ws, ws_state%yaw, ws_state%roll, &
-            ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, &
-            ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, totals, istat)
+         call solve_ws_state(ih, totals, istat)
       end subroutine solve_ws
    end subroutine test_wheelset_miniprof
+
+   !> SHC_SOLVE_WS at ws_state, 64.7 kN on the right wheel and 60 kN on the left.
+   subroutine solve_ws_state(handle, totals, istat)
+      integer, intent(in) :: handle
+      real(wp), intent(out) :: totals(4)
+      integer, intent(out) :: istat
+      call shc_solve_ws(handle, ws_state%y_ws, ws_state%yaw, ws_state%roll, &
+         ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, &
+         ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, totals, istat)
+   end subroutine solve_ws_state
+
+   !> What a vehicle code meets in its time loop (issue 25's users): (1) the friction set on a
+   !> wheelset handle does not read the profile files again (it did: a file moved away after
+   !> the handle was made gave status 3, a file rewritten would have been taken silently, and
+   !> the call cost milliseconds) and keeps the same forces as a handle made with it; (2) a
+   !> NULL result array gives status 1, not a crash; (3) a lateral shift beyond the case
+   !> file's range (a derailed wheelset) is refused by the positional calls as by the app.
+   subroutine test_vehicle_call_guards(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: copy = 'build/test_vehicle_guard_wheel.txt'
+      character(len=256) :: msg
+      real(wp) :: totals(4), fresh(4), kin(kinematic_value_count)
+      integer :: ih, ih2, istat, k, unit
+      type(c_ptr), target :: h
+      character(kind=c_char), target :: wheel(14), rail(14)
+      integer(c_int) :: stat
+
+      call execute_command_line('cp data/profiles/worn/S1002-worn.txt '//copy, exitstat=k)
+      call check(error, k, 0, message='cannot copy the worn wheel profile')
+      if (allocated(error)) return
+      call shc_create_ws(ih, copy, 'builtin:UIC60', istat)
+      if (istat == 0) call solve_ws_state(ih, totals, istat)
+      open (newunit=unit, file=copy, status='old')
+      close (unit, status='delete')
+      if (istat == 0) call shc_set_material(ih, 82670.0d0, 0.27d0, 0.35d0, istat)
+      if (istat /= 0) call shc_errmsg(ih, msg)
+      call check(error, istat, 0, message='friction on a wheelset handle whose profile file '// &
+         'is gone: '//trim(msg))
+      if (allocated(error)) return
+      call solve_ws_state(ih, totals, istat)
+      call check(error, istat, 0, message='solve after the friction changed')
+      if (allocated(error)) return
+      call shc_create_ws(ih2, 'data/profiles/worn/S1002-worn.txt', 'builtin:UIC60', istat)
+      if (istat == 0) call shc_set_option(ih2, 'material%friction', '0.35', istat)
+      if (istat == 0) call solve_ws_state(ih2, fresh, istat)
+      call shc_destroy(ih2, k)
+      call check(error, istat == 0 .and. bitwise_equal(totals, fresh), message='the friction '// &
+         'set on a live wheelset handle gives other forces than a handle made with it')
+      if (allocated(error)) return
+      ! A derailed wheelset: t_y = 40 mm (the case file allows |t_y| <= 30 mm).
+      call shc_solve_ws(ih, 40.0d0, 0.0d0, 0.0d0, 3.0d4, 0.0d0, 0.0d0, 0.0d0, 0.0d0, &
+         -3.0d4/460.0d0, 2, 64.7d3, 60.0d3, totals, istat)
+      call shc_errmsg(ih, msg)
+      call shc_destroy(ih, k)
+      call check(error, istat, stat_invalid_input, message='wheelset at t_y = 40 mm: '//trim(msg))
+      if (allocated(error)) return
+      call check(error, index(msg, 't_y') > 0 .and. index(msg, '30') > 0, &
+         message='the message should name t_y and its range: '//trim(msg))
+      if (allocated(error)) return
+      call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
+      if (istat == 0) call shc_solve_kin(ih, -40.0d0, 0.0d0, 0.0d0, 3.0d4, 0.0d0, 0.0d0, &
+         0.0d0, 0.0d0, -3.0d4/460.0d0, 2, 64.7d3, kin, istat)
+      call shc_destroy(ih, k)
+      call check(error, istat, stat_invalid_input, message='one wheel at t_y = -40 mm')
+      if (allocated(error)) return
+      ! NULL results through C: status 1 and a message, the handle still usable.
+      wheel = to_chars('builtin:S1002', 14)
+      rail = to_chars('builtin:UIC60', 14)
+      stat = shcontact_create_wheelset(c_loc(h), c_loc(wheel), c_loc(rail))
+      if (stat == 0) stat = shcontact_solve_wheelset(h, ws_state%y_ws, ws_state%yaw, &
+         ws_state%roll, ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, &
+         ws_state%roll_rate, ws_state%yaw_rate, ws_state%pitch_rate, 2_c_int, 64.7e3_c_double, &
+         60.0e3_c_double)
+      call check(error, stat, stat_usage, message='NULL totals: '//c_message(h))
+      if (allocated(error)) return
+      call check(error, index(c_message(h), 'totals is NULL') > 0, message=c_message(h))
+      if (allocated(error)) return
+      stat = shcontact_solve(h, 4.733_c_double, 0.0_c_double, 1_c_int, 64.7e3_c_double, &
+         0.0_c_double, 0.0_c_double, 0.0_c_double)
+      call check(error, stat, stat_usage, message='NULL values of shcontact_solve')
+      if (allocated(error)) return
+      stat = shcontact_solve_wheelset(h, ws_state%y_ws, ws_state%yaw, ws_state%roll, &
+         ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, ws_state%roll_rate, &
+         ws_state%yaw_rate, ws_state%pitch_rate, 2_c_int, 64.7e3_c_double, 60.0e3_c_double, &
+         totals)
+      msg = c_message(h)
+      k = shcontact_destroy(h)
+      call check(error, stat, 0, message='the handle after the NULL calls: '//trim(msg))
+   end subroutine test_vehicle_call_guards
 
    !> The Fortran wheelset on `wheel` and the built-in UIC60 (default track and material;
    !> `tangential` options if given) at ws_state, 64.7 kN on the right wheel and 60 kN on the left.

@@ -367,7 +367,7 @@ contains
          message='merge into an input: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), 'the output "doe-shard1of2.h5" is '// &
-         'also an input; give a new name for the merged file', 'merge into an input')
+         'also an input of this command', 'merge into an input')
       if (allocated(error)) return
       call check(error, run_program(dir, 'merge ./doe-shard2of2.h5 doe-shard*of2.h5'), 1, &
          message='merge into an input by another name')

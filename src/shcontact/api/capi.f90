@@ -214,11 +214,15 @@ contains
       integer(c_int), value :: load_mode
       real(c_double), value :: load, nu_x, nu_y, phi
       !> The result (result_value_count values).
-      real(c_double), intent(out) :: values(result_value_count)
+      real(c_double), intent(out), optional :: values(result_value_count)
       type(contact_context_type), pointer :: ctx
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(values)) then
+         stat = context_fail(ctx, 'shcontact_solve: values is NULL', stat_usage)
+         return
+      end if
       stat = context_solve(ctx, real(t_y, wp), real(roll, wp), int(load_mode), real(load, wp), &
          real(nu_x, wp), real(nu_y, wp), real(phi, wp), values)
    end function shcontact_solve
@@ -240,11 +244,15 @@ contains
       integer(c_int), value :: load_mode
       real(c_double), value :: load
       !> The result (kinematic_value_count values).
-      real(c_double), intent(out) :: values(kinematic_value_count)
+      real(c_double), intent(out), optional :: values(kinematic_value_count)
       type(contact_context_type), pointer :: ctx
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(values)) then
+         stat = context_fail(ctx, 'shcontact_solve_kinematic: values is NULL', stat_usage)
+         return
+      end if
       stat = context_solve_kinematic(ctx, wheelset_state_type(y_ws=real(y_ws, wp), &
          yaw=real(yaw, wp), roll=real(roll, wp), v_forward=real(v_forward, wp), &
          v_lateral=real(v_lateral, wp), v_vertical=real(v_vertical, wp), &
@@ -261,11 +269,15 @@ contains
       !> Patch index, 1 to the number of patches.
       integer(c_int), value :: patch
       !> The values.
-      real(c_double), intent(out) :: values(kinematic_value_count)
+      real(c_double), intent(out), optional :: values(kinematic_value_count)
       type(contact_context_type), pointer :: ctx
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(values)) then
+         stat = context_fail(ctx, 'shcontact_patch_kinematic: values is NULL', stat_usage)
+         return
+      end if
       stat = context_patch_kinematic(ctx, int(patch), values)
    end function shcontact_patch_kinematic
 
@@ -277,11 +289,15 @@ contains
       !> Patch index, 1 to the number of patches.
       integer(c_int), value :: patch
       !> The patch values.
-      real(c_double), intent(out) :: values(patch_value_count)
+      real(c_double), intent(out), optional :: values(patch_value_count)
       type(contact_context_type), pointer :: ctx
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(values)) then
+         stat = context_fail(ctx, 'shcontact_patch: values is NULL', stat_usage)
+         return
+      end if
       stat = context_patch(ctx, int(patch), values)
    end function shcontact_patch
 
@@ -516,12 +532,16 @@ contains
       integer(c_int), value :: load_mode
       real(c_double), value :: load_right, load_left
       !> The totals (4 values).
-      real(c_double), intent(out) :: totals(4)
+      real(c_double), intent(out), optional :: totals(4)
       type(contact_context_type), pointer :: ctx
       real(wp) :: t(4)
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(totals)) then
+         stat = context_fail(ctx, 'shcontact_solve_wheelset: totals is NULL', stat_usage)
+         return
+      end if
       stat = context_solve_wheelset(ctx, wheelset_state_type(y_ws=real(y_ws, wp), &
          yaw=real(yaw, wp), roll=real(roll, wp), v_forward=real(v_forward, wp), &
          v_lateral=real(v_lateral, wp), v_vertical=real(v_vertical, wp), &
@@ -541,11 +561,15 @@ contains
       !> 1 right, −1 left; 0 or a patch index.
       integer(c_int), value :: side, patch
       !> The values.
-      real(c_double), intent(out) :: values(kinematic_value_count)
+      real(c_double), intent(out), optional :: values(kinematic_value_count)
       type(contact_context_type), pointer :: ctx
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
+      if (.not. present(values)) then
+         stat = context_fail(ctx, 'shcontact_wheelset_wheel: values is NULL', stat_usage)
+         return
+      end if
       stat = context_wheel(ctx, int(side), int(patch), values)
    end function shcontact_wheelset_wheel
 

@@ -288,7 +288,8 @@ contains
       type(case_config_type), intent(in) :: config
       type(error_type), allocatable, intent(out) :: error
       !> Only the material changed (the library takes the configuration's material_type as it
-      !> is): a one-wheel solver just gets it, with no other comparison (a few µs).
+      !> is): the solver, or both wheels of a wheelset, just get it, with no other comparison
+      !> (a few µs).
       logical, intent(in), optional :: material_only
       type(library_setup_type) :: setup, old
       type(normal_options_type) :: normal
@@ -297,6 +298,18 @@ contains
 
       call library_setup(config, setup, error)
       if (allocated(error)) return
+      if (present(material_only)) then
+         if (material_only) then
+            ! Both wheels of a wheelset handle too: the profiles are not read again (a
+            ! vehicle code may change the friction at every step).
+            if (ctx%is_wheelset) then
+               call ctx%wheelset%set_material(setup%material, error)
+            else
+               call ctx%solver%set_material(setup%material, error)
+            end if
+            return
+         end if
+      end if
       if (ctx%is_wheelset) then
          ! Both wheels created anew, and kept only if that succeeds: a refused value leaves the
          ! handle as it was (nothing changes on error).
@@ -310,12 +323,6 @@ contains
          call move_alloc(wheelset, ctx%wheelset)
          ctx%wheelset_ready = .true.
          return
-      end if
-      if (present(material_only)) then
-         if (material_only) then
-            call ctx%solver%set_material(setup%material, error)
-            return
-         end if
       end if
       call library_setup(ctx%config, old, error)
       if (allocated(error)) return

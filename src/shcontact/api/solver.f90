@@ -359,6 +359,11 @@ contains
             'NaN or Inf', stat_invalid_input)
          return
       end if
+      ! The case file's ranges (a wheelset shifted beyond them has derailed), so that every
+      ! interface refuses the same positions.
+      call check_range('position%t_y', t_y, 'lateral shift t_y (y_ws)', error)
+      if (.not. allocated(error)) call check_range('position%roll', roll, 'roll angle', error)
+      if (allocated(error)) return
       if (load%mode < 1 .or. load%mode > size(load_mode_names)) then
          call fatal_error(error, 'load mode = '//str_int(load%mode)//': expected 1 (normal '// &
             'force), 2 (vertical force), 3 (approach), 4 (vertical position) or 5 (shared '// &

@@ -52,6 +52,8 @@ module shcontact_api_wheelset
       procedure :: solve
       !> The track the wheels took (a MiniProf wheel's flange back at 0 when none was given).
       procedure :: get_track
+      !> Change G, ν and μ of both wheels (as contact_solver_type%set_material).
+      procedure :: set_material
    end type wheelset_solver_type
 
 contains
@@ -94,6 +96,20 @@ contains
       type(track_type) :: track
       track = self%wheel(1)%get_track()
    end function get_track
+
+   !> Change G, ν and μ of both wheels, as contact_solver_type%set_material does for one: the
+   !> prepared profiles stay (nothing is read again). Checked on the first wheel; nothing
+   !> changes on error.
+   subroutine set_material(self, material, error)
+      !> The wheelset, from [[init]].
+      class(wheelset_solver_type), intent(inout) :: self
+      !> The new data.
+      type(material_type), intent(in) :: material
+      !> Set for non-physical data.
+      type(error_type), allocatable, intent(out) :: error
+      call self%wheel(1)%set_material(material, error)
+      if (.not. allocated(error)) call self%wheel(2)%set_material(material, error)
+   end subroutine set_material
 
    !> Solve both wheels for the wheelset state (track frame) and add up the forces.
    subroutine solve(self, state, load_right, load_left, result, error)

@@ -53,8 +53,8 @@ module shcontact_batch_sweep
       folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
    use shcontact_output_hdf5, only: h5_file_type, h5_discard
-   use shcontact_core_strings, only: str_int
-   use shcontact_core_text, only: string_list_type
+   use shcontact_core_strings, only: str_int, to_lower
+   use shcontact_core_text, only: string_list_type, string_type
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
       case_not_run
    use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
@@ -111,6 +111,9 @@ module shcontact_batch_sweep
       integer(int64) :: block_bytes = default_block_bytes
       !> Recorded in the output file.
       character(len=:), allocatable :: command_line
+      !> Files the run reads besides the configuration's profile files (the case file): the
+      !> output and its sidecar are never one of them, not even with `force`.
+      type(string_type), allocatable :: inputs(:)
       !> Progress report (optional).
       procedure(progress_interface), pointer, nopass :: progress => null()
    end type sweep_options_type
@@ -266,10 +269,13 @@ contains
          return
       end if
       call shard_range(n, options%shard, options%n_shards, outcome%first, outcome%last)
-      if (outcome%last < outcome%first) then
+      ! Refused for every shard, not only the empty ones, so that an array job either runs
+      ! as a whole or not at all.
+      if (options%n_shards > n) then
          call fatal_error(error, 'shard '//str_int(options%shard)//'/'// &
-            str_int(options%n_shards)//' of a run of '//str_int(n)// &
-            ' cases is empty; use at most '//str_int(n)//' shards', stat_usage)
+            str_int(options%n_shards)//': a run of '//str_int(n)// &
+            ' cases has fewer cases than shards (some shards would be empty); use at most '// &
+            str_int(n)//' shards', stat_usage)
          return
       end if
       outcome%output = shard_output_name(config%output%file, options%shard, options%n_shards)
@@ -290,7 +296,8 @@ contains
       if (.not. options%write_output) outcome%output = ''
       ! Everything that can fail before any file is touched.
       if (options%write_output) then
-         call check_output_file(outcome%output, error, force=options%force)
+         call check_output_file(outcome%output, error, inputs=run_inputs(config, options), &
+            force=options%force)
          if (allocated(error)) return
          ! The work folder's name, refused early (open_work_folder checks again).
          select case (path_kind(dir))
@@ -343,6 +350,32 @@ contains
          dir, outcome, error)
       call unlock_file(lock)
    end subroutine run_sweep
+
+   !> The files a run reads: the options' inputs (the case file) and the profile files of the
+   !> configuration (not the built-in profiles).
+   function run_inputs(config, options) result(inputs)
+      type(case_config_type), intent(in) :: config
+      type(sweep_options_type), intent(in) :: options
+      type(string_type), allocatable :: inputs(:)
+      integer :: n, k
+      n = 0
+      if (allocated(options%inputs)) n = size(options%inputs)
+      allocate (inputs(n + 2))
+      do k = 1, n
+         inputs(k)%text = options%inputs(k)%text
+      end do
+      ! (Elementwise: gfortran 12 garbles string_type(trim(...)) in an array constructor.)
+      inputs(n + 1)%text = profile_file(config%profiles%wheel)
+      inputs(n + 2)%text = profile_file(config%profiles%rail)
+   end function run_inputs
+
+   !> A profile's file name, or '' for a built-in profile.
+   pure function profile_file(name) result(file)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: file
+      file = trim(name)
+      if (index(to_lower(file), 'builtin:') == 1) file = ''
+   end function profile_file
 
    !> The message for a work folder that cannot be used.
    subroutine work_folder_error(state, output, dir, error)
@@ -556,8 +589,11 @@ contains
             outcome%last - outcome%first + 1, fields)
       end if
 
-      if (size(outcome%failures) == outcome%last - outcome%first + 1) then
-         ! Nothing to write: every case failed, and they all tell why.
+      if (size(outcome%failures) == outcome%last - outcome%first + 1 .and. &
+         (options%n_shards == 1 .or. .not. options%write_output)) then
+         ! Nothing to write: every case failed, and they all tell why. (A shard whose cases
+         ! all failed still writes its file, with /failures, so that the shards merge into
+         ! the file of the whole run.)
          if (early%begun .and. .not. allocated(early%error)) call h5_discard(early%file)
          call fatal_error(error, failure_text(outcome, outcome%failures(1)), &
             outcome%summaries(outcome%failures(1)%case)%stat)
@@ -592,7 +628,11 @@ contains
             info%date, error, allow_partial=options%n_shards > 1, shard=info%shard, &
             temp_name=dir//'/'//merged_temp_name, threads=info%threads, force=options%force)
       end if
-      if (allocated(error)) return
+      if (allocated(error)) then
+         ! Without a block file there is nothing to resume from: no work folder is left.
+         if (blocks%n == 0) call clear_checkpoint(dir, keep_directory=.false.)
+         return
+      end if
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
 

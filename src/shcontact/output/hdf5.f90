@@ -10,7 +10,7 @@
 !> order: a Fortran (n1, n2) array is seen by C and h5py as shape (n2, n1).
 module shcontact_output_hdf5
    use, intrinsic :: iso_c_binding, only: c_loc, c_ptr
-   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5dont_atexit_f, h5eset_auto_f, h5fcreate_f, h5fopen_f, &
       h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F, h5pcreate_f, h5pclose_f, &
       H5P_DATASET_CREATE_F, H5P_LINK_CREATE_F, H5P_GROUP_CREATE_F, h5pset_chunk_f, &
       h5pset_deflate_f, h5pset_obj_track_times_f, h5pset_create_inter_group_f, h5screate_f, &
@@ -35,6 +35,7 @@ module shcontact_output_hdf5
    public :: h5_file_type, h5_create, h5_commit, h5_discard, h5_open, h5_close
    public :: h5_write, h5_write_attribute, h5_make_group, h5_copy, h5_exists
    public :: h5_read, h5_read_attribute, h5_dataset_size
+   public :: h5_skip_exit_cleanup
    public :: h5_set_scale, h5_attach_scale, h5_set_dim_label, h5_dataset_info, h5_delete_attribute
    public :: description_function
 
@@ -99,6 +100,16 @@ contains
    ! ------------------------------------------------------------------------------------------
    ! Files
    ! ------------------------------------------------------------------------------------------
+
+   !> For a program that closes every file it writes (the shcontact program): the HDF5
+   !> library is not to close what is left open when the process ends. A file whose close
+   !> failed (a full disk) stays open inside the library, and its clean-up at exit then
+   !> crashed the program (signal 11 instead of the I/O status 3). Effective only before the
+   !> library's first use; a library caller keeps HDF5's default.
+   subroutine h5_skip_exit_cleanup()
+      integer :: stat
+      call h5dont_atexit_f(stat)
+   end subroutine h5_skip_exit_cleanup
 
    !> Start the library once per call (idempotent) and silence its error printing.
    subroutine start_library(error)

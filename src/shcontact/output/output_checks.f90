@@ -35,7 +35,7 @@ contains
       type(string_type), intent(in), optional :: inputs(:)
       !> Replace a symbolic link or a file that shcontact did not write.
       logical, intent(in), optional :: force
-      character(len=:), allocatable :: target, kind
+      character(len=:), allocatable :: kind
       integer :: f
       logical :: forced
       forced = .false.
@@ -51,16 +51,8 @@ contains
       call check_kind('the output "'//output//'"', kind, forced, error)
       if (allocated(error)) return
       if (kind /= 'none') then
-         target = canonical_path(output)
-         if (present(inputs)) then
-            do f = 1, size(inputs)
-               if (canonical_path(inputs(f)%text) == target) then
-                  call fatal_error(error, 'the output "'//output//'" is also an input; give '// &
-                     'a new name for the merged file', stat_usage)
-                  return
-               end if
-            end do
-         end if
+         call check_not_input(output, 'the output "'//output//'"', inputs, error)
+         if (allocated(error)) return
          if (kind == 'file' .and. .not. forced .and. .not. is_result_file(output)) then
             call fatal_error(error, 'the output "'//output//'" exists and is not a '// &
                'shcontact result file; it is not overwritten (remove it, choose another '// &
@@ -72,11 +64,42 @@ contains
       call check_kind('the XDMF sidecar "'//xdmf_name(output)//'" of the output "'// &
          output//'"', kind, forced, error)
       if (allocated(error)) return
+      if (kind /= 'none') call check_not_input(xdmf_name(output), 'the XDMF sidecar "'// &
+         xdmf_name(output)//'" of the output "'//output//'"', inputs, error)
+      if (allocated(error)) return
       if (kind == 'file' .and. .not. forced .and. .not. is_xdmf_sidecar(xdmf_name(output))) &
          call fatal_error(error, 'the XDMF sidecar "'//xdmf_name(output)//'" of the output "'// &
          output//'" exists and was not written by shcontact; it is not overwritten (remove '// &
          'it, choose another output name, or use --force)', stat_io)
    end subroutine check_output_file
+
+   !> An error (stat_usage) when the existing file `path` is one of `inputs` (the same file
+   !> once links and relative parts are resolved): a file the command reads is never
+   !> replaced, not even with --force.
+   subroutine check_not_input(path, what, inputs, error)
+      !> The file to be written (it exists).
+      character(len=*), intent(in) :: path
+      !> How the message names it.
+      character(len=*), intent(in) :: what
+      !> Files read to make the output.
+      type(string_type), intent(in), optional :: inputs(:)
+      !> Set when `path` is an input.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: target
+      integer :: f
+      if (.not. present(inputs)) return
+      target = canonical_path(path)
+      do f = 1, size(inputs)
+         if (len_trim(inputs(f)%text) == 0) cycle
+         if (path_kind(inputs(f)%text, follow=.true.) /= 'file') cycle
+         if (canonical_path(inputs(f)%text) == target) then
+            call fatal_error(error, what//' is also an input of this command ('// &
+               inputs(f)%text//'); it is never replaced, not even with --force: choose '// &
+               'another output name', stat_usage)
+            return
+         end if
+      end do
+   end subroutine check_not_input
 
    !> Refuse an output name that names a directory, pipe, device or socket, or (unless forced)
    !> a symbolic link.

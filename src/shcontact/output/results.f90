@@ -50,7 +50,7 @@ module shcontact_output_results
    use shcontact_output_descriptions, only: describe_dataset
    use shcontact_output_provenance, only: git_revision, build_compiler, build_flags, host_name, &
       available_threads
-   use shcontact_output_xdmf, only: write_xdmf_sidecar
+   use shcontact_output_xdmf, only: write_xdmf_sidecar, xdmf_name, is_xdmf_sidecar
    use shcontact_core_files, only: delete_file
    use shcontact_output_output_checks, only: check_output_file, check_layout
    use shcontact_core_strings, only: str_int
@@ -247,7 +247,7 @@ contains
          call h5_discard(file)
          return
       end if
-      call h5_commit(file, error)
+      call commit_output(file, error)
    end subroutine end_result_file
 
    !> Root attributes, /input and the common /geometry.
@@ -1030,6 +1030,9 @@ contains
          describe=describe_dataset)
       if (allocated(error)) return
       call h5_open(src, inputs(1)%text, error)
+      ! Shards merged by `shcontact merge`: the threads the first shard was solved with.
+      if (.not. allocated(error) .and. .not. present(threads)) &
+         call first_threads(src, info%threads)
       if (.not. allocated(error)) call write_root_attributes(out, info, size(order), error)
       if (.not. allocated(error)) call h5_copy(src, 'input', out, 'input', error)
       if (.not. allocated(error)) call attach_profile_scales(out, error)
@@ -1084,7 +1087,7 @@ contains
          call h5_discard(out)
          return
       end if
-      call h5_commit(out, error)
+      call commit_output(out, error)
       if (allocated(error)) return
       call finish_output(output, order, n_first, error)
    end subroutine merge_result_files
@@ -1181,10 +1184,32 @@ contains
          call h5_discard(file)
          return
       end if
-      call h5_commit(file, error)
+      call commit_output(file, error)
       if (allocated(error)) return
       call finish_output(output, indices, info%n_cases, error)
    end subroutine end_summary_file
+
+   !> The root attribute `threads` of a result file (left as it is when the file has none).
+   subroutine first_threads(file, threads)
+      type(h5_file_type), intent(in) :: file
+      integer, intent(inout) :: threads
+      type(error_type), allocatable :: error
+      integer :: value
+      call h5_read_attribute(file, '/', 'threads', value, error)
+      if (.not. allocated(error)) threads = value
+   end subroutine first_threads
+
+   !> Give a finished file its name, after removing the output's own XDMF sidecar of an earlier
+   !> run: a process killed between the two steps then leaves no sidecar that describes
+   !> other cases than the new file's (the next run or `--resume` writes it again).
+   subroutine commit_output(file, error)
+      type(h5_file_type), intent(inout) :: file
+      type(error_type), allocatable, intent(out) :: error
+      if (is_xdmf_sidecar(xdmf_name(file%name))) then
+         if (delete_file(xdmf_name(file%name))) continue
+      end if
+      call h5_commit(file, error)
+   end subroutine commit_output
 
    !> The XDMF sidecar of a complete output holding cases `order` of a run of `n_cases`; on
    !> failure the output goes too (no output from a failed command).
