@@ -722,10 +722,11 @@ contains
          ws_state%yaw_rate, ws_state%pitch_rate, 2, 64.7d3, 60.0d3, totals, istat)
    end subroutine solve_ws_state
 
-   !> What a vehicle code meets in its time loop (issue 25's users): (1) the friction set on a
-   !> wheelset handle does not read the profile files again (it did: a file moved away after
-   !> the handle was made gave status 3, a file rewritten would have been taken silently, and
-   !> the call cost milliseconds) and keeps the same forces as a handle made with it; (2) a
+   !> What a vehicle code meets in its time loop (issue 25's users): (1) the friction, an
+   !> option or the track set on a wheelset handle do not read the profile files again (they
+   !> did: a file moved away after the handle was made gave status 3, a file rewritten would
+   !> have been taken silently, and the friction cost milliseconds) and give the forces of a
+   !> handle made with them; (2) a
    !> NULL result array gives status 1, not a crash; (3) a lateral shift beyond the case
    !> file's range (a derailed wheelset) is refused by the positional calls as by the app.
    subroutine test_vehicle_call_guards(error)
@@ -753,12 +754,23 @@ contains
       call solve_ws_state(ih, totals, istat)
       call check(error, istat, 0, message='solve after the friction changed')
       if (allocated(error)) return
+      ! An option and the track too: both wheels prepared again from the profiles as read.
+      call shc_set_option(ih, 'tangential%n_elements', '40', istat)
+      if (istat == 0) call shc_set_option(ih, 'track%gauge', '1437.0', istat)
+      if (istat /= 0) call shc_errmsg(ih, msg)
+      call check(error, istat, 0, message='an option on a wheelset handle whose profile file '// &
+         'is gone: '//trim(msg))
+      if (allocated(error)) return
+      call solve_ws_state(ih, totals, istat)
       call shc_create_ws(ih2, 'data/profiles/worn/S1002-worn.txt', 'builtin:UIC60', istat)
       if (istat == 0) call shc_set_option(ih2, 'material%friction', '0.35', istat)
+      if (istat == 0) call shc_set_option(ih2, 'tangential%n_elements', '40', istat)
+      if (istat == 0) call shc_set_option(ih2, 'track%gauge', '1437.0', istat)
       if (istat == 0) call solve_ws_state(ih2, fresh, istat)
       call shc_destroy(ih2, k)
-      call check(error, istat == 0 .and. bitwise_equal(totals, fresh), message='the friction '// &
-         'set on a live wheelset handle gives other forces than a handle made with it')
+      call check(error, istat == 0 .and. bitwise_equal(totals, fresh), message='the friction, '// &
+         'an option and the gauge set on a live wheelset handle give other forces than a '// &
+         'handle made with them')
       if (allocated(error)) return
       ! A derailed wheelset: t_y = 40 mm (the case file allows |t_y| <= 30 mm).
       call shc_solve_ws(ih, 40.0d0, 0.0d0, 0.0d0, 3.0d4, 0.0d0, 0.0d0, 0.0d0, 0.0d0, &

@@ -310,22 +310,27 @@ contains
             return
          end if
       end if
+      call library_setup(ctx%config, old, error)
+      if (allocated(error)) return
       if (ctx%is_wheelset) then
-         ! Both wheels created anew, and kept only if that succeeds: a refused value leaves the
-         ! handle as it was (nothing changes on error).
-         allocate (wheelset)
-         call wheelset%init(trim(config%profiles%wheel), trim(config%profiles%rail), &
-            error, track=setup%track, material=setup%material, &
-            contact_options=setup%contact_options, normal_options=setup%normal, &
-            tangential_options=setup%tangential)
+         ! Both wheels changed in a copy, kept only if that succeeds: a refused value leaves the
+         ! handle as it was (nothing changes on error). The profiles as first read are prepared
+         ! again; the files are not read again (they may have moved or changed since).
+         allocate (wheelset, source=ctx%wheelset)
+         if (differ(setup%track, old%track) .or. &
+             differ(setup%contact_options, old%contact_options)) &
+            call wheelset%set_track(error, track=setup%track, &
+            contact_options=setup%contact_options)
+         if (.not. allocated(error) .and. (differ(setup%normal, old%normal) .or. &
+             differ(setup%tangential, old%tangential))) &
+            call wheelset%set_options(error, normal=setup%normal, tangential=setup%tangential)
+         if (.not. allocated(error)) call wheelset%set_material(setup%material, error)
          if (allocated(error)) return
          ctx%has_result = .false.
          call move_alloc(wheelset, ctx%wheelset)
          ctx%wheelset_ready = .true.
          return
       end if
-      call library_setup(ctx%config, old, error)
-      if (allocated(error)) return
       if (differ(setup%track, old%track) .or. &
           differ(setup%contact_options, old%contact_options)) then
          call ctx%solver%set_track(error, track=setup%track, &

@@ -54,6 +54,12 @@ module shcontact_api_wheelset
       procedure :: get_track
       !> Change G, ν and μ of both wheels (as contact_solver_type%set_material).
       procedure :: set_material
+      !> Change the track or the contact-search options of both wheels (as
+      !> contact_solver_type%set_track: the profiles as first read are prepared again).
+      procedure :: set_track
+      !> Change the normal and tangential options of both wheels (as
+      !> contact_solver_type%set_options).
+      procedure :: set_options
    end type wheelset_solver_type
 
 contains
@@ -110,6 +116,41 @@ contains
       call self%wheel(1)%set_material(material, error)
       if (.not. allocated(error)) call self%wheel(2)%set_material(material, error)
    end subroutine set_material
+
+   !> Change the track and/or the contact-search options of both wheels; the profiles are not
+   !> read again. On error the caller discards the wheelset (a wheel may have changed).
+   subroutine set_track(self, error, track, contact_options)
+      !> The wheelset, from [[init]].
+      class(wheelset_solver_type), intent(inout) :: self
+      !> Set for invalid data.
+      type(error_type), allocatable, intent(out) :: error
+      !> The new track (right-side form, as given to [[init]]).
+      type(track_type), intent(in), optional :: track
+      !> The new contact-search options.
+      type(contact_options_type), intent(in), optional :: contact_options
+      integer :: k
+      do k = 1, size(self%wheel)
+         call self%wheel(k)%set_track(error, track=track, contact_options=contact_options)
+         if (allocated(error)) return
+      end do
+   end subroutine set_track
+
+   !> Change the normal and/or tangential options of both wheels. On error the caller discards
+   !> the wheelset (a wheel may have changed).
+   subroutine set_options(self, error, normal, tangential)
+      !> The wheelset, from [[init]].
+      class(wheelset_solver_type), intent(inout) :: self
+      !> Set for invalid options.
+      type(error_type), allocatable, intent(out) :: error
+      !> The new options.
+      type(normal_options_type), intent(in), optional :: normal
+      type(tangential_options_type), intent(in), optional :: tangential
+      integer :: k
+      do k = 1, size(self%wheel)
+         call self%wheel(k)%set_options(error, normal=normal, tangential=tangential)
+         if (allocated(error)) return
+      end do
+   end subroutine set_options
 
    !> Solve both wheels for the wheelset state (track frame) and add up the forces.
    subroutine solve(self, state, load_right, load_left, result, error)
