@@ -49,7 +49,7 @@ contains
       type(case_config_type), intent(in) :: config
       !> 'text', 'csv' or 'json'.
       character(len=*), intent(in) :: format
-      character(len=:), allocatable :: line
+      character(len=:), allocatable :: line, units
       integer :: ia, k
       select case (format)
       case ('csv')
@@ -65,20 +65,33 @@ contains
       case ('text')
          line = ''
          if (config%n_cases() == 1) return
+         ! The names, then their units in brackets ([1]: dimensionless or a count).
          line = pad('case', 8)//pad('status', 7)
+         units = pad('', 8)//pad('', 7)
          do ia = 1, n_sweep_axes
-            if (config%sweep%axes(ia)%active) line = line//pad(trim(sweep_axis_names(ia)), 14)
+            if (.not. config%sweep%axes(ia)%active) cycle
+            line = line//pad(trim(sweep_axis_names(ia)), 14)
+            units = units//pad(bracketed(input_units(ia)), 14)
          end do
          if (config%is_kinematic()) then
+            ! The counts first (not summary columns), then the summary's own.
             do k = 1, size(kinematic_text_columns)
                line = line//pad(trim(kinematic_text_columns(k)), 14)
+               if (k <= 2) then
+                  units = units//pad('[1]', 14)
+               else
+                  units = units//pad(bracketed(summary_columns(2, &
+                     column_index(kinematic_text_columns(k)))), 14)
+               end if
             end do
          else
             do k = 1, size(text_columns)
                line = line//pad(trim(text_columns(k)), 14)
+               units = units//pad(bracketed(summary_columns(2, column_index(text_columns(k)))), &
+                  14)
             end do
          end if
-         line = trim(line)
+         line = trim(line)//new_line('a')//trim(units)
       case default
          line = ''
       end select
@@ -391,6 +404,14 @@ contains
          if (summary_columns(1, k) == name) column_index = k
       end do
    end function column_index
+
+   !> A unit in brackets for the text table's units line ('' for a choice).
+   pure function bracketed(unit) result(text)
+      character(len=*), intent(in) :: unit
+      character(len=:), allocatable :: text
+      text = ''
+      if (len_trim(unit) > 0) text = '['//trim(unit)//']'
+   end function bracketed
 
    !> [[short_real]]'s text, left-aligned in a fixed buffer.
    pure function short_buffer(x) result(buf)
