@@ -174,7 +174,7 @@ contains
       integer :: i
       call read_case_profiles(config, wheel, rail, error, wheel_read, rail_read)
       if (allocated(error)) return
-      notes = profile_notes(config, wheel_read, rail_read, rail)
+      notes = profile_notes(config, wheel_read, rail_read, wheel, rail)
       do while (len(notes) > 0)
          i = index(notes, new_line('a'))
          write (error_unit, '(a)') 'shcontact: '//notes(1:i - 1)

@@ -7,7 +7,7 @@ module shcontact_app_profile_advice
    use shcontact_core_strings, only: str_format, to_lower
    use shcontact, only: profile_type, profile_kind_wheel, noise_estimate_type, estimate_noise, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
-      default_curvature_tolerance, case_config_type
+      default_curvature_tolerance, case_config_type, point_anomaly_type, find_point_anomalies
    implicit none
    private
 
@@ -17,6 +17,14 @@ module shcontact_app_profile_advice
    real(wp), parameter :: upright_band = 0.0125_wp
    !> Suggested smoothing below this length (mm) is not worth setting.
    real(wp), parameter :: negligible_smoothing = 0.5_wp
+
+   !> What a gap that counts means.
+   character(len=*), parameter :: gap_meaning = 'points are missing there, and the '// &
+      'profile is a straight chord across the gap (check the measurement)'
+   !> What an outlier that counts means.
+   character(len=*), parameter :: outlier_meaning = 'a single bad point? the spline '// &
+      'turns it into a curvature spike and the contact there into a pressure peak (remove '// &
+      'the point, or smooth the profile)'
 
 contains
 
@@ -28,8 +36,49 @@ contains
       character(len=1), parameter :: nl = new_line('a')
       text = ''
       if (cleaned%kind /= profile_kind_wheel) text = cant_line(cleaned)//nl
-      text = text//noise_lines(read, cleaned%kind)
+      text = text//noise_lines(read, cleaned%kind)//nl//anomaly_lines(read, cleaned)
    end function profile_advice
+
+   !> The 'gap' and 'outlier' lines: the largest of each among the points as read, with what
+   !> it means when it counts.
+   function anomaly_lines(read, cleaned) result(text)
+      type(profile_type), intent(in) :: read, cleaned
+      character(len=:), allocatable :: text
+      type(noise_estimate_type) :: noise
+      type(point_anomaly_type) :: anomaly
+      call estimate_noise(read, noise)
+      call find_point_anomalies(read, cleaned, noise%sigma, anomaly)
+      text = 'gap        largest '//str_format(anomaly%gap, '(f0.3)')//' mm '// &
+         between_points(read, anomaly%gap_at)//', median spacing '// &
+         str_format(anomaly%spacing, '(f0.3)')//' mm'
+      if (anomaly%has_gap) text = text//': '//gap_meaning
+      text = text//new_line('a')//'outlier    largest '// &
+         str_format(anomaly%outlier, '(es9.2)')//' mm off the cubic through its six '// &
+         'neighbours (within 25 mm of the running surface)'
+      if (anomaly%outlier_at > 0) text = text//' '//at_point(cleaned, anomaly%outlier_at)
+      if (anomaly%has_outlier) text = text//': '//outlier_meaning
+   end function anomaly_lines
+
+   !> "between points k and k+1 (y = a … b mm)" of the points as read.
+   function between_points(profile, k) result(text)
+      type(profile_type), intent(in) :: profile
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      text = 'between points '//str_format(real(k, wp), '(f0.0)')//' and '// &
+         str_format(real(k + 1, wp), '(f0.0)')//' of '//str_format(real(size(profile%y), wp), &
+         '(f0.0)')//' (y = '//str_format(profile%y(k), '(f0.2)')//' to '// &
+         str_format(profile%y(k + 1), '(f0.2)')//' mm)'
+   end function between_points
+
+   !> "at point k of n (y, z = a, b mm)" of the cleaned points.
+   function at_point(profile, k) result(text)
+      type(profile_type), intent(in) :: profile
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      text = 'at point '//str_format(real(k, wp), '(f0.0)')//' of '// &
+         str_format(real(size(profile%y), wp), '(f0.0)')//' (y, z = '// &
+         str_format(profile%y(k), '(f0.3)')//', '//str_format(profile%z(k), '(f0.3)')//' mm)'
+   end function at_point
 
    function cant_line(rail) result(text)
       type(profile_type), intent(in) :: rail
@@ -94,17 +143,20 @@ contains
    !> the noise into the curvatures), and a rail whose head looks canted already while
    !> track%rail_canted is false (the track's inclination is then applied a second time), or
    !> upright while it is true. Built-in profiles get the cant note only.
-   function profile_notes(config, wheel_read, rail_read, rail) result(text)
-      !> The case, its profiles' points as read and its rail as the run cleans it (the noise
-      !> from the points read and the cant from the clean rail, as [[profile_advice]]).
+   function profile_notes(config, wheel_read, rail_read, wheel, rail) result(text)
+      !> The case, its profiles' points as read and as the run cleans them (the noise and the
+      !> gaps from the points read, the outliers from the clean points and the cant from the
+      !> clean rail, as [[profile_advice]]).
       type(case_config_type), intent(in) :: config
-      type(profile_type), intent(in) :: wheel_read, rail_read, rail
+      type(profile_type), intent(in) :: wheel_read, rail_read, wheel, rail
       character(len=:), allocatable :: text
       type(rail_cant_type) :: cant
       text = smoothing_note('wheel', config%profiles%wheel, wheel_read, &
          config%profiles%wheel_smoothing, 'profiles%wheel_smoothing')
       text = text//smoothing_note('rail', config%profiles%rail, rail_read, &
          config%profiles%rail_smoothing, 'profiles%rail_smoothing')
+      text = text//anomaly_notes('wheel', config%profiles%wheel, wheel_read, wheel)
+      text = text//anomaly_notes('rail', config%profiles%rail, rail_read, rail)
       call estimate_rail_cant(rail, cant)
       if (.not. cant%found) return
       if (cant%slope >= upright_band .and. .not. config%track%rail_canted) then
@@ -120,6 +172,27 @@ contains
             new_line('a')
       end if
    end function profile_notes
+
+   !> The gap and outlier notes of one profile file ('' when it is built in or has neither).
+   function anomaly_notes(what, spec, read, cleaned) result(text)
+      character(len=*), intent(in) :: what, spec
+      type(profile_type), intent(in) :: read, cleaned
+      character(len=:), allocatable :: text
+      type(noise_estimate_type) :: noise
+      type(point_anomaly_type) :: anomaly
+      text = ''
+      if (index(to_lower(adjustl(spec)), 'builtin:') == 1) return
+      call estimate_noise(read, noise)
+      call find_point_anomalies(read, cleaned, noise%sigma, anomaly)
+      if (anomaly%has_gap) text = text//'note: '//what//' profile '//trim(spec)//': a gap of '// &
+         str_format(anomaly%gap, '(f0.2)')//' mm '//between_points(read, anomaly%gap_at)// &
+         ' where the points are '//str_format(anomaly%spacing, '(f0.2)')//' mm apart: '// &
+         gap_meaning//'; shcontact profiles FILE, doc/profiles.md'//new_line('a')
+      if (anomaly%has_outlier) text = text//'note: '//what//' profile '//trim(spec)// &
+         ': a point '//str_format(anomaly%outlier, '(f0.3)')//' mm off the cubic through its '// &
+         'six neighbours '//at_point(cleaned, anomaly%outlier_at)//': '//outlier_meaning// &
+         '; shcontact profiles FILE, doc/profiles.md'//new_line('a')
+   end function anomaly_notes
 
    !> The smoothing note of one profile file ('' when it is built in, smoothed or clean).
    function smoothing_note(what, spec, profile, smoothing, variable) result(text)

@@ -20,6 +20,7 @@ module shcontact
    use shcontact_profile_writer, only: write_profile_plain, write_builtin_profiles, &
       written_builtins
    use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
+      point_anomaly_type, find_point_anomalies, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
       default_curvature_tolerance
    use shcontact_profile_spline, only: profile_spline_type
@@ -117,6 +118,7 @@ module shcontact
       load_vertical_position, load_shared_force, load_mode_name, max_patches, &
       patch_value_count, result_value_count, kinematic_value_count, &
       patch_values, result_values, kinematic_values
+   public :: point_anomaly_type, find_point_anomalies
    public :: written_builtins, noise_estimate_type, estimate_noise, suggested_smoothing, &
       curvature_noise, rail_cant_type, estimate_rail_cant, default_curvature_tolerance, &
       profile_file_format, load_profile_file, roll_angle_parameter, contact_distance, &

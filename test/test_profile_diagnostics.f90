@@ -13,7 +13,7 @@ module test_profile_diagnostics
    use shcontact_profile_spline, only: profile_spline_type
    use shcontact_profile_diagnostics, only: noise_estimate_type, estimate_noise, &
       suggested_smoothing, curvature_noise, rail_cant_type, estimate_rail_cant, &
-      default_curvature_tolerance
+      default_curvature_tolerance, point_anomaly_type, find_point_anomalies
    use test_app, only: unavailable, scratch_directory, run_program, file_text, expect_in, &
       current_directory
    implicit none
@@ -29,7 +29,9 @@ contains
          new_unittest('turned_rail_head', test_turned_rail), &
          new_unittest('noise_of_known_amplitude', test_noise), &
          new_unittest('suggested_smoothing_meets_tolerance', test_smoothing), &
-         new_unittest('sample_files', test_sample_files)]
+         new_unittest('sample_files', test_sample_files), &
+         new_unittest('gap_and_outlier', test_gap_and_outlier), &
+         new_unittest('run_notes_gap_and_outlier', test_anomaly_notes)]
    end subroutine collect_profile_diagnostics
 
    !> Uniform pseudo-random numbers in [−1, 1] (a fixed linear congruential sequence).
@@ -108,6 +110,83 @@ contains
       call estimate_noise(noisy_arc(300.0_wp, 0.5_wp, 400, 0.0_wp), noise)
       call check(error, noise%sigma < 1.0e-6_wp, 'no noise on a clean arc')
    end subroutine test_noise
+
+   !> A measured-like noisy crown (300 mm arc, points 0.3 mm apart, noise 3e-4 mm) has neither
+   !> a gap nor an outlier; one point moved by 0.05 mm along z is found at its index, one moved
+   !> by 0.01 mm is not (below 0.02 mm), 10 mm of points taken out is a gap, and a flange-tip
+   !> point deeper than 25 mm is not judged.
+   subroutine test_gap_and_outlier(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(profile_type) :: arc, damaged
+      type(noise_estimate_type) :: noise
+      type(point_anomaly_type) :: found
+      integer, parameter :: n = 300, bad = 140
+      arc = noisy_arc(300.0_wp, 0.3_wp, n, 3.0e-4_wp)
+      call estimate_noise(arc, noise)
+      call find_point_anomalies(arc, arc, noise%sigma, found)
+      call check(error, .not. (found%has_gap .or. found%has_outlier) .and. &
+         found%outlier < 2.0e-3_wp, message='a clean noisy crown flagged')
+      if (allocated(error)) return
+      damaged = arc
+      damaged%z(bad) = damaged%z(bad) + 0.05_wp
+      call find_point_anomalies(damaged, damaged, noise%sigma, found)
+      call check(error, found%has_outlier .and. found%outlier_at == bad .and. &
+         abs(found%outlier - 0.05_wp) < 0.005_wp, message='a 0.05 mm outlier not found')
+      if (allocated(error)) return
+      damaged%z(bad) = arc%z(bad) + 0.01_wp
+      call find_point_anomalies(damaged, damaged, noise%sigma, found)
+      call check(error, .not. found%has_outlier .and. found%outlier_at == bad, &
+         message='a 0.01 mm outlier counted')
+      if (allocated(error)) return
+      ! The same arc 30 mm deeper: the tip of a flange, not judged.
+      damaged%z = damaged%z + 30.0_wp
+      damaged%z(bad) = arc%z(bad) + 30.5_wp
+      call find_point_anomalies(damaged, damaged, noise%sigma, found)
+      call check(error, found%outlier_at == 0, message='an outlier deeper than 25 mm judged')
+      if (allocated(error)) return
+      ! 34 points (about 10 mm) taken out: a gap of 35 spacings, 10.5 mm, against 0.3 mm.
+      damaged = arc
+      damaged%y = [arc%y(:100), arc%y(135:)]
+      damaged%z = [arc%z(:100), arc%z(135:)]
+      call find_point_anomalies(damaged, damaged, noise%sigma, found)
+      call check(error, found%has_gap .and. found%gap_at == 100 .and. &
+         abs(found%gap - 10.5_wp) < 0.05_wp, message='a 10 mm gap not found')
+   end subroutine test_gap_and_outlier
+
+   !> `shcontact run` notes a gap and a bad point of a profile file (the worn wheel of
+   !> data/profiles with 10 mm of tread points taken out, or one tread point moved by 0.1 mm),
+   !> and none on the file itself; `shcontact profiles` flags them.
+   subroutine test_anomaly_notes(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, wheel
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('diagnostics_anomaly_notes')
+      wheel = current_directory()//'/data/profiles/worn/S1002-worn.txt'
+      stat = run_program(dir, 'run --no-output --format none --set profiles%wheel='//wheel)
+      call check(error, stat == 0 .and. index(file_text(dir//'/err.txt'), 'note:') == 0, &
+         message='a note on the intact file: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! Column 1 is y (mm, falling from 60): the tread from 10 to 20 mm taken out; then the
+      ! first point below y = 15 mm moved by 0.1 mm in z.
+      call execute_command_line('awk ''/^ *#/ || NF < 2 {print; next} $1 > 10 && $1 < 20 '// &
+         '{next} {print}'' '//wheel//' > '//dir//'/gap.txt && awk ''BEGIN {d = 0} /^ *#/ || '// &
+         'NF < 2 {print; next} !d && $1 < 15 {printf "%.10f %.10f\n", $1, $2 + 0.1; d = 1; '// &
+         'next} {print}'' '//wheel//' > '//dir//'/spike.txt', exitstat=stat)
+      call check(error, stat, 0, message='cannot write the damaged copies')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --no-output --format none --set profiles%wheel=gap.txt')
+      call expect_in(error, file_text(dir//'/err.txt'), 'note: wheel profile gap.txt: a gap '// &
+         'of 10.', 'the gap note')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --no-output --format none --set profiles%wheel=spike.txt')
+      call expect_in(error, file_text(dir//'/err.txt'), 'note: wheel profile spike.txt: a '// &
+         'point 0.1', 'the outlier note')
+      if (allocated(error)) return
+      stat = run_program(dir, 'profiles spike.txt --kind wheel')
+      call expect_in(error, file_text(dir//'/out.txt'), 'a single bad point?', &
+         'profiles flags the outlier')
+   end subroutine test_anomaly_notes
 
    !> A rail-like arc (points from the gauge side, material below), n points h apart along
    !> the arc, each moved along the normal by amplitude × uniform[−1, 1].

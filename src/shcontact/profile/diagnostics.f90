@@ -15,6 +15,13 @@
 !> * **Noise.** Cubic least-squares fits over 7 consecutive points in the frame of their chord;
 !>   σ² is the median of the residual variances RSS/3 divided by 0.7887 (the median of χ²₃/3),
 !>   so that corners and outliers do not inflate it.
+!> * **Gaps and outliers.** The largest distance between consecutive points against their median
+!>   spacing (a stretch where points are missing: the profile is a straight chord there), and
+!>   the largest leave-one-out residual: each point against the cubic fitted to its six
+!>   neighbours (three on each side) in their chord's frame (a single bad point, which the
+!>   median noise estimate does not see, and which the spline turns into a curvature spike),
+!>   among the points a running contact can reach (canonical z ≤ 25 mm) where the seven points
+!>   turn by less than 30°.
 !> * **Smoothing.** White noise σ at spacing h, smoothed by the spline (response
 !>   1/(1 + (L_filt/L)⁴)), leaves a curvature noise σ_κ = C σ √h L_filt^(−5/2) with
 !>   C² = (2π)⁴ π√2/8 (C ≈ 29.4); the suggested L_filt makes σ_κ equal to a tolerance, by default
@@ -32,6 +39,8 @@ module shcontact_profile_diagnostics
    public :: noise_estimate_type, estimate_noise, curvature_noise, suggested_smoothing
    public :: rail_cant_type, estimate_rail_cant, head_offset
    public :: default_curvature_tolerance
+   public :: point_anomaly_type, find_point_anomalies, gap_ratio, min_gap, outlier_sigmas, &
+      min_outlier
 
    !> Curvature-noise tolerance (1/mm): 10 % of the curvature of a 300 mm rail crown.
    real(wp), parameter :: default_curvature_tolerance = 0.1_wp/300.0_wp
@@ -39,6 +48,31 @@ module shcontact_profile_diagnostics
    real(wp), parameter :: gauge_depth = 14.0_wp, crown_depth = 0.5_wp
    !> Points per noise window.
    integer, parameter :: window = 7
+   !> A gap counts when it is this many median spacings long and at least min_gap (mm).
+   real(wp), parameter :: gap_ratio = 10.0_wp, min_gap = 1.0_wp
+   !> An outlier counts when its leave-one-out residual exceeds this many noise σ and
+   !> min_outlier (mm): 0.02 mm at 0.3 mm spacing is a curvature spike of about 0.2 1/mm, 60
+   !> times a 300 mm crown's.
+   real(wp), parameter :: outlier_sigmas = 10.0_wp, min_outlier = 0.02_wp
+   !> Outliers are sought where a running contact can be: canonical z up to this depth (mm)
+   !> from the tape circle (wheel) or the top (rail). The last millimetres of a flange (S1002:
+   !> 28 mm deep) touch only a climbing wheel, and its tip is where measurements are roughest.
+   real(wp), parameter :: running_depth = 25.0_wp
+
+   !> The largest gap and the largest outlier of a profile's points.
+   type :: point_anomaly_type
+      !> Largest distance between consecutive points (mm), from point gap_at to gap_at + 1.
+      real(wp) :: gap = 0.0_wp
+      integer :: gap_at = 0
+      !> Median distance between consecutive points (mm).
+      real(wp) :: spacing = 0.0_wp
+      !> Largest leave-one-out residual (mm, normal to the chord) and its point (0: none).
+      real(wp) :: outlier = 0.0_wp
+      integer :: outlier_at = 0
+      !> Whether the gap and the outlier count (gap_ratio, min_gap; outlier_sigmas,
+      !> min_outlier against the noise σ).
+      logical :: has_gap = .false., has_outlier = .false.
+   end type point_anomaly_type
 
    !> The noise of a profile's points.
    type :: noise_estimate_type
@@ -94,6 +128,71 @@ contains
       ! Median of χ²₃/3 is 2.3660/3.
       estimate%sigma = sqrt(median(variances(:m))/(2.365974_wp/3.0_wp))
    end subroutine estimate_noise
+
+   !> The largest gap and outlier of a profile's points (see the module description), judged
+   !> against its median spacing and the noise σ of [[estimate_noise]].
+   pure subroutine find_point_anomalies(read, cleaned, sigma, anomaly)
+      !> The points as read (for the gaps: the clean-up refills long straight stretches) and
+      !> as cleaned (for the outliers: the clean-up already merges zig-zags and back-steps).
+      type(profile_type), intent(in) :: read, cleaned
+      !> Their noise (mm rms).
+      real(wp), intent(in) :: sigma
+      !> The anomalies found.
+      type(point_anomaly_type), intent(out) :: anomaly
+      real(wp), allocatable :: gaps(:)
+      real(wp) :: r
+      integer :: n, j
+      logical :: ok
+      n = size(read%y)
+      if (n < 2) return
+      gaps = hypot(read%y(2:) - read%y(:n - 1), read%z(2:) - read%z(:n - 1))
+      anomaly%spacing = median(gaps)
+      anomaly%gap_at = maxloc(gaps, 1)
+      anomaly%gap = gaps(anomaly%gap_at)
+      anomaly%has_gap = anomaly%gap > max(gap_ratio*anomaly%spacing, min_gap)
+      n = size(cleaned%y)
+      do j = 4, n - 3
+         if (cleaned%z(j) > running_depth) cycle
+         if (allocated(cleaned%kink)) then
+            if (any(cleaned%kink(j - 2:j + 2))) cycle
+         end if
+         call leave_one_out(cleaned%y(j - 3:j + 3), cleaned%z(j - 3:j + 3), r, ok)
+         if (ok .and. r > anomaly%outlier) then
+            anomaly%outlier = r
+            anomaly%outlier_at = j
+         end if
+      end do
+      anomaly%has_outlier = anomaly%outlier > max(outlier_sigmas*sigma, min_outlier)
+   end subroutine find_point_anomalies
+
+   !> |residual| of the middle of seven points against the cubic fitted to the other six, in
+   !> the frame of the seven points' chord; ok = .false. where they do not advance along it or
+   !> turn by more than max_turn between their first and last segments (a flange tip, a
+   !> corner: a cubic does not follow them, while a single bad point in the middle does not
+   !> change that turn).
+   pure subroutine leave_one_out(y, z, residual, ok)
+      real(wp), intent(in) :: y(7), z(7)
+      real(wp), intent(out) :: residual
+      logical, intent(out) :: ok
+      real(wp), parameter :: max_turn = 30.0_wp*pi/180.0_wp
+      real(wp) :: c, s, length, xi(7), zeta(7), coef(4), turn
+      integer, parameter :: others(6) = [1, 2, 3, 5, 6, 7]
+      residual = 0.0_wp
+      turn = abs(atan2((y(2) - y(1))*(z(7) - z(6)) - (z(2) - z(1))*(y(7) - y(6)), &
+         (y(2) - y(1))*(y(7) - y(6)) + (z(2) - z(1))*(z(7) - z(6))))
+      length = hypot(y(7) - y(1), z(7) - z(1))
+      ok = length > 0.0_wp .and. turn <= max_turn
+      if (.not. ok) return
+      c = (y(7) - y(1))/length
+      s = (z(7) - z(1))/length
+      xi = (c*(y - y(1)) + s*(z - z(1)))/length - 0.5_wp
+      zeta = -s*(y - y(1)) + c*(z - z(1))
+      ok = all(xi(2:) > xi(:6))
+      if (.not. ok) return
+      call polynomial_fit(xi(others), zeta(others), coef, ok)
+      if (.not. ok) return
+      residual = abs(zeta(4) - (coef(1) + xi(4)*(coef(2) + xi(4)*(coef(3) + xi(4)*coef(4)))))
+   end subroutine leave_one_out
 
    !> Residual variance RSS/(7 − 4) of a cubic fitted to the points in their chord's frame;
    !> ok = .false. when the points do not advance along the chord (a turn of more than 90°).
