@@ -17,6 +17,9 @@ of arrays of the broadcast shape, keyed by the names of :mod:`shcontact.layout`,
 ``status`` (0 for a solved case).
 """
 import ctypes
+import functools
+import os
+import threading
 
 import numpy as np
 
@@ -37,9 +40,25 @@ class ShcontactError(RuntimeError):
     ``case`` (the index of the failed case in the input arrays, or None)."""
 
     def __init__(self, status, message, case=None):
+        if case is not None:
+            case = tuple(int(i) for i in case)
         where = "" if case is None else f" (case {case})"
         super().__init__(f"shcontact: status {status}{where}: {message}")
         self.status, self.message, self.case = status, message, case
+
+    def __reduce__(self):
+        # Picklable (multiprocessing sends a worker's exception to the parent).
+        return (type(self), (self.status, self.message, self.case))
+
+
+def _locked(method):
+    """Run a method of :class:`Contact` under the contact's lock: ctypes releases the GIL during
+    a library call, and a handle must not be used by two threads at once (doc/api.md)."""
+    @functools.wraps(method)
+    def wrapper(self, *args, **kwargs):
+        with self._lock:
+            return method(self, *args, **kwargs)
+    return wrapper
 
 
 def _c_double_array(values):
@@ -57,13 +76,16 @@ class Contact:
     ... as in doc/api.md) to values; ``fields=True`` keeps the element fields of every solve for
     :meth:`fields`. ``library``: path of libshcontact.so (else found as
     :mod:`shcontact._library` says).
+
+    One contact may be shared by threads: its calls take turns (a lock); contacts of their own
+    solve in parallel. A contact cannot be copied (it holds a C handle): create another one.
     """
 
     def __init__(self, wheel="builtin:S1002", rail="builtin:UIC60", side="right", *,
                  material=None, track=None, options=None, fields=False, library=None):
         self._start(library)
-        self._check(self._lib.shcontact_create(ctypes.byref(self._handle), wheel.encode(),
-                                               rail.encode(), self._side(side)))
+        self._check(self._lib.shcontact_create(ctypes.byref(self._handle), os.fsencode(wheel),
+                                               os.fsencode(rail), self._side(side)))
         self._track_defaults = self._resolved_track_defaults()
         self._configure(material, track, options, fields)
 
@@ -91,6 +113,7 @@ class Contact:
     # --- set-up --------------------------------------------------------------------------------
 
     def _start(self, library):
+        self._lock = threading.RLock()
         self._lib = load_library(library)
         self._handle = ctypes.c_void_p()
         self._fields = False
@@ -118,11 +141,18 @@ class Contact:
         if fields:
             self.set_option("output%fields", "all")
 
-    def set_material(self, shear_modulus=82670.0, poisson=0.27, friction=0.3):
-        """Shear modulus G (MPa), Poisson's ratio, friction coefficient."""
-        self._check(self._lib.shcontact_set_material(self._ptr(), shear_modulus, poisson,
-                                                     friction))
+    @_locked
+    def set_material(self, shear_modulus=None, poisson=None, friction=None):
+        """Shear modulus G (MPa), Poisson's ratio, friction coefficient; those not given keep the
+        values the contact holds now."""
+        now = {name: self.value("material%" + name) if given is None else given
+               for name, given in (("shear_modulus", shear_modulus), ("poisson", poisson),
+                                   ("friction", friction))}
+        self._check(self._lib.shcontact_set_material(self._ptr(), float(now["shear_modulus"]),
+                                                     float(now["poisson"]),
+                                                     float(now["friction"])))
 
+    @_locked
     def set_track(self, **track):
         """Track: ``gauge``, ``gauge_height`` (mm), ``inclination`` (slope, 1:40 = 0.025),
         ``rail_canted`` (the rail profile is already canted), ``flange_back_distance``,
@@ -139,12 +169,15 @@ class Contact:
             int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
             t["nominal_radius"]))
 
+    @_locked
     def set_option(self, key, value):
         """One option as in the app's case files (``"tangential%bound"``, ``"clipped"``)."""
         self._check(self._lib.shcontact_set_option(self._ptr(), key.encode(), str(value).encode()))
         if key.strip().lower() == "output%fields":
-            self._fields = str(value).strip().lower() in ("all", "1")
+            self._fields = str(value).strip().strip("'\"").strip().lower() in (
+                "all", "1", "true", ".true.")
 
+    @_locked
     def value(self, key, patch=0):
         """One number by key (``shcontact_get_value``): a numeric input ``group%variable`` as
         the handle holds it now (``"track%flange_back_position"``, ``"material%friction"``, ...),
@@ -155,6 +188,7 @@ class Contact:
                                                   ctypes.byref(x)))
         return x.value
 
+    @_locked
     def profile(self, kind):
         """The points (y, z) in mm of the contact's ``"wheel"`` or ``"rail"`` profile, as created
         (the form :meth:`from_arrays` takes)."""
@@ -228,6 +262,7 @@ class Contact:
 
         return self._loop(call, inputs, layout.KINEMATIC, errors)
 
+    @_locked
     def patch(self, patch):
         """The values of patch ``patch`` (1-based) of the last solve, as a dict of floats
         (:data:`layout.PATCH`; after :meth:`solve_kinematic` with the creepages and x_track)."""
@@ -242,6 +277,7 @@ class Contact:
             names, offsets = layout.PATCH, range(len(layout.PATCH))
         return {name: values[i] for name, i in zip(names, offsets)}
 
+    @_locked
     def fields(self, patch=None):
         """The element fields of patch ``patch`` (1-based; default the main patch) of the last
         solve, which must have been made with fields on (``Contact(..., fields=True)``): a dict of
@@ -287,6 +323,7 @@ class Contact:
         (name, value), = given.items()
         return layout.LOAD_MODES[name], value
 
+    @_locked
     def _loop(self, call, inputs, names, errors):
         if errors not in ("raise", "nan"):
             raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
@@ -333,11 +370,20 @@ class Contact:
         if stat != 0:
             raise ShcontactError(stat, self._message())
 
+    @_locked
     def close(self):
         """Release the handle (also done when the object is collected)."""
         if getattr(self, "_handle", None):
             self._lib.shcontact_destroy(self._handle)
             self._handle = ctypes.c_void_p()
+
+    def __copy__(self):
+        raise TypeError("shcontact: a Contact holds a C handle and cannot be copied; create "
+                        "another Contact (the same arguments, or Contact.from_arrays with "
+                        "this one's profile('wheel') and profile('rail'))")
+
+    def __deepcopy__(self, memo):
+        return self.__copy__()
 
     def __enter__(self):
         return self

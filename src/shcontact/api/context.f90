@@ -749,10 +749,17 @@ contains
       character(len=*), intent(in) :: key, text
       logical, intent(inout) :: keep
       type(error_type), allocatable, intent(out) :: error
-      select case (trim(adjustl(to_lower(text))))
-      case ('all', '1')
+      character(len=:), allocatable :: word
+      ! Quotes optional, as for every text option (doc/api.md): 'all' or all.
+      word = trim(adjustl(to_lower(text)))
+      if (len(word) >= 2) then
+         if ((word(1:1) == "'" .or. word(1:1) == '"') .and. word(len(word):) == word(1:1)) &
+            word = trim(adjustl(word(2:len(word) - 1)))
+      end if
+      select case (word)
+      case ('all', '1', 'true', '.true.')
          keep = .true.
-      case ('none', '0')
+      case ('none', '0', 'false', '.false.')
          keep = .false.
       case default
          call fatal_error(error, "option "//key//" = '"//trim(text)//"': expected 'all' "// &
