@@ -4,7 +4,7 @@ module shcontact_app_commands
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
-   use shcontact_core_strings, only: str_int, str_real, visible
+   use shcontact_core_strings, only: str_int, str_real, visible, to_lower
    use shcontact_core_text, only: string_type
    use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
       report_header, report_lines, report_case_text, report_units, iso_timestamp, &
@@ -17,7 +17,7 @@ module shcontact_app_commands
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
    use shcontact_app_environment, only: slurm_shard, in_slurm_array
-   use shcontact_core_files, only: peak_memory_kib
+   use shcontact_core_files, only: peak_memory_kib, canonical_path
    implicit none
    private
 
@@ -96,7 +96,7 @@ contains
             status = report_error(error)
             return
          end if
-         call put_text(config_namelist(config))
+         call put_text(config_namelist(with_absolute_profiles(config)))
          if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: the configuration is '// &
             'valid ('//str_int(config%n_cases())//' case(s))'
          return
@@ -181,6 +181,20 @@ contains
          notes = notes(i + 1:)
       end do
    end subroutine print_profile_notes
+
+   !> The configuration with its profile files named by absolute paths (built-in profiles as
+   !> they are): `--check` prints a case file that reproduces the run wherever it is saved (a
+   !> case file's relative paths are taken from its own directory; the resolved ones are
+   !> relative to the working directory).
+   function with_absolute_profiles(config) result(resolved)
+      type(case_config_type), intent(in) :: config
+      type(case_config_type) :: resolved
+      resolved = config
+      if (index(to_lower(adjustl(config%profiles%wheel)), 'builtin:') /= 1) &
+         resolved%profiles%wheel = canonical_path(trim(config%profiles%wheel))
+      if (index(to_lower(adjustl(config%profiles%rail)), 'builtin:') /= 1) &
+         resolved%profiles%rail = canonical_path(trim(config%profiles%rail))
+   end function with_absolute_profiles
 
    function resumed_note(outcome) result(text)
       type(sweep_outcome_type), intent(in) :: outcome

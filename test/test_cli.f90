@@ -66,7 +66,8 @@ contains
          new_unittest('doc_commands_write_outside_the_repository', test_doc_outputs), &
          new_unittest('run_never_writes_its_inputs', test_run_inputs_kept), &
          new_unittest('stdout_write_error_is_status_3', test_stdout_full), &
-         new_unittest('shard_of_failed_cases_writes_its_file', test_failed_shard) &
+         new_unittest('shard_of_failed_cases_writes_its_file', test_failed_shard), &
+         new_unittest('check_output_reproduces_elsewhere', test_check_elsewhere) &
          ]
    end subroutine collect_cli
 
@@ -218,6 +219,25 @@ contains
       call shell('h5diff -q --exclude-attribute=/ '//dir//'/m.h5 '//dir//'/f.h5', k)
       call check(error, k, 0, message='the merged shards differ from the unsharded run')
    end subroutine test_failed_shard
+
+   !> `run --check` output saved next to a case file in another directory reproduces the run:
+   !> its profile paths are absolute (they were relative to the working directory, so the saved
+   !> file named sub/sub/prof/... and failed with status 3).
+   subroutine test_check_elsewhere(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, first
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_check_elsewhere')
+      call shell('mkdir -p '//dir//'/sub/prof && cp data/profiles/S1002.txt '//dir// &
+         '/sub/prof/')
+      call write_lines(dir//'/sub/rel.nml', ["&profiles wheel = 'prof/S1002.txt' /"])
+      call run_expect(error, dir, 'run --check -q sub/rel.nml', 0, first, err)
+      if (allocated(error)) return
+      call write_lines(dir//'/sub/resolved.nml', [first])
+      call run_expect(error, dir, 'run --check -q sub/resolved.nml', 0, out, err)
+      if (allocated(error)) return
+      call check(error, out == first, message='the saved --check output resolves otherwise')
+   end subroutine test_check_elsewhere
 
    !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0; every
    !> option a command's help lists is one the command accepts.
