@@ -118,7 +118,11 @@ class ResultFile:
     def group(self, case, patch, part="tangential"):
         """Path of ``part`` (geometry, normal, tangential) of a patch of a case."""
         with self._open() as f:
-            return f"{self._case_path(f, case)}/patch_{patch}/{part}"
+            path = f"{self._case_path(f, case)}/patch_{patch}"
+            if path not in f:
+                raise KeyError(f"shcontact: case {case} has no patch {patch} in the file "
+                               f"(its patches: {self.patches(case)})")
+            return f"{path}/{part}"
 
     def fields(self, case=1, patch=1):
         """The tangential group of a case's patch: forces (scalars, N, N mm) and the element
@@ -152,6 +156,11 @@ class ResultFile:
         import xarray as xr
         h5py = _h5py()
         with self._open() as f:
+            if group not in f:
+                if group == "failures":  # none failed: an empty table, as failures() gives
+                    return xr.Dataset({"case": ("case", np.zeros(0, dtype=np.int32)),
+                                       "message": ("case", np.zeros(0, dtype=str))})
+                raise KeyError(f"shcontact: no group '{group}' in the file")
             g = f[group]
             variables, coords = {}, {}
             for name in g:

@@ -39,6 +39,8 @@ def test_fields_of_a_case(run_app):
         assert np.sum(t["py"] * area) == pytest.approx(t["fy"], rel=1e-9)
     with pytest.raises(KeyError, match="no group of case 99"):
         f.fields(99, 1)
+    with pytest.raises(KeyError, match=f"case {both[0]} has no patch 5"):
+        f.fields(both[0], 5)
 
 
 def test_to_xarray(run_app):
@@ -54,6 +56,8 @@ def test_to_xarray(run_app):
     assert t["dx"].dims == ("y",)
     n = f.to_xarray(f.group(1, 1, "normal"))
     assert n["p0"].dims == ("y",)
+    # No case failed: an empty failure table, as failures() gives (it was a raw h5py KeyError).
+    assert f.to_xarray("failures").sizes.get("case", 0) == 0
 
 
 def test_xarray_opens_every_group(run_app):
