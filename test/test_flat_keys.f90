@@ -788,6 +788,14 @@ contains
       call shc_destroy(ih, k)
       call check(error, istat, stat_invalid_input, message='one wheel at t_y = -40 mm')
       if (allocated(error)) return
+      ! A blank profile name: status 2 and a message saying so (was status 3, "Cannot open
+      ! file ''").
+      call shc_create(ih, '  ', 'builtin:UIC60', 1, istat)
+      call shc_errmsg(ih, msg)
+      call shc_destroy(ih, k)
+      call check(error, istat == stat_invalid_input .and. index(msg, 'empty profile name') > 0, &
+         message='blank wheel name: '//trim(msg))
+      if (allocated(error)) return
       ! NULL results through C: status 1 and a message, the handle still usable.
       wheel = to_chars('builtin:S1002', 14)
       rail = to_chars('builtin:UIC60', 14)

@@ -8,7 +8,7 @@
 !> specification into a [[profile_type]].
 module shcontact_profile_source
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type
+   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_profile_plausibility, only: check_plausible
    use shcontact_core_strings, only: to_lower
    use shcontact_profile_points, only: profile_type, profile_kind_wheel, array_hints
@@ -51,6 +51,12 @@ contains
       character(len=:), allocatable :: fmt, text
 
       text = trim(adjustl(spec))
+      if (len(text) == 0) then
+         call fatal_error(error, 'empty profile name: expected builtin:NAME ('// &
+            'builtin:S1002, builtin:UIC60, builtin:UIC60-canted) or a profile file name', &
+            stat_invalid_input)
+         return
+      end if
       if (index(to_lower(text), 'builtin:') == 1) then
          call builtin_profile(text(9:), profile, error)
          if (present(as_read)) as_read = profile
