@@ -216,6 +216,23 @@ contains
       if (allocated(error)) return
       call check(error, p%s(5), 2*hypot(5.0_wp, 1.5_wp) + 2*hypot(5.0_wp, 0.5_wp), &
          'arc length', thr=1.0e-12_wp)
+      if (allocated(error)) return
+      ! Decimal commas (a German locale): one message naming the line and the fix (they were
+      ! read as four numbers per line, and the message blamed the length unit).
+      call write_text(file, '# kind = rail'//crlf//'-10,0 2,0'//crlf//'-5,0;0,5'//crlf// &
+         '0,0 0,0'//crlf//'5,0 0,5'//crlf//'10,0 2,0'//crlf)
+      call read_profile(file, p, err)
+      call check(error, allocated(err), 'decimal commas accepted')
+      if (allocated(error)) return
+      call check(error, index(err%message, 'line 2') > 0 .and. index(err%message, &
+         'decimal commas') > 0 .and. index(err%message, "'-10.0 2.0'") > 0, err%message)
+      if (allocated(error)) return
+      ! Commas as separators (with decimal points, or between integers) still read.
+      call write_text(file, '# kind = rail'//crlf//'-10,2'//crlf//'-5.0,0.5'//crlf// &
+         '0,0'//crlf//'5.0, 0.5'//crlf//'10,2'//crlf)
+      call read_profile(file, p, err)
+      if (failed(error, err)) return
+      call check(error, p%size(), 5, 'comma-separated points')
    end subroutine test_file_variants
 
    !> The SIMPACK wheel with CRLF line ends and tabs reads exactly as the original.

@@ -877,6 +877,13 @@ contains
       real(wp), allocatable :: values(:)
       integer :: i, stat, need
 
+      if (decimal_commas(text)) then
+         call fatal_error(error, at(filename, il)//"'"//trim(text)//"' looks like numbers "// &
+            "with decimal commas (a comma inside each of its blank-separated numbers); "// &
+            "write them with a decimal point: '"//translate_commas(trim(text))//"'", &
+            stat_invalid_input)
+         return
+      end if
       tokens = split_tokens(text)
       need = max(col_y, col_z)
       allocate (values(size(tokens)))
@@ -910,6 +917,62 @@ contains
       end if
       call push_point(points, values(col_y), values(col_z), il)
    end subroutine read_point
+
+   !> A data line written with decimal commas (a German or French locale): no decimal point,
+   !> at least two blank- or semicolon-separated fields, each holding exactly one comma with a
+   !> digit on both sides (`61,3221 -22,1058`). Commas as separators (`61.3,-22.1`, `61,-22`)
+   !> do not match.
+   pure logical function decimal_commas(text)
+      character(len=*), intent(in) :: text
+      integer :: i, fields, commas, start
+      logical :: in_field
+      decimal_commas = .false.
+      if (index(text, '.') > 0 .or. index(text, ',') == 0) return
+      fields = 0
+      in_field = .false.
+      start = 0
+      do i = 1, len_trim(text) + 1
+         if (i <= len_trim(text)) then
+            if (scan(text(i:i), ' ;'//achar(9)) == 0) then
+               if (.not. in_field) start = i
+               in_field = .true.
+               cycle
+            end if
+         end if
+         if (.not. in_field) cycle
+         in_field = .false.
+         fields = fields + 1
+         commas = count_char(text(start:i - 1), ',')
+         if (commas /= 1) return
+         associate (c => start - 1 + index(text(start:i - 1), ','))
+            if (c == start .or. c == i - 1) return
+            if (scan(text(c - 1:c - 1), '0123456789') == 0 .or. &
+                scan(text(c + 1:c + 1), '0123456789') == 0) return
+         end associate
+      end do
+      decimal_commas = fields >= 2
+   end function decimal_commas
+
+   pure integer function count_char(text, c) result(n)
+      character(len=*), intent(in) :: text
+      character, intent(in) :: c
+      integer :: i
+      n = 0
+      do i = 1, len(text)
+         if (text(i:i) == c) n = n + 1
+      end do
+   end function count_char
+
+   !> The text with its commas turned into decimal points.
+   pure function translate_commas(text) result(out)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: out
+      integer :: i
+      out = text
+      do i = 1, len(out)
+         if (out(i:i) == ',') out(i:i) = '.'
+      end do
+   end function translate_commas
 
    pure function expectation(col_y, col_z) result(text)
       integer, intent(in) :: col_y, col_z
