@@ -67,7 +67,8 @@ contains
          new_unittest('run_never_writes_its_inputs', test_run_inputs_kept), &
          new_unittest('stdout_write_error_is_status_3', test_stdout_full), &
          new_unittest('shard_of_failed_cases_writes_its_file', test_failed_shard), &
-         new_unittest('check_output_reproduces_elsewhere', test_check_elsewhere) &
+         new_unittest('check_output_reproduces_elsewhere', test_check_elsewhere), &
+         new_unittest('headline_example_is_the_default', test_headline_default) &
          ]
    end subroutine collect_cli
 
@@ -238,6 +239,24 @@ contains
       if (allocated(error)) return
       call check(error, out == first, message='the saved --check output resolves otherwise')
    end subroutine test_check_elsewhere
+
+   !> examples/headline.nml says that every value in it is the built-in default: its resolved
+   !> configuration equals the default case's but for its output (it held the old default
+   !> reduction 'local-hertz' and solved another case: F_x −5912.7 against −5841.0 N).
+   subroutine test_headline_default(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, default
+      character(len=*), parameter :: same_output = ' --check -q --set output%file=x.h5 '// &
+         '--set output%fields=all'
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_headline_default')
+      call run_expect(error, dir, 'run'//same_output, 0, default, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run '//current_directory()//'/examples/headline.nml'// &
+         same_output, 0, out, err)
+      if (allocated(error)) return
+      call check(error, out == default, message='examples/headline.nml is not the default case')
+   end subroutine test_headline_default
 
    !> `COMMAND --help` and `help COMMAND` print that command's help on stdout, status 0; every
    !> option a command's help lists is one the command accepts.
