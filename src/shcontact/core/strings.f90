@@ -6,7 +6,7 @@ module shcontact_core_strings
    private
 
    public :: to_lower, str_int, str_real, visible, str_format, format_length, &
-      control_characters
+      control_characters, replaced
 
    !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
    !> file's tabs and line ends are taken by the line reader first).
@@ -22,6 +22,18 @@ module shcontact_core_strings
    end interface str_int
 
 contains
+
+   !> The text with every character `from` turned into `to`.
+   pure function replaced(text, from, to) result(out)
+      character(len=*), intent(in) :: text
+      character, intent(in) :: from, to
+      character(len=len(text)) :: out
+      integer :: i
+      out = text
+      do i = 1, len(out)
+         if (out(i:i) == from) out(i:i) = to
+      end do
+   end function replaced
 
    !> ASCII lower case (option names, file extensions).
    pure function to_lower(text) result(low)

@@ -175,19 +175,13 @@ contains
       real(wp), intent(out) :: residual
       logical, intent(out) :: ok
       real(wp), parameter :: max_turn = 30.0_wp*pi/180.0_wp
-      real(wp) :: c, s, length, xi(7), zeta(7), coef(4), turn
+      real(wp) :: xi(7), zeta(7), coef(4), turn
       integer, parameter :: others(6) = [1, 2, 3, 5, 6, 7]
       residual = 0.0_wp
       turn = abs(atan2((y(2) - y(1))*(z(7) - z(6)) - (z(2) - z(1))*(y(7) - y(6)), &
          (y(2) - y(1))*(y(7) - y(6)) + (z(2) - z(1))*(z(7) - z(6))))
-      length = hypot(y(7) - y(1), z(7) - z(1))
-      ok = length > 0.0_wp .and. turn <= max_turn
-      if (.not. ok) return
-      c = (y(7) - y(1))/length
-      s = (z(7) - z(1))/length
-      xi = (c*(y - y(1)) + s*(z - z(1)))/length - 0.5_wp
-      zeta = -s*(y - y(1)) + c*(z - z(1))
-      ok = all(xi(2:) > xi(:6))
+      ok = turn <= max_turn
+      if (ok) call chord_frame(y, z, xi, zeta, ok)
       if (.not. ok) return
       call polynomial_fit(xi(others), zeta(others), coef, ok)
       if (.not. ok) return
@@ -200,17 +194,10 @@ contains
       real(wp), intent(in) :: y(:), z(:)
       real(wp), intent(out) :: variance
       logical, intent(out) :: ok
-      real(wp) :: c, s, length, xi(size(y)), zeta(size(y)), coef(4)
+      real(wp) :: xi(size(y)), zeta(size(y)), coef(4)
       integer :: i
       variance = 0.0_wp
-      length = hypot(y(size(y)) - y(1), z(size(z)) - z(1))
-      ok = length > 0.0_wp
-      if (.not. ok) return
-      c = (y(size(y)) - y(1))/length
-      s = (z(size(z)) - z(1))/length
-      xi = (c*(y - y(1)) + s*(z - z(1)))/length - 0.5_wp
-      zeta = -s*(y - y(1)) + c*(z - z(1))
-      ok = all(xi(2:) > xi(:size(xi) - 1))
+      call chord_frame(y, z, xi, zeta, ok)
       if (.not. ok) return
       call polynomial_fit(xi, zeta, coef, ok)
       if (.not. ok) return
@@ -220,6 +207,28 @@ contains
       end do
       variance = variance/real(size(y) - 4, wp)
    end subroutine window_variance
+
+   !> Points in the frame of their chord: ξ along it (−1/2 … 1/2), ζ normal to it (mm);
+   !> ok = .false. when the chord has no length or the points do not advance along it (a turn
+   !> of more than 90°).
+   pure subroutine chord_frame(y, z, xi, zeta, ok)
+      real(wp), intent(in) :: y(:), z(:)
+      real(wp), intent(out) :: xi(:), zeta(:)
+      logical, intent(out) :: ok
+      real(wp) :: c, s, length
+      integer :: n
+      n = size(y)
+      xi = 0.0_wp
+      zeta = 0.0_wp
+      length = hypot(y(n) - y(1), z(n) - z(1))
+      ok = length > 0.0_wp
+      if (.not. ok) return
+      c = (y(n) - y(1))/length
+      s = (z(n) - z(1))/length
+      xi = (c*(y - y(1)) + s*(z - z(1)))/length - 0.5_wp
+      zeta = -s*(y - y(1)) + c*(z - z(1))
+      ok = all(xi(2:) > xi(:n - 1))
+   end subroutine chord_frame
 
    !> Least-squares polynomial f ≈ Σ coef(k) x^(k−1) of degree size(coef) − 1 (normal
    !> equations, Gaussian elimination with partial pivoting; a few coefficients only);

@@ -1,6 +1,7 @@
 !> A wheel or rail profile as a list of points (the project's canonical form, doc/theory.md §5.1).
 module shcontact_profile_points
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: replaced
    implicit none
    private
 
@@ -119,23 +120,12 @@ contains
          case default; text = 'pass the coordinates times '//value//' (mm)'
          end select
       else if (trim(prefix) == '--') then
-         text = '--'//dashed(name)//' '//value
+         text = '--'//replaced(name, '_', '-')//' '//value
       else if (name == 'scale') then
          text = trim(prefix)//name//' = '//value
       else
          text = trim(prefix)//name//" = '"//value//"'"
       end if
    end function option_hint
-
-   !> mirror_z → mirror-z.
-   pure function dashed(name) result(text)
-      character(len=*), intent(in) :: name
-      character(len=len(name)) :: text
-      integer :: i
-      text = name
-      do i = 1, len(text)
-         if (text(i:i) == '_') text(i:i) = '-'
-      end do
-   end function dashed
 
 end module shcontact_profile_points

@@ -25,7 +25,7 @@
 !> numbers. Every rejection names the file, the line and the reason.
 module shcontact_profile_reader
    use shcontact_core_kinds, only: wp
-   use shcontact_core_strings, only: lower => to_lower, str_int, str_real
+   use shcontact_core_strings, only: lower => to_lower, str_int, str_real, replaced
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_io, stat_usage
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel, &
       option_hint
@@ -880,7 +880,7 @@ contains
       if (decimal_commas(text)) then
          call fatal_error(error, at(filename, il)//"'"//trim(text)//"' looks like numbers "// &
             "with decimal commas (a comma inside each of its blank-separated numbers); "// &
-            "write them with a decimal point: '"//translate_commas(trim(text))//"'", &
+            "write them with a decimal point: '"//replaced(trim(text), ',', '.')//"'", &
             stat_invalid_input)
          return
       end if
@@ -924,55 +924,22 @@ contains
    !> do not match.
    pure logical function decimal_commas(text)
       character(len=*), intent(in) :: text
-      integer :: i, fields, commas, start
-      logical :: in_field
+      type(text_line), allocatable :: fields(:)
+      integer :: i, c
       decimal_commas = .false.
       if (index(text, '.') > 0 .or. index(text, ',') == 0) return
-      fields = 0
-      in_field = .false.
-      start = 0
-      do i = 1, len_trim(text) + 1
-         if (i <= len_trim(text)) then
-            if (scan(text(i:i), ' ;'//achar(9)) == 0) then
-               if (.not. in_field) start = i
-               in_field = .true.
-               cycle
-            end if
-         end if
-         if (.not. in_field) cycle
-         in_field = .false.
-         fields = fields + 1
-         commas = count_char(text(start:i - 1), ',')
-         if (commas /= 1) return
-         associate (c => start - 1 + index(text(start:i - 1), ','))
-            if (c == start .or. c == i - 1) return
-            if (scan(text(c - 1:c - 1), '0123456789') == 0 .or. &
-                scan(text(c + 1:c + 1), '0123456789') == 0) return
+      fields = split_tokens(text, separators=' ;')
+      if (size(fields) < 2) return
+      do i = 1, size(fields)
+         associate (f => fields(i)%text)
+            c = index(f, ',')
+            if (c <= 1 .or. c == len(f) .or. index(f, ',', back=.true.) /= c) return
+            if (scan(f(c - 1:c - 1), '0123456789') == 0 .or. &
+                scan(f(c + 1:c + 1), '0123456789') == 0) return
          end associate
       end do
-      decimal_commas = fields >= 2
+      decimal_commas = .true.
    end function decimal_commas
-
-   pure integer function count_char(text, c) result(n)
-      character(len=*), intent(in) :: text
-      character, intent(in) :: c
-      integer :: i
-      n = 0
-      do i = 1, len(text)
-         if (text(i:i) == c) n = n + 1
-      end do
-   end function count_char
-
-   !> The text with its commas turned into decimal points.
-   pure function translate_commas(text) result(out)
-      character(len=*), intent(in) :: text
-      character(len=len(text)) :: out
-      integer :: i
-      out = text
-      do i = 1, len(out)
-         if (out(i:i) == ',') out(i:i) = '.'
-      end do
-   end function translate_commas
 
    pure function expectation(col_y, col_z) result(text)
       integer, intent(in) :: col_y, col_z
@@ -1024,19 +991,24 @@ contains
       end do
    end function numeric_line
 
-   !> Tokens separated by blanks, tabs, commas or semicolons.
-   pure function split_tokens(text) result(tokens)
+   !> Tokens separated by blanks, tabs, commas or semicolons (or by the characters of
+   !> `separators` and tabs).
+   pure function split_tokens(text, separators) result(tokens)
       character(len=*), intent(in) :: text
+      character(len=*), intent(in), optional :: separators
       type(text_line), allocatable :: tokens(:)
+      character(len=:), allocatable :: between
       integer :: i, start, n, pass
       logical :: inside
+      between = ' ,;'//achar(9)
+      if (present(separators)) between = separators//achar(9)
       do pass = 1, 2
          n = 0
          inside = .false.
          start = 1
          do i = 1, len(text) + 1
             if (i <= len(text)) then
-               if (scan(text(i:i), ' ,;'//achar(9)) == 0) then
+               if (scan(text(i:i), between) == 0) then
                   if (.not. inside) start = i
                   inside = .true.
                   cycle
