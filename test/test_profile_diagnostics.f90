@@ -289,6 +289,16 @@ contains
       call expect_in(error, text, 'smoothing  profiles%rail_smoothing = 8.1 mm keeps the '// &
          'curvature noise below 3.3E-04 1/mm (10 % of a 300 mm crown; 1.1E-02 1/mm at 2 mm)', &
          'avg_HR smoothing')
+      if (allocated(error)) return
+      ! The other lines doc/profiles.md quotes.
+      call expect_in(error, text, 'points     147 read, 110 after clean-up', 'avg_HR points')
+      if (allocated(error)) return
+      call expect_in(error, text, 'gap        largest 0.771 mm between points 1 and 2 of 147 '// &
+         '(y = -46.59 to -46.46 mm), median spacing 0.500 mm'//new_line('a'), 'avg_HR gap')
+      if (allocated(error)) return
+      call expect_in(error, text, 'outlier    largest 1.20E-02 mm off the cubic through its '// &
+         'six neighbours (within 25 mm of the running surface) at point 22 of 110 (y, z = '// &
+         '-44.510, 12.400 mm)'//new_line('a'), 'avg_HR outlier')
    end subroutine test_sample_files
 
 end module test_profile_diagnostics
