@@ -39,12 +39,12 @@ module test_contact_surface
    !> F_n,CONTACT)/F_n,CONTACT with `contact_surface` 'wheel' and 'interface' (the table of
    !> doc/validation.md §6.8), held within ±tolerance.
    integer, parameter :: n_cases = 15
-   real(wp), parameter :: held_wheel(n_cases) = [0.0005_wp, 0.0033_wp, 0.0048_wp, &
-      0.0430_wp, 0.0211_wp, 0.0146_wp, 0.0327_wp, 0.0183_wp, 0.0143_wp, &
-      -0.0144_wp, -0.0008_wp, 0.0005_wp, -0.0436_wp, -0.0182_wp, -0.0041_wp]
-   real(wp), parameter :: held_interface(n_cases) = [-0.0002_wp, 0.0032_wp, 0.0049_wp, &
-      0.0435_wp, 0.0197_wp, 0.0145_wp, 0.0343_wp, 0.0185_wp, 0.0142_wp, &
-      0.0328_wp, 0.0147_wp, 0.0081_wp, 0.0002_wp, 0.0031_wp, 0.0058_wp]
+   real(wp), parameter :: held_wheel(n_cases) = [0.0008_wp, 0.0032_wp, 0.0045_wp, &
+      0.0496_wp, 0.0187_wp, 0.0103_wp, 0.0396_wp, 0.0163_wp, 0.0102_wp, &
+      -0.0090_wp, -0.0021_wp, -0.0029_wp, -0.0402_wp, -0.0193_wp, -0.0069_wp]
+   real(wp), parameter :: held_interface(n_cases) = [0.0001_wp, 0.0030_wp, 0.0047_wp, &
+      0.0500_wp, 0.0174_wp, 0.0103_wp, 0.0413_wp, 0.0165_wp, 0.0101_wp, &
+      0.0391_wp, 0.0133_wp, 0.0046_wp, 0.0042_wp, 0.0020_wp, 0.0030_wp]
    real(wp), parameter :: tolerance = 0.002_wp
    real(wp), parameter :: vertical_load = 64700.0_wp, mu = 0.3_wp
 
@@ -55,9 +55,9 @@ module test_contact_surface
    integer, parameter :: n_centre = 30
    real(wp), parameter :: held_linear(n_centre) = [0.0091_wp, 0.0088_wp, 0.0084_wp, 0.0006_wp, &
       0.0018_wp, -0.0022_wp, -0.0003_wp, -0.0017_wp, -0.0031_wp, -0.0316_wp, -0.0295_wp, &
-      -0.0340_wp, -0.0424_wp, -0.0451_wp, -0.0443_wp, 0.0045_wp, 0.0078_wp, 0.0089_wp, &
-      -0.0066_wp, -0.0020_wp, 0.0012_wp, -0.0245_wp, -0.0059_wp, 0.0006_wp, -0.0714_wp, &
-      -0.0283_wp, -0.0152_wp, -0.0936_wp, -0.0458_wp, -0.0212_wp]
+      -0.0340_wp, -0.0424_wp, -0.0451_wp, -0.0443_wp, 0.0048_wp, 0.0076_wp, 0.0087_wp, &
+      -0.0004_wp, -0.0043_wp, -0.0030_wp, -0.0180_wp, -0.0079_wp, -0.0034_wp, -0.0662_wp, &
+      -0.0296_wp, -0.0185_wp, -0.0903_wp, -0.0468_wp, -0.0239_wp]
    real(wp), parameter :: held_exact(n_centre) = [0.0071_wp, 0.0068_wp, 0.0065_wp, -0.0003_wp, &
       -0.0052_wp, -0.0031_wp, -0.0003_wp, -0.0017_wp, -0.0031_wp, 0.0035_wp, -0.0006_wp, &
       0.0008_wp, 0.0102_wp, 0.0099_wp, 0.0078_wp, 0.0018_wp, 0.0059_wp, 0.0077_wp, -0.0267_wp, &
@@ -144,7 +144,7 @@ contains
 
    !> The flange set's pure-rolling cases with both choices: the relative F_n differences of
    !> doc/validation.md §6.8 within ±0.002; 'interface' brings Y_WS 8.5 mm, yaw −8 mrad within
-   !> 1.2 % of CONTACT's conformal F_n where 'wheel' is 4.4 % low, and moves no F_n by more than
+   !> 1.2 % of CONTACT's conformal F_n where 'wheel' is 4.0 % low, and moves no F_n by more than
    !> 5 %.
    subroutine test_flange_forces(error)
       type(error_type), allocatable, intent(out) :: error
@@ -204,7 +204,7 @@ contains
             str_real(held_wheel(i))//' / '//str_real(held_interface(i)))
          if (allocated(error)) return
       end do
-      call check(error, abs(dfn(13, 2)) <= 0.012_wp .and. abs(dfn(13, 1)) >= 0.04_wp, &
+      call check(error, abs(dfn(13, 2)) <= 0.012_wp .and. abs(dfn(13, 1)) >= 0.035_wp, &
          message='Y_WS 8.5 mm, yaw −8 mrad: ΔF_n/F_n wheel '//str_real(dfn(13, 1))// &
          ', interface '//str_real(dfn(13, 2)))
       if (allocated(error)) return

@@ -101,8 +101,11 @@ contains
          call check(error, patch%gamma0, gamma0 + kappa*(y_star + d), thr=1.0e-5_wp, &
             message='contact angle at the reference point (the wheel''s point there)')
          if (allocated(error)) return
-         call check(error, patch%r0, geom%r0 + 4.0e-2_wp*(y_star + d), thr=1.0e-5_wp, &
-            message='rolling radius at the reference point')
+         ! The rolling radius is the slid wheel point's with either slide (the wheel's material
+         ! above y* after the vertical approach; the linear slide keeps only the gap unslid).
+         call check(error, patch%r0, geom%r0 + 4.0e-2_wp*(y_star - patch%approach* &
+            tan(gamma0)), thr=1.0e-5_wp, message='rolling radius at the reference point '// &
+            '(the slid wheel point''s)')
          if (allocated(error)) return
          call check(error, patch%gamma_plane, gamma0, message='contact plane of the first contact')
          if (allocated(error)) return

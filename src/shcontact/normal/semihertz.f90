@@ -817,6 +817,18 @@ contains
       call locate(prepared, patch%y_shift + slide, c, t)
       patch%gamma0 = lerp(prepared%gamma, c, t)
       patch%r0 = lerp(prepared%r_wheel, c, t)
+      if (.not. prepared%exact_slide) then
+         ! The linear slide keeps the gap and the angles of the unslid wheel, but the wheel's
+         ! material there is the slid one all the same: the rolling radii of the rigid slip
+         ! are those of the wheel points above the strips after the vertical approach.
+         slide = wheel_slide(prepared, patch%approach)
+         call locate(prepared, patch%y_shift + slide, c, t)
+         patch%r0 = lerp(prepared%r_wheel, c, t)
+         do j = 1, patch%n_strips
+            call locate(prepared, patch%y(j) + slide, c, t)
+            patch%r_wheel(j) = lerp(prepared%r_wheel, c, t)
+         end do
+      end if
       patch%y(1:patch%n_strips) = patch%y(1:patch%n_strips) - patch%y_shift
       patch%delta_r(1:patch%n_strips) = patch%r_wheel(1:patch%n_strips) - patch%r0
    end subroutine refer_to_loaded_point
@@ -1083,8 +1095,17 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       d = 0.0_wp
-      if (prepared%exact_slide) d = prepared%slide_rate*(approach + prepared%gap0)
+      if (prepared%exact_slide) d = wheel_slide(prepared, approach)
    end function slide_at
+
+   !> How far the wheel has moved along the contact plane at approach δ, whichever slide the
+   !> gap takes: d = −(δ + g₀) tan γ₀ (mm; [[prepare_slide]]). The wheel point above table
+   !> point y is the one that was at y + d.
+   pure real(wp) function wheel_slide(prepared, approach) result(d)
+      type(semihertz_geometry_type), intent(in) :: prepared
+      real(wp), intent(in) :: approach
+      d = slide_sign*tan(prepared%gamma0)*(approach + prepared%gap0)
+   end function wheel_slide
 
    !> Fraction of a cell from the inside point (ψ_in > 0) to the zero of the linear ψ, in [0, 1].
    pure real(wp) function crossing(psi_in, psi_out)
