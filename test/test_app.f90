@@ -363,7 +363,7 @@ contains
       call check(error, stat, 0, message='csv: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
       text = file_text(dir//'/out.txt')
-      call expect_in(error, text, 'case,status,n_patches,n_loaded,t_y,roll,normal_force,'// &
+      call expect_in(error, text, 'case,status,n_patches,n_loaded,main_patch,t_y,roll,normal_force,'// &
          'friction,bound,spin_model,nu_x,nu_y,phi,fn_total', 'csv header')
       if (allocated(error)) return
       call shell('test $(wc -l < '//dir//'/out.txt) -eq 13', stat)
@@ -886,7 +886,7 @@ contains
          'kinematic sweep with 1 and 2 threads')
       if (allocated(error)) return
       header = file_text(dir//'/one/out.txt')
-      call expect_in(error, header, 'case,status,n_patches,n_loaded,t_y,roll,yaw,'// &
+      call expect_in(error, header, 'case,status,n_patches,n_loaded,main_patch,t_y,roll,yaw,'// &
          'vertical_force,friction,bound,v_forward,v_lateral,v_vertical,roll_rate,yaw_rate,'// &
          'pitch_rate,fn_total,fx_total,fy_total,fz_total,fn,', &
          'csv header of a kinematic sweep')

@@ -573,10 +573,10 @@ contains
       header = line_of(out, 1)
       units = line_of(out, 2)
       row = line_of(out, 3)
-      call expect_in(error, header, 'case,status,n_patches,n_loaded,t_y,roll,normal_force,'// &
+      call expect_in(error, header, 'case,status,n_patches,n_loaded,main_patch,t_y,roll,normal_force,'// &
          'friction,bound,spin_model,nu_x,nu_y,phi,fn_total,', 'csv header')
       if (allocated(error)) return
-      call expect_in(error, units, '1,1,1,1,mm,rad,N,1,,,1,1,rad/mm,N,', 'units line')
+      call expect_in(error, units, '1,1,1,1,1,mm,rad,N,1,,,1,1,rad/mm,N,', 'units line')
       if (allocated(error)) return
       call expect_in(error, row, ',4.5,0.0,64700.0,0.3,weighted,uniform,0.00058,-0.001,'// &
          '0.000274,', 'the inputs of the case')
@@ -649,15 +649,15 @@ contains
       call run_expect(error, dir, "run -q --format csv --csv-units --set kinematics%mode=on "// &
          '--set kinematics%yaw=0.004 -o k.h5', 0, out, err)
       if (allocated(error)) return
-      call expect_in(error, line_of(out, 1), 'case,status,n_patches,n_loaded,t_y,roll,yaw,'// &
+      call expect_in(error, line_of(out, 1), 'case,status,n_patches,n_loaded,main_patch,t_y,roll,yaw,'// &
          'vertical_force,friction,bound,v_forward,v_lateral,v_vertical,roll_rate,yaw_rate,'// &
          'pitch_rate,fn_total,', 'kinematic csv header')
       if (allocated(error)) return
-      call expect_in(error, line_of(out, 2), '1,1,1,1,mm,rad,rad,N,1,,mm/s,mm/s,mm/s,rad/s,'// &
+      call expect_in(error, line_of(out, 2), '1,1,1,1,1,mm,rad,rad,N,1,,mm/s,mm/s,mm/s,rad/s,'// &
          'rad/s,rad/s,N,', 'kinematic units')
       if (allocated(error)) return
-      call expect_in(error, line_of(out, 3), '1,0,2,2,4.733,0.0,0.004,64700.0,0.3,weighted,'// &
-         '30000.0,', 'kinematic inputs (two patches, both loaded)')
+      call expect_in(error, line_of(out, 3), '1,0,2,2,1,4.733,0.0,0.004,64700.0,0.3,weighted,'// &
+         '30000.0,', 'kinematic inputs (two patches, both loaded, the first the main one)')
       call shell('rm -rf '//dir)
    end subroutine test_kinematic_inputs
 

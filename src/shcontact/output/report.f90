@@ -53,7 +53,7 @@ contains
       integer :: ia, k
       select case (format)
       case ('csv')
-         line = 'case,status,n_patches,n_loaded'
+         line = 'case,status,n_patches,n_loaded,main_patch'
          do ia = 1, n_sweep_axes
             if (reports_case_input(config, ia)) line = line//','//trim(sweep_axis_names(ia))
          end do
@@ -104,7 +104,7 @@ contains
       type(case_config_type), intent(in) :: config
       character(len=:), allocatable :: line
       integer :: ia, k
-      line = '1,1,1,1'
+      line = '1,1,1,1,1'
       do ia = 1, n_sweep_axes
          if (reports_case_input(config, ia)) line = line//','//trim(input_units(ia))
       end do
@@ -185,7 +185,8 @@ contains
       select case (format)
       case ('csv')
          line = str_int(icase)//','//str_int(summary%stat)//','// &
-            str_int(summary%n_patches)//','//str_int(summary%n_loaded)
+            str_int(summary%n_patches)//','//str_int(summary%n_loaded)//','// &
+            str_int(summary%main_patch)
          do ia = 1, n_sweep_axes
             if (reports_case_input(config, ia)) line = line//','// &
                trim(input_buffer(p, ia, .false., .false.))
@@ -201,7 +202,7 @@ contains
       case ('json')
          line = '{"case":'//str_int(icase)//',"status":'//str_int(summary%stat)// &
             ',"n_patches":'//str_int(summary%n_patches)//',"n_loaded":'// &
-            str_int(summary%n_loaded)
+            str_int(summary%n_loaded)//',"main_patch":'//str_int(summary%main_patch)
          do ia = 1, n_sweep_axes
             if (reports_case_input(config, ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
                '":'//trim(input_buffer(p, ia, .true., .false.))
