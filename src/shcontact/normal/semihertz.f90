@@ -813,17 +813,17 @@ contains
             j_hi - lo + 1, blend_depth*patch%approach_reference) + real(lo - 2, wp))* &
             prepared%h
       end if
-      ! The wheel's point there (slid by d with the exact slide).
+      ! The wheel's angle there (slid by d with the exact slide).
       call locate(prepared, patch%y_shift + slide, c, t)
       patch%gamma0 = lerp(prepared%gamma, c, t)
+      ! The rolling radii of the rigid slip are the slid wheel points' with either slide: the
+      ! linear slide keeps the gap and the angles of the unslid wheel, but the wheel's material
+      ! above the strips after the vertical approach is the slid one all the same.
+      slide = wheel_slide(prepared, patch%approach)
+      call locate(prepared, patch%y_shift + slide, c, t)
       patch%r0 = lerp(prepared%r_wheel, c, t)
       if (.not. prepared%exact_slide) then
-         ! The linear slide keeps the gap and the angles of the unslid wheel, but the wheel's
-         ! material there is the slid one all the same: the rolling radii of the rigid slip
-         ! are those of the wheel points above the strips after the vertical approach.
-         slide = wheel_slide(prepared, patch%approach)
-         call locate(prepared, patch%y_shift + slide, c, t)
-         patch%r0 = lerp(prepared%r_wheel, c, t)
+         ! (slid_strips has taken the exact slide's strips there already.)
          do j = 1, patch%n_strips
             call locate(prepared, patch%y(j) + slide, c, t)
             patch%r_wheel(j) = lerp(prepared%r_wheel, c, t)
