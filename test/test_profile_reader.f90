@@ -372,6 +372,8 @@ contains
          txt = tmp//'nokind.txt'
       character(len=60), parameter :: pts(6) = [character(len=60) :: &
          '-10 2', '-5 0.5', '0 0', '5 0.5', '10 2', 'point.end']
+      type(profile_type) :: p
+      type(lib_error), allocatable :: err
 
       call write_text(prr, lines_of([character(len=60) :: 'header.begin', 'type = 0', &
          'header.end', 'spline.begin', 'smoothing = 1', 'point.begin', pts, 'spline.end']))
@@ -414,6 +416,34 @@ contains
          '10 2', '5 0.5', 'Gauge=1435', '0 0', '-5 0.5', '-10 2']))
       call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &
          'bad.ban, line 6:', "header line 'Gauge=1435'", 'started (line 4)'])
+      if (allocated(error)) return
+      ! XYPoints counts the points commented out in the list too (MiniProf writes them so):
+      ! five lines, one commented, read; six declared, or four, are a file cut short or one
+      ! holding more than its header says.
+      call write_text(ban, lines_of([character(len=60) :: 'XYPoints=5', 'ColumnDef=X,Y', '', &
+         '10 2', '" 7.5 1.1', '5 0.5', '0 0', '-5 0.5', '-10 2']))
+      call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &
+         'bad.ban: the header declares XYPoints=5', 'holds 6 point(s) (5 read, 1 commented', &
+         'looks to hold more'])
+      if (allocated(error)) return
+      call write_text(ban, lines_of([character(len=60) :: 'XYPoints=7', 'ColumnDef=X,Y', '', &
+         '10 2', '" 7.5 1.1', '5 0.5', '0 0', '-5 0.5', '-10 2']))
+      call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &
+         'declares XYPoints=7', 'holds 6 point(s)', 'looks cut short'])
+      if (allocated(error)) return
+      call write_text(ban, lines_of([character(len=60) :: 'XYPoints=5.5', 'ColumnDef=X,Y', '', &
+         '10 2', '5 0.5', '0 0', '-5 0.5', '-10 2']))
+      call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &
+         'bad.ban, line 1:', "XYPoints = '5.5' is not a whole number"])
+      if (allocated(error)) return
+      call write_text(ban, lines_of([character(len=60) :: 'XYPoints=6', 'ColumnDef=X,Y', '', &
+         '10 2', '" 7.5 1.1', '5 0.5', '0 0', '-5 0.5', '-10 2']))
+      call read_profile(ban, p, err)
+      if (allocated(err)) then
+         call test_failed(error, 'six declared, five read and one commented: '//err%message)
+         return
+      end if
+      call check(error, p%size(), 5, 'the five points read, the commented one left out')
       if (allocated(error)) return
       call write_text(ban, lines_of([character(len=60) :: 'ColumnDef=A,Y,C', '', '10 2 0']))
       call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &

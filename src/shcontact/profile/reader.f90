@@ -769,7 +769,7 @@ contains
       type(file_settings), intent(inout) :: settings
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: text
-      integer :: il, col_x, col_y, first_data
+      integer :: il, col_x, col_y, first_data, declared, commented
       real(wp) :: offset(2)
       logical :: in_header, seen_header
 
@@ -779,19 +779,29 @@ contains
       in_header = .true.
       seen_header = .false.
       first_data = 0
+      declared = -1
+      commented = 0
       do il = 1, size(lines)
          text = trim(adjustl(lines(il)%text))
          if (len(text) == 0) then
             if (seen_header) in_header = .false.
             cycle
          end if
-         if (scan(text(1:1), '"#!%') == 1) cycle
+         if (scan(text(1:1), '"#!%') == 1) then
+            ! A point commented out in the point list (`" 43.70 38.51`) still counts in
+            ! XYPoints, as MiniProf writes it.
+            if (.not. in_header .or. first_data > 0) then
+               if (numeric_line(trim(adjustl(text(2:))))) commented = commented + 1
+            end if
+            cycle
+         end if
          ! A comment after a point: `-0.0986 -22.06   " zig-zag pattern`, `... % dent`.
          if (scan(text, '"#!%') > 0) text = trim(text(:scan(text, '"#!%') - 1))
          if (in_header) then
             if (.not. numeric_line(text) .or. header_numbers(lines, il)) then
                seen_header = .true.
-               call read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
+               call read_miniprof_key(filename, il, text, col_x, col_y, offset, declared, &
+                  error)
                if (allocated(error)) return
                cycle
             end if
@@ -806,6 +816,17 @@ contains
          call read_point(filename, il, text, col_x, col_y, points, error)
          if (allocated(error)) return
       end do
+      ! A file cut short in a transfer, or two lists pasted together, reads as a plausible
+      ! shorter or longer profile: the header's count tells.
+      if (declared >= 0 .and. points%n + commented /= declared) then
+         call fatal_error(error, filename//': the header declares XYPoints='// &
+            str_int(declared)//' but the point list holds '//str_int(points%n + commented)// &
+            ' point(s) ('//str_int(points%n)//' read, '//str_int(commented)// &
+            ' commented out): the file looks '//trim(merge('cut short   ', 'to hold more', &
+            points%n + commented < declared))//'; expected as many points as declared', &
+            stat_invalid_input)
+         return
+      end if
       points%y(:points%n) = points%y(:points%n) + offset(1)
       points%z(:points%n) = points%z(:points%n) + offset(2)
       settings%mirror_y_if_rail = .true.
@@ -829,11 +850,13 @@ contains
       end do
    end function header_numbers
 
-   subroutine read_miniprof_key(filename, il, text, col_x, col_y, offset, error)
+   subroutine read_miniprof_key(filename, il, text, col_x, col_y, offset, declared, error)
       character(len=*), intent(in) :: filename, text
       integer, intent(in) :: il
       integer, intent(inout) :: col_x, col_y
       real(wp), intent(inout) :: offset(2)
+      !> The header's `XYPoints` (left as it is when the line is another key or empty).
+      integer, intent(inout) :: declared
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: key, value
       type(text_line), allocatable :: names(:)
@@ -854,6 +877,14 @@ contains
          end do
          if (col_x == 0 .or. col_y == 0) call fatal_error(error, at(filename, il)// &
             "ColumnDef = '"//value//"' has no X and Y columns", stat_invalid_input)
+      case ('xypoints')
+         if (len(value) == 0) return
+         read (value, *, iostat=stat) declared
+         if (stat /= 0 .or. verify(value, '0123456789') /= 0) then
+            call fatal_error(error, at(filename, il)//"XYPoints = '"//value//"' is not a "// &
+               'whole number of points', stat_invalid_input)
+            return
+         end if
       case ('xoffset', 'yoffset')
          if (len(value) == 0) return
          i = merge(1, 2, key == 'xoffset')
