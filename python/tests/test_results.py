@@ -15,6 +15,10 @@ def test_summary_equals_csv(run_app):
         np.testing.assert_array_equal(s[column], [float(row[column]) for row in rows],
                                       err_msg=column)
     assert f.units()["fx"] == "N" and f.units()["phi"] == "rad/mm"
+    # Counts are integers, the joined contact's patch count as n_loaded.
+    for column in ("status", "n_patches", "n_loaded", "main_patch", "wheel_patches"):
+        assert np.issubdtype(s[column].dtype, np.integer), column
+    assert set(s["wheel_patches"]) <= {1, 2}
     assert f.attrs["software"] == "shcontact" and int(f.attrs["n_cases"]) == 34
     assert "&kinematics" in f.namelist
     assert f.failures()["case"].size == 0

@@ -13,7 +13,7 @@ module shcontact_case_result
 
    public :: case_summary_type, case_result_type, summary_columns, n_summary_columns
    public :: summary_value, set_summary_value, case_not_run, failure_type
-   public :: summary_column_used, case_summary, summary_column_help
+   public :: summary_column_used, case_summary, summary_column_help, summary_column_counts
 
    !> Index of the implied loops of the column tables.
    integer, private :: k_
@@ -126,6 +126,13 @@ contains
       logical, intent(in) :: kinematic
       summary_column_used = kinematic .or. .not. columns(k)%kinematic
    end function summary_column_used
+
+   !> True when summary column `k` is a count (stored as integers, as `n_loaded` is).
+   pure logical function summary_column_counts(k)
+      !> Column number.
+      integer, intent(in) :: k
+      summary_column_counts = columns(k)%summary == 'wheel_patches'
+   end function summary_column_counts
 
    !> The value of real summary column `k` (numbering of [[summary_columns]]).
    pure real(wp) function summary_value(s, k)

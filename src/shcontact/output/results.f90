@@ -57,7 +57,7 @@ module shcontact_output_results
    use shcontact_core_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, case_result_type, summary_columns, &
       n_summary_columns, summary_value, set_summary_value, case_not_run, summary_column_used, &
-      failure_type
+      failure_type, summary_column_counts
    implicit none
    private
 
@@ -576,8 +576,14 @@ contains
       !$omp end parallel do
       do k = 1, n_summary_columns
          if (.not. summary_column_used(k, config%is_kinematic())) cycle
-         call h5_write(file, 'summary/'//trim(summary_columns(1, k)), values(:, k), &
-            trim(summary_columns(2, k)), error)
+         if (summary_column_counts(k)) then
+            ints = nint(values(:, k))
+            call h5_write(file, 'summary/'//trim(summary_columns(1, k)), ints, &
+               trim(summary_columns(2, k)), error)
+         else
+            call h5_write(file, 'summary/'//trim(summary_columns(1, k)), values(:, k), &
+               trim(summary_columns(2, k)), error)
+         end if
          if (allocated(error)) return
       end do
       call attach_scale(file, 'summary', 'case', 'case', [character(len=17) :: 'status', &
