@@ -71,6 +71,8 @@ module shcontact_api_context
       !> Message of the last operation ('' on success).
       character(len=message_capacity) :: message = ''
       integer :: message_len = 0
+      !> Why the creation failed ('' when it succeeded), repeated by every later call.
+      character(len=:), allocatable :: creation_failure
    end type contact_context_type
 
 contains
@@ -91,6 +93,7 @@ contains
       call ctx%solver%init(trim(wheel), trim(rail), error, side=side)
       call start_config(ctx, wheel, rail, side)
       stat = record(ctx, error)
+      call keep_creation_failure(ctx, error)
    end function context_create
 
    !> Create the solver from profiles given as arrays of points (mm, right-side canonical form,
@@ -117,6 +120,7 @@ contains
       if (.not. allocated(error)) call ctx%solver%init(wheel, rail, error, side=side)
       call start_config(ctx, '(arrays)', '(arrays)', side)
       stat = record(ctx, error)
+      call keep_creation_failure(ctx, error)
    end function context_create_arrays
 
    !> Create a wheelset handle: both wheels (shcontact_api_wheelset's wheelset_solver_type) from
@@ -137,6 +141,7 @@ contains
       ctx%wheelset_ready = .not. allocated(error)
       call start_config(ctx, wheel, rail, 1)
       stat = record(ctx, error)
+      call keep_creation_failure(ctx, error)
    end function context_create_wheelset
 
    !> Solve both wheels of a wheelset handle for one wheelset state (track frame) and loads;
@@ -724,9 +729,24 @@ contains
          return
       end if
       usable = ctx%solver%is_ready() .or. (ctx%is_wheelset .and. ctx%wheelset_ready)
-      if (.not. usable) call fatal_error(error, 'contact not initialised: its creation failed ('// &
-         'see the message of that call) or it was destroyed', stat_usage)
+      if (usable) return
+      if (allocated(ctx%creation_failure)) then
+         call fatal_error(error, 'contact not initialised: its creation failed: '// &
+            ctx%creation_failure, stat_usage)
+      else
+         call fatal_error(error, 'contact not initialised: its creation failed (see the '// &
+            'message of that call) or it was destroyed', stat_usage)
+      end if
    end function usable
+
+   !> Remember why a creation failed, so that every later call on the handle says it (a
+   !> vehicle code that only checks its solve calls still reads the cause).
+   subroutine keep_creation_failure(ctx, error)
+      type(contact_context_type), intent(inout) :: ctx
+      type(error_type), allocatable, intent(in) :: error
+      if (allocated(ctx%creation_failure)) deallocate (ctx%creation_failure)
+      if (allocated(error)) ctx%creation_failure = error%message
+   end subroutine keep_creation_failure
 
    !> Keep the status and message of an operation; return the status (0 on success).
    integer function record(ctx, error) result(stat)
