@@ -234,7 +234,8 @@ int shcontact_field_size(shcontact_contact *handle, int patch, int *nx, int *ny)
  * x along the rolling direction from the strip's middle, y the strip centre across the patch
  * from its reference point (mm); area the element area (mm^2; sum px*area = F_x,
  * sum py*area = F_y); pn normal pressure, px, py tractions on the wheel (MPa); slip the slip
- * magnitude (0 in adhesion); state 0 exterior, 1 adhesion, 2 slip. No array may be NULL. */
+ * magnitude (0 in adhesion); state 0 exterior, 1 adhesion, 2 slip. No array may be NULL.
+ * Sizes other than the fields' give status 1 and write nothing. */
 int shcontact_fields(shcontact_contact *handle, int patch, int nx, int ny, double *x, double *y,
                      double *area, double *pn, double *px, double *py, double *slip, int *state);
 

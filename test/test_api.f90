@@ -33,7 +33,7 @@ module test_api
       solve_stage, solve_case, case_workspace_type
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_solve, &
       shcontact_last_error, shcontact_set_option, shcontact_patch, shcontact_create_arrays, &
-      shcontact_field_size, shcontact_fields
+      shcontact_field_size, shcontact_fields, shcontact_get_field
    use test_flat_api, only: shc_create, shc_destroy, shc_set_material, shc_set_option, &
       shc_solve, shc_patch, shc_errmsg, shc_create_arrays, shc_get_profile, shc_field_size, &
       shc_fields, shc_create_ws, to_chars, from_chars, bitwise_equal
@@ -1048,7 +1048,7 @@ contains
       type(contact_result_type) :: result
       type(contact_fields_type) :: fields
       type(lib_error), allocatable :: err
-      character(kind=c_char), target :: wheel(14), rail(14), key(14), value(4)
+      character(kind=c_char), target :: wheel(14), rail(14), key(14), value(4), key_px(3)
       type(c_ptr), target :: handle
       real(c_double) :: values(25), patch(17)
       real(c_double), allocatable, target :: x(:, :), y(:, :), area(:, :), pn(:, :), &
@@ -1065,6 +1065,7 @@ contains
       wheel = to_chars('builtin:S1002', 14)
       rail = to_chars('builtin:UIC60', 14)
       key = to_chars('output%fields', 14)
+      key_px = to_chars('px', 3)
       value = to_chars('1', 4)
       stat = shcontact_create(c_loc(handle), c_loc(wheel), c_loc(rail), 1_c_int)
       if (stat == 0) stat = shcontact_set_option(handle, c_loc(key), c_loc(value))
@@ -1089,9 +1090,30 @@ contains
          c_loc(area), c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
       call check(error, stat, int(stat_usage, c_int), message='wrong field size')
       if (allocated(error)) return
+      ! Larger than the arrays: refused before anything is written (the arrays keep the last
+      ! call's values; they were zeroed past their ends before).
+      px = -7.0_wp
+      stat = shcontact_fields(handle, 1_c_int, nx, ny + 1_c_int, c_loc(x), c_loc(y), &
+         c_loc(area), c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
+      call check(error, stat == stat_usage .and. all(px == -7.0_wp) .and. &
+         all(pn == fields%tangential(1)%pn), message='larger field size wrote the arrays')
+      if (allocated(error)) return
+      stat = shcontact_get_field(handle, c_loc(key_px), 1_c_int, nx + 1_c_int, ny, c_loc(px))
+      call check(error, stat == stat_usage .and. all(px == -7.0_wp), &
+         message='shcontact_get_field with a larger size wrote the array')
+      if (allocated(error)) return
       stat = shcontact_fields(handle, 1_c_int, nx, ny, c_null_ptr, c_loc(y), c_loc(area), &
          c_loc(pn), c_loc(px), c_loc(py), c_loc(slip), c_loc(state))
       call check(error, stat, int(stat_usage, c_int), message='NULL field array')
+      if (allocated(error)) return
+      ! Sizes whose product passes the int range, with NULL arrays: status 1, no crash.
+      stat = shcontact_fields(handle, 1_c_int, 65536_c_int, 65536_c_int, c_null_ptr, &
+         c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr, c_null_ptr)
+      call check(error, stat, int(stat_usage, c_int), message='NULL arrays of 65536 x 65536')
+      if (allocated(error)) return
+      stat = shcontact_get_field(handle, c_loc(key_px), 1_c_int, 65536_c_int, 65536_c_int, &
+         c_null_ptr)
+      call check(error, stat, int(stat_usage, c_int), message='NULL field of 65536 x 65536')
       stat = shcontact_destroy(handle)
    end subroutine test_c_fields
 

@@ -100,9 +100,9 @@ module test_flat_api
       subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
          integer, intent(in) :: ihandle, ipatch
          integer, intent(in) :: nx, ny
-         double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
+         double precision, intent(inout) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
             px(nx, ny), py(nx, ny), slip(nx, ny)
-         integer, intent(out) :: state(nx, ny)
+         integer, intent(inout) :: state(nx, ny)
          integer, intent(out) :: istat
       end subroutine shc_fields
       subroutine shc_set_value(ihandle, key, x, istat)
@@ -126,7 +126,7 @@ module test_flat_api
          integer, intent(in) :: ihandle
          character(len=*), intent(in) :: key
          integer, intent(in) :: ipatch, nx, ny
-         double precision, intent(out) :: a(nx, ny)
+         double precision, intent(inout) :: a(nx, ny)
          integer, intent(out) :: istat
       end subroutine shc_get_field
       subroutine shc_create_ws(ihandle, wheel, rail, istat)

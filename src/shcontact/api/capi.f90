@@ -391,7 +391,8 @@ contains
       call c_f_pointer(handle, ctx)
       mx = max(int(nx), 0)
       my = max(int(ny), 0)
-      if (mx*my > 0 .and. .not. (c_associated(x) .and. c_associated(y) .and. &
+      ! Each size on its own (their product may pass the int range).
+      if (mx > 0 .and. my > 0 .and. .not. (c_associated(x) .and. c_associated(y) .and. &
           c_associated(area) .and. c_associated(pn) .and. c_associated(px) .and. &
           c_associated(py) .and. c_associated(slip) .and. c_associated(state))) then
          stat = context_fail(ctx, 'shcontact_fields: an array is NULL', stat_usage)
@@ -487,7 +488,7 @@ contains
       stat = stat_usage
       if (.not. c_associated(handle)) return
       call c_f_pointer(handle, ctx)
-      if (.not. c_associated(key) .or. (max(nx, 0)*max(ny, 0) > 0 .and. &
+      if (.not. c_associated(key) .or. (nx > 0 .and. ny > 0 .and. &
           .not. c_associated(field))) then
          stat = context_fail(ctx, 'shcontact_get_field: key or field is NULL', stat_usage)
          return

@@ -35,7 +35,7 @@ module shcontact_api_context
    implicit none
    private
 
-   public :: contact_context_type, context_record, context_usable
+   public :: contact_context_type, context_record, context_usable, context_check_field_arrays
    public :: context_create, context_create_arrays, context_set_material, context_set_track, &
       context_set_option, context_solve, context_solve_kinematic, context_patch, &
       context_patch_kinematic, context_field_size, context_fields, context_get_profile, &
@@ -534,25 +534,18 @@ contains
       integer, intent(in) :: k
       !> The field sizes (those of context_field_size).
       integer, intent(in) :: nx, ny
-      !> Element centres and areas (mm, mm²); zero on failure.
-      real(wp), intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny)
-      !> Normal pressure, tractions (MPa) and slip magnitude; zero on failure.
-      real(wp), intent(out) :: pn(nx, ny), px(nx, ny), py(nx, ny), slip(nx, ny)
+      !> Element centres and areas (mm, mm²); not written on failure.
+      real(wp), intent(inout) :: x(nx, ny), y(nx, ny), area(nx, ny)
+      !> Normal pressure, tractions (MPa) and slip magnitude; not written on failure.
+      real(wp), intent(inout) :: pn(nx, ny), px(nx, ny), py(nx, ny), slip(nx, ny)
       !> Element state: 0 exterior, 1 adhesion, 2 slip.
-      integer, intent(out) :: state(nx, ny)
+      integer, intent(inout) :: state(nx, ny)
       type(error_type), allocatable :: error
-      integer :: mx, my, i
+      integer :: i
 
-      x = 0.0_wp; y = 0.0_wp; area = 0.0_wp; pn = 0.0_wp; px = 0.0_wp; py = 0.0_wp
-      slip = 0.0_wp
-      state = 0
-      call check_fields(ctx, k, error)
-      if (.not. allocated(error)) then
-         call field_shape(ctx, k, mx, my)
-         if (nx /= mx .or. ny /= my) call fatal_error(error, 'fields of patch '//str_int(k)// &
-            ': arrays of '//str_int(nx)//' x '//str_int(ny)//' given, the fields are '// &
-            str_int(mx)//' x '//str_int(my)//' (ask their size first)', stat_usage)
-      end if
+      ! The arrays are touched only when their sizes are the fields' (a caller's arrays of
+      ! another size may be smaller than nx·ny: nothing is written on failure).
+      call context_check_field_arrays(ctx, k, nx, ny, error)
       if (.not. allocated(error) .and. nx > 0 .and. ny > 0) then
          associate (t => ctx%fields%tangential(k))
             x = t%x
@@ -569,6 +562,21 @@ contains
       end if
       stat = record(ctx, error)
    end function context_fields
+
+   !> An error unless patch k's fields are kept and are nx × ny.
+   subroutine context_check_field_arrays(ctx, k, nx, ny, error)
+      type(contact_context_type), intent(in) :: ctx
+      integer, intent(in) :: k, nx, ny
+      type(error_type), allocatable, intent(out) :: error
+      integer :: mx, my
+      call check_fields(ctx, k, error)
+      if (allocated(error)) return
+      call field_shape(ctx, k, mx, my)
+      if (nx /= mx .or. ny /= my) call fatal_error(error, 'fields of patch '//str_int(k)// &
+         ': arrays of '//str_int(nx)//' x '//str_int(ny)//' given, the fields are '// &
+         str_int(mx)//' x '//str_int(my)//' (ask their size first; nothing was written)', &
+         stat_usage)
+   end subroutine context_check_field_arrays
 
    !> The points of the wheel (kind = profile_kind_wheel, 1) or rail (profile_kind_rail, 0)
    !> profile of the contact, as it was created (read and cleaned; mm, canonical form), e.g. to

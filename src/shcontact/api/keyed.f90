@@ -39,6 +39,7 @@ module shcontact_api_keyed
       value_main_patch, value_sum_fx, value_sum_fy, value_sum_fz, value_sum_fn, value_dz, &
       value_nu_x, value_nu_y, value_phi, value_x_track
    use shcontact_api_context, only: contact_context_type, context_record, context_usable, &
+      context_check_field_arrays, &
       context_set_option, context_solve, context_solve_kinematic, context_solve_wheelset, &
       context_field_size, context_fields
    implicit none
@@ -375,18 +376,23 @@ contains
       character(len=*), intent(in) :: key
       !> Patch index, 1 to the number of patches of the last result; the field sizes.
       integer, intent(in) :: patch, nx, ny
-      !> The field (zero on failure).
-      real(wp), intent(out) :: a(nx, ny)
+      !> The field (not written on failure).
+      real(wp), intent(inout) :: a(nx, ny)
       type(error_type), allocatable :: error
       real(wp), allocatable :: f(:, :, :)
       integer, allocatable :: state(:, :)
       integer :: i
 
-      a = 0.0_wp
       i = findloc(field_keys%name, trim(adjustl(to_lower(key))), 1)
       if (i == 0) then
          call fatal_error(error, "field '"//visible(key)//"': unknown; expected x, y, area, "// &
             'pn, px, py, slip or state', stat_invalid_input)
+      else
+         ! The sizes first: the caller's array may be smaller than nx·ny (nothing is written
+         ! then), and nothing of a wrong size is allocated.
+         call context_check_field_arrays(ctx, patch, nx, ny, error)
+      end if
+      if (allocated(error)) then
          stat = context_record(ctx, error)
          return
       end if

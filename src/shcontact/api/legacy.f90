@@ -265,22 +265,17 @@ contains
       integer, intent(in) :: ihandle, ipatch
       !> The sizes, as legacy_field_size gives them.
       integer, intent(in) :: nx, ny
-      !> Element centres (mm), areas (mm²), pressure and tractions (MPa), slip magnitude.
-      real(wp), intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), &
+      !> Element centres (mm), areas (mm²), pressure and tractions (MPa), slip magnitude; not
+      !> written on failure (arrays of a wrong size may be smaller than nx·ny).
+      real(wp), intent(inout) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), px(nx, ny), &
          py(nx, ny), slip(nx, ny)
       !> Element state: 0 exterior, 1 adhesion, 2 slip.
-      integer, intent(out) :: state(nx, ny)
+      integer, intent(inout) :: state(nx, ny)
       !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
-      if (valid(ihandle)) then
-         istat = context_fields(slots(ihandle)%ctx, ipatch, nx, ny, x, y, area, pn, px, py, &
-            slip, state)
-      else
-         x = 0.0_wp; y = 0.0_wp; area = 0.0_wp; pn = 0.0_wp; px = 0.0_wp; py = 0.0_wp
-         slip = 0.0_wp
-         state = 0
-      end if
+      if (valid(ihandle)) istat = context_fields(slots(ihandle)%ctx, ipatch, nx, ny, x, y, &
+         area, pn, px, py, slip, state)
    end subroutine legacy_fields
 
    !> The points of the handle's wheel (ikind = 1) or rail (ikind = 0) profile as created;
@@ -350,11 +345,10 @@ contains
       character(len=*), intent(in) :: key
       !> The patch index and the field sizes.
       integer, intent(in) :: ipatch, nx, ny
-      !> The field.
-      real(wp), intent(out) :: a(nx, ny)
+      !> The field (not written on failure).
+      real(wp), intent(inout) :: a(nx, ny)
       !> Status (0 success).
       integer, intent(out) :: istat
-      a = 0.0_wp
       istat = stat_usage
       if (valid(ihandle)) istat = context_get_field(slots(ihandle)%ctx, key, ipatch, nx, ny, a)
    end subroutine legacy_get_field
@@ -495,9 +489,9 @@ subroutine shc_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, sta
    implicit none
    integer, intent(in) :: ihandle, ipatch
    integer, intent(in) :: nx, ny
-   double precision, intent(out) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
+   double precision, intent(inout) :: x(nx, ny), y(nx, ny), area(nx, ny), pn(nx, ny), &
       px(nx, ny), py(nx, ny), slip(nx, ny)
-   integer, intent(out) :: state(nx, ny)
+   integer, intent(inout) :: state(nx, ny)
    integer, intent(out) :: istat
    call legacy_fields(ihandle, ipatch, nx, ny, x, y, area, pn, px, py, slip, state, istat)
 end subroutine shc_fields
@@ -660,7 +654,7 @@ subroutine shc_get_field(ihandle, key, ipatch, nx, ny, a, istat)
    integer, intent(in) :: ihandle
    character(len=*), intent(in) :: key
    integer, intent(in) :: ipatch, nx, ny
-   double precision, intent(out) :: a(nx, ny)
+   double precision, intent(inout) :: a(nx, ny)
    integer, intent(out) :: istat
    call legacy_get_field(ihandle, key, ipatch, nx, ny, a, istat)
 end subroutine shc_get_field
