@@ -282,16 +282,24 @@ contains
 
       call new_solver(solver, error)
       if (allocated(error)) return
+      ! The strips carry the load (doc/theory.md §4.6): without creep forces the reported
+      ! vertical force is the load; with them it differs by their vertical share only.
       call solve_checked(solver, headline_t_y, load_vertical_force, headline_load, &
-         headline_creepage, result, error)
+         creepage_type(0.0_wp, 0.0_wp, 0.0_wp), result, error)
       if (allocated(error)) return
       call check(error, result%n_loaded, result%n_patches)
+      if (allocated(error)) return
+      call check(error, -result%track%fz, headline_load, rel=.true., thr=1.0e-8_wp)
       if (allocated(error)) return
       balance = 0.0_wp
       do k = 1, result%n_loaded
          balance = balance + result%patch(k)%fn*cos(result%patch(k)%gamma_plane)
       end do
-      call check(error, balance, headline_load, rel=.true., thr=1.0e-9_wp)
+      ! On the tread the patch-plane resolution is within 0.3 % of the strips'.
+      call check(error, balance, headline_load, rel=.true., thr=3.0e-3_wp)
+      if (allocated(error)) return
+      call solve_checked(solver, headline_t_y, load_vertical_force, headline_load, &
+         headline_creepage, result, error)
       if (allocated(error)) return
       call check(error, result%track%fn, sum(result%patch(1:result%n_loaded)%fn), rel=.true., &
          thr=1.0e-14_wp)

@@ -229,7 +229,7 @@ contains
       if (allocated(error)) return
       call update_geometry(self%cache, t_y, roll, 0.0_wp, error)
       if (allocated(error)) return
-      call update_normal(self%cache, load, error)
+      call update_normal(self%cache, load, error, strips=.true.)
       if (allocated(error)) return
 
       options = self%cache%tangential_options

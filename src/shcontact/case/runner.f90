@@ -317,7 +317,8 @@ contains
       call prepare_normal_stage(geometry, setup%normal, setup%material, contacts, n_prepared, n, &
          error, interface=setup%tangential%contact_surface == surface_interface)
       if (failed(stage, error)) return
-      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error, used=used)
+      call solve_normal_stage(contacts, load, stage%normal, stage%dz, error, used=used, &
+         strips=.true.)
       if (failed(stage, error)) return
       ! A shared normal force that the first patch carries alone loads it alone.
       if (used < n) stage%normal = stage%normal(1:used)

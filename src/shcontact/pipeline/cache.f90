@@ -68,6 +68,8 @@ module shcontact_pipeline_cache
       type(normal_contact_type) :: contacts(max_patches)
       !> Normal solution of the last load (valid when has_normal).
       logical :: has_normal = .false.
+      !> A vertical load of that solution was carried by the strips' vertical force.
+      logical :: strips_balanced = .false.
       type(contact_load_type) :: load
       integer :: n_loaded = 0
       real(wp) :: dz = 0.0_wp
@@ -212,16 +214,22 @@ contains
    !> The normal solution for the load, unless it is that of the last call on this geometry.
    !> Force and approach load the first (deepest) patch, a vertical load all patches, a shared
    !> normal force those that touch (shcontact_pipeline_stages's solve_normal_stage).
-   subroutine update_normal(self, load, error, dz_guess)
+   subroutine update_normal(self, load, error, dz_guess, strips)
       type(contact_cache_type), intent(inout) :: self
       type(contact_load_type), intent(in) :: load
       type(error_type), allocatable, intent(out) :: error
       !> A close guess of the vertical approach Δz (mm) for a vertical load.
       real(wp), intent(in), optional :: dz_guess
+      !> A vertical load carried by the strips' vertical force (solve_normal_stage's `strips`;
+      !> the one-wheel calls).
+      logical, intent(in), optional :: strips
       integer :: n, used
+      logical :: by_strips
 
+      by_strips = .false.
+      if (present(strips)) by_strips = strips
       if (self%has_normal .and. load%mode == self%load%mode .and. &
-         same(load%value, self%load%value)) return
+         same(load%value, self%load%value) .and. (self%strips_balanced .eqv. by_strips)) return
       self%has_normal = .false.
       n = loaded_count(load, self%patches%count)
       call prepare_normal_stage(self%patches%patch, self%normal_options, self%material, &
@@ -230,13 +238,14 @@ contains
       if (allocated(error)) return
       if (self%warm_coupling) then
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
-            self%coupling_start, used=used, dz_guess=dz_guess)
+            self%coupling_start, used=used, dz_guess=dz_guess, strips=by_strips)
       else
          call solve_normal_stage(self%contacts(1:n), load, self%normal(1:n), self%dz, error, &
-            used=used, dz_guess=dz_guess)
+            used=used, dz_guess=dz_guess, strips=by_strips)
       end if
       if (allocated(error)) return
       self%load = load
+      self%strips_balanced = by_strips
       self%n_loaded = used
       self%has_normal = .true.
    end subroutine update_normal

@@ -41,7 +41,8 @@ module shcontact_pipeline_result
       !> approach").
       real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp
       !> Contact angle of the contact plane (rad, CONTACT's sign): that of the first contact.
-      !> F_n is normal to this plane, and a vertical load is shared as Σ F_n cos γ_plane = F_z.
+      !> F_n is normal to this plane; a vertical load is carried by the strips' vertical force
+      !> Σ N_i cos γ_i (doc/theory.md §4.6).
       real(wp) :: gamma_plane = 0.0_wp
       !> Reference point in track coordinates (mm; y from the track centre, z down), the same
       !> point.

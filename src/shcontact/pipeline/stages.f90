@@ -49,6 +49,9 @@ module shcontact_pipeline_stages
    !> Relative accuracy of Σ_k N_k = N for a normal force shared by several patches
    !> ([[share_normal_force]]; doc/lobes.md).
    real(wp), parameter, public :: shared_force_rtol = 1.0e-9_wp
+   !> Relative accuracy of the strips' vertical force Σ N_i cos γ_i = F_z of a prescribed
+   !> vertical load ([[strip_vertical_load]]).
+   real(wp), parameter, public :: strip_vertical_rtol = 1.0e-8_wp
 
 contains
 
@@ -112,7 +115,8 @@ contains
    !> The normal solution for the load on the prepared patches (size loaded_count): a normal
    !> force or an approach on the first, a shared normal force as [[share_normal_force]] says, a
    !> vertical load or position on all.
-   subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used, dz_guess)
+   subroutine solve_normal_stage(contacts, load, normal, dz, error, start, used, dz_guess, &
+         strips)
       !> The prepared normal problems of the loaded patches.
       type(normal_contact_type), intent(inout) :: contacts(:)
       !> The load.
@@ -132,8 +136,14 @@ contains
       !> A close guess of Δz (mm) for a vertical load (shcontact_normal_loading's
       !> solve_vertical_load).
       real(wp), intent(in), optional :: dz_guess
+      !> A vertical load is carried by the strips' normal forces resolved vertically with their
+      !> own contact angles, Σ N_i cos γ_i = F_z ([[strip_vertical_load]]; the one-wheel calls
+      !> with prescribed creepages). Default: Σ_k N_k cos γ_k over the patches' contact planes
+      !> (the kinematic call's predictor, whose balance then matches the total F_z itself).
+      logical, intent(in), optional :: strips
       real(wp) :: vertical
       integer :: n_used
+      logical :: by_strips
 
       dz = 0.0_wp
       n_used = size(contacts)
@@ -148,10 +158,89 @@ contains
          call solve_vertical_approach(contacts, load%value, normal, vertical, error, start)
          dz = load%value
       case default
-         call solve_vertical_load(contacts, load%value, normal, dz, error, start, dz_guess)
+         by_strips = .false.
+         if (present(strips)) by_strips = strips
+         if (by_strips) then
+            call strip_vertical_load(contacts, load%value, normal, dz, error, start, dz_guess)
+         else
+            call solve_vertical_load(contacts, load%value, normal, dz, error, start, dz_guess)
+         end if
       end select
       if (present(used)) used = n_used
    end subroutine solve_normal_stage
+
+   !> A prescribed vertical load F_z carried by the strips (doc/theory.md §4.6): the vertical
+   !> force of the normal solution is that of its strips, Σ_k Σ_i N_k,i cos γ_k,i with each
+   !> strip's own contact angle (the angle the tangential stage resolves it with, so that the
+   !> reported F_z,track is −F_z where the creep forces vanish). The patch-plane balance
+   !> Σ_k N_k cos γ_k = q of solve_vertical_load resolves a patch's load with the angle of its
+   !> first contact; where a patch spans the flange root and the flange (γ from −30° to −70°)
+   !> and its first contact lies on the flange while the load lies at the root, that differs
+   !> from the strips' by a factor up to 2.3. So q is found by secant steps in ln q on
+   !> ln(V(q)/F_z), V the strips' vertical force (V/q varies slowly with q), each a
+   !> solve_vertical_load, to [[strip_vertical_rtol]].
+   subroutine strip_vertical_load(contacts, f_z, normal, dz, error, start, dz_guess)
+      type(normal_contact_type), intent(inout) :: contacts(:)
+      !> Vertical load F_z (N).
+      real(wp), intent(in) :: f_z
+      type(normal_patch_type), intent(inout) :: normal(:)
+      real(wp), intent(out) :: dz
+      type(error_type), allocatable, intent(out) :: error
+      type(coupling_start_type), intent(inout), optional :: start
+      real(wp), intent(in), optional :: dz_guess
+      integer, parameter :: max_steps = 40
+      real(wp) :: x, x_old, r, r_old, step, v
+      integer :: it
+
+      x = log(f_z)
+      x_old = 0.0_wp
+      r_old = 0.0_wp
+      do it = 1, max_steps
+         if (it == 1) then
+            call solve_vertical_load(contacts, exp(x), normal, dz, error, start, dz_guess)
+         else
+            call solve_vertical_load(contacts, exp(x), normal, dz, error, start)
+         end if
+         if (allocated(error)) return
+         v = strips_vertical_force(normal)
+         if (abs(v - f_z) <= strip_vertical_rtol*f_z) return
+         if (.not. v > 0.0_wp) exit
+         r = log(v/f_z)
+         step = -r
+         if (it > 1 .and. r /= r_old) step = -r*(x - x_old)/(r - r_old)
+         ! At most a factor e per step (a secant across a steep change of V/q).
+         step = max(-1.0_wp, min(1.0_wp, step))
+         x_old = x
+         r_old = r
+         x = x + step
+      end do
+      call fatal_error(error, 'vertical load: the vertical force of the strips did not '// &
+         'converge to the prescribed F_z', stat_numerical)
+   end subroutine strip_vertical_load
+
+   !> The vertical force of normal solutions (N, up positive): Σ N_i cos γ_i over the strips of
+   !> every loaded patch, γ_i the strip's surface angle (`gamma_n`: the wheel's γ_i, or the
+   !> interface's with `contact_surface = 'interface'`); a Hertz ellipse or a patch without
+   !> strip data N cos γ of its contact plane.
+   pure real(wp) function strips_vertical_force(normal) result(v)
+      type(normal_patch_type), intent(in) :: normal(:)
+      integer :: k, m
+      v = 0.0_wp
+      do k = 1, size(normal)
+         associate (n => normal(k))
+            if (.not. (n%load > 0.0_wp)) cycle
+            m = n%n_strips
+            if (n%is_hertz .or. .not. allocated(n%strip_load) .or. .not. allocated(n%gamma_n)) &
+               then
+               v = v + n%load*cos(n%gamma_plane)
+            else if (size(n%strip_load) < m .or. size(n%gamma_n) < m) then
+               v = v + n%load*cos(n%gamma_plane)
+            else
+               v = v + sum(n%strip_load(1:m)*cos(n%gamma_n(1:m)))
+            end if
+         end associate
+      end do
+   end function strips_vertical_force
 
    !> A normal force N of the wheel's contact, shared by its patches (load_shared_force;
    !> doc/lobes.md, "A normal force shared by the patches"): the wheel is one rigid body whose lateral position is given, so its
