@@ -658,6 +658,12 @@ contains
       if (allocated(error)) return
       call expect_in(error, line_of(out, 3), '1,0,2,2,1,4.733,0.0,0.004,64700.0,0.3,weighted,'// &
          '30000.0,', 'kinematic inputs (two patches, both loaded, the first the main one)')
+      if (allocated(error)) return
+      ! The joined contact's patch count is a count, as n_loaded is (it printed 2.0).
+      call run_expect(error, dir, "run -q --format json --set kinematics%mode=on "// &
+         '--set kinematics%yaw=0.004 --no-output', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, line_of(out, 1), '"wheel_patches":2,', 'JSON count')
       call shell('rm -rf '//dir)
    end subroutine test_kinematic_inputs
 

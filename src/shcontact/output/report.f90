@@ -15,7 +15,7 @@ module shcontact_output_report
       load_mode_force, load_mode_approach, load_mode_vertical, load_mode_shared
    use shcontact_core_text, only: format_real, format_real_buffer, json_string, string_type
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
-      summary_value, summary_column_used, failure_type
+      summary_value, summary_column_used, failure_type, summary_column_counts
    implicit none
    private
 
@@ -194,7 +194,7 @@ contains
          do k = 1, n_summary_columns
             if (.not. summary_column_used(k, config%is_kinematic())) cycle
             value = ''
-            if (ok) value = trim(format_real_buffer(summary_value(summary, k)))
+            if (ok) call append_column(value, summary, k, .false.)
             line = line//','//value
          end do
          line = line//','
@@ -210,8 +210,8 @@ contains
          if (ok) then
             do k = 1, n_summary_columns
                if (.not. summary_column_used(k, config%is_kinematic())) cycle
-               line = line//',"'//trim(summary_columns(1, k))//'":'// &
-                  trim(json_number_buffer(summary_value(summary, k)))
+               line = line//',"'//trim(summary_columns(1, k))//'":'
+               call append_column(line, summary, k, .true.)
             end do
          end if
          if (present(message)) line = line//',"message":'//json_string(message)
@@ -470,5 +470,22 @@ contains
       end do
       q(at + 1:at + 1) = '"'
    end function csv_quoted
+
+   !> Append summary column `k` to a CSV or JSON line: a count as an integer (as n_loaded is),
+   !> any other value as a real. A subroutine, not a function with a deferred-length result:
+   !> the sweep's threads build report lines (doc/performance.md, "Threads and strings").
+   subroutine append_column(line, summary, k, json)
+      character(len=:), allocatable, intent(inout) :: line
+      type(case_summary_type), intent(in) :: summary
+      integer, intent(in) :: k
+      logical, intent(in) :: json
+      if (summary_column_counts(k)) then
+         line = line//str_int(nint(summary_value(summary, k)))
+      else if (json) then
+         line = line//trim(json_number_buffer(summary_value(summary, k)))
+      else
+         line = line//trim(format_real_buffer(summary_value(summary, k)))
+      end if
+   end subroutine append_column
 
 end module shcontact_output_report
