@@ -291,6 +291,11 @@ contains
       if (allocated(error)) return
       call bad(s%y_ws, 0.2_wp, s%v_forward, 2, stat_invalid_input, 'yaw')
       if (allocated(error)) return
+      ! A forward speed far below the wheel's rolling speed (the pitch rate of 30 m/s): a
+      ! creepage beyond the prescribed calls' range, refused rather than solved.
+      call bad(s%y_ws, s%yaw, 1.0e-9_wp, 2, stat_invalid_input, &
+         'longitudinal creepage at the contact point')
+      if (allocated(error)) return
       call bad(s%y_ws, s%yaw, s%v_forward, 7, stat_invalid_input, 'load mode')
       if (allocated(error)) return
       ! Still usable; then a patch index beyond the patches found.

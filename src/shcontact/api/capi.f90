@@ -518,7 +518,7 @@ contains
    end function shcontact_create_wheelset
 
    !> Solve both wheels of a wheelset handle for one wheelset state (as shcontact_solve_kinematic)
-   !> and each wheel's load; totals[SHCONTACT_WS_SIZE] receives F_x, F_y, F_z (N) on the
+   !> and each wheel's load; totals[4] receives F_x, F_y, F_z (N) on the
    !> wheelset, true track frame, and M_z (N mm) about the vertical axis through its centre.
    integer(c_int) function shcontact_solve_wheelset(handle, y_ws, yaw, roll, v_forward, &
          v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate, load_mode, load_right, &

@@ -29,6 +29,7 @@ module shcontact_tangential_rigid_slip
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_strings, only: str_real
+   use shcontact_core_ranges, only: check_range
    use shcontact_geometry_kinematics, only: wheelset_state_type, locus_tangent
    use shcontact_tangential_creepage, only: creepage_type
    implicit none
@@ -88,6 +89,20 @@ contains
       creepage%nu_x = slip(1)/rolling_speed
       creepage%nu_y = dot_product(slip, tangent)/rolling_speed
       creepage%phi = dot_product(omega, normal)/rolling_speed
+      ! The creepages a prescribed call accepts (the ranges table): velocities that make the
+      ! wheel slide faster than it rolls are refused, not solved (only the failure reads the
+      ! table, so the hot path compares numbers).
+      if (.not. (abs(creepage%nu_x) <= 1.0_wp .and. abs(creepage%nu_y) <= 1.0_wp .and. &
+                 abs(creepage%phi) <= 0.1_wp)) then
+         call check_range('creepage%nu_x', creepage%nu_x, 'wheelset kinematics: the '// &
+            'longitudinal creepage at the contact point', error)
+         if (.not. allocated(error)) call check_range('creepage%nu_y', creepage%nu_y, &
+            'wheelset kinematics: the lateral creepage at the contact point', error)
+         if (.not. allocated(error)) call check_range('creepage%phi', creepage%phi, &
+            'wheelset kinematics: the spin creepage (rad/mm) at the contact point', error)
+         if (allocated(error)) error%message = error%message//' (from the wheelset '// &
+            'velocities and rates: check their units, mm/s and rad/s, and the forward speed)'
+      end if
    contains
       !> R_z(ψ) v.
       pure function turn(v) result(w)
