@@ -7,6 +7,7 @@
 !> anything, so a refusal leaves every file as it was. Uses gfortran's `stat`/`lstat`.
 module shcontact_app_output_guard
    use shcontact_core_error, only: error_type, fatal_error, stat_io
+   use shcontact_core_files, only: path_kind
    implicit none
    private
 
@@ -68,6 +69,16 @@ contains
             return
          end if
       end do
+      ! A directory (or a device) is never a file to replace, --force or not.
+      if (path_exists(path)) then
+         select case (path_kind(path, follow=.true.))
+         case ('file', 'link', 'none')
+         case default
+            call fatal_error(error, path//': '//what//' is a '// &
+               trim(path_kind(path, follow=.true.))//', not a file; give a file name', stat_io)
+            return
+         end select
+      end if
       if (force .or. .not. path_exists(path)) return
       call fatal_error(error, path//': '//what//' exists and was not written by this run; '// &
          'choose another name, remove it, or pass --force to replace it', stat_io)

@@ -865,6 +865,16 @@ contains
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/out.prof'), '# kind = wheel', '-o --force')
       if (allocated(error)) return
+      ! A directory is never replaced, --force or not, and the message says what it is.
+      call shell('mkdir -p '//dir//'/adir')
+      call run_expect(error, dir, 'profiles built-in/S1002.txt -o adir --force', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'adir: -o is a directory, not a file', 'directory as -o')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'geometry -o adir', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'adir: -o is a directory, not a file', 'geometry -o directory')
+      if (allocated(error)) return
       ! geometry: the default geometry.txt, -o FILE, the case file
       call shell('echo mine > '//dir//'/geometry.txt')
       call run_expect(error, dir, 'geometry', 3, out, err)
