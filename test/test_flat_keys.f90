@@ -34,7 +34,8 @@ module test_flat_keys
    use shcontact_api_capi, only: shcontact_create, shcontact_destroy, shcontact_set_option, &
       shcontact_set_value, shcontact_solve_state, shcontact_get_value, shcontact_last_error, &
       shcontact_create_wheelset, shcontact_solve_wheelset, shcontact_wheelset_wheel, &
-      shcontact_field_size, shcontact_fields, shcontact_get_field, shcontact_solve
+      shcontact_field_size, shcontact_fields, shcontact_get_field, shcontact_solve, &
+      shcontact_patch
    use test_flat_api, only: shc_create, shc_destroy, shc_set_option, shc_solve_state, &
       shc_solve_kin, shc_get_value, shc_errmsg, shc_set_value, shc_create_ws, shc_solve_ws, shc_ws_wheel, &
       shc_set_material, &
@@ -576,6 +577,7 @@ contains
       character(kind=c_char), target :: wheel(14), rail(14)
       type(c_ptr), target :: h
       real(c_double) :: totals(4), cw(kinematic_value_count, 2)
+      integer(c_int), target :: nx, ny
       real(wp) :: ft(4), fw(kinematic_value_count, 2), ref(kinematic_value_count, 2), x, y, &
          again(4)
       integer :: ih, istat, k, bad, bad_gauge
@@ -631,6 +633,15 @@ contains
          0.0_c_double, 0.0_c_double, 0.0_c_double, cw(1:25, 1))
       call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
          message='a one-wheel call on a wheelset handle: '//c_message(h))
+      if (allocated(error)) return
+      ! The one-wheel patch and field calls say so too (they said "expected 1 to 0").
+      stat = shcontact_patch(h, 1_c_int, cw(1:17, 1))
+      call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
+         message='shcontact_patch on a wheelset handle: '//c_message(h))
+      if (allocated(error)) return
+      stat = shcontact_field_size(h, 1_c_int, c_loc(nx), c_loc(ny))
+      call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
+         message='shcontact_field_size on a wheelset handle: '//c_message(h))
       if (allocated(error)) return
       call check(error, c_set_option(h, 'track%side', 'left'), stat_invalid_input)
       if (allocated(error)) return

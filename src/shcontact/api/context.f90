@@ -647,6 +647,10 @@ contains
       type(contact_context_type), intent(in) :: ctx
       integer, intent(in) :: k
       type(error_type), allocatable, intent(out) :: error
+      ! A wheelset handle takes the wheelset calls (its message says which).
+      if (ctx%is_wheelset) then
+         if (.not. usable(ctx, error)) return
+      end if
       if (ctx%has_result .and. .not. ctx%has_fields) then
          call fatal_error(error, "fields: the last solve kept none; set the option "// &
             "'output%fields' to 'all' before solving", stat_usage)
@@ -672,6 +676,9 @@ contains
       type(contact_context_type), intent(in) :: ctx
       integer, intent(in) :: k
       type(error_type), allocatable, intent(out) :: error
+      if (ctx%is_wheelset) then
+         if (.not. usable(ctx, error)) return
+      end if
       if (.not. ctx%has_result) then
          call fatal_error(error, 'patch values: no result yet (the last solve failed or none '// &
             'was made)', stat_usage)
