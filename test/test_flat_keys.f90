@@ -515,6 +515,13 @@ contains
       call check(error, c_set_value(handle, 'n_strips', 60.5_wp), stat_invalid_input, &
          message='60.5 strips')
       if (allocated(error)) return
+      ! A whole number beyond the int range is out of range, not "not a whole number".
+      call check(error, c_set_value(handle, 'n_strips', 1.0e30_wp), stat_invalid_input, &
+         message='1e30 strips')
+      if (allocated(error)) return
+      call check(error, index(c_message(handle), 'is out of range; expected') > 0, &
+         message=c_message(handle))
+      if (allocated(error)) return
       call check(error, c_set_value(handle, 'position%t_y', ieee_value(x, ieee_quiet_nan)), &
          stat_invalid_input, message='t_y = NaN')
       if (allocated(error)) return

@@ -20,6 +20,7 @@ module shcontact_api_keyed
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_strings, only: to_lower, str_int, visible
    use shcontact_core_text, only: format_real
+   use shcontact_core_ranges, only: has_range, range_text
    use shcontact_input_config, only: case_config_type, case_point_type, validate_config
    use shcontact_input_config_types, only: output_config_type, number_value, normal_options_of, &
       tangential_options_of
@@ -139,8 +140,16 @@ contains
                stat = context_set_option(ctx, full, str_int(nint(x)))
                return
             end if
-            call fatal_error(error, 'value '//full//' = '//format_real(x)// &
-               ': expected a whole number', stat_invalid_input)
+            if (x == anint(x) .and. has_range(variables(iv))) then
+               ! A whole number beyond the int range is out of the variable's range.
+               call fatal_error(error, 'value '//full//' = '//format_real(x)// &
+                  ' is out of range; expected '//range_text(variables(iv), &
+                  trim(variables(iv)%name), format_real(variables(iv)%lo), &
+                  format_real(variables(iv)%hi)), stat_invalid_input)
+            else
+               call fatal_error(error, 'value '//full//' = '//format_real(x)// &
+                  ': expected a whole number', stat_invalid_input)
+            end if
          case default
             call fatal_error(error, 'value '//full//': a text option; set it with '// &
                'shcontact_set_option (shc_set_option)', stat_invalid_input)
