@@ -445,6 +445,11 @@ contains
       end if
       call check(error, p%size(), 5, 'the five points read, the commented one left out')
       if (allocated(error)) return
+      ! A MiniProf rail (.ban) asked for as a wheel: its extension's conventions say rail.
+      call read_profile(ban, p, err, kind=profile_kind_wheel)
+      call expect_error(error, err, stat_invalid_input, [character(len=50) :: &
+         "bad.ban: the extension '.ban' stands for a rail", 'a wheel profile was asked for'])
+      if (allocated(error)) return
       call write_text(ban, lines_of([character(len=60) :: 'ColumnDef=A,Y,C', '', '10 2 0']))
       call expect_read_error(error, ban, stat_invalid_input, [character(len=50) :: &
          'bad.ban, line 1:', "ColumnDef = 'A,Y,C' has no X and Y columns"])

@@ -272,6 +272,17 @@ contains
                kind_name(kind)//' profile was asked for', stat_invalid_input)
             return
          end if
+         ! A file without a statement of its kind (MiniProf's) is read by the conventions of
+         ! its extension (a .ban rail mirrored, a .whl wheel reversed): used as the other kind
+         ! its points would be nonsense.
+         if (settings%kind == kind_unknown .and. from_extension /= kind_unknown .and. &
+             from_extension /= kind) then
+            call fatal_error(error, filename//": the extension '."//extension(filename)// &
+               "' stands for a "//kind_name(from_extension)//' profile (read by its '// &
+               'conventions), but a '//kind_name(kind)//' profile was asked for: give a '// &
+               kind_name(kind)//' profile file', stat_invalid_input)
+            return
+         end if
          profile_kind = kind
       else if (settings%kind /= kind_unknown) then
          if (from_extension /= kind_unknown .and. from_extension /= settings%kind) then
