@@ -16,7 +16,7 @@ module shcontact_app_commands
    use shcontact_app_stdout, only: put_line, put_text
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
-   use shcontact_app_environment, only: slurm_shard, in_slurm_array
+   use shcontact_app_environment, only: slurm_shard, in_slurm_array, check_thread_variable
    use shcontact_core_files, only: peak_memory_kib, canonical_path
    implicit none
    private
@@ -111,6 +111,7 @@ contains
       allocate (options%inputs(1))
       options%inputs(1)%text = cli%case_file
       call choose_shard(cli, options%shard, options%n_shards, error)
+      if (.not. allocated(error) .and. cli%threads <= 0) call check_thread_variable(error)
       if (allocated(error)) then
          status = report_error(error)
          return

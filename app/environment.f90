@@ -6,7 +6,7 @@ module shcontact_app_environment
    implicit none
    private
 
-   public :: slurm_shard, in_slurm_array, integer_variable
+   public :: slurm_shard, in_slurm_array, integer_variable, check_thread_variable
 
 contains
 
@@ -42,6 +42,28 @@ contains
             str_int(max(count, 1))//', or give --shard I/N)', stat_usage)
       end if
    end subroutine slurm_shard
+
+   !> A usage error when OMP_NUM_THREADS is set but its first entry is not a positive number of
+   !> threads: the OpenMP run time then says so on its own and runs with all cores, so a job
+   !> script's typo would go unnoticed (`--threads N` overrides the variable).
+   subroutine check_thread_variable(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=64) :: buf
+      character(len=:), allocatable :: first
+      integer :: length, stat, n
+      call get_environment_variable('OMP_NUM_THREADS', buf, length, stat)
+      if (stat == 1 .or. length == 0) return
+      first = trim(adjustl(buf(1:min(length, len(buf)))))
+      if (index(first, ',') > 0) first = trim(first(:index(first, ',') - 1))
+      n = 0
+      stat = 1
+      if (len(first) > 0 .and. verify(first, '0123456789') == 0 .and. len(first) <= 9) &
+         read (first, *, iostat=stat) n
+      if (stat == 0 .and. n >= 1) return
+      call fatal_error(error, "OMP_NUM_THREADS = '"//trim(buf(1:min(length, len(buf))))// &
+         "': expected a positive number of threads (or unset it; --threads N overrides it)", &
+         stat_usage)
+   end subroutine check_thread_variable
 
    !> The task of a Slurm job array this process runs in ('' outside a job array).
    function in_slurm_array() result(text)

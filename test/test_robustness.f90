@@ -179,6 +179,15 @@ contains
       if (allocated(error)) return
       call check(error, .not. file_exists(dir//'/out.h5.partial'), &
          message='no checkpoint left by a refused thread count')
+      if (allocated(error)) return
+      ! Not a number: the OpenMP run time only warns and uses every core; the run refuses.
+      stat = run_program(dir, 'run -o out.h5', 'OMP_NUM_THREADS=abc')
+      call check(error, stat, 1, message='OMP_NUM_THREADS=abc: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), "OMP_NUM_THREADS = 'abc': expected a "// &
+         'positive number of threads', 'OMP_NUM_THREADS=abc')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/out.h5'), message='no output after abc')
       call shell('rm -rf '//dir)
    end subroutine test_thread_limit
 
