@@ -11,6 +11,7 @@ module shcontact_normal_loading
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact, &
       stat_numerical, stat_usage
+   use shcontact_core_strings, only: str_real
    use shcontact_core_material, only: material_type, check_material
    use shcontact_math_roots, only: scalar_function_type, find_root
    use shcontact_geometry_patch, only: patch_geometry_type
@@ -198,8 +199,8 @@ contains
       call fill_patch(contact, f%origin + root, patch, error)
       if (allocated(error)) return
       if (abs(patch%load - load) > load_rtol*load) then
-         write (buf, '(es12.4,a,es12.4)') patch%load, ' N instead of ', load
-         call fatal_error(error, 'normal force matching did not converge: '//trim(buf)//' N', &
+         call fatal_error(error, 'normal force matching did not converge: '// &
+            str_real(patch%load)//' N instead of '//str_real(load)//' N', &
             stat_numerical)
          return
       end if
@@ -352,8 +353,8 @@ contains
       end if
       dz = f%origin + root
       if (abs(f%force - f_z) > load_rtol*f_z) then
-         write (buf, '(es12.4,a,es12.4)') f%force, ' N instead of ', f_z
-         call fatal_error(error, 'vertical load matching did not converge: '//trim(buf)//' N', &
+         call fatal_error(error, 'vertical load matching did not converge: '// &
+            str_real(f%force)//' N instead of '//str_real(f_z)//' N', &
             stat_numerical)
          return
       end if
@@ -562,9 +563,9 @@ contains
       else
          do i = 1, 400
             if (hi >= x_max) then
-               write (buf, '(es12.4,a)') x_max, ' mm beyond first contact'
                call fatal_error(error, 'load too large for the patch geometry: the contact '// &
-                  'reaches the end of the geometry table at an approach of '//trim(buf), &
+                  'reaches the end of the geometry table at an approach of '// &
+                  str_real(x_max)//' mm beyond first contact', &
                   stat_no_contact)
                return
             end if
