@@ -147,12 +147,11 @@ contains
       type(normal_patch_type), intent(inout) :: patch
       !> stat_no_contact when the surfaces do not touch or the table is too short.
       type(error_type), allocatable, intent(out) :: error
-      character(len=96) :: buf
 
       if (.not. (approach > contact%geometry%approach_touch)) then
-         write (buf, '(a,es12.4,a,es12.4,a)') 'approach ', approach, &
-            ' mm is at or below first contact (', contact%geometry%approach_touch, ' mm)'
-         call fatal_error(error, 'the profiles do not touch: '//trim(buf), stat_no_contact)
+         call fatal_error(error, 'the profiles do not touch: approach '//str_real(approach)// &
+            ' mm is at or below first contact ('//str_real(contact%geometry%approach_touch)// &
+            ' mm)', stat_no_contact)
          return
       end if
       call fill_patch(contact, approach, patch, error)

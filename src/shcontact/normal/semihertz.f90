@@ -20,6 +20,7 @@ module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
+   use shcontact_core_strings, only: str_real
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant, &
       slide_exact
@@ -991,13 +992,10 @@ contains
       type(semihertz_geometry_type), intent(in) :: prepared
       real(wp), intent(in) :: approach
       type(error_type), allocatable, intent(out) :: error
-      character(len=160) :: buf
-      write (buf, '(a,es12.4,a,es12.4,a,es12.4,a,es12.4,a)') 'approach ', approach, &
-         ' mm: the contact reaches the end of the geometry table [', table_y(prepared, 1), ', ', &
-         table_y(prepared, prepared%n_table), '] mm (largest approach ', prepared%approach_max, &
-         ' mm)'
-      call fatal_error(error, 'load too large for the patch geometry: '//trim(buf), &
-         stat_no_contact)
+      call fatal_error(error, 'load too large for the patch geometry: approach '// &
+         str_real(approach)//' mm: the contact reaches the end of the geometry table ['// &
+         str_real(table_y(prepared, 1))//', '//str_real(table_y(prepared, prepared%n_table))// &
+         '] mm (largest approach '//str_real(prepared%approach_max)//' mm)', stat_no_contact)
    end subroutine table_end_error
 
    !> ψ_j = (ε_b,j − c_j)(δ − touch_j) = ε_b,j δ − g_j − (δ + g₀)c_j = ε_b,j δ_j: its sign is
