@@ -689,6 +689,13 @@ contains
       call check(error, istat == stat_invalid_input .and. index(msg, 'NaN') > 0, &
          message='NaN creepage: '//trim(msg))
       if (allocated(error)) return
+      ! An approach of 0 (no load) or beyond the program's range is invalid input, not "the
+      ! profiles do not touch" (status 6).
+      call shc_solve(ih, headline_t_y, 0.0d0, 3, 0.0d0, 0.0d0, 0.0d0, 0.0d0, values, istat)
+      call shc_errmsg(ih, msg)
+      call check(error, istat == stat_invalid_input .and. index(msg, 'approach') > 0 .and. &
+         index(msg, 'out of range') > 0, message='approach 0: '//trim(msg))
+      if (allocated(error)) return
       call shc_set_material(ih, 82670.0d0, nan, 0.3d0, istat)
       call check(error, istat, stat_invalid_input)
       if (allocated(error)) return

@@ -394,6 +394,10 @@ contains
       else if (load%mode == load_vertical_force) then
          call check_range('load%vertical_force', load%value, 'vertical force', error)
          if (allocated(error)) return
+      else if (load%mode == load_approach) then
+         ! The program's range: 0 < δ ≤ 5 mm (0 or less is no load, not a missed contact).
+         call check_range('load%approach', load%value, 'approach', error)
+         if (allocated(error)) return
       end if
       call check_creepage(creepage, error)
       if (allocated(error)) return
