@@ -189,7 +189,7 @@ contains
       type(coupling_start_type), intent(inout), optional :: start
       real(wp), intent(in), optional :: dz_guess
       integer, parameter :: max_steps = 40
-      real(wp) :: x, x_old, r, r_old, step, v
+      real(wp) :: x, x_old, r_old, v
       integer :: it
 
       x = log(f_z)
@@ -205,18 +205,29 @@ contains
          v = strips_vertical_force(normal)
          if (abs(v - f_z) <= strip_vertical_rtol*f_z) return
          if (.not. v > 0.0_wp) exit
-         r = log(v/f_z)
-         step = -r
-         if (it > 1 .and. r /= r_old) step = -r*(x - x_old)/(r - r_old)
          ! At most a factor e per step (a secant across a steep change of V/q).
-         step = max(-1.0_wp, min(1.0_wp, step))
-         x_old = x
-         r_old = r
-         x = x + step
+         call secant_advance(x, x_old, log(v/f_z), r_old, it == 1, 1.0_wp)
       end do
       call fatal_error(error, 'vertical load: the vertical force of the strips did not '// &
          'converge to the prescribed F_z', stat_numerical)
    end subroutine strip_vertical_load
+
+   !> One secant step on r(x) = 0 from (x, r) and the last point (x_old, r_old), which then
+   !> become the last point: the first step (`first`) takes dr/dx = 1; a step is at most
+   !> `limit` when given.
+   pure subroutine secant_advance(x, x_old, r, r_old, first, limit)
+      real(wp), intent(inout) :: x, x_old, r_old
+      real(wp), intent(in) :: r
+      logical, intent(in) :: first
+      real(wp), intent(in), optional :: limit
+      real(wp) :: step
+      step = -r
+      if (.not. first .and. r /= r_old) step = -r*(x - x_old)/(r - r_old)
+      if (present(limit)) step = max(-limit, min(limit, step))
+      x_old = x
+      r_old = r
+      x = x + step
+   end subroutine secant_advance
 
    !> The vertical force of normal solutions (N, up positive): Σ N_i cos γ_i over the strips of
    !> every loaded patch, γ_i the strip's surface angle (`gamma_n`: the wheel's γ_i, or the
@@ -268,7 +279,7 @@ contains
       !> Starts of the coupling's length iterations.
       type(coupling_start_type), intent(inout), optional :: start
       integer, parameter :: max_steps = 40
-      real(wp) :: dz_first, x, x_old, r, r_old, step
+      real(wp) :: dz_first, x, x_old, r_old
       integer :: k, it
       logical :: shared
 
@@ -296,13 +307,8 @@ contains
       do it = 1, max_steps
          call solve_vertical_load(contacts, exp(x), normal, dz, error, start)
          if (allocated(error)) return
-         r = log(sum(normal%load)/force)
          if (abs(sum(normal%load) - force) <= shared_force_rtol*force) return
-         step = -r
-         if (it > 1 .and. r /= r_old) step = -r*(x - x_old)/(r - r_old)
-         x_old = x
-         r_old = r
-         x = x + step
+         call secant_advance(x, x_old, log(sum(normal%load)/force), r_old, it == 1)
       end do
       call fatal_error(error, 'normal force shared by the patches: their sum did not '// &
          'converge to the prescribed normal force', stat_numerical)
