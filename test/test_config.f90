@@ -296,6 +296,11 @@ contains
       call expect_error(error, 'builtin', [character(len=40) :: &
          "&profiles wheel = 'builtin:S1003' /"], [character(len=80) :: &
          'unknown built-in profile', 'builtin:S1002'])
+      if (allocated(error)) return
+      ! 'all' or 'none' beside other fields (accepted before, 'none' winning silently).
+      call expect_error(error, 'fields', [character(len=40) :: &
+         "&output fields = 'all', 'none' /"], [character(len=80) :: 'fields.nml:1', &
+         "'all' and 'none' stand alone"])
    end subroutine test_bad_choice
 
    subroutine test_structure_errors(error)

@@ -341,6 +341,13 @@ contains
          if (allocated(error)) return
       end do
       if (n == 0) config%output%fields(1) = 'none'
+      ! 'all' and 'none' stand alone: beside other fields they contradict them or say nothing.
+      if (n > 1 .and. (any(config%output%fields == 'none') .or. &
+                       any(config%output%fields == 'all'))) then
+         call fatal_error(error, origin(config, 'output%fields')//": 'all' and 'none' stand "// &
+            "alone; expected either of them, or a list of fields (e.g. 'pressure', "// &
+            "'traction')")
+      end if
    end subroutine check_output
 
    !> Every sweep value in the range of its variable; ranges well formed; list lengths equal
