@@ -300,7 +300,7 @@ contains
       ! 'all' or 'none' beside other fields (accepted before, 'none' winning silently).
       call expect_error(error, 'fields', [character(len=40) :: &
          "&output fields = 'all', 'none' /"], [character(len=80) :: 'fields.nml:1', &
-         "'all' and 'none' stand alone"])
+         "'all', 'none' and 'auto' stand alone"])
    end subroutine test_bad_choice
 
    subroutine test_structure_errors(error)

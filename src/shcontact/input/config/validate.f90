@@ -341,12 +341,12 @@ contains
          if (allocated(error)) return
       end do
       if (n == 0) config%output%fields(1) = 'none'
-      ! 'all' and 'none' stand alone: beside other fields they contradict them or say nothing.
+      ! 'all', 'none' and 'auto' stand alone: beside other fields they contradict them.
       if (n > 1 .and. (any(config%output%fields == 'none') .or. &
-                       any(config%output%fields == 'all'))) then
-         call fatal_error(error, origin(config, 'output%fields')//": 'all' and 'none' stand "// &
-            "alone; expected either of them, or a list of fields (e.g. 'pressure', "// &
-            "'traction')")
+          any(config%output%fields == 'all') .or. any(config%output%fields == 'auto'))) then
+         call fatal_error(error, origin(config, 'output%fields')//": 'all', 'none' and "// &
+            "'auto' stand alone; expected one of them, or a list of fields (e.g. "// &
+            "'pressure', 'traction')")
       end if
    end subroutine check_output
 
