@@ -517,9 +517,21 @@ contains
       if (allocated(error)) return
       call merge_result_files(merged, [string_type(part1), string_type(part1)], 'test', &
          info%date, lerr)
+      call check(error, allocated(lerr), message='the same file twice')
+      if (allocated(error)) return
+      call check(error, index(lerr%message, '"'//part1//'" is given twice') > 0, &
+         message=lerr%message)
+      if (allocated(error)) return
+      ! Two files holding one case.
+      part2 = scratch('bad_part1b')
+      call write_result_file(part2, info, config, [3], results(3:3), lerr)
+      call fail_on(error, lerr, 'write')
+      if (allocated(error)) return
+      call merge_result_files(merged, [string_type(part1), string_type(part2)], 'test', &
+         info%date, lerr)
       call check(error, allocated(lerr), message='duplicate cases')
       if (allocated(error)) return
-      call check(error, index(lerr%message, 'case 1 is in both') > 0, message=lerr%message)
+      call check(error, index(lerr%message, 'case 3 is in both') > 0, message=lerr%message)
       if (allocated(error)) return
       info2 = info
       call load_config('', [character(len=40) :: 'sweep%nu_x=0,1e-3,3e-3', &

@@ -994,9 +994,14 @@ contains
                return
             end if
             if (source(icase) /= 0) then
-               call fatal_error(error, 'merge: case '//str_int(icase)//' is in both "'// &
-                  inputs(source(icase))%text//'" and "'//inputs(f)%text//'"', &
-                  stat_invalid_input)
+               if (inputs(source(icase))%text == inputs(f)%text) then
+                  call fatal_error(error, 'merge: "'//inputs(f)%text//'" is given twice; '// &
+                     'give each shard once', stat_invalid_input)
+               else
+                  call fatal_error(error, 'merge: case '//str_int(icase)//' is in both "'// &
+                     inputs(source(icase))%text//'" and "'//inputs(f)%text//'"', &
+                     stat_invalid_input)
+               end if
                return
             end if
             source(icase) = f
