@@ -518,6 +518,19 @@ contains
       if (allocated(error)) return
       call check(error, len(out) == 0, message='--format none: stdout '//out)
       if (allocated(error)) return
+      ! Two threads: the first one writes blocks while the other solves; every tenth and the
+      ! 100 % line still come (they stopped at 30 %).
+      call write_lines(dir//'/doe.nml', [character(len=80) :: "&sweep mode = 'grid'", &
+         'nu_x = 0, 2e-3  nu_x_points = 20  nu_y = 0, 2e-3  nu_y_points = 20', &
+         'phi = 0, 2e-3  phi_points = 10 /'])
+      call run_expect(error, dir, 'run doe.nml --format none --threads 2 -o d.h5', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: progress: 4000 of 4000 cases (100 %), ', &
+         'two threads: the last line')
+      if (allocated(error)) return
+      call shell('test $(grep -c "^shcontact: progress: " '//dir//'/err.txt) -ge 8', stat)
+      call check(error, stat, 0, message='two threads: a line at (nearly) every tenth: '//err)
+      if (allocated(error)) return
       call run_expect(error, dir, 'run sweep.nml -q -o s.h5', 0, out, err)
       if (allocated(error)) return
       call check(error, len(err) == 0, message='-q: no progress lines: '//err)

@@ -553,8 +553,13 @@ contains
          end do
          held%n = held%n + nb
          n_done = n_done + nb
-         if (.not. options%write_output .and. associated(options%progress)) &
+         if (.not. options%write_output .and. associated(options%progress)) then
             call options%progress(n_done, outcome%last - outcome%first + 1, .true.)
+         else if (associated(options%progress)) then
+            ! The first thread reports as it solves; while it wrote a block file or the output's
+            ! header the others' cases went unreported: a report for the whole block.
+            call options%progress(n_done, outcome%last - outcome%first + 1, .false.)
+         end if
          next = next + nb
          if (config%output%checkpoint_cases > 0) then
             block = config%output%checkpoint_cases
