@@ -500,8 +500,8 @@ contains
    !> last one at 100 %; none with -q; none for a single case.
    subroutine test_progress_lines(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: dir, out, err
-      integer :: stat
+      character(len=:), allocatable :: dir, out, err, header, row
+      integer :: stat, p
       if (unavailable(error, .false.)) return
       dir = scratch_directory('cli_progress')
       call write_lines(dir//'/sweep.nml', sweep_case)
@@ -534,6 +534,17 @@ contains
       call run_expect(error, dir, 'run sweep.nml -q -o s.h5', 0, out, err)
       if (allocated(error)) return
       call check(error, len(err) == 0, message='-q: no progress lines: '//err)
+      if (allocated(error)) return
+      ! The text table's columns line up behind the wide adhesion_fraction header.
+      call run_expect(error, dir, 'run sweep.nml -q --format text -o s.h5', 0, out, err)
+      if (allocated(error)) return
+      header = line_of(out, 1)
+      row = line_of(out, 3)
+      p = index(header, 'wheel_fx_norm')
+      call check(error, p > 1 .and. len(row) >= p, message='text table: '//header)
+      if (allocated(error)) return
+      call check(error, row(p - 1:p - 1) == ' ' .and. row(p:p) /= ' ', &
+         message='values under their headers: '//header//new_line('a')//row)
       if (allocated(error)) return
       call run_expect(error, dir, 'run -o one.h5', 0, out, err)
       if (allocated(error)) return

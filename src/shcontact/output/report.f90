@@ -76,19 +76,21 @@ contains
          if (config%is_kinematic()) then
             ! The counts first (not summary columns), then the summary's own.
             do k = 1, size(kinematic_text_columns)
-               line = line//pad(trim(kinematic_text_columns(k)), 14)
+               line = line//pad(trim(kinematic_text_columns(k)), &
+                  column_width(kinematic_text_columns(k)))
                if (k <= 2) then
-                  units = units//pad('[1]', 14)
+                  units = units//pad('[1]', column_width(kinematic_text_columns(k)))
                else
                   units = units//pad(bracketed(summary_columns(2, &
-                     column_index(kinematic_text_columns(k)))), 14)
+                     column_index(kinematic_text_columns(k)))), &
+                     column_width(kinematic_text_columns(k)))
                end if
             end do
          else
             do k = 1, size(text_columns)
-               line = line//pad(trim(text_columns(k)), 14)
+               line = line//pad(trim(text_columns(k)), column_width(text_columns(k)))
                units = units//pad(bracketed(summary_columns(2, column_index(text_columns(k)))), &
-                  14)
+                  column_width(text_columns(k)))
             end do
          end if
          line = trim(line)//new_line('a')//trim(units)
@@ -223,15 +225,17 @@ contains
                pad(trim(input_buffer(p, ia, .false., .true.)), 14)
          end do
          if (ok .and. config%is_kinematic()) then
-            line = line//pad(str_int(summary%n_patches), 14)//pad(str_int(summary%n_loaded), 14)
+            line = line//pad(str_int(summary%n_patches), column_width(kinematic_text_columns(1)))// &
+               pad(str_int(summary%n_loaded), column_width(kinematic_text_columns(2)))
             do k = 3, size(kinematic_text_columns)
                line = line//pad(trim(short_buffer(summary_value(summary, &
-                  column_index(kinematic_text_columns(k))))), 14)
+                  column_index(kinematic_text_columns(k))))), &
+                  column_width(kinematic_text_columns(k)))
             end do
          else if (ok) then
             do k = 1, size(text_columns)
                line = line//pad(trim(short_buffer(summary_value(summary, &
-                  column_index(text_columns(k))))), 14)
+                  column_index(text_columns(k))))), column_width(text_columns(k)))
             end do
          else if (present(message)) then
             line = line//message
@@ -435,6 +439,13 @@ contains
       character(len=len_trim(short_buffer(x))) :: text
       text = short_buffer(x)
    end function short_real
+
+   !> Width of a result column of the text table: 14, or its name and a blank when longer
+   !> (`adhesion_fraction`), so that the header, the units and the values line up.
+   pure integer function column_width(name)
+      character(len=*), intent(in) :: name
+      column_width = max(14, len_trim(name) + 1)
+   end function column_width
 
    pure function pad(text, width) result(padded)
       character(len=*), intent(in) :: text
