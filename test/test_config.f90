@@ -43,7 +43,8 @@ contains
          new_unittest('format_real_round_trip', test_format_real), &
          new_unittest('kinematics_parsing', test_kinematics), &
          new_unittest('kinematics_errors', test_kinematics_errors), &
-         new_unittest('kinematics_round_trip', test_kinematics_round_trip) &
+         new_unittest('kinematics_round_trip', test_kinematics_round_trip), &
+         new_unittest('load_quantity_of_another_mode', test_load_quantity_of_another_mode) &
          ]
    end subroutine collect_config
 
@@ -584,5 +585,39 @@ contains
       call check(error, d%n_cases() == 6 .and. .not. d%kinematics%pitch_rate_given .and. &
          p%pitch_rate == -3.0e4_wp/460.0_wp, message='sweep and pure rolling')
    end subroutine test_kinematics_round_trip
+
+   !> A `&load` quantity that the load mode does not read (it would be ignored) is refused,
+   !> naming where it was given, the mode and the quantity the mode reads; the resolved namelist
+   !> leaves the unread quantities as comments, so that it reads back.
+   subroutine test_load_quantity_of_another_mode(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: c, d
+      character(len=:), allocatable :: text
+      call expect_error(error, 'l_force', [character(len=60) :: &
+         "&load mode = 'force', approach = 0.1 /"], [character(len=100) :: 'l_force.nml:1', &
+         "&load approach is given, but &load mode = 'force' does not read it", &
+         "(it reads normal_force)", "('approach')"])
+      if (allocated(error)) return
+      call expect_error(error, 'l_vert', [character(len=60) :: "&load mode = 'approach',", &
+         '  vertical_force = 5e4 /'], [character(len=100) :: 'l_vert.nml:2', &
+         "&load vertical_force is given, but &load mode = 'approach'", '(it reads approach)'])
+      if (allocated(error)) return
+      ! The kinematic mode's default load mode is 'vertical': a normal force is not read.
+      call expect_error(error, 'l_kin', [character(len=60) :: "&kinematics mode = 'on' /", &
+         '&load normal_force = 5e4 /'], [character(len=100) :: 'l_kin.nml:2', &
+         "&load mode = 'vertical' does not read it", "'force' or 'shared-force'"])
+      if (allocated(error)) return
+      call load_valid('', [character(len=60) :: 'load%mode=shared-force', &
+         'load%normal_force=5e4'], c, error)
+      if (allocated(error)) return
+      call load_valid('', [character(len=60) :: 'load%mode=approach', 'load%approach=0.08'], c, &
+         error)
+      if (allocated(error)) return
+      call read_back(c, d, text, error)
+      if (allocated(error)) return
+      call check(error, d%load%approach == 0.08_wp .and. index(text, &
+         '! normal_force not read by this mode') > 0 .and. index(text, &
+         '! vertical_force not read by this mode') > 0, message='resolved namelist: '//text)
+   end subroutine test_load_quantity_of_another_mode
 
 end module test_config

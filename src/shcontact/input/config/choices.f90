@@ -15,6 +15,7 @@ module shcontact_input_config_choices
    public :: side_right, side_left
    public :: kinematics_off, kinematics_on
    public :: load_mode_force, load_mode_vertical, load_mode_approach, load_mode_shared
+   public :: load_mode_uses, load_quantities
    public :: curvature_local, curvature_reference
    public :: precision_double, precision_single
    public :: sweep_grid, sweep_list
@@ -25,6 +26,9 @@ module shcontact_input_config_choices
    !> `load_vertical_force`, `load_approach` of shcontact_api_solver; test `registry`).
    integer, parameter :: load_mode_force = 1, load_mode_vertical = 2, load_mode_approach = 3, &
       load_mode_shared = 4
+   !> The `&load` quantities, each read by some modes only ([[load_mode_uses]]).
+   character(len=*), parameter :: load_quantities(3) = [character(len=14) :: 'normal_force', &
+      'approach', 'vertical_force']
    !> `&normal longitudinal_curvature`: γ(y) or γ₀ in A(y).
    integer, parameter :: curvature_local = 1, curvature_reference = 2
    !> `&output precision` of the per-element fields.
@@ -81,5 +85,23 @@ module shcontact_input_config_choices
       choice_type('traction', 7, 'the tractions'), &
       choice_type('state', 8, 'the stick/slip state'), &
       choice_type('slip', 9, 'the slip')]
+
+contains
+
+   !> Whether `&load mode` (its code) reads the load quantity `name` (one of [[load_quantities]],
+   !> or the sweep axis of the same name): `normal_force` by 'force' and 'shared-force',
+   !> `approach` by 'approach', `vertical_force` by 'vertical'.
+   pure logical function load_mode_uses(name, mode)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: mode
+      select case (name)
+      case ('normal_force')
+         load_mode_uses = mode == load_mode_force .or. mode == load_mode_shared
+      case ('approach')
+         load_mode_uses = mode == load_mode_approach
+      case default
+         load_mode_uses = mode == load_mode_vertical
+      end select
+   end function load_mode_uses
 
 end module shcontact_input_config_choices

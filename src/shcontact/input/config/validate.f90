@@ -23,7 +23,7 @@ module shcontact_input_config_validate
    use shcontact_input_config_variables, only: variable_choices
    use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
       load_mode_choices, load_mode_force, load_mode_approach, &
-      load_mode_vertical, sweep_list, load_mode_shared
+      load_mode_vertical, sweep_list, load_mode_shared, load_mode_uses, load_quantities
    use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
    use shcontact_tangential_option_registry, only: method_fastsim, spin_additive, &
       spin_model_choices
@@ -90,6 +90,8 @@ contains
          call check_output(c, error)
          if (allocated(error)) return
          call resolve_kinematic_mode(c, error)
+         if (allocated(error)) return
+         call check_load_quantities(c, error)
          if (allocated(error)) return
          call check_sweep(c, error)
       end associate
@@ -194,6 +196,43 @@ contains
       config%tangential%spin_model = spin_additive
       if (origin(config, 'load%mode') == 'default') config%load%mode = load_mode_vertical
    end subroutine resolve_kinematic_mode
+
+   !> A `&load` quantity given (case file or override) that the load mode does not read would
+   !> be silently ignored: refused, naming the mode and the quantity it reads. Checked after
+   !> the kinematic mode has resolved the mode's default.
+   subroutine check_load_quantities(config, error)
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: where, mode, used
+      integer :: i, j
+
+      do i = 1, size(load_quantities)
+         where = origin(config, 'load%'//trim(load_quantities(i)))
+         if (where == 'default' .or. load_mode_uses(trim(load_quantities(i)), &
+            config%load%mode)) cycle
+         mode = choice_name(load_mode_choices, config%load%mode)
+         used = ''
+         do j = 1, size(load_quantities)
+            if (load_mode_uses(trim(load_quantities(j)), config%load%mode)) &
+               used = trim(load_quantities(j))
+         end do
+         call fatal_error(error, where//': &load '//trim(load_quantities(i))//' is given, but '// &
+            "&load mode = '"//mode//"' does not read it (it reads "//used//'); remove it, or '// &
+            'set the mode that reads it ('//trim(mode_reading(trim(load_quantities(i))))//')')
+         return
+      end do
+   contains
+      !> The mode that reads a load quantity.
+      pure function mode_reading(name) result(m)
+         character(len=*), intent(in) :: name
+         character(len=27) :: m
+         select case (name)
+         case ('normal_force'); m = "'force' or 'shared-force'"
+         case ('approach'); m = "'approach'"
+         case default; m = "'vertical'"
+         end select
+      end function mode_reading
+   end subroutine check_load_quantities
 
    !> The key of a variable's range in shcontact_core_ranges (a sweep list takes the range of
    !> the variable it sweeps); 0 when it has none.
@@ -415,7 +454,7 @@ contains
                   'from the wheelset motion')
                return
             end if
-            if (axis_stage(ia) == axis_load .and. .not. load_axis_matches(name, &
+            if (axis_stage(ia) == axis_load .and. .not. load_mode_uses(name, &
                 config%load%mode)) then
                call fatal_error(error, where//': &sweep '//name//' is given but &load mode = '// &
                   "'"//choice_name(load_mode_choices, config%load%mode)// &
@@ -440,18 +479,5 @@ contains
       end if
    end subroutine check_sweep
 
-   pure logical function load_axis_matches(name, mode)
-      character(len=*), intent(in) :: name
-      !> The load mode's code.
-      integer, intent(in) :: mode
-      select case (name)
-      case ('normal_force')
-         load_axis_matches = mode == load_mode_force .or. mode == load_mode_shared
-      case ('approach')
-         load_axis_matches = mode == load_mode_approach
-      case default
-         load_axis_matches = mode == load_mode_vertical
-      end select
-   end function load_axis_matches
 
 end module shcontact_input_config_validate

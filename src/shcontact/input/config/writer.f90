@@ -7,6 +7,7 @@ module shcontact_input_config_writer
    use shcontact_input_config_limits, only: max_fields
    use shcontact_input_config_sweep, only: sweep_axis_type, axis_index
    use shcontact_core_choices, only: choice_type, choice_name, choice_list
+   use shcontact_input_config_choices, only: load_mode_uses, load_quantities
    use shcontact_core_ranges, only: ranges, find_range, range_text
    use shcontact_input_config_types, only: case_config_type, choice_value, number_value, &
       string_value, logical_value
@@ -22,7 +23,8 @@ contains
    !> The resolved configuration as namelist text (every variable, one per line, with its
    !> units as a comment); reading it back gives the same configuration. In kinematic mode the
    !> unused `&creepage` group is left out, and a pitch rate that was not given stays a comment
-   !> (pure rolling follows each case's forward speed).
+   !> (pure rolling follows each case's forward speed); so do the `&load` quantities that the
+   !> load mode does not read (given, they would be refused).
    function config_namelist(config) result(text)
       !> A validated configuration.
       type(case_config_type), intent(in) :: config
@@ -59,6 +61,13 @@ contains
          name = trim(v%name)
          value = variable_value_text(config, v)
          if (len(value) == 0) cycle
+         if (v%group == 'load' .and. any(load_quantities == v%name)) then
+            if (.not. load_mode_uses(name, config%load%mode)) then
+               ! Given, it would be refused (shcontact_input_config_validate).
+               text = text//'  ! '//name//' not read by this mode'//nl
+               cycle
+            end if
+         end if
          text = text//'  '//name//' = '//value//'  ! '
          if (len_trim(v%units) > 0) then
             if (v%units == '1') then
