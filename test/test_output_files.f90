@@ -458,8 +458,11 @@ contains
    !> file under the output name only with --force.
    subroutine test_own_files_replaced(error)
       type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: software_names(2) = [character(len=9) :: 'h5py', &
+         'shcontact']
       character(len=:), allocatable :: dir
-      integer :: stat
+      type(lib_error), allocatable :: e
+      integer :: stat, k
       if (unavailable(error, .false.)) return
       dir = scratch_directory('of_own')
       call write_lines(dir//'/sw.nml', small_sweep)
@@ -483,6 +486,28 @@ contains
       call check(error, stat, 0, message='--force over a foreign output: '// &
          file_text(dir//'/err.txt'))
       if (allocated(error)) return
+      ! Another program's HDF5 files with a `software` attribute: not taken for ours, whatever
+      ! it says, unless the file is laid out as ours (n_cases, /input/namelist).
+      do k = 1, 2
+         call foreign_hdf5(dir//'/other.h5', trim(software_names(k)), e)
+         call check(error, .not. allocated(e), message='writing a foreign HDF5 file')
+         if (allocated(error)) return
+         call shell('cksum < '//dir//'/other.h5 > '//dir//'/before.txt')
+         stat = run_program(dir, 'run -q -o other.h5')
+         call check(error, stat, 3, message='foreign HDF5 output (software = '// &
+            trim(software_names(k))//'): '//file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+         call shell('cksum < '//dir//'/other.h5 > '//dir//'/after.txt')
+         call check(error, file_text(dir//'/before.txt') == file_text(dir//'/after.txt') .and. &
+            index(file_text(dir//'/err.txt'), 'is not a shcontact result file') > 0, &
+            message='the foreign HDF5 file is untouched and named: '//file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+         stat = run_program(dir, 'merge m.h5 other.h5')
+         call check(error, stat /= 0 .and. .not. holds(dir, 'test -e m.h5') .and. &
+            index(file_text(dir//'/err.txt'), 'not a shcontact result file') > 0, &
+            message='a foreign HDF5 file as merge input: '//file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+      end do
       ! merge: the same rule (a whole run's file is a valid single input).
       call shell('echo mine > '//dir//'/notes2.h5')
       stat = run_program(dir, 'merge notes2.h5 own.h5')
@@ -496,6 +521,18 @@ contains
       call check(error, stat, 0, message='merge --force: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_own_files_replaced
+
+   !> An HDF5 file of another program: one dataset and the root attribute `software`.
+   subroutine foreign_hdf5(name, software, e)
+      character(len=*), intent(in) :: name, software
+      type(lib_error), allocatable, intent(out) :: e
+      type(h5_file_type) :: out
+      if (file_exists(name)) call shell('rm -f '//name)
+      call h5_create(out, name, e)
+      if (.not. allocated(e)) call h5_write_attribute(out, '/', 'software', software, e)
+      if (.not. allocated(e)) call h5_write(out, 'measurements', [1.0_wp, 2.0_wp, 3.0_wp], 'm', e)
+      if (.not. allocated(e)) call h5_commit(out, e)
+   end subroutine foreign_hdf5
 
    !> The temporary names OUT.h5.tmpPID and OUT.xmf.tmpPID are created exclusively: a file of
    !> that name makes the write fail and is left as it was (it was truncated before).

@@ -123,18 +123,27 @@ contains
    end subroutine check_kind
 
 
-   !> True for an HDF5 file written by shcontact.
+   !> True for an HDF5 file written by shcontact: its root attribute `software` is
+   !> 'shcontact', it has the root attribute `n_cases` and the dataset /input/namelist (every
+   !> result file, shard and merged file has them). Another program's file that merely has a
+   !> `software` attribute (h5py, CONTACT, a data logger) is not taken for ours.
    function is_result_file(name) result(yes)
       character(len=*), intent(in) :: name
       logical :: yes
       type(h5_file_type) :: file
       type(error_type), allocatable :: error
       character(len=:), allocatable :: software
+      integer :: n_cases
       yes = .false.
       call h5_open(file, name, error)
       if (allocated(error)) return
       call h5_read_attribute(file, '/', 'software', software, error)
-      yes = .not. allocated(error)
+      if (.not. allocated(error)) yes = software == 'shcontact'
+      if (yes) then
+         call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
+         yes = .not. allocated(error)
+      end if
+      if (yes) yes = h5_exists(file, 'input/namelist')
       call h5_close(file)
    end function is_result_file
 

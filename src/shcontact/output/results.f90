@@ -852,6 +852,10 @@ contains
       call h5_open(file, name, error)
       if (allocated(error)) return
       call h5_read_attribute(file, '/', 'software', software, error)
+      if (.not. allocated(error)) then
+         if (software /= 'shcontact') call fatal_error(error, 'its software attribute is "'// &
+            software//'"')
+      end if
       if (allocated(error)) then
          call fatal_error(error, '"'//name//'" is not a shcontact result file', stat_invalid_input)
          call h5_close(file)
@@ -859,7 +863,15 @@ contains
       end if
       call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
       if (.not. allocated(error)) call h5_read(file, 'input/namelist', config_text, error)
-      if (.not. allocated(error)) call check_layout(file, name, error)
+      if (allocated(error)) then
+         ! Every result file has both (a foreign file that says software = 'shcontact').
+         software = error%message
+         call fatal_error(error, '"'//name//'" is not a shcontact result file ('// &
+            software//')', stat_invalid_input)
+         call h5_close(file)
+         return
+      end if
+      call check_layout(file, name, error)
       if (.not. allocated(error)) call h5_read(file, 'summary/case', indices, error)
       if (allocated(error)) then
          call h5_close(file)
