@@ -12,7 +12,8 @@ module test_kinematic_balance
    use shcontact_core_material, only: material_type
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      load_vertical_force, load_vertical_position
+      load_vertical_force, load_vertical_position, load_approach
+   use shcontact_core_strings, only: str_real
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
@@ -51,7 +52,8 @@ contains
          new_unittest('flange_states_other_table_steps', test_table_steps), &
          new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity), &
          new_unittest('reference_point_continuous_flange_789', test_reference_789), &
-         new_unittest('first_try_tables_give_full_tables_forces', test_first_try_tables)]
+         new_unittest('first_try_tables_give_full_tables_forces', test_first_try_tables), &
+         new_unittest('flange_root_steps_as_documented', test_flange_root_steps)]
    end subroutine collect_kinematic_balance
 
    !> The vertical force carried by the contact (N, up on the wheel).
@@ -587,5 +589,68 @@ contains
       write (*, '(4x,a,3f9.4,l2)') 'gamma0 first, last, largest step ', gamma(1), gamma_last, &
          step_largest, growing
    end subroutine test_reference_789
+
+   !> doc/kinematics.md, "Not continuous at the flange root": the kinematic call's steps at
+   !> t_y = 6.614850 → 6.614855 mm (the coupled reduction changes branch) and 6.61510 → 6.61515 mm
+   !> (the first contact moves from the root to the flange face), yaw 0, pure rolling, 64.7 kN:
+   !> the table's F_y,track, ΣF_n (±0.01 kN), Δz (±1e-4 mm), the plane (±1e-3 rad) and the
+   !> reference point (±0.01 mm); and, at a prescribed approach of 0.074 mm, the continuous
+   !> normal force (87 043, 87 026, 87 007 N, ±1 N). A fix of either step makes it fail: then
+   !> the document says what changed.
+   subroutine test_flange_root_steps(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp), parameter :: t_y(4) = [6.614850_wp, 6.614855_wp, 6.615100_wp, 6.615150_wp]
+      real(wp), parameter :: fy(4) = [-52.72e3_wp, -51.48e3_wp, -54.97e3_wp, -44.94e3_wp], &
+         fn(4) = [85.60e3_wp, 84.60e3_wp, 87.40e3_wp, 80.05e3_wp], &
+         dz(4) = [0.0994_wp, 0.0984_wp, 0.1051_wp, 0.0461_wp], &
+         plane(4) = [-0.745_wp, -0.745_wp, -0.712_wp, -1.204_wp], &
+         y_ref(4) = [723.53_wp, 723.53_wp, 723.60_wp, 721.08_wp]
+      real(wp), parameter :: t_approach(3) = [6.614845_wp, 6.614850_wp, 6.614855_wp], &
+         fn_approach(3) = [87043.0_wp, 87026.0_wp, 87007.0_wp]
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: lib
+      character(len=16) :: text
+      integer :: i
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', lib)
+      do i = 1, size(t_y)
+         if (.not. allocated(lib)) call solver%solve_kinematic(state_at(t_y(i)), &
+            contact_load_type(load_vertical_force, 64700.0_wp), r, lib)
+         if (allocated(lib)) then
+            call test_failed(error, lib%message)
+            return
+         end if
+         write (text, '(f10.6)') t_y(i)
+         call check(error, r%n_loaded == 1 .and. abs(r%track%fy - fy(i)) <= 10.0_wp .and. &
+            abs(r%patch(1)%fn - fn(i)) <= 10.0_wp .and. abs(r%dz - dz(i)) <= 1.0e-4_wp .and. &
+            abs(r%patch(1)%gamma_plane - plane(i)) <= 1.0e-3_wp .and. &
+            abs(r%patch(1)%y_track - y_ref(i)) <= 0.01_wp, message='t_y = '//trim(text)// &
+            ' mm: F_y,track, F_n, dz, plane, y_track = '//str_real(r%track%fy)//', '// &
+            str_real(r%patch(1)%fn)//', '//str_real(r%dz)//', '// &
+            str_real(r%patch(1)%gamma_plane)//', '//str_real(r%patch(1)%y_track)// &
+            ' (doc/kinematics.md, "Not continuous at the flange root")')
+         if (allocated(error)) return
+      end do
+      do i = 1, size(t_approach)
+         call solver%solve_kinematic(state_at(t_approach(i)), contact_load_type(load_approach, &
+            0.074_wp), r, lib)
+         if (allocated(lib)) then
+            call test_failed(error, lib%message)
+            return
+         end if
+         call check(error, abs(r%patch(1)%fn - fn_approach(i)) <= 1.0_wp, message= &
+            'approach 0.074 mm: F_n '//str_real(r%patch(1)%fn)//' N, documented '// &
+            str_real(fn_approach(i)))
+         if (allocated(error)) return
+      end do
+   contains
+      !> Pure rolling at 30 m/s, yaw 0, at t_y.
+      pure type(wheelset_state_type) function state_at(y) result(state)
+         real(wp), intent(in) :: y
+         state = wheelset_state_type(y_ws=y, v_forward=30000.0_wp, &
+            pitch_rate=-30000.0_wp/460.0_wp)
+      end function state_at
+   end subroutine test_flange_root_steps
 
 end module test_kinematic_balance

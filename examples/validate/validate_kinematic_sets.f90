@@ -43,8 +43,9 @@ module validate_kinematic_sets
       character(len=120) :: label = ''
    end type kinematic_set_type
 
-   integer, parameter :: n_kinematic_sets = 4
-   !> The sets (data/exact/kinematic_flange/README.md, data/exact/kinematic_worn/README.md).
+   integer, parameter :: n_kinematic_sets = 6
+   !> The sets (data/exact/kinematic_flange/README.md, data/exact/kinematic_worn/README.md,
+   !> data/exact/kinematic_root/README.md).
    type(kinematic_set_type), parameter :: kinematic_sets(n_kinematic_sets) = [ &
       kinematic_set_type('data/exact/kinematic_flange/kinematic_planar.csv', &
       'builtin:S1002', 'builtin:UIC60-canted', 'kinematic flange: S1002/UIC60, Y_WS 6.5'// &
@@ -57,7 +58,13 @@ module validate_kinematic_sets
       'kinematic worn pair: Y_WS −2…6 mm × yaw 0/4 mrad × 6 sets, planar'), &
       kinematic_set_type('data/exact/kinematic_worn/kinematic_conformal.csv', &
       'data/profiles/worn/S1002-worn.txt', 'data/profiles/worn/UIC60-canted-worn.txt', &
-      'kinematic worn pair: the same, CONTACT''s conformal approach')]
+      'kinematic worn pair: the same, CONTACT''s conformal approach'), &
+      kinematic_set_type('data/exact/kinematic_root/kinematic_planar.csv', &
+      'builtin:S1002', 'builtin:UIC60-canted', 'kinematic flange root: S1002/UIC60, Y_WS '// &
+      '6.55–6.9 mm × yaw 0/±8 mrad × sets 1, 3, 6, planar'), &
+      kinematic_set_type('data/exact/kinematic_root/kinematic_conformal.csv', &
+      'builtin:S1002', 'builtin:UIC60-canted', 'kinematic flange root: the same, CONTACT''s '// &
+      'conformal approach')]
 
    !> Every CONTACT patch of a set compared: the case, its inputs, CONTACT's values and ours
    !> (CONTACT's signs: forces on the rail).
