@@ -85,13 +85,26 @@ contains
       character(len=:), allocatable, intent(out) :: message
       type(case_config_type) :: config
       type(shc_error_type), allocatable :: err
-      character(len=80) :: override(1)
-      override(1) = key//'='//value
+      character(len=80) :: override(2)
+      ! A load quantity with the mode that reads it (another mode refuses it as ignored).
+      override(1) = 'load%mode='//trim(load_mode_reading(key))
+      override(2) = key//'='//value
       call load_config('', override, config, err)
       app_accepts = .not. allocated(err)
       message = ''
       if (allocated(err)) message = err%message
    end function app_accepts
+
+   !> The `&load mode` that reads a load quantity's key (the default 'force' for any other key).
+   pure function load_mode_reading(key) result(mode)
+      character(len=*), intent(in) :: key
+      character(len=:), allocatable :: mode
+      select case (key)
+      case ('load%approach'); mode = 'approach'
+      case ('load%vertical_force'); mode = 'vertical'
+      case default; mode = 'force'
+      end select
+   end function load_mode_reading
 
    ! ------------------------------------------------------------------------------------------
    ! Item 1: pipes, process substitution, /dev/stdin; item 3: NUL and control bytes
@@ -469,7 +482,7 @@ contains
       type(case_config_type) :: config
       type(shc_error_type), allocatable :: err
       character(len=:), allocatable :: text, key, group, name
-      character(len=80) :: none(0)
+      character(len=80) :: mode_override(1)
       type(material_type) :: m
       type(track_type) :: t
       type(normal_options_type) :: n
@@ -478,13 +491,15 @@ contains
       real(wp) :: x
       integer :: ir, g, p, e, stat, checked
 
-      call load_config('', none, config, err)
-      call check(error, .not. allocated(err), message='default configuration')
-      if (allocated(error)) return
-      text = config_namelist(config)
       checked = 0
       do ir = 1, size(ranges)
          key = trim(range_key(ranges(ir)))
+         ! The load quantities are written by the mode that reads them.
+         mode_override(1) = 'load%mode='//load_mode_reading(key)
+         call load_config('', mode_override, config, err)
+         call check(error, .not. allocated(err), message='default configuration')
+         if (allocated(error)) return
+         text = config_namelist(config)
          group = key(1:index(key, '%') - 1)
          name = key(index(key, '%') + 1:)
          g = index(text, '&'//group//new_line('a'))
