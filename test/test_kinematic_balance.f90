@@ -53,7 +53,8 @@ contains
          new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity), &
          new_unittest('reference_point_continuous_flange_789', test_reference_789), &
          new_unittest('first_try_tables_give_full_tables_forces', test_first_try_tables), &
-         new_unittest('flange_root_steps_as_documented', test_flange_root_steps)]
+         new_unittest('flange_root_steps_as_documented', test_flange_root_steps), &
+         new_unittest('flange_face_steps_as_documented', test_flange_face_steps)]
    end subroutine collect_kinematic_balance
 
    !> The vertical force carried by the contact (N, up on the wheel).
@@ -652,5 +653,55 @@ contains
             pitch_rate=-30000.0_wp/460.0_wp)
       end function state_at
    end subroutine test_flange_root_steps
+
+   !> doc/kinematics.md, "Not continuous at the flange root": between t_y = 6.75 and 6.81 mm
+   !> (121 states 0.5 µm apart, yaw 0, pure rolling at 30 m/s, 64.7 kN) 9 second differences of
+   !> F_y,track exceed 400 N (the next largest is about 340 N), the largest 1.49 kN; every call
+   !> succeeds. Held within ±2 steps and ±0.1 kN so that a change of the balance's branches
+   !> shows; and ΣF_n at t_y = 6.80210 mm falls from 159.0 to 158.6 kN as Δz grows from 0.4246 to
+   !> 0.4251 mm (±0.05 kN).
+   subroutine test_flange_face_steps(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 121
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(lib_error), allocatable :: lib
+      real(wp) :: fy(n), d(n - 1), second(n - 3)
+      integer :: i, steps
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', lib)
+      do i = 1, n
+         if (.not. allocated(lib)) call solver%solve_kinematic(wheelset_state_type( &
+            y_ws=6.75_wp + 0.0005_wp*(i - 1), v_forward=30000.0_wp, &
+            pitch_rate=-30000.0_wp/460.0_wp), contact_load_type(load_vertical_force, &
+            64700.0_wp), r, lib)
+         if (allocated(lib)) then
+            call test_failed(error, lib%message)
+            return
+         end if
+         fy(i) = r%track%fy
+      end do
+      d = fy(2:n) - fy(1:n - 1)
+      second = abs(d(2:n - 2) - 0.5_wp*(d(1:n - 3) + d(3:n - 1)))
+      steps = count(second > 400.0_wp)
+      call check(error, abs(steps - 9) <= 2 .and. abs(maxval(second) - 1490.0_wp) <= 100.0_wp, &
+         message='second differences of F_y,track beyond 400 N: '//str_real(real(steps, wp))// &
+         ', largest '//str_real(maxval(second))//' N (doc/kinematics.md: 9, 1.49 kN)')
+      if (allocated(error)) return
+      ! The normal force falls as the wheel is pressed in (t_y = 6.80210 mm).
+      do i = 1, 2
+         call solver%solve_kinematic(wheelset_state_type(y_ws=6.8021_wp, v_forward=30000.0_wp, &
+            pitch_rate=-30000.0_wp/460.0_wp), contact_load_type(load_vertical_position, &
+            merge(0.4246_wp, 0.4251_wp, i == 1)), r, lib)
+         if (allocated(lib)) then
+            call test_failed(error, lib%message)
+            return
+         end if
+         fy(i) = r%track%fn
+      end do
+      call check(error, abs(fy(1) - 159.0e3_wp) <= 50.0_wp .and. abs(fy(2) - 158.6e3_wp) <= &
+         50.0_wp, message='F_n at dz = 0.4246, 0.4251 mm: '//str_real(fy(1))//', '// &
+         str_real(fy(2))//' N (doc/kinematics.md: 159.0, 158.6 kN)')
+   end subroutine test_flange_face_steps
 
 end module test_kinematic_balance
