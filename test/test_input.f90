@@ -23,6 +23,7 @@ module test_input
    use shcontact_output_report, only: report_line
    use shcontact_input_config_sweep, only: axis_index
    use shcontact_input_config_variables, only: variables, k_real, k_int
+   use shcontact_input_config_choices, only: load_mode_reading
    use shcontact_case_result, only: case_summary_type
    use test_fuzz_support, only: library_status, reset_library, samples, &
       new_library, library_option_fuzz
@@ -87,7 +88,7 @@ contains
       type(shc_error_type), allocatable :: err
       character(len=80) :: override(2)
       ! A load quantity with the mode that reads it (another mode refuses it as ignored).
-      override(1) = 'load%mode='//trim(load_mode_reading(key))
+      override(1) = 'load%mode='//load_mode_reading(key(index(key, '%') + 1:))
       override(2) = key//'='//value
       call load_config('', override, config, err)
       app_accepts = .not. allocated(err)
@@ -95,16 +96,6 @@ contains
       if (allocated(err)) message = err%message
    end function app_accepts
 
-   !> The `&load mode` that reads a load quantity's key (the default 'force' for any other key).
-   pure function load_mode_reading(key) result(mode)
-      character(len=*), intent(in) :: key
-      character(len=:), allocatable :: mode
-      select case (key)
-      case ('load%approach'); mode = 'approach'
-      case ('load%vertical_force'); mode = 'vertical'
-      case default; mode = 'force'
-      end select
-   end function load_mode_reading
 
    ! ------------------------------------------------------------------------------------------
    ! Item 1: pipes, process substitution, /dev/stdin; item 3: NUL and control bytes
@@ -495,7 +486,7 @@ contains
       do ir = 1, size(ranges)
          key = trim(range_key(ranges(ir)))
          ! The load quantities are written by the mode that reads them.
-         mode_override(1) = 'load%mode='//load_mode_reading(key)
+         mode_override(1) = 'load%mode='//load_mode_reading(key(index(key, '%') + 1:))
          call load_config('', mode_override, config, err)
          call check(error, .not. allocated(err), message='default configuration')
          if (allocated(error)) return

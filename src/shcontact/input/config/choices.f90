@@ -15,7 +15,7 @@ module shcontact_input_config_choices
    public :: side_right, side_left
    public :: kinematics_off, kinematics_on
    public :: load_mode_force, load_mode_vertical, load_mode_approach, load_mode_shared
-   public :: load_mode_uses, load_quantities
+   public :: load_mode_uses, load_quantities, load_mode_reading
    public :: curvature_local, curvature_reference
    public :: precision_double, precision_single
    public :: sweep_grid, sweep_list
@@ -103,5 +103,17 @@ contains
          load_mode_uses = mode == load_mode_vertical
       end select
    end function load_mode_uses
+
+   !> The `&load mode` name that reads a load quantity ([[load_mode_uses]]; `normal_force` is
+   !> read by 'shared-force' too): 'force', 'approach' or 'vertical'.
+   pure function load_mode_reading(name) result(mode)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: mode
+      select case (name)
+      case ('approach'); mode = 'approach'
+      case ('vertical_force'); mode = 'vertical'
+      case default; mode = 'force'
+      end select
+   end function load_mode_reading
 
 end module shcontact_input_config_choices

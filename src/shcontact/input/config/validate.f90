@@ -23,7 +23,8 @@ module shcontact_input_config_validate
    use shcontact_input_config_variables, only: variable_choices
    use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
       load_mode_choices, load_mode_force, load_mode_approach, &
-      load_mode_vertical, sweep_list, load_mode_shared, load_mode_uses, load_quantities
+      load_mode_vertical, sweep_list, load_mode_shared, load_mode_uses, load_quantities, &
+      load_mode_reading
    use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
    use shcontact_tangential_option_registry, only: method_fastsim, spin_additive, &
       spin_model_choices
@@ -218,20 +219,11 @@ contains
          end do
          call fatal_error(error, where//': &load '//trim(load_quantities(i))//' is given, but '// &
             "&load mode = '"//mode//"' does not read it (it reads "//used//'); remove it, or '// &
-            'set the mode that reads it ('//trim(mode_reading(trim(load_quantities(i))))//')')
+            "set the mode that reads it ('"//load_mode_reading(trim(load_quantities(i)))//"'"// &
+            trim(merge(" or 'shared-force'", '                  ', &
+            trim(load_quantities(i)) == 'normal_force'))//')')
          return
       end do
-   contains
-      !> The mode that reads a load quantity.
-      pure function mode_reading(name) result(m)
-         character(len=*), intent(in) :: name
-         character(len=27) :: m
-         select case (name)
-         case ('normal_force'); m = "'force' or 'shared-force'"
-         case ('approach'); m = "'approach'"
-         case default; m = "'vertical'"
-         end select
-      end function mode_reading
    end subroutine check_load_quantities
 
    !> The key of a variable's range in shcontact_core_ranges (a sweep list takes the range of
