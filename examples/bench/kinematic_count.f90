@@ -25,6 +25,12 @@
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- flange deviation 1000
 !>
+!> With `ty-scan T0 T1 N` it solves N + 1 states from t_y = T0 to T1 (yaw 0, pure rolling at
+!> 30 m/s) and lists where F_y,track leaves its neighbours' trend by more than 300 N
+!> (doc/kinematics.md, "Not continuous at the flange root"):
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count -- ty-scan 5 9 8000
+!>
 !> With `scan` it solves state n at prescribed vertical positions (doc/kinematics.md, "The
 !> patch's reference point"):
 !>
@@ -52,6 +58,12 @@ program kinematic_count
    call get_command_argument(2, preset)
    call get_command_argument(3, count_text)
    call get_command_argument(4, step_text)
+   if (trim(which) == 'ty-scan') then
+      call solver%init('builtin:S1002', 'builtin:UIC60', error)
+      if (allocated(error)) call fail(error)
+      call lateral_scan(solver, preset, count_text, step_text)
+      stop
+   end if
    n = 1000
    if (len_trim(count_text) > 0) then
       read (count_text, *, iostat=stat) n
@@ -232,10 +244,56 @@ contains
       end do
    end subroutine scan
 
+   !> F_y,track along t_y = t0 + (t1 − t0) i/n, i = 0 … n (yaw 0, pure rolling at 30 m/s,
+   !> 64.7 kN): the failed calls and every place where F_y,track leaves its neighbours' trend by
+   !> more than 300 N, |ΔF_i − (ΔF_{i−1} + ΔF_{i+1})/2| with ΔF_i = F_{i+1} − F_i
+   !> (doc/kinematics.md, "Not continuous at the flange root").
+   subroutine lateral_scan(solver, t0_text, t1_text, n_text)
+      type(contact_solver_type), intent(inout) :: solver
+      character(len=*), intent(in) :: t0_text, t1_text, n_text
+      real(wp), parameter :: threshold = 300.0_wp
+      real(wp), allocatable :: fy(:), t(:)
+      real(wp) :: t0, t1, second
+      integer :: m, i, failed, places, stat(3)
+
+      read (t0_text, *, iostat=stat(1)) t0
+      read (t1_text, *, iostat=stat(2)) t1
+      read (n_text, *, iostat=stat(3)) m
+      if (any(stat /= 0)) call usage()
+      if (m < 3 .or. .not. t1 > t0) call usage()
+      allocate (fy(0:m), t(0:m))
+      failed = 0
+      do i = 0, m
+         t(i) = t0 + (t1 - t0)*real(i, wp)/real(m, wp)
+         call solver%solve_kinematic(wheelset_state_type(y_ws=t(i), v_forward=30000.0_wp, &
+            pitch_rate=-30000.0_wp/460.0_wp), contact_load_type(load_vertical_force, &
+            wheel_load), result, error)
+         if (allocated(error)) then
+            failed = failed + 1
+            fy(i) = huge(1.0_wp)
+            deallocate (error)
+         else
+            fy(i) = result%track%fy
+         end if
+      end do
+      places = 0
+      do i = 1, m - 2
+         if (any(fy(i - 1:i + 2) == huge(1.0_wp))) cycle
+         second = (fy(i + 1) - fy(i)) - 0.5_wp*((fy(i) - fy(i - 1)) + (fy(i + 2) - fy(i + 1)))
+         if (abs(second) <= threshold) cycle
+         places = places + 1
+         write (output_unit, '(a,f10.5,a,f10.5,a,f9.1,a)') '  t_y ', t(i), ' -> ', t(i + 1), &
+            ' mm: ', second, ' N off the trend'
+      end do
+      write (output_unit, '(a,i0,a,i0,a,i0)') 'states ', m + 1, ', failed ', failed, &
+         ', second differences of F_y,track beyond 300 N: ', places
+   end subroutine lateral_scan
+
    subroutine usage()
       write (error_unit, '(a)') 'usage: shcontact-kinematic-count hunting|flange|fixed '// &
          '[default|vehicle|deviation|scan] [n = 0..1000] '// &
-         '[table_step mm | strips | dz0 dz1 steps [vehicle]]'
+         '[table_step mm | strips | dz0 dz1 steps [vehicle]]', &
+         '       shcontact-kinematic-count ty-scan t0 t1 n   (mm; n + 1 states)'
       stop 1
    end subroutine usage
 
