@@ -31,6 +31,9 @@
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- ty-scan 5 9 8000
 !>
+!> With N ≤ 20 it also prints every state (F_y,track, ΣF_n, Δz, the main patch's table plane and
+!> reference point).
+!>
 !> With `scan` it solves state n at prescribed vertical positions (doc/kinematics.md, "The
 !> patch's reference point"):
 !>
@@ -260,7 +263,7 @@ contains
       read (t1_text, *, iostat=stat(2)) t1
       read (n_text, *, iostat=stat(3)) m
       if (any(stat /= 0)) call usage()
-      if (m < 3 .or. .not. t1 > t0) call usage()
+      if (m < 1 .or. .not. t1 > t0) call usage()
       allocate (fy(0:m), t(0:m))
       failed = 0
       do i = 0, m
@@ -274,6 +277,11 @@ contains
             deallocate (error)
          else
             fy(i) = result%track%fy
+            ! A short scan lists its states (doc/kinematics.md's table).
+            if (m <= 20) write (output_unit, '(a,f10.6,a,f9.2,a,f8.2,a,f7.4,a,f7.3,a,f8.2)') &
+               '  t_y ', t(i), ' mm: F_y,track ', 1.0e-3_wp*fy(i), ' kN, F_n ', &
+               1.0e-3_wp*result%track%fn, ' kN, dz ', result%dz, ' mm, plane ', &
+               result%patch(1)%gamma_plane, ' rad, y_track ', result%patch(1)%y_track
          end if
       end do
       places = 0
