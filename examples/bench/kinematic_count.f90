@@ -31,6 +31,10 @@
 !>
 !>     fpm run --profile release --example shcontact-kinematic-count -- ty-scan 5 9 8000
 !>
+!> A fifth argument names the normal reduction (`local-hertz`; default `coupled`):
+!>
+!>     fpm run --profile release --example shcontact-kinematic-count -- ty-scan 6.6 7 800 local-hertz
+!>
 !> With N ≤ 20 it also prints every state (F_y,track, ΣF_n, Δz, the main patch's table plane and
 !> reference point).
 !>
@@ -43,7 +47,7 @@ program kinematic_count
    use shcontact, only: wp, error_type, contact_solver_type, contact_load_type, &
       contact_result_type, wheelset_state_type, load_vertical_force, set_preset, &
       contact_options_type, load_vertical_position, normal_options_type, &
-      tangential_options_type
+      tangential_options_type, new_normal_options
    use bench_moving, only: hunting_states, flange_states, trajectory_forces, values_per_state
    implicit none
    !> Vertical wheel load of the benchmark (N).
@@ -64,6 +68,7 @@ program kinematic_count
    if (trim(which) == 'ty-scan') then
       call solver%init('builtin:S1002', 'builtin:UIC60', error)
       if (allocated(error)) call fail(error)
+      call scan_reduction(solver)
       call lateral_scan(solver, preset, count_text, step_text)
       stop
    end if
@@ -297,11 +302,29 @@ contains
          ', second differences of F_y,track beyond 300 N: ', places
    end subroutine lateral_scan
 
+   !> `ty-scan`'s optional fifth argument: the normal reduction by its `&normal` name
+   !> (`coupled`, the default, or `local-hertz`).
+   subroutine scan_reduction(solver)
+      type(contact_solver_type), intent(inout) :: solver
+      type(normal_options_type) :: normal, chosen
+      type(tangential_options_type) :: tangential
+      character(len=32) :: name
+
+      call get_command_argument(5, name)
+      if (len_trim(name) == 0) return
+      call new_normal_options(chosen, error, reduction=trim(name))
+      if (allocated(error)) call fail(error)
+      call solver%get_options(normal, tangential)
+      normal%reduction = chosen%reduction
+      call solver%set_options(error, normal=normal, tangential=tangential)
+      if (allocated(error)) call fail(error)
+   end subroutine scan_reduction
+
    subroutine usage()
       write (error_unit, '(a)') 'usage: shcontact-kinematic-count hunting|flange|fixed '// &
          '[default|vehicle|deviation|scan] [n = 0..1000] '// &
          '[table_step mm | strips | dz0 dz1 steps [vehicle]]', &
-         '       shcontact-kinematic-count ty-scan t0 t1 n   (mm; n + 1 states)'
+         '       shcontact-kinematic-count ty-scan t0 t1 n [reduction]   (mm; n + 1 states)'
       stop 1
    end subroutine usage
 
