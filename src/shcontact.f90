@@ -74,7 +74,7 @@ module shcontact
    use shcontact_input_config, only: case_config_type, load_config, config_namelist
    use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry, &
       read_case_profiles
-   use shcontact_output_results, only: merge_result_files
+   use shcontact_output_merge, only: merge_result_files
    use shcontact_output_hdf5, only: h5_skip_exit_cleanup
    use shcontact_output_report, only: report_header, report_line, report_lines, &
       report_case_text, report_units

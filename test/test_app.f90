@@ -18,7 +18,8 @@ module test_app
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
       load_normal_force, load_vertical_force
-   use shcontact_output_results, only: read_result_summary, case_group_name
+   use shcontact_output_results, only: case_group_name
+   use shcontact_output_merge, only: read_result_summary
    use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_read, h5_exists, &
       h5_read_attribute
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &

@@ -11,7 +11,7 @@ module test_cli
    use test_external_data, only: external_file
    use shcontact_core_error, only: lib_error => error_type
    use shcontact_case_result, only: case_summary_type
-   use shcontact_output_results, only: read_result_summary
+   use shcontact_output_merge, only: read_result_summary
    use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists
    use shcontact_core_kinds, only: wp
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &

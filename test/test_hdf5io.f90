@@ -13,8 +13,8 @@ module test_hdf5io
    use shcontact_core_files, only: file_exists, delete_file, process_id
    use shcontact_core_text, only: string_type
    use shcontact_input_config, only: case_config_type, load_config, config_namelist
-   use shcontact_output_results, only: run_info_type, write_result_file, merge_result_files, &
-      read_result_summary
+   use shcontact_output_results, only: run_info_type, write_result_file
+   use shcontact_output_merge, only: merge_result_files, read_result_summary
    use shcontact_output_xdmf, only: xdmf_name
    use shcontact_case_result, only: case_result_type, case_summary_type
    use shcontact_tangential_patch, only: state_adhesion, state_slip

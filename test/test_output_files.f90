@@ -25,7 +25,8 @@ module test_output_files
    use shcontact_core_text, only: string_type
    use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_create, h5_commit, h5_close, h5_copy, &
       h5_make_group, h5_exists, h5_read, h5_write, h5_read_attribute, h5_write_attribute
-   use shcontact_output_results, only: read_result_summary, case_group_name
+   use shcontact_output_results, only: case_group_name
+   use shcontact_output_merge, only: read_result_summary
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns
    implicit none
    private

@@ -44,9 +44,9 @@ module shcontact_batch_sweep
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
       axis_geometry, axis_load
-   use shcontact_output_results, only: run_info_type, merge_result_files, read_result_summary, &
-      begin_run_file, end_run_file, end_summary_file, &
-      check_output_file
+   use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
+      end_summary_file, check_output_file
+   use shcontact_output_merge, only: merge_result_files, read_result_summary
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
       peak_memory_kib, &
       unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &

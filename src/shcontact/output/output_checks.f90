@@ -16,7 +16,7 @@ module shcontact_output_output_checks
    implicit none
    private
 
-   public :: check_output_file, check_layout
+   public :: check_output_file, check_layout, check_result_file
 
 contains
 
@@ -132,20 +132,33 @@ contains
       logical :: yes
       type(h5_file_type) :: file
       type(error_type), allocatable :: error
-      character(len=:), allocatable :: software
-      integer :: n_cases
       yes = .false.
       call h5_open(file, name, error)
       if (allocated(error)) return
-      call h5_read_attribute(file, '/', 'software', software, error)
-      if (.not. allocated(error)) yes = software == 'shcontact'
-      if (yes) then
-         call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
-         yes = .not. allocated(error)
-      end if
-      if (yes) yes = h5_exists(file, 'input/namelist')
+      call check_result_file(file, error)
+      yes = .not. allocated(error)
       call h5_close(file)
    end function is_result_file
+
+   !> Why an open HDF5 file is not a shcontact result file ([[is_result_file]]'s test): an error
+   !> whose message is the reason (the `software` attribute missing or another program's, no
+   !> `n_cases`, no /input/namelist); none for a result file.
+   subroutine check_result_file(file, error)
+      type(h5_file_type), intent(in) :: file
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: software
+      integer :: n_cases
+      call h5_read_attribute(file, '/', 'software', software, error)
+      if (allocated(error)) return
+      if (software /= 'shcontact') then
+         call fatal_error(error, 'its software attribute is "'//software//'"')
+         return
+      end if
+      call h5_read_attribute(file, '/', 'n_cases', n_cases, error)
+      if (allocated(error)) return
+      if (.not. h5_exists(file, 'input/namelist')) call fatal_error(error, &
+         'it has no /input/namelist')
+   end subroutine check_result_file
 
 
    !> Check the shape and type of every dataset [[read_result_summary]] reads before it is
