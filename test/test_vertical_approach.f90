@@ -20,7 +20,8 @@ module test_vertical_approach
       slide_exact, slide_linear
    use shcontact_normal_loading, only: normal_contact_type, prepare_normal_contact, solve_load
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_semihertz, only: vertical_tilt, loaded_gap
+   use shcontact_normal_semihertz, only: loaded_gap
+   use shcontact_normal_angles, only: vertical_tilt
    use test_semihertz, only: polynomial_patch
    use test_validation, only: read_columns, manchester_profiles, &
       skip_without_profiles, summary_values

@@ -7,7 +7,7 @@ module shcontact_normal_coupling_groups
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_semihertz, only: vertical_tilt
+   use shcontact_normal_angles, only: vertical_tilt
    implicit none
    private
 

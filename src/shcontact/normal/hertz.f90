@@ -11,9 +11,9 @@ module shcontact_normal_hertz
    use shcontact_core_material, only: material_type
    use shcontact_math_elliptic, only: complete_elliptic
    use shcontact_math_roots, only: scalar_function_type, find_root
-   use shcontact_normal_hertz_table, only: shape_octaves, shape_cells, shape_degree, &
-      shape_functions, shape_coef, shape_eps_minor, shape_c_major, shape_g, shape_inv_sqrt_ek, &
-      shape_k, shape_e, shape_strip_functions
+   use shcontact_normal_hertz_table, only: shape_octaves, shape_cells, shape_functions, shape_coef, &
+      shape_eps_minor, shape_c_major, shape_g, shape_inv_sqrt_ek, shape_k, shape_e, &
+      shape_strip_functions
    implicit none
    private
 

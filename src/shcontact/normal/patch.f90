@@ -7,6 +7,7 @@ module shcontact_normal_patch
    private
 
    public :: normal_patch_type, ellipse_strip_patch
+   public :: reserve_strips, clear_strips, clear_totals, clear_arrays, strip_totals
 
    !> Strips of equal width dy centred at y(i); a strip with a(i) = 0 carries no load.
    type :: normal_patch_type
@@ -136,5 +137,86 @@ contains
       class(normal_patch_type), intent(in) :: self
       offset = self%y_shift*sin(self%gamma_plane)
    end function vertical_offset
+
+   !> Make the patch arrays hold n_strips entries, allocating only when the size changes.
+   pure subroutine reserve_strips(patch, n_strips)
+      !> The patch.
+      type(normal_patch_type), intent(inout) :: patch
+      !> Number of strips.
+      integer, intent(in) :: n_strips
+      patch%n_strips = n_strips
+      if (allocated(patch%gamma_n)) then
+         if (size(patch%gamma_n) /= n_strips) deallocate (patch%gamma_n)
+      end if
+      if (.not. allocated(patch%gamma_n)) allocate (patch%gamma_n(n_strips))
+      if (allocated(patch%y)) then
+         if (size(patch%y) == n_strips) return
+         deallocate (patch%y, patch%a, patch%k, patch%p0, patch%strip_load, patch%m, patch%n, &
+            patch%eps_a, patch%gamma, patch%delta_r, patch%r_wheel)
+      end if
+      allocate (patch%y(n_strips), patch%a(n_strips), patch%k(n_strips), patch%p0(n_strips), &
+         patch%strip_load(n_strips), patch%m(n_strips), patch%n(n_strips), &
+         patch%eps_a(n_strips), patch%gamma(n_strips), patch%delta_r(n_strips), &
+         patch%r_wheel(n_strips))
+   end subroutine reserve_strips
+
+   !> A patch out of contact: zero strips (a_i = 0 carries no load), zero totals, and the
+   !> reference-point data. Arrays must be reserved ([[reserve_strips]]).
+   pure subroutine clear_strips(patch, gamma0, r0)
+      !> The patch.
+      type(normal_patch_type), intent(inout) :: patch
+      !> Contact angle (rad) and rolling radius (mm) of the reference point.
+      real(wp), intent(in) :: gamma0, r0
+      call clear_totals(patch, gamma0, r0)
+      call clear_arrays(patch, gamma0, r0)
+   end subroutine clear_strips
+
+   !> The scalars of a patch out of contact.
+   pure subroutine clear_totals(patch, gamma0, r0)
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp), intent(in) :: gamma0, r0
+      patch%is_hertz = .false.
+      patch%ellipse_a = 0.0_wp
+      patch%ellipse_b = 0.0_wp
+      patch%ellipse_y_centre = 0.0_wp
+      patch%approach = 0.0_wp
+      patch%approach_reference = 0.0_wp
+      patch%load = 0.0_wp
+      patch%area = 0.0_wp
+      patch%p_max = 0.0_wp
+      patch%dy = 0.0_wp
+      patch%gamma0 = gamma0
+      patch%r0 = r0
+      patch%gamma_plane = gamma0
+      patch%y_shift = 0.0_wp
+   end subroutine clear_totals
+
+   !> The strip arrays of a patch out of contact.
+   pure subroutine clear_arrays(patch, gamma0, r0)
+      type(normal_patch_type), intent(inout) :: patch
+      real(wp), intent(in) :: gamma0, r0
+      patch%y(:) = 0.0_wp
+      patch%a(:) = 0.0_wp
+      patch%k(:) = 0.0_wp
+      patch%p0(:) = 0.0_wp
+      patch%strip_load(:) = 0.0_wp
+      patch%m(:) = 1.0_wp
+      patch%n(:) = 1.0_wp
+      patch%eps_a(:) = 0.5_wp
+      patch%gamma(:) = gamma0
+      patch%gamma_n(:) = gamma0
+      patch%delta_r(:) = 0.0_wp
+      patch%r_wheel(:) = r0
+   end subroutine clear_arrays
+
+   !> Load, area Σ 2a_i δy and peak pressure from the strips.
+   pure subroutine strip_totals(patch)
+      type(normal_patch_type), intent(inout) :: patch
+      integer :: n
+      n = patch%n_strips
+      patch%load = sum(patch%strip_load(1:n))
+      patch%area = 2.0_wp*sum(patch%a(1:n))*patch%dy
+      patch%p_max = maxval(patch%p0(1:n))
+   end subroutine strip_totals
 
 end module shcontact_normal_patch

@@ -19,13 +19,17 @@
 module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
-   use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_no_contact
+   use shcontact_core_error, only: error_type, fatal_error, stat_no_contact
    use shcontact_core_strings, only: str_real
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant, &
       slide_exact
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
-   use shcontact_normal_patch, only: normal_patch_type
+   use shcontact_normal_patch, only: normal_patch_type, reserve_strips, clear_strips, clear_totals, &
+      clear_arrays, strip_totals
+   use shcontact_normal_strip_cover, only: cover_ramp, outward_cover, first_reached, last_reached
+   use shcontact_normal_angles, only: tilt_terms, interface_angles
+   use shcontact_normal_patch_tables, only: check_geometry, reference_curvatures
    use shcontact_normal_reference, only: reference_index, blend_depth
    use shcontact_normal_slide, only: secant_tilt, running_integral
    implicit none
@@ -33,14 +37,9 @@ module shcontact_normal_semihertz
 
    public :: semihertz_geometry_type, prepare_semihertz, semihertz_strips, semihertz_load, &
       ellipse_strips
-   public :: reserve_strips, clear_strips, refer_to_loaded_point, vertical_tilt, &
-      use_interface_angles, loaded_gap
+   public :: reserve_strips, clear_strips, refer_to_loaded_point, use_interface_angles, &
+      loaded_gap
 
-   !> Smallest relative growth of δ over which the strips sweep across table points out of
-   !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
-   !> against the ≈ 2e-4 change of the midpoint error it spreads out, small enough that the
-   !> strips seldom reach past the contact.
-   real(wp), parameter :: cover_ramp = 0.01_wp
    !> Smallest ψ per unit approach, as a fraction of ε_b: a point where the tilt term c reaches
    !> ε_b (far out on a steep flank) would never come into contact; it then comes in only at
    !> approaches far beyond any load.
@@ -213,192 +212,6 @@ contains
       call interface_angles(prepared%gap(1:n), prepared%gamma(1:n), prepared%gamma0, &
          prepared%h, prepared%gamma_n(1:n))
    end subroutine use_interface_angles
-
-   !> The direction of the pressure at each table point (doc/geometry.md, "The direction of the
-   !> pressure"): with equal elastic constants the bodies' normal displacements are equal and
-   !> opposite, so the deformed interface lies midway between the undeformed surfaces, and its
-   !> slope in the table's frame (contact angle γ₀) is the mean of the rail's and the wheel's,
-   !> w' + g'/2, with the wheel's slope w' = tan(γ − γ₀) and the relative slope g' = dg/dy:
-   !> γ_n = γ₀ + atan(tan(γ − γ₀) + g'/2). g' by central differences (one-sided at the ends); a
-   !> table of one point keeps γ.
-   pure subroutine interface_angles(gap, gamma, gamma0, h, gamma_n)
-      !> g(y) on the table's uniform grid (mm).
-      real(wp), intent(in) :: gap(:)
-      !> The wheel's contact angle γ(y) (rad).
-      real(wp), intent(in) :: gamma(:)
-      !> The table frame's contact angle γ₀ (rad) and the grid spacing h (mm).
-      real(wp), intent(in) :: gamma0, h
-      !> γ_n(y) (rad).
-      real(wp), intent(out) :: gamma_n(:)
-      real(wp) :: slope
-      integer :: i, n
-
-      n = size(gap)
-      if (n < 2) then
-         gamma_n = gamma
-         return
-      end if
-      do i = 1, n
-         if (i == 1) then
-            slope = (gap(2) - gap(1))/h
-         else if (i == n) then
-            slope = (gap(n) - gap(n - 1))/h
-         else
-            slope = (gap(i + 1) - gap(i - 1))/(2.0_wp*h)
-         end if
-         gamma_n(i) = gamma0 + atan(tan(gamma(i) - gamma0) + 0.5_wp*slope)
-      end do
-   end subroutine interface_angles
-
-   !> The approach from which the strips cover each table point, on one side of the
-   !> first-contact point (`touch(1)`, the smallest value) outwards.
-   !>
-   !> Every table point with δ_j = δ − touch_j > 0 carries load (doc/theory.md §4.3 step 3), also
-   !> beyond a point that does not: touch = g/ε_b is not monotonic where ε_b changes faster than
-   !> the gap (a jump of B between profile arcs), nor where the basin holds a second, shallower
-   !> minimum. The strips must then reach past the points out of contact, and their interval
-   !> must grow continuously with δ: a jump, when a far region comes into contact, would move
-   !> every strip of the near one and make N(δ) jump by the change of the midpoint rule's error
-   !> (up to ≈ 2e-4 with 100 strips), which no root finder can match.
-   !>
-   !> So cover is the largest monotonic minorant of touch (its running minimum from the far
-   !> end), except over points out of contact, where that minorant is flat (a region farther out,
-   !> at touch value τ, comes into contact first): there cover rises on a straight line, from the
-   !> last point before them with cover ≤ (1 − cover_ramp)τ up to τ, and the strips sweep across
-   !> them (carrying no load there) while δ grows by at least that fraction. N(δ) is then
-   !> continuous, so the load match always converges. On the tread it also stays increasing:
-   !> the sweep changes ln N by the change of the midpoint error, ≈ 2e-4, over Δ ln δ ≥ 0.01,
-   !> while d ln N/d ln δ ≈ 1.5. On nearly conformal flange-root contacts the midpoint rule's
-   !> aliasing (strips moving across narrow pressure features) can make N dip by up to ≈ 1e-3
-   !> where the strips sweep fast, as it could before where the contact grew fast; a load in
-   !> such a dip has more than one approach, and the one found is as good as the others.
-   !> Where touch increases outwards, cover = touch and the strips end where they always did
-   !> (bit for bit); near a far region the strips may reach past the contact (δ within
-   !> cover_ramp of τ), which costs them a little resolution.
-   pure subroutine outward_cover(touch, cover)
-      !> touch values from the first-contact point outwards (mm).
-      real(wp), intent(in) :: touch(:)
-      !> The cover values (mm): cover ≤ touch, cover(1) = touch(1), nondecreasing, and equal to
-      !> touch at the last point.
-      real(wp), intent(out) :: cover(:)
-      integer :: n, j, j_far, j_ramp, i
-      real(wp) :: far
-
-      n = size(touch)
-      cover(n) = touch(n)
-      do j = n - 1, 1, -1
-         cover(j) = min(touch(j), cover(j + 1))
-      end do
-      j = 2
-      do while (j < n)
-         if (.not. (cover(j) < touch(j))) then
-            j = j + 1
-            cycle
-         end if
-         ! Points j..j_far − 1 are out of contact until δ reaches far = touch(j_far).
-         j_far = j + 1
-         do while (cover(j_far) < touch(j_far))
-            j_far = j_far + 1
-         end do
-         far = cover(j_far)
-         j_ramp = j - 1
-         do while (j_ramp > 1 .and. cover(j_ramp) > (1.0_wp - cover_ramp)*far)
-            j_ramp = j_ramp - 1
-         end do
-         do i = j_ramp + 1, j_far - 1
-            cover(i) = min(cover(i), cover(j_ramp) + (far - cover(j_ramp))* &
-               real(i - j_ramp, wp)/real(j_far - j_ramp, wp))
-         end do
-         j = j_far + 1
-      end do
-   end subroutine outward_cover
-
-   !> A(0) and B(0) of the table points i1..i2, interpolated exactly as
-   !> patch_geometry_type%sample does on a table holding just those points.
-   pure subroutine reference_curvatures(geometry, i1, i2, curv_a0, curv_b0)
-      type(patch_geometry_type), intent(in) :: geometry
-      integer, intent(in) :: i1, i2
-      real(wp), intent(out) :: curv_a0, curv_b0
-      real(wp), parameter :: y = 0.0_wp
-      integer :: i
-      real(wp) :: t
-
-      if (y <= geometry%y(i1)) then
-         i = i1; t = 0.0_wp
-      else if (y >= geometry%y(i2)) then
-         i = i2 - 1; t = 1.0_wp
-      else
-         i = i1 - 1 + min(i2 - i1, 1 + int((y - geometry%y(i1))/geometry%h))
-         t = (y - geometry%y(i))/(geometry%y(i + 1) - geometry%y(i))
-      end if
-      curv_a0 = (1 - t)*geometry%curv_a(i) + t*geometry%curv_a(i + 1)
-      curv_b0 = (1 - t)*geometry%curv_b(i) + t*geometry%curv_b(i + 1)
-   end subroutine reference_curvatures
-
-   !> Reject tables the strip method cannot use, naming the item and the value: points i1..last
-   !> (all of them, in arrays of one common size, when `last` is absent).
-   subroutine check_geometry(geometry, i1, last, error)
-      type(patch_geometry_type), intent(in) :: geometry
-      integer, intent(in) :: i1
-      integer, intent(in), optional :: last
-      type(error_type), allocatable, intent(out) :: error
-      character(len=64) :: buf
-      integer :: n, i, i2
-      logical :: bad_size
-
-      if (.not. (allocated(geometry%y) .and. allocated(geometry%gap) .and. &
-                 allocated(geometry%curv_a) .and. allocated(geometry%curv_b) .and. &
-                 allocated(geometry%gamma) .and. allocated(geometry%r_wheel))) then
-         call fatal_error(error, 'patch geometry: tables y, gap, curv_a, curv_b, gamma, r_wheel '// &
-            'must all be allocated', stat_invalid_input)
-         return
-      end if
-      if (present(last)) then
-         i2 = last
-         bad_size = i1 < 1 .or. any([size(geometry%y), size(geometry%gap), &
-            size(geometry%curv_a), size(geometry%curv_b), size(geometry%gamma), &
-            size(geometry%r_wheel)] < i2)
-      else
-         i2 = size(geometry%y)
-         bad_size = any([size(geometry%gap), size(geometry%curv_a), size(geometry%curv_b), &
-            size(geometry%gamma), size(geometry%r_wheel)] /= i2)
-      end if
-      n = i2 - i1 + 1
-      if (n < 2 .or. bad_size) then
-         write (buf, '(i0)') n
-         call fatal_error(error, 'patch geometry: tables must have one common size of at least '// &
-            '2 points (y has '//trim(buf)//')', stat_invalid_input)
-         return
-      end if
-      if (.not. (geometry%h > 0.0_wp)) then
-         write (buf, '(es12.4)') geometry%h
-         call fatal_error(error, 'patch geometry: table spacing h = '//trim(adjustl(buf))// &
-            ' mm: expected h > 0', stat_invalid_input)
-         return
-      end if
-      do i = i1 + 1, i2
-         if (abs(geometry%y(i) - geometry%y(i1) - (i - i1)*geometry%h) > 1.0e-6_wp*geometry%h) then
-            write (buf, '(i0,a,es12.4)') i - i1 + 1, ') = ', geometry%y(i)
-            call fatal_error(error, 'patch geometry: y('//trim(buf)// &
-               ' mm is off the uniform grid of spacing h', stat_invalid_input)
-            return
-         end if
-      end do
-      if (geometry%y(i1) > 0.0_wp .or. geometry%y(i2) < 0.0_wp) then
-         call fatal_error(error, 'patch geometry: the table must contain the reference point y = 0', &
-            stat_invalid_input)
-         return
-      end if
-      do i = i1, i2
-         if (.not. (geometry%curv_a(i) > 0.0_wp .and. geometry%curv_b(i) > 0.0_wp)) then
-            write (buf, '(3(es12.4,a))') geometry%y(i), ' mm: A = ', geometry%curv_a(i), &
-               ', B = ', geometry%curv_b(i), ''
-            call fatal_error(error, 'patch geometry at y = '//trim(adjustl(buf))// &
-               ' 1/mm: expected A > 0 and B > 0 (B clamped to B_min)', stat_invalid_input)
-            return
-         end if
-      end do
-   end subroutine check_geometry
 
    !> The strips of the semi-Hertzian method for approach δ (doc/theory.md §4.3 steps 3–8):
    !> `n_strips` strips of equal width cover every table point where
@@ -664,106 +477,6 @@ contains
       load = 0.5_wp*pi*p0*a*dy
    end subroutine strip_of_psi
 
-   !> The smallest j ≤ i_first with cover(j) < δ (cover does not increase from 1 to i_first;
-   !> cover(i_first) < δ).
-   pure integer function first_reached(cover, i_first, approach) result(j_lo)
-      real(wp), intent(in) :: cover(:)
-      integer, intent(in) :: i_first
-      real(wp), intent(in) :: approach
-      integer :: lo, hi, mid
-
-      ! Invariant: cover(hi) < δ; cover(lo) ≥ δ unless lo is the first point.
-      lo = 1
-      hi = i_first
-      if (approach > cover(lo)) then
-         j_lo = lo
-         return
-      end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (approach > cover(mid)) then
-            hi = mid
-         else
-            lo = mid
-         end if
-      end do
-      j_lo = hi
-   end function first_reached
-
-   !> The largest j ≥ i_first with cover(j) < δ (cover does not decrease from i_first to n).
-   pure integer function last_reached(cover, i_first, n, approach) result(j_hi)
-      real(wp), intent(in) :: cover(:)
-      integer, intent(in) :: i_first, n
-      real(wp), intent(in) :: approach
-      integer :: lo, hi, mid
-
-      ! Invariant: cover(lo) < δ; cover(hi) ≥ δ unless hi is the last point.
-      lo = i_first
-      hi = n
-      if (approach > cover(hi)) then
-         j_hi = hi
-         return
-      end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (approach > cover(mid)) then
-            lo = mid
-         else
-            hi = mid
-         end if
-      end do
-      j_hi = lo
-   end function last_reached
-
-   !> [[vertical_tilt]] at table points i1 … i2, from the table's tan γ where the contact search
-   !> filled it, c = tan γ₀ (tan γ − tan γ₀)/(1 + tan γ tan γ₀) (equal to tan γ₀ tan(γ − γ₀),
-   !> without a tangent per point); otherwise, or when it does not belong to γ (checked at both
-   !> ends), from γ.
-   pure subroutine tilt_terms(geometry, i1, i2, gamma0, tilt)
-      type(patch_geometry_type), intent(in) :: geometry
-      integer, intent(in) :: i1, i2
-      real(wp), intent(in) :: gamma0
-      real(wp), intent(out) :: tilt(:)
-      real(wp) :: t0
-      integer :: i
-      logical :: usable
-
-      usable = allocated(geometry%tan_gamma)
-      if (usable) usable = size(geometry%tan_gamma) >= i2
-      if (usable) usable = matches(i1) .and. matches(i2)
-      if (.not. usable) then
-         tilt = vertical_tilt(geometry%gamma(i1:i2), gamma0)
-         return
-      end if
-      t0 = tan(gamma0)
-      do i = i1, i2
-         associate (t => geometry%tan_gamma(i))
-            tilt(i - i1 + 1) = t0*((t - t0)/(1.0_wp + t*t0))
-         end associate
-      end do
-   contains
-      !> Whether tan_gamma(i) is the tangent of gamma(i) to round-off.
-      pure logical function matches(i)
-         integer, intent(in) :: i
-         real(wp) :: t
-         t = tan(geometry%gamma(i))
-         matches = abs(geometry%tan_gamma(i) - t) <= 1.0e-12_wp*(1.0_wp + t*t)
-      end function matches
-   end subroutine tilt_terms
-
-   !> The tilt term of the vertical approach at every table point (module text):
-   !> c = tan γ₀ tan(γ − γ₀). A vertical translation t of the wheel moves its surface, where
-   !> its normal makes the angle γ with the vertical, by t cos γ/cos(γ − γ₀) along the contact
-   !> normal (angle γ₀); relative to t cos γ₀ at the reference point that is 1 − c. It vanishes
-   !> on a flat contact (γ₀ = 0) and where γ = γ₀, and is the same in the mirror image (γ → −γ).
-   elemental real(wp) function vertical_tilt(gamma, gamma0) result(tilt)
-      !> Contact angle γ (rad).
-      real(wp), intent(in) :: gamma
-      !> Contact angle γ₀ of the contact plane (rad).
-      real(wp), intent(in) :: gamma0
-      tilt = tan(gamma0)*tan(gamma - gamma0)
-   end function vertical_tilt
-
    !> Refer a solved strip table to the geometric contact point of the loaded state (module
    !> text): the minimum over the table of the undeformed distance g(y) + (δ + g₀)c(y),
    !> refined by a parabola through its neighbours, as CONTACT defines the point where creepages
@@ -881,87 +594,6 @@ contains
       patch%load = sol%load
       patch%area = pi*sol%a*sol%b
    end subroutine ellipse_strips
-
-   !> Make the patch arrays hold n_strips entries, allocating only when the size changes.
-   pure subroutine reserve_strips(patch, n_strips)
-      !> The patch.
-      type(normal_patch_type), intent(inout) :: patch
-      !> Number of strips.
-      integer, intent(in) :: n_strips
-      patch%n_strips = n_strips
-      if (allocated(patch%gamma_n)) then
-         if (size(patch%gamma_n) /= n_strips) deallocate (patch%gamma_n)
-      end if
-      if (.not. allocated(patch%gamma_n)) allocate (patch%gamma_n(n_strips))
-      if (allocated(patch%y)) then
-         if (size(patch%y) == n_strips) return
-         deallocate (patch%y, patch%a, patch%k, patch%p0, patch%strip_load, patch%m, patch%n, &
-            patch%eps_a, patch%gamma, patch%delta_r, patch%r_wheel)
-      end if
-      allocate (patch%y(n_strips), patch%a(n_strips), patch%k(n_strips), patch%p0(n_strips), &
-         patch%strip_load(n_strips), patch%m(n_strips), patch%n(n_strips), &
-         patch%eps_a(n_strips), patch%gamma(n_strips), patch%delta_r(n_strips), &
-         patch%r_wheel(n_strips))
-   end subroutine reserve_strips
-
-   !> A patch out of contact: zero strips (a_i = 0 carries no load), zero totals, and the
-   !> reference-point data. Arrays must be reserved ([[reserve_strips]]).
-   pure subroutine clear_strips(patch, gamma0, r0)
-      !> The patch.
-      type(normal_patch_type), intent(inout) :: patch
-      !> Contact angle (rad) and rolling radius (mm) of the reference point.
-      real(wp), intent(in) :: gamma0, r0
-      call clear_totals(patch, gamma0, r0)
-      call clear_arrays(patch, gamma0, r0)
-   end subroutine clear_strips
-
-   !> The scalars of a patch out of contact.
-   pure subroutine clear_totals(patch, gamma0, r0)
-      type(normal_patch_type), intent(inout) :: patch
-      real(wp), intent(in) :: gamma0, r0
-      patch%is_hertz = .false.
-      patch%ellipse_a = 0.0_wp
-      patch%ellipse_b = 0.0_wp
-      patch%ellipse_y_centre = 0.0_wp
-      patch%approach = 0.0_wp
-      patch%approach_reference = 0.0_wp
-      patch%load = 0.0_wp
-      patch%area = 0.0_wp
-      patch%p_max = 0.0_wp
-      patch%dy = 0.0_wp
-      patch%gamma0 = gamma0
-      patch%r0 = r0
-      patch%gamma_plane = gamma0
-      patch%y_shift = 0.0_wp
-   end subroutine clear_totals
-
-   !> The strip arrays of a patch out of contact.
-   pure subroutine clear_arrays(patch, gamma0, r0)
-      type(normal_patch_type), intent(inout) :: patch
-      real(wp), intent(in) :: gamma0, r0
-      patch%y(:) = 0.0_wp
-      patch%a(:) = 0.0_wp
-      patch%k(:) = 0.0_wp
-      patch%p0(:) = 0.0_wp
-      patch%strip_load(:) = 0.0_wp
-      patch%m(:) = 1.0_wp
-      patch%n(:) = 1.0_wp
-      patch%eps_a(:) = 0.5_wp
-      patch%gamma(:) = gamma0
-      patch%gamma_n(:) = gamma0
-      patch%delta_r(:) = 0.0_wp
-      patch%r_wheel(:) = r0
-   end subroutine clear_arrays
-
-   !> Load, area Σ 2a_i δy and peak pressure from the strips.
-   pure subroutine strip_totals(patch)
-      type(normal_patch_type), intent(inout) :: patch
-      integer :: n
-      n = patch%n_strips
-      patch%load = sum(patch%strip_load(1:n))
-      patch%area = 2.0_wp*sum(patch%a(1:n))*patch%dy
-      patch%p_max = maxval(patch%p0(1:n))
-   end subroutine strip_totals
 
    !> Make the prepared tables hold n points: the arrays only grow (their size is a capacity;
    !> n_table is the table's size), so a reused geometry allocates nothing once it has held a
