@@ -36,35 +36,33 @@
 !>   ((I−1)·n/N, I·n/N] and writes OUT-shardIofN.h5; merging the N files gives the file of the
 !>   unsharded run.
 module shcontact_batch_sweep
-   !$ use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+   !$ use omp_lib, only: omp_get_max_threads
    use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
-   use shcontact_geometry_patch, only: patch_geometry_type
-   use shcontact_input_config, only: case_config_type, case_point_type, config_namelist, &
-      axis_geometry, axis_load
+   use shcontact_input_config, only: case_config_type, config_namelist
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
       end_summary_file, check_output_file
    use shcontact_output_merge, only: merge_result_files, read_result_summary
    use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
-      peak_memory_kib, &
-      unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, folder_link, &
-      folder_not_directory
+      peak_memory_kib, unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, &
+      folder_link, folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
-   use shcontact_output_hdf5, only: h5_file_type, h5_discard
+   use shcontact_output_hdf5, only: h5_discard
    use shcontact_core_strings, only: str_int, to_lower
    use shcontact_core_text, only: string_list_type, string_type
-   use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, &
-      case_not_run
-   use shcontact_case_runner, only: run_setup_type, stage_type, prepare_run, solve_geometry, &
-      solve_stage, solve_case, case_workspace_type, tangential_patch_type, &
-      solve_kinematic_case, kinematic_state, contact_solver_type
-   use shcontact_case_memory, only: keep_stored, result_bytes, estimated_result_bytes, &
-      stage_bytes
+   use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, case_not_run
+   use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry, &
+      case_workspace_type, kinematic_state
+   use shcontact_case_memory, only: estimated_result_bytes
    use shcontact_core_fingerprint, only: fingerprint
    use shcontact_batch_checkpoint, only: merged_temp_name, key_name, lock_name, commit_block, &
       read_manifest, write_text_file, read_text_file, clear_checkpoint
+   use shcontact_batch_sweep_types, only: sweep_options_type, sweep_outcome_type, &
+      progress_interface, max_threads, default_block_bytes
+   use shcontact_batch_block, only: geometry_set_type, stage_cache_type, pending_block_type, &
+      early_output_type, thread_solutions_type, solve_block, held_capacity, grow_held
    implicit none
    private
 
@@ -72,129 +70,9 @@ module shcontact_batch_sweep
    public :: shard_range, shard_output_name, checkpoint_directory, max_threads
    public :: default_block_bytes
 
-   !> Default of [[sweep_options_type]]%block_bytes: 64 MiB.
-   integer(int64), parameter :: default_block_bytes = 64_int64*1024*1024
-
-   !> Most OpenMP threads of a run (--threads, OMP_NUM_THREADS): each thread holds its own
-   !> workspaces, and creating many more threads than cores only costs memory.
-   integer, parameter :: max_threads = 1024
-
-   abstract interface
-      !> Called with the number of finished cases of the shard (resumed ones included): once
-      !> before any case is solved (the cases resumed from a checkpoint), from one thread while
-      !> cases are solved (committed = .false.), and after each checkpoint block is written
-      !> (committed = .true.).
-      subroutine progress_interface(done, total, committed)
-         !> Cases finished and cases in the shard.
-         integer, intent(in) :: done, total
-         !> A checkpoint block has just been written.
-         logical, intent(in) :: committed
-      end subroutine progress_interface
-   end interface
-
-   !> How to run.
-   type :: sweep_options_type
-      !> Threads (0: the OpenMP default).
-      integer :: threads = 0
-      !> This shard and the number of shards.
-      integer :: shard = 1, n_shards = 1
-      !> Continue from the checkpoint of an interrupted run.
-      logical :: resume = .false.
-      !> Replace an output (and sidecar) that is not shcontact's, and start afresh in the work
-      !> folder of an interrupted run (only shcontact's own files in it are removed).
-      logical :: force = .false.
-      !> Write the result file (and its checkpoints); .false. solves and summarises only
-      !> (`--no-output`), and `outcome%output` is then ''.
-      logical :: write_output = .true.
-      !> Most bytes of per-case results (fields) held in memory at once: the checkpoint block
-      !> is cut to fit (at least one case per thread).
-      integer(int64) :: block_bytes = default_block_bytes
-      !> Recorded in the output file.
-      character(len=:), allocatable :: command_line
-      !> Files the run reads besides the configuration's profile files (the case file): the
-      !> output and its sidecar are never one of them, not even with `force`.
-      type(string_type), allocatable :: inputs(:)
-      !> Progress report (optional).
-      procedure(progress_interface), pointer, nopass :: progress => null()
-   end type sweep_options_type
-
-   !> What a run did.
-   type :: sweep_outcome_type
-      !> The file written.
-      character(len=:), allocatable :: output
-      !> Cases of the run, and the slice [first, last] of this shard.
-      integer :: n_cases = 0, first = 1, last = 0
-      !> Summaries of the shard's cases, indexed first:last.
-      type(case_summary_type), allocatable :: summaries(:)
-      !> The failed cases.
-      type(failure_type), allocatable :: failures(:)
-      !> Cases taken from the checkpoint, threads used.
-      integer :: n_resumed = 0, n_threads = 1
-      !> The most bytes of results (fields) and stages one block held, and the most cases a
-      !> block had ([[sweep_options_type]]%block_bytes bounds two blocks together).
-      integer(int64) :: most_block_bytes = 0
-      integer :: most_block_cases = 0
-      !> Checkpoint block files the output was assembled from (0: written straight from memory).
-      integer :: block_files = 0
-      !> Checkpoint block files in the work folder at the end (written by this run or taken
-      !> from the checkpoint it resumed); a run without fields writes its output from memory
-      !> and does not read them back.
-      integer :: checkpoint_files = 0
-      !> Peak resident memory of the process (KiB, VmHWM; 0 where unknown) when every case was
-      !> solved, before the output was written or merged (whose HDF5 caches grow with the file).
-      integer :: solving_peak_kib = 0
-   end type sweep_outcome_type
-
    !> Automatic checkpoints: the solved blocks held in memory are written as one block file
    !> after about this many seconds of solving (blocks are solved a tenth of it at a time).
    real(wp), parameter :: block_seconds = 5.0_wp
-
-   !> Geometry of one wheelset position (or why there is none).
-   type :: geometry_set_type
-      integer :: stat = 0
-      character(len=:), allocatable :: message
-      type(patch_geometry_type), allocatable :: patches(:)
-   end type geometry_set_type
-
-   !> The normal stage of the last case of the last block, by its key (the first case of the
-   !> run with the same t_y, roll and load): the next block, which in a grid usually starts on
-   !> the same stage, takes it instead of solving it again.
-   type :: stage_cache_type
-      integer :: key = 0
-      type(stage_type) :: stage
-   end type stage_cache_type
-
-   !> A solved block whose checkpoint file is still to be written: the first thread writes it
-   !> while the others solve the next block.
-   !> Also the blocks held in memory until they are written (automatic checkpoints).
-   type :: pending_block_type
-      logical :: waiting = .false.
-      !> The cases and their results (the first n of the arrays).
-      integer :: n = 0
-      integer, allocatable :: cases(:)
-      type(case_result_type), allocatable :: results(:)
-   end type pending_block_type
-
-   !> The output of a run written from memory, begun by the first thread while the others
-   !> solve the last block (its header does not depend on the cases).
-   type :: early_output_type
-      !> Begin it during the next block.
-      logical :: wanted = .false.
-      !> Begun: `file` is open (or `error` says why not).
-      logical :: begun = .false.
-      type(h5_file_type) :: file
-      type(error_type), allocatable :: error
-      !> The output, its temporary name, the cases it will hold, and --force.
-      character(len=:), allocatable :: output, temp_name
-      integer :: cases_in_file = 0
-      logical :: force = .false.
-   end type early_output_type
-
-   !> Per-thread tangential solutions (and solver object of a kinematic run).
-   type :: thread_solutions_type
-      type(tangential_patch_type), allocatable :: patches(:)
-      type(contact_solver_type) :: solver
-   end type thread_solutions_type
 
 contains
 
@@ -641,78 +519,6 @@ contains
       call clear_checkpoint(dir, keep_directory=.false.)
    end subroutine sweep_in_folder
 
-   !> After a case of a block: keep what the file stores, count it, and report the progress
-   !> (from the first thread only, which calls the app's procedure).
-   subroutine case_done(result, keep_geometry, keep_strips, done, total, first, options)
-      type(case_result_type), intent(inout) :: result
-      logical, intent(in) :: keep_geometry, keep_strips
-      !> Cases finished in the run (shared by the threads).
-      integer, intent(inout) :: done
-      integer, intent(in) :: total
-      !> The calling thread is the first.
-      logical, intent(in) :: first
-      type(sweep_options_type), intent(in) :: options
-      integer :: report
-      call keep_stored(result, keep_geometry, keep_strips)
-      !$omp atomic capture
-      done = done + 1
-      report = done
-      !$omp end atomic
-      if (first .and. associated(options%progress)) call options%progress(report, total, .false.)
-   end subroutine case_done
-
-   !> What the first thread writes while the others solve a block: the checkpoint block due,
-   !> and the header of the run's output when it is wanted.
-   subroutine first_thread_writes(pending, early, dir, blocks, info, config, write_error)
-      type(pending_block_type), intent(in) :: pending
-      type(early_output_type), intent(inout) :: early
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(inout) :: blocks
-      type(run_info_type), intent(in) :: info
-      type(case_config_type), intent(in) :: config
-      type(error_type), allocatable, intent(out) :: write_error
-      if (pending%waiting) call commit_block(dir, blocks, info, config, &
-         pending%cases(1:pending%n), pending%results(1:pending%n), write_error)
-      if (.not. early%wanted .or. early%begun) return
-      call begin_run_file(early%file, early%output, info, config, early%cases_in_file, &
-         early%error, early%temp_name, early%force)
-      early%begun = .true.
-   end subroutine first_thread_writes
-
-   !> Room for this many results in the held arrays.
-   pure integer function held_capacity(held)
-      type(pending_block_type), intent(in) :: held
-      held_capacity = 0
-      if (allocated(held%results)) held_capacity = size(held%results)
-   end function held_capacity
-
-   !> New held arrays of `capacity` (the held results moved to them; the first block of a run,
-   !> before its time per case is known, is held in arrays of its own size).
-   subroutine grow_held(held, capacity)
-      type(pending_block_type), intent(inout) :: held
-      integer, intent(in) :: capacity
-      type(case_result_type), allocatable :: results(:)
-      integer, allocatable :: cases(:)
-      integer :: i
-      allocate (results(capacity), cases(capacity))
-      do i = 1, held%n
-         call move_result(held%results(i), results(i))
-         cases(i) = held%cases(i)
-      end do
-      call move_alloc(results, held%results)
-      call move_alloc(cases, held%cases)
-   end subroutine grow_held
-
-   !> Move a result: `to` receives it, `from` is left empty (its arrays freed at once, so that
-   !> a move never holds two copies of the fields).
-   subroutine move_result(from, to)
-      type(case_result_type), intent(inout) :: from
-      type(case_result_type), intent(out) :: to
-      type(case_result_type) :: empty
-      to = from
-      from = empty
-   end subroutine move_result
-
    !> "case i: message" (just the message for a one-case run).
    function failure_text(outcome, failure) result(text)
       type(sweep_outcome_type), intent(in) :: outcome
@@ -738,199 +544,6 @@ contains
       message = 'failed'
       if (allocated(result%message)) message = result%message
    end function message_of
-
-   !> Solve the cases of one block: shared geometry and normal stages first, then every case,
-   !> each by one thread.
-   subroutine solve_block(setup, config, common_geometry, common, cases, results, workspaces, &
-                          solutions, fields, n_threads, options, done_before, total, &
-                          keep_geometry, keep_strips, cache, bytes, fixed, pending, early, &
-                          dir, blocks, info, write_error)
-      type(run_setup_type), intent(in) :: setup
-      type(case_config_type), intent(in) :: config
-      logical, intent(in) :: common_geometry
-      type(geometry_set_type), intent(in) :: common
-      integer, intent(in) :: cases(:)
-      type(case_result_type), intent(inout) :: results(:)
-      type(case_workspace_type), intent(inout) :: workspaces(:)
-      type(thread_solutions_type), intent(inout) :: solutions(:)
-      logical, intent(in) :: fields
-      integer, intent(in) :: n_threads
-      type(sweep_options_type), intent(in) :: options
-      integer, intent(in) :: done_before, total
-      !> Keep the per-case geometry and the strip tables in the results (what the file stores).
-      logical, intent(in) :: keep_geometry, keep_strips
-      !> The stage of the last case of the previous block; on return that of this block.
-      type(stage_cache_type), intent(inout) :: cache
-      !> Bytes of the block's results and stages but its largest stage, which is `fixed`: a
-      !> block that shares one stage holds its bytes once, whatever its number of cases.
-      integer(int64), intent(out) :: bytes
-      integer(int64), intent(inout) :: fixed
-      !> The previous block, written to `dir` (listed in `blocks`) by the first thread while the
-      !> others start on this one, when it is waiting.
-      type(pending_block_type), intent(in) :: pending
-      !> The run's output, begun by the first thread meanwhile when it is wanted.
-      type(early_output_type), intent(inout) :: early
-      character(len=*), intent(in) :: dir
-      type(string_list_type), intent(inout) :: blocks
-      type(run_info_type), intent(in) :: info
-      !> Set when the previous block could not be written.
-      type(error_type), allocatable, intent(out) :: write_error
-
-      integer, allocatable :: geometry_keys(:), load_keys(:), stage_of(:), geometry_of(:)
-      type(geometry_set_type), allocatable :: geometries(:)
-      type(stage_type), allocatable :: stages(:)
-      type(error_type), allocatable :: error
-      logical, allocatable :: cached(:), needed(:)
-      integer :: i, k, nb, done, me
-      integer(int64) :: largest
-
-      nb = size(cases)
-      done = done_before
-      if (setup%kinematic) then
-         ! Each case through its thread's solver object (shcontact_case_runner).
-         !$omp parallel default(none) num_threads(n_threads) &
-         !$omp shared(cases, results, solutions, setup, config, fields, options, done, total, &
-         !$omp nb, keep_geometry, keep_strips, pending, early, dir, blocks, info, &
-         !$omp write_error) private(i, me)
-         me = 1
-         !$ me = omp_get_thread_num() + 1
-         if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
-            write_error)
-         !$omp do schedule(dynamic, 4)
-         do i = 1, nb
-            call solve_kinematic_case(setup, config%case_point(cases(i)), solutions(me)%solver, &
-               results(i), fields)
-            call case_done(results(i), keep_geometry, keep_strips, done, total, me == 1, &
-               options)
-         end do
-         !$omp end do
-         !$omp end parallel
-         bytes = sum(result_bytes(results))
-         return
-      end if
-      allocate (stage_of(nb))
-      ! Distinct (t_y, roll, load) of the block, each named by its first case of the run.
-      allocate (load_keys(nb))
-      !$omp parallel do default(none) schedule(static) num_threads(n_threads) &
-      !$omp shared(load_keys, config, cases, nb) private(i)
-      do i = 1, nb
-         load_keys(i) = config%shares_with(cases(i), axis_load)
-      end do
-      !$omp end parallel do
-      call unique_keys(load_keys, stage_of)
-      allocate (geometry_of(size(load_keys)))
-      geometry_keys = [(config%shares_with(load_keys(k), axis_geometry), k=1, size(load_keys))]
-      call unique_keys(geometry_keys, geometry_of)
-      ! The stage the previous block ended on is taken, not solved again.
-      allocate (stages(size(load_keys)), cached(size(load_keys)), needed(size(geometry_keys)))
-      cached = load_keys == cache%key
-      needed = .false.
-      do k = 1, size(load_keys)
-         if (cached(k)) then
-            stages(k) = cache%stage
-         else
-            needed(geometry_of(k)) = .true.
-         end if
-      end do
-
-      if (common_geometry) then
-         allocate (geometries(1))
-         geometries(1) = common
-         geometry_of = 1
-      else
-         allocate (geometries(size(geometry_keys)))
-         !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-         !$omp shared(geometries, geometry_keys, setup, config, needed) private(k, error)
-         do k = 1, size(geometry_keys)
-            if (.not. needed(k)) cycle
-            call solve_geometry(setup, config%case_point(geometry_keys(k)), &
-               geometries(k)%patches, error)
-            if (allocated(error)) then
-               geometries(k)%stat = error%stat
-               geometries(k)%message = error%message
-            end if
-         end do
-         !$omp end parallel do
-      end if
-
-      !$omp parallel do default(none) schedule(dynamic, 1) num_threads(n_threads) &
-      !$omp shared(stages, load_keys, geometries, geometry_of, setup, config, cached) private(k)
-      do k = 1, size(load_keys)
-         if (cached(k)) cycle
-         if (geometries(geometry_of(k))%stat /= 0) then
-            stages(k)%stat = geometries(geometry_of(k))%stat
-            stages(k)%message = geometries(geometry_of(k))%message
-         else
-            call solve_stage(setup, config%case_point(load_keys(k)), &
-               geometries(geometry_of(k))%patches, stages(k))
-         end if
-      end do
-      !$omp end parallel do
-
-      !$omp parallel default(none) num_threads(n_threads) &
-      !$omp shared(cases, stages, stage_of, load_keys, results, workspaces, solutions, setup, &
-      !$omp config, fields, options, done, total, nb, keep_geometry, keep_strips, &
-      !$omp pending, early, dir, blocks, info, write_error) private(i, me)
-      me = 1
-      !$ me = omp_get_thread_num() + 1
-      if (me == 1) call first_thread_writes(pending, early, dir, blocks, info, config, &
-         write_error)
-      !$omp do schedule(dynamic, 4)
-      do i = 1, nb
-         call solve_case(setup, config%case_point(cases(i)), stages(stage_of(i)), &
-            load_keys(stage_of(i)), workspaces(me), solutions(me)%patches, results(i), fields)
-         call case_done(results(i), keep_geometry, keep_strips, done, total, me == 1, options)
-      end do
-      !$omp end do
-      !$omp end parallel
-      bytes = sum(result_bytes(results))
-      do k = 1, size(stages)
-         bytes = bytes + stage_bytes(stages(k))
-      end do
-      largest = maxval([(stage_bytes(stages(k)), k=1, size(stages))])
-      fixed = max(fixed, largest)
-      bytes = bytes - largest
-      cache%key = load_keys(stage_of(nb))
-      call move_alloc(stages(stage_of(nb))%geometry, cache%stage%geometry)
-      call move_alloc(stages(stage_of(nb))%normal, cache%stage%normal)
-      cache%stage%stat = stages(stage_of(nb))%stat
-      if (allocated(stages(stage_of(nb))%message)) cache%stage%message = &
-         stages(stage_of(nb))%message
-   end subroutine solve_block
-
-   !> Replace each key by its position in the list of distinct keys (order of appearance) and
-   !> shrink the list to the distinct keys.
-   pure subroutine unique_keys(keys, position)
-      integer, allocatable, intent(inout) :: keys(:)
-      integer, intent(out) :: position(:)
-      integer, allocatable :: distinct(:)
-      integer :: i, j, n
-      allocate (distinct(size(keys)))
-      n = 0
-      do i = 1, size(keys)
-         position(i) = 0
-         do j = n, max(1, n - 8), -1
-            if (distinct(j) == keys(i)) then
-               position(i) = j
-               exit
-            end if
-         end do
-         if (position(i) == 0) then
-            do j = 1, n
-               if (distinct(j) == keys(i)) then
-                  position(i) = j
-                  exit
-               end if
-            end do
-         end if
-         if (position(i) == 0) then
-            n = n + 1
-            distinct(n) = keys(i)
-            position(i) = n
-         end if
-      end do
-      keys = distinct(1:n)
-   end subroutine unique_keys
 
    ! ------------------------------------------------------------------------------------------
    ! Checkpoints
