@@ -5,7 +5,7 @@
 !> files' formats and mirroring. Each choice has its name, its integer code (the value the
 !> configuration holds after reading, [[shcontact_input_config_types]]) and a description.
 module shcontact_input_config_choices
-   use shcontact_core_choices, only: choice_type
+   use shcontact_core_choices, only: choice_type, choice_name
    use shcontact_geometry_track, only: side_right, side_left
    implicit none
    private
@@ -26,9 +26,12 @@ module shcontact_input_config_choices
    !> `load_vertical_force`, `load_approach` of shcontact_api_solver; test `registry`).
    integer, parameter :: load_mode_force = 1, load_mode_vertical = 2, load_mode_approach = 3, &
       load_mode_shared = 4
-   !> The `&load` quantities, each read by some modes only ([[load_mode_uses]]).
+   !> The `&load` quantities, each read by some modes only ([[load_mode_uses]]), and the mode
+   !> that reads each (`normal_force` also by 'shared-force').
    character(len=*), parameter :: load_quantities(3) = [character(len=14) :: 'normal_force', &
       'approach', 'vertical_force']
+   integer, parameter :: load_quantity_modes(3) = [load_mode_force, load_mode_approach, &
+      load_mode_vertical]
    !> `&normal longitudinal_curvature`: γ(y) or γ₀ in A(y).
    integer, parameter :: curvature_local = 1, curvature_reference = 2
    !> `&output precision` of the per-element fields.
@@ -94,26 +97,24 @@ contains
    pure logical function load_mode_uses(name, mode)
       character(len=*), intent(in) :: name
       integer, intent(in) :: mode
-      select case (name)
-      case ('normal_force')
-         load_mode_uses = mode == load_mode_force .or. mode == load_mode_shared
-      case ('approach')
-         load_mode_uses = mode == load_mode_approach
-      case default
-         load_mode_uses = mode == load_mode_vertical
-      end select
+      integer :: k
+      k = findloc(load_quantities, name, dim=1)
+      load_mode_uses = .false.
+      if (k == 0) return
+      load_mode_uses = mode == load_quantity_modes(k) .or. &
+         (mode == load_mode_shared .and. load_quantity_modes(k) == load_mode_force)
    end function load_mode_uses
 
    !> The `&load mode` name that reads a load quantity ([[load_mode_uses]]; `normal_force` is
-   !> read by 'shared-force' too): 'force', 'approach' or 'vertical'.
+   !> read by 'shared-force' too): 'force', 'approach' or 'vertical' ('force' for a name that
+   !> is none of [[load_quantities]]).
    pure function load_mode_reading(name) result(mode)
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: mode
-      select case (name)
-      case ('approach'); mode = 'approach'
-      case ('vertical_force'); mode = 'vertical'
-      case default; mode = 'force'
-      end select
+      integer :: k
+      k = findloc(load_quantities, name, dim=1)
+      if (k == 0) k = 1
+      mode = trim(choice_name(load_mode_choices, load_quantity_modes(k)))
    end function load_mode_reading
 
 end module shcontact_input_config_choices
