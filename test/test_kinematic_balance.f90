@@ -12,6 +12,7 @@ module test_kinematic_balance
    use shcontact_core_material, only: material_type
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      contact_fields_type, &
       load_vertical_force, load_vertical_position, load_approach
    use shcontact_core_strings, only: str_real
    use shcontact_geometry_contact, only: contact_options_type
@@ -55,7 +56,8 @@ contains
          new_unittest('first_try_tables_give_full_tables_forces', test_first_try_tables), &
          new_unittest('flange_root_steps_as_documented', test_flange_root_steps), &
          new_unittest('flange_face_steps_as_documented', test_flange_face_steps), &
-         new_unittest('flange_steps_come_from_the_coupling', test_steps_of_the_coupling)]
+         new_unittest('flange_steps_come_from_the_coupling', test_steps_of_the_coupling), &
+         new_unittest('coupled_loads_steep_in_the_strips', test_steep_coupling)]
    end subroutine collect_kinematic_balance
 
    !> The vertical force carried by the contact (N, up on the wheel).
@@ -768,5 +770,49 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_steps_of_the_coupling
+
+   !> doc/kinematics.md, "One solution, steep in the strips": at t_y = 6.8024 mm, Δz 0.4245 →
+   !> 0.4250 mm, the coupled strips' interval stretches by 0.26 mm while their total load changes
+   !> by 0.04 %, and the strips over the fillet (y = 0.35 … 0.9 mm from the first contact)
+   !> change their loads by 21–44 %, up and down in turn.
+   subroutine test_steep_coupling(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: r
+      type(contact_fields_type) :: f
+      type(lib_error), allocatable :: lib
+      real(wp) :: width(2), total(2), change
+      real(wp), allocatable :: load(:, :)
+      logical, allocatable :: fillet(:)
+      integer :: i, n
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', lib)
+      do i = 1, 2
+         if (.not. allocated(lib)) call solver%solve_kinematic(wheelset_state_type( &
+            y_ws=6.8024_wp, v_forward=30000.0_wp, pitch_rate=-30000.0_wp/460.0_wp), &
+            contact_load_type(load_vertical_position, merge(0.4245_wp, 0.4250_wp, i == 1)), r, &
+            lib, fields=f)
+         if (allocated(lib)) then
+            call test_failed(error, lib%message)
+            return
+         end if
+         n = f%normal(1)%n_strips
+         if (.not. allocated(load)) then
+            allocate (load(n, 2))
+            fillet = f%normal(1)%y(1:n) >= 0.35_wp .and. f%normal(1)%y(1:n) <= 0.9_wp
+         end if
+         load(:, i) = f%normal(1)%strip_load(1:n)
+         width(i) = n*f%normal(1)%dy
+         total(i) = sum(load(:, i))
+      end do
+      change = minval(abs(load(:, 2) - load(:, 1))/load(:, 1), mask=fillet)
+      call check(error, abs(width(2) - width(1) - 0.26_wp) <= 0.01_wp .and. &
+         abs(total(2)/total(1) - 1.0_wp) <= 5.0e-4_wp .and. change >= 0.2_wp .and. &
+         maxval(abs(load(:, 2) - load(:, 1))/load(:, 1), mask=fillet) <= 0.45_wp .and. &
+         count(fillet) >= 6, message='interval '//str_real(width(1))//' -> '// &
+         str_real(width(2))//' mm, total '//str_real(total(1))//' -> '//str_real(total(2))// &
+         ' N, smallest change of a fillet strip '//str_real(change)// &
+         ' (doc/kinematics.md: +0.26 mm, 0.04 %, 21-44 %)')
+   end subroutine test_steep_coupling
 
 end module test_kinematic_balance
