@@ -27,7 +27,7 @@ module shcontact_normal_semihertz
    use shcontact_normal_hertz, only: hertz_type, hertz_strip_shapes
    use shcontact_normal_patch, only: normal_patch_type, reserve_strips, clear_strips, clear_totals, &
       clear_arrays, strip_totals
-   use shcontact_normal_strip_cover, only: cover_ramp, outward_cover, first_reached, last_reached
+   use shcontact_normal_strip_cover, only: cover_ramp, outward_cover, reached_end
    use shcontact_normal_angles, only: tilt_terms, interface_angles
    use shcontact_normal_patch_tables, only: check_geometry, reference_curvatures
    use shcontact_normal_reference, only: reference_index, blend_depth
@@ -392,8 +392,8 @@ contains
       touching = approach > prepared%approach_touch
       if (.not. touching) return
       ! The table points covered: outwards from the first-contact point while cover < δ.
-      j_lo = first_reached(prepared%cover, prepared%i_first, approach)
-      j_hi = last_reached(prepared%cover, prepared%i_first, prepared%n_table, approach)
+      j_lo = reached_end(prepared%cover, prepared%i_first, 1, approach)
+      j_hi = reached_end(prepared%cover, prepared%i_first, prepared%n_table, approach)
       ! An interval that ends on the first or last point found it in contact (δ > touch there),
       ! or an approach beyond what the table holds.
       if (j_lo == 1 .or. j_hi == prepared%n_table .or. approach > prepared%approach_reach) then

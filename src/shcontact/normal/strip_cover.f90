@@ -6,7 +6,7 @@ module shcontact_normal_strip_cover
    implicit none
    private
 
-   public :: cover_ramp, outward_cover, first_reached, last_reached
+   public :: cover_ramp, outward_cover, reached_end
 
    !> Smallest relative growth of δ over which the strips sweep across table points out of
    !> contact towards a region farther out that comes into contact ([[outward_cover]]): large
@@ -79,55 +79,33 @@ contains
       end do
    end subroutine outward_cover
 
-   !> The smallest j ≤ i_first with cover(j) < δ (cover does not increase from 1 to i_first;
-   !> cover(i_first) < δ).
-   pure integer function first_reached(cover, i_first, approach) result(j_lo)
+   !> The table point farthest from i_inner towards i_outer that the approach reaches: the
+   !> last j on the way from i_inner to i_outer (either side of it) with cover(j) < δ, where
+   !> cover does not decrease from i_inner outwards and cover(i_inner) < δ. A bisection:
+   !> `reached_end(cover, i_first, 1, δ)` is the first point of the strips' interval,
+   !> `reached_end(cover, i_first, n, δ)` its last.
+   pure integer function reached_end(cover, i_inner, i_outer, approach) result(j)
       real(wp), intent(in) :: cover(:)
-      integer, intent(in) :: i_first
+      integer, intent(in) :: i_inner, i_outer
       real(wp), intent(in) :: approach
-      integer :: lo, hi, mid
+      integer :: inner, outer, mid
 
-      ! Invariant: cover(hi) < δ; cover(lo) ≥ δ unless lo is the first point.
-      lo = 1
-      hi = i_first
-      if (approach > cover(lo)) then
-         j_lo = lo
+      ! Invariant: cover(inner) < δ; cover(outer) ≥ δ unless outer is i_outer.
+      inner = i_inner
+      outer = i_outer
+      if (approach > cover(outer)) then
+         j = outer
          return
       end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
+      do while (abs(outer - inner) > 1)
+         mid = (inner + outer)/2
          if (approach > cover(mid)) then
-            hi = mid
+            inner = mid
          else
-            lo = mid
+            outer = mid
          end if
       end do
-      j_lo = hi
-   end function first_reached
-
-   !> The largest j ≥ i_first with cover(j) < δ (cover does not decrease from i_first to n).
-   pure integer function last_reached(cover, i_first, n, approach) result(j_hi)
-      real(wp), intent(in) :: cover(:)
-      integer, intent(in) :: i_first, n
-      real(wp), intent(in) :: approach
-      integer :: lo, hi, mid
-
-      ! Invariant: cover(lo) < δ; cover(hi) ≥ δ unless hi is the last point.
-      lo = i_first
-      hi = n
-      if (approach > cover(hi)) then
-         j_hi = hi
-         return
-      end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (approach > cover(mid)) then
-            lo = mid
-         else
-            hi = mid
-         end if
-      end do
-      j_hi = lo
-   end function last_reached
+      j = inner
+   end function reached_end
 
 end module shcontact_normal_strip_cover
