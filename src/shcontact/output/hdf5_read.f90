@@ -49,21 +49,14 @@ contains
       integer(hid_t) :: dset, space, dtype
       integer(hsize_t) :: d(8), maxd(8)
       integer(size_t) :: n
-      integer :: stat, s, ndims, class
+      integer :: s, ndims, class
       logical :: variable
       type_size = 0
       is_float = .false.
       if (present(type_class)) type_class = 'other'
       allocate (dims(0))
-      if (.not. h5_exists(file, path)) then
-         call fail(error, file, path, 'no such dataset')
-         return
-      end if
-      call h5dopen_f(file%id, path, dset, stat)
-      if (stat /= 0) then
-         call fail(error, file, path, 'cannot open the dataset')
-         return
-      end if
+      call open_existing(file, path, dset, error)
+      if (allocated(error)) return
       call h5dget_space_f(dset, space, s)
       call h5sget_simple_extent_ndims_f(space, ndims, s)
       ndims = min(max(ndims, 0), size(d))
@@ -103,16 +96,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: space
       integer(hsize_t) :: maxdims(max(rank, 1))
-      integer :: stat, s, ndims
-      if (.not. h5_exists(file, path)) then
-         call fail(error, file, path, 'no such dataset')
-         return
-      end if
-      call h5dopen_f(file%id, path, dset, stat)
-      if (stat /= 0) then
-         call fail(error, file, path, 'cannot open the dataset')
-         return
-      end if
+      integer :: s, ndims
+      call open_existing(file, path, dset, error)
+      if (allocated(error)) return
       call h5dget_space_f(dset, space, s)
       call h5sget_simple_extent_ndims_f(space, ndims, s)
       dims = 1
@@ -125,6 +111,23 @@ contains
       call h5sclose_f(space, s)
       if (allocated(error)) call h5dclose_f(dset, s)
    end subroutine open_dataset
+
+   !> Open dataset `path` of the file; an error naming the file and the path when it does not
+   !> exist or cannot be opened.
+   subroutine open_existing(file, path, dset, error)
+      type(h5_file_type), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(out) :: dset
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      dset = -1
+      if (.not. h5_exists(file, path)) then
+         call fail(error, file, path, 'no such dataset')
+         return
+      end if
+      call h5dopen_f(file%id, path, dset, stat)
+      if (stat /= 0) call fail(error, file, path, 'cannot open the dataset')
+   end subroutine open_existing
 
    !> Number of elements of a dataset (0 when it does not exist).
    function h5_dataset_size(file, path) result(n)
