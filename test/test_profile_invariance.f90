@@ -18,7 +18,8 @@ module test_profile_invariance
    use shcontact_profile_writer, only: write_profile_plain
    use shcontact_api_values, only: result_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_solve, &
-      context_get_profile, context_create_arrays, context_message
+      context_create_arrays, context_message
+   use shcontact_api_context_results, only: context_get_profile
    use shcontact_core_files, only: file_exists
    implicit none
    private

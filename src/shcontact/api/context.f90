@@ -10,19 +10,18 @@ module shcontact_api_context
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input, stat_usage
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: to_lower, str_int
+   use shcontact_core_strings, only: to_lower
    use shcontact_geometry_track, only: track_type, side_left
    use shcontact_geometry_contact, only: contact_options_type
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_geometry_kinematics, only: wheelset_state_type
-   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail, &
-      tape_circle_origin
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel, profile_kind_rail
    use shcontact_profile_source, only: profile_from_points
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_api_solver, only: contact_solver_type, contact_result_type, contact_load_type, &
-      contact_fields_type, max_patches
+      contact_fields_type
    use shcontact_input_config, only: case_config_type
    use shcontact_input_config_types, only: origin
    use shcontact_tangential_option_registry, only: spin_additive, spin_model_choices
@@ -30,16 +29,15 @@ module shcontact_api_context
    use shcontact_api_wheelset, only: wheelset_solver_type, wheelset_result_type
    use shcontact_api_settings, only: library_setup_type, library_setup, set_config_value, &
       split_key, key_use, key_solver, key_fields, key_creation, key_app
-   use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count, &
-      patch_values, result_values, kinematic_values
+   use shcontact_api_values, only: result_value_count, kinematic_value_count, result_values, &
+      kinematic_values
    implicit none
    private
 
-   public :: contact_context_type, context_record, context_usable, context_check_field_arrays
+   public :: contact_context_type, context_record, context_usable
    public :: context_create, context_create_arrays, context_set_material, context_set_track, &
-      context_set_option, context_solve, context_solve_kinematic, context_patch, &
-      context_patch_kinematic, context_field_size, context_fields, context_get_profile, &
-      context_message, context_fail, context_create_wheelset, context_solve_wheelset
+      context_set_option, context_solve, context_solve_kinematic, context_message, &
+      context_fail, context_create_wheelset, context_solve_wheelset
 
    !> Longest message kept (longer ones are cut).
    integer, parameter :: message_capacity = 1024
@@ -467,159 +465,6 @@ contains
          "motion carried to each strip); set 'additive' for kinematic calls", stat_invalid_input)
    end subroutine check_kinematic_spin_model
 
-   !> The flat values of patch k of the last solve ([[patch_values]]).
-   integer function context_patch(ctx, k, values) result(stat)
-      !> The context.
-      type(contact_context_type), intent(inout) :: ctx
-      !> Patch index, 1 to the number of patches of the last result.
-      integer, intent(in) :: k
-      !> The patch values (patch_value_count; zero on failure).
-      real(wp), intent(out) :: values(patch_value_count)
-      type(error_type), allocatable :: error
-
-      values = 0.0_wp
-      call check_patch_index(ctx, k, error)
-      if (.not. allocated(error)) call patch_values(ctx%result%patch(k), values)
-      stat = record(ctx, error)
-   end function context_patch
-
-   !> Patch k of the last solve in the kinematic layout ([[kinematic_values]]): its values in
-   !> 1–17 and 26–29 (creepages and x_track), the result's counts and totals in 18–25.
-   integer function context_patch_kinematic(ctx, k, values) result(stat)
-      !> The context.
-      type(contact_context_type), intent(inout) :: ctx
-      !> Patch index, 1 to the number of patches of the last result.
-      integer, intent(in) :: k
-      !> The values (kinematic_value_count; zero on failure).
-      real(wp), intent(out) :: values(kinematic_value_count)
-      type(error_type), allocatable :: error
-
-      values = 0.0_wp
-      call check_patch_index(ctx, k, error)
-      if (.not. allocated(error)) call kinematic_values(ctx%result, values, k)
-      stat = record(ctx, error)
-   end function context_patch_kinematic
-
-   !> The size of patch k's element fields after the last solve: nx elements per strip (along
-   !> the rolling direction) and ny strips. 0 × 0 for a patch that carries no load (found by the
-   !> contact search but not loaded, or loaded with nothing). An error unless the last solve
-   !> kept its fields (option `output%fields`).
-   integer function context_field_size(ctx, k, nx, ny) result(stat)
-      !> The context.
-      type(contact_context_type), intent(inout) :: ctx
-      !> Patch index, 1 to the number of patches of the last result.
-      integer, intent(in) :: k
-      !> Elements per strip and strips (0 on failure).
-      integer, intent(out) :: nx, ny
-      type(error_type), allocatable :: error
-
-      nx = 0
-      ny = 0
-      call check_fields(ctx, k, error)
-      if (.not. allocated(error)) call field_shape(ctx, k, nx, ny)
-      stat = record(ctx, error)
-   end function context_field_size
-
-   !> Patch k's element fields after the last solve, as arrays (nx, ny) in Fortran order: element
-   !> (j, i) is element j (from the leading edge) of strip i. nx and ny must be the sizes of
-   !> [[context_field_size]]. Coordinates in the patch's contact frame (mm): x along the rolling
-   !> direction from the strip's middle, y the strip centre across the patch from its reference
-   !> point; area the element area (mm², so that Σ px·area = F_x); pressures and tractions on the
-   !> wheel (MPa); slip |s| in slip elements; state 0 exterior, 1 adhesion, 2 slip.
-   integer function context_fields(ctx, k, nx, ny, x, y, area, pn, px, py, slip, state) &
-         result(stat)
-      !> The context.
-      type(contact_context_type), intent(inout) :: ctx
-      !> Patch index, 1 to the number of patches of the last result.
-      integer, intent(in) :: k
-      !> The field sizes (those of context_field_size).
-      integer, intent(in) :: nx, ny
-      !> Element centres and areas (mm, mm²); not written on failure.
-      real(wp), intent(inout) :: x(nx, ny), y(nx, ny), area(nx, ny)
-      !> Normal pressure, tractions (MPa) and slip magnitude; not written on failure.
-      real(wp), intent(inout) :: pn(nx, ny), px(nx, ny), py(nx, ny), slip(nx, ny)
-      !> Element state: 0 exterior, 1 adhesion, 2 slip.
-      integer, intent(inout) :: state(nx, ny)
-      type(error_type), allocatable :: error
-      integer :: i
-
-      ! The arrays are touched only when their sizes are the fields' (a caller's arrays of
-      ! another size may be smaller than nx·ny: nothing is written on failure).
-      call context_check_field_arrays(ctx, k, nx, ny, error)
-      if (.not. allocated(error) .and. nx > 0 .and. ny > 0) then
-         associate (t => ctx%fields%tangential(k))
-            x = t%x
-            do i = 1, ny
-               y(:, i) = t%y(i)
-               area(:, i) = t%dx(i)*t%dy
-            end do
-            pn = t%pn
-            px = t%px
-            py = t%py
-            slip = t%slip
-            state = int(t%state)
-         end associate
-      end if
-      stat = record(ctx, error)
-   end function context_fields
-
-   !> An error unless patch k's fields are kept and are nx × ny.
-   subroutine context_check_field_arrays(ctx, k, nx, ny, error)
-      type(contact_context_type), intent(in) :: ctx
-      integer, intent(in) :: k, nx, ny
-      type(error_type), allocatable, intent(out) :: error
-      integer :: mx, my
-      call check_fields(ctx, k, error)
-      if (allocated(error)) return
-      call field_shape(ctx, k, mx, my)
-      if (nx /= mx .or. ny /= my) call fatal_error(error, 'fields of patch '//str_int(k)// &
-         ': arrays of '//str_int(nx)//' x '//str_int(ny)//' given, the fields are '// &
-         str_int(mx)//' x '//str_int(my)//' (ask their size first; nothing was written)', &
-         stat_usage)
-   end subroutine context_check_field_arrays
-
-   !> The points of the wheel (kind = profile_kind_wheel, 1) or rail (profile_kind_rail, 0)
-   !> profile of the contact, as it was created (read and cleaned; mm, canonical form), e.g. to
-   !> pass them to [[context_create_arrays]] after a change. A MiniProf wheel, whose origin is at
-   !> its flange back, comes moved by −70 mm to the origin arrays have (tape circle; flange back
-   !> at −70 mm, the default flange-back position: shcontact_profile_points' tape_circle_origin),
-   !> so that the arrays with the default track give the contact of the file. n receives the number of points
-   !> also when it exceeds the capacity of y and z (then nothing is copied and the status is 1).
-   integer function context_get_profile(ctx, kind, n, y, z) result(stat)
-      !> The context.
-      type(contact_context_type), intent(inout) :: ctx
-      !> profile_kind_wheel (1) or profile_kind_rail (0).
-      integer, intent(in) :: kind
-      !> The number of points (0 on failure other than a small capacity).
-      integer, intent(out) :: n
-      !> The points (their size is the capacity); zero beyond n.
-      real(wp), intent(out) :: y(:), z(:)
-      type(error_type), allocatable :: error
-      type(profile_type) :: wheel, rail
-
-      n = 0
-      y = 0.0_wp
-      z = 0.0_wp
-      if (kind /= profile_kind_wheel .and. kind /= profile_kind_rail) then
-         call fatal_error(error, 'profile kind = '//str_int(kind)//': expected 1 (wheel) or '// &
-            '0 (rail)', stat_usage)
-      else if (usable(ctx, error)) then
-         call ctx%solver%get_profiles(wheel, rail)
-         wheel = tape_circle_origin(wheel)
-         if (kind == profile_kind_rail) wheel = rail
-         n = wheel%size()
-         if (n > min(size(y), size(z))) then
-            call fatal_error(error, 'profile points: the '//trim(merge('wheel', 'rail ', &
-               kind == profile_kind_wheel))//' profile has '//str_int(n)//' points, the '// &
-               'arrays hold '//str_int(min(size(y), size(z))), stat_usage)
-         else
-            y(1:n) = wheel%y
-            z(1:n) = wheel%z
-         end if
-      end if
-      stat = record(ctx, error)
-   end function context_get_profile
-
    !> The configuration of a new contact: the defaults, its profile names and side, and the
    !> track the solver took (a MiniProf wheel's flange back at 0).
    subroutine start_config(ctx, wheel, rail, side)
@@ -641,52 +486,6 @@ contains
       end if
       ctx%config%track%flange_back_position = track%flange_back_position
    end subroutine start_config
-
-   !> An error unless the last solve kept its fields and has a patch k.
-   subroutine check_fields(ctx, k, error)
-      type(contact_context_type), intent(in) :: ctx
-      integer, intent(in) :: k
-      type(error_type), allocatable, intent(out) :: error
-      ! A wheelset handle takes the wheelset calls (its message says which).
-      if (ctx%is_wheelset) then
-         if (.not. usable(ctx, error)) return
-      end if
-      if (ctx%has_result .and. .not. ctx%has_fields) then
-         call fatal_error(error, "fields: the last solve kept none; set the option "// &
-            "'output%fields' to 'all' before solving", stat_usage)
-         return
-      end if
-      call check_patch_index(ctx, k, error)
-   end subroutine check_fields
-
-   !> The element field size of patch k (0 × 0 when it carries no load).
-   pure subroutine field_shape(ctx, k, nx, ny)
-      type(contact_context_type), intent(in) :: ctx
-      integer, intent(in) :: k
-      integer, intent(out) :: nx, ny
-      nx = 0
-      ny = 0
-      if (k > ctx%fields%n_patches) return
-      nx = ctx%fields%tangential(k)%nx
-      ny = ctx%fields%tangential(k)%ny
-   end subroutine field_shape
-
-   !> An error unless the context holds a result with a patch k.
-   subroutine check_patch_index(ctx, k, error)
-      type(contact_context_type), intent(in) :: ctx
-      integer, intent(in) :: k
-      type(error_type), allocatable, intent(out) :: error
-      if (ctx%is_wheelset) then
-         if (.not. usable(ctx, error)) return
-      end if
-      if (.not. ctx%has_result) then
-         call fatal_error(error, 'patch values: no result yet (the last solve failed or none '// &
-            'was made)', stat_usage)
-      else if (k < 1 .or. k > min(ctx%result%n_patches, max_patches)) then
-         call fatal_error(error, 'patch '//str_int(k)//': expected 1 to '// &
-            str_int(ctx%result%n_patches)//' (the patches of the last solve)', stat_usage)
-      end if
-   end subroutine check_patch_index
 
    !> The message of the last operation ('' after a success).
    pure function context_message(ctx) result(message)
@@ -710,12 +509,18 @@ contains
    end function context_fail
 
    !> True when the contact (solver or wheelset) is ready; otherwise set error.
-   logical function context_usable(ctx, error)
+   logical function context_usable(ctx, error, wheelset)
       !> The context.
       type(contact_context_type), intent(in) :: ctx
       !> Set when it is not.
       type(error_type), allocatable, intent(out) :: error
-      context_usable = usable(ctx, error, wheelset=.true.)
+      !> The call also takes a wheelset handle (default .true.; .false.: a one-wheel call, which
+      !> a wheelset handle refuses).
+      logical, intent(in), optional :: wheelset
+      logical :: both
+      both = .true.
+      if (present(wheelset)) both = wheelset
+      context_usable = usable(ctx, error, wheelset=both)
    end function context_usable
 
    !> Keep the status and message of an operation; return the status (0 on success).

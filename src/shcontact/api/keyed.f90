@@ -40,9 +40,9 @@ module shcontact_api_keyed
       value_main_patch, value_sum_fx, value_sum_fy, value_sum_fz, value_sum_fn, value_dz, &
       value_nu_x, value_nu_y, value_phi, value_x_track
    use shcontact_api_context, only: contact_context_type, context_record, context_usable, &
-      context_check_field_arrays, &
-      context_set_option, context_solve, context_solve_kinematic, context_solve_wheelset, &
-      context_field_size, context_fields
+      context_set_option, context_solve, context_solve_kinematic, context_solve_wheelset
+   use shcontact_api_context_results, only: context_check_field_arrays, context_field_size, &
+      context_fields
    implicit none
    private
 

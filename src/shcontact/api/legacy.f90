@@ -19,8 +19,9 @@ module shcontact_api_legacy
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
       context_set_track, context_set_option, context_solve, context_solve_kinematic, &
-      context_patch, context_patch_kinematic, context_message, context_create_arrays, &
-      context_field_size, context_fields, context_fail, context_get_profile
+      context_message, context_create_arrays, context_fail
+   use shcontact_api_context_results, only: context_patch, context_patch_kinematic, &
+      context_field_size, context_fields, context_get_profile
    use shcontact_api_context, only: context_create_wheelset, context_solve_wheelset
    use shcontact_api_keyed, only: context_set_value, context_solve_state, context_get_value, &
       context_get_field, context_wheel
