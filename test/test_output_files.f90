@@ -48,6 +48,9 @@ contains
          new_unittest('damaged_shard', test_damaged_shard), &
          new_unittest('foreign_sidecar', test_foreign_sidecar), &
          new_unittest('sidecar_directory', test_sidecar_directory), &
+         new_unittest('output_named_like_its_sidecar', test_output_xmf), &
+         new_unittest('sidecar_of_another_output', test_sidecar_of_another_output), &
+         new_unittest('merge_shards_of_other_output_names', test_merge_output_names), &
          new_unittest('control_characters', test_control_characters), &
          new_unittest('work_folder_symlink', test_work_folder_symlink), &
          new_unittest('existing_work_folder', test_existing_work_folder), &
@@ -336,6 +339,111 @@ contains
       call expect_in(error, file_text(dir//'/f.xmf'), '<Xdmf', '--force writes the sidecar')
       call shell('rm -rf '//dir)
    end subroutine test_foreign_sidecar
+
+   !> `shcontact run -o res.xmf` wrote the results as res.xmf, then renamed the sidecar (whose
+   !> name is the output's with .xmf) over them: status 0, the results lost. Refused now.
+   subroutine test_output_xmf(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_outxmf')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      stat = run_program(dir, 'run sw.nml -q -o res.xmf')
+      call check(error, stat, 2, message='output named .xmf: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the output name "res.xmf" ends in '// &
+         '.xmf, the name its XDMF sidecar takes', 'output named .xmf')
+      if (allocated(error)) return
+      call check(error, .not. holds(dir, 'ls -d res.* > /dev/null 2>&1'), &
+         message='nothing is written for an output named .xmf')
+      if (allocated(error)) return
+      ! The same from the case file's &output file.
+      call shell('printf "&output file = '//"'r2.xmf'"//' /\n" > '//dir//'/o.nml')
+      stat = run_program(dir, 'run o.nml -q')
+      call check(error, stat, 2, message='&output file .xmf: '//file_text(dir//'/err.txt'))
+      call shell('rm -rf '//dir)
+   end subroutine test_output_xmf
+
+   !> `-o r.h5` then `-o r.hdf5`: both outputs have the sidecar r.xmf, and the second run
+   !> replaced (or, without fields, deleted) the first one's. Refused unless --force.
+   subroutine test_sidecar_of_another_output(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, first
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_othersc')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      stat = run_program(dir, 'run sw.nml -q -o r.h5')
+      call check(error, stat, 0, message='first run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      first = file_text(dir//'/r.xmf')
+      call expect_in(error, first, 'Element fields of r.h5 (shcontact)', 'the first sidecar')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sw.nml -q -o r.hdf5')
+      call check(error, stat, 3, message='sidecar of r.h5: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the XDMF sidecar "r.xmf" of the '// &
+         'output "r.hdf5" exists and describes another result file ("r.h5")', 'other sidecar')
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/r.xmf') == first .and. &
+         .not. file_exists(dir//'/r.hdf5'), message='r.h5''s sidecar kept, nothing written')
+      if (allocated(error)) return
+      ! Without fields the run would have deleted it: refused the same way.
+      stat = run_program(dir, 'run -q -o r.hdf5')
+      call check(error, stat, 3, message='summary only: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, file_text(dir//'/r.xmf') == first, message='sidecar kept (no fields)')
+      if (allocated(error)) return
+      ! Its own output's sidecar is replaced as before; --force replaces the other one.
+      stat = run_program(dir, 'run sw.nml -q -o r.h5')
+      call check(error, stat, 0, message='same output again: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sw.nml -q -o r.hdf5 --force')
+      call check(error, stat, 0, message='--force: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/r.xmf'), 'Element fields of r.hdf5 (shcontact)', &
+         '--force writes the new sidecar')
+      call shell('rm -rf '//dir)
+   end subroutine test_sidecar_of_another_output
+
+   !> Shards of one run made with -o spelled differently (relative, absolute, another name)
+   !> were refused by merge ("configurations differ": the output name is in the stored
+   !> namelist). They merge now, into the file of the run in one piece; shards of another
+   !> configuration are still refused, naming the line that differs.
+   subroutine test_merge_output_names(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .true.)) return
+      dir = scratch_directory('of_mergenames')
+      call write_lines(dir//'/sw.nml', small_sweep(1:1))
+      call shell('mkdir -p '//dir//'/sub')
+      stat = run_program(dir, 'run sw.nml -q -o s.h5 --shard 1/3')
+      if (stat == 0) stat = run_program(dir, 'run sw.nml -q -o '//dir//'/s.h5 --shard 2/3')
+      if (stat == 0) stat = run_program(dir, 'run sw.nml -q -o t.h5 --shard 3/3')
+      call check(error, stat, 0, message='shards: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'merge m.h5 s-shard1of3.h5 s-shard2of3.h5 t-shard3of3.h5 -q')
+      call check(error, stat, 0, message='merge: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sw.nml -q -o whole.h5')
+      call check(error, stat, 0, message='whole run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, holds(dir, 'h5dump -d /summary/fx -o a.txt m.h5 > /dev/null && '// &
+         'h5dump -d /summary/fx -o b.txt whole.h5 > /dev/null && cmp -s a.txt b.txt'), &
+         message='the merged shards give the forces of the run in one piece')
+      if (allocated(error)) return
+      call shell('printf "&sweep nu_x = 0.0, 1.0e-3, 3.0e-3, phi = 0.0, 1.0e-3 /\n" > '// &
+         dir//'/sw3.nml')
+      stat = run_program(dir, 'run sw3.nml -q -o u.h5 --shard 3/3')
+      stat = run_program(dir, 'merge m2.h5 s-shard1of3.h5 s-shard2of3.h5 u-shard3of3.h5 -q')
+      call check(error, stat, 2, message='another configuration: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'configurations differ: "nu_x = '// &
+         '0.0, 0.001, 0.003', 'the differing line named')
+      call shell('rm -rf '//dir)
+   end subroutine test_merge_output_names
 
    !> A directory named like the sidecar: the run failed after writing OUT.h5 and left it and
    !> OUT.h5.partial (status 3); now refused before anything is written.

@@ -4,7 +4,8 @@
 module shcontact_output_merge
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_input_config, only: case_config_type, read_config_text, precision_single
+   use shcontact_input_config, only: case_config_type, read_config_text, precision_single, &
+      config_namelist
    use shcontact_output_hdf5, only: h5_file_type, h5_create, h5_discard, h5_open, h5_close, &
       h5_copy, h5_exists, h5_read, h5_read_attribute
    use shcontact_output_descriptions, only: describe_dataset
@@ -136,7 +137,8 @@ contains
       !> Replace an output (or sidecar) that shcontact did not write ([[check_output_file]]).
       logical, intent(in), optional :: force
 
-      character(len=:), allocatable :: text, first_text, messages(:), all_messages(:)
+      character(len=:), allocatable :: text, first_text, messages(:), all_messages(:), key, &
+         first_key
       integer, allocatable :: indices(:), source(:), failed(:), all_failed(:)
       type(case_summary_type), allocatable :: summaries(:), all(:)
       type(case_config_type) :: config
@@ -163,17 +165,21 @@ contains
          call read_result_summary(inputs(f)%text, text, n_cases, indices, summaries, failed, &
             messages, error)
          if (allocated(error)) return
+         call run_key(text, inputs(f)%text, key, error)
+         if (allocated(error)) return
          if (f == 1) then
             first_text = text
+            first_key = key
             call read_input_profiles(inputs(f)%text, first_profiles, error)
             if (allocated(error)) return
             n_first = n_cases
             allocate (all(n_cases), source(n_cases))
             source = 0
             allocate (all_failed(0))
-         else if (text /= first_text .or. n_cases /= n_first) then
+         else if (key /= first_key .or. n_cases /= n_first) then
             call fatal_error(error, 'merge: "'//inputs(f)%text//'" comes from another run '// &
-               'than "'//inputs(1)%text//'" (configurations differ)', stat_invalid_input)
+               'than "'//inputs(1)%text//'" (configurations differ: '// &
+               first_difference(key, first_key)//')', stat_invalid_input)
             return
          else
             ! A profile file rewritten under its name between the shards: the same
@@ -346,5 +352,49 @@ contains
       call h5_read_attribute(file, '/', 'threads', value, error)
       if (.not. allocated(error)) threads = value
    end subroutine first_threads
+
+   !> The configuration of a result file as merge compares it: its resolved namelist without
+   !> the output name and the profile file names, so that the shards of one run made with
+   !> other -o spellings or from other folders merge (the profiles are compared by their points
+   !> in /input/profiles instead).
+   subroutine run_key(text, name, key, error)
+      !> The file's /input/namelist.
+      character(len=*), intent(in) :: text
+      !> The file (for messages).
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable, intent(out) :: key
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config_type) :: config
+      call read_config_text(text, '"'//name//'":/input/namelist', config, error)
+      if (allocated(error)) return
+      config%output%file = '-'
+      config%profiles%wheel = '-'
+      config%profiles%rail = '-'
+      key = config_namelist(config)
+   end subroutine run_key
+
+   !> The first line in which two namelist texts differ, both versions quoted.
+   function first_difference(a, b) result(text)
+      character(len=*), intent(in) :: a, b
+      character(len=:), allocatable :: text
+      character(len=1), parameter :: nl = new_line('a')
+      integer :: ia, ib, ea, eb
+      ia = 1
+      ib = 1
+      do
+         ea = index(a(ia:), nl)
+         eb = index(b(ib:), nl)
+         ea = merge(len(a), ia + ea - 2, ea == 0)
+         eb = merge(len(b), ib + eb - 2, eb == 0)
+         if (a(ia:ea) /= b(ib:eb) .or. (ea >= len(a) .and. eb >= len(b))) exit
+         ia = ea + 2
+         ib = eb + 2
+      end do
+      if (a(ia:ea) == b(ib:eb)) then
+         text = 'the number of cases'
+      else
+         text = '"'//trim(adjustl(a(ia:ea)))//'" against "'//trim(adjustl(b(ib:eb)))//'"'
+      end if
+   end function first_difference
 
 end module shcontact_output_merge

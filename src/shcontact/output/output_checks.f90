@@ -10,7 +10,7 @@ module shcontact_output_output_checks
    use shcontact_core_files, only: canonical_path, path_kind
    use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, &
       h5_read_attribute, h5_dataset_info
-   use shcontact_output_xdmf, only: xdmf_name, is_xdmf_sidecar
+   use shcontact_output_xdmf, only: xdmf_name, is_xdmf_sidecar, sidecar_target
    use shcontact_core_text, only: string_type
    use shcontact_case_result, only: summary_columns, n_summary_columns
    implicit none
@@ -35,7 +35,7 @@ contains
       type(string_type), intent(in), optional :: inputs(:)
       !> Replace a symbolic link or a file that shcontact did not write.
       logical, intent(in), optional :: force
-      character(len=:), allocatable :: kind
+      character(len=:), allocatable :: kind, described
       integer :: f
       logical :: forced
       forced = .false.
@@ -45,6 +45,13 @@ contains
          call fatal_error(error, 'the output name "'//output(1:f - 1)//'?'//output(f + 1:)// &
             '" holds a control character (byte '//str_int(iachar(output(f:f)))//' at '// &
             'position '//str_int(f)//'); choose a name without one', stat_invalid_input)
+         return
+      end if
+      if (xdmf_name(output) == output) then
+         call fatal_error(error, 'the output name "'//output//'" ends in .xmf, the name its '// &
+            'XDMF sidecar takes (OUT.xmf, written next to a result file with element fields), '// &
+            'so the sidecar would replace the results; choose a name such as "'// &
+            output(1:len(output) - 4)//'.h5"', stat_invalid_input)
          return
       end if
       kind = path_kind(output)
@@ -67,9 +74,18 @@ contains
       if (kind /= 'none') call check_not_input(xdmf_name(output), 'the XDMF sidecar "'// &
          xdmf_name(output)//'" of the output "'//output//'"', inputs, error)
       if (allocated(error)) return
-      if (kind == 'file' .and. .not. forced .and. .not. is_xdmf_sidecar(xdmf_name(output))) &
+      if (kind /= 'file' .or. forced) return
+      if (.not. is_xdmf_sidecar(xdmf_name(output))) then
          call fatal_error(error, 'the XDMF sidecar "'//xdmf_name(output)//'" of the output "'// &
-         output//'" exists and was not written by shcontact; it is not overwritten (remove '// &
+            output//'" exists and was not written by shcontact; it is not overwritten (remove '// &
+            'it, choose another output name, or use --force)', stat_io)
+         return
+      end if
+      ! A sidecar of another result file that shares the name (OUT.h5 and OUT.hdf5).
+      described = sidecar_target(xdmf_name(output))
+      if (described /= output(index(output, '/', back=.true.) + 1:)) call fatal_error(error, &
+         'the XDMF sidecar "'//xdmf_name(output)//'" of the output "'//output//'" exists '// &
+         'and describes another result file ("'//described//'"); it is not overwritten (remove '// &
          'it, choose another output name, or use --force)', stat_io)
    end subroutine check_output_file
 

@@ -20,7 +20,7 @@ module shcontact_output_xdmf
    implicit none
    private
 
-   public :: write_xdmf_sidecar, xdmf_name, is_xdmf_sidecar
+   public :: write_xdmf_sidecar, xdmf_name, is_xdmf_sidecar, sidecar_target
 
    !> The element fields a patch grid can carry, in the order they are listed.
    character(len=*), parameter :: field_names(5) = [character(len=5) :: 'pn', 'px', 'py', &
@@ -129,20 +129,48 @@ contains
       !> The file.
       character(len=*), intent(in) :: name
       logical :: yes
-      character(len=400) :: head
+      character(len=:), allocatable :: head
+      head = file_head(name)
+      yes = index(head, '<?xml') == 1 .and. index(head, ' (shcontact); ') > 0 .and. &
+         index(head, '<Xdmf ') > 0
+   end function is_xdmf_sidecar
+
+   !> The name of the result file (without its folder) that the shcontact sidecar `name`
+   !> describes, as its header comment gives it; '' when `name` is no such sidecar.
+   function sidecar_target(name) result(described)
+      !> The sidecar.
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: described
+      character(len=*), parameter :: before = '<!-- Element fields of ', after = ' (shcontact); '
+      character(len=:), allocatable :: head
+      integer :: i, j
+      described = ''
+      if (.not. is_xdmf_sidecar(name)) return
+      head = file_head(name)
+      i = index(head, before)
+      j = index(head, after)
+      if (i > 0 .and. j > i + len(before)) described = head(i + len(before):j - 1)
+   end function sidecar_target
+
+   !> The first 400 bytes of a regular file (fewer when it is shorter; '' when it cannot be
+   !> read or is not a regular file).
+   function file_head(name) result(head)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: head
+      character(len=400) :: buffer
       integer :: unit, stat, size_
-      yes = .false.
+      head = ''
       if (path_kind(name) /= 'file') return
       open (newunit=unit, file=name, status='old', action='read', access='stream', &
          form='unformatted', iostat=stat)
       if (stat /= 0) return
       inquire (unit=unit, size=size_)
-      head = ''
-      if (size_ > 0) read (unit, iostat=stat) head(1:min(size_, len(head)))
+      if (size_ > 0) then
+         read (unit, iostat=stat) buffer(1:min(size_, len(buffer)))
+         if (stat == 0) head = buffer(1:min(size_, len(buffer)))
+      end if
       close (unit)
-      yes = index(head, '<?xml') == 1 .and. index(head, ' (shcontact); ') > 0 .and. &
-         index(head, '<Xdmf ') > 0
-   end function is_xdmf_sidecar
+   end function file_head
 
    !> True when a patch group holds the element grid.
    logical function has_fields(file, patch)
