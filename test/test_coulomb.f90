@@ -32,7 +32,7 @@ module test_coulomb
       summary_values, two_patch_solution
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, &
-      contact_result_type, load_vertical_force
+      contact_result_type, load_vertical_force, load_normal_force
    use test_external_data, only: external_file
    implicit none
    private
@@ -58,6 +58,7 @@ contains
          new_unittest('two_lobe_positions_within_coulomb', test_two_lobe_positions), &
          new_unittest('kinematic_sample_within_coulomb', test_kinematic_sample), &
          new_unittest('random_doe_near_full_slip', test_random_doe), &
+         new_unittest('hertz_method_within_coulomb', test_hertz_method), &
          new_unittest('coulomb_ratio_of_corrected_tractions', test_ratio_after_correction) &
          ]
    end subroutine collect_coulomb
@@ -465,6 +466,77 @@ contains
       call check(error, n_solved == n_cases*5*2*(4*2 + 2) .and. worst > 1.0_wp - 1.0e-9_wp, &
          message='random DOE: '//str_int(n_solved)//' cases, largest |f| '//str_real(worst))
    end subroutine test_random_doe
+
+   !> The Hertz method through the solver, at full slip: its strips' loads (the midpoint rule
+   !> of the ellipse) summed to 1.00005 F_n with 100 strips and the traction bound followed
+   !> them, so |F_t|/(μF_n) was 1.00005 (fx_norm −1 exactly, being taken against the strips'
+   !> sum). Checked on the forces themselves, F_n being the patch's normal force: every
+   !> tangential method × bound × correction, three positions, creepages at 5 to 20 times
+   !> the saturation in eight directions.
+   subroutine test_hertz_method(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(tangential_options_type) :: options
+      type(normal_options_type) :: normal
+      type(lib_error), allocatable :: err
+      real(wp), parameter :: positions(3) = [0.0_wp, 2.0_wp, 4.0_wp]
+      real(wp) :: f, worst, angle, m
+      integer :: imethod, ibound, icorr, ip, id, k
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      if (.not. allocated(err)) call new_normal_options(normal, err, method='hertz')
+      if (.not. allocated(err)) call solver%set_options(err, normal=normal)
+      if (allocated(err)) then
+         call test_failed(error, 'set-up: '//err%message)
+         return
+      end if
+      worst = 0.0_wp
+      do imethod = 1, 2
+         do ibound = bound_ellipsoidal, bound_clipped
+            do icorr = correction_none, correction_exact_ellipse
+               options = tangential_options_type(bound=ibound, correction=icorr)
+               if (imethod == 2) options%method = method_fastsim
+               call solver%set_options(err, tangential=options)
+               do ip = 1, size(positions)
+                  do id = 0, 7
+                     if (allocated(err)) exit
+                     angle = 0.7853981633974483_wp*id
+                     m = 5.0e-3_wp*(1.0_wp + 3.0_wp*mod(id, 2))
+                     call solver%solve(positions(ip), 0.0_wp, contact_load_type( &
+                        load_normal_force, 64700.0_wp), creepage_type(m*cos(angle), &
+                        m*sin(angle), 0.0_wp), result, err)
+                     if (allocated(err)) exit
+                     do k = 1, result%n_patches
+                        associate (p => result%patch(k))
+                           if (.not. (p%fn > 0.0_wp)) cycle
+                           f = hypot(p%fx, p%fy)/(0.3_wp*p%fn)
+                        end associate
+                        worst = max(worst, f)
+                        if (f > 1.0_wp + slack) then
+                           call test_failed(error, 'Hertz method, tangential method '// &
+                              str_int(imethod)//', bound '//str_int(ibound)//', correction '// &
+                              str_int(icorr)//', t_y '//str_real(positions(ip))//' mm, '// &
+                              'direction '//str_int(id)//': |F_t|/(mu F_n) = '//str_real(f))
+                           return
+                        end if
+                     end do
+                  end do
+               end do
+               if (allocated(err)) exit
+            end do
+            if (allocated(err)) exit
+         end do
+         if (allocated(err)) exit
+      end do
+      if (allocated(err)) then
+         call test_failed(error, 'Hertz method: '//err%message)
+         return
+      end if
+      ! At full slip indeed (the weighted and ellipsoidal bounds reach it).
+      call check(error, worst > 1.0_wp - 1.0e-9_wp, message='Hertz method: largest |f| '// &
+         str_real(worst))
+   end subroutine test_hertz_method
 
    !> The Coulomb check is taken on the corrected tractions: with the fields, coulomb_ratio is the
    !> largest |p_t|/(μp_n) over the corrected field, it is the same without the fields, and the
