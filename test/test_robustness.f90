@@ -82,6 +82,7 @@ contains
          new_unittest('miniprof_wheel_origin', test_miniprof_origin), &
          new_unittest('swapped_columns_refused', test_swapped), &
          new_unittest('single_point_spike_refused', test_spike), &
+         new_unittest('single_point_above_the_rail_top', test_top_outlier), &
          new_unittest('collinear_points_same_forces', test_collinear), &
          new_unittest('profile_mirror_and_scale_variables', test_mirror_scale), &
          new_unittest('miniprof_comments_and_old_header', test_miniprof_variants), &
@@ -479,6 +480,32 @@ contains
          'neighbours; remove the point', 'the size of the spike')
       call shell('rm -rf '//dir)
    end subroutine test_spike
+
+   !> One point of the rail top raised by 0.05 mm (0.3 mm: the same) was refused as "not on its
+   !> running surface; are the y and z columns swapped, or the profile turned?": the user was
+   !> sent the wrong way. Now the point's line is named as a single point off the profile.
+   subroutine test_top_outlier(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_topoutlier')
+      stat = run_program(dir, 'profiles --write prof -q')
+      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call transform_points(dir//'/prof/UIC60.txt', dir//'/bump.txt', 700, 700, &
+         'printf "%s %.15E\n", $1, $2 - 0.05')
+      call expect_failure(error, dir, 'run --set profiles%rail=bump.txt', 2, &
+         'bump.txt, line 700: the highest point of the rail (y = 2.999325 mm) sticks out '// &
+         '0.050014 mm above the line of its neighbours')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'a single point off the profile '// &
+         '(a measuring or editing error?); remove it', 'the hint')
+      if (allocated(error)) return
+      call check(error, index(file_text(dir//'/err.txt'), 'swapped') == 0, &
+         message='no hint of swapped columns: '//file_text(dir//'/err.txt'))
+      call shell('rm -rf '//dir)
+   end subroutine test_top_outlier
 
    !> Points added halfway between the samples of MBench_S1002_v3.prw gave status 5; the same
    !> profile must give the same answer.

@@ -48,7 +48,7 @@ contains
       character(len=*), intent(in), optional :: option_prefix
       call check_spikes(profile, error, line_of_point)
       if (allocated(error)) return
-      call check_running_surface(profile, option_prefix, error)
+      call check_running_surface(profile, option_prefix, error, line_of_point)
    end subroutine check_plausible
 
    subroutine check_spikes(profile, error, line_of_point)
@@ -91,11 +91,12 @@ contains
       d = norm2(p - t*c)
    end function chord_distance
 
-   subroutine check_running_surface(profile, prefix, error)
+   subroutine check_running_surface(profile, prefix, error, line_of_point)
       type(profile_type), intent(in) :: profile
       character(len=*), intent(in), optional :: prefix
       type(error_type), allocatable, intent(out) :: error
-      real(wp) :: sense, dy, dz, width, best
+      integer, intent(in), optional :: line_of_point(:)
+      real(wp) :: sense, dy, dz, width, best, slopes(2)
       integer :: i, n, first, best_first, best_last, top
       logical :: wheel
       n = size(profile%y)
@@ -134,6 +135,19 @@ contains
             'y and z columns swapped, or the profile turned or in other units ('// &
             option_hint(prefix, 'mirror_z', 'yes')//', '//option_hint(prefix, 'scale', &
             'FACTOR')//')?', stat_invalid_input)
+         return
+      end if
+      call side_slopes(profile, top, slopes)
+      if (all(slopes > running_slope)) then
+         ! A single point above its neighbours (a measuring or editing error) cuts the running
+         ! surface where it stands: name it rather than suggest a turned profile.
+         call fatal_error(error, where(profile, top, line_of_point)//'the highest point of '// &
+            'the rail (y = '//str_real(profile%y(top))//' mm) sticks out '// &
+            str_real(chord_distance(profile, top))//' mm above the line of its neighbours, '// &
+            'with slopes '//str_real(slopes(1))//' and '//str_real(slopes(2))//' on its two '// &
+            'sides (the running surface has below '//str_real(running_slope)//'): a single '// &
+            'point off the profile (a measuring or editing error?); remove it', &
+            stat_invalid_input)
       else
          call fatal_error(error, source_of(profile)//': the highest point of the rail '// &
             '(y = '//str_real(profile%y(top))//' mm) is not on its running surface (y = '// &
@@ -142,6 +156,23 @@ contains
             option_hint(prefix, 'mirror_z', 'yes')//')?', stat_invalid_input)
       end if
    end subroutine check_running_surface
+
+   !> |dz/dy| of the two segments at point i (0 at the profile's ends): a point steeper than
+   !> the running surface on both sides is a single point off the profile.
+   pure subroutine side_slopes(profile, i, slopes)
+      type(profile_type), intent(in) :: profile
+      integer, intent(in) :: i
+      real(wp), intent(out) :: slopes(2)
+      integer :: side, j
+      slopes = 0.0_wp
+      if (i <= 1 .or. i >= size(profile%y)) return
+      do side = 1, 2
+         j = i + 2*side - 3
+         slopes(side) = huge(1.0_wp)
+         if (profile%y(j) /= profile%y(i)) slopes(side) = abs((profile%z(j) - profile%z(i))/ &
+            (profile%y(j) - profile%y(i)))
+      end do
+   end subroutine side_slopes
 
    pure function kind_word(wheel) result(text)
       logical, intent(in) :: wheel
