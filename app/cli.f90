@@ -134,9 +134,12 @@ contains
             cli%output = value
          case ('--set')
             call option_value(i, arg, value, has_value, error)
+            ! Refused here, before a value given after a space could be taken for the case
+            ! file; with the status and words of an override read as a case-file line (an
+            ! override without a group).
             if (.not. allocated(error) .and. index(value, '=') == 0) call fatal_error(error, &
-               '--set "'//value//'": expected GROUP%NAME=VALUE, e.g. --set position%t_y=3', &
-               stat_usage)
+               'command line --set '//value//': expected group%variable=value, e.g. '// &
+               'creepage%nu_x=1e-3', stat_invalid_input)
             ! The override is read as a namelist line: a line break would be dropped on the
             ! way (output%file=$'a\nb.h5' wrote ab.h5), so it is refused here.
             if (.not. allocated(error) .and. scan(value, achar(10)//achar(13)) > 0) &

@@ -350,9 +350,16 @@ contains
       if (allocated(error)) return
       call expect_in(error, err, 'did you mean "--threads"?', 'run --thread')
       if (allocated(error)) return
-      call run_expect(error, dir, 'run --set position%t_y 3', 1, out, err)
+      call run_expect(error, dir, 'run --set position%t_y 3', 2, out, err)
       if (allocated(error)) return
-      call expect_in(error, err, 'expected GROUP%NAME=VALUE', 'run --set position%t_y 3')
+      call expect_in(error, err, 'command line --set position%t_y: expected '// &
+         'group%variable=value', 'run --set position%t_y 3')
+      if (allocated(error)) return
+      ! The same status and words as an override without its group.
+      call run_expect(error, dir, 'run --set t_y=3', 2, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'command line --set t_y=3: expected group%variable=value', &
+         'run --set t_y=3')
       call shell('rm -rf '//dir)
    end subroutine test_foreign_options
 
