@@ -359,6 +359,27 @@ contains
       call check(error, p%nu_y, 0.061e-3_wp, message='unswept input keeps its base value')
       if (allocated(error)) return
       call check(error, .not. c%wants_field('traction'), message='sweeps store no fields')
+      if (allocated(error)) return
+      ! A range point that is a short decimal is that decimal, not the rounding of the range's
+      ! arithmetic (−0.1 + 0.2·3/4 = 0.05000000000000002); one that is not keeps its value.
+      call load_valid('', [character(len=60) :: 'sweep%roll=-0.1,0.1', 'sweep%roll_points=5', &
+         'sweep%nu_x=0,2e-3', 'sweep%nu_x_points=21'], c, error)
+      if (allocated(error)) return
+      ! nu_x varies fastest (21 points), then roll (5).
+      p = c%case_point(3*21 + 1)
+      call check(error, p%roll == 0.05_wp .and. p%nu_x == 0.0_wp, message='roll 0.05 exactly: '// &
+         format_real(p%roll))
+      if (allocated(error)) return
+      p = c%case_point(4)
+      call check(error, p%roll == -0.1_wp .and. p%nu_x == 3.0e-4_wp, message='nu_x 3e-4 '// &
+         'exactly: '//format_real(p%nu_x))
+      if (allocated(error)) return
+      call load_valid('', [character(len=60) :: 'sweep%nu_x=0,2e-3', 'sweep%nu_x_points=20'], &
+         c, error)
+      if (allocated(error)) return
+      p = c%case_point(8)
+      call check(error, p%nu_x == 2.0e-3_wp*7/19, message='not a short decimal: '// &
+         format_real(p%nu_x))
    end subroutine test_sweep_grid
 
    subroutine test_sweep_list(error)

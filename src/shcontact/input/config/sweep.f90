@@ -102,21 +102,42 @@ contains
    end function axis_size
 
    !> The i-th value: given(i) for a list; first + (last − first)·(i−1)/(points−1) for a range,
-   !> with the last point exactly `last`.
+   !> with the last point exactly `last`, and a point that is a short decimal but for the
+   !> rounding of that arithmetic taken as that decimal ([[decimal_value]]: roll = −0.1, 0.1
+   !> in 5 points gave 0.05000000000000002, which a script's `grep 0.05` missed).
    pure real(wp) function axis_value(self, i)
       class(sweep_axis_type), intent(in) :: self
       integer, intent(in) :: i
+      real(wp) :: step
       if (self%points > 0) then
          if (i == self%points) then
             axis_value = self%given(2)
          else
-            axis_value = self%given(1) + (self%given(2) - self%given(1))*real(i - 1, wp)/ &
-               real(self%points - 1, wp)
+            step = (self%given(2) - self%given(1))/real(self%points - 1, wp)
+            axis_value = decimal_value(self%given(1) + (self%given(2) - self%given(1))* &
+               real(i - 1, wp)/real(self%points - 1, wp), step)
          end if
       else
          axis_value = self%given(i)
       end if
    end function axis_value
+
+   !> v, or the decimal with at most six digits below the decade of `step` nearest to v when
+   !> that lies within 4 ulps of v (the rounding of the range's arithmetic, not a value of its
+   !> own): v·10ᵉ rounded to an integer and divided by 10ᵉ, both exact for e ≤ 22.
+   pure real(wp) function decimal_value(v, step) result(x)
+      real(wp), intent(in) :: v, step
+      real(wp) :: scale
+      integer :: e
+      x = v
+      if (.not. (abs(step) > 0.0_wp .and. abs(step) < huge(1.0_wp))) return
+      e = 6 - floor(log10(abs(step)))
+      if (e < 0 .or. e > 22) return
+      scale = 10.0_wp**e
+      if (.not. (abs(v)*scale < 2.0_wp**52)) return
+      x = anint(v*scale)/scale
+      if (abs(x - v) > 4.0_wp*spacing(v)) x = v
+   end function decimal_value
 
    !> Number of cases: the product of the axis sizes ('grid') or the common length ('list').
    pure integer function sweep_n_cases(self) result(n_cases)
