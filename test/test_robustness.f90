@@ -83,6 +83,7 @@ contains
          new_unittest('swapped_columns_refused', test_swapped), &
          new_unittest('single_point_spike_refused', test_spike), &
          new_unittest('single_point_above_the_rail_top', test_top_outlier), &
+         new_unittest('plain_profile_cut_off', test_cut_off), &
          new_unittest('collinear_points_same_forces', test_collinear), &
          new_unittest('profile_mirror_and_scale_variables', test_mirror_scale), &
          new_unittest('miniprof_comments_and_old_header', test_miniprof_variants), &
@@ -506,6 +507,35 @@ contains
          message='no hint of swapped columns: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_top_outlier
+
+   !> A plain profile cut off while it was written (no line end after a shortened last number:
+   !> 3.75000000000000E+001 cut to 3.75000000, i.e. 3.75 mm instead of 37.5 mm) was read as it
+   !> stood. Refused now, naming the line; the complete file without its final line end is read
+   !> as before.
+   subroutine test_cut_off(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('rob_cutoff')
+      stat = run_program(dir, 'profiles --write prof -q')
+      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! The file without its final line end, and the same cut 11 characters earlier.
+      call shell('cd '//dir//' && head -c -1 prof/UIC60.txt > whole.txt && '// &
+         'head -c -12 prof/UIC60.txt > cut.txt')
+      stat = run_program(dir, 'run -q --no-output --set profiles%rail=whole.txt')
+      call check(error, stat, 0, message='a complete file without its final line end: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_failure(error, dir, 'run --set profiles%rail=cut.txt', 2, &
+         "cut.txt, line 1334: the file ends in the middle of a line: its last number "// &
+         "'3.75000000' is shorter than the 21 characters of the lines before")
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'if it is complete, end its last '// &
+         'line with a line break', 'the way to accept a complete file')
+      call shell('rm -rf '//dir)
+   end subroutine test_cut_off
 
    !> Points added halfway between the samples of MBench_S1002_v3.prw gave status 5; the same
    !> profile must give the same answer.

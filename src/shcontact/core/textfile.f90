@@ -53,6 +53,9 @@ module shcontact_core_textfile
    type :: text_line_type
       !> The text (tabs as blanks).
       character(len=:), allocatable :: text
+      !> False only for a file's last line that has no line end (a file cut off while it was
+      !> written ends so; many complete files too).
+      logical :: ended = .true.
    end type text_line_type
 
    !> The UTF-8 byte-order mark.
@@ -183,7 +186,10 @@ contains
          lines(n)%text = line_text(buffer(start:i))
          start = i + 1
       end do
-      if (start <= len(buffer)) lines(n + 1)%text = line_text(buffer(start:))
+      if (start <= len(buffer)) then
+         lines(n + 1)%text = line_text(buffer(start:))
+         lines(n + 1)%ended = .false.
+      end if
    end subroutine split_lines
 
    pure integer function count_lines(buffer) result(n)

@@ -11,6 +11,7 @@ module shcontact_profile_file_lines
    private
 
    public :: point_list, file_settings, kind_unknown, number_ok, read_point, numeric_line, &
+      check_cut_off, &
       split_tokens, parse_real, at
 
    integer, parameter :: kind_unknown = -1
@@ -99,6 +100,36 @@ contains
       end if
       call push_point(points, values(col_y), values(col_z), il)
    end subroutine read_point
+
+   !> A plain file cut off while it was written: its last line (`last`, line `il`) has no line
+   !> end and its last number is shorter than on the data lines before it (`before`, the
+   !> closest last), which all have the same number of fields and the same width of their last
+   !> field: `1.40107201288515E-002` cut to `1.401072` reads as 1.4 mm instead of 0.014 mm.
+   !> Refused with a message that says how to accept a complete file. Needs two lines before.
+   pure subroutine check_cut_off(filename, il, last, before, error)
+      character(len=*), intent(in) :: filename, last
+      integer, intent(in) :: il
+      type(text_line), intent(in) :: before(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(text_line), allocatable :: tokens(:), other(:)
+      integer :: k, width
+      if (size(before) < 2) return
+      tokens = split_tokens(last)
+      if (size(tokens) < 2) return
+      width = -1
+      do k = 1, size(before)
+         other = split_tokens(before(k)%text)
+         if (size(other) /= size(tokens)) return
+         if (width < 0) width = len(other(size(other))%text)
+         if (len(other(size(other))%text) /= width) return
+      end do
+      if (len(tokens(size(tokens))%text) >= width) return
+      call fatal_error(error, at(filename, il)//"the file ends in the middle of a line: its "// &
+         "last number '"//tokens(size(tokens))%text//"' is shorter than the "// &
+         str_int(width)//" characters of the lines before and has no line end, as in a file "// &
+         "cut off while it was written; check the file (if it is complete, end its last "// &
+         "line with a line break)", stat_invalid_input)
+   end subroutine check_cut_off
 
    !> A data line written with decimal commas (a German or French locale): no decimal point,
    !> at least two blank- or semicolon-separated fields, each holding exactly one comma with a

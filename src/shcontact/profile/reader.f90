@@ -31,7 +31,8 @@ module shcontact_profile_reader
       option_hint
    use shcontact_profile_cleanup, only: is_finite_value, min_profile_points
    use shcontact_core_textfile, only: text_line => text_line_type, read_text_lines
-   use shcontact_profile_file_lines, only: point_list, file_settings, kind_unknown, read_point, at
+   use shcontact_profile_file_lines, only: point_list, file_settings, kind_unknown, read_point, at, &
+      check_cut_off
    use shcontact_profile_simpack, only: parse_simpack
    use shcontact_profile_miniprof, only: parse_miniprof
    implicit none
@@ -376,8 +377,11 @@ contains
       type(file_settings), intent(inout) :: settings
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: text
-      integer :: il, cut
+      !> The three data lines before the current one, the closest last.
+      type(text_line) :: before(3)
+      integer :: il, cut, n_before
 
+      n_before = 0
       do il = 1, size(lines)
          text = adjustl(lines(il)%text)
          if (len_trim(text) == 0) cycle
@@ -388,8 +392,15 @@ contains
          end if
          cut = scan(text, '#!%')
          if (cut > 0) text = text(:cut - 1)
+         if (.not. lines(il)%ended .and. cut == 0) then
+            call check_cut_off(filename, il, text, before(1:n_before), error)
+            if (allocated(error)) return
+         end if
          call read_point(filename, il, text, 1, 2, points, error)
          if (allocated(error)) return
+         if (n_before == size(before)) before(1:n_before - 1) = before(2:n_before)
+         n_before = min(n_before + 1, size(before))
+         before(n_before)%text = text
       end do
    end subroutine parse_plain
 
