@@ -525,6 +525,16 @@ contains
          headline_creepage, result, err)
       call expect_error(error, err, stat_invalid_input, 'NaN')
       if (allocated(error)) return
+      ! An approach whose normal force is past the largest load a force mode takes (5 mm at
+      ! Y_WS = 0 gave 31 MN, p_max 14.6 GPa, with status 0); 1 mm (3.5 MN) is solved.
+      call solver%solve(0.0_wp, 0.0_wp, contact_load_type(load_approach, 5.0_wp), &
+         headline_creepage, result, err)
+      call expect_error(error, err, stat_invalid_input, 'approach 5 mm gives the normal force')
+      if (allocated(error)) return
+      call solver%solve(0.0_wp, 0.0_wp, contact_load_type(load_approach, 1.0_wp), &
+         headline_creepage, result, err)
+      call check(error, .not. allocated(err), message='approach 1 mm refused')
+      if (allocated(error)) return
       call solver%set_material(material_type(-1.0_wp, 0.27_wp, 0.3_wp), err)
       call expect_error(error, err, stat_invalid_input, 'shear modulus')
       if (allocated(error)) return

@@ -26,7 +26,7 @@ module shcontact_core_ranges
    public :: variable_info_type, variables, ranges, find_range, range_key, has_range, &
       in_range, range_text, check_range, check_int_range
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list, k_choice
-   public :: max_grid_cells
+   public :: max_grid_cells, max_normal_force
 
    !> Kinds of namelist variables.
    !> k_choice: one of a registry's choices, held as its integer code after reading.
@@ -56,6 +56,10 @@ module shcontact_core_ranges
    !> Most cells of one patch grid, &normal n_strips × &tangential n_elements: every thread
    !> holds a few arrays of this size per patch (doc/app.md, "Limits").
    integer, parameter :: max_grid_cells = 1000000
+   !> The largest normal or vertical load (N) of a patch or wheel the program takes: ten times
+   !> a heavy axle's wheel load, far beyond where a half-space model of the rail holds. A
+   !> prescribed approach that gives more is refused too (shcontact_pipeline_stages).
+   real(wp), parameter :: max_normal_force = 1.0e7_wp
 
    !> The table, in the order of the resolved namelist (doc/app.md lists it).
    type(variable_info_type), parameter :: variables(*) = [ &
@@ -144,12 +148,12 @@ module shcontact_core_ranges
       0.3_wp, 1.0e-3_wp, 10.0_wp), &
       variable_info_type('load', 'mode', k_choice, '', 'how the normal problem is loaded'), &
       variable_info_type('load', 'normal_force', k_real, 'N', "normal force N (mode 'force')", &
-      64700.0_wp, 1.0_wp, 1.0e7_wp), &
+      64700.0_wp, 1.0_wp, max_normal_force), &
       variable_info_type('load', 'approach', k_real, 'mm', "rigid approach (mode 'approach')", &
       0.05_wp, 0.0_wp, 5.0_wp, lo_open=.true.), &
       variable_info_type('load', 'vertical_force', k_real, 'N', &
       "vertical wheel load shared by the patches (mode 'vertical')", &
-      64700.0_wp, 1.0_wp, 1.0e7_wp), &
+      64700.0_wp, 1.0_wp, max_normal_force), &
       variable_info_type('creepage', 'nu_x', k_real, '1', 'longitudinal creepage', &
       5.8e-4_wp, -1.0_wp, 1.0_wp), &
       variable_info_type('creepage', 'nu_y', k_real, '1', 'lateral creepage', &

@@ -19,9 +19,11 @@
 !> same case, bit for bit (test_app's app = library tests, both wheels).
 module shcontact_pipeline_stages
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, prefix_error, fatal_error, stat_numerical
+   use shcontact_core_error, only: error_type, prefix_error, fatal_error, stat_numerical, &
+      stat_invalid_input
+   use shcontact_core_ranges, only: max_normal_force
    use shcontact_core_material, only: material_type
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, str_real
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_geometry_kinematics, only: contact_lead
    use shcontact_normal_options, only: normal_options_type
@@ -154,8 +156,12 @@ contains
          call share_normal_force(contacts, load%value, normal, dz, n_used, error, start)
       case (load_approach)
          call solve_approach(contacts(1), load%value, normal(1), error)
+         if (.not. allocated(error)) call check_prescribed_approach('approach', load%value, &
+            normal(1:1), error)
       case (load_vertical_position)
          call solve_vertical_approach(contacts, load%value, normal, vertical, error, start)
+         if (.not. allocated(error)) call check_prescribed_approach('vertical approach', &
+            load%value, normal, error)
          dz = load%value
       case default
          by_strips = .false.
@@ -168,6 +174,29 @@ contains
       end select
       if (present(used)) used = n_used
    end subroutine solve_normal_stage
+
+   !> An error (stat_invalid_input) when a prescribed approach gives a normal force above
+   !> [[max_normal_force]], the largest load a force mode takes: approach = 5 mm at Y_WS = 0
+   !> gave 31 MN and p_max 14.6 GPa with status 0.
+   subroutine check_prescribed_approach(what, approach, normal, error)
+      character(len=*), intent(in) :: what
+      !> The approach (mm).
+      real(wp), intent(in) :: approach
+      !> The solution of the patches it loads.
+      type(normal_patch_type), intent(in) :: normal(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(wp) :: total
+      integer :: k
+      total = 0.0_wp
+      do k = 1, size(normal)
+         total = total + normal(k)%load
+      end do
+      if (total <= max_normal_force) return
+      call fatal_error(error, what//' '//str_real(approach)//' mm gives the normal force '// &
+         str_real(total)//' N (p_max '//str_real(maxval(normal%p_max))//' MPa), above the '// &
+         str_real(max_normal_force)//' N the program takes as a load; prescribe a smaller '// &
+         what//' (mm)', stat_invalid_input)
+   end subroutine check_prescribed_approach
 
    !> A prescribed vertical load F_z carried by the strips (doc/theory.md §4.6): the vertical
    !> force of the normal solution is that of its strips, Σ_k Σ_i N_k,i cos γ_k,i with each
