@@ -58,6 +58,9 @@ SWEEP_AXES = ["t_y", "roll", "yaw", "normal_force", "approach", "vertical_force"
 #: In a kinematic run (&kinematics mode = 'on') nu_x, nu_y, phi are results, and the wheelset
 #: inputs are columns whether swept or not.
 KINEMATIC_RESULTS = ("nu_x", "nu_y", "phi")
+#: Inputs that choose the model or the material rather than the case: --compare sets solutions
+#: that differ in them against each other.
+MODEL_INPUTS = ("friction", "bound", "spin_model")
 #: How to show a swept input: (label, scale).
 AXIS_DISPLAY = {
     "nu_x": (r"$\nu_x$ [‰]", 1e3), "nu_y": (r"$\nu_y$ [‰]", 1e3),
@@ -524,6 +527,70 @@ def plot_creep(f, title, out, xname=None, fixes=None, curves=None, magnitude=Fal
     return True
 
 
+def open_result(path, what="file"):
+    """The HDF5 result file `path` opened for reading, or a one-line exit naming it."""
+    if not os.path.isfile(path):
+        sys.exit(f"plot_case: {path}: no such file")
+    try:
+        f = h5py.File(path, "r")
+    except OSError:
+        sys.exit(f"plot_case: {path} is not an HDF5 file (not a shcontact result file)")
+    if text(f.attrs.get("software", b"")) != "shcontact" or "summary" not in f:
+        f.close()
+        sys.exit(f"plot_case: {path} is not a shcontact result file")
+    return f
+
+
+def is_kinematic(f):
+    """True for a kinematic run (&kinematics mode = 'on')."""
+    return re.search(r"&kinematics\s+mode\s*=\s*'on'", text(f["input/namelist"][()])) is not None
+
+
+def input_columns(f, rows):
+    """{input: values of the cases at `rows`} of a result file: the /summary column where there
+    is one, else the stored namelist's value for every case (creepages are results in a
+    kinematic run and are left out)."""
+    values = namelist_values(text(f["input/namelist"][()]))
+    s = f["summary"]
+    columns = {}
+    for key in SWEEP_AXES:
+        if (is_kinematic(f) and key in KINEMATIC_RESULTS) or key in MODEL_INPUTS:
+            continue
+        if key in s:
+            column = s[key][...][rows]
+            columns[key] = [text(v) for v in column] if column.dtype.kind in "SO" else column
+        elif key in values:
+            columns[key] = [values[key]] * len(rows)
+    return columns
+
+
+def check_same_inputs(f, g, names):
+    """Exit unless the cases both files hold have the same position, load, creepages or
+    wheelset motion: --compare sets two solutions of the same cases against each other (other
+    options, bounds, spin models or friction), and files of other sweeps pair their cases by
+    number only."""
+    if is_kinematic(f) != is_kinematic(g):
+        sys.exit(f"plot_case: --compare: {names[0 if is_kinematic(f) else 1]} is a kinematic run "
+                 f"and {names[1 if is_kinematic(f) else 0]} is not: their cases differ")
+    rf, rg = common_cases(f, g)
+    if rf.size == 0:
+        sys.exit(f"plot_case: --compare: {names[0]} and {names[1]} have no solved case in common")
+    a, b = input_columns(f, rf), input_columns(g, rg)
+    cases = f["summary/case"][...][rf]
+    for key in a:
+        if key not in b:
+            continue
+        va, vb = a[key], b[key]
+        for i in range(len(cases)):
+            x, y = number(va[i]), number(vb[i])
+            same = (text(va[i]) == text(vb[i]) if np.isnan(x) or np.isnan(y)
+                    else abs(x - y) <= 1e-9 * max(abs(x), abs(y), 1e-300))
+            if not same:
+                sys.exit(f"plot_case: --compare: case {cases[i]} has {key} = {text(va[i])} in "
+                         f"{names[0]} and {text(vb[i])} in {names[1]}: the files hold other "
+                         f"cases (compare two solutions of the same cases)")
+
+
 def common_cases(f, g):
     """Rows of the solved cases both files hold: (rows in f, rows in g)."""
     cf, cg = f["summary/case"][...], g["summary/case"][...]
@@ -542,7 +609,10 @@ def plot_compare_forces(f, g, names, out):
                                               ("mz", "$M_z$ [N m]", 1e-3))):
         a = f["summary/" + key][...][rf] * scale
         b = g["summary/" + key][...][rg] * scale
-        ax.plot(b, a, ".", ms=2, alpha=0.5, color="C0")
+        # Few cases: markers that show (a single case was a dot of 1-2 pixels).
+        few = rf.size < 50
+        ax.plot(b, a, "o" if few else ".", ms=6 if few else 2, alpha=0.8 if few else 0.5,
+                color="C0")
         lo, hi = min(a.min(), b.min()), max(a.max(), b.max())
         ax.plot([lo, hi], [lo, hi], color="C3", lw=1, label="equal")
         ax.set_xlabel(f"{label}, {names[1]}")
@@ -576,19 +646,24 @@ def plot_error_cdf(f, g, names, out):
     for label, err in series:
         e = np.sort(np.maximum(err, floor))
         p = np.arange(1, e.size + 1) / e.size
-        ax.step(e, p, where="post",
+        ax.step(e, p, where="post", marker="o" if e.size < 20 else None, ms=5,
                 label=f"{label}: median {np.median(err):.2g}, 95 % {np.percentile(err, 95):.2g}, "
                       f"max {err.max():.2g}")
     ax.set_xscale("log")
     # From just below the smallest differences that are not zero (equal cases sit at the left).
     positive = np.concatenate([err[err > floor] for _, err in series])
     if positive.size:
-        ax.set_xlim(left=10 ** np.floor(np.log10(np.percentile(positive, 0.5))))
+        left = 10 ** np.floor(np.log10(np.percentile(positive, 0.5)))
+        # Two decades at least, so that only the decades are labelled (a narrow range labelled
+        # its minor ticks on top of each other).
+        ax.set_xlim(left=left, right=max(10 ** np.ceil(np.log10(positive.max() * 1.0001)),
+                                         100 * left))
     ax.set_xlabel(f"difference, {names[0]} against {names[1]} (cases with none at the left)")
     ax.set_ylabel("fraction of cases with a smaller difference")
     ax.set_ylim(0, 1.02)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=8, loc="upper left")
+    # Few cases sit at the top, where the legend of many cases goes.
+    ax.legend(fontsize=8, loc="upper left" if rf.size >= 20 else "center left")
     ax.set_title(f"{names[0]} against {names[1]}: {rf.size} cases")
     fig.tight_layout()
     fig.savefig(out, dpi=130)
@@ -619,13 +694,17 @@ def main():
     prefix = args.prefix or os.path.splitext(os.path.basename(args.file))[0]
     if args.outdir is None:
         args.outdir = os.path.dirname(args.file) or "."
-    if not os.path.isfile(args.file):
-        sys.exit(f"plot_case: {args.file}: no such file")
+    f = open_result(args.file)
+    g = open_result(args.compare) if args.compare else None
+    names = (os.path.basename(args.file), os.path.basename(args.compare or ""))
+    if g is not None:
+        check_same_inputs(f, g, names)
+    if args.case is not None and "cases" not in f:
+        sys.exit(f"plot_case: --case {args.case}: {args.file} holds no element fields (run "
+                 f"with --set output%fields=all to store them)")
     os.makedirs(args.outdir, exist_ok=True)
     written = []
-    with h5py.File(args.file, "r") as f:
-        if text(f.attrs.get("software", b"")) != "shcontact":
-            sys.exit(f"plot_case: {args.file} is not a shcontact result file")
+    with f:
         group = pick_case(f, args.case)
         title = os.path.basename(args.file)
         if group is not None:
@@ -648,10 +727,9 @@ def main():
         if "summary" in f and plot_creep(f, title, out, args.xaxis, args.fix, args.curves,
                                          args.abs):
             written.append(out)
-        if args.compare:
+        if g is not None:
             other = os.path.splitext(os.path.basename(args.compare))[0]
-            names = (os.path.basename(args.file), os.path.basename(args.compare))
-            with h5py.File(args.compare, "r") as g:
+            with g:
                 out = os.path.join(args.outdir, f"{prefix}_vs_{other}_forces.png")
                 if plot_compare_forces(f, g, names, out):
                     written.append(out)

@@ -9,6 +9,7 @@
 module test_figures
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp
+   use shcontact_core_strings, only: str_int
    use shcontact_api_solver, only: contact_result_type
    use test_api, only: headline_t_y, headline_load, headline_creepage, headline_result
    use test_app, only: shell, file_text, scratch_directory, run_program, unavailable, &
@@ -27,7 +28,8 @@ contains
       testsuite = [ &
          new_unittest('headline_figures_show_current_numbers', test_headline_numbers), &
          new_unittest('plot_script_without_matplotlib', test_without_matplotlib), &
-         new_unittest('plot_script_patch_and_folder', test_patch_and_folder) &
+         new_unittest('plot_script_patch_and_folder', test_patch_and_folder), &
+         new_unittest('plot_script_refuses_clearly', test_plot_refusals) &
          ]
    end subroutine collect_figures
 
@@ -137,6 +139,55 @@ contains
          index(err_text, "'numpy'") > 0), message='message without matplotlib: '//err_text)
       call shell('rm -rf '//dir)
    end subroutine test_without_matplotlib
+
+   !> What a user met (stop 46): `--compare` of files of other cases drew them against each
+   !> other by case number; a file that is not HDF5, or a missing --compare file (after the
+   !> other PNGs were written), gave a Python traceback; `--case N` on a file without fields was
+   !> ignored. Each is now one line naming the file, status 1, and nothing written; two solutions
+   !> of the same case compare.
+   subroutine test_plot_refusals(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, here
+      character(len=*), parameter :: cases(4, 2) = reshape([character(len=150) :: &
+         'h.h5 --compare ty.h5', 'ty.h5 --compare missing.h5', 'nothdf.h5', 'ty.h5 --case 3', &
+         'case 1 has t_y = 4.733 in h.h5 and 0.0 in ty.h5: the files hold other cases', &
+         'plot_case: missing.h5: no such file', &
+         'plot_case: nothdf.h5 is not an HDF5 file (not a shcontact result file)', &
+         'plot_case: --case 3: ty.h5 holds no element fields'], [4, 2])
+      integer :: stat, k
+
+      if (unavailable(error, .false.)) return
+      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
+      if (stat /= 0) then
+         call skip_test(error, 'python3 with h5py, numpy and matplotlib is not available')
+         return
+      end if
+      here = current_directory()
+      dir = scratch_directory('figures_refusals')
+      stat = run_program(dir, 'run -q -o h.h5')
+      if (stat == 0) stat = run_program(dir, 'run -q -o hf.h5 --set tangential%bound=clipped')
+      if (stat == 0) stat = run_program(dir, 'run -q -o ty.h5 --set sweep%t_y=0,8 '// &
+         '--set sweep%t_y_points=3')
+      call check(error, stat, 0, message='the runs: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call shell('echo "not hdf5" > '//dir//'/nothdf.h5')
+      do k = 1, size(cases, 1)
+         call shell('cd '//dir//' && python3 '//here//'/scripts/plot_case.py '// &
+            trim(cases(k, 1))//' -o figs > out.txt 2> err.txt', stat)
+         call check(error, stat == 1 .and. index(file_text(dir//'/err.txt'), &
+            trim(cases(k, 2))) > 0 .and. index(file_text(dir//'/err.txt'), 'Traceback') == 0, &
+            message='plot_case.py '//trim(cases(k, 1))//': status '//str_int(stat)//', '// &
+            file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+         call shell('test ! -e '//dir//'/figs', stat)
+         call check(error, stat, 0, message='plot_case.py '//trim(cases(k, 1))//' wrote figures')
+         if (allocated(error)) return
+      end do
+      call shell('cd '//dir//' && python3 '//here//'/scripts/plot_case.py h.h5 --compare hf.h5 '// &
+         '-o figs > out.txt 2> err.txt && test -s figs/h_vs_hf_forces.png', stat)
+      call check(error, stat, 0, message='two solutions of one case: '//file_text(dir//'/err.txt'))
+      call shell('rm -rf '//dir)
+   end subroutine test_plot_refusals
 
    !> The kinematic example (two patches with different creepages) plotted with --patch 2: the
    !> figures go next to the result file, not into the working directory, and the creepages in
