@@ -47,8 +47,14 @@ KINEMATIC = RESULT + (
     "x_track",     # contact point, longitudinal track coordinate (mm, forward)
 )
 
+#: The wheel's joined contact (doc/lobes.md: its patches within 4 mm joined as the exact theory
+#: joins them), read by key (shcontact_get_value) after every solve and returned with the
+#: result: the numbers to set against CONTACT's one patch.
+WHEEL = ("wheel_patches", "wheel_fn", "wheel_fx", "wheel_fy", "wheel_fx_norm",
+         "wheel_fy_norm", "wheel_area", "wheel_p_max")
+
 #: Values that are counts or indices (returned as integer arrays).
-INTEGER = ("n_patches", "n_loaded", "main_patch")
+INTEGER = ("n_patches", "n_loaded", "main_patch", "wheel_patches")
 
 #: Units of every value.
 UNITS = {
@@ -57,7 +63,9 @@ UNITS = {
     "gamma0": "rad", "r0": "mm", "y_track": "mm", "z_track": "mm", "coulomb": "1",
     "adhesion": "1", "n_patches": "1", "n_loaded": "1", "main_patch": "1", "sum_fx": "N",
     "sum_fy": "N", "sum_fz": "N", "sum_fn": "N", "dz": "mm", "nu_x": "1", "nu_y": "1",
-    "phi": "rad/mm", "x_track": "mm",
+    "phi": "rad/mm", "x_track": "mm", "wheel_patches": "1", "wheel_fn": "N", "wheel_fx": "N",
+    "wheel_fy": "N", "wheel_fx_norm": "1", "wheel_fy_norm": "1", "wheel_area": "mm^2",
+    "wheel_p_max": "MPa",
 }
 
 #: Load modes (SHCONTACT_LOAD_*), by the keyword that gives the load to a solve.

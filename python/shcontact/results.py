@@ -56,7 +56,12 @@ class ResultFile:
         if not os.path.isfile(path):
             raise FileNotFoundError(f"shcontact: no result file '{path}'")
         self.path = path
-        with self._open() as f:
+        try:
+            f = self._open()
+        except OSError as exc:  # h5py's "file signature not found" for a file that is not HDF5
+            raise ValueError(f"shcontact: '{path}' is not an HDF5 file (not a shcontact result "
+                             "file)") from exc
+        with f:
             if "summary" not in f:
                 raise ValueError(f"shcontact: '{path}' is not a shcontact result file "
                                  "(no /summary group)")
@@ -99,6 +104,9 @@ class ResultFile:
     def units(self, group="summary"):
         """{dataset name: units} of a group (``"summary"``, or a path as in :meth:`group`)."""
         with self._open() as f:
+            if group not in f:
+                raise KeyError(f"shcontact: '{self.path}' has no group '{group}' (groups: "
+                               f"{', '.join(sorted(f))})")
             g = f[group]
             return {name: _text(g[name].attrs.get("units", b"")) for name in g
                     if isinstance(g[name], _h5py().Dataset)}

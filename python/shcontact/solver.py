@@ -328,18 +328,25 @@ class Contact:
         if errors not in ("raise", "nan"):
             raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
         shape = inputs[0].shape
-        out = np.full(shape + (len(names),), np.nan)
+        keyed = layout.WHEEL
+        out = np.full(shape + (len(names) + len(keyed),), np.nan)
         status = np.zeros(shape, dtype=np.int32)
         values = (ctypes.c_double * len(names))()
+        value = ctypes.c_double()
         handle = self._ptr()
         flat = [a.ravel() for a in inputs]
         stat = None
-        out_flat = out.reshape(-1, len(names))
+        out_flat = out.reshape(-1, len(names) + len(keyed))
         status_flat = status.reshape(-1)
         for k in range(out_flat.shape[0]):
             stat = call(handle, values, *[float(a[k]) for a in flat])
             if stat == 0:
-                out_flat[k] = values[:]
+                out_flat[k, :len(names)] = values[:]
+                # The wheel's joined contact, by key (not in the flat layout).
+                for j, key in enumerate(keyed):
+                    self._check(self._lib.shcontact_get_value(handle, key.encode(), 0,
+                                                              ctypes.byref(value)))
+                    out_flat[k, len(names) + j] = value.value
             else:
                 status_flat[k] = stat
                 if errors == "raise":
@@ -348,7 +355,7 @@ class Contact:
         self._last_kinematic = len(names) == len(layout.KINEMATIC)
         self._main_patch = int(values[names.index("main_patch")]) if stat == 0 else 1
         result = {}
-        for i, name in enumerate(names):
+        for i, name in enumerate(names + keyed):
             column = out[..., i]
             if name in layout.INTEGER:
                 column = np.where(np.isnan(column), 0, column).astype(np.int64)

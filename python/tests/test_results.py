@@ -97,3 +97,17 @@ def test_xarray_opens_every_group(run_app):
                 assert ds["fx"].dims == ("case",)
             if group == "input/profiles":
                 assert ds["wheel"].dims == ("wheel_point", "column")
+
+
+def test_not_a_result_file(run_app, tmp_path):
+    """A file that is not HDF5 gave h5py's raw OSError ("file signature not found"), a group
+    that is not there its raw KeyError: now messages that name the file (user trial, stop 46)."""
+    text = tmp_path / "notes.txt"
+    text.write_text("not HDF5\n")
+    with pytest.raises(ValueError, match="is not an HDF5 file"):
+        shcontact.ResultFile(str(text))
+    with pytest.raises(ValueError, match="is not an HDF5 file"):
+        shcontact.read_summary(str(text))
+    path, _ = run_app("plain", "--set", "position%t_y=4.733")
+    with pytest.raises(KeyError, match="has no group 'nope'"):
+        shcontact.ResultFile(path).units("nope")

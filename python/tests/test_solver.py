@@ -52,6 +52,24 @@ def test_kinematic_equals_program(contact, run_app):
     assert r["n_loaded"] == 2  # tread and flange root
 
 
+def test_wheel_values_in_results(contact, run_app):
+    """The wheel's joined contact (wheel_fn, wheel_fx_norm, ...: what is compared with the exact
+    theory's one patch) comes with every solve, in sweeps too, as the program's /summary has it
+    (it was only reachable one call at a time through value())."""
+    _, rows = run_app("ksweep", "examples/kinematic_sweep.nml")
+    t_y = np.array([float(row["t_y"]) for row in rows])
+    yaw = np.array([float(row["yaw"]) for row in rows])
+    r = contact.solve_kinematic(t_y, yaw=yaw, v_forward=30000.0, vertical_force=64700.0)
+    for key in layout.WHEEL:
+        assert np.shape(r[key]) == t_y.shape, key
+        for i, row in enumerate(rows):
+            assert r[key][i] == pytest.approx(float(row[key]), rel=RTOL, abs=ATOL), (key, i)
+    assert r["wheel_patches"].dtype.kind == "i" and r["wheel_patches"].max() >= 2
+    one = contact.solve(T_Y, **HEADLINE)
+    assert one["wheel_fx"] == contact.value("wheel_fx")
+    assert one["wheel_fx_norm"] == pytest.approx(one["fx_norm"], rel=1e-12)
+
+
 def test_kinematic_sweep_as_arrays(contact, run_app):
     """The 34 cases of examples/kinematic_sweep.nml as one vectorised call."""
     _, rows = run_app("ksweep", "examples/kinematic_sweep.nml")
