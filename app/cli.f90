@@ -2,7 +2,8 @@
 module shcontact_app_cli
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_usage, stat_invalid_input
-   use shcontact_core_strings, only: str_int, control_characters
+   use shcontact_core_strings, only: str_int, str_real, control_characters
+   use shcontact_core_ranges, only: ranges, find_range
    use shcontact_core_text, only: string_list_type
    use shcontact, only: max_threads
    implicit none
@@ -495,6 +496,15 @@ contains
                'e.g. --wheelset -10,10,0.5', stat_usage)
             return
          end if
+         ! The lateral shifts the solver takes (&position t_y's range).
+         associate (t_y => ranges(find_range('position%t_y')))
+            if (values(1) < t_y%lo .or. values(2) > t_y%hi) then
+               call fatal_error(error, '--wheelset '//text//': the shifts must lie within '// &
+                  str_real(t_y%lo)//' ... '//str_real(t_y%hi)//' mm (the range of &position '// &
+                  't_y)', stat_usage)
+               return
+            end if
+         end associate
          cli%wheelset_range = values
          cli%wheelset_given = .true.
       else

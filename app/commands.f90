@@ -22,7 +22,7 @@ module shcontact_app_commands
    private
 
    public :: run_command, merge_command, geometry_command, report_error
-   public :: exit_some_failed, configure
+   public :: exit_some_failed, configure, refuse_yaw, print_profile_notes
 
    !> Exit status when some (not all) cases of a sweep failed.
    integer, parameter :: exit_some_failed = 4
@@ -318,18 +318,9 @@ contains
          inputs(3) = config%profiles%rail
          call check_output_file(name, what, cli%force, inputs, error)
       end if
-      ! The tables are those of the wheelset without yaw: a yawed wheel's (the contact locus,
-      ! doc/kinematics.md) exist only inside the kinematic call, so writing these would be a
-      ! wrong answer for the case asked.
-      if (.not. allocated(error)) then
-         associate (first => config%case_point(1))
-            if (first%yaw /= 0.0_wp) call fatal_error(error, case_source(cli)// &
-               ': &kinematics yaw = '//str_real(first%yaw)//' rad: `shcontact geometry` '// &
-               'writes the tables of a wheelset without yaw only; set yaw = 0', &
-               stat_invalid_input)
-         end associate
-      end if
+      if (.not. allocated(error)) call refuse_yaw(cli, config, error)
       if (.not. allocated(error)) call prepare_run(config, setup, error)
+      if (.not. allocated(error) .and. .not. cli%quiet) call print_profile_notes(config)
       if (.not. allocated(error)) call solve_geometry(setup, config%case_point(1), patches, error)
       if (.not. allocated(error)) call write_geometry_table(patches, name, error)
       if (allocated(error)) then
@@ -339,6 +330,22 @@ contains
       if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: geometry of '// &
          str_int(size(patches))//' patch(es) written to '//name
    end function geometry_command
+
+   !> An error unless the case's wheelset has no yaw: the tables of `shcontact geometry` (the
+   !> strip tables and the wheelset's) are those of a wheelset without yaw; a yawed wheel's
+   !> (the contact locus, doc/kinematics.md) exist only inside the kinematic call, so writing
+   !> these would be a wrong answer for the case asked.
+   subroutine refuse_yaw(cli, config, error)
+      type(cli_type), intent(in) :: cli
+      type(case_config_type), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      associate (first => config%case_point(1))
+         if (first%yaw /= 0.0_wp) call fatal_error(error, case_source(cli)// &
+            ': &kinematics yaw = '//str_real(first%yaw)//' rad: `shcontact geometry` '// &
+            'writes the tables of a wheelset without yaw only; set yaw = 0', &
+            stat_invalid_input)
+      end associate
+   end subroutine refuse_yaw
 
    !> Where a case's inputs come from, for messages: the case file, or the built-in case.
    pure function case_source(cli) result(text)

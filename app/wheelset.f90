@@ -4,13 +4,15 @@
 module shcontact_app_wheelset
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact_core_kinds, only: wp
+   use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type
    use shcontact_core_strings, only: str_int, str_format
    use shcontact, only: case_config_type, run_setup_type, prepare_run, wheelset_contact_type, &
+      profile_type, &
       wheelset_geometry_table, roll_angle_parameter, contact_distance, centre_radius, &
       equivalent_conicity, conicity_en15302, conicity_harmonic, klingel_wavelength
    use shcontact_app_cli, only: cli_type
-   use shcontact_app_commands, only: configure, report_error
+   use shcontact_app_commands, only: configure, report_error, refuse_yaw, print_profile_notes
    use shcontact_app_stdout, only: put_line
    implicit none
    private
@@ -35,7 +37,7 @@ contains
       type(wheelset_contact_type), allocatable :: table(:)
       type(error_type), allocatable :: error
       type(cli_type) :: plain
-      real(wp) :: reach
+      real(wp) :: reach, steepest
       integer :: n_rows
 
       status = 0
@@ -43,11 +45,14 @@ contains
       plain = cli
       plain%output = ''
       call configure(plain, config, error)
+      if (.not. allocated(error)) call refuse_yaw(cli, config, error)
       if (.not. allocated(error)) call prepare_run(config, setup, error)
       if (allocated(error)) then
          status = report_error(error)
          return
       end if
+      if (.not. cli%quiet) call print_profile_notes(config)
+      steepest = flange_steepest(setup%wheel)
       call put_line('# wheelset contact geometry: wheel '// &
          trim(config%profiles%wheel)//', rail '//trim(config%profiles%rail)//'; gauge '// &
          str_format(setup%prepared%track%gauge, '(f0.2)')//' mm, flange-back distance '// &
@@ -64,6 +69,7 @@ contains
             return
          end if
          call print_table(table)
+         call note_climbing(table, steepest, cli%quiet)
          n_rows = size(table)
       end if
       if (allocated(cli%amplitudes)) then
@@ -75,6 +81,7 @@ contains
             return
          end if
          call print_conicity(table, cli%amplitudes, status)
+         call note_flange_amplitudes(table, cli%amplitudes, cli%quiet)
          n_rows = n_rows + size(table)
       end if
       if (.not. cli%quiet .and. status == 0) write (error_unit, '(a)') 'shcontact: wheelset '// &
@@ -146,6 +153,98 @@ contains
          call put_line(trim(row))
       end do
    end subroutine print_conicity
+
+   !> Wheel profile y (mm) of the tip-most point of the flange's steepest part: between the
+   !> tape circle (y = 0) and the flange tip (the largest z), the segment nearest the tip whose
+   !> slope is within 0.5° of the steepest. A contact beyond it (towards the tip) is one the
+   !> wheel climbs to: its contact angle falls again (Nadal).
+   pure real(wp) function flange_steepest(wheel) result(y_s)
+      type(profile_type), intent(in) :: wheel
+      real(wp), parameter :: tolerance = 0.5_wp*pi/180.0_wp
+      real(wp) :: y_tip, angle, steepest
+      integer :: i
+      y_tip = wheel%y(maxloc(wheel%z, 1))
+      steepest = 0.0_wp
+      do i = 1, size(wheel%y) - 1
+         if (.not. in_flange(i)) cycle
+         steepest = max(steepest, atan2(abs(wheel%z(i + 1) - wheel%z(i)), &
+            abs(wheel%y(i + 1) - wheel%y(i))))
+      end do
+      ! The tip-most point of the steep segments: their smallest y.
+      y_s = 0.0_wp
+      do i = 1, size(wheel%y) - 1
+         if (.not. in_flange(i)) cycle
+         angle = atan2(abs(wheel%z(i + 1) - wheel%z(i)), abs(wheel%y(i + 1) - wheel%y(i)))
+         if (angle >= steepest - tolerance) y_s = min(y_s, min(wheel%y(i), wheel%y(i + 1)))
+      end do
+   contains
+      pure logical function in_flange(i)
+         integer, intent(in) :: i
+         in_flange = min(wheel%y(i), wheel%y(i + 1)) >= y_tip .and. &
+            max(wheel%y(i), wheel%y(i + 1)) <= 0.0_wp .and. wheel%y(i) /= wheel%y(i + 1)
+      end function in_flange
+   end function flange_steepest
+
+   !> A note (a comment line of the table and, unless quiet, on stderr) naming, for each wheel,
+   !> the smallest shift at which its contact lies beyond its flange's steepest part (towards
+   !> the flange tip): the rigid wheelset can shift that far only by climbing the flange, so the
+   !> rows from there on are flange-climbing states (the contact angle falls again, the wheelset
+   !> is lifted).
+   subroutine note_climbing(table, steepest, quiet)
+      type(wheelset_contact_type), intent(in) :: table(:)
+      real(wp), intent(in) :: steepest
+      logical, intent(in) :: quiet
+      character(len=*), parameter :: names(2) = [character(len=5) :: 'right', 'left']
+      character(len=:), allocatable :: line
+      integer :: k, i, first
+      do k = 1, 2
+         first = 0
+         do i = 1, size(table)
+            if (.not. (table(i)%wheel_y(k) < steepest - 0.1_wp)) cycle
+            if (first == 0) then
+               first = i
+            else if (abs(table(i)%y) < abs(table(first)%y)) then
+               first = i
+            end if
+         end do
+         if (first == 0) cycle
+         associate (t => table(first))
+            line = 'note: from y = '//str_format(t%y, '(f0.3)')//' mm the '//trim(names(k))// &
+               ' wheel touches its flange beyond the flange''s steepest part (wheel profile '// &
+               'y = '//str_format(t%wheel_y(k), '(f0.3)')//' mm; the steep part ends at '// &
+               str_format(steepest, '(f0.3)')//' mm; contact angle '// &
+               str_format(t%gamma(k), '(f0.4)')//' rad): the rigid wheelset shifts further '// &
+               'only by climbing the flange, so these rows are flange-climbing states'
+         end associate
+         call put_line('# '//line)
+         if (.not. quiet) write (error_unit, '(a)') 'shcontact: '//line
+      end do
+   end subroutine note_climbing
+
+   !> A note for each conicity amplitude that reaches flange contact (a contact angle above
+   !> 0.5 rad within ±A): EN 15302 defines the equivalent conicity within the flangeway clearance.
+   subroutine note_flange_amplitudes(table, amplitudes, quiet)
+      type(wheelset_contact_type), intent(in) :: table(:)
+      real(wp), intent(in) :: amplitudes(:)
+      logical, intent(in) :: quiet
+      real(wp), parameter :: flange_angle = 0.5_wp
+      real(wp) :: onset
+      character(len=:), allocatable :: line
+      integer :: k, i
+      onset = huge(1.0_wp)
+      do i = 1, size(table)
+         if (maxval(abs(table(i)%gamma)) > flange_angle) onset = min(onset, abs(table(i)%y))
+      end do
+      do k = 1, size(amplitudes)
+         if (amplitudes(k) < onset) cycle
+         line = 'note: amplitude '//str_format(amplitudes(k), '(f0.3)')//' mm reaches '// &
+            'flange contact (a contact angle above '//str_format(flange_angle, '(f0.1)')// &
+            ' rad from |y| = '//str_format(onset, '(f0.3)')//' mm): EN 15302 defines the '// &
+            'equivalent conicity within the flangeway clearance'
+         call put_line('# '//line)
+         if (.not. quiet) write (error_unit, '(a)') 'shcontact: '//line
+      end do
+   end subroutine note_flange_amplitudes
 
    !> 0 for values that print as ±0.00000 (5 decimals), so that y = 0 shows no "-0.00000".
    elemental real(wp) function tidy(x)

@@ -435,6 +435,51 @@ contains
       call check(error, stat, 1, message='--conicity with -o: exit status')
       if (allocated(error)) return
       call shell_absent(error, dir//'/w.txt')
+      if (allocated(error)) return
+      ! No note within the flangeway clearance (the table above).
+      call check(error, index(text, 'note:') == 0, message='a note at |y| <= 6 mm: '//text)
+      if (allocated(error)) return
+      ! What a user met (stop 46): flange-climbing rows, conicity past the flange, shifts past
+      ! t_y's range and a yaw angle were taken without a word, and the profile notes of `run`
+      ! were not printed.
+      stat = run_program(dir, 'geometry --wheelset -10,10,0.5 --conicity 3,8')
+      call check(error, stat, 0, message='geometry --wheelset -10,10,0.5: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/out.txt')
+      call expect_in(error, text, '# note: from y = 6.500 mm the right wheel touches its '// &
+         'flange beyond the flange''s steepest part', 'right wheel climbing')
+      if (allocated(error)) return
+      call expect_in(error, text, '# note: from y = -6.500 mm the left wheel touches its '// &
+         'flange beyond', 'left wheel climbing')
+      if (allocated(error)) return
+      call expect_in(error, text, '# note: amplitude 8.000 mm reaches flange contact', &
+         'conicity past the flange')
+      if (allocated(error)) return
+      call check(error, index(text, 'amplitude 3.000 mm reaches') == 0, &
+         message='a flange note at 3 mm')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'shcontact: note: from y = 6.500 mm', &
+         'the note on stderr')
+      if (allocated(error)) return
+      stat = run_program(dir, 'geometry --wheelset 20,40,20')
+      call check(error, stat, 1, message='--wheelset 20,40,20: exit status')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the shifts must lie within -30', &
+         '--wheelset past t_y''s range')
+      if (allocated(error)) return
+      stat = run_program(dir, 'geometry --wheelset -1,1,1 --set kinematics%yaw=0.004')
+      call check(error, stat, 2, message='--wheelset with yaw: exit status')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'writes the tables of a wheelset '// &
+         'without yaw only', '--wheelset with yaw')
+      if (allocated(error)) return
+      stat = run_program(dir, 'geometry --wheelset -1,1,1 --set profiles%rail=builtin:'// &
+         'UIC60-canted')
+      call check(error, stat, 0, message='canted twice: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'the head looks inclined by about '// &
+         '1:40 already', 'the profile note of run')
    end subroutine test_program
 
    !> The shifts of a table.
