@@ -156,12 +156,7 @@ contains
          'plot_case: --case 3: ty.h5 holds no element fields'], [4, 2])
       integer :: stat, k
 
-      if (unavailable(error, .false.)) return
-      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
-      if (stat /= 0) then
-         call skip_test(error, 'python3 with h5py, numpy and matplotlib is not available')
-         return
-      end if
+      if (plotting_unavailable(error)) return
       here = current_directory()
       dir = scratch_directory('figures_refusals')
       stat = run_program(dir, 'run -q -o h.h5')
@@ -198,12 +193,7 @@ contains
       real(wp) :: title(3), patch(2, 3)
       integer :: stat, k
 
-      if (unavailable(error, .false.)) return
-      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
-      if (stat /= 0) then
-         call skip_test(error, 'python3 with h5py, numpy and matplotlib is not available')
-         return
-      end if
+      if (plotting_unavailable(error)) return
       here = current_directory()
       dir = scratch_directory('figures_patch')
       call check(error, run_program(dir, 'run '//here//'/examples/kinematic.nml -q -o k.h5'), 0, &
@@ -250,5 +240,17 @@ contains
          close (unit)
       end subroutine read_reals
    end subroutine test_patch_and_folder
+
+   !> Skip (true) when the program or python3 with h5py, numpy and matplotlib is not available.
+   logical function plotting_unavailable(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      plotting_unavailable = unavailable(error, .false.)
+      if (plotting_unavailable) return
+      call shell('python3 -c "import h5py, numpy, matplotlib" > /dev/null 2>&1', stat)
+      plotting_unavailable = stat /= 0
+      if (plotting_unavailable) call skip_test(error, 'python3 with h5py, numpy and matplotlib '// &
+         'is not available')
+   end function plotting_unavailable
 
 end module test_figures
