@@ -24,7 +24,8 @@ module test_api
    use shcontact_tangential_patch, only: tangential_patch_type, state_exterior, state_slip
    use shcontact_tangential_solver, only: solve_tangential
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
-      contact_fields_type, load_normal_force, load_vertical_force, load_approach
+      contact_fields_type, load_normal_force, load_vertical_force, load_approach, &
+      load_vertical_position
    use shcontact_api_values, only: result_value_count, patch_value_count, result_values, &
       patch_values
    use shcontact_input_config, only: case_config_type, case_point_type, load_config
@@ -534,6 +535,11 @@ contains
       call solver%solve(0.0_wp, 0.0_wp, contact_load_type(load_approach, 1.0_wp), &
          headline_creepage, result, err)
       call check(error, .not. allocated(err), message='approach 1 mm refused')
+      if (allocated(error)) return
+      call solver%solve(0.0_wp, 0.0_wp, contact_load_type(load_vertical_position, 5.0_wp), &
+         headline_creepage, result, err)
+      call expect_error(error, err, stat_invalid_input, 'vertical position 5 mm gives the '// &
+         'normal force')
       if (allocated(error)) return
       call solver%set_material(material_type(-1.0_wp, 0.27_wp, 0.3_wp), err)
       call expect_error(error, err, stat_invalid_input, 'shear modulus')

@@ -56,7 +56,7 @@ module shcontact_api_solver
    use shcontact_pipeline_cache, only: contact_cache_type, update_geometry, update_normal, &
       solve_patch, summarise, copy_fields, same, forget_normal
    use shcontact_pipeline_balance, only: kinematic_contact, kinematic_tangential
-   use shcontact_pipeline_stages, only: carry_creepage_stage
+   use shcontact_pipeline_stages, only: carry_creepage_stage, check_prescribed_approach
    implicit none
    private
 
@@ -230,6 +230,9 @@ contains
       call update_geometry(self%cache, t_y, roll, 0.0_wp, error)
       if (allocated(error)) return
       call update_normal(self%cache, load, error, strips=.true.)
+      if (allocated(error)) return
+      if (load%mode == load_vertical_position) call check_prescribed_approach( &
+         'vertical position', load%value, self%cache%normal(1:self%cache%n_loaded), error)
       if (allocated(error)) return
 
       options = self%cache%tangential_options
