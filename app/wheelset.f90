@@ -5,6 +5,7 @@ module shcontact_app_wheelset
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
+   use shcontact_profile_points, only: tape_circle_origin
    use shcontact_core_error, only: error_type
    use shcontact_core_strings, only: str_int, str_format
    use shcontact, only: case_config_type, run_setup_type, prepare_run, wheelset_contact_type, &
@@ -154,15 +155,19 @@ contains
       end do
    end subroutine print_conicity
 
-   !> Wheel profile y (mm) of the tip-most point of the flange's steepest part: between the
-   !> tape circle (y = 0) and the flange tip (the largest z), the segment nearest the tip whose
-   !> slope is within 0.5° of the steepest. A contact beyond it (towards the tip) is one the
-   !> wheel climbs to: its contact angle falls again (Nadal).
-   pure real(wp) function flange_steepest(wheel) result(y_s)
-      type(profile_type), intent(in) :: wheel
+   !> Wheel profile y (mm, the profile's own coordinates, as the table's wheel_y) of the
+   !> tip-most point of the flange's steepest part: between the tape circle and the flange tip
+   !> (the largest z), the segment nearest the tip whose slope is within 0.5° of the steepest.
+   !> A contact beyond it (towards the tip) is one the wheel climbs to: its contact angle falls
+   !> again (Nadal). The search runs with the tape circle at y = 0 (a MiniProf wheel's origin is
+   !> its flange back).
+   pure real(wp) function flange_steepest(profile) result(y_s)
+      type(profile_type), intent(in) :: profile
       real(wp), parameter :: tolerance = 0.5_wp*pi/180.0_wp
+      type(profile_type) :: wheel
       real(wp) :: y_tip, angle, steepest
       integer :: i
+      wheel = tape_circle_origin(profile)
       y_tip = wheel%y(maxloc(wheel%z, 1))
       steepest = 0.0_wp
       do i = 1, size(wheel%y) - 1
@@ -177,6 +182,7 @@ contains
          angle = atan2(abs(wheel%z(i + 1) - wheel%z(i)), abs(wheel%y(i + 1) - wheel%y(i)))
          if (angle >= steepest - tolerance) y_s = min(y_s, min(wheel%y(i), wheel%y(i + 1)))
       end do
+      y_s = y_s + (profile%y(1) - wheel%y(1))
    contains
       pure logical function in_flange(i)
          integer, intent(in) :: i
