@@ -41,7 +41,8 @@ contains
          new_unittest('two_slope_conicity_exact', test_two_slope), &
          new_unittest('s1002_uic60_symmetry_and_bounds', test_s1002_bounds), &
          new_unittest('manchester_files_agree', test_manchester_files), &
-         new_unittest('program_tables', test_program)]
+         new_unittest('program_tables', test_program), &
+         new_unittest('climbing_note_miniprof_wheel', test_climbing_miniprof)]
    end subroutine collect_wheelset_geometry
 
    ! ------------------------------------------------------------------------------------------
@@ -481,6 +482,31 @@ contains
       call expect_in(error, file_text(dir//'/err.txt'), 'the head looks inclined by about '// &
          '1:40 already', 'the profile note of run')
    end subroutine test_program
+
+   !> The flange-climbing note of `geometry --wheelset` on a measured MiniProf wheel, whose
+   !> profile coordinates start at the flange back (the tape circle at 70 mm): the same note
+   !> at the same shift on both sides (external data: the measured pair).
+   subroutine test_climbing_miniprof(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, wheel, rail, text
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      wheel = external_file('profiles/Car7216_0001r.whl', error, absolute=.true.)
+      if (allocated(error)) return
+      rail = external_file('profiles/avg_HR.BAN', error, absolute=.true.)
+      if (allocated(error)) return
+      dir = scratch_directory('wheelset_miniprof')
+      stat = run_program(dir, 'geometry -q --wheelset -12,12,0.5 --set profiles%wheel='// &
+         wheel//' --set profiles%rail='//rail//' --set track%rail_canted=.true.')
+      call check(error, stat, 0, message='measured pair: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/out.txt')
+      call expect_in(error, text, '# note: from y = 5.500 mm the right wheel touches its '// &
+         'flange beyond', 'right wheel, MiniProf coordinates')
+      if (allocated(error)) return
+      call expect_in(error, text, '# note: from y = -5.500 mm the left wheel touches its '// &
+         'flange beyond', 'left wheel, MiniProf coordinates')
+   end subroutine test_climbing_miniprof
 
    !> The shifts of a table.
    pure function shifts_of(table) result(y)
