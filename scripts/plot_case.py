@@ -369,8 +369,10 @@ def plot_geometry(f, group, patch, title, out):
     g = None
     if group is not None and f"patch_{patch}/geometry" in group:
         g = group[f"patch_{patch}/geometry"]
+        title += f", case {int(group.name.split('/')[-1])}, patch {patch}"
     elif f"geometry/patch_{patch}" in f:
         g = f[f"geometry/patch_{patch}"]
+        title += f", patch {patch} (the geometry every case shares)"
     if g is None or "y" not in g:
         return False
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.5))
