@@ -3,7 +3,7 @@
 !> 5 numerical failure, 6 no contact).
 program shcontact_main
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use shcontact, only: shcontact_version, error_type, h5_skip_exit_cleanup
+   use shcontact, only: shcontact_version, error_type, h5_skip_exit_cleanup, stat_usage
    use shcontact_app_cli, only: cli_type, parse_command_line
    use shcontact_app_help, only: usage_text, command_help
    use shcontact_app_commands, only: run_command, merge_command, geometry_command, report_error
@@ -19,7 +19,9 @@ program shcontact_main
    call parse_command_line(cli, error)
    if (allocated(error)) then
       status = report_error(error)
-      write (error_unit, '(a)') usage_text()
+      ! The usage text for a usage error; an invalid value (--set X without '=') gets its one
+      ! line, as the same override read from a case file.
+      if (error%stat == stat_usage) write (error_unit, '(a)') usage_text()
       stop status, quiet = .true.
    end if
    if (cli%help) then

@@ -5,7 +5,6 @@ module shcontact_app_wheelset
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
-   use shcontact_profile_points, only: tape_circle_origin
    use shcontact_core_error, only: error_type
    use shcontact_core_strings, only: str_int, str_format
    use shcontact, only: case_config_type, run_setup_type, prepare_run, wheelset_contact_type, &
@@ -53,7 +52,7 @@ contains
          return
       end if
       if (.not. cli%quiet) call print_profile_notes(config)
-      steepest = flange_steepest(setup%wheel)
+      steepest = flange_steepest(setup%wheel, setup%prepared%y_tape)
       call put_line('# wheelset contact geometry: wheel '// &
          trim(config%profiles%wheel)//', rail '//trim(config%profiles%rail)//'; gauge '// &
          str_format(setup%prepared%track%gauge, '(f0.2)')//' mm, flange-back distance '// &
@@ -159,15 +158,18 @@ contains
    !> tip-most point of the flange's steepest part: between the tape circle and the flange tip
    !> (the largest z), the segment nearest the tip whose slope is within 0.5° of the steepest.
    !> A contact beyond it (towards the tip) is one the wheel climbs to: its contact angle falls
-   !> again (Nadal). The search runs with the tape circle at y = 0 (a MiniProf wheel's origin is
-   !> its flange back).
-   pure real(wp) function flange_steepest(profile) result(y_s)
+   !> again (Nadal). The search runs with the tape circle at y = 0: the profile is moved by the
+   !> tape circle's y in its own coordinates as the solver places it (`y_tape`: a MiniProf
+   !> wheel's origin, or a file's with flange_back_position = 0, is its flange back).
+   pure real(wp) function flange_steepest(profile, y_tape) result(y_s)
       type(profile_type), intent(in) :: profile
+      real(wp), intent(in) :: y_tape
       real(wp), parameter :: tolerance = 0.5_wp*pi/180.0_wp
       type(profile_type) :: wheel
       real(wp) :: y_tip, angle, steepest
       integer :: i
-      wheel = tape_circle_origin(profile)
+      wheel = profile
+      wheel%y = profile%y - y_tape
       y_tip = wheel%y(maxloc(wheel%z, 1))
       steepest = 0.0_wp
       do i = 1, size(wheel%y) - 1
@@ -182,7 +184,7 @@ contains
          angle = atan2(abs(wheel%z(i + 1) - wheel%z(i)), abs(wheel%y(i + 1) - wheel%y(i)))
          if (angle >= steepest - tolerance) y_s = min(y_s, min(wheel%y(i), wheel%y(i + 1)))
       end do
-      y_s = y_s + (profile%y(1) - wheel%y(1))
+      y_s = y_s + y_tape
    contains
       pure logical function in_flange(i)
          integer, intent(in) :: i

@@ -535,8 +535,10 @@ def open_result(path, what="file"):
         sys.exit(f"plot_case: {path}: no such file")
     try:
         f = h5py.File(path, "r")
-    except OSError:
-        sys.exit(f"plot_case: {path} is not an HDF5 file (not a shcontact result file)")
+    except OSError as exc:
+        if "signature" in str(exc):
+            sys.exit(f"plot_case: {path} is not an HDF5 file (not a shcontact result file)")
+        sys.exit(f"plot_case: cannot open {path}: {exc}")
     if text(f.attrs.get("software", b"")) != "shcontact" or "summary" not in f:
         f.close()
         sys.exit(f"plot_case: {path} is not a shcontact result file")

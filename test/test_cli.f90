@@ -355,6 +355,9 @@ contains
       call expect_in(error, err, 'command line --set position%t_y: expected '// &
          'group%variable=value', 'run --set position%t_y 3')
       if (allocated(error)) return
+      call check(error, index(err, 'Usage:') == 0, message='the usage text after an invalid '// &
+         'override: '//err)
+      if (allocated(error)) return
       ! The same status and words as an override without its group.
       call run_expect(error, dir, 'run --set t_y=3', 2, out, err)
       if (allocated(error)) return

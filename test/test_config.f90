@@ -380,6 +380,13 @@ contains
       p = c%case_point(8)
       call check(error, p%nu_x == 2.0e-3_wp*7/19, message='not a short decimal: '// &
          format_real(p%nu_x))
+      if (allocated(error)) return
+      ! A point that should be 0 (−2.8 + 4.2·2/3 = −4.4e-16).
+      call load_valid('', [character(len=60) :: 'sweep%t_y=-2.8,1.4', 'sweep%t_y_points=4'], &
+         c, error)
+      if (allocated(error)) return
+      p = c%case_point(3)
+      call check(error, p%t_y == 0.0_wp, message='t_y 0 exactly: '//format_real(p%t_y))
    end subroutine test_sweep_grid
 
    subroutine test_sweep_list(error)

@@ -8,7 +8,7 @@ module test_kinematic_balance
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use test_external_data, only: external_file
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: lib_error => error_type, stat_no_contact
+   use shcontact_core_error, only: lib_error => error_type, stat_no_contact, stat_invalid_input
    use shcontact_core_material, only: material_type
    use shcontact_geometry_kinematics, only: wheelset_state_type, pure_rolling_pitch_rate
    use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
@@ -372,6 +372,17 @@ contains
       end do
       call check(error, carried(result) < f_z .and. carried(result) < normal_part, &
          'the tangential forces lift the wheel at the best state')
+      if (allocated(error)) return
+      ! A vertical position the user prescribes whose normal force passes the largest load
+      ! (5 mm at Y_WS = 0: 31 MN) is refused in the kinematic call too, as in solve(); the
+      ! balance's own trial positions are not (the climbing status above).
+      call solver%solve_kinematic(wheelset_state_type(y_ws=0.0_wp, v_forward=speed, &
+         pitch_rate=pure_rolling_pitch_rate(speed, r_nom)), &
+         contact_load_type(load_vertical_position, 5.0_wp), result, err)
+      call check(error, allocated(err), 'vertical position 5 mm accepted')
+      if (allocated(error)) return
+      call check(error, err%stat == stat_invalid_input .and. index(err%message, &
+         'vertical position 5 mm gives the normal force') > 0, 'the reason: '//err%message)
    end subroutine test_climbing
 
    !> State i of the benchmark's flange trajectory (examples/bench/bench_moving.f90's

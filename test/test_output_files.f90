@@ -799,7 +799,7 @@ contains
       call check(error, stat, 2, message='merge of shards with another profile: '// &
          file_text(dir//'/err.txt'))
       if (allocated(error)) return
-      call expect_in(error, file_text(dir//'/err.txt'), 'was solved with other profiles', &
+      call expect_in(error, file_text(dir//'/err.txt'), 'was solved with other profile points', &
          'merge of shards with another profile')
       if (allocated(error)) return
       call check(error, .not. file_exists(dir//'/m.h5'), message='no merged file')

@@ -530,10 +530,24 @@ contains
       if (allocated(error)) return
       call expect_failure(error, dir, 'run --set profiles%rail=cut.txt', 2, &
          "cut.txt, line 1334: the file ends in the middle of a line: its last number "// &
-         "'3.75000000' is shorter than the 21 characters of the lines before")
+         "'3.75000000' has 8 digit(s) after the decimal point and no exponent, the lines "// &
+         "before 14 and an exponent")
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), 'if it is complete, end its last '// &
          'line with a line break', 'the way to accept a complete file')
+      if (allocated(error)) return
+      ! A complete fixed-decimal file whose last number has one integer digit fewer than the
+      ! lines before (10.1183, then 9.9187) and no final line end is read (the field's width
+      ! refused it in the first version of the check).
+      call write_lines(dir//'/f4.awk', [character(len=40) :: '/^#/ {print; next}', &
+         '{printf "%.4f %.4f\n", $1, $2}'])
+      call shell('cd '//dir//' && awk -f f4.awk prof/S1002.txt | head -n 1598 | head -c -1 '// &
+         "> s4.txt && tail -c 7 s4.txt | grep -q '^ 9.9187$'", stat)
+      call check(error, stat, 0, message='the fixed-decimal file ends in 9.9187')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run -q --no-output --set profiles%wheel=s4.txt')
+      call check(error, stat, 0, message='a complete fixed-decimal file: '// &
+         file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_cut_off
 

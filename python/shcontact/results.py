@@ -58,7 +58,11 @@ class ResultFile:
         self.path = path
         try:
             f = self._open()
-        except OSError as exc:  # h5py's "file signature not found" for a file that is not HDF5
+        except OSError as exc:
+            # h5py's "file signature not found" for a file that is not HDF5; a lock or a
+            # permission error stays what it is.
+            if "signature" not in str(exc):
+                raise
             raise ValueError(f"shcontact: '{path}' is not an HDF5 file (not a shcontact result "
                              "file)") from exc
         with f:

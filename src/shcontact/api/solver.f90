@@ -301,6 +301,9 @@ contains
             return
          end if
       end if
+      if (load%mode == load_vertical_position) call check_prescribed_approach( &
+         'vertical position', load%value, self%cache%normal(1:self%cache%n_loaded), error)
+      if (allocated(error)) return
       if (present(fields)) then
          options%fields = .true.
          call kinematic_tangential(self%cache, local, options, error)

@@ -193,8 +193,8 @@ contains
             end if
             if (.not. same) then
                call fatal_error(error, 'merge: "'//inputs(f)%text//'" was solved with other '// &
-                  'profiles than "'//inputs(1)%text//'" (the same file names, other points in '// &
-                  '/input/profiles: a file changed between the shards); solve them again with '// &
+                  'profile points than "'//inputs(1)%text//'" (/input/profiles differ: another '// &
+                  'profile file, or a file changed between the shards); solve them again with '// &
                   'one set of profile files', stat_invalid_input)
                return
             end if

@@ -102,33 +102,59 @@ contains
    end subroutine read_point
 
    !> A plain file cut off while it was written: its last line (`last`, line `il`) has no line
-   !> end and its last number is shorter than on the data lines before it (`before`, the
-   !> closest last), which all have the same number of fields and the same width of their last
-   !> field: `1.40107201288515E-002` cut to `1.401072` reads as 1.4 mm instead of 0.014 mm.
-   !> Refused with a message that says how to accept a complete file. Needs two lines before.
+   !> end and its last number has fewer digits after the decimal point, or no exponent, where
+   !> the same field on the data lines before it (`before`, the closest last), which all have
+   !> the same number of fields, has the same form with more: `1.40107201288515E-002` cut to
+   !> `1.401072` reads as 1.4 mm instead of 0.014 mm. Sign and integer digits do not count (a
+   !> fixed-decimal file going from `10.1183` to `9.9187` is complete). Refused with a message
+   !> that says how to accept a complete file. Needs two lines before.
    pure subroutine check_cut_off(filename, il, last, before, error)
       character(len=*), intent(in) :: filename, last
       integer, intent(in) :: il
       type(text_line), intent(in) :: before(:)
       type(error_type), allocatable, intent(out) :: error
       type(text_line), allocatable :: tokens(:), other(:)
-      integer :: k, width
+      integer :: k, decimals, d
+      logical :: exponent, e
       if (size(before) < 2) return
       tokens = split_tokens(last)
       if (size(tokens) < 2) return
-      width = -1
+      decimals = -1
+      exponent = .false.
       do k = 1, size(before)
          other = split_tokens(before(k)%text)
          if (size(other) /= size(tokens)) return
-         if (width < 0) width = len(other(size(other))%text)
-         if (len(other(size(other))%text) /= width) return
+         call number_form(other(size(other))%text, d, e)
+         if (k == 1) then
+            decimals = d
+            exponent = e
+         else if (d /= decimals .or. (e .neqv. exponent)) then
+            return
+         end if
       end do
-      if (len(tokens(size(tokens))%text) >= width) return
+      call number_form(tokens(size(tokens))%text, d, e)
+      if (d >= decimals .and. (e .eqv. exponent)) return
       call fatal_error(error, at(filename, il)//"the file ends in the middle of a line: its "// &
-         "last number '"//tokens(size(tokens))%text//"' is shorter than the "// &
-         str_int(width)//" characters of the lines before and has no line end, as in a file "// &
-         "cut off while it was written; check the file (if it is complete, end its last "// &
-         "line with a line break)", stat_invalid_input)
+         "last number '"//tokens(size(tokens))%text//"' has "//str_int(d)//" digit(s) after "// &
+         "the decimal point"//trim(merge(' and no exponent', '                ', exponent .and. &
+         .not. e))//", the lines before "//str_int(decimals)//trim(merge(' and an exponent', &
+         '                ', exponent))//", and it has no line end, as in a file cut off "// &
+         "while it was written; check the file (if it is complete, end its last line with a "// &
+         "line break)", stat_invalid_input)
+   contains
+      !> Digits after the decimal point (0 without one) and whether an exponent follows.
+      pure subroutine number_form(text, digits, has_exponent)
+         character(len=*), intent(in) :: text
+         integer, intent(out) :: digits
+         logical, intent(out) :: has_exponent
+         integer :: dot, mark
+         mark = scan(text, 'eEdD')
+         has_exponent = mark > 0
+         if (mark == 0) mark = len(text) + 1
+         dot = index(text(1:mark - 1), '.')
+         digits = 0
+         if (dot > 0) digits = verify(text(dot + 1:mark - 1)//'x', '0123456789') - 1
+      end subroutine number_form
    end subroutine check_cut_off
 
    !> A data line written with decimal commas (a German or French locale): no decimal point,

@@ -115,7 +115,8 @@ contains
          else
             step = (self%given(2) - self%given(1))/real(self%points - 1, wp)
             axis_value = decimal_value(self%given(1) + (self%given(2) - self%given(1))* &
-               real(i - 1, wp)/real(self%points - 1, wp), step)
+               real(i - 1, wp)/real(self%points - 1, wp), step, &
+               max(abs(self%given(1)), abs(self%given(2))))
          end if
       else
          axis_value = self%given(i)
@@ -123,10 +124,12 @@ contains
    end function axis_value
 
    !> v, or the decimal with at most six digits below the decade of `step` nearest to v when
-   !> that lies within 4 ulps of v (the rounding of the range's arithmetic, not a value of its
-   !> own): v·10ᵉ rounded to an integer and divided by 10ᵉ, both exact for e ≤ 22.
-   pure real(wp) function decimal_value(v, step) result(x)
-      real(wp), intent(in) :: v, step
+   !> that lies within 4 ulps of the range's largest end `size` (the rounding of the range's
+   !> arithmetic, not a value of its own; relative to the range, so that a point that should
+   !> be 0 and came out as 4.4e-16 is 0): v·10ᵉ rounded to an integer and divided by 10ᵉ, both
+   !> exact for e ≤ 22.
+   pure real(wp) function decimal_value(v, step, size) result(x)
+      real(wp), intent(in) :: v, step, size
       real(wp) :: scale
       integer :: e
       x = v
@@ -136,7 +139,7 @@ contains
       scale = 10.0_wp**e
       if (.not. (abs(v)*scale < 2.0_wp**52)) return
       x = anint(v*scale)/scale
-      if (abs(x - v) > 4.0_wp*spacing(v)) x = v
+      if (abs(x - v) > 4.0_wp*spacing(max(abs(v), size))) x = v
    end function decimal_value
 
    !> Number of cases: the product of the axis sizes ('grid') or the common length ('list').
