@@ -213,6 +213,8 @@ def case_title(f, group, patch, base):
     for key, label in (("nu_x", r"$\nu_x$"), ("nu_y", r"$\nu_y$"), ("phi", r"$\varphi$")):
         if key in numbers:
             line2.append(f"{label} = {numbers[key][1]}" + (" rad/mm" if key == "phi" else ""))
+    if "friction" in c:
+        line2.append(rf"$\mu$ = {number(c['friction']):g}")
     if "bound" in c:
         line2.append(f"bound {c['bound']}")
     if "spin_model" in c:
