@@ -109,7 +109,8 @@ contains
          'loop)'//nl//nl// &
          'Progress goes to stderr: a bar on a terminal, else a line (cases done, rate, ETA)'// &
          nl// &
-         'every 10 % of the cases or 10 s.'
+         'when the solved cases cross a tenth of the run, or after 10 s. The ETA is the '// &
+         'solving''s;'//nl//'a run with element fields then writes its output (longer).'
    end function run_help
 
    function merge_help() result(text)

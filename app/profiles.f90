@@ -9,7 +9,7 @@ module shcontact_app_profiles
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_io, stat_usage
    use shcontact_core_strings, only: str_int
-   use shcontact_core_files, only: make_directory, join_path
+   use shcontact_core_files, only: make_directory, join_path, canonical_path
    use shcontact, only: profile_type, profile_kind_wheel, profile_kind_rail, &
       profile_file_format, load_profile => load_profile_file, write_profile_plain, &
       write_builtin_profiles, written_builtins
@@ -126,9 +126,11 @@ contains
          'units      '//units//nl// &
          'checks     passed (point order, duplicates, loops, arc length, spikes, running '// &
          'surface)'
+      ! The path a case file anywhere reads it by (a relative name is taken from the case
+      ! file's folder, not from the working directory).
       if (len(cli%output) > 0) text = text//nl//'written    '//cli%output// &
          ' (y z in mm, z down; a case reads it as '//kind_name(cleaned%kind)//' = '''// &
-         cli%output//''')'
+         canonical_path(cli%output)//''')'
       if (len(cli%output) > 0 .and. cleaned%origin_at_flange_back) text = text//nl// &
          '           y moved by -70 mm: origin from the flange back (MiniProf) to the tape '// &
          'circle, where a plain file has it'

@@ -692,6 +692,17 @@ contains
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/geometry.txt'), '# patch 1 of', 'geometry table')
       if (allocated(error)) return
+      ! The cleaned profile's hint names it by its absolute path: a case file elsewhere reads a
+      ! relative name from its own folder (`-o sub/w.txt` hinted wheel = 'sub/w.txt').
+      call shell('mkdir -p '//dir//'/sub')
+      stat = run_program(dir, 'profiles built-in/S1002.txt -o sub/w.txt')
+      call check(error, stat, 0, message='profiles -o: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), "a case reads it as wheel = '/", &
+         'the absolute path in the hint')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/out.txt'), "/sub/w.txt')", 'the file in the hint')
+      if (allocated(error)) return
       stat = run_program(dir, 'profiles')
       call check(error, stat, 1, message='profiles without --write')
       call shell('rm -rf '//dir)
