@@ -482,18 +482,30 @@ contains
       call shell('rm -rf '//dir)
    end subroutine test_spike
 
+   !> A scratch folder (tag) holding the built-in profiles as files, prof/S1002.txt and
+   !> prof/UIC60.txt (`shcontact profiles --write`); false when the program is unavailable (the
+   !> test skipped) or the files could not be written (error set).
+   logical function builtin_profile_folder(tag, dir, error)
+      character(len=*), intent(in) :: tag
+      character(len=:), allocatable, intent(out) :: dir
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      builtin_profile_folder = .false.
+      dir = ''
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory(tag)
+      stat = run_program(dir, 'profiles --write prof -q')
+      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
+      builtin_profile_folder = .not. allocated(error)
+   end function builtin_profile_folder
+
    !> One point of the rail top raised by 0.05 mm (0.3 mm: the same) was refused as "not on its
    !> running surface; are the y and z columns swapped, or the profile turned?": the user was
    !> sent the wrong way. Now the point's line is named as a single point off the profile.
    subroutine test_top_outlier(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir
-      integer :: stat
-      if (unavailable(error, .false.)) return
-      dir = scratch_directory('rob_topoutlier')
-      stat = run_program(dir, 'profiles --write prof -q')
-      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
-      if (allocated(error)) return
+      if (.not. builtin_profile_folder('rob_topoutlier', dir, error)) return
       call transform_points(dir//'/prof/UIC60.txt', dir//'/bump.txt', 700, 700, &
          'printf "%s %.15E\n", $1, $2 - 0.05')
       call expect_failure(error, dir, 'run --set profiles%rail=bump.txt', 2, &
@@ -516,11 +528,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir
       integer :: stat
-      if (unavailable(error, .false.)) return
-      dir = scratch_directory('rob_cutoff')
-      stat = run_program(dir, 'profiles --write prof -q')
-      call check(error, stat, 0, message='profiles --write: '//file_text(dir//'/err.txt'))
-      if (allocated(error)) return
+      if (.not. builtin_profile_folder('rob_cutoff', dir, error)) return
       ! The file without its final line end, and the same cut 11 characters earlier.
       call shell('cd '//dir//' && head -c -1 prof/UIC60.txt > whole.txt && '// &
          'head -c -12 prof/UIC60.txt > cut.txt')
