@@ -578,6 +578,10 @@ contains
       call expect_in(error, file_text(dir//'/csv2.txt'), 'load too large', &
          'a failed case''s message in the CSV report')
       if (allocated(error)) return
+      ! Every JSON line has the same keys: a failed case's results are null.
+      call expect_in(error, file_text(dir//'/json2.txt'), '"fx":null,', &
+         'a failed case''s results as null in the JSON report')
+      if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_report_lines_threads
 

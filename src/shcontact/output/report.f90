@@ -209,13 +209,15 @@ contains
             if (reports_case_input(config, ia)) line = line//',"'//trim(sweep_axis_names(ia))// &
                '":'//trim(input_buffer(p, ia, .true., .false.))
          end do
-         if (ok) then
-            do k = 1, n_summary_columns
-               if (.not. summary_column_used(k, config%is_kinematic())) cycle
-               line = line//',"'//trim(summary_columns(1, k))//'":'
+         do k = 1, n_summary_columns
+            if (.not. summary_column_used(k, config%is_kinematic())) cycle
+            line = line//',"'//trim(summary_columns(1, k))//'":'
+            if (ok) then
                call append_column(line, summary, k, .true.)
-            end do
-         end if
+            else
+               line = line//'null'
+            end if
+         end do
          if (present(message)) line = line//',"message":'//json_string(message)
          line = line//'}'
       case default
