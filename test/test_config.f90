@@ -15,6 +15,8 @@ module test_config
    use shcontact_tangential_options, only: method_fastsim_sh, bound_clipped, bound_parabolic, &
       bound_weighted, spin_uniform, spin_additive
    use shcontact_core_files, only: delete_file, process_id
+   use shcontact_input_config_types, only: contact_options_of
+   use shcontact_geometry_prepared, only: contact_options_type
    implicit none
    private
    public :: collect_config
@@ -210,7 +212,8 @@ contains
 
    subroutine test_overrides(error)
       type(error_type), allocatable, intent(out) :: error
-      type(case_config_type) :: c
+      type(case_config_type) :: c, default_config
+      type(contact_options_type) :: options, defaults
       call load_valid('', [character(len=40) :: 'creepage%nu_x=1e-3', &
          'tangential%bound=parabolic', 'sweep%phi=0,1e-3', 'sweep%phi=0,2e-3,3e-3', &
          'output%fields=pressure,state'], c, error)
@@ -229,6 +232,19 @@ contains
       if (allocated(error)) return
       call expect_override_error(error, 'wrong type in an override', [character(len=40) :: &
          'creepage%nu_x=abc'], [character(len=40) :: '--set creepage%nu_x=abc', 'real number'])
+      if (allocated(error)) return
+      ! The strip tables: the option reaches the contact search; the exact slide needs planar
+      ! tables (it slides the wheel along their plane).
+      call load_valid('', [character(len=40) :: 'normal%strip_tables=conformal'], c, error)
+      if (allocated(error)) return
+      options = contact_options_of(c)
+      defaults = contact_options_of(default_config)
+      call check(error, options%conformal_tables .and. .not. defaults%conformal_tables, &
+         message='strip_tables')
+      if (allocated(error)) return
+      call expect_override_error(error, 'exact slide on conformal tables', [character(len=40) :: &
+         'normal%strip_tables=conformal', 'normal%slide=exact'], [character(len=40) :: &
+         "strip_tables = 'planar'", '--set normal%slide=exact'])
    end subroutine test_overrides
 
    subroutine test_unknown_variable(error)

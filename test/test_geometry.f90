@@ -3,6 +3,7 @@
 module test_geometry
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed, skip_test
    use shcontact_core_kinds, only: wp, i8
+   use shcontact_core_strings, only: str_real
    use shcontact_core_error, only: lib_error => error_type, stat_no_contact, stat_invalid_input
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
    use shcontact_profile_spline, only: profile_spline_type
@@ -17,7 +18,7 @@ module test_geometry
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       prepare_profiles, find_contact_patches, positioned_profiles, write_geometry_table, &
       contact_patches_type, extract_patch, prepare_wheel
-   use shcontact_geometry_patch, only: patch_geometry_type
+   use shcontact_geometry_patch, only: patch_geometry_type, geometry_sample_type
    use shcontact_geometry_prepared, only: sample_block
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw
    use test_external_data, only: external_file
@@ -53,6 +54,7 @@ contains
          new_unittest('cant_equals_precanted_rail', test_cant_equivalence), &
          new_unittest('circle_on_plane', test_circle_on_plane), &
          new_unittest('circle_on_circle', test_circle_on_circle), &
+         new_unittest('conformal_table_circle_on_circle', test_conformal_circles), &
          new_unittest('cone_on_cylinder', test_cone_on_cylinder), &
          new_unittest('roll_about_wheelset_centre', test_roll), &
          new_unittest('left_wheel_mirrors_right', test_left_mirror), &
@@ -389,6 +391,68 @@ contains
          end do
       end associate
    end subroutine test_circle_on_circle
+
+   !> The conformal strip tables (`&normal strip_tables = 'conformal'`) of the circles of
+   !> [[test_circle_on_circle]]: y is the rail's arc length s from the contact point, and the gap
+   !> is measured along the rail's normal there, which passes through the rail circle's centre at
+   !> the angle φ = s/r₂ from the line of centres (distance D = r₁ + r₂ + g₀): the wheel circle
+   !> lies at t = D cos φ − √(r₁² − D² sin² φ) from the rail's centre, so g(s) = t − r₂ − g₀
+   !> (within 0.5 mm of gap; the planar table's differs by more than 1e-3 mm). B(0) is
+   !> (1/r₁ + 1/r₂)/2 as in the plane, and the wheel's angle at the point on the normal is γ₀
+   !> less the turn of the wheel circle's radius to that point.
+   subroutine test_conformal_circles(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(patch_geometry_type), allocatable :: patches(:), planar(:)
+      type(wheelset_position_type) :: position
+      real(wp), parameter :: r1 = 60.0_wp, r2 = 20.0_wp
+      real(wp) :: phi, d, t, g, most, wy, wz, gamma_w
+      type(geometry_sample_type) :: sample
+      integer :: i
+
+      position%y_ws = 1.0_wp
+      call patches_for(circle_wheel(r1, 30.0_wp, 601), arc_rail(r2, -1.6_wp, 1.4_wp, 351), &
+         upright_track(), position, patches, error, contact_options_type(conformal_tables=.true.))
+      if (allocated(error)) return
+      call patches_for(circle_wheel(r1, 30.0_wp, 601), arc_rail(r2, -1.6_wp, 1.4_wp, 351), &
+         upright_track(), position, planar, error)
+      if (allocated(error)) return
+      call check(error, size(patches), 1, message='one patch')
+      if (allocated(error)) return
+      associate (p => patches(1), q => planar(1))
+         call check(error, p%conformal .and. .not. q%conformal, message='tables marked')
+         if (allocated(error)) return
+         call check(error, p%gamma0, q%gamma0, thr=1.0e-12_wp, message='the same reference point')
+         if (allocated(error)) return
+         call check(error, p%curv_b(minloc(abs(p%y), 1)), 0.5_wp*(1/r1 + 1/r2), rel=.true., &
+            thr=1.0e-5_wp, message='B(0)')
+         if (allocated(error)) return
+         d = r1 + r2 + p%gap0
+         most = 0.0_wp
+         do i = 1, p%size(), 7
+            phi = p%y(i)/r2
+            if (abs(d*sin(phi)) >= r1) cycle
+            t = d*cos(phi) - sqrt(r1**2 - (d*sin(phi))**2)
+            g = t - r2 - p%gap0
+            ! Within the reach of any load. The spline's parameter is the polygon's chord length,
+            ! 3e-6 shorter than the circle's arc: φ is that much off at s, g by up to 3e-6 mm.
+            if (g > 0.5_wp) cycle
+            call check(error, p%gap(i), max(g, 0.0_wp), thr=1.0e-5_wp, message='gap along the '// &
+               'rail normal at s = '//str_real(p%y(i)))
+            if (allocated(error)) return
+            ! The wheel point on that normal, from the wheel circle's centre: its outward normal
+            ! makes the contact angle (the line of centres is at γ₀).
+            wy = t*sin(phi)
+            wz = t*cos(phi) - d
+            gamma_w = p%gamma0 - atan2(wy, -wz)
+            call check(error, p%gamma(i), gamma_w, thr=1.0e-6_wp, message='wheel angle at s = '// &
+               str_real(p%y(i)))
+            if (allocated(error)) return
+            sample = q%sample(p%y(i))
+            most = max(most, abs(p%gap(i) - sample%gap))
+         end do
+         call check(error, most > 1.0e-3_wp, message='the planar table is another table')
+      end associate
+   end subroutine test_conformal_circles
 
    !> A conical wheel (slope tan α, α = −0.05) on a cylindrical rail head (R = 80): the contact
    !> is where the rail's slope is tan α, γ(y) = α on every strip, δr(y) = y·sin α exactly

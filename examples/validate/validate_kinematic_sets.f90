@@ -16,7 +16,7 @@ module validate_kinematic_sets
    use shcontact, only: wp, error_type, fatal_error, stat_invalid_input, track_type, &
       material_type, contact_solver_type, contact_load_type, contact_result_type, &
       load_vertical_force, wheelset_state_type, normal_options_type, new_normal_options, &
-      tangential_options_type
+      tangential_options_type, contact_options_type
    use shcontact_tangential_options, only: parse_correction
    use validate_csv, only: csv_table_type, read_csv, column_index, csv_writer_type
    use validate_tangential, only: error_stats_type, error_stats
@@ -95,11 +95,10 @@ contains
    subroutine run_kinematic_sets(out_dir, error)
       character(len=*), intent(in) :: out_dir
       type(error_type), allocatable, intent(out) :: error
-      type(set_patches_type) :: s(n_kinematic_sets)
+      type(set_patches_type) :: s(n_kinematic_sets), conformal(n_kinematic_sets)
       logical :: there(n_kinematic_sets)
       type(set_patches_type) :: alt
-      type(csv_writer_type) :: out
-      integer :: k, i
+      integer :: k
 
       do k = 1, n_kinematic_sets
          inquire (file=trim(kinematic_sets(k)%file), exist=there(k))
@@ -113,10 +112,32 @@ contains
          call solve_kinematic_set(kinematic_sets(k), alt, error, correction='none')
          if (allocated(error)) return
          call pool_set(kinematic_sets(k), alt, 3)
+         call solve_kinematic_set(kinematic_sets(k), conformal(k), error, conformal_tables=.true.)
+         if (allocated(error)) return
          write (output_unit, '(a,i0,a,i0,a)') 'kinematic set '//trim(kinematic_sets(k)%file)// &
             ': ', s(k)%n_cases, ' cases, ', s(k)%n, ' CONTACT patches'
       end do
-      call out%open(out_dir//'kinematic_sets.csv', 'set,case,y_ws_mm,yaw_rad,xi_k,eta_k,'// &
+      call write_csv(out_dir//'kinematic_sets.csv', s, there, error)
+      if (allocated(error)) return
+      call write_markdown(out_dir//'kinematic_sets.md', s, there, error)
+      if (allocated(error)) return
+      ! The option `&normal strip_tables = 'conformal'` (doc/validation.md §6.7, "Conformal
+      ! strip tables").
+      call write_csv(out_dir//'kinematic_sets_conformal_tables.csv', conformal, there, error)
+      if (allocated(error)) return
+      call write_markdown(out_dir//'kinematic_sets_conformal_tables.md', conformal, there, error, &
+         option='with `&normal strip_tables = ''conformal''`')
+   end subroutine run_kinematic_sets
+
+   !> Every CONTACT patch of the sets present and ours beside it, one row each.
+   subroutine write_csv(path, s, there, error)
+      character(len=*), intent(in) :: path
+      type(set_patches_type), intent(in) :: s(:)
+      logical, intent(in) :: there(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(csv_writer_type) :: out
+      integer :: k, i
+      call out%open(path, 'set,case,y_ws_mm,yaw_rad,xi_k,eta_k,'// &
          'omega_k,members,y_ref_mm,y_mm,fx_ref,fx,fy_ref,fy,fn_ref_N,fn_N,pmax_ref_MPa,'// &
          'pmax_MPa,area_ref_mm2,area_mm2,delta_ref_rad,gamma_rad,fy_tr_ref_N,fy_tr_N', error)
       if (allocated(error)) return
@@ -132,8 +153,8 @@ contains
          end do
       end do
       call out%close()
-      call write_markdown(out_dir//'kinematic_sets.md', s, there, error)
-   end subroutine run_kinematic_sets
+   end subroutine write_csv
+
 
    !> The matched patches' errors to the summary of every set, configuration config.
    subroutine pool_set(set, s, config)
@@ -148,11 +169,14 @@ contains
 
    !> Solve one set and compare every CONTACT patch (module text); the defaults, or another
    !> normal reduction or correction.
-   subroutine solve_kinematic_set(set, s, error, reduction, correction)
+   subroutine solve_kinematic_set(set, s, error, reduction, correction, conformal_tables)
       type(kinematic_set_type), intent(in) :: set
       type(set_patches_type), intent(out) :: s
       type(error_type), allocatable, intent(out) :: error
       character(len=*), intent(in), optional :: reduction, correction
+      !> `&normal strip_tables = 'conformal'` (the contact search's conformal_tables).
+      logical, intent(in), optional :: conformal_tables
+      type(contact_options_type) :: contact
       type(normal_options_type) :: normal
       type(tangential_options_type) :: tangential
       type(csv_table_type) :: table
@@ -198,7 +222,8 @@ contains
       if (allocated(error)) return
       if (present(correction)) call parse_correction(correction, tangential%correction, error)
       if (allocated(error)) return
-      call solver%init(trim(set%wheel), trim(set%rail), error, track=track, &
+      if (present(conformal_tables)) contact%conformal_tables = conformal_tables
+      call solver%init(trim(set%wheel), trim(set%rail), error, track=track, contact_options=contact, &
          material=material_type(shear_modulus=82670.0_wp, poisson=0.27_wp, friction=friction), &
          normal_options=normal, tangential_options=tangential)
       if (allocated(error)) return
@@ -310,11 +335,14 @@ contains
    end function number
 
    !> kinematic_sets.md: per set and per (Y_WS, yaw) group, the errors of the matched patches.
-   subroutine write_markdown(path, s, there, error)
+   subroutine write_markdown(path, s, there, error, option)
       character(len=*), intent(in) :: path
       type(set_patches_type), intent(in) :: s(:)
       logical, intent(in) :: there(:)
       type(error_type), allocatable, intent(out) :: error
+      !> The option the sets were solved with, when not the defaults.
+      character(len=*), intent(in), optional :: option
+      character(len=:), allocatable :: solved
       integer :: unit, stat, k, g
       real(wp), allocatable :: keys(:, :)
 
@@ -323,9 +351,12 @@ contains
          call fatal_error(error, path//': cannot be written')
          return
       end if
+      solved = 'the defaults'
+      if (present(option)) solved = option
       write (unit, '(a)') '<!-- written by `fpm run --example shcontact-validate --profile '// &
          'release` (kinematic_sets.csv) -->', '', &
-         'The project''s kinematic exact-theory sets (doc/validation.md §6.7): every CONTACT '// &
+         'The project''s kinematic exact-theory sets (doc/validation.md §6.7), '//solved// &
+         ': every CONTACT '// &
          'patch against our patches nearest to it, joined; f = F/(μF_n) on the rail; max ; '// &
          'P80 of |Δf_x|, |Δf_y|, |ΔF_n|/F_n, |Δp_max|/p_max, |ΔA|/A.', ''
       do k = 1, size(s)

@@ -175,6 +175,9 @@ module shcontact_core_ranges
       1.0e-4_wp, 1.0e-8_wp, 1.0_wp), &
       variable_info_type('normal', 'longitudinal_curvature', k_choice, '', &
       'contact angle of A(y) = cos(gamma)/(2 r_w)'), &
+      variable_info_type('normal', 'strip_tables', k_choice, '', &
+      'strip tables in the plane of the first contact or along the rail (CONTACT''s '// &
+      'planar or conformal approach)'), &
       variable_info_type('normal', 'preset', k_choice, '', &
       'grid and strip tables at once: n_strips, tangential n_elements (unless given), '// &
       'table spacing'), &

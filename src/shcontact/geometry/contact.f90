@@ -54,6 +54,7 @@ module shcontact_geometry_contact
       check_contact_options, prepare_profiles, prepare_wheel, sampling_grid_size, sample_block, &
       box_pad
    use shcontact_geometry_pair, only: normal_pair_type, refine_all, select_candidates, follow, load_reach, &
+      follow_conformal, &
       strip_row, row_count, max_candidates
    implicit none
    private
@@ -216,6 +217,7 @@ contains
          patch%basin_lower = src%basin_lower
          patch%basin_upper = src%basin_upper
          patch%touch_reach = src%touch_reach
+         patch%conformal = src%conformal
          call copy_table(src%y, n, patch%y)
          call copy_table(src%gap, n, patch%gap)
          call copy_table(src%curv_a, n, patch%curv_a)
@@ -639,10 +641,17 @@ contains
       n_max = int(min(prepared%rail%length(), prepared%wheel%length())/h) + 2
       call reserve_rows(patches%left, row_count, n_max)
       call reserve_rows(patches%right, row_count, n_max)
-      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, &
-         patches%right(:, 1:n_max), n_right, basin_right, covered(2), end_gap)
-      call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, &
-         patches%left(:, 1:n_max), n_left, basin_left, covered(1), end_gap)
+      if (prepared%options%conformal_tables) then
+         call follow_conformal(prepared, wheel_map, pair, dir_r, gap0, h, &
+            patches%right(:, 1:n_max), n_right, basin_right, covered(2), end_gap)
+         call follow_conformal(prepared, wheel_map, pair, dir_r, gap0, -h, &
+            patches%left(:, 1:n_max), n_left, basin_left, covered(1), end_gap)
+      else
+         call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, h, &
+            patches%right(:, 1:n_max), n_right, basin_right, covered(2), end_gap)
+         call follow(prepared, rmap, wmap, r0, w0, dir_r, dir_w, pair%theta, gap0, -h, &
+            patches%left(:, 1:n_max), n_left, basin_left, covered(1), end_gap)
+      end if
       if (covered(1) > covered(2)) then
          swap = covered(1)
          covered(1) = covered(2)
@@ -667,6 +676,7 @@ contains
          patch%basin_lower = -basin_left*h
          patch%basin_upper = basin_right*h
          patch%touch_reach = huge(1.0_wp)
+         patch%conformal = prepared%options%conformal_tables
          if (prepared%table_end_by_touch) patch%touch_reach = end_gap
          patch%gap(i0) = 0.0_wp
          patch%y_track = side*pair%y

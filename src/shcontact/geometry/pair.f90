@@ -1,6 +1,7 @@
 !> Point pairs on the wheel and the rail (doc/theory.md §5.3–5.4): the common-normal refinement of
 !> a candidate contact point, and the walk along both profiles in a patch frame that gives the
-!> rows of the strip tables.
+!> rows of the strip tables; or, for conformal tables ([[follow_conformal]]), the walk along the
+!> rail's arc length with the wheel point on each rail normal.
 !>
 !> Both follow a profile from a known point to the next one at a given frame coordinate η.
 !> The table walk goes through the spline intervals in batches ([[walk_points]]): every table
@@ -24,7 +25,7 @@ module shcontact_geometry_pair
    private
 
    public :: normal_pair_type, refine_all, select_candidates, follow, strip_row, row_count, &
-      load_reach
+      load_reach, follow_conformal
    public :: max_candidates
 
    !> Largest number of candidates followed at one position (and of patches found).
@@ -114,11 +115,13 @@ contains
    !> The distance from the rail point at s_r to the wheel along the rail normal, and its
    !> derivative d(gap)/ds_r = −(1 + κ_r·gap)·ζ_w' (ζ_w' the wheel's slope in the frame of the
    !> rail tangent): zero where the two profiles have a common normal.
-   pure subroutine normal_pair(prepared, wheel_map, pair, ok)
+   pure subroutine normal_pair(prepared, wheel_map, pair, ok, wheel)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
       type(normal_pair_type), intent(inout) :: pair
       logical, intent(out) :: ok
+      !> The wheel point in the frame of the rail tangent at the rail point.
+      type(frame_point_type), intent(out), optional :: wheel
       type(spline_point_type) :: q
       type(rigid_map_type) :: frame, wmap
       type(frame_point_type) :: w
@@ -146,6 +149,7 @@ contains
       pair%dgap = -(1.0_wp + kappa*pair%gap)*w%slope
       ! The rail's graph curvature in its own tangent frame is κ_r.
       pair%d2gap = kappa - w%curv
+      if (present(wheel)) wheel = w
    end subroutine normal_pair
 
    !> The common-normal point near a start: a zero of d(gap)/ds_r where the gap has a minimum,
@@ -348,6 +352,88 @@ contains
       s_basin = r0%s
       if (n_basin > 0) s_basin = rows(5, n_basin)
    end subroutine follow
+
+   !> One row of a conformal table: the rail point at arc length pair%s_r, the wheel point on its
+   !> normal (from the pair's last wheel point), the gap along that normal less gap0, and the
+   !> wheel's angle, rolling radius and curvature A there. `ok` false where the wheel is not
+   !> found on the normal or turns back in the rail's local frame.
+   pure subroutine conformal_row(prepared, wheel_map, pair, gap0, row, ok)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(inout) :: pair
+      real(wp), intent(in) :: gap0
+      real(wp), intent(out) :: row(row_count)
+      logical, intent(out) :: ok
+      type(frame_point_type) :: w
+      call normal_pair(prepared, wheel_map, pair, ok, w)
+      if (.not. ok) return
+      row(1) = pair%gap - gap0
+      row(2) = pair%d2gap
+      row(3) = pair%theta + atan(w%slope)
+      row(4) = prepared%track%nominal_radius + w%v - prepared%z_tape
+      row(5) = pair%s_r
+      row(6) = curvature_a(prepared%options%a_reference_normal, cos(pair%theta), &
+         sin(pair%theta), w%slope, row(4))
+      row(7) = tan_gamma(tan(pair%theta), w%slope)
+   end subroutine conformal_row
+
+   !> [[follow]] for a conformal table: the rail followed by its arc length in steps `step`
+   !> (sense dir_r in s for step > 0), each row by [[conformal_row]]; the same basin and end
+   !> rules, the end measured with the conformal tilt (module shcontact_normal_angles).
+   pure subroutine follow_conformal(prepared, wheel_map, pair0, dir_r, gap0, step, rows, &
+         n_rows, n_basin, s_basin, end_gap)
+      type(prepared_profiles_type), intent(in) :: prepared
+      type(rigid_map_type), intent(in) :: wheel_map
+      type(normal_pair_type), intent(in) :: pair0
+      integer, intent(in) :: dir_r
+      real(wp), intent(in) :: gap0, step, end_gap
+      real(wp), intent(out) :: rows(:, :)
+      integer, intent(out) :: n_rows, n_basin
+      real(wp), intent(out) :: s_basin
+      type(normal_pair_type) :: p
+      real(wp) :: top, s_min, s_max, c0
+      integer :: j, j_top
+      logical :: ok, cut
+
+      top = 0.0_wp; j_top = 0
+      cut = .false.
+      n_rows = 0
+      n_basin = 0
+      s_min = prepared%rail%s(1)
+      s_max = prepared%rail%s(prepared%rail%size())
+      c0 = cos(pair0%theta)
+      p = pair0
+      do j = 1, size(rows, 2)
+         p%s_r = pair0%s_r + dir_r*j*step
+         if (p%s_r < s_min .or. p%s_r > s_max) exit
+         call conformal_row(prepared, wheel_map, p, gap0, rows(:, j), ok)
+         if (.not. ok) exit
+         n_rows = j
+         if (.not. cut) then
+            if (rows(1, j) >= top) then
+               top = rows(1, j); j_top = j
+            else if (rows(1, j) < top - prepared%options%merge_gap) then
+               cut = .true.
+               n_basin = j_top
+            end if
+         end if
+         if (conformal_reach(prepared, rows(1, j), gap0, c0, rows(3, j)) > end_gap) exit
+      end do
+      if (.not. cut) n_basin = n_rows
+      s_basin = pair0%s_r
+      if (n_basin > 0) s_basin = rows(5, n_basin)
+   end subroutine follow_conformal
+
+   !> [[table_reach]] for a conformal table: the tilt c = 1 − cos γ/cos γ₀.
+   pure real(wp) function conformal_reach(prepared, gap, gap0, cos_gamma0, gamma) result(t)
+      type(prepared_profiles_type), intent(in) :: prepared
+      real(wp), intent(in) :: gap, gap0, cos_gamma0, gamma
+      real(wp) :: c
+      t = gap
+      if (.not. prepared%table_end_by_touch) return
+      c = 1.0_wp - cos(gamma)/cos_gamma0
+      if (c < 0.0_wp) t = (gap + gap0*c)/(1.0_wp - c)
+   end function conformal_reach
 
    !> What the table end is measured by (mm; the table ends at the first point beyond
    !> table_gap): the gap g itself, or, for the kinematic call's first try

@@ -56,6 +56,9 @@ module shcontact_geometry_patch
       !> a kinematic call's first-try table, ended by the touch approach
       !> (shcontact_geometry_pair's table_reach); huge for a table ended by the gap.
       real(wp) :: touch_reach = huge(1.0_wp)
+      !> Whether y is the rail's arc length and the gap is measured along each point's rail
+      !> normal (a conformal table) rather than in the plane of the reference point.
+      logical :: conformal = .false.
       !> Lateral coordinate of the table points (mm), uniform spacing h, y(i0) = 0.
       real(wp), allocatable :: y(:)
       !> g(y) ≥ 0 (mm).

@@ -51,6 +51,9 @@ module shcontact_geometry_prepared
       real(wp) :: sample_step = 0.05_wp
       !> A(y) with the fixed reference normal, cos γ₀/(2 r_w(y)), instead of the local cos γ(y).
       logical :: a_reference_normal = .false.
+      !> Strip tables along the rail's arc length, gaps along each point's rail normal
+      !> (conformal tables) instead of a plane through the first contact.
+      logical :: conformal_tables = .false.
       !> Search with the original (slow) algorithms: every table point and every common-normal
       !> step solved from scratch by bracketing. For tests of the fast search, which gives the
       !> same patches and tables to round-off.

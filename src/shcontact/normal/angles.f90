@@ -9,7 +9,7 @@ module shcontact_normal_angles
    implicit none
    private
 
-   public :: tilt_terms, vertical_tilt, interface_angles
+   public :: tilt_terms, vertical_tilt, interface_angles, approach_closure
 
 contains
 
@@ -26,6 +26,13 @@ contains
       integer :: i
       logical :: usable
 
+      if (geometry%conformal) then
+         t0 = cos(gamma0)
+         do i = i1, i2
+            tilt(i - i1 + 1) = 1.0_wp - cos(geometry%gamma(i))/t0
+         end do
+         return
+      end if
       usable = allocated(geometry%tan_gamma)
       if (usable) usable = size(geometry%tan_gamma) >= i2
       if (usable) usable = matches(i1) .and. matches(i2)
@@ -62,6 +69,19 @@ contains
       tilt = tan(gamma0)*tan(gamma - gamma0)
    end function vertical_tilt
 
+   !> 1 − c: the share of the reference point's closure that a vertical translation gives a
+   !> point of contact angle γ, along the table's normal there (plane: 1 − tan γ₀ tan(γ − γ₀);
+   !> conformal table: cos γ/cos γ₀).
+   elemental real(wp) function approach_closure(gamma, gamma0, conformal) result(w)
+      real(wp), intent(in) :: gamma, gamma0
+      logical, intent(in) :: conformal
+      if (conformal) then
+         w = cos(gamma)/cos(gamma0)
+      else
+         w = 1.0_wp - vertical_tilt(gamma, gamma0)
+      end if
+   end function approach_closure
+
    !> The direction of the pressure at each table point (doc/geometry.md, "The direction of the
    !> pressure"): with equal elastic constants the bodies' normal displacements are equal and
    !> opposite, so the deformed interface lies midway between the undeformed surfaces, and its
@@ -69,13 +89,17 @@ contains
    !> w' + g'/2, with the wheel's slope w' = tan(γ − γ₀) and the relative slope g' = dg/dy:
    !> γ_n = γ₀ + atan(tan(γ − γ₀) + g'/2). g' by central differences (one-sided at the ends); a
    !> table of one point keeps γ.
-   pure subroutine interface_angles(gap, gamma, gamma0, h, gamma_n)
+   pure subroutine interface_angles(gap, gamma, gamma0, h, conformal, gamma_n)
       !> g(y) on the table's uniform grid (mm).
       real(wp), intent(in) :: gap(:)
       !> The wheel's contact angle γ(y) (rad).
       real(wp), intent(in) :: gamma(:)
       !> The table frame's contact angle γ₀ (rad) and the grid spacing h (mm).
       real(wp), intent(in) :: gamma0, h
+      !> A conformal table (y the rail's arc length, g along each point's rail normal): the
+      !> wheel's slope relative to the rail there is −g', so the interface turns from the
+      !> wheel's angle by atan(g') − atan(g'/2).
+      logical, intent(in) :: conformal
       !> γ_n(y) (rad).
       real(wp), intent(out) :: gamma_n(:)
       real(wp) :: slope
@@ -94,7 +118,11 @@ contains
          else
             slope = (gap(i + 1) - gap(i - 1))/(2.0_wp*h)
          end if
-         gamma_n(i) = gamma0 + atan(tan(gamma(i) - gamma0) + 0.5_wp*slope)
+         if (conformal) then
+            gamma_n(i) = gamma(i) + atan(slope) - atan(0.5_wp*slope)
+         else
+            gamma_n(i) = gamma0 + atan(tan(gamma(i) - gamma0) + 0.5_wp*slope)
+         end if
       end do
    end subroutine interface_angles
 

@@ -7,7 +7,7 @@ module shcontact_normal_coupling_groups
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
    use shcontact_normal_patch, only: normal_patch_type
-   use shcontact_normal_angles, only: vertical_tilt
+   use shcontact_normal_angles, only: approach_closure
    implicit none
    private
 
@@ -126,7 +126,8 @@ contains
          set%ac(g) = set%ac(g)/set%local(g)
          set%gc(g) = set%gc(g)/set%local(g)
          ! 1 − c at the group's mean contact angle (γ varies little across a group).
-         set%wc(g) = 1.0_wp - vertical_tilt(set%wc(g)/set%local(g), patch%gamma_plane)
+         set%wc(g) = approach_closure(set%wc(g)/set%local(g), patch%gamma_plane, &
+            patch%conformal)
          ! The strips are still measured from the first contact: the coupling comes before
          ! refer_to_loaded_point (shcontact_normal_loading).
          set%s(g) = offset + set%yc(g)

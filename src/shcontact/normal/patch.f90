@@ -40,6 +40,8 @@ module shcontact_normal_patch
       !> Where the reference point lies from the geometry table's origin (the first contact),
       !> along the contact plane (mm), and the contact plane's angle (rad).
       real(wp) :: y_shift = 0.0_wp, gamma_plane = 0.0_wp
+      !> Strips on a conformal table (shcontact_geometry_patch).
+      logical :: conformal = .false.
       !> Strip centres, from the reference point (mm).
       real(wp), allocatable :: y(:)
       !> Strip half-lengths a_i (mm).

@@ -19,7 +19,7 @@
 module shcontact_normal_semihertz
    use shcontact_core_kinds, only: wp
    use shcontact_core_constants, only: pi
-   use shcontact_core_error, only: error_type, fatal_error, stat_no_contact
+   use shcontact_core_error, only: error_type, fatal_error, stat_no_contact, stat_invalid_input
    use shcontact_core_strings, only: str_real
    use shcontact_geometry_patch, only: patch_geometry_type
    use shcontact_normal_options, only: normal_options_type, method_semi_hertz, reduction_constant, &
@@ -60,6 +60,8 @@ module shcontact_normal_semihertz
       real(wp) :: y_first = 0.0_wp, h = 0.0_wp
       !> Contact angle γ₀ (rad), rolling radius r₀ (mm) and gap g₀ (mm) of the reference point.
       real(wp) :: gamma0 = 0.0_wp, r0 = 0.0_wp, gap0 = 0.0_wp
+      !> The geometry's tables are conformal (shcontact_geometry_patch).
+      logical :: conformal = .false.
       !> Curvatures A, B at the reference point y = 0 (1/mm), for `method = 'hertz'`.
       real(wp) :: curv_a0 = 0.0_wp, curv_b0 = 0.0_wp
       !> Approach at which contact starts, min g/ε_b (mm); 0 for a well-formed table.
@@ -148,6 +150,7 @@ contains
       prepared%y_first = geometry%y(i1)
       prepared%h = geometry%h
       prepared%gamma0 = geometry%gamma0
+      prepared%conformal = geometry%conformal
       prepared%r0 = geometry%r0
       prepared%gap0 = geometry%gap0
       call reference_curvatures(geometry, i1, i2, prepared%curv_a0, prepared%curv_b0)
@@ -186,6 +189,11 @@ contains
       prepared%touch(1:n) = (prepared%gap(1:n) + prepared%gap0*prepared%tilt(1:n))/ &
          prepared%psi_slope(1:n)
       prepared%exact_slide = options%slide == slide_exact
+      if (prepared%exact_slide .and. prepared%conformal) then
+         call fatal_error(error, "normal options: slide = 'exact' needs planar strip tables "// &
+            "(the contact search's conformal_tables off)", stat_invalid_input)
+         return
+      end if
       if (prepared%exact_slide) call prepare_slide(prepared)
       prepared%i_first = minloc(prepared%touch(1:n), dim=1)
       prepared%approach_touch = prepared%touch(prepared%i_first)
@@ -210,7 +218,7 @@ contains
       n = prepared%n_table
       if (n < 1) return
       call interface_angles(prepared%gap(1:n), prepared%gamma(1:n), prepared%gamma0, &
-         prepared%h, prepared%gamma_n(1:n))
+         prepared%h, prepared%conformal, prepared%gamma_n(1:n))
    end subroutine use_interface_angles
 
    !> The strips of the semi-Hertzian method for approach δ (doc/theory.md §4.3 steps 3–8):
@@ -497,6 +505,7 @@ contains
       real(wp) :: t, slide, loaded_tilt(most)
 
       patch%gamma_plane = prepared%gamma0
+      patch%conformal = prepared%conformal
       patch%y_shift = 0.0_wp
       if (patch%is_hertz .or. .not. prepared%has_strip_data .or. .not. (patch%load > 0.0_wp)) &
          return

@@ -10,13 +10,14 @@ module shcontact_input_config_choices
    implicit none
    private
 
-   public :: side_choices, kinematics_mode_choices, load_mode_choices, curvature_choices
+   public :: side_choices, kinematics_mode_choices, load_mode_choices, curvature_choices, &
+      strip_table_choices
    public :: precision_choices, sweep_mode_choices, format_choices, mirror_choices, field_choices
    public :: side_right, side_left
    public :: kinematics_off, kinematics_on
    public :: load_mode_force, load_mode_vertical, load_mode_approach, load_mode_shared
    public :: load_mode_uses, load_quantities, load_mode_reading
-   public :: curvature_local, curvature_reference
+   public :: curvature_local, curvature_reference, tables_planar, tables_conformal
    public :: precision_double, precision_single
    public :: sweep_grid, sweep_list
 
@@ -34,6 +35,8 @@ module shcontact_input_config_choices
       load_mode_vertical]
    !> `&normal longitudinal_curvature`: γ(y) or γ₀ in A(y).
    integer, parameter :: curvature_local = 1, curvature_reference = 2
+   !> `&normal strip_tables`: in the plane of the first contact or along the rail's surface.
+   integer, parameter :: tables_planar = 1, tables_conformal = 2
    !> `&output precision` of the per-element fields.
    integer, parameter :: precision_double = 1, precision_single = 2
    !> `&sweep mode`.
@@ -58,6 +61,12 @@ module shcontact_input_config_choices
    type(choice_type), parameter :: curvature_choices(*) = [ &
       choice_type('local', curvature_local, 'A(y) = cos(gamma(y))/(2 r_w)'), &
       choice_type('reference', curvature_reference, 'A(y) = cos(gamma0)/(2 r_w)')]
+   !> `&normal strip_tables`.
+   type(choice_type), parameter :: strip_table_choices(*) = [ &
+      choice_type('planar', tables_planar, 'strips in the plane of the first contact, gaps '// &
+      'along its normal'), &
+      choice_type('conformal', tables_conformal, 'strips along the rail''s arc length, gaps '// &
+      'along each point''s rail normal')]
    !> `&output precision`.
    type(choice_type), parameter :: precision_choices(*) = [ &
       choice_type('double', precision_double, '64-bit per-element fields'), &

@@ -13,7 +13,7 @@ module shcontact_input_config_types
    use shcontact_geometry_prepared, only: contact_options_type
    use shcontact_input_config_limits, only: path_len, name_len, max_fields
    use shcontact_input_config_choices, only: side_right, kinematics_off, kinematics_on, &
-      load_mode_force, curvature_local, curvature_reference, precision_double
+      load_mode_force, curvature_local, curvature_reference, tables_planar, tables_conformal, precision_double
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_pipeline_preset, only: default_preset, preset_strips, preset_elements, &
@@ -154,6 +154,8 @@ module shcontact_input_config_types
          mask=variables%group == 'normal'))%default
       !> `curvature_local` (cos γ(y)) or `curvature_reference` (cos γ₀) in A(y).
       integer :: longitudinal_curvature = curvature_local
+      !> `tables_planar` or `tables_conformal`: the strip tables of the contact search.
+      integer :: strip_tables = tables_planar
       !> `preset_*` of shcontact_pipeline_preset: sets n_strips, tangential n_elements (where
       !> the case does not give them) and the strip-table spacing.
       integer :: preset = default_preset
@@ -326,6 +328,7 @@ contains
       options%l_filt_rail = config%profiles%rail_smoothing
       options%b_min = config%normal%b_min
       options%a_reference_normal = config%normal%longitudinal_curvature == curvature_reference
+      options%conformal_tables = config%normal%strip_tables == tables_conformal
       options%table_step = table_step_of(config)
    end function contact_options_of
 
@@ -370,6 +373,7 @@ contains
       case ('kinematics%mode'); code = config%kinematics%mode
       case ('load%mode'); code = config%load%mode
       case ('normal%longitudinal_curvature'); code = config%normal%longitudinal_curvature
+      case ('normal%strip_tables'); code = config%normal%strip_tables
       case ('normal%preset'); code = config%normal%preset
       case ('output%precision'); code = config%output%precision
       case ('sweep%mode'); code = config%sweep%mode
@@ -473,6 +477,7 @@ contains
       case ('kinematics%mode'); config%kinematics%mode = code
       case ('load%mode'); config%load%mode = code
       case ('normal%longitudinal_curvature'); config%normal%longitudinal_curvature = code
+      case ('normal%strip_tables'); config%normal%strip_tables = code
       case ('normal%preset'); config%normal%preset = code
       case ('output%precision'); config%output%precision = code
       case ('sweep%mode'); config%sweep%mode = code

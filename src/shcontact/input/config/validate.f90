@@ -24,8 +24,9 @@ module shcontact_input_config_validate
    use shcontact_input_config_choices, only: format_choices, mirror_choices, field_choices, &
       load_mode_choices, load_mode_force, load_mode_approach, &
       load_mode_vertical, sweep_list, load_mode_shared, load_mode_uses, load_quantities, &
-      load_mode_reading
-   use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz
+      load_mode_reading, tables_conformal
+   use shcontact_normal_option_registry, only: normal_methods => method_choices, method_hertz, &
+      slide_exact
    use shcontact_tangential_option_registry, only: method_fastsim, spin_additive, &
       spin_model_choices
    implicit none
@@ -86,6 +87,14 @@ contains
             call fatal_error(error, origin(c, 'tangential%method')//": &tangential method = "// &
                "'fastsim' works on the Hertz ellipse of the reference point: set &normal "// &
                "method = 'hertz' (now '"//choice_name(normal_methods, c%normal%method)//"')")
+            return
+         end if
+         if (c%normal%strip_tables == tables_conformal .and. c%normal%slide == slide_exact) &
+            then
+            call fatal_error(error, origin(c, 'normal%slide')//": &normal slide = 'exact' "// &
+               "slides the wheel along the plane of planar strip tables: set &normal "// &
+               "strip_tables = 'planar' (conformal tables close each point's gap along its "// &
+               "own normal)")
             return
          end if
          call check_output(c, error)

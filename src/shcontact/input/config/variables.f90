@@ -14,7 +14,7 @@ module shcontact_input_config_variables
    use shcontact_tangential_option_registry, only: tangential_option_choices => option_choices
    use shcontact_pipeline_preset, only: preset_choices
    use shcontact_input_config_choices, only: side_choices, kinematics_mode_choices, &
-      load_mode_choices, curvature_choices, precision_choices, sweep_mode_choices, &
+      load_mode_choices, curvature_choices, strip_table_choices, precision_choices, sweep_mode_choices, &
       format_choices, mirror_choices, field_choices
    implicit none
    private
@@ -109,6 +109,8 @@ contains
          choices = load_mode_choices
       case ('normal%longitudinal_curvature')
          choices = curvature_choices
+      case ('normal%strip_tables')
+         choices = strip_table_choices
       case ('normal%preset')
          choices = preset_choices
       case ('output%fields')
