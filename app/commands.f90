@@ -7,6 +7,7 @@ module shcontact_app_commands
    use shcontact_core_strings, only: str_int, str_real, visible, to_lower
    use shcontact_core_text, only: string_type
    use shcontact, only: case_config_type, load_config, config_namelist, merge_result_files, &
+      with_absolute_profiles, &
       report_header, report_lines, report_case_text, report_units, iso_timestamp, &
       run_setup_type, prepare_run, solve_geometry, sweep_options_type, sweep_outcome_type, &
       run_sweep, patch_geometry_type, write_geometry_table, read_case_profiles, profile_type
@@ -14,10 +15,11 @@ module shcontact_app_commands
    use shcontact_app_output_guard, only: check_output_file
    use shcontact_app_cli, only: cli_type
    use shcontact_app_stdout, only: put_line, put_text
+   use shcontact_app_climbing, only: note_climbing_cases
    use shcontact_app_progress, only: start_progress, progress, end_progress, elapsed, &
       run_seconds
    use shcontact_app_environment, only: slurm_shard, in_slurm_array, check_thread_variable
-   use shcontact_core_files, only: peak_memory_kib, canonical_path
+   use shcontact_core_files, only: peak_memory_kib
    implicit none
    private
 
@@ -128,6 +130,7 @@ contains
       end if
 
       call print_summary(summary_format(cli), cli%csv_units, config, outcome)
+      if (.not. cli%quiet) call note_climbing(config, outcome)
       if (size(outcome%failures) > 0) then
          do k = 1, min(10, size(outcome%failures))
             write (error_unit, '(a)') 'shcontact: case '//str_int(outcome%failures(k)%case)// &
@@ -164,6 +167,21 @@ contains
          str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'
    end function run_command
 
+   !> The note on cases solved in flange-climbing states ([[note_climbing_cases]]); none when
+   !> the profiles cannot be prepared again (the run has reported them).
+   subroutine note_climbing(config, outcome)
+      type(case_config_type), intent(in) :: config
+      type(sweep_outcome_type), intent(in) :: outcome
+      type(run_setup_type) :: setup
+      type(error_type), allocatable :: error
+      if (.not. allocated(outcome%summaries)) return
+      if (outcome%last < outcome%first) return
+      call prepare_run(config, setup, error)
+      if (allocated(error)) return
+      call note_climbing_cases(config, setup, outcome%summaries(outcome%first:outcome%last), &
+         outcome%first)
+   end subroutine note_climbing
+
    !> The notes on the case's profiles and their settings ([[profile_notes]]) on stderr, one
    !> 'shcontact: note: ...' line each. A profile that cannot be read gets none here: the run
    !> reports it.
@@ -187,16 +205,6 @@ contains
    !> they are): `--check` prints a case file that reproduces the run wherever it is saved (a
    !> case file's relative paths are taken from its own directory; the resolved ones are
    !> relative to the working directory).
-   function with_absolute_profiles(config) result(resolved)
-      type(case_config_type), intent(in) :: config
-      type(case_config_type) :: resolved
-      resolved = config
-      if (index(to_lower(adjustl(config%profiles%wheel)), 'builtin:') /= 1) &
-         resolved%profiles%wheel = canonical_path(trim(config%profiles%wheel))
-      if (index(to_lower(adjustl(config%profiles%rail)), 'builtin:') /= 1) &
-         resolved%profiles%rail = canonical_path(trim(config%profiles%rail))
-   end function with_absolute_profiles
-
    function resumed_note(outcome) result(text)
       type(sweep_outcome_type), intent(in) :: outcome
       character(len=:), allocatable :: text

@@ -14,6 +14,7 @@ module shcontact_app_wheelset
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: configure, report_error, refuse_yaw, print_profile_notes
    use shcontact_app_stdout, only: put_line
+   use shcontact_app_climbing, only: flange_steepest
    implicit none
    private
 
@@ -153,45 +154,6 @@ contains
          call put_line(trim(row))
       end do
    end subroutine print_conicity
-
-   !> Wheel profile y (mm, the profile's own coordinates, as the table's wheel_y) of the
-   !> tip-most point of the flange's steepest part: between the tape circle and the flange tip
-   !> (the largest z), the segment nearest the tip whose slope is within 0.5° of the steepest.
-   !> A contact beyond it (towards the tip) is one the wheel climbs to: its contact angle falls
-   !> again (Nadal). The search runs with the tape circle at y = 0: the profile is moved by the
-   !> tape circle's y in its own coordinates as the solver places it (`y_tape`: a MiniProf
-   !> wheel's origin, or a file's with flange_back_position = 0, is its flange back).
-   pure real(wp) function flange_steepest(profile, y_tape) result(y_s)
-      type(profile_type), intent(in) :: profile
-      real(wp), intent(in) :: y_tape
-      real(wp), parameter :: tolerance = 0.5_wp*pi/180.0_wp
-      type(profile_type) :: wheel
-      real(wp) :: y_tip, angle, steepest
-      integer :: i
-      wheel = profile
-      wheel%y = profile%y - y_tape
-      y_tip = wheel%y(maxloc(wheel%z, 1))
-      steepest = 0.0_wp
-      do i = 1, size(wheel%y) - 1
-         if (.not. in_flange(i)) cycle
-         steepest = max(steepest, atan2(abs(wheel%z(i + 1) - wheel%z(i)), &
-            abs(wheel%y(i + 1) - wheel%y(i))))
-      end do
-      ! The tip-most point of the steep segments: their smallest y.
-      y_s = 0.0_wp
-      do i = 1, size(wheel%y) - 1
-         if (.not. in_flange(i)) cycle
-         angle = atan2(abs(wheel%z(i + 1) - wheel%z(i)), abs(wheel%y(i + 1) - wheel%y(i)))
-         if (angle >= steepest - tolerance) y_s = min(y_s, min(wheel%y(i), wheel%y(i + 1)))
-      end do
-      y_s = y_s + y_tape
-   contains
-      pure logical function in_flange(i)
-         integer, intent(in) :: i
-         in_flange = min(wheel%y(i), wheel%y(i + 1)) >= y_tip .and. &
-            max(wheel%y(i), wheel%y(i + 1)) <= 0.0_wp .and. wheel%y(i) /= wheel%y(i + 1)
-      end function in_flange
-   end function flange_steepest
 
    !> A note (a comment line of the table and, unless quiet, on stderr) naming, for each wheel,
    !> the smallest shift at which its contact lies beyond its flange's steepest part (towards

@@ -129,6 +129,7 @@ extern "C" {
  * normal%n_strips = 100: 2 <= n_strips <= 100000
  * normal%b_min = 0.0001: 1.0e-8 <= b_min <= 1.0 1/mm
  * normal%longitudinal_curvature = 'local': 'local', 'reference'
+ * normal%strip_tables = 'planar': 'planar', 'conformal'
  * normal%preset = 'default': 'default', 'vehicle'
  * tangential%method = 'fastsim-sh': 'fastsim-sh', 'fastsim'
  * tangential%bound = 'weighted': 'ellipsoidal', 'parabolic', 'weighted', 'weighted-slip',
@@ -283,6 +284,8 @@ int shcontact_create_wheelset(shcontact_contact **handle, const char *wheel, con
  * totals[4] receives the forces on the wheelset in the true track frame, F_x, F_y (towards the
  * right rail's field side), F_z (z down) (N), and their moment M_z about the vertical axis
  * through the wheelset centre (N mm; the patches' spin moments not included); zeros on failure.
+ * With SHCONTACT_LOAD_VERTICAL_FORCE a load of 0 or less lifts that wheel: no contact, its
+ * values all zero (n_patches 0), the other wheel solved as usual.
  */
 int shcontact_solve_wheelset(shcontact_contact *handle, double y_ws, double yaw, double roll,
                              double v_forward, double v_lateral, double v_vertical,

@@ -458,6 +458,9 @@ def plot_creep(f, title, out, xname=None, fixes=None, curves=None, magnitude=Fal
             sys.exit(f"plot_case: '{a}' is not a swept input of this file "
                      f"(swept: {', '.join(swept)})")
     ok = s["status"][...] == 0
+    if not ok.all():
+        print(f"plot_case: {int((~ok).sum())} of {ok.size} case(s) failed and are left out "
+              f"of the creep-force figures (their messages: /failures)", file=sys.stderr)
     xname = xname or real_axes[-1]
     list_mode = "mode = 'list'" in text(f["input/namelist"][()])
     keep = ok.copy()

@@ -71,7 +71,9 @@ module shcontact
       wheel_left
    use shcontact_api_preset, only: preset_names, apply_preset, set_preset
    ! case files, runs and output (the program's layers)
-   use shcontact_input_config, only: case_config_type, load_config, config_namelist
+   use shcontact_input_config, only: case_config_type, load_config, config_namelist, &
+      with_absolute_profiles, case_point_type
+   use shcontact_case_result, only: case_summary_type
    use shcontact_case_runner, only: run_setup_type, prepare_run, solve_geometry, &
       read_case_profiles
    use shcontact_output_merge, only: merge_result_files
@@ -123,7 +125,8 @@ module shcontact
       curvature_noise, rail_cant_type, estimate_rail_cant, default_curvature_tolerance, &
       profile_file_format, load_profile_file, roll_angle_parameter, contact_distance, &
       centre_radius
-   public :: case_config_type, load_config, config_namelist, run_setup_type, prepare_run, &
+   public :: case_config_type, load_config, config_namelist, with_absolute_profiles, &
+      case_point_type, case_summary_type, run_setup_type, prepare_run, &
       read_case_profiles, solve_geometry, merge_result_files, report_header, report_line, report_lines, &
       report_case_text, &
       report_units, iso_timestamp, wall_seconds, sweep_options_type, sweep_outcome_type, &

@@ -291,6 +291,13 @@ contains
       if (allocated(error)) return
       call bad(s%y_ws, 0.2_wp, s%v_forward, 2, stat_invalid_input, 'yaw')
       if (allocated(error)) return
+      ! Just past the limit: the message gives the value as it is, not rounded to the limit.
+      call bad(s%y_ws, 0.10000001_wp, s%v_forward, 2, stat_invalid_input, 'yaw = 0.10000001')
+      if (allocated(error)) return
+      ! The case file's velocity ranges hold on this path too (200001 mm/s was solved).
+      call bad(s%y_ws, s%yaw, 200001.0_wp, 2, stat_invalid_input, &
+         'wheelset forward speed = 200001')
+      if (allocated(error)) return
       ! A forward speed far below the wheel's rolling speed (the pitch rate of 30 m/s): a
       ! creepage beyond the prescribed calls' range, refused rather than solved.
       call bad(s%y_ws, s%yaw, 1.0e-9_wp, 2, stat_invalid_input, &

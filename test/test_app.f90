@@ -707,6 +707,22 @@ contains
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/out.txt'), "/sub/w.txt')", 'the file in the hint')
       if (allocated(error)) return
+      ! The result file's /input/namelist is a case file that reruns the case wherever it is
+      ! saved: its profile files by absolute paths (a run from `sub/` with `../built-in/...`
+      ! stored the name as typed, which another folder then could not open).
+      stat = run_program(dir//'/sub', 'run -q -o n.h5 --set profiles%wheel=../built-in/S1002.txt')
+      call check(error, stat, 0, message='run from sub/: '//file_text(dir//'/sub/err.txt'))
+      if (allocated(error)) return
+      if (.not. unavailable(error, .true.)) then
+         call shell('cd '//dir//' && h5dump -y -w 0 -d /input/namelist sub/n.h5 > dump.txt', &
+            stat)
+         call expect_in(error, file_text(dir//'/dump.txt'), "wheel = '/", &
+            'the stored namelist names the wheel file by an absolute path')
+         if (allocated(error)) return
+         call expect_in(error, file_text(dir//'/dump.txt'), "/built-in/S1002.txt'", &
+            'the stored namelist names the wheel file')
+         if (allocated(error)) return
+      end if
       stat = run_program(dir, 'profiles')
       call check(error, stat, 1, message='profiles without --write')
       call shell('rm -rf '//dir)

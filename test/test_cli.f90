@@ -950,11 +950,15 @@ contains
       if (allocated(error)) return
       call check(error, index(err, 'note:') == 0, message='a note on the default case: '//err)
       if (allocated(error)) return
-      call run_expect(error, dir, 'run -o b.h5 --set profiles%rail=builtin:UIC60-canted', 0, &
+      ! The built-in canted rail canted again is refused by its name (status 2), after the note.
+      call run_expect(error, dir, 'run -o b.h5 --set profiles%rail=builtin:UIC60-canted', 2, &
          out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'shcontact: note: rail profile builtin:UIC60-canted: the head '// &
          'looks inclined by about 1:40 already', 'the canted rail without rail_canted')
+      if (allocated(error)) return
+      call expect_in(error, err, "rail 'builtin:UIC60-canted' is the UIC60 head canted 1:40 "// &
+         'already', 'the refusal of the canted rail canted again')
       if (allocated(error)) return
       call run_expect(error, dir, 'run -o c.h5 --set track%rail_canted=.true.', 0, out, err)
       if (allocated(error)) return

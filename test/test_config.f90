@@ -13,9 +13,9 @@ module test_config
    use shcontact_core_choices, only: choice_list
    use shcontact_input_config_choices, only: load_mode_force, load_mode_vertical
    use shcontact_tangential_options, only: method_fastsim_sh, bound_clipped, bound_parabolic, &
-      bound_weighted, spin_uniform, spin_additive
+      bound_weighted, spin_uniform, spin_additive, tangential_options_type
    use shcontact_core_files, only: delete_file, process_id
-   use shcontact_input_config_types, only: contact_options_of
+   use shcontact_input_config_types, only: contact_options_of, tangential_options_of
    use shcontact_geometry_prepared, only: contact_options_type
    implicit none
    private
@@ -214,6 +214,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(case_config_type) :: c, default_config
       type(contact_options_type) :: options, defaults
+      type(tangential_options_type) :: tangential
       call load_valid('', [character(len=40) :: 'creepage%nu_x=1e-3', &
          'tangential%bound=parabolic', 'sweep%phi=0,1e-3', 'sweep%phi=0,2e-3,3e-3', &
          'output%fields=pressure,state'], c, error)
@@ -241,6 +242,23 @@ contains
       defaults = contact_options_of(default_config)
       call check(error, options%conformal_tables .and. .not. defaults%conformal_tables, &
          message='strip_tables')
+      if (allocated(error)) return
+      ! Classical FASTSIM takes Kalker's parabolic bound unless the case gives one.
+      call load_valid('', [character(len=40) :: 'normal%method=hertz', &
+         'tangential%method=fastsim'], c, error)
+      if (allocated(error)) return
+      tangential = tangential_options_of(c)
+      call check(error, tangential%bound == bound_parabolic .and. c%tangential%bound == &
+         bound_parabolic, message='classical FASTSIM: parabolic bound by default')
+      if (allocated(error)) return
+      call load_valid('', [character(len=40) :: 'normal%method=hertz', &
+         'tangential%method=fastsim', 'tangential%bound=weighted'], c, error)
+      if (allocated(error)) return
+      tangential = tangential_options_of(c)
+      call check(error, tangential%bound == bound_weighted, message='an explicit bound wins')
+      if (allocated(error)) return
+      tangential = tangential_options_of(default_config)
+      call check(error, tangential%bound == bound_weighted, message='FASTSIM_SH: W1')
       if (allocated(error)) return
       call expect_override_error(error, 'exact slide on conformal tables', [character(len=40) :: &
          'normal%strip_tables=conformal', 'normal%slide=exact'], [character(len=40) :: &

@@ -181,6 +181,17 @@ contains
       call shell('cd '//dir//' && python3 '//here//'/scripts/plot_case.py h.h5 --compare hf.h5 '// &
          '-o figs > out.txt 2> err.txt && test -s figs/h_vs_hf_forces.png', stat)
       call check(error, stat, 0, message='two solutions of one case: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! A sweep whose failed cases the figures leave out says so (they were dropped silently).
+      stat = run_program(dir, 'run -q -o fail.h5 --set load%mode=approach '// &
+         '--set sweep%approach=0.05,5 --set sweep%approach_points=4')
+      call check(error, stat, 4, message='a sweep with failed cases: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call shell('cd '//dir//' && python3 '//here//'/scripts/plot_case.py fail.h5 -o figs2 '// &
+         '> out.txt 2> err.txt', stat)
+      call check(error, stat == 0 .and. index(file_text(dir//'/err.txt'), &
+         '2 of 4 case(s) failed and are left out') > 0, message='failed cases not named: '// &
+         file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_plot_refusals
 

@@ -66,7 +66,7 @@ module test_flat_keys
       'creepage%nu_x=1e-3', 'creepage%nu_y=1e-4', 'creepage%phi=1e-4', &
       'normal%method=hertz', 'normal%reduction=constant', &
       'normal%reduction=constant;normal%epsilon=0.4', 'normal%n_strips=60', 'normal%slide=exact', &
-      'normal%b_min=0.05', 'normal%longitudinal_curvature=reference', &
+      'normal%b_min=0.05', 'normal%longitudinal_curvature=reference', 'normal%strip_tables=conformal', &
       'normal%method=hertz;tangential%method=fastsim', 'tangential%bound=ellipsoidal', &
       'tangential%spin_model=additive', 'tangential%spin_flexibility=spin', &
       'tangential%correction=none', 'tangential%n_elements=30', 'normal%preset=vehicle', &
@@ -651,6 +651,29 @@ contains
          message='shcontact_field_size on a wheelset handle: '//c_message(h))
       if (allocated(error)) return
       call check(error, c_set_option(h, 'track%side', 'left'), stat_invalid_input)
+      if (allocated(error)) return
+      ! A lifted left wheel (vertical force 0): no contact there, zeros, the right wheel as
+      ! before, the totals its own (was status 2 and nothing for either wheel).
+      stat = shcontact_solve_wheelset(h, ws_state%y_ws, ws_state%yaw, &
+         ws_state%roll, ws_state%v_forward, ws_state%v_lateral, ws_state%v_vertical, &
+         ws_state%roll_rate, ws_state%yaw_rate, ws_state%pitch_rate, 2_c_int, 64.7e3_c_double, &
+         0.0_c_double, totals)
+      if (stat == 0) stat = shcontact_wheelset_wheel(h, 1_c_int, 0_c_int, cw(:, 1))
+      if (stat == 0) stat = shcontact_wheelset_wheel(h, -1_c_int, 0_c_int, cw(:, 2))
+      call check(error, stat == 0 .and. all(cw(:, 2) == 0.0_c_double) .and. &
+         bitwise_equal(cw(:, 1), ref(:, 1)) .and. bitwise_equal(totals(1:3), &
+         [expected%wheel(wheel_right)%track%fx, expected%wheel(wheel_right)%track%fy, &
+         expected%wheel(wheel_right)%track%fz]), message='a lifted left wheel: '//c_message(h))
+      if (allocated(error)) return
+      ! The pitch rate set, then back to its default by the name the option list gives it.
+      call check(error, c_set_option(h, 'kinematics%pitch_rate', '-1'), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, c_set_option(h, 'kinematics%pitch_rate', 'pure rolling'), 0, &
+         message=c_message(h))
+      if (allocated(error)) return
+      call check(error, c_get_value(h, 'kinematics%pitch_rate', 0, x), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, x, -30000.0_wp/460.0_wp, thr=1.0e-12_wp, message='pitch rate reset')
       if (allocated(error)) return
       call check(error, shcontact_destroy(h), 0_c_int)
       if (allocated(error)) return

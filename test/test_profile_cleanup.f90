@@ -99,7 +99,7 @@ contains
       call load_and_clean(tmp//'dup.txt', rail_head//'-10 2'//achar(10)//'-5 0.5'// &
          achar(10)//'-5 0.5'//achar(10)//'0 0'//achar(10)//'5 0.5'//achar(10)//'10 2', err)
       call expect_error(error, err, stat_invalid_input, [character(len=60) :: &
-         'dup.txt, line 4:', 'duplicate point (-5, 0.5)', 'previous one (line 3)'])
+         'dup.txt, line 4:', 'duplicate point (-5, 0.5)', 'repeats the point of line 3;'])
    end subroutine test_duplicate
 
    !> A profile that runs back across itself.
@@ -126,6 +126,14 @@ contains
          'metres.txt, line 2 to line 6:', 'total arc length 0.0204', 'outside 5–500 mm', &
          'scale factor'])
       if (allocated(error)) return
+      ! In metres, two measured points 5e-5 mm apart are closer than the duplicate distance:
+      ! the unit is named, not "remove one of them".
+      call load_and_clean(tmp//'metres_close.txt', rail_head//'-0.01 0.002'//achar(10)// &
+         '-0.00500005 0.0005'//achar(10)//'-0.005 0.0005'//achar(10)//'0 0'//achar(10)// &
+         '0.005 0.0005'//achar(10)//'0.01 0.002', err)
+      call expect_error(error, err, stat_invalid_input, [character(len=60) :: &
+         'metres_close.txt, line 2 to line 7:', 'another length unit'])
+      if (allocated(error)) return
       call load_and_clean(tmp//'microns.txt', rail_head//'-10000 2000'//achar(10)// &
          '-5000 500'//achar(10)//'0 0'//achar(10)//'5000 500'//achar(10)//'10000 2000', err)
       call expect_error(error, err, stat_invalid_input, [character(len=60) :: &
@@ -144,13 +152,14 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(profile_type) :: p
       type(lib_error), allocatable :: err
-      p = line_profile(8)
-      p%y = p%y(8:1:-1)
+      ! 12 points: 5.5 mm, within the arc-length range, which is checked first.
+      p = line_profile(12)
+      p%y = p%y(12:1:-1)
       call clean_profile(p, err)
       call expect_error(error, err, stat_invalid_input, [character(len=70) :: &
          'memory, point 1:', 'rail points must run from the track centre to the field side'])
       if (allocated(error)) return
-      p = line_profile(8)
+      p = line_profile(12)
       p%kind = profile_kind_wheel
       call clean_profile(p, err)
       call expect_error(error, err, stat_invalid_input, [character(len=70) :: &

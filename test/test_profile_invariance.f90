@@ -260,6 +260,34 @@ contains
       call drop_collinear(again, lines)
       call check(error, again%size() == p%size() .and. all(again%y == p%y) .and. &
          all(again%z == p%z), message='a second pass changes nothing')
+      if (allocated(error)) return
+      ! A straight profile (a cone on a 1:40 line, 1201 points): its ends and two points
+      ! between, equally spaced, the fewest a profile has (two were written by `profiles -o`
+      ! and then refused on reading); again the same.
+      deallocate (lines)
+      p%y = [(0.1_wp*(i - 600), i=0, 1200)]
+      p%z = -p%y/40.0_wp
+      call p%update_arc_length()
+      again = p
+      call drop_collinear(again, lines)
+      call check(error, again%size(), 4, message='a straight profile keeps four points')
+      if (allocated(error)) return
+      call check(error, abs(again%y(2) - (p%y(1) + (p%y(1201) - p%y(1))/3)) < 1.0e-12_wp .and. &
+         abs(again%z(3) - (p%z(1) + 2*(p%z(1201) - p%z(1))/3)) < 1.0e-12_wp, &
+         message='at thirds of the line')
+      if (allocated(error)) return
+      p = again
+      call drop_collinear(again, lines)
+      call check(error, again%size() == 4 .and. all(again%y == p%y) .and. all(again%z == p%z), &
+         message='a straight profile: a second pass changes nothing')
+      if (allocated(error)) return
+      ! A V of two straight pieces (3 skeleton points): the longer halved.
+      p%y = [(0.1_wp*i, i=0, 300)]
+      p%z = merge(p%y, 2*(p%y(101) - p%y) + p%y(101), p%y <= p%y(101))
+      call p%update_arc_length()
+      again = p
+      call drop_collinear(again, lines)
+      call check(error, again%size(), 4, message='a V keeps four points')
    end subroutine test_skeleton
 
    ! --- helpers --------------------------------------------------------------------------------

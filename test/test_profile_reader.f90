@@ -321,6 +321,17 @@ contains
          kind=profile_kind_wheel)
       call expect_error(error, err, stat_invalid_input, [character(len=40) :: &
          'MBench_S1002_v3.prw, line 10:', "expected two numbers 'y z'"])
+      if (allocated(error)) return
+      ! A flat wheel (a cylinder, every z = 0) has no flange to be on the wrong side: read as it
+      ! is (was refused, naming its first point "the flange").
+      call write_text(tmp//'flat.txt', '# kind = wheel'//achar(10)//'60 0'//achar(10)// &
+         '20 0'//achar(10)//'-20 0'//achar(10)//'-60 0'//achar(10))
+      call read_profile(tmp//'flat.txt', q, err)
+      if (allocated(err)) then
+         call test_failed(error, 'flat wheel: '//err%message)
+         return
+      end if
+      call check(error, q%size(), 4, 'flat wheel read')
    end subroutine test_overrides
 
    ! --- bad files ------------------------------------------------------------------------------

@@ -475,12 +475,37 @@ contains
       call expect_in(error, file_text(dir//'/err.txt'), 'writes the tables of a wheelset '// &
          'without yaw only', '--wheelset with yaw')
       if (allocated(error)) return
+      ! `run` notes its solved cases in flange-climbing states (t_y 10, 20 and 30 mm: contact
+      ! on the flange's tip side, 4.7 GPa at 20 mm; t_y 0 on the tread), and only those.
+      stat = run_program(dir, 'run --no-output --set sweep%t_y=0,30 --set sweep%t_y_points=4')
+      call check(error, stat == 0 .or. stat == 4, message='run to 30 mm: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), 'beyond its steepest part', &
+         'the flange-climbing note of run')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '3 solved case(s) (t_y 10.000 … '// &
+         '30.000 mm)', 'the cases of the note')
+      if (allocated(error)) return
+      ! Where they begin for the default case (doc/app.md): between 8 and 8.5 mm.
+      stat = run_program(dir, 'run --no-output --set sweep%t_y=8,8.5 --set sweep%t_y_points=2')
+      call expect_in(error, file_text(dir//'/err.txt'), '1 solved case(s) (t_y 8.500 … '// &
+         '8.500 mm)', 'the first climbing case of the default case')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run --no-output --set sweep%t_y=0,4 --set sweep%t_y_points=3')
+      call check(error, stat, 0, message='run on the tread: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call check(error, index(file_text(dir//'/err.txt'), 'steepest') == 0, &
+         message='no flange-climbing note on the tread: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      ! The built-in canted rail on a track that cants it again is refused by its name (a
+      ! file gets run's profile note, robustness tests).
       stat = run_program(dir, 'geometry --wheelset -1,1,1 --set profiles%rail=builtin:'// &
          'UIC60-canted')
-      call check(error, stat, 0, message='canted twice: '//file_text(dir//'/err.txt'))
+      call check(error, stat, 2, message='canted twice: '//file_text(dir//'/err.txt'))
       if (allocated(error)) return
-      call expect_in(error, file_text(dir//'/err.txt'), 'the head looks inclined by about '// &
-         '1:40 already', 'the profile note of run')
+      call expect_in(error, file_text(dir//'/err.txt'), 'canted 1:40 already', &
+         'the built-in canted rail canted again')
    end subroutine test_program
 
    !> The flange-climbing note of `geometry --wheelset` on a measured MiniProf wheel, whose

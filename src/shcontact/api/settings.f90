@@ -157,6 +157,14 @@ contains
          return
       end if
       prefix = 'option '//group//'%'//name
+      if (group == 'kinematics' .and. name == 'pitch_rate' .and. &
+         to_lower(trim(adjustl(value))) == 'pure rolling') then
+         ! Back to its default, as the option list names it: not given, pure rolling at each
+         ! state's forward speed.
+         config%kinematics%pitch_rate = variables(iv)%default
+         call set_origin(config, 'kinematics%pitch_rate', 'default')
+         return
+      end if
       if (scan(value, control_characters) > 0) then
          call fatal_error(error, prefix//" = '"//visible(value)// &
             "': a control character in the value", stat_invalid_input)

@@ -14,10 +14,12 @@ module shcontact_api_wheelset
    use shcontact_core_material, only: material_type
    use shcontact_geometry_track, only: track_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type
-   use shcontact_geometry_kinematics, only: wheelset_state_type
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
-   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type
+   use shcontact_api_solver, only: contact_solver_type, contact_load_type, contact_result_type, &
+      load_vertical_force
    implicit none
    private
 
@@ -158,7 +160,9 @@ contains
       class(wheelset_solver_type), intent(inout) :: self
       !> Wheelset position and velocities (track frame).
       type(wheelset_state_type), intent(in) :: state
-      !> The load of each wheel (load_vertical_force: its total vertical force).
+      !> The load of each wheel (load_vertical_force: its total vertical force). A vertical
+      !> force of 0 or less lifts the wheel: no contact, its result all zeros (n_patches 0),
+      !> the other wheel solved as usual.
       type(contact_load_type), intent(in) :: load_right, load_left
       !> Both wheels and the totals.
       type(wheelset_result_type), intent(out) :: result
@@ -167,10 +171,14 @@ contains
       integer :: k, p
       real(wp) :: side, fy
 
+      call check_wheelset_state(state, error)
+      if (allocated(error)) return
       do k = 1, 2
          if (k == wheel_right) then
+            if (lifted(load_right)) cycle
             call self%wheel(k)%solve_kinematic(state, load_right, result%wheel(k), error)
          else
+            if (lifted(load_left)) cycle
             call self%wheel(k)%solve_kinematic(state, load_left, result%wheel(k), error)
          end if
          if (allocated(error)) then
@@ -193,5 +201,12 @@ contains
          end associate
       end do
    end subroutine solve
+
+   !> A wheel lifted off its rail by the vehicle code: a vertical load of 0 or less (finite).
+   pure logical function lifted(load)
+      type(contact_load_type), intent(in) :: load
+      lifted = load%mode == load_vertical_force .and. ieee_is_finite(load%value)
+      if (lifted) lifted = load%value <= 0.0_wp
+   end function lifted
 
 end module shcontact_api_wheelset

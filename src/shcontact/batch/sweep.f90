@@ -41,12 +41,13 @@ module shcontact_batch_sweep
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
-   use shcontact_input_config, only: case_config_type, config_namelist
+   use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
       end_summary_file, check_output_file
    use shcontact_output_merge, only: merge_result_files, read_result_summary
-   use shcontact_core_files, only: file_exists, canonical_path, path_kind, open_work_folder, &
+   use shcontact_core_files, only: file_exists, path_kind, open_work_folder, &
       peak_memory_kib, unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, &
+      folder_not_writable, &
       folder_link, folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
    use shcontact_output_hdf5, only: h5_discard
@@ -190,7 +191,8 @@ contains
       end if
       call prepare_run(config, setup, error)
       if (allocated(error)) return
-      info%namelist = config_namelist(config)
+      ! A case file that reproduces the run wherever it is saved: profiles by absolute paths.
+      info%namelist = config_namelist(with_absolute_profiles(config))
       info%command_line = 'shcontact'
       if (allocated(options%command_line)) info%command_line = options%command_line
       info%date = iso_timestamp()
@@ -274,6 +276,9 @@ contains
             'remove it'
       case (folder_not_directory)
          why = 'exists and is not a directory; remove it or choose another output name'
+      case (folder_not_writable)
+         why = 'exists, and its lock file can be neither opened nor created (another '// &
+            'user''s folder, or not writable?): remove it yourself, or choose another output name'
       case default
          why = 'cannot be created (does its parent exist, and is it writable?)'
       end select
@@ -626,12 +631,8 @@ contains
       type(run_setup_type), intent(in) :: setup
       character(len=:), allocatable :: key
       type(case_config_type) :: c
-      c = config
+      c = with_absolute_profiles(config)
       c%output%file = '-'
-      if (index(c%profiles%wheel, 'builtin:') /= 1) c%profiles%wheel = &
-         canonical_path(trim(c%profiles%wheel))
-      if (index(c%profiles%rail, 'builtin:') /= 1) c%profiles%rail = &
-         canonical_path(trim(c%profiles%rail))
       key = config_namelist(c)//'! profiles as read: wheel '// &
          fingerprint([setup%wheel%y, setup%wheel%z])//', rail '// &
          fingerprint([setup%rail%y, setup%rail%z])//new_line('a')

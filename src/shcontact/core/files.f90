@@ -14,7 +14,7 @@ module shcontact_core_files
    public :: path_kind, lock_file, unlock_file, pause_briefly, peak_memory_kib
    public :: lock_taken, lock_busy, lock_missing
    public :: open_work_folder, folder_made, folder_existing, folder_busy, folder_unlocked, &
-      folder_link, folder_not_directory, folder_cannot_create
+      folder_link, folder_not_directory, folder_cannot_create, folder_not_writable
 
    interface
       function c_rename(from, to) bind(c, name='rename') result(stat)
@@ -72,7 +72,8 @@ module shcontact_core_files
    integer, parameter :: lock_taken = 0, lock_busy = 1, lock_missing = 2
    !> Outcomes of [[open_work_folder]].
    integer, parameter :: folder_made = 0, folder_existing = 1, folder_busy = 2, &
-      folder_unlocked = 3, folder_link = 4, folder_not_directory = 5, folder_cannot_create = 6
+      folder_unlocked = 3, folder_link = 4, folder_not_directory = 5, folder_cannot_create = 6, &
+      folder_not_writable = 7
    !> flock(2) operations (Linux and the BSDs): exclusive, do not wait.
    integer(c_int), parameter :: lock_ex = 2, lock_nb = 4
    !> errno of a lock held by another process (EWOULDBLOCK = EAGAIN on Linux).
@@ -303,7 +304,8 @@ contains
       integer, intent(out) :: unit
       !> folder_made (new, this process made it), folder_existing (taken over), folder_busy
       !> (another process holds it), folder_unlocked (exists, not taken over), folder_link,
-      !> folder_not_directory, folder_cannot_create.
+      !> folder_not_directory, folder_cannot_create, folder_not_writable (exists, to be taken
+      !> over, but its lock file can be neither opened nor created: another user's folder).
       integer, intent(out) :: state
       integer :: attempt, lock
       character(len=:), allocatable :: kind
@@ -347,6 +349,7 @@ contains
             ! No lock file: an older or foreign folder, or one being made this instant.
             if (attempt >= 20) then
                state = folder_unlocked
+               if (take_over) state = folder_not_writable
                return
             end if
             call pause_briefly()

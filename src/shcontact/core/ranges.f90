@@ -19,7 +19,7 @@ module shcontact_core_ranges
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_core_strings, only: str_real
+   use shcontact_core_text, only: format_real
    implicit none
    private
 
@@ -357,9 +357,10 @@ contains
       i = find_range(key)
       if (i == 0) return
       if (in_range(ranges(i), x)) return
-      call fatal_error(error, label//' = '//str_real(x)//' is out of range; expected '// &
-         range_text(ranges(i), trim(ranges(i)%name), str_real(ranges(i)%lo), &
-         str_real(ranges(i)%hi)), stat_invalid_input)
+      ! The numbers as they read back (a value just past a limit must not print as the limit).
+      call fatal_error(error, label//' = '//format_real(x)//' is out of range; expected '// &
+         range_text(ranges(i), trim(ranges(i)%name), format_real(ranges(i)%lo), &
+         format_real(ranges(i)%hi)), stat_invalid_input)
    end subroutine check_range
 
    !> [[check_range]] for an integer input.

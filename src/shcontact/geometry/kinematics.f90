@@ -29,7 +29,8 @@ module shcontact_geometry_kinematics
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
-   use shcontact_core_strings, only: str_real
+   use shcontact_core_text, only: format_real
+   use shcontact_core_ranges, only: check_range
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type
    use shcontact_geometry_track, only: track_type, side_left
@@ -88,18 +89,31 @@ contains
             'v_vertical, roll_rate, yaw_rate, pitch_rate): expected finite numbers, found NaN '// &
             'or Inf', stat_invalid_input)
       else if (.not. (abs(state%yaw) <= max_yaw)) then
-         call fatal_error(error, 'wheelset yaw = '//str_real(state%yaw)//' rad: expected '// &
-            '|yaw| <= '//str_real(max_yaw)//' rad (a wheelset yaws by ~0.01 rad in a curve)', &
+         call fatal_error(error, 'wheelset yaw = '//format_real(state%yaw)//' rad: expected '// &
+            '|yaw| <= '//format_real(max_yaw)//' rad (a wheelset yaws by ~0.01 rad in a curve)', &
             stat_invalid_input)
       else if (.not. (state%v_forward > 0.0_wp)) then
          call fatal_error(error, 'wheelset forward speed v_forward = '// &
-            str_real(state%v_forward)//' mm/s: expected a positive speed (creepages are '// &
+            format_real(state%v_forward)//' mm/s: expected a positive speed (creepages are '// &
             'velocities divided by the rolling speed)', stat_invalid_input)
       else if (.not. (state%pitch_rate < 0.0_wp)) then
-         call fatal_error(error, 'wheelset pitch rate = '//str_real(state%pitch_rate)// &
+         call fatal_error(error, 'wheelset pitch rate = '//format_real(state%pitch_rate)// &
             ' rad/s: expected a negative angular velocity about the axle (forward rolling; '// &
             'pure rolling is -v_forward/nominal_radius)', stat_invalid_input)
       end if
+      if (allocated(error)) return
+      ! The ranges of the case file's &kinematics (doc/app.md), on every path.
+      call check_range('kinematics%v_forward', state%v_forward, 'wheelset forward speed', error)
+      if (.not. allocated(error)) call check_range('kinematics%pitch_rate', state%pitch_rate, &
+         'wheelset pitch rate', error)
+      if (.not. allocated(error)) call check_range('kinematics%v_lateral', state%v_lateral, &
+         'wheelset lateral velocity', error)
+      if (.not. allocated(error)) call check_range('kinematics%v_vertical', state%v_vertical, &
+         'wheelset vertical velocity', error)
+      if (.not. allocated(error)) call check_range('kinematics%roll_rate', state%roll_rate, &
+         'wheelset roll rate', error)
+      if (.not. allocated(error)) call check_range('kinematics%yaw_rate', state%yaw_rate, &
+         'wheelset yaw rate', error)
    end subroutine check_wheelset_state
 
    !> The pitch rate of pure rolling on the nominal radius, −V/r_nom (rad/s).

@@ -333,14 +333,8 @@ contains
          do i = 1, n_both
             j = j0 + i
             n_rows = j
-            if (.not. cut) then
-               if (rows(1, j) >= top) then
-                  top = rows(1, j); j_top = j
-               else if (rows(1, j) < top - prepared%options%merge_gap) then
-                  cut = .true.
-                  n_basin = j_top
-               end if
-            end if
+            if (.not. cut) call track_basin(rows(1, j), j, prepared%options%merge_gap, top, &
+               j_top, cut, n_basin)
             if (table_reach(prepared, rows(1, j), gap0, tn, rows(7, j)) > end_gap) exit walk
          end do
          if (n_both < m) exit
@@ -409,14 +403,8 @@ contains
          call conformal_row(prepared, wheel_map, p, gap0, rows(:, j), ok)
          if (.not. ok) exit
          n_rows = j
-         if (.not. cut) then
-            if (rows(1, j) >= top) then
-               top = rows(1, j); j_top = j
-            else if (rows(1, j) < top - prepared%options%merge_gap) then
-               cut = .true.
-               n_basin = j_top
-            end if
-         end if
+         if (.not. cut) call track_basin(rows(1, j), j, prepared%options%merge_gap, top, j_top, &
+            cut, n_basin)
          if (conformal_reach(prepared, rows(1, j), gap0, c0, rows(3, j)) > end_gap) exit
       end do
       if (.not. cut) n_basin = n_rows
@@ -434,6 +422,24 @@ contains
       c = 1.0_wp - cos(gamma)/cos_gamma0
       if (c < 0.0_wp) t = (gap + gap0*c)/(1.0_wp - c)
    end function conformal_reach
+
+   !> The basin rule of the table walks: the highest gap so far (`top` at row `j_top`); the
+   !> patch's own basin ends (`cut`, `n_basin` rows) at the first maximum behind which the gap
+   !> falls by more than merge_gap (a neighbouring minimum).
+   pure subroutine track_basin(gap, j, merge_gap, top, j_top, cut, n_basin)
+      real(wp), intent(in) :: gap, merge_gap
+      integer, intent(in) :: j
+      real(wp), intent(inout) :: top
+      integer, intent(inout) :: j_top, n_basin
+      logical, intent(inout) :: cut
+      if (gap >= top) then
+         top = gap
+         j_top = j
+      else if (gap < top - merge_gap) then
+         cut = .true.
+         n_basin = j_top
+      end if
+   end subroutine track_basin
 
    !> What the table end is measured by (mm; the table ends at the first point beyond
    !> table_gap): the gap g itself, or, for the kinematic call's first try
@@ -533,14 +539,8 @@ contains
          if (r%deta <= min_deta .or. w%deta <= min_deta) exit
          rows(:, j) = strip_row(prepared, r, w, theta, gap0)
          n_rows = j
-         if (.not. cut) then
-            if (rows(1, j) >= top) then
-               top = rows(1, j); j_top = j
-            else if (rows(1, j) < top - prepared%options%merge_gap) then
-               cut = .true.
-               n_basin = j_top
-            end if
-         end if
+         if (.not. cut) call track_basin(rows(1, j), j, prepared%options%merge_gap, top, j_top, &
+            cut, n_basin)
          if (table_reach(prepared, rows(1, j), gap0, tan(theta), rows(7, j)) > end_gap) exit
       end do
       if (.not. cut) n_basin = n_rows

@@ -161,6 +161,8 @@ contains
       if (allocated(error)) return
       call check_contact_options(options, error)
       if (allocated(error)) return
+      call check_builtin_cant(rail, track, error)
+      if (allocated(error)) return
       prepared%track = track
       prepared%options = options
       call prepared%rail%fit(rail, options%l_filt_rail, error)
@@ -183,6 +185,23 @@ contains
          minval(prepared%rail_y), options%sample_step, .false., prepared%rail_env, &
          prepared%rail_env_s, prepared%rail_env_covered)
    end subroutine prepare_profiles
+
+   !> The built-in canted rail is canted by its name: with a track that cants the rail again (an
+   !> inclination and rail_canted false) the head would lean 1:20, silently. Refused, saying
+   !> what to set (a measured or other file gets the app's profile note instead, which looks
+   !> at the head's shape).
+   pure subroutine check_builtin_cant(rail, track, error)
+      type(profile_type), intent(in) :: rail
+      type(track_type), intent(in) :: track
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. allocated(rail%source)) return
+      if (rail%source /= 'builtin:UIC60-canted') return
+      if (track%rail_canted .or. track%rail_inclination == 0.0_wp) return
+      call fatal_error(error, "rail 'builtin:UIC60-canted' is the UIC60 head canted 1:40 "// &
+         'already, and the track cants the rail by its inclination again: set the track''s '// &
+         "rail_canted (&track rail_canted = .true.; shcontact_set_track's rail_canted = 1), or "// &
+         "take 'builtin:UIC60'", stat_invalid_input)
+   end subroutine check_builtin_cant
 
    !> Fit and sample only the wheel of already prepared profiles (the rail, its placement and
    !> its samples stay): the wheel spline, the tape-circle point (y_tape, z_tape) and the dense

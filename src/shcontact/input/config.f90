@@ -34,7 +34,7 @@ module shcontact_input_config
       load_mode_vertical, load_mode_shared, curvature_reference, precision_single, precision_double
    use shcontact_input_config_assign, only: read_group_variable, stat_unknown_choice
    use shcontact_input_config_validate, only: validate_config
-   use shcontact_input_config_writer, only: config_namelist
+   use shcontact_input_config_writer, only: config_namelist, with_absolute_profiles
    use shcontact_input_config_load, only: load_config, read_config_file, read_config_text, &
       apply_override
    implicit none
@@ -42,7 +42,7 @@ module shcontact_input_config
 
    public :: case_config_type, sweep_axis_type, case_point_type
    public :: load_config, read_config_file, read_config_text, apply_override, validate_config
-   public :: config_namelist
+   public :: config_namelist, with_absolute_profiles
    public :: n_sweep_axes, sweep_axis_names, axis_geometry, axis_load, axis_tangential
    public :: path_len, name_len, max_sweep_values
    public :: case_point_value, case_point_label, is_kinematic_input

@@ -6,12 +6,13 @@
 !> 2. every coordinate finite. The test looks at the IEEE exponent bits, never compares or
 !>    computes with the value, so it holds under `-ffast-math` (where `x /= x` and
 !>    `ieee_is_finite` may be folded away) and under `-ffpe-trap=invalid`;
-!> 3. no two consecutive points closer than [[duplicate_distance]]: **duplicates are rejected**,
+!> 3. total arc length within [[min_arc_length]] … [[max_arc_length]] mm (catches m or µm;
+!>    before the duplicates, as in metres distinct points lie closer than their distance);
+!> 4. no two consecutive points closer than [[duplicate_distance]]: **duplicates are rejected**,
 !>    not removed, because a repeated point in a measured file usually means a stitching or
 !>    export error the user should see (SIMPACK's `point.dist.min` removes close points on
 !>    purpose when the file asks for it);
-!> 4. the point order of the canonical form (rail: y(1) < y(n); wheel: y(1) > y(n));
-!> 5. total arc length within [[min_arc_length]] … [[max_arc_length]] mm (catches m or µm);
+!> 5. the point order of the canonical form (rail: y(1) < y(n); wheel: y(1) > y(n));
 !> 6. zig-zag pairs: two consecutive direction changes both larger than [[zigzag_angle]]
 !>    (5π/6) are a stitching error; the two points are replaced by their mean;
 !> 7. no loops: no two non-adjacent segments may cross or touch;
@@ -101,12 +102,14 @@ contains
       if (allocated(error)) return
       call check_finite(profile, lines, error)
       if (allocated(error)) return
+      ! The length unit first: in metres distinct points lie closer than the duplicate
+      ! distance (1e-6 mm), and "remove one of them" would be the wrong advice.
+      call profile%update_arc_length()
+      call check_arc_length(profile, lines, option_prefix, error)
+      if (allocated(error)) return
       call check_duplicates(profile, lines, error)
       if (allocated(error)) return
       call check_order(profile, lines, error)
-      if (allocated(error)) return
-      call profile%update_arc_length()
-      call check_arc_length(profile, lines, option_prefix, error)
       if (allocated(error)) return
       call merge_zigzags(profile, lines)
       call check_count(profile, lines, error)
@@ -172,7 +175,7 @@ contains
          if (hypot(profile%y(i) - profile%y(i - 1), profile%z(i) - profile%z(i - 1)) >= &
             duplicate_distance) cycle
          call fatal_error(error, location(profile, lines, i)//': duplicate point ('// &
-            str_real(profile%y(i))//', '//str_real(profile%z(i))//') repeats the previous one'// &
+            str_real(profile%y(i))//', '//str_real(profile%z(i))//') repeats '// &
             previous_line(lines, i)//'; remove one of them', stat_invalid_input)
          return
       end do
@@ -383,8 +386,10 @@ contains
    pure function previous_line(lines, i) result(text)
       integer, intent(in) :: lines(:), i
       character(len=:), allocatable :: text
-      text = ''
-      if (lines(i - 1) > 0) text = ' (line '//str_int(lines(i - 1))//')'
+      ! "The point of line N": a file read in reverse order (a wheel's .whl) has its
+      ! neighbour on the next line, not the previous one.
+      text = 'the previous one'
+      if (lines(i - 1) > 0) text = 'the point of line '//str_int(lines(i - 1))
    end function previous_line
 
    pure function at_line_text(lines, j) result(text)

@@ -26,7 +26,9 @@
 !>    neighbouring segments — a straight piece of the profile, such as S1002's field-side cone
 !>    or a rail's 1:20 flank — gets equally spaced points again, about as far apart as the
 !>    longer neighbour, so that the spline stays straight along it (with its two end points
-!>    only, a C² spline would bulge there to join the curvature of its neighbours).
+!>    only, a C² spline would bulge there to join the curvature of its neighbours). A skeleton
+!>    of two or three points (a straight or a V-shaped profile) is filled to four, the fewest a
+!>    profile has.
 !>
 !> A densely resampled copy of a profile has the same skeleton as the profile, hence the same
 !> points and the same contact; running it again on its own result changes nothing (the points
@@ -46,6 +48,8 @@ module shcontact_profile_collinear
    real(wp), parameter :: long_segment_ratio = 4.0_wp
    !> The points filled in are at least this far apart (mm).
    real(wp), parameter :: min_fill_spacing = 0.01_wp
+   !> A skeleton of fewer points is filled in up to this many (a profile has at least four).
+   integer, parameter :: min_points = 4
 
 contains
 
@@ -192,8 +196,14 @@ contains
 
       m = size(y) - 1
       allocate (pieces(m), source=1)
-      if (m < 2) return
+      if (m < 1) return
       length = hypot(y(2:) - y(:m), z(2:) - z(:m))
+      if (m == 1) then
+         ! A straight profile (a cone, a flat rail head): its end points and two between, the
+         ! fewest points a profile has (doc/profiles.md; a cleaned file then reads back).
+         pieces(1) = min_points - 1
+         return
+      end if
       do i = 1, m
          neighbour = 0.0_wp
          if (i > 1) neighbour = length(i - 1)
@@ -201,6 +211,11 @@ contains
          if (length(i) > long_segment_ratio*neighbour) pieces(i) = &
             nint(length(i)/max(neighbour, min_fill_spacing))
       end do
+      ! Two straight pieces: the longer one halved, so that there are min_points points.
+      if (sum(pieces) + 1 < min_points) then
+         i = maxloc(length, 1)
+         pieces(i) = pieces(i) + min_points - 1 - sum(pieces)
+      end if
    end function segment_pieces
 
 end module shcontact_profile_collinear

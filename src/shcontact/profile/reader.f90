@@ -335,15 +335,20 @@ contains
       if (kind == profile_kind_wheel) vertical_sense = -vertical_sense
    end function vertical_sense
 
-   !> A right wheel's flange (its lowest point, largest z) lies on the track-centre side.
+   !> A right wheel's flange (its lowest point, largest z) lies on the track-centre side. A
+   !> flat profile (every point at one height, a cylinder) has no lowest point: its shape does
+   !> not decide, and it passes.
    subroutine check_flange_side(filename, points, prefix, error)
       character(len=*), intent(in) :: filename
       character(len=*), intent(in), optional :: prefix
       type(point_list), intent(in) :: points
       type(error_type), allocatable, intent(out) :: error
+      !> Heights within this of each other are one height (mm).
+      real(wp), parameter :: flat_tolerance = 1.0e-6_wp
       integer :: n, i
       real(wp) :: middle
       n = points%n
+      if (maxval(points%z(:n)) - minval(points%z(:n)) <= flat_tolerance) return
       i = maxloc(points%z(:n), dim=1)
       middle = 0.5_wp*(minval(points%y(:n)) + maxval(points%y(:n)))
       if (points%y(i) <= middle) return

@@ -33,7 +33,10 @@ module shcontact_tangential_options
    type :: tangential_options_type
       !> [[method_fastsim_sh]] (default) or [[method_fastsim]].
       integer :: method = default_method
-      !> Traction bound, `bound_*` (default [[bound_weighted]], decision 9).
+      !> Traction bound, `bound_*` (default [[bound_weighted]], decision 9: FASTSIM_SH's). With
+      !> method_fastsim give it too: Kalker's FASTSIM is bound_parabolic (the namelist and the
+      !> keyed interfaces default to it there); W1 on an ellipse makes the creep coefficients
+      !> 1.39 times Kalker's.
       integer :: bound = default_bound
       !> Local spin model, `spin_*`. Default [[spin_uniform]]: it fits the exact theory best for
       !> prescribed creepages (doc/validation.md); use [[spin_additive]] (doc/theory.md decision 10)

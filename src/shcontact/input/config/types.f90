@@ -15,7 +15,8 @@ module shcontact_input_config_types
    use shcontact_input_config_choices, only: side_right, kinematics_off, kinematics_on, &
       load_mode_force, curvature_local, curvature_reference, tables_planar, tables_conformal, precision_double
    use shcontact_normal_options, only: normal_options_type
-   use shcontact_tangential_options, only: tangential_options_type
+   use shcontact_tangential_options, only: tangential_options_type, method_fastsim, &
+      bound_parabolic
    use shcontact_pipeline_preset, only: default_preset, preset_strips, preset_elements, &
       preset_table_step
    use shcontact_input_config_sweep, only: sweep_config_type, case_point_type, sweep_axis_names, &
@@ -360,6 +361,11 @@ contains
       options = config%tangential%tangential_options_type
       if (origin(config, 'tangential%n_elements') == 'default') &
          options%n_elements = preset_elements(config%normal%preset)
+      ! Classical FASTSIM is Kalker's: its parabolic traction bound, unless the case chooses
+      ! another (the default W1 bound belongs to FASTSIM_SH's strips; on an ellipse it makes
+      ! Kalker's creep coefficients 1.39 times too large, doc/theory.md §6.4).
+      if (options%method == method_fastsim .and. origin(config, 'tangential%bound') == &
+         'default') options%bound = bound_parabolic
    end function tangential_options_of
 
    !> The code held by the choice variable `group%name` (kind `k_choice` of the variable table);

@@ -130,6 +130,7 @@ contains
       tangential = tangential_options_of(config)
       config%normal%n_strips = normal%n_strips
       config%tangential%n_elements = tangential%n_elements
+      config%tangential%bound = tangential%bound
    end subroutine resolve_preset
 
    !> n_strips × n_elements within [[max_grid_cells]], checked before anything is allocated.

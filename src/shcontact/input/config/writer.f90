@@ -1,7 +1,8 @@
 !> The resolved configuration printed as a namelist: every variable, one per line, with its
 !> units and help as a comment; reading the text back gives the same configuration.
 module shcontact_input_config_writer
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, to_lower
+   use shcontact_core_files, only: canonical_path
    use shcontact_core_buffer, only: text_buffer_type
    use shcontact_core_text, only: format_real, quote_string
    use shcontact_input_config_limits, only: max_fields
@@ -16,9 +17,22 @@ module shcontact_input_config_writer
    implicit none
    private
 
-   public :: config_namelist, variable_value_text, option_list
+   public :: config_namelist, variable_value_text, option_list, with_absolute_profiles
 
 contains
+
+   !> The configuration with its profile files named by absolute paths (built-in names kept),
+   !> so that its namelist is a case file that reproduces the run wherever it is saved (a case
+   !> file's relative names are read from its own folder).
+   function with_absolute_profiles(config) result(resolved)
+      type(case_config_type), intent(in) :: config
+      type(case_config_type) :: resolved
+      resolved = config
+      if (index(to_lower(adjustl(config%profiles%wheel)), 'builtin:') /= 1) &
+         resolved%profiles%wheel = canonical_path(trim(config%profiles%wheel))
+      if (index(to_lower(adjustl(config%profiles%rail)), 'builtin:') /= 1) &
+         resolved%profiles%rail = canonical_path(trim(config%profiles%rail))
+   end function with_absolute_profiles
 
    !> The resolved configuration as namelist text (every variable, one per line, with its
    !> units as a comment); reading it back gives the same configuration. In kinematic mode the
