@@ -65,8 +65,8 @@ contains
       integer, intent(in) :: k
       character(len=:), allocatable :: text
       text = 'between points '//str_format(real(k, wp), '(f0.0)')//' and '// &
-         str_format(real(k + 1, wp), '(f0.0)')//' of '//str_format(real(size(profile%y), wp), &
-         '(f0.0)')//' (y = '//str_format(profile%y(k), '(f0.2)')//' to '// &
+         str_format(real(k + 1, wp), '(f0.0)')//' of the '// &
+         str_format(real(size(profile%y), wp), '(f0.0)')//' read (y = '//str_format(profile%y(k), '(f0.2)')//' to '// &
          str_format(profile%y(k + 1), '(f0.2)')//' mm)'
    end function between_points
 
@@ -75,8 +75,8 @@ contains
       type(profile_type), intent(in) :: profile
       integer, intent(in) :: k
       character(len=:), allocatable :: text
-      text = 'at point '//str_format(real(k, wp), '(f0.0)')//' of '// &
-         str_format(real(size(profile%y), wp), '(f0.0)')//' (y, z = '// &
+      text = 'at point '//str_format(real(k, wp), '(f0.0)')//' of the '// &
+         str_format(real(size(profile%y), wp), '(f0.0)')//' after clean-up (y, z = '// &
          str_format(profile%y(k), '(f0.3)')//', '//str_format(profile%z(k), '(f0.3)')//' mm)'
    end function at_point
 

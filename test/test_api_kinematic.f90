@@ -272,9 +272,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(wheelset_state_type) :: s
       double precision :: values(29), nan
-      integer :: ih, istat
+      integer :: ih, istat, k, n_taken
+      integer, allocatable :: taken(:)
       character(len=512) :: msg
 
+      allocate (taken(max_handles))
       nan = ieee_value(1.0_wp, ieee_quiet_nan)
       s = kinematic_case_state
       call shc_create(ih, 'builtin:S1002', 'builtin:UIC60', 1, istat)
@@ -322,6 +324,22 @@ contains
       call bad_handle(max_handles + 1)
       if (allocated(error)) return
       call bad_handle(ih)
+      if (allocated(error)) return
+      ! A full table: shc_create returns handle 0, and the message of handle 0 says why
+      ! (failed creations hold their handles too, cheaply: a missing profile).
+      n_taken = 0
+      do k = 1, max_handles + 1
+         call shc_create(ih, 'no-such-wheel.txt', 'builtin:UIC60', 1, istat)
+         if (ih == 0) exit
+         n_taken = n_taken + 1
+         taken(n_taken) = ih
+      end do
+      call shc_errmsg(0, msg)
+      do k = 1, n_taken
+         call shc_destroy(taken(k), istat)
+      end do
+      call check(error, ih == 0 .and. index(msg, 'handles in use') > 0, &
+         message='a full handle table: '//trim(msg))
    contains
       subroutine bad(y_ws, yaw, v_forward, mode, stat, word)
          real(wp), intent(in) :: y_ws, yaw, v_forward

@@ -293,11 +293,12 @@ contains
       ! The other lines doc/profiles.md quotes.
       call expect_in(error, text, 'points     147 read, 110 after clean-up', 'avg_HR points')
       if (allocated(error)) return
-      call expect_in(error, text, 'gap        largest 0.771 mm between points 1 and 2 of 147 '// &
+      call expect_in(error, text, 'gap        largest 0.771 mm between points 1 and 2 of the 147 read '// &
          '(y = -46.59 to -46.46 mm), median spacing 0.500 mm'//new_line('a'), 'avg_HR gap')
       if (allocated(error)) return
       call expect_in(error, text, 'outlier    largest 1.20E-02 mm off the cubic through its '// &
-         'six neighbours (within 25 mm of the running surface) at point 22 of 110 (y, z = '// &
+         'six neighbours (within 25 mm of the running surface) at point 22 of the 110 after '// &
+         'clean-up (y, z = '// &
          '-44.510, 12.400 mm)'//new_line('a'), 'avg_HR outlier')
    end subroutine test_sample_files
 

@@ -422,12 +422,29 @@ contains
       character(len=*), intent(out) :: msg
       if (valid(ihandle)) then
          msg = context_message(slots(ihandle)%ctx)
+      else if (ihandle == 0 .and. all_in_use()) then
+         msg = 'handle 0: shc_create found all '//str_int(max_handles)//' handles in use; '// &
+            'destroy the handles no longer needed (shc_destroy)'
       else
          msg = 'invalid contact handle '//str_int(ihandle)//': expected a handle from '// &
             'shc_create that was not destroyed (1 to '//str_int(max_handles)// &
             '; shc_create returns 0 when all handles are in use)'
       end if
    end subroutine legacy_message
+
+   !> True when every handle is taken (shc_create then returns handle 0).
+   logical function all_in_use()
+      integer :: i
+      all_in_use = .true.
+      !$omp critical (shcontact_legacy_handles)
+      do i = 1, max_handles
+         if (.not. allocated(slots(i)%ctx)) then
+            all_in_use = .false.
+            exit
+         end if
+      end do
+      !$omp end critical (shcontact_legacy_handles)
+   end function all_in_use
 
    !> True for a handle of a created, not destroyed contact.
    logical function valid(ihandle)
