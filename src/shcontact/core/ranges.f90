@@ -24,7 +24,7 @@ module shcontact_core_ranges
    private
 
    public :: variable_info_type, variables, ranges, find_range, range_key, has_range, &
-      in_range, range_text, check_range, check_int_range
+      in_range, range_text, check_range, check_int_range, check_value_range
    public :: k_real, k_int, k_string, k_logical, k_real_list, k_string_list, k_choice
    public :: max_grid_cells, max_normal_force
 
@@ -356,12 +356,24 @@ contains
       integer :: i
       i = find_range(key)
       if (i == 0) return
-      if (in_range(ranges(i), x)) return
+      call check_value_range(ranges(i), x, label, error)
+   end subroutine check_range
+
+   !> [[check_range]] for a variable's entry itself (no look-up by name: for checks on every
+   !> call, with the entry a named constant of the caller's).
+   pure subroutine check_value_range(r, x, label, error)
+      !> The variable (an entry of [[variables]] with a range).
+      type(variable_info_type), intent(in) :: r
+      !> The value.
+      real(wp), intent(in) :: x
+      !> What to call it in the message.
+      character(len=*), intent(in) :: label
+      type(error_type), allocatable, intent(out) :: error
+      if (in_range(r, x)) return
       ! The numbers as they read back (a value just past a limit must not print as the limit).
       call fatal_error(error, label//' = '//format_real(x)//' is out of range; expected '// &
-         range_text(ranges(i), trim(ranges(i)%name), format_real(ranges(i)%lo), &
-         format_real(ranges(i)%hi)), stat_invalid_input)
-   end subroutine check_range
+         range_text(r, trim(r%name), format_real(r%lo), format_real(r%hi)), stat_invalid_input)
+   end subroutine check_value_range
 
    !> [[check_range]] for an integer input.
    pure subroutine check_int_range(key, n, label, error)

@@ -30,7 +30,7 @@ module shcontact_geometry_kinematics
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_core_text, only: format_real
-   use shcontact_core_ranges, only: check_range
+   use shcontact_core_ranges, only: check_value_range, variable_info_type, variables
    use shcontact_profile_points, only: profile_type
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type
    use shcontact_geometry_track, only: track_type, side_left
@@ -45,6 +45,15 @@ module shcontact_geometry_kinematics
 
    !> Largest |yaw angle| accepted (rad): far beyond the ~10 mrad of a wheelset in a curve.
    real(wp), parameter :: max_yaw = 0.1_wp
+   !> The &kinematics entries of the variable table that [[check_wheelset_state]] checks on every
+   !> call: v_forward, pitch_rate, v_lateral, v_vertical, roll_rate, yaw_rate.
+   type(variable_info_type), parameter :: velocity_range(6) = [ &
+      variables(findloc(variables%name, 'v_forward', 1, mask=variables%group == 'kinematics')), &
+      variables(findloc(variables%name, 'pitch_rate', 1, mask=variables%group == 'kinematics')), &
+      variables(findloc(variables%name, 'v_lateral', 1, mask=variables%group == 'kinematics')), &
+      variables(findloc(variables%name, 'v_vertical', 1, mask=variables%group == 'kinematics')), &
+      variables(findloc(variables%name, 'roll_rate', 1, mask=variables%group == 'kinematics')), &
+      variables(findloc(variables%name, 'yaw_rate', 1, mask=variables%group == 'kinematics'))]
    !> Profile slopes |dz/dy| are limited to this (84°) in the contact locus, so that the
    !> near-vertical flange back, which never touches the rail, does not run off (tan θ stays
    !> ≤ max_slope·sin ψ).
@@ -103,16 +112,16 @@ contains
       end if
       if (allocated(error)) return
       ! The ranges of the case file's &kinematics (doc/app.md), on every path.
-      call check_range('kinematics%v_forward', state%v_forward, 'wheelset forward speed', error)
-      if (.not. allocated(error)) call check_range('kinematics%pitch_rate', state%pitch_rate, &
+      call check_value_range(velocity_range(1), state%v_forward, 'wheelset forward speed', error)
+      if (.not. allocated(error)) call check_value_range(velocity_range(2), state%pitch_rate, &
          'wheelset pitch rate', error)
-      if (.not. allocated(error)) call check_range('kinematics%v_lateral', state%v_lateral, &
+      if (.not. allocated(error)) call check_value_range(velocity_range(3), state%v_lateral, &
          'wheelset lateral velocity', error)
-      if (.not. allocated(error)) call check_range('kinematics%v_vertical', state%v_vertical, &
+      if (.not. allocated(error)) call check_value_range(velocity_range(4), state%v_vertical, &
          'wheelset vertical velocity', error)
-      if (.not. allocated(error)) call check_range('kinematics%roll_rate', state%roll_rate, &
+      if (.not. allocated(error)) call check_value_range(velocity_range(5), state%roll_rate, &
          'wheelset roll rate', error)
-      if (.not. allocated(error)) call check_range('kinematics%yaw_rate', state%yaw_rate, &
+      if (.not. allocated(error)) call check_value_range(velocity_range(6), state%yaw_rate, &
          'wheelset yaw rate', error)
    end subroutine check_wheelset_state
 
