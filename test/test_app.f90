@@ -722,6 +722,17 @@ contains
          call expect_in(error, file_text(dir//'/dump.txt'), "/built-in/S1002.txt'", &
             'the stored namelist names the wheel file')
          if (allocated(error)) return
+         ! A symbolic link keeps its own name (its extension chooses the format of 'auto').
+         call shell('cd '//dir//'/sub && ln -s ../built-in/S1002.txt w_link.txt', stat)
+         stat = run_program(dir//'/sub', 'run -q -o l.h5 --set profiles%wheel=w_link.txt')
+         call check(error, stat, 0, message='run with a linked profile: '// &
+            file_text(dir//'/sub/err.txt'))
+         if (allocated(error)) return
+         call shell('cd '//dir//' && h5dump -y -w 0 -d /input/namelist sub/l.h5 > dump.txt', &
+            stat)
+         call expect_in(error, file_text(dir//'/dump.txt'), "/sub/w_link.txt'", &
+            'the stored namelist names the link, not its target')
+         if (allocated(error)) return
       end if
       stat = run_program(dir, 'profiles')
       call check(error, stat, 1, message='profiles without --write')

@@ -452,6 +452,16 @@ contains
          end do
          call check(error, most > 1.0e-3_wp, message='the planar table is another table')
       end associate
+      ! longitudinal_curvature = 'reference': A = cos γ₀/(2 r_w) on every point, as on planar
+      ! tables (it took the rail's local angle).
+      call patches_for(circle_wheel(r1, 30.0_wp, 601), arc_rail(r2, -1.6_wp, 1.4_wp, 351), &
+         upright_track(), position, patches, error, contact_options_type(conformal_tables=.true., &
+         a_reference_normal=.true.))
+      if (allocated(error)) return
+      associate (p => patches(1))
+         call check(error, maxval(abs(2.0_wp*p%r_wheel*p%curv_a - cos(p%gamma0))) < 1.0e-12_wp, &
+            message='A with cos(gamma0) on conformal tables')
+      end associate
    end subroutine test_conformal_circles
 
    !> A conical wheel (slope tan α, α = −0.05) on a cylindrical rail head (R = 80): the contact

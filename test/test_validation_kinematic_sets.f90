@@ -110,6 +110,7 @@ contains
          new_unittest('root_conformal', test_root_conformal), &
          new_unittest('root_conformal_tables', test_root_conformal_tables), &
          new_unittest('root_conformal_tables_normal_yaw_0', test_root_tables_normal), &
+         new_unittest('conformal_tables_history_free', test_conformal_history), &
          new_unittest('flange_normal_force_7mm', test_flange_normal_force), &
          new_unittest('flange_creepages_at_contacts_point', test_flange_creepages), &
          new_unittest('worn_pair_every_state_converges', test_worn_every_state)]
@@ -164,6 +165,38 @@ contains
          'max |dF_n|/F_n '//str_real(fn(2))//', |dp_max|/p_max '//str_real(pmax(2))// &
          ' (expected to miss, or the test no longer tells the tables apart)')
    end subroutine test_root_tables_normal
+
+   !> A solve on conformal tables does not depend on the solver's history: a fresh solver and one
+   !> that solved another state first give the same bits (the coupling's closure took the
+   !> table's kind from the previous solve's strips).
+   subroutine test_conformal_history(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: fresh, used
+      type(contact_result_type) :: a, b
+      type(lib_error), allocatable :: lib
+      type(wheelset_state_type) :: first, second
+      first = wheelset_state_type(y_ws=6.62_wp, yaw=0.0_wp, v_forward=2000.0_wp, &
+         pitch_rate=-2000.0_wp/460.0_wp)
+      second = wheelset_state_type(y_ws=6.75_wp, yaw=-0.008_wp, v_forward=2000.0_wp, &
+         pitch_rate=-2000.0_wp/460.0_wp)
+      call set_solver(fresh, 'builtin:S1002', 'builtin:UIC60-canted', lib, &
+         contact=contact_options_type(conformal_tables=.true.))
+      if (.not. allocated(lib)) call set_solver(used, 'builtin:S1002', 'builtin:UIC60-canted', &
+         lib, contact=contact_options_type(conformal_tables=.true.))
+      if (.not. allocated(lib)) call used%solve_kinematic(first, contact_load_type( &
+         load_vertical_force, vertical_load), a, lib)
+      if (.not. allocated(lib)) call used%solve_kinematic(second, contact_load_type( &
+         load_vertical_force, vertical_load), a, lib)
+      if (.not. allocated(lib)) call fresh%solve_kinematic(second, contact_load_type( &
+         load_vertical_force, vertical_load), b, lib)
+      if (allocated(lib)) then
+         call test_failed(error, lib%message)
+         return
+      end if
+      call check(error, a%main%fn == b%main%fn .and. a%main%fx == b%main%fx .and. &
+         a%main%fy == b%main%fy .and. a%main%mz == b%main%mz .and. a%main%area == &
+         b%main%area, message='conformal tables: the result depends on the state solved before')
+   end subroutine test_conformal_history
 
    !> Largest |ΔF_n|/F_n and |Δp_max|/p_max against CONTACT's conformal approach over the
    !> flange root's yaw-0 cases at Y_WS ≤ 6.64 mm.

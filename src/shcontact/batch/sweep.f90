@@ -631,7 +631,7 @@ contains
       type(run_setup_type), intent(in) :: setup
       character(len=:), allocatable :: key
       type(case_config_type) :: c
-      c = with_absolute_profiles(config)
+      c = with_absolute_profiles(config, canonical=.true.)
       c%output%file = '-'
       key = config_namelist(c)//'! profiles as read: wheel '// &
          fingerprint([setup%wheel%y, setup%wheel%z])//', rail '// &

@@ -10,7 +10,7 @@ module shcontact_core_files
    private
 
    public :: rename_file, delete_file, make_directory, remove_directory, file_exists
-   public :: directory_part, join_path, is_absolute, process_id, canonical_path
+   public :: directory_part, join_path, is_absolute, process_id, canonical_path, absolute_path
    public :: path_kind, lock_file, unlock_file, pause_briefly, peak_memory_kib
    public :: lock_taken, lock_busy, lock_missing
    public :: open_work_folder, folder_made, folder_existing, folder_busy, folder_unlocked, &
@@ -174,6 +174,19 @@ contains
       is_absolute = .false.
       if (len(p) > 0) is_absolute = p(1:1) == '/'
    end function is_absolute
+
+   !> The path made absolute by the working directory, its own name kept (a symbolic link stays
+   !> the link: its name may choose a profile format by its extension).
+   function absolute_path(path) result(absolute)
+      !> The path.
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: absolute
+      if (is_absolute(path)) then
+         absolute = trim(adjustl(path))
+      else
+         absolute = join_path(canonical_path('.'), trim(adjustl(path)))
+      end if
+   end function absolute_path
 
    !> The absolute path without symbolic links, `.` or `..` (POSIX realpath); the path itself
    !> when it cannot be resolved (e.g. it does not exist). Two names of one file give the same

@@ -731,7 +731,13 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: unit, stat, k, i
       character(len=256) :: msg
+      character(len=:), allocatable :: frame
 
+      frame = 'in the tangent plane, the gap along its normal'
+      if (size(patches) > 0) then
+         if (patches(1)%conformal) frame = 'along the rail (its arc length; conformal '// &
+            'tables), the gap along each point''s rail normal'
+      end if
       open (newunit=unit, file=filename, status='replace', action='write', iostat=stat, &
          iomsg=msg)
       if (stat /= 0) then
@@ -740,7 +746,7 @@ contains
       end if
       write (unit, '(a)', iostat=stat) &
          '# shcontact contact-patch geometry (doc/theory.md §4.1, §5.4); y from the reference '// &
-         'point towards the field side, in the tangent plane', &
+         'point towards the field side, '//frame, &
          '# gamma: local contact angle, CONTACT sign (right wheel tread < 0); '// &
          'delta_r = r_w - r0', &
          '# columns: patch  y[mm]  gap[mm]  A[1/mm]  B[1/mm]  gamma[rad]  r_w[mm]  delta_r[mm]'

@@ -351,11 +351,13 @@ contains
    !> normal (from the pair's last wheel point), the gap along that normal less gap0, and the
    !> wheel's angle, rolling radius and curvature A there. `ok` false where the wheel is not
    !> found on the normal or turns back in the rail's local frame.
-   pure subroutine conformal_row(prepared, wheel_map, pair, gap0, row, ok)
+   pure subroutine conformal_row(prepared, wheel_map, pair, gap0, theta0, row, ok)
       type(prepared_profiles_type), intent(in) :: prepared
       type(rigid_map_type), intent(in) :: wheel_map
       type(normal_pair_type), intent(inout) :: pair
-      real(wp), intent(in) :: gap0
+      !> The reference point's gap and contact angle γ₀ (A with cos γ₀ under the option
+      !> a_reference_normal).
+      real(wp), intent(in) :: gap0, theta0
       real(wp), intent(out) :: row(row_count)
       logical, intent(out) :: ok
       type(frame_point_type) :: w
@@ -366,8 +368,11 @@ contains
       row(3) = pair%theta + atan(w%slope)
       row(4) = prepared%track%nominal_radius + w%v - prepared%z_tape
       row(5) = pair%s_r
-      row(6) = curvature_a(prepared%options%a_reference_normal, cos(pair%theta), &
-         sin(pair%theta), w%slope, row(4))
+      if (prepared%options%a_reference_normal) then
+         row(6) = cos(theta0)/(2.0_wp*row(4))
+      else
+         row(6) = curvature_a(.false., cos(pair%theta), sin(pair%theta), w%slope, row(4))
+      end if
       row(7) = tan_gamma(tan(pair%theta), w%slope)
    end subroutine conformal_row
 
@@ -400,7 +405,7 @@ contains
       do j = 1, size(rows, 2)
          p%s_r = pair0%s_r + dir_r*j*step
          if (p%s_r < s_min .or. p%s_r > s_max) exit
-         call conformal_row(prepared, wheel_map, p, gap0, rows(:, j), ok)
+         call conformal_row(prepared, wheel_map, p, gap0, pair0%theta, rows(:, j), ok)
          if (.not. ok) exit
          n_rows = j
          if (.not. cut) call track_basin(rows(1, j), j, prepared%options%merge_gap, top, j_top, &

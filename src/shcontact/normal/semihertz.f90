@@ -249,6 +249,9 @@ contains
       n = options%n_strips
       call reserve_strips(patch, n)
       call clear_totals(patch, prepared%gamma0, prepared%r0)
+      ! With gamma_plane the coupling's closure needs the table's kind (before
+      ! refer_to_loaded_point, which sets it again).
+      patch%conformal = prepared%conformal
       patch%approach = approach
       call contact_interval(prepared, approach, n, touching, y_lo, dy, error)
       if (.not. touching .or. allocated(error)) then

@@ -323,6 +323,7 @@ contains
       dst%r0 = src%r0
       dst%y_shift = src%y_shift
       dst%gamma_plane = src%gamma_plane
+      dst%conformal = src%conformal
       call copy_vector(src%y, dst%y)
       call copy_vector(src%a, dst%a)
       call copy_vector(src%k, dst%k)

@@ -2,7 +2,7 @@
 !> units and help as a comment; reading the text back gives the same configuration.
 module shcontact_input_config_writer
    use shcontact_core_strings, only: str_int, to_lower
-   use shcontact_core_files, only: canonical_path
+   use shcontact_core_files, only: canonical_path, absolute_path
    use shcontact_core_buffer, only: text_buffer_type
    use shcontact_core_text, only: format_real, quote_string
    use shcontact_input_config_limits, only: max_fields
@@ -23,15 +23,31 @@ contains
 
    !> The configuration with its profile files named by absolute paths (built-in names kept),
    !> so that its namelist is a case file that reproduces the run wherever it is saved (a case
-   !> file's relative names are read from its own folder).
-   function with_absolute_profiles(config) result(resolved)
+   !> file's relative names are read from its own folder). Symbolic links are kept as links
+   !> (their names choose the format of `'auto'`), unless `canonical` (POSIX realpath: two
+   !> names of one file give one name, for the checkpoint's key).
+   function with_absolute_profiles(config, canonical) result(resolved)
       type(case_config_type), intent(in) :: config
+      logical, intent(in), optional :: canonical
       type(case_config_type) :: resolved
+      logical :: real_paths
+      real_paths = .false.
+      if (present(canonical)) real_paths = canonical
       resolved = config
       if (index(to_lower(adjustl(config%profiles%wheel)), 'builtin:') /= 1) &
-         resolved%profiles%wheel = canonical_path(trim(config%profiles%wheel))
+         resolved%profiles%wheel = named(trim(config%profiles%wheel))
       if (index(to_lower(adjustl(config%profiles%rail)), 'builtin:') /= 1) &
-         resolved%profiles%rail = canonical_path(trim(config%profiles%rail))
+         resolved%profiles%rail = named(trim(config%profiles%rail))
+   contains
+      function named(path) result(full)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable :: full
+         if (real_paths) then
+            full = canonical_path(path)
+         else
+            full = absolute_path(path)
+         end if
+      end function named
    end function with_absolute_profiles
 
    !> The resolved configuration as namelist text (every variable, one per line, with its
