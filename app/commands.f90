@@ -125,6 +125,10 @@ contains
       call run_sweep(config, options, outcome, error)
       call end_progress()
       if (allocated(error)) then
+         ! Every case failed: their lines still go to stdout (a shell loop over runs keeps
+         ! one line per run, the failed one with its message), then the first failure's status.
+         if (every_case_failed(outcome)) call print_summary(summary_format(cli), &
+            cli%csv_units, config, outcome)
          status = report_error(error)
          return
       end if
@@ -143,7 +147,11 @@ contains
             where_to//')'
          status = exit_some_failed
       end if
-      if (.not. cli%quiet) then
+      if (.not. cli%quiet .and. outcome%finished_before) then
+         write (error_unit, '(a)') 'shcontact: nothing to resume: '//outcome%output// &
+            ' already holds every case of this run ('//str_int(outcome%last - &
+            outcome%first + 1 - size(outcome%failures))//' solved); it is left as it is'
+      else if (.not. cli%quiet) then
          i = outcome%last - outcome%first + 1
          where_to = '; results in '//outcome%output
          if (cli%no_output) where_to = '; no result file (--no-output)'
@@ -212,6 +220,16 @@ contains
       if (outcome%n_resumed > 0) text = ' ('//str_int(outcome%n_resumed)// &
          ' from the checkpoint)'
    end function resumed_note
+
+   !> Whether the run solved its cases and every one of them failed (the outcome then holds
+   !> their summaries and failures, but no file was written).
+   pure logical function every_case_failed(outcome)
+      type(sweep_outcome_type), intent(in) :: outcome
+      every_case_failed = .false.
+      if (.not. (allocated(outcome%summaries) .and. allocated(outcome%failures))) return
+      if (outcome%last < outcome%first) return
+      every_case_failed = size(outcome%failures) == outcome%last - outcome%first + 1
+   end function every_case_failed
 
    !> The summary format: --format, else none with -q, else text.
    function summary_format(cli) result(format)
@@ -285,12 +303,22 @@ contains
       !> The command line.
       type(cli_type), intent(in) :: cli
       type(error_type), allocatable :: error
+      integer :: n_failed, n_merged
       status = 0
       call merge_result_files(cli%inputs%items(1)%text, cli%inputs%items(2:cli%inputs%n), &
-         command_line(), iso_timestamp(), error, force=cli%force)
+         command_line(), iso_timestamp(), error, force=cli%force, n_failed=n_failed, &
+         n_merged=n_merged)
       if (allocated(error)) then
          status = report_error(error)
          return
+      end if
+      ! The shards' failed cases are the merged run's: the status a run of the whole sweep
+      ! would give (a pipeline that checks only the merge sees them).
+      if (n_failed > 0) then
+         write (error_unit, '(a)') 'shcontact: '//str_int(n_failed)//' of '// &
+            str_int(n_merged)//' case(s) failed (see /failures in '// &
+            cli%inputs%items(1)%text//')'
+         status = exit_some_failed
       end if
       if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: merged '// &
          str_int(cli%inputs%n - 1)//' file(s) into '//cli%inputs%items(1)%text

@@ -10,16 +10,17 @@ module shcontact_app_environment
 
 contains
 
-   !> The shard of this task of a Slurm job array: SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN + 1
-   !> (MIN defaults to 1) of SLURM_ARRAY_TASK_COUNT. A usage error outside a job array or for a
-   !> task outside 1..COUNT (a job array with gaps or a step).
+   !> The shard of this task of a Slurm job array: (SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN)/
+   !> SLURM_ARRAY_TASK_STEP + 1 (MIN defaults to 1, STEP to 1) of SLURM_ARRAY_TASK_COUNT. A usage
+   !> error outside a job array, for a task outside 1..COUNT, and in every task of an array
+   !> whose tasks are not one evenly spaced range (MAX − MIN ≠ (COUNT − 1) STEP: a list).
    subroutine slurm_shard(shard, n_shards, error)
       !> This task's shard and the number of shards.
       integer, intent(out) :: shard, n_shards
       !> stat_usage when the variables do not give a shard.
       type(error_type), allocatable, intent(out) :: error
-      integer :: id, first, count
-      logical :: ok_id, ok_count, ok_first
+      integer :: id, first, count, step, last
+      logical :: ok_id, ok_count, ok_first, ok_step, ok_last
       shard = 1
       n_shards = 1
       call integer_variable('SLURM_ARRAY_TASK_COUNT', count, ok_count)
@@ -33,9 +34,26 @@ contains
       end if
       call integer_variable('SLURM_ARRAY_TASK_MIN', first, ok_first)
       if (.not. ok_first) first = 1
-      shard = id - first + 1
+      ! A stepped array (--array=1-7:2) numbers its tasks MIN, MIN + STEP, ...
+      call integer_variable('SLURM_ARRAY_TASK_STEP', step, ok_step)
+      if (.not. ok_step) step = 1
+      step = max(step, 1)
+      shard = (id - first)/step + 1
       n_shards = count
-      if (count < 1 .or. shard < 1 .or. shard > n_shards) then
+      ! The tasks must be that progression and all of it (a list such as --array=1,3,7 is not):
+      ! every task checks it, so that an array either runs whole or not at all.
+      call integer_variable('SLURM_ARRAY_TASK_MAX', last, ok_last)
+      if (ok_last .and. count >= 1) then
+         if (last - first /= (count - 1)*step) then
+            call fatal_error(error, '--shard slurm: the job array''s tasks '// &
+               str_int(first)//' ... '//str_int(last)//' (SLURM_ARRAY_TASK_MIN, _MAX) with '// &
+               'step '//str_int(step)//' are not '//str_int(count)// &
+               ' evenly spaced tasks (SLURM_ARRAY_TASK_COUNT); use a range such as --array=1-'// &
+               str_int(count)//', or give --shard I/N', stat_usage)
+            return
+         end if
+      end if
+      if (count < 1 .or. shard < 1 .or. shard > n_shards .or. mod(id - first, step) /= 0) then
          call fatal_error(error, '--shard slurm: SLURM_ARRAY_TASK_ID = '//str_int(id)// &
             ' (SLURM_ARRAY_TASK_MIN = '//str_int(first)//') does not give a shard of '// &
             str_int(count)//' (use a contiguous job array, e.g. --array=1-'// &
@@ -52,7 +70,9 @@ contains
       character(len=:), allocatable :: first
       integer :: length, stat, n
       call get_environment_variable('OMP_NUM_THREADS', buf, length, stat)
-      if (stat == 1 .or. length == 0) return
+      ! Unset: the run time's default. Set but empty (OMP_NUM_THREADS=$UNSET in a job script)
+      ! is a typo like any other value that is not a number.
+      if (stat == 1) return
       first = trim(adjustl(buf(1:min(length, len(buf)))))
       if (index(first, ',') > 0) first = trim(first(:index(first, ',') - 1))
       n = 0

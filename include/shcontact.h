@@ -284,7 +284,7 @@ int shcontact_create_wheelset(shcontact_contact **handle, const char *wheel, con
  * totals[4] receives the forces on the wheelset in the true track frame, F_x, F_y (towards the
  * right rail's field side), F_z (z down) (N), and their moment M_z about the vertical axis
  * through the wheelset centre (N mm; the patches' spin moments not included); zeros on failure.
- * With SHCONTACT_LOAD_VERTICAL_FORCE a load of 0 or less lifts that wheel: no contact, its
+ * With SHCONTACT_LOAD_VERTICAL_FORCE a load below 1 N (0 or less too) lifts that wheel: no contact, its
  * values all zero (n_patches 0), the other wheel solved as usual.
  */
 int shcontact_solve_wheelset(shcontact_contact *handle, double y_ws, double yaw, double roll,

@@ -168,6 +168,7 @@ contains
       integer :: stat
       character(len=:), allocatable :: prefix
       prefix = 'env -u SLURM_ARRAY_TASK_ID -u SLURM_ARRAY_TASK_COUNT -u SLURM_ARRAY_TASK_MIN '// &
+         '-u SLURM_ARRAY_TASK_MAX -u SLURM_ARRAY_TASK_STEP '// &
          'SOURCE_DATE_EPOCH=1700000000 OMP_NUM_THREADS=2 '
       if (present(env)) prefix = prefix//env//' '
       call shell('cd '//dir//' && '//prefix//program_path()//' '//args// &

@@ -67,6 +67,8 @@ contains
          new_unittest('run_never_writes_its_inputs', test_run_inputs_kept), &
          new_unittest('stdout_write_error_is_status_3', test_stdout_full), &
          new_unittest('shard_of_failed_cases_writes_its_file', test_failed_shard), &
+         new_unittest('every_case_failed_prints_its_lines', test_every_case_failed_lines), &
+         new_unittest('resume_of_a_finished_run', test_resume_finished_run), &
          new_unittest('check_output_reproduces_elsewhere', test_check_elsewhere), &
          new_unittest('headline_example_is_the_default', test_headline_default) &
          ]
@@ -214,12 +216,85 @@ contains
       call check(error, file_exists(dir//'/f-shard1of3.h5'), message='shard 1, every case '// &
          'failed: no file')
       if (allocated(error)) return
+      ! The merge gives the unsharded run's status 4 and says how many failed (it exited 0
+      ! and said nothing: a pipeline that checks only the merge saw a clean result).
       call run_expect(error, dir, 'merge -q m.h5 f-shard1of3.h5 f-shard2of3.h5 '// &
-         'f-shard3of3.h5', 0, out, err)
+         'f-shard3of3.h5', 4, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: 5 of 7 case(s) failed (see /failures in m.h5)', &
+         'the merge names the failed cases')
       if (allocated(error)) return
       call shell('h5diff -q --exclude-attribute=/ '//dir//'/m.h5 '//dir//'/f.h5', k)
       call check(error, k, 0, message='the merged shards differ from the unsharded run')
    end subroutine test_failed_shard
+
+   !> `--resume` of a finished run (no checkpoint left): the output of this configuration is
+   !> kept as it is, its lines printed from it, status 4 for its failed cases; another run's
+   !> output is refused (status 2), not solved again over it (a resubmitted array task solved
+   !> every finished shard again, and --set changes replaced a finished file silently).
+   subroutine test_resume_finished_run(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err, first
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_resume_finished_run')
+      call write_lines(dir//'/fin.nml', ['&sweep roll = 0.1, 0.0, 0.01 /'])
+      call run_expect(error, dir, 'run fin.nml -o fin.h5 -q --format csv', 4, first, err)
+      if (allocated(error)) return
+      call shell('cd '//dir//' && cp fin.h5 kept.h5')
+      call run_expect(error, dir, 'run fin.nml -o fin.h5 --resume --format csv', 4, out, err)
+      if (allocated(error)) return
+      call check(error, out == first, message='the lines of the finished run: '//out)
+      if (allocated(error)) return
+      call expect_in(error, err, 'nothing to resume: fin.h5 already holds every case of this '// &
+         'run (2 solved)', 'the note')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run fin.nml -o '//dir//'/fin.h5 --resume -q', 4, out, err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run fin.nml -o fin.h5 --resume -q --set '// &
+         'material%friction=0.2', 2, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'holds another run (configurations differ: "friction = 0.3', &
+         'another configuration')
+      if (allocated(error)) return
+      call shell('cmp -s '//dir//'/fin.h5 '//dir//'/kept.h5', stat)
+      call check(error, stat, 0, message='the finished file was rewritten')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/fin.h5.partial'), message='no work folder left')
+      call shell('rm -rf '//dir)
+   end subroutine test_resume_finished_run
+
+   !> A run whose every case fails still prints each case's line with --format csv|json (a
+   !> shell loop over runs keeps one line per run; the single case failing in the contact
+   !> search printed nothing), with the failure's status.
+   subroutine test_every_case_failed_lines(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_every_case_failed_lines')
+      call run_expect(error, dir, 'run -q --no-output --format json --set position%roll=0.1', &
+         6, out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, '{"case":1,"status":6,', 'the single failed case''s line')
+      if (allocated(error)) return
+      call expect_in(error, out, '"fx":null', 'its results null')
+      if (allocated(error)) return
+      call expect_in(error, out, '"message":"contact search: ', 'its message')
+      if (allocated(error)) return
+      call expect_in(error, err, 'shcontact: error: contact search: ', 'the error on stderr')
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --no-output --format csv --set sweep%roll=0.1,0.0995', &
+         6, out, err)
+      if (allocated(error)) return
+      call check(error, count_lines(out), 3, message='header and two lines: '//out)
+      if (allocated(error)) return
+      call expect_in(error, line_of(out, 3), '2,6,0,0,0,', 'the second failed case''s line')
+      if (allocated(error)) return
+      ! A solved case's JSON line has the message key too (null): every line the same keys.
+      call run_expect(error, dir, 'run -q --no-output --format json', 0, out, err)
+      if (allocated(error)) return
+      call expect_in(error, out, ',"message":null}', 'a solved line''s message')
+   end subroutine test_every_case_failed_lines
 
    !> `run --check` output saved next to a case file in another directory reproduces the run:
    !> its profile paths are absolute (they were relative to the working directory, so the saved
@@ -454,7 +529,23 @@ contains
       call run_expect(error, dir, 'run sweep.nml --shard slurm -o s.h5', 1, out, err, &
          env='SLURM_ARRAY_TASK_ID=x3 SLURM_ARRAY_TASK_COUNT=4')
       if (allocated(error)) return
-      call shell('cd '//dir//' && test -z "$(ls -d one* 2>/dev/null)"', stat)
+      ! A stepped array (--array=1-7:2): task 5 is the third of four shards (it took shard 5
+      ! and failed, task 3 took shard 3 and left shard 2 unsolved).
+      call run_expect(error, dir, 'run sweep.nml --shard slurm --format csv -o st.h5', 0, &
+         out, err, env='SLURM_ARRAY_TASK_ID=5 SLURM_ARRAY_TASK_MIN=1 '// &
+         'SLURM_ARRAY_TASK_MAX=7 SLURM_ARRAY_TASK_STEP=2 SLURM_ARRAY_TASK_COUNT=4')
+      if (allocated(error)) return
+      call check(error, file_exists(dir//'/st-shard3of4.h5') .and. &
+         index(line_of(out, 2), '7,0,') == 1, message='task 5 of 1-7:2 is shard 3/4: '//out)
+      if (allocated(error)) return
+      ! A list (--array=1,3,7) is not one range: refused in every task, also task 3.
+      call run_expect(error, dir, 'run sweep.nml --shard slurm -o sl.h5', 1, out, err, &
+         env='SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=7 '// &
+         'SLURM_ARRAY_TASK_STEP=1 SLURM_ARRAY_TASK_COUNT=3')
+      if (allocated(error)) return
+      call expect_in(error, err, 'are not 3 evenly spaced tasks', 'a job array given as a list')
+      if (allocated(error)) return
+      call shell('cd '//dir//' && test -z "$(ls -d one* sl* 2>/dev/null)"', stat)
       call check(error, stat, 0, message='no output from a refused shard')
       call shell('rm -rf '//dir)
    end subroutine test_shard_slurm

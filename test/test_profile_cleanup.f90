@@ -146,6 +146,18 @@ contains
       end if
       call clean_profile(p, err, lines)
       call check(error, .not. allocated(err), 'scale = 1000 repairs the metre file')
+      if (allocated(error)) return
+      ! The wrong factor given (the file in µm, scaled by 1000): the message names the factor
+      ! given instead of asking for one.
+      call read_profile(tmp//'microns.txt', p, err, scale=1000.0_wp, line_of_point=lines)
+      if (allocated(err)) then
+         call test_failed(error, err%message)
+         return
+      end if
+      call clean_profile(p, err, lines, scale=1000.0_wp)
+      call expect_error(error, err, stat_invalid_input, [character(len=60) :: &
+         'microns.txt, line 2 to line 6:', 'multiplied by the scale factor given, 1000', &
+         '0.001 for µm'])
    end subroutine test_units
 
    subroutine test_order(error)

@@ -427,8 +427,8 @@ contains
             'destroy the handles no longer needed (shc_destroy)'
       else
          msg = 'invalid contact handle '//str_int(ihandle)//': expected a handle from '// &
-            'shc_create that was not destroyed (1 to '//str_int(max_handles)// &
-            '; shc_create returns 0 when all handles are in use)'
+            'shc_create or shc_create_ws that was not destroyed (1 to '// &
+            str_int(max_handles)//'; they return 0 when all handles are in use)'
       end if
    end subroutine legacy_message
 

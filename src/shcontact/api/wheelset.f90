@@ -12,6 +12,7 @@ module shcontact_api_wheelset
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, prefix_error
    use shcontact_core_material, only: material_type
+   use shcontact_core_ranges, only: find_range, ranges
    use shcontact_geometry_track, only: track_type, side_right, side_left
    use shcontact_geometry_contact, only: contact_options_type
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -161,8 +162,8 @@ contains
       !> Wheelset position and velocities (track frame).
       type(wheelset_state_type), intent(in) :: state
       !> The load of each wheel (load_vertical_force: its total vertical force). A vertical
-      !> force of 0 or less lifts the wheel: no contact, its result all zeros (n_patches 0),
-      !> the other wheel solved as usual.
+      !> force below 1 N (0 or less included) lifts the wheel: no contact, its result all
+      !> zeros (n_patches 0), the other wheel solved as usual.
       type(contact_load_type), intent(in) :: load_right, load_left
       !> Both wheels and the totals.
       type(wheelset_result_type), intent(out) :: result
@@ -202,11 +203,17 @@ contains
       end do
    end subroutine solve
 
-   !> A wheel lifted off its rail by the vehicle code: a vertical load of 0 or less (finite).
+   !> A wheel lifted off its rail by the vehicle code: a finite vertical load below the
+   !> smallest one the contact is solved for (the lower bound of `load%vertical_force`, 1 N),
+   !> so that a wheel unloading smoothly through 0 passes from solved to lifted without a
+   !> failed call in between (0.5 N failed both wheels with status 2).
    pure logical function lifted(load)
       type(contact_load_type), intent(in) :: load
+      integer :: k
       lifted = load%mode == load_vertical_force .and. ieee_is_finite(load%value)
-      if (lifted) lifted = load%value <= 0.0_wp
+      if (.not. lifted) return
+      k = find_range('load%vertical_force')
+      lifted = load%value < ranges(k)%lo
    end function lifted
 
 end module shcontact_api_wheelset

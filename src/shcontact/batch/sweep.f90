@@ -44,7 +44,8 @@ module shcontact_batch_sweep
    use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
       end_summary_file, check_output_file
-   use shcontact_output_merge, only: merge_result_files, read_result_summary
+   use shcontact_output_merge, only: merge_result_files, read_result_summary, &
+      compare_finished_run
    use shcontact_core_files, only: file_exists, path_kind, open_work_folder, &
       peak_memory_kib, unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, &
       folder_not_writable, &
@@ -204,6 +205,13 @@ contains
       if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
          str_int(options%n_shards)
       info%profiles = [setup%wheel, setup%rail]
+      if (options%write_output .and. options%resume .and. path_kind(dir) == 'none' .and. &
+         path_kind(outcome%output) == 'file') then
+         ! Nothing to resume from: the output of a finished run of this configuration is
+         ! taken as it is (a requeued array task); another run's is not replaced.
+         call take_finished_run(outcome, info, error)
+         return
+      end if
       common_geometry = .not. config%geometry_swept()
       if (common_geometry) then
          if (setup%kinematic) then
@@ -212,7 +220,12 @@ contains
          else
             call solve_geometry(setup, config%case_point(outcome%first), common%patches, error)
          end if
-         if (allocated(error)) return
+         if (allocated(error)) then
+            ! The geometry every case shares: each of them fails for this reason (and says so
+            ! in its summary line).
+            call fail_every_case(outcome, error)
+            return
+         end if
          info%geometry = common%patches
       end if
 
@@ -230,6 +243,55 @@ contains
          dir, outcome, error)
       call unlock_file(lock)
    end subroutine run_sweep
+
+   !> `--resume` where the output exists and there is no checkpoint: when the output holds
+   !> this run, finished, its summaries and failures are the outcome (nothing is solved or
+   !> written); otherwise an error (status 2) rather than solving it again over that file.
+   subroutine take_finished_run(outcome, info, error)
+      type(sweep_outcome_type), intent(inout) :: outcome
+      type(run_info_type), intent(in) :: info
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: difference, messages(:)
+      integer, allocatable :: failed(:)
+      logical :: same
+      integer :: k
+      call compare_finished_run(outcome%output, info%namelist, info%profiles, &
+         outcome%n_cases, outcome%first, outcome%last, same, difference, outcome%summaries, &
+         failed, messages, error)
+      if (allocated(error)) then
+         call prefix_error(error, 'cannot resume: "'//outcome%output//'" has no checkpoint ("'// &
+            checkpoint_directory(outcome%output)//'")')
+         return
+      end if
+      if (.not. same) then
+         call fatal_error(error, 'cannot resume: "'//outcome%output//'" has no checkpoint ("'// &
+            checkpoint_directory(outcome%output)//'") and holds another run ('//difference// &
+            '); run without --resume to solve this one and replace it', stat_invalid_input)
+         return
+      end if
+      deallocate (outcome%failures)
+      allocate (outcome%failures(size(failed)))
+      do k = 1, size(failed)
+         outcome%failures(k)%case = failed(k)
+         outcome%failures(k)%message = trim(messages(k))
+      end do
+      outcome%finished_before = .true.
+   end subroutine take_finished_run
+
+   !> Every case of the shard failed for the same reason `error` (the geometry they share):
+   !> their summaries carry its status, `outcome%failures` its message.
+   pure subroutine fail_every_case(outcome, error)
+      type(sweep_outcome_type), intent(inout) :: outcome
+      type(error_type), intent(in) :: error
+      integer :: i
+      deallocate (outcome%failures)
+      allocate (outcome%failures(outcome%last - outcome%first + 1))
+      do i = outcome%first, outcome%last
+         outcome%summaries(i)%stat = error%stat
+         outcome%failures(i - outcome%first + 1)%case = i
+         outcome%failures(i - outcome%first + 1)%message = error%message
+      end do
+   end subroutine fail_every_case
 
    !> The files a run reads: the options' inputs (the case file) and the profile files of the
    !> configuration (not the built-in profiles).

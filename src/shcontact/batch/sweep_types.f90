@@ -81,6 +81,9 @@ module shcontact_batch_sweep_types
       !> Peak resident memory of the process (KiB, VmHWM; 0 where unknown) when every case was
       !> solved, before the output was written or merged (whose HDF5 caches grow with the file).
       integer :: solving_peak_kib = 0
+      !> `--resume` found the output finished (no checkpoint): nothing was solved or written,
+      !> the summaries and failures are the file's.
+      logical :: finished_before = .false.
    end type sweep_outcome_type
 
 end module shcontact_batch_sweep_types

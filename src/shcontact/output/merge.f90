@@ -3,6 +3,7 @@
 !> pieces shcontact_output_results writes.
 module shcontact_output_merge
    use shcontact_core_kinds, only: wp
+   use shcontact_profile_points, only: profile_type
    use shcontact_core_error, only: error_type, fatal_error, stat_invalid_input
    use shcontact_input_config, only: case_config_type, read_config_text, precision_single, &
       config_namelist
@@ -21,7 +22,7 @@ module shcontact_output_merge
    implicit none
    private
 
-   public :: merge_result_files, read_result_summary
+   public :: merge_result_files, read_result_summary, compare_finished_run
 
 contains
 
@@ -117,7 +118,7 @@ contains
    !> Merge result files of one run (shards, checkpoint blocks) into `output`. The inputs
    !> must come from the same configuration and together hold every case exactly once.
    subroutine merge_result_files(output, inputs, command_line, date, error, allow_partial, &
-                                 shard, temp_name, threads, force)
+                                 shard, temp_name, threads, force, n_failed, n_merged)
       !> The merged file (written under a temporary name, renamed when complete).
       character(len=*), intent(in) :: output
       !> The files to merge.
@@ -136,6 +137,9 @@ contains
       integer, intent(in), optional :: threads
       !> Replace an output (or sidecar) that shcontact did not write ([[check_output_file]]).
       logical, intent(in), optional :: force
+      !> The failed cases the merged file lists under /failures, and the cases it holds
+      !> (solved or failed).
+      integer, intent(out), optional :: n_failed, n_merged
 
       character(len=:), allocatable :: text, first_text, messages(:), all_messages(:), key, &
          first_key
@@ -314,7 +318,86 @@ contains
       call commit_output(out, error)
       if (allocated(error)) return
       call finish_output(output, order, n_first, error)
+      if (present(n_failed)) n_failed = n_fail
+      if (present(n_merged)) n_merged = size(order)
    end subroutine merge_result_files
+
+   !> Whether the result file `name` already holds the run that `namelist` and `profiles`
+   !> describe (`--resume` of a finished run): the configuration as merge compares it (without
+   !> the output and profile file names), the same profile points, a run of `n_cases` cases
+   !> and exactly its cases first..last. When it does, `summaries(first:last)` are the file's,
+   !> `failed`/`messages` its failed cases; else `difference` says what differs.
+   subroutine compare_finished_run(name, namelist, profiles, n_cases, first, last, same, &
+                                   difference, summaries, failed, messages, error)
+      !> The existing result file.
+      character(len=*), intent(in) :: name
+      !> This run's resolved namelist (as its file's /input/namelist would be).
+      character(len=*), intent(in) :: namelist
+      !> This run's profiles as read (wheel, rail).
+      type(profile_type), intent(in) :: profiles(:)
+      !> The run's size and this shard's cases.
+      integer, intent(in) :: n_cases, first, last
+      !> Whether the file is that run, finished.
+      logical, intent(out) :: same
+      !> What differs (when not `same`).
+      character(len=:), allocatable, intent(out) :: difference
+      !> The file's summaries of cases first..last (when `same`).
+      type(case_summary_type), intent(inout) :: summaries(first:)
+      !> The file's failed cases and their messages.
+      integer, allocatable, intent(out) :: failed(:)
+      character(len=:), allocatable, intent(out) :: messages(:)
+      !> Set when the file cannot be read.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text, key, this_key
+      integer, allocatable :: indices(:)
+      type(case_summary_type), allocatable :: held(:)
+      real(wp), allocatable :: points(:), expected(:)
+      integer :: n, k, i
+
+      same = .false.
+      difference = ''
+      call read_result_summary(name, text, n, indices, held, failed, messages, error)
+      if (allocated(error)) return
+      call run_key(text, name, key, error)
+      if (.not. allocated(error)) call run_key(namelist, 'this run', this_key, error)
+      if (allocated(error)) return
+      if (key /= this_key) then
+         difference = 'configurations differ: '//first_difference(key, this_key)
+         return
+      end if
+      if (n /= n_cases) then
+         difference = 'a run of '//str_int(n)//' cases, this one has '//str_int(n_cases)
+         return
+      end if
+      if (size(indices) /= last - first + 1) then
+         difference = 'it holds '//str_int(size(indices))//' of the '// &
+            str_int(last - first + 1)//' cases'
+         return
+      end if
+      if (any(indices /= [(i, i=first, last)])) then
+         difference = 'it holds other cases (another shard)'
+         return
+      end if
+      call read_input_profiles(name, points, error)
+      if (allocated(error)) return
+      allocate (expected(0))
+      do k = 1, min(2, size(profiles))
+         n = profiles(k)%size()
+         expected = [expected, real(2*n, wp)]
+         do i = 1, n
+            expected = [expected, profiles(k)%y(i), profiles(k)%z(i)]
+         end do
+      end do
+      if (size(points) /= size(expected)) then
+         difference = 'other profile points (/input/profiles)'
+         return
+      else if (any(points /= expected)) then
+         difference = 'other profile points (/input/profiles)'
+         return
+      end if
+      summaries(first:last) = held
+      same = .true.
+   end subroutine compare_finished_run
 
    !> The profiles a result file holds under /input/profiles (the points as the run read them):
    !> y, z of the wheel then of the rail, each preceded by its point count (−1 when the file

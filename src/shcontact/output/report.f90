@@ -218,7 +218,12 @@ contains
                line = line//'null'
             end if
          end do
-         if (present(message)) line = line//',"message":'//json_string(message)
+         ! Every line has the same keys: a solved case's message is null.
+         if (present(message)) then
+            line = line//',"message":'//json_string(message)
+         else
+            line = line//',"message":null'
+         end if
          line = line//'}'
       case default
          line = pad(str_int(icase), 8)//pad(str_int(summary%stat), 7)

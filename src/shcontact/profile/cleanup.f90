@@ -63,7 +63,7 @@ module shcontact_profile_cleanup
 contains
 
    !> Check and repair a profile in place (see the module description for the steps).
-   subroutine clean_profile(profile, error, line_of_point, option_prefix)
+   subroutine clean_profile(profile, error, line_of_point, option_prefix, scale)
       !> The profile; zig-zag pairs merged, `s` recomputed, `kink` set.
       type(profile_type), intent(inout) :: profile
       !> The first check that failed (stat_invalid_input; stat_usage for a bad `line_of_point`).
@@ -72,6 +72,9 @@ contains
       integer, allocatable, intent(inout), optional :: line_of_point(:)
       !> How the caller names the scale option in messages (as read_profile).
       character(len=*), intent(in), optional :: option_prefix
+      !> The scale factor to mm the points were read with, when the caller gave one (named in
+      !> the length-unit message).
+      real(wp), intent(in), optional :: scale
 
       integer, allocatable :: lines(:)
       integer :: n, nz
@@ -105,7 +108,7 @@ contains
       ! The length unit first: in metres distinct points lie closer than the duplicate
       ! distance (1e-6 mm), and "remove one of them" would be the wrong advice.
       call profile%update_arc_length()
-      call check_arc_length(profile, lines, option_prefix, error)
+      call check_arc_length(profile, lines, option_prefix, error, scale)
       if (allocated(error)) return
       call check_duplicates(profile, lines, error)
       if (allocated(error)) return
@@ -199,21 +202,33 @@ contains
          str_real(profile%y(1))//', y(n) = '//str_real(profile%y(n)), stat_invalid_input)
    end subroutine check_order
 
-   subroutine check_arc_length(profile, lines, prefix, error)
+   subroutine check_arc_length(profile, lines, prefix, error, scale)
       type(profile_type), intent(in) :: profile
       integer, intent(in) :: lines(:)
       character(len=*), intent(in), optional :: prefix
       type(error_type), allocatable, intent(out) :: error
+      real(wp), intent(in), optional :: scale
+      character(len=:), allocatable :: span, advice
       real(wp) :: total
       integer :: n
       n = profile%size()
       total = profile%s(n)
       if (total >= min_arc_length .and. total <= max_arc_length) return
-      call fatal_error(error, location(profile, lines, 1)//' to '//line_word(lines, n)// &
-         ': total arc length '//str_real(total)//' mm is outside '//str_real(min_arc_length)// &
-         '–'//str_real(max_arc_length)//' mm; are the coordinates in another length unit '// &
-         '(m, inch, µm)? Give the scale factor to mm: '//option_hint(prefix, 'scale', 'FACTOR'), &
-         stat_invalid_input)
+      ! The file's lines in their order (a reversed file lists its last point first).
+      if (lines(n) > 0 .and. lines(n) < lines(1)) then
+         span = location(profile, lines, n)//' to '//line_word(lines, 1)
+      else
+         span = location(profile, lines, 1)//' to '//line_word(lines, n)
+      end if
+      advice = 'Give the scale factor to mm: '//option_hint(prefix, 'scale', 'FACTOR')
+      if (present(scale)) then
+         if (scale /= 1.0_wp) advice = 'The points were multiplied by the scale factor '// &
+            'given, '//str_real(scale)//': give the factor from the file''s unit to mm '// &
+            '(1000 for m, 25.4 for inch, 0.001 for µm): '//option_hint(prefix, 'scale', 'FACTOR')
+      end if
+      call fatal_error(error, span//': total arc length '//str_real(total)//' mm is outside '// &
+         str_real(min_arc_length)//'–'//str_real(max_arc_length)//' mm; are the coordinates '// &
+         'in another length unit (m, inch, µm)? '//advice, stat_invalid_input)
    end subroutine check_arc_length
 
    !> Replace each zig-zag pair — points i and i+1 where the direction turns by more than

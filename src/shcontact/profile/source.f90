@@ -68,7 +68,7 @@ contains
          mirror_z=mirror_z, scale=scale, line_of_point=lines, option_prefix=option_prefix)
       if (allocated(error)) return
       if (present(as_read)) as_read = profile
-      call clean_profile(profile, error, lines, option_prefix=option_prefix)
+      call clean_profile(profile, error, lines, option_prefix=option_prefix, scale=scale)
       if (allocated(error)) return
       call drop_collinear(profile, lines)
       call check_plausible(profile, error, lines, option_prefix=option_prefix)
