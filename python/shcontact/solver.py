@@ -403,3 +403,100 @@ class Contact:
             self.close()
         except Exception:  # interpreter shutdown
             pass
+
+
+class Wheelset(Contact):
+    """Both wheels of a wheelset: a wheelset handle of the C API (``shcontact_create_wheelset``;
+    the library's ``wheelset_solver_type``), the left wheel the mirror image of the right one.
+
+    ``wheel``, ``rail``, ``material``, ``track``, ``options``, ``library`` as for
+    :class:`Contact`; :meth:`set_material`, :meth:`set_track`, :meth:`set_option` and
+    :meth:`value` (inputs) act on both wheels. Solve with :meth:`solve`; the one-wheel calls
+    (``solve_kinematic``, ``patch``, ``fields``) are refused by the library (status 1).
+    """
+
+    def __init__(self, wheel="builtin:S1002", rail="builtin:UIC60", *, material=None,
+                 track=None, options=None, library=None):
+        self._start(library)
+        self._check(self._lib.shcontact_create_wheelset(ctypes.byref(self._handle),
+                                                        os.fsencode(wheel), os.fsencode(rail)))
+        self._track_defaults = self._resolved_track_defaults()
+        self._configure(material, track, options, False)
+
+    def solve(self, y_ws, *, v_forward, load_right, load_left, yaw=0.0, roll=0.0,
+              v_lateral=0.0, v_vertical=0.0, roll_rate=0.0, yaw_rate=0.0, pitch_rate=None,
+              load="vertical_force", errors="raise"):
+        """Both wheels for the wheelset state (``shcontact_solve_wheelset``; the arguments of
+        :meth:`Contact.solve_kinematic`, track frame x forward, y to the right, z down) and the
+        load of each wheel, ``load_right``, ``load_left`` (N for the default
+        ``load="vertical_force"``, each wheel's vertical load; below 1 N, 0 included, that wheel
+        is lifted: no contact, its values zero). Arrays broadcast.
+
+        Returns a dict: ``fx``, ``fy``, ``fz`` (N; the forces on the wheelset in the true track
+        frame, ``fy`` towards the right rail's field side, ``fz`` down: -(Q_right + Q_left) when
+        balanced), ``mz`` (N mm, their
+        moment about the vertical axis through the wheelset centre), ``status``, and ``right``,
+        ``left``: each wheel's main patch, counts and totals in its side frame (dicts of
+        :data:`layout.KINEMATIC` arrays, as :meth:`Contact.solve_kinematic` gives for one
+        wheel). ``errors`` as in :meth:`Contact.solve`."""
+        if load not in layout.LOAD_MODES:
+            raise ValueError(f"shcontact: load '{load}': expected one of "
+                             f"{sorted(layout.LOAD_MODES)}")
+        mode = layout.LOAD_MODES[load]
+        if pitch_rate is None:
+            pitch_rate = (-np.asarray(v_forward, dtype=np.float64)
+                          / self.value("track%nominal_radius"))
+        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
+            y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate,
+            load_right, load_left)])
+        return self._wheelset_loop(mode, inputs, errors)
+
+    def solve_kinematic(self, *args, **kwargs):
+        raise ShcontactError(layout.STATUS["usage"], "a Wheelset solves both wheels: use "
+                             "Wheelset.solve (Contact.solve_kinematic is the one-wheel call)")
+
+    @_locked
+    def _wheelset_loop(self, mode, inputs, errors):
+        if errors not in ("raise", "nan"):
+            raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
+        shape = inputs[0].shape
+        names = layout.KINEMATIC
+        totals_names = ("fx", "fy", "fz", "mz")
+        totals = np.full(shape + (4,), np.nan)
+        wheels = {side: np.full(shape + (len(names),), np.nan) for side in layout.SIDES}
+        status = np.zeros(shape, dtype=np.int32)
+        out_totals = (ctypes.c_double * 4)()
+        values = (ctypes.c_double * len(names))()
+        handle = self._ptr()
+        flat = [a.ravel() for a in inputs]
+        totals_flat = totals.reshape(-1, 4)
+        wheels_flat = {side: w.reshape(-1, len(names)) for side, w in wheels.items()}
+        status_flat = status.reshape(-1)
+        for k in range(totals_flat.shape[0]):
+            state = [float(a[k]) for a in flat]
+            stat = self._lib.shcontact_solve_wheelset(handle, *state[:9], mode, state[9],
+                                                      state[10], out_totals)
+            for side, code in layout.SIDES.items():
+                if stat == 0:
+                    stat = self._lib.shcontact_wheelset_wheel(handle, code, 0, values)
+                if stat == 0:
+                    wheels_flat[side][k, :] = values[:]
+            if stat == 0:
+                totals_flat[k, :] = out_totals[:]
+            else:
+                status_flat[k] = stat
+                if errors == "raise":
+                    case = np.unravel_index(k, shape) if shape else None
+                    raise ShcontactError(stat, self._message(), case)
+
+        def column(array, i, name):
+            c = array[..., i]
+            if name in layout.INTEGER:
+                c = np.where(np.isnan(c), 0, c).astype(np.int64)
+            return c[()] if c.ndim == 0 else c
+
+        result = {name: column(totals, i, name) for i, name in enumerate(totals_names)}
+        for side in layout.SIDES:
+            result[side] = {name: column(wheels[side], i, name) for i, name in enumerate(names)}
+        result["status"] = status[()] if status.ndim == 0 else status
+        return result

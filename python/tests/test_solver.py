@@ -319,3 +319,39 @@ def test_set_material_keeps_values_not_given():
         assert c.fields()["pn"].shape[1] > 0
         c.set_option("output%fields", False)
         c.set_option("output%fields", True)
+
+
+def test_wheelset_equals_two_wheels():
+    """Wheelset.solve (shcontact_solve_wheelset) against one Contact per wheel: each wheel's
+    values bit for bit, the totals their sum in the track frame (the left wheel's side-frame
+    lateral force turned), over arrays of states; a wheel below 1 N is lifted."""
+    state = dict(yaw=np.array([0.0, 0.004, -0.003]), v_forward=30000.0, v_lateral=-20.0,
+                 yaw_rate=0.05)
+    y_ws = np.array([0.0, 3.0, -5.5])
+    q_right, q_left = np.array([64.7e3, 60e3, 70e3]), np.array([64.7e3, 68e3, 58e3])
+    with shcontact.Wheelset() as axle, shcontact.Contact(side="right") as right, \
+            shcontact.Contact(side="left") as left:
+        both = axle.solve(y_ws, load_right=q_right, load_left=q_left, **state)
+        one = {"right": right.solve_kinematic(y_ws, vertical_force=q_right, **state),
+               "left": left.solve_kinematic(y_ws, vertical_force=q_left, **state)}
+        assert np.all(both["status"] == 0)
+        for side in ("right", "left"):
+            for name in layout.KINEMATIC:
+                assert np.array_equal(both[side][name], one[side][name]), (side, name)
+        assert np.allclose(both["fx"], one["right"]["sum_fx"] + one["left"]["sum_fx"],
+                           rtol=1e-12, atol=1e-9)
+        assert np.allclose(both["fy"], one["right"]["sum_fy"] - one["left"]["sum_fy"],
+                           rtol=1e-12, atol=1e-9)
+        assert np.allclose(both["fz"], one["right"]["sum_fz"] + one["left"]["sum_fz"],
+                           rtol=1e-12, atol=1e-9)
+        # z down: the rails carry the loads, -(Q_right + Q_left).
+        assert np.all(np.abs(both["fz"] + (q_right + q_left)) <= 1e-5 * (q_right + q_left))
+        lifted = axle.solve(2.0, v_forward=30000.0, load_right=64.7e3, load_left=0.5)
+        assert lifted["status"] == 0 and lifted["left"]["n_patches"] == 0
+        assert lifted["left"]["fn"] == 0.0 and lifted["right"]["fn"] > 0.0
+        with pytest.raises(shcontact.ShcontactError):
+            axle.solve_kinematic(0.0, v_forward=30000.0, vertical_force=64.7e3)
+        failed = axle.solve([0.0, 0.0], v_forward=[30000.0, -1.0], load_right=64.7e3,
+                            load_left=64.7e3, errors="nan")
+        assert list(failed["status"]) == [0, layout.STATUS["invalid_input"]]
+        assert np.isnan(failed["fx"][1]) and np.isnan(failed["right"]["fx"][1])
