@@ -20,7 +20,7 @@
 !>   the largest leave-one-out residual: each point against the cubic fitted to its six
 !>   neighbours (three on each side) in their chord's frame (a single bad point, which the
 !>   median noise estimate does not see, and which the spline turns into a curvature spike),
-!>   among the points a running contact can reach (canonical z ≤ 25 mm) where the seven points
+!>   among the points a running contact can reach (canonical −10 mm ≤ z ≤ 25 mm) where the seven points
 !>   turn by less than 30°.
 !> * **Smoothing.** White noise σ at spacing h, smoothed by the spline (response
 !>   1/(1 + (L_filt/L)⁴)), leaves a curvature noise σ_κ = C σ √h L_filt^(−5/2) with
@@ -58,6 +58,10 @@ module shcontact_profile_diagnostics
    !> from the tape circle (wheel) or the top (rail). The last millimetres of a flange (S1002:
    !> 28 mm deep) touch only a climbing wheel, and its tip is where measurements are roughest.
    real(wp), parameter :: running_depth = 25.0_wp
+   !> ... and up to this height (mm) above it: a hollow-worn tread lies a few millimetres above
+   !> the tape circle, a wheel's back face and field-side chamfer (never in running contact)
+   !> farther up.
+   real(wp), parameter :: running_height = 10.0_wp
 
    !> The largest gap and the largest outlier of a profile's points.
    type :: point_anomaly_type
@@ -152,7 +156,7 @@ contains
       anomaly%has_gap = anomaly%gap > max(gap_ratio*anomaly%spacing, min_gap)
       n = size(cleaned%y)
       do j = 4, n - 3
-         if (cleaned%z(j) > running_depth) cycle
+         if (cleaned%z(j) > running_depth .or. cleaned%z(j) < -running_height) cycle
          if (allocated(cleaned%kink)) then
             if (any(cleaned%kink(j - 2:j + 2))) cycle
          end if
