@@ -650,6 +650,15 @@ contains
       call check(error, stat == 1 .and. index(c_message(h), 'wheelset handle') > 0, &
          message='shcontact_field_size on a wheelset handle: '//c_message(h))
       if (allocated(error)) return
+      ! Fields asked of a wheelset handle are refused (they were kept and never readable);
+      ! 'none' is accepted.
+      call check(error, c_set_option(h, 'output%fields', 'all'), 1, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, index(c_message(h), 'a wheelset handle returns no element fields') > 0, &
+         message='fields on a wheelset handle: '//c_message(h))
+      if (allocated(error)) return
+      call check(error, c_set_option(h, 'output%fields', 'none'), 0, message=c_message(h))
+      if (allocated(error)) return
       call check(error, c_set_option(h, 'track%side', 'left'), stat_invalid_input)
       if (allocated(error)) return
       ! A lifted left wheel (vertical force 0): no contact there, zeros, the right wheel as

@@ -268,6 +268,12 @@ contains
          case (key_fields)
             keep = ctx%keep_fields
             call read_fields_choice(group//'%'//name, value, keep, error)
+            ! A wheelset handle returns no fields (its field calls are refused): keeping them
+            ! would only cost time.
+            if (.not. allocated(error) .and. keep .and. ctx%is_wheelset) call fatal_error( &
+               error, 'option '//group//'%'//name//': a wheelset handle returns no element '// &
+               'fields (shcontact_field_size, shcontact_fields and shcontact_get_field take '// &
+               'a one-wheel handle); create one per wheel for fields', stat_usage)
             if (.not. allocated(error)) ctx%keep_fields = keep
          case (key_creation)
             call fatal_error(error, 'option '//group//'%'//name//': given when the contact '// &
