@@ -19,9 +19,18 @@ program shcontact_main
    call parse_command_line(cli, error)
    if (allocated(error)) then
       status = report_error(error)
-      ! The usage text for a usage error; an invalid value (--set X without '=') gets its one
-      ! line, as the same override read from a case file.
-      if (error%stat == stat_usage) write (error_unit, '(a)') usage_text()
+      ! A usage error within a command points to that command's help (the general usage of
+      ! every command was 16 lines of a batch log for one typo), and with -q says no more; a
+      ! command line without a command gets the usage text. An invalid value (--set X without
+      ! '=') gets its one line, as the same override read from a case file.
+      if (error%stat == stat_usage) then
+         if (is_command(cli%command)) then
+            if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: see `shcontact '// &
+               trim(cli%command)//' --help` for its options (doc/app.md)'
+         else
+            write (error_unit, '(a)') usage_text()
+         end if
+      end if
       stop status, quiet = .true.
    end if
    if (cli%help) then
@@ -66,4 +75,12 @@ contains
       end if
       stop status, quiet = .true.
    end subroutine finish
+
+   !> Whether `name` is one of the program's commands.
+   pure logical function is_command(name)
+      character(len=*), intent(in) :: name
+      is_command = any(trim(name) == [character(len=8) :: 'run', 'merge', 'profiles', &
+         'geometry'])
+   end function is_command
+
 end program shcontact_main

@@ -425,6 +425,18 @@ contains
       if (allocated(error)) return
       call expect_in(error, err, 'did you mean "--threads"?', 'run --thread')
       if (allocated(error)) return
+      ! A usage error in a command points to its help, not the 16 lines of every command's
+      ! usage; with -q the error line alone (a batch log).
+      call expect_in(error, err, 'shcontact: see `shcontact run --help` for its options', &
+         'run --thread: the pointer to the help')
+      if (allocated(error)) return
+      call check(error, index(err, 'Usage:') == 0, message='the usage text after a usage '// &
+         'error in run: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run -q --threads 0', 1, out, err)
+      if (allocated(error)) return
+      call check(error, count_lines(err), 1, message='run -q --threads 0: one line: '//err)
+      if (allocated(error)) return
       call run_expect(error, dir, 'run --set position%t_y 3', 2, out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'command line --set position%t_y: expected '// &
