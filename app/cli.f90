@@ -9,7 +9,7 @@ module shcontact_app_cli
    implicit none
    private
 
-   public :: cli_type, parse_command_line
+   public :: cli_type, parse_command_line, is_command
 
    !> What the command line asks for.
    type :: cli_type
@@ -238,6 +238,7 @@ contains
       call check_combination(cli, error)
    end subroutine parse_command_line
 
+   !> Whether `name` is one of the program's commands.
    pure logical function is_command(name)
       character(len=*), intent(in) :: name
       is_command = any(name == [character(len=8) :: 'run', 'merge', 'profiles', 'geometry'])

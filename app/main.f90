@@ -4,7 +4,7 @@
 program shcontact_main
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use shcontact, only: shcontact_version, error_type, h5_skip_exit_cleanup, stat_usage
-   use shcontact_app_cli, only: cli_type, parse_command_line
+   use shcontact_app_cli, only: cli_type, parse_command_line, is_command
    use shcontact_app_help, only: usage_text, command_help
    use shcontact_app_commands, only: run_command, merge_command, geometry_command, report_error
    use shcontact_app_profiles, only: profiles_command
@@ -24,7 +24,7 @@ program shcontact_main
       ! command line without a command gets the usage text. An invalid value (--set X without
       ! '=') gets its one line, as the same override read from a case file.
       if (error%stat == stat_usage) then
-         if (is_command(cli%command)) then
+         if (command_named(cli)) then
             if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: see `shcontact '// &
                trim(cli%command)//' --help` for its options (doc/app.md)'
          else
@@ -76,11 +76,12 @@ contains
       stop status, quiet = .true.
    end subroutine finish
 
-   !> Whether `name` is one of the program's commands.
-   pure logical function is_command(name)
-      character(len=*), intent(in) :: name
-      is_command = any(trim(name) == [character(len=8) :: 'run', 'merge', 'profiles', &
-         'geometry'])
-   end function is_command
+   !> Whether the command line named one of the program's commands (before what it refused).
+   pure logical function command_named(cli)
+      type(cli_type), intent(in) :: cli
+      command_named = .false.
+      if (.not. allocated(cli%command)) return
+      command_named = is_command(cli%command)
+   end function command_named
 
 end program shcontact_main

@@ -622,6 +622,9 @@ contains
       if (allocated(error)) return
       call check(error, bitwise_equal([x], [expected%fy]), message='wheelset%fy')
       if (allocated(error)) return
+      ! A total has no patch: patch 1 is refused (it returned the total, status 0).
+      call check(error, c_get_value(h, 'wheelset%fy', 1, x), 1, message=c_message(h))
+      if (allocated(error)) return
       call check(error, c_get_value(h, 'right%fn', 2, x), 0, message=c_message(h))
       if (allocated(error)) return
       call check(error, bitwise_equal([x], [expected%wheel(wheel_right)%patch(2)%fn]), &
@@ -683,6 +686,21 @@ contains
       if (stat == 0) stat = shcontact_wheelset_wheel(h, -1_c_int, 0_c_int, cw(:, 2))
       call check(error, stat == 0 .and. all(cw(:, 2) == 0.0_c_double), &
          message='a left wheel at 0.5 N: '//c_message(h))
+      if (allocated(error)) return
+      ! An option by its variable alone where one group has it, as shcontact_set_value takes
+      ! it ('friction' was refused as unknown by set_option only).
+      call check(error, c_set_option(h, 'friction', '0.25'), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, c_get_value(h, 'material%friction', 0, x), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, x == 0.25_c_double, message='friction by its bare name')
+      if (allocated(error)) return
+      call check(error, c_set_option(h, 'friction', '0.3'), 0, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, c_set_option(h, 'frictio', '0.3'), 2, message=c_message(h))
+      if (allocated(error)) return
+      call check(error, index(c_message(h), "option 'frictio': unknown key") > 0, &
+         message='an unknown bare option: '//c_message(h))
       if (allocated(error)) return
       ! The pitch rate set, then back to its default by the name the option list gives it.
       call check(error, c_set_option(h, 'kinematics%pitch_rate', '-1'), 0, message=c_message(h))

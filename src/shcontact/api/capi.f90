@@ -15,12 +15,13 @@ module shcontact_api_capi
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
-      context_set_track, context_set_option, context_solve, context_solve_kinematic, &
+      context_set_track, context_solve, context_solve_kinematic, &
       context_message, context_fail, context_create_arrays
    use shcontact_api_context_results, only: context_patch, context_patch_kinematic, &
       context_field_size, context_fields, context_get_profile
    use shcontact_api_context, only: context_create_wheelset, context_solve_wheelset
-   use shcontact_api_keyed, only: context_set_value, context_solve_state, context_get_value, &
+   use shcontact_api_keyed, only: context_set_option_by_key, context_set_value, &
+      context_solve_state, context_get_value, &
       context_get_field, context_wheel
    use shcontact_version_info, only: shcontact_version
    implicit none
@@ -200,7 +201,7 @@ contains
          stat = context_fail(ctx, 'shcontact_set_option: key or value is NULL', stat_usage)
          return
       end if
-      stat = context_set_option(ctx, from_c(key), from_c(value))
+      stat = context_set_option_by_key(ctx, from_c(key), from_c(value))
    end function shcontact_set_option
 
    !> Solve one contact: lateral shift t_y (mm), roll (rad), load mode (1 normal force N,

@@ -48,7 +48,7 @@ module shcontact_api_keyed
 
    public :: output_key_type, output_keys, field_keys, wheelset_keys
    public :: context_set_value, context_solve_state, context_get_value, context_get_field, &
-      context_wheel
+      context_wheel, context_set_option_by_key
 
    !> A result value by name: its index in the kinematic layout (shcontact_api_values), its
    !> units and what it is.
@@ -115,6 +115,30 @@ module shcontact_api_keyed
 
 contains
 
+   !> context_set_option with the key as [[context_set_value]] takes it: `group%variable`, or a
+   !> variable name that only one group has ('friction': set_value took it, set_option did not).
+   integer function context_set_option_by_key(ctx, key, value) result(stat)
+      !> The context.
+      type(contact_context_type), intent(inout) :: ctx
+      !> The key (case-insensitive).
+      character(len=*), intent(in) :: key
+      !> Its value, as in the case files.
+      character(len=*), intent(in) :: value
+      type(error_type), allocatable :: error
+      character(len=:), allocatable :: full
+      integer :: iv
+      if (index(key, '%') > 0 .or. len_trim(key) == 0) then
+         stat = context_set_option(ctx, key, value)
+         return
+      end if
+      call resolve_key(key, full, iv, error, 'option')
+      if (allocated(error)) then
+         stat = context_record(ctx, error)
+      else
+         stat = context_set_option(ctx, full, value)
+      end if
+   end function context_set_option_by_key
+
    !> Set a number by key: `group%variable`, or a variable name that only one group has. Goes
    !> through context_set_option (one setter); an integer variable needs a whole number, a text
    !> variable context_set_option.
@@ -160,12 +184,14 @@ contains
 
    !> The full key and its index in the variable table of `group%variable` or of a variable
    !> name that exactly one group (not the sweep's) has.
-   subroutine resolve_key(key, full, iv, error)
+   subroutine resolve_key(key, full, iv, error, what)
       character(len=*), intent(in) :: key
       character(len=:), allocatable, intent(out) :: full
       integer, intent(out) :: iv
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: k
+      !> What the key names, for the messages (default 'value').
+      character(len=*), intent(in), optional :: what
+      character(len=:), allocatable :: k, word
       integer :: i, n
       k = trim(adjustl(to_lower(key)))
       iv = 0
@@ -186,11 +212,13 @@ contains
          full = trim(variables(iv)%group)//'%'//trim(variables(iv)%name)
          return
       end if
+      word = 'value'
+      if (present(what)) word = what
       if (n == 0) then
-         call fatal_error(error, "value '"//visible(key)//"': unknown key; expected "// &
+         call fatal_error(error, word//" '"//visible(key)//"': unknown key; expected "// &
             'group%variable as in the case files (doc/api.md)', stat_invalid_input)
       else
-         call fatal_error(error, "value '"//visible(key)//"': several groups have this "// &
+         call fatal_error(error, word//" '"//visible(key)//"': several groups have this "// &
             'variable; give group%variable', stat_invalid_input)
       end if
       iv = 0
@@ -292,6 +320,10 @@ contains
          i = findloc(wheelset_keys%name, k, 1)
          if (i == 0) then
             call unknown_output(key, error)
+         else if (patch /= 0) then
+            call fatal_error(error, "value '"//visible(key)//"': the wheelset's total, patch "// &
+               str_int(patch)//' given; expected patch 0 (the patches of a wheel: right%NAME, '// &
+               'left%NAME)', stat_usage)
          else
             totals = [ctx%wheelset_result%fx, ctx%wheelset_result%fy, &
                ctx%wheelset_result%fz, ctx%wheelset_result%mz]

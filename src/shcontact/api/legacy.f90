@@ -18,12 +18,13 @@ module shcontact_api_legacy
    use shcontact_geometry_kinematics, only: wheelset_state_type
    use shcontact_api_values, only: patch_value_count, result_value_count, kinematic_value_count
    use shcontact_api_context, only: contact_context_type, context_create, context_set_material, &
-      context_set_track, context_set_option, context_solve, context_solve_kinematic, &
+      context_set_track, context_solve, context_solve_kinematic, &
       context_message, context_create_arrays, context_fail
    use shcontact_api_context_results, only: context_patch, context_patch_kinematic, &
       context_field_size, context_fields, context_get_profile
    use shcontact_api_context, only: context_create_wheelset, context_solve_wheelset
-   use shcontact_api_keyed, only: context_set_value, context_solve_state, context_get_value, &
+   use shcontact_api_keyed, only: context_set_option_by_key, context_set_value, &
+      context_solve_state, context_get_value, &
       context_get_field, context_wheel
    implicit none
    private
@@ -169,7 +170,7 @@ contains
       !> Status (0 success).
       integer, intent(out) :: istat
       istat = stat_usage
-      if (valid(ihandle)) istat = context_set_option(slots(ihandle)%ctx, key, value)
+      if (valid(ihandle)) istat = context_set_option_by_key(slots(ihandle)%ctx, key, value)
    end subroutine legacy_set_option
 
    !> Solve one contact; values(1:result_value_count) receives the flat result.
