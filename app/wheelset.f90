@@ -10,11 +10,11 @@ module shcontact_app_wheelset
    use shcontact, only: case_config_type, run_setup_type, prepare_run, wheelset_contact_type, &
       profile_type, &
       wheelset_geometry_table, roll_angle_parameter, contact_distance, centre_radius, &
-      equivalent_conicity, conicity_en15302, conicity_harmonic, klingel_wavelength
+      equivalent_conicity, conicity_en15302, conicity_harmonic, klingel_wavelength, &
+      flange_steepest
    use shcontact_app_cli, only: cli_type
    use shcontact_app_commands, only: configure, report_error, refuse_yaw, print_profile_notes
    use shcontact_app_stdout, only: put_line
-   use shcontact_app_climbing, only: flange_steepest
    implicit none
    private
 

@@ -37,6 +37,7 @@ module shcontact
       conicity_harmonic, first_harmonic_slope, klingel_wavelength
    use shcontact_geometry_kinematics, only: wheelset_state_type, check_wheelset_state, &
       pure_rolling_pitch_rate, yawed_wheel_profile, contact_lead
+   use shcontact_geometry_flange, only: flange_steepest, steep_end_radius, climbing_margin
    ! normal
    use shcontact_normal_hertz, only: hertz_shape_type, hertz_type, hertz_shape, hertz_from_load, &
       hertz_from_approach, hertz_from_semiaxes
@@ -87,6 +88,7 @@ module shcontact
    private
 
    public :: wheelset_solver_type, wheelset_result_type, wheel_right, wheel_left
+   public :: flange_steepest, steep_end_radius, climbing_margin
    public :: preset_names, apply_preset, set_preset
    public :: wp, error_type, fatal_error
    public :: stat_invalid_input, stat_io, stat_numerical, stat_no_contact, stat_usage

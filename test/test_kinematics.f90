@@ -57,7 +57,8 @@ contains
          new_unittest('yawed_wheel_is_exact_silhouette', test_yawed_silhouette), &
          new_unittest('miniprof_wheel_origin_in_api', test_miniprof_origin), &
          new_unittest('wheelset_both_wheels', test_wheelset), &
-         new_unittest('vertical_position_load', test_vertical_position)]
+         new_unittest('vertical_position_load', test_vertical_position), &
+         new_unittest('flange_climbing_flag', test_climbing_flag)]
    end subroutine collect_kinematics
 
    !> A state rolling at `speed` with extra longitudinal creep xi (pitch rate −V(1+ξ)/r_nom).
@@ -731,6 +732,67 @@ contains
          load_vertical_position, -0.01_wp), by_position, err)
       call check(error, allocated(err), 'a negative vertical position was accepted')
    end subroutine test_vertical_position
+
+   !> The flange-climbing flag (contact_result_type%climbing, the keyed value 'climbing'): off on
+   !> the tread and on the flange's steep face, on once the main contact's rolling radius passes
+   !> the steep end's (+0.1 mm), i.e. where the rolling radius exceeds it; the steep end lies
+   !> on S1002's flange between the face and the tip; a flat wheel has none.
+   subroutine test_climbing_flag(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_solver_type) :: wheel, flat
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      type(prepared_profiles_type) :: prepared
+      type(profile_type) :: rail, flat_wheel
+      real(wp) :: y
+      real(wp), parameter :: shifts(*) = [0.0_wp, 3.0_wp, 7.0_wp, 9.0_wp, 12.0_wp, 20.0_wp]
+      integer :: k
+      logical :: seen_on, seen_off_after
+      call wheel%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      seen_on = .false.
+      seen_off_after = .false.
+      do k = 1, size(shifts)
+         y = shifts(k)
+         call wheel%solve_kinematic(rolling(y, 0.0_wp, 0.0_wp), contact_load_type( &
+            load_vertical_force, f_z), result, err)
+         if (allocated(err)) then
+            call test_failed(error, 'y_ws = '//trim(real_text(y))//': '//err%message)
+            return
+         end if
+         ! The flag is the radius rule, whatever the shift.
+         call check(error, result%climbing .eqv. result%main%r0 > steep_radius(wheel) + 0.1_wp, &
+            message='flag against the radius rule at y_ws = '//trim(real_text(y)))
+         if (allocated(error)) return
+         if (y <= 3.0_wp) call check(error, .not. result%climbing, message='tread contact '// &
+            'flagged at y_ws = '//trim(real_text(y)))
+         if (allocated(error)) return
+         if (result%climbing) seen_on = .true.
+         if (seen_on .and. .not. result%climbing) seen_off_after = .true.
+      end do
+      call check(error, seen_on .and. .not. seen_off_after, message='the flag comes on with '// &
+         'the shift and stays on')
+      if (allocated(error)) return
+      ! A cylindrical wheel (no flange): no steep end, never flagged.
+      call builtin_profile('UIC60', rail, err)
+      flat_wheel%y = [(-60.0_wp + 2.0_wp*k, k = 0, 50)]
+      flat_wheel%z = [(0.0_wp, k = 0, 50)]
+      call flat_wheel%update_arc_length()
+      call flat%init(flat_wheel, rail, err)
+      call check(error, .not. allocated(err), 'flat wheel init')
+      if (allocated(error)) return
+      call check(error, steep_radius(flat) >= huge(1.0_wp), message='a flat wheel''s steep end')
+   contains
+      real(wp) function steep_radius(solver)
+         type(contact_solver_type), intent(in) :: solver
+         type(profile_type) :: w, r
+         call solver%get_profiles(w, r)
+         call prepare_profiles(w, r, solver%get_track(), solver%get_contact_options(), &
+            prepared, err)
+         steep_radius = prepared%steep_end_radius
+      end function steep_radius
+   end subroutine test_climbing_flag
 
    !> A number for a message.
    pure function real_text(x) result(text)

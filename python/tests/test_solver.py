@@ -355,3 +355,18 @@ def test_wheelset_equals_two_wheels():
                             load_left=64.7e3, errors="nan")
         assert list(failed["status"]) == [0, layout.STATUS["invalid_input"]]
         assert np.isnan(failed["fx"][1]) and np.isnan(failed["right"]["fx"][1])
+
+
+def test_climbing_flag_by_key():
+    """The keyed value 'climbing' (1: the main contact lies on the flange beyond its steepest
+    part) through the C API: off on the tread, on at 20 mm; a wheelset's wheel by 'right%'."""
+    with shcontact.Contact() as c:
+        c.solve_kinematic(0.0, v_forward=30000.0, vertical_force=64.7e3)
+        assert c.value("climbing") == 0.0
+        c.solve_kinematic(20.0, v_forward=30000.0, vertical_force=64.7e3)
+        assert c.value("climbing") == 1.0
+        with pytest.raises(shcontact.ShcontactError):
+            c.value("climbing", patch=1)
+    with shcontact.Wheelset() as axle:
+        axle.solve(20.0, v_forward=30000.0, load_right=64.7e3, load_left=64.7e3)
+        assert axle.value("right%climbing") == 1.0 and axle.value("left%climbing") == 0.0

@@ -95,6 +95,10 @@ module shcontact_api_keyed
       output_key_type('phi', value_phi, 'rad/mm', 'spin creepage'), &
       output_key_type('x_track', value_x_track, 'mm', 'reference point, track x (forward)')]
 
+   !> The key of the flange-climbing flag (1: the main patch's contact lies on the flange
+   !> beyond its steepest part, contact_result_type%climbing; patch 0).
+   character(len=*), parameter :: climbing_key = 'climbing'
+
    !> The wheelset totals of a wheelset handle (true track frame, forces on the wheelset).
    type(output_key_type), parameter :: wheelset_keys(*) = [ &
       output_key_type('wheelset%fx', 1, 'N', 'total longitudinal force'), &
@@ -360,7 +364,15 @@ contains
       ! A value of the wheel's joined contact (one per wheel, patch 0).
       w = 0
       if (i == 0 .and. k == 0) w = find_wheel_column(key)
-      if (w > 0) then
+      if (key == climbing_key) then
+         ! The wheel's flag, 1 or 0 (contact_result_type%climbing).
+         if (patch /= 0) then
+            call fatal_error(error, 'patch '//str_int(patch)//': '//key//' is a value of the '// &
+               'wheel (its main patch''s contact); expected patch 0', stat_usage)
+         else
+            x = merge(1.0_wp, 0.0_wp, result%climbing)
+         end if
+      else if (w > 0) then
          if (patch /= 0) then
             call fatal_error(error, 'patch '//str_int(patch)//': '//key//' is a value of the '// &
                'wheel''s joined contact; expected patch 0', stat_usage)
@@ -403,6 +415,7 @@ contains
       do i = 1, size(wheel_columns)
          names = trim(names)//', '//trim(wheel_columns(i)%name)
       end do
+      names = trim(names)//', '//climbing_key
       call fatal_error(error, "value '"//visible(key)//"': unknown; expected one of "// &
          trim(names)//" (a wheelset handle: wheelset%fx, wheelset%fy, wheelset%fz, "// &
          "wheelset%mz, right%NAME, left%NAME)", stat_invalid_input)

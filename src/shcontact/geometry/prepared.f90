@@ -10,6 +10,7 @@ module shcontact_geometry_prepared
    use shcontact_profile_spline, only: profile_spline_type, spline_point_type, &
       source_name => profile_label
    use shcontact_geometry_rigid, only: rigid_map_type
+   use shcontact_geometry_flange, only: steep_end_radius
    use shcontact_geometry_search, only: polyline_envelope
    use shcontact_geometry_track, only: track_type, check_track, rail_placement, &
       tape_circle_position, str => real_text
@@ -81,6 +82,10 @@ module shcontact_geometry_prepared
       type(rigid_map_type) :: rail_map
       !> Wheel profile y and z of the tape circle (mm).
       real(wp) :: y_tape = 0.0_wp, z_tape = 0.0_wp
+      !> Rolling radius (mm) where the wheel flange's steepest part ends towards its tip
+      !> (shcontact_geometry_flange; huge for a wheel without a flange): a contact beyond it
+      !> is a flange-climbing one.
+      real(wp) :: steep_end_radius = huge(1.0_wp)
       !> Dense samples of the wheel, profile coordinates (mm).
       real(wp), allocatable :: wheel_s(:), wheel_y(:), wheel_z(:)
       !> Bounds (y_min, y_max, z_min, z_max) of each block of [[sample_block]] consecutive
@@ -174,6 +179,8 @@ contains
       end if
       call prepare_wheel(wheel, track, options, prepared, error)
       if (allocated(error)) return
+      prepared%steep_end_radius = steep_end_radius(wheel, prepared%y_tape, prepared%z_tape, &
+         track%nominal_radius)
       call sample_spline(prepared%rail, options%sample_step, prepared%rail_s, u, v)
       allocate (prepared%rail_y(size(u)), prepared%rail_z(size(u)))
       call prepared%rail_map%point(u, v, prepared%rail_y, prepared%rail_z)

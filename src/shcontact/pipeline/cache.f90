@@ -14,6 +14,7 @@ module shcontact_pipeline_cache
    use shcontact_geometry_contact, only: contact_options_type, prepared_profiles_type, &
       contact_patches_type, find_contact_patches, extract_patch, prepare_wheel
    use shcontact_geometry_yaw, only: yaw_table_type, build_yaw_table, apply_yaw, yaw_table_limit
+   use shcontact_geometry_flange, only: climbing_margin
    use shcontact_geometry_kinematics, only: yawed_wheel_profile, axle_offset, true_radius_scale, &
       scale_to_true_radius
    use shcontact_normal_options, only: normal_options_type
@@ -283,6 +284,8 @@ contains
       call summarise_stages(self%patches%patch(1:self%patches%count), self%normal(1:n), &
          self%tangential(1:n), self%creepage(1:n), self%side, axle_offset(self%track), &
          self%yaw, self%dz, self%material%friction, result, self%patches%points(1:n))
+      result%climbing = result%n_loaded > 0 .and. &
+         result%main%r0 > self%prepared%steep_end_radius + climbing_margin
    end subroutine summarise
 
    !> Copy the fields of the loaded patches, reusing the arrays of `fields`.

@@ -173,6 +173,10 @@ module shcontact_pipeline_result
       !> patch (CONTACT's 4 mm rule; shcontact_tangential_lobes, doc/lobes.md): the main patch and
       !> the loaded patches within 4 mm of it, forces summed, f = ΣF/(μΣF_n).
       type(joined_lobes_type) :: wheel
+      !> The main patch's contact lies on the wheel flange beyond its steepest part (its rolling
+      !> radius exceeds the steep end's by more than 0.1 mm, shcontact_geometry_flange): a
+      !> flange-climbing state, which a rigid wheelset reaches only by climbing the flange.
+      logical :: climbing = .false.
    end type contact_result_type
 
    !> Copies of the fields of one solve (doc/theory.md decision 12): per patch its strip tables, the
