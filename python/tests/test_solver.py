@@ -370,3 +370,12 @@ def test_climbing_flag_by_key():
     with shcontact.Wheelset() as axle:
         axle.solve(20.0, v_forward=30000.0, load_right=64.7e3, load_left=64.7e3)
         assert axle.value("right%climbing") == 1.0 and axle.value("left%climbing") == 0.0
+
+
+def test_program_names_read_the_same_values():
+    """The keyed getter takes the program's /summary names too (coulomb_ratio, delta,
+    fx_total, ...): one name reads a value in every interface."""
+    with shcontact.Contact() as c:
+        c.solve(T_Y, **HEADLINE)
+        for key, column in SUMMARY_OF_LAYOUT.items():
+            assert c.value(column) == c.value(key), (column, key)

@@ -95,6 +95,14 @@ module shcontact_api_keyed
       output_key_type('phi', value_phi, 'rad/mm', 'spin creepage'), &
       output_key_type('x_track', value_x_track, 'mm', 'reference point, track x (forward)')]
 
+   !> The program's names of the same values (its `/summary` columns, CSV and JSON keys), taken
+   !> as the keys they name, so that one name reads a value in every interface: pairs of
+   !> (program's name, key).
+   character(len=*), parameter :: summary_aliases(2, 7) = reshape([character(len=17) :: &
+      'coulomb_ratio', 'coulomb', 'adhesion_fraction', 'adhesion', 'delta', 'approach', &
+      'fn_total', 'sum_fn', 'fx_total', 'sum_fx', 'fy_total', 'sum_fy', 'fz_total', 'sum_fz'], &
+      [2, 7])
+
    !> The key of the flange-climbing flag (1: the main patch's contact lies on the flange
    !> beyond its steepest part, contact_result_type%climbing; patch 0).
    character(len=*), parameter :: climbing_key = 'climbing'
@@ -348,15 +356,19 @@ contains
    end function context_get_value
 
    !> Value `key` of patch `patch` (0: the main one) of a result.
-   subroutine result_value(result, key, patch, x, error)
+   subroutine result_value(result, name, patch, x, error)
       type(contact_result_type), intent(in) :: result
-      character(len=*), intent(in) :: key
+      character(len=*), intent(in) :: name
       integer, intent(in) :: patch
       real(wp), intent(out) :: x
       type(error_type), allocatable, intent(out) :: error
       real(wp) :: values(kinematic_value_count)
+      character(len=:), allocatable :: key
       integer :: i, k, w
       x = 0.0_wp
+      key = name
+      i = findloc(summary_aliases(1, :), key, 1)
+      if (i > 0) key = trim(summary_aliases(2, i))
       i = findloc(output_keys%name, key, 1)
       ! A per-patch value beyond the frozen flat layout: by name from the column table.
       k = 0
