@@ -53,8 +53,12 @@ KINEMATIC = RESULT + (
 WHEEL = ("wheel_patches", "wheel_fn", "wheel_fx", "wheel_fy", "wheel_fx_norm",
          "wheel_fy_norm", "wheel_area", "wheel_p_max")
 
-#: Values that are counts or indices (returned as integer arrays).
-INTEGER = ("n_patches", "n_loaded", "main_patch", "wheel_patches")
+#: The wheel's flags, read by key after every solve and returned with the result (1 or 0):
+#: ``climbing``, the main patch's contact on the flange beyond its steepest part (doc/api.md).
+FLAGS = ("climbing",)
+
+#: Values that are counts, indices or flags (returned as integer arrays).
+INTEGER = ("n_patches", "n_loaded", "main_patch", "wheel_patches", "climbing")
 
 #: Units of every value.
 UNITS = {
@@ -65,7 +69,7 @@ UNITS = {
     "sum_fy": "N", "sum_fz": "N", "sum_fn": "N", "dz": "mm", "nu_x": "1", "nu_y": "1",
     "phi": "rad/mm", "x_track": "mm", "wheel_patches": "1", "wheel_fn": "N", "wheel_fx": "N",
     "wheel_fy": "N", "wheel_fx_norm": "1", "wheel_fy_norm": "1", "wheel_area": "mm^2",
-    "wheel_p_max": "MPa",
+    "wheel_p_max": "MPa", "climbing": "1",
 }
 
 #: Load modes (SHCONTACT_LOAD_*), by the keyword that gives the load to a solve.

@@ -328,7 +328,7 @@ class Contact:
         if errors not in ("raise", "nan"):
             raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
         shape = inputs[0].shape
-        keyed = layout.WHEEL
+        keyed = layout.WHEEL + layout.FLAGS
         out = np.full(shape + (len(names) + len(keyed),), np.nan)
         status = np.zeros(shape, dtype=np.int32)
         values = (ctypes.c_double * len(names))()
@@ -438,7 +438,7 @@ class Wheelset(Contact):
         moment about the vertical axis through the wheelset centre), ``status``, and ``right``,
         ``left``: each wheel's main patch, counts and totals in its side frame (dicts of
         :data:`layout.KINEMATIC` arrays, as :meth:`Contact.solve_kinematic` gives for one
-        wheel). ``errors`` as in :meth:`Contact.solve`."""
+        wheel, and its ``climbing`` flag). ``errors`` as in :meth:`Contact.solve`."""
         if load not in layout.LOAD_MODES:
             raise ValueError(f"shcontact: load '{load}': expected one of "
                              f"{sorted(layout.LOAD_MODES)}")
@@ -460,13 +460,14 @@ class Wheelset(Contact):
         if errors not in ("raise", "nan"):
             raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
         shape = inputs[0].shape
-        names = layout.KINEMATIC
+        names = layout.KINEMATIC + layout.FLAGS
         totals_names = ("fx", "fy", "fz", "mz")
         totals = np.full(shape + (4,), np.nan)
         wheels = {side: np.full(shape + (len(names),), np.nan) for side in layout.SIDES}
         status = np.zeros(shape, dtype=np.int32)
         out_totals = (ctypes.c_double * 4)()
-        values = (ctypes.c_double * len(names))()
+        values = (ctypes.c_double * len(layout.KINEMATIC))()
+        flag = ctypes.c_double()
         handle = self._ptr()
         flat = [a.ravel() for a in inputs]
         totals_flat = totals.reshape(-1, 4)
@@ -480,7 +481,11 @@ class Wheelset(Contact):
                 if stat == 0:
                     stat = self._lib.shcontact_wheelset_wheel(handle, code, 0, values)
                 if stat == 0:
-                    wheels_flat[side][k, :] = values[:]
+                    wheels_flat[side][k, :len(layout.KINEMATIC)] = values[:]
+                    for j, key in enumerate(layout.FLAGS):
+                        self._check(self._lib.shcontact_get_value(
+                            handle, f"{side}%{key}".encode(), 0, ctypes.byref(flag)))
+                        wheels_flat[side][k, len(layout.KINEMATIC) + j] = flag.value
             if stat == 0:
                 totals_flat[k, :] = out_totals[:]
             else:

@@ -24,7 +24,7 @@ def test_value_layouts_match_header(repo):
     assert h["PATCH_SIZE"] == len(layout.PATCH)
     assert h["RESULT_SIZE"] == len(layout.RESULT)
     assert h["KIN_SIZE"] == len(layout.KINEMATIC)
-    assert set(layout.UNITS) == set(layout.KINEMATIC + layout.WHEEL)
+    assert set(layout.UNITS) == set(layout.KINEMATIC + layout.WHEEL + layout.FLAGS)
 
 
 def test_codes_match_header(repo):

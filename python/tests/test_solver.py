@@ -336,7 +336,7 @@ def test_wheelset_equals_two_wheels():
                "left": left.solve_kinematic(y_ws, vertical_force=q_left, **state)}
         assert np.all(both["status"] == 0)
         for side in ("right", "left"):
-            for name in layout.KINEMATIC:
+            for name in layout.KINEMATIC + layout.FLAGS:
                 assert np.array_equal(both[side][name], one[side][name]), (side, name)
         assert np.allclose(both["fx"], one["right"]["sum_fx"] + one["left"]["sum_fx"],
                            rtol=1e-12, atol=1e-9)
@@ -365,11 +365,15 @@ def test_climbing_flag_by_key():
         assert c.value("climbing") == 0.0
         c.solve_kinematic(20.0, v_forward=30000.0, vertical_force=64.7e3)
         assert c.value("climbing") == 1.0
+        # With every result of an array of states, as an integer flag.
+        k = c.solve_kinematic([0.0, 3.0, 20.0], v_forward=30000.0, vertical_force=64.7e3)
+        assert k["climbing"].dtype.kind == "i" and list(k["climbing"]) == [0, 0, 1]
         with pytest.raises(shcontact.ShcontactError):
             c.value("climbing", patch=1)
     with shcontact.Wheelset() as axle:
-        axle.solve(20.0, v_forward=30000.0, load_right=64.7e3, load_left=64.7e3)
+        w = axle.solve(20.0, v_forward=30000.0, load_right=64.7e3, load_left=64.7e3)
         assert axle.value("right%climbing") == 1.0 and axle.value("left%climbing") == 0.0
+        assert w["right"]["climbing"] == 1 and w["left"]["climbing"] == 0
 
 
 def test_program_names_read_the_same_values():
