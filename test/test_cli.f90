@@ -261,6 +261,17 @@ contains
       call check(error, stat, 0, message='the finished file was rewritten')
       if (allocated(error)) return
       call check(error, .not. file_exists(dir//'/fin.h5.partial'), message='no work folder left')
+      if (allocated(error)) return
+      ! With fields: a sidecar removed since is written again, the file itself untouched.
+      call write_lines(dir//'/fld.nml', [character(len=28) :: '&sweep nu_x = 0.0, 1.0e-3 /', &
+         '&output fields = ''all'' /'])
+      call run_expect(error, dir, 'run fld.nml -o fld.h5 -q', 0, out, err)
+      if (allocated(error)) return
+      call shell('cd '//dir//' && cp fld.h5 fld_kept.h5 && cp fld.xmf fld_kept.xmf && rm fld.xmf')
+      call run_expect(error, dir, 'run fld.nml -o fld.h5 -q --resume', 0, out, err)
+      if (allocated(error)) return
+      call shell('cd '//dir//' && cmp -s fld.h5 fld_kept.h5 && cmp -s fld.xmf fld_kept.xmf', stat)
+      call check(error, stat, 0, message='the sidecar written again, the file kept')
       call shell('rm -rf '//dir)
    end subroutine test_resume_finished_run
 

@@ -43,7 +43,7 @@ module shcontact_batch_sweep
       stat_io, stat_usage
    use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
-      end_summary_file, check_output_file
+      end_summary_file, check_output_file, case_group_name
    use shcontact_output_merge, only: merge_result_files, read_result_summary, &
       compare_finished_run
    use shcontact_core_files, only: file_exists, path_kind, open_work_folder, &
@@ -52,6 +52,7 @@ module shcontact_batch_sweep
       folder_link, folder_not_directory
    use shcontact_output_clock, only: iso_timestamp, wall_seconds
    use shcontact_output_hdf5, only: h5_discard
+   use shcontact_output_xdmf, only: write_xdmf_sidecar, xdmf_name
    use shcontact_core_strings, only: str_int, to_lower
    use shcontact_core_text, only: string_list_type, string_type
    use shcontact_case_result, only: case_result_type, case_summary_type, failure_type, case_not_run
@@ -253,6 +254,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: difference, messages(:)
       integer, allocatable :: failed(:)
+      type(string_type), allocatable :: groups(:)
       logical :: same
       integer :: k
       call compare_finished_run(outcome%output, info%namelist, info%profiles, &
@@ -276,6 +278,16 @@ contains
          outcome%failures(k)%message = trim(messages(k))
       end do
       outcome%finished_before = .true.
+      ! A sidecar removed since (by hand, or by a run killed between its two last steps) is
+      ! written again; the results file itself is not touched.
+      if (.not. file_exists(xdmf_name(outcome%output))) then
+         allocate (groups(outcome%last - outcome%first + 1))
+         do k = outcome%first, outcome%last
+            groups(k - outcome%first + 1)%text = case_group_name(k, outcome%n_cases)
+         end do
+         call write_xdmf_sidecar(outcome%output, [(k, k=outcome%first, outcome%last)], groups, &
+            error)
+      end if
    end subroutine take_finished_run
 
    !> Every case of the shard failed for the same reason `error` (the geometry they share):
