@@ -159,8 +159,9 @@ contains
             str_int(i)//' case(s) solved'//resumed_note(outcome)//', '// &
             str_int(outcome%n_threads)//' thread(s), '//elapsed(run_seconds())//where_to
       end if
-      ! The figure doc/app.md sizes jobs with (and the memory test reads).
-      if (cli%verbose) then
+      ! The figure doc/app.md sizes jobs with (and the memory test reads); nothing of it when
+      ! a finished run was taken as it was.
+      if (cli%verbose .and. .not. outcome%finished_before) then
          kept = ''
          if (outcome%block_files == 0 .and. outcome%checkpoint_files > 0) kept = '; the '// &
             'output written from memory ('//str_int(outcome%checkpoint_files)// &
@@ -170,7 +171,8 @@ contains
             str_int(int(outcome%most_block_bytes/1024))//' KiB of results in memory; '// &
             str_int(outcome%block_files)//' block file(s) merged'//kept
       end if
-      if (cli%verbose .and. peak_memory_kib() > 0) write (error_unit, '(a)') &
+      if (cli%verbose .and. peak_memory_kib() > 0 .and. .not. outcome%finished_before) &
+         write (error_unit, '(a)') &
          'shcontact: peak memory '//str_int(peak_memory_kib())//' KiB (VmHWM), '// &
          str_int(outcome%solving_peak_kib)//' KiB before the output was assembled'
    end function run_command

@@ -96,11 +96,14 @@ contains
          'OUT-shardIofN.h5'//nl// &
          '  --shard slurm            take I/N from the Slurm job array: SLURM_ARRAY_TASK_ID'// &
          nl// &
-         '                           - SLURM_ARRAY_TASK_MIN + 1 of SLURM_ARRAY_TASK_COUNT'// &
+         '                           - SLURM_ARRAY_TASK_MIN, over SLURM_ARRAY_TASK_STEP, + 1,'// &
          nl// &
+         '                           of SLURM_ARRAY_TASK_COUNT'//nl// &
          '                           (without --shard the Slurm variables are ignored)'//nl// &
          '  --resume                 complete an interrupted run from its checkpoint '// &
          'OUT.h5.partial/'//nl// &
+         '                           (a finished run of this configuration is left as it is)'// &
+         nl// &
          '  --force                  replace an OUT.h5 or OUT.xmf that shcontact did not '// &
          'write, or'//nl// &
          '                           start afresh over an interrupted run''s checkpoint'// &

@@ -25,7 +25,8 @@ program shcontact_main
       ! '=') gets its one line, as the same override read from a case file.
       if (error%stat == stat_usage) then
          if (command_named(cli)) then
-            if (.not. cli%quiet) write (error_unit, '(a)') 'shcontact: see `shcontact '// &
+            if (.not. (quiet_asked() .or. index(error%message, '--help') > 0)) &
+               write (error_unit, '(a)') 'shcontact: see `shcontact '// &
                trim(cli%command)//' --help` for its options (doc/app.md)'
          else
             write (error_unit, '(a)') usage_text()
@@ -75,6 +76,18 @@ contains
       end if
       stop status, quiet = .true.
    end subroutine finish
+
+   !> Whether -q (--quiet) is on the command line, also after the option that was refused
+   !> (the parse stops there).
+   logical function quiet_asked()
+      character(len=16) :: arg
+      integer :: i
+      quiet_asked = .false.
+      do i = 1, command_argument_count()
+         call get_command_argument(i, arg)
+         if (arg == '-q' .or. arg == '--quiet') quiet_asked = .true.
+      end do
+   end function quiet_asked
 
    !> Whether the command line named one of the program's commands (before what it refused).
    pure logical function command_named(cli)

@@ -54,7 +54,7 @@ contains
       if (anomaly%has_gap) text = text//': '//gap_meaning
       text = text//new_line('a')//'outlier    largest '// &
          str_format(anomaly%outlier, '(es9.2)')//' mm off the cubic through its six '// &
-         'neighbours (from 10 mm above to 25 mm below the running surface)'
+         'neighbours (within 25 mm of the running surface, not beyond a wheel''s flange tip)'
       if (anomaly%outlier_at > 0) text = text//' '//at_point(cleaned, anomaly%outlier_at)
       if (anomaly%has_outlier) text = text//': '//outlier_meaning
    end function anomaly_lines

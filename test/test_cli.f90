@@ -437,9 +437,14 @@ contains
       call expect_in(error, err, 'did you mean "--threads"?', 'run --thread')
       if (allocated(error)) return
       ! A usage error in a command points to its help, not the 16 lines of every command's
-      ! usage; with -q the error line alone (a batch log).
+      ! usage (one line when its message points there already); with -q, before or after the
+      ! refused option, the error line alone (a batch log).
+      call check(error, count_lines(err), 1, message='run --thread: one line: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --threads 0', 1, out, err)
+      if (allocated(error)) return
       call expect_in(error, err, 'shcontact: see `shcontact run --help` for its options', &
-         'run --thread: the pointer to the help')
+         'run --threads 0: the pointer to the help')
       if (allocated(error)) return
       call check(error, index(err, 'Usage:') == 0, message='the usage text after a usage '// &
          'error in run: '//err)
@@ -447,6 +452,10 @@ contains
       call run_expect(error, dir, 'run -q --threads 0', 1, out, err)
       if (allocated(error)) return
       call check(error, count_lines(err), 1, message='run -q --threads 0: one line: '//err)
+      if (allocated(error)) return
+      call run_expect(error, dir, 'run --threads 0 -q', 1, out, err)
+      if (allocated(error)) return
+      call check(error, count_lines(err), 1, message='run --threads 0 -q: one line: '//err)
       if (allocated(error)) return
       call run_expect(error, dir, 'run --set position%t_y 3', 2, out, err)
       if (allocated(error)) return
@@ -594,7 +603,8 @@ contains
          '/bin/shcontact')
       do task = 1, 8
          write (id, '(i0)') task
-         call shell('cd '//dir//' && env PATH='//dir//'/bin:"$PATH" SLURM_ARRAY_TASK_ID='// &
+         call shell('cd '//dir//' && env -u SLURM_ARRAY_TASK_MAX -u SLURM_ARRAY_TASK_STEP '// &
+            'PATH='//dir//'/bin:"$PATH" SLURM_ARRAY_TASK_ID='// &
             trim(id)//' SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=8 '// &
             'SLURM_CPUS_PER_TASK=2 bash examples/slurm_doe.sh > task'//trim(id)//'.log 2>&1', &
             stat)
@@ -617,6 +627,28 @@ contains
       end if
       call check(error, size(indices) == 8000 .and. all(s%stat == 0), &
          message='the merged file holds the 8000 solved cases')
+      if (allocated(error)) return
+      ! A sweep with failed cases: the tasks end with status 0 (their files are written, with
+      ! /failures), so that an afterok merge runs; the merge says 4 and how many failed.
+      call shell('cd '//dir//' && rm -rf build && printf "&sweep roll = 0.1, 0.0, 0.1, 0.01 /'// &
+         '\n" > examples/doe_8000.nml')
+      do task = 1, 2
+         write (id, '(i0)') task
+         call shell('cd '//dir//' && env -u SLURM_ARRAY_TASK_MAX -u SLURM_ARRAY_TASK_STEP '// &
+            'PATH='//dir//'/bin:"$PATH" SLURM_ARRAY_TASK_ID='//trim(id)// &
+            ' SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_COUNT=2 SLURM_CPUS_PER_TASK=2 '// &
+            'bash examples/slurm_doe.sh > fail'//trim(id)//'.log 2>&1', stat)
+         call check(error, stat, 0, message='task '//trim(id)//' of a sweep with failed '// &
+            'cases: '//file_text(dir//'/fail'//trim(id)//'.log'))
+         if (allocated(error)) return
+      end do
+      call shell('cd '//dir//' && PATH='//dir//'/bin:"$PATH" && '// &
+         'shcontact merge build/doe_8000.h5 build/doe_8000-shard*of2.h5 2> merge.log', stat)
+      call check(error, stat, 4, message='merge of shards with failed cases: '// &
+         file_text(dir//'/merge.log'))
+      if (allocated(error)) return
+      call check(error, index(file_text(dir//'/merge.log'), '2 of 4 case(s) failed') > 0, &
+         message='the merge names the failed cases: '//file_text(dir//'/merge.log'))
       call shell('rm -rf '//dir)
    end subroutine test_slurm_script
 

@@ -774,6 +774,10 @@ contains
       call check(error, seen_on .and. .not. seen_off_after, message='the flag comes on with '// &
          'the shift and stays on')
       if (allocated(error)) return
+      ! At 20 mm the wheel rides near its flange tip (r0 well above the steep face's radii).
+      call check(error, result%climbing .and. result%main%r0 > 485.0_wp, message='20 mm: '// &
+         'the contact near the flange tip is not flagged, r0 = '//trim(real_text(result%main%r0)))
+      if (allocated(error)) return
       ! A cylindrical wheel (no flange): no steep end, never flagged.
       call builtin_profile('UIC60', rail, err)
       flat_wheel%y = [(-60.0_wp + 2.0_wp*k, k = 0, 50)]
@@ -783,6 +787,12 @@ contains
       call check(error, .not. allocated(err), 'flat wheel init')
       if (allocated(error)) return
       call check(error, steep_radius(flat) >= huge(1.0_wp), message='a flat wheel''s steep end')
+      if (allocated(error)) return
+      call flat%solve_kinematic(rolling(2.0_wp, 0.0_wp, 0.0_wp), contact_load_type( &
+         load_vertical_force, f_z), result, err)
+      call check(error, .not. allocated(err), 'flat wheel solve')
+      if (allocated(error)) return
+      call check(error, .not. result%climbing, message='a flat wheel flagged')
    contains
       real(wp) function steep_radius(solver)
          type(contact_solver_type), intent(in) :: solver

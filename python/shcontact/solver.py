@@ -412,7 +412,7 @@ class Wheelset(Contact):
     ``wheel``, ``rail``, ``material``, ``track``, ``options``, ``library`` as for
     :class:`Contact`; :meth:`set_material`, :meth:`set_track`, :meth:`set_option` and
     :meth:`value` (inputs) act on both wheels. Solve with :meth:`solve`; the one-wheel calls
-    (``solve_kinematic``, ``patch``, ``fields``) are refused by the library (status 1).
+    (``solve_kinematic``, ``patch``, ``fields``) are refused (status 1).
     """
 
     def __init__(self, wheel="builtin:S1002", rail="builtin:UIC60", *, material=None,
@@ -454,6 +454,14 @@ class Wheelset(Contact):
     def solve_kinematic(self, *args, **kwargs):
         raise ShcontactError(layout.STATUS["usage"], "a Wheelset solves both wheels: use "
                              "Wheelset.solve (Contact.solve_kinematic is the one-wheel call)")
+
+    def patch(self, *args, **kwargs):
+        raise ShcontactError(layout.STATUS["usage"], "a Wheelset returns each wheel's main "
+                             "patch in Wheelset.solve's 'right' and 'left'; for every patch or "
+                             "the element fields, use a Contact per wheel")
+
+    def fields(self, *args, **kwargs):
+        self.patch()
 
     @_locked
     def _wheelset_loop(self, mode, inputs, errors):

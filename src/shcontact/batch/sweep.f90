@@ -206,10 +206,11 @@ contains
       if (options%n_shards > 1) info%shard = str_int(options%shard)//'/'// &
          str_int(options%n_shards)
       info%profiles = [setup%wheel, setup%rail]
-      if (options%write_output .and. options%resume .and. path_kind(dir) == 'none' .and. &
-         path_kind(outcome%output) == 'file') then
+      if (options%write_output .and. options%resume .and. .not. options%force .and. &
+         path_kind(dir) == 'none' .and. path_kind(outcome%output) == 'file') then
          ! Nothing to resume from: the output of a finished run of this configuration is
-         ! taken as it is (a requeued array task); another run's is not replaced.
+         ! taken as it is (a requeued array task); another run's is not replaced (--force
+         ! replaces it: a run afresh).
          call take_finished_run(outcome, info, error)
          return
       end if
@@ -222,12 +223,14 @@ contains
             call solve_geometry(setup, config%case_point(outcome%first), common%patches, error)
          end if
          if (allocated(error)) then
-            ! The geometry every case shares: each of them fails for this reason (and says so
-            ! in its summary line).
-            call fail_every_case(outcome, error)
-            return
+            ! The geometry every case shares cannot be found: each case then looks for it
+            ! itself and fails for this reason, as a case of a swept geometry does (its line
+            ! and /failures say why; a shard whose cases all fail still writes its file).
+            deallocate (error)
+            common_geometry = .false.
+         else
+            info%geometry = common%patches
          end if
-         info%geometry = common%patches
       end if
 
       if (.not. options%write_output) then
@@ -289,21 +292,6 @@ contains
             error)
       end if
    end subroutine take_finished_run
-
-   !> Every case of the shard failed for the same reason `error` (the geometry they share):
-   !> their summaries carry its status, `outcome%failures` its message.
-   pure subroutine fail_every_case(outcome, error)
-      type(sweep_outcome_type), intent(inout) :: outcome
-      type(error_type), intent(in) :: error
-      integer :: i
-      deallocate (outcome%failures)
-      allocate (outcome%failures(outcome%last - outcome%first + 1))
-      do i = outcome%first, outcome%last
-         outcome%summaries(i)%stat = error%stat
-         outcome%failures(i - outcome%first + 1)%case = i
-         outcome%failures(i - outcome%first + 1)%message = error%message
-      end do
-   end subroutine fail_every_case
 
    !> The files a run reads: the options' inputs (the case file) and the profile files of the
    !> configuration (not the built-in profiles).

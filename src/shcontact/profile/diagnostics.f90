@@ -20,7 +20,8 @@
 !>   the largest leave-one-out residual: each point against the cubic fitted to its six
 !>   neighbours (three on each side) in their chord's frame (a single bad point, which the
 !>   median noise estimate does not see, and which the spline turns into a curvature spike),
-!>   among the points a running contact can reach (canonical −10 mm ≤ z ≤ 25 mm) where the seven points
+!>   among the points a running contact can reach (canonical z ≤ 25 mm; on a wheel, not beyond
+!>   its flange tip) where the seven points
 !>   turn by less than 30°.
 !> * **Smoothing.** White noise σ at spacing h, smoothed by the spline (response
 !>   1/(1 + (L_filt/L)⁴)), leaves a curvature noise σ_κ = C σ √h L_filt^(−5/2) with
@@ -31,7 +32,7 @@ module shcontact_profile_diagnostics
    use shcontact_math_statistics, only: median
    use shcontact_core_constants, only: pi
    use shcontact_core_error, only: error_type
-   use shcontact_profile_points, only: profile_type
+   use shcontact_profile_points, only: profile_type, profile_kind_wheel
    use shcontact_profile_builtin, only: builtin_profile
    implicit none
    private
@@ -58,10 +59,6 @@ module shcontact_profile_diagnostics
    !> from the tape circle (wheel) or the top (rail). The last millimetres of a flange (S1002:
    !> 28 mm deep) touch only a climbing wheel, and its tip is where measurements are roughest.
    real(wp), parameter :: running_depth = 25.0_wp
-   !> ... and up to this height (mm) above it: a hollow-worn tread lies a few millimetres above
-   !> the tape circle, a wheel's back face and field-side chamfer (never in running contact)
-   !> farther up.
-   real(wp), parameter :: running_height = 10.0_wp
 
    !> The largest gap and the largest outlier of a profile's points.
    type :: point_anomaly_type
@@ -145,7 +142,7 @@ contains
       type(point_anomaly_type), intent(out) :: anomaly
       real(wp), allocatable :: gaps(:)
       real(wp) :: r
-      integer :: n, j
+      integer :: n, j, last
       logical :: ok
       n = size(read%y)
       if (n < 2) return
@@ -155,8 +152,13 @@ contains
       anomaly%gap = gaps(anomaly%gap_at)
       anomaly%has_gap = anomaly%gap > max(gap_ratio*anomaly%spacing, min_gap)
       n = size(cleaned%y)
-      do j = 4, n - 3
-         if (cleaned%z(j) > running_depth .or. cleaned%z(j) < -running_height) cycle
+      ! A wheel (canonical order: field side to flange back) is judged up to its flange tip:
+      ! the back face beyond it never touches the rail (a MiniProf wheel's note named a point
+      ! of its flange back), whatever the profile's z origin.
+      last = n - 3
+      if (cleaned%kind == profile_kind_wheel) last = min(last, maxloc(cleaned%z, 1))
+      do j = 4, last
+         if (cleaned%z(j) > running_depth) cycle
          if (allocated(cleaned%kink)) then
             if (any(cleaned%kink(j - 2:j + 2))) cycle
          end if
