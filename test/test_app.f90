@@ -936,7 +936,8 @@ contains
          'csv header of a kinematic sweep')
       if (allocated(error)) return
       call expect_in(error, header, ',y_track,x_track,nu_x,nu_y,phi,wheel_patches,wheel_fn,'// &
-         'wheel_fx,wheel_fy,wheel_fx_norm,wheel_fy_norm,wheel_area,wheel_p_max,message', &
+         'wheel_fx,wheel_fy,wheel_fx_norm,wheel_fy_norm,wheel_area,wheel_p_max,climbing,'// &
+         'message', &
          'csv header')
       if (allocated(error)) return
 
@@ -1267,6 +1268,7 @@ contains
       case ('wheel_fy_norm'); value = r%wheel%fy_norm
       case ('wheel_area'); value = r%wheel%area
       case ('wheel_p_max'); value = r%wheel%p_max
+      case ('climbing'); value = merge(1.0_wp, 0.0_wp, r%climbing)
       case default; value = ieee_value(value, ieee_quiet_nan)
       end select
    end function library_column

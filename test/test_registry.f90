@@ -544,6 +544,8 @@ contains
       type(case_summary_type) :: s
       integer :: k, j, stat
       real(wp) :: x
+      !> The case's flags after the joined contact's columns (climbing).
+      integer, parameter :: n_flag_columns = 1
       call new_library(error, ctx)
       if (allocated(error)) return
       call check(error, context_solve_state(ctx), 0, message='solve of the default state')
@@ -601,15 +603,25 @@ contains
             k) .and. x /= 0.0_wp, message=trim(wheel_columns(k)%name)//': keyed value '// &
             'differs from the joined contact''s, or is zero on the default case')
          if (allocated(error)) return
-         j = n_summary_columns - size(wheel_columns) + k
+         j = n_summary_columns - n_flag_columns - size(wheel_columns) + k
          call check(error, summary_columns(1, j) == wheel_columns(k)%summary .and. &
             summary_columns(2, j) == wheel_columns(k)%units .and. summary_value(s, j) == x, &
             message='/summary/'//trim(wheel_columns(k)%summary)//': not the joined contact''s '// &
             'column of the table')
          if (allocated(error)) return
       end do
-      call check(error, count(patch_columns%summary /= '') + 4 + size(wheel_columns), &
-         n_summary_columns, message='/summary has a column that is not in the tables')
+      ! The flags last: climbing, the result's and the keyed value's, 0 on the default case.
+      call check(error, summary_columns(1, n_summary_columns) == 'climbing' .and. &
+         summary_value(s, n_summary_columns) == merge(1.0_wp, 0.0_wp, ctx%result%climbing), &
+         message='/summary/climbing: not the result''s flag')
+      if (allocated(error)) return
+      stat = context_get_value(ctx, 'climbing', 0, x)
+      call check(error, stat == 0 .and. x == summary_value(s, n_summary_columns) .and. &
+         x == 0.0_wp, message='climbing: keyed value differs, or set on the default case')
+      if (allocated(error)) return
+      call check(error, count(patch_columns%summary /= '') + 4 + size(wheel_columns) + &
+         n_flag_columns, n_summary_columns, message='/summary has a column that is not in '// &
+         'the tables')
    end subroutine test_output_columns
 
 end module test_registry

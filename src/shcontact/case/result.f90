@@ -46,6 +46,9 @@ module shcontact_case_result
       !> The wheel's joined contact (the patches the exact theory joins into one, doc/lobes.md;
       !> its `/summary` columns are shcontact_pipeline_result's `wheel_columns`).
       type(wheel_contact_type) :: wheel
+      !> The main patch's contact lies on the flange beyond its steepest part
+      !> (contact_result_type%climbing; column `climbing`, 1 or 0).
+      logical :: climbing = .false.
    end type case_summary_type
 
    !> The totals' columns of `/summary` (name, units, description), before the main patch's.
@@ -60,14 +63,19 @@ module shcontact_case_result
       'total vertical force on the wheel, track frame (down +)')]
    !> The real columns of `/summary` in file order: the totals, then the main patch's values
    !> that have a `/summary` column, then the wheel's joined contact.
+   !> The case's flags, after the joined contact's columns (stored as integers, 1 or 0).
+   type(patch_column_type), parameter :: flag_columns(*) = [ &
+      patch_column_type('climbing', 'climbing', '1', .false., &
+      '1: the main patch lies on the flange beyond its steepest part (flange climbing)')]
    type(patch_column_type), parameter :: columns(*) = [total_columns, &
-      pack(patch_columns, patch_columns%summary /= ''), wheel_columns]
+      pack(patch_columns, patch_columns%summary /= ''), wheel_columns, flag_columns]
    !> Index in `patch_columns` of each real column (0 for a total or a joined contact's value).
    integer, parameter :: column_patch_index(*) = [spread(0, 1, size(total_columns)), &
       pack([(k_, k_=1, size(patch_columns))], patch_columns%summary /= ''), &
-      spread(0, 1, size(wheel_columns))]
+      spread(0, 1, size(wheel_columns) + size(flag_columns))]
    !> Columns before the joined contact's.
-   integer, parameter :: first_wheel_column = size(columns) - size(wheel_columns)
+   integer, parameter :: first_flag_column = size(columns) - size(flag_columns)
+   integer, parameter :: first_wheel_column = first_flag_column - size(wheel_columns)
    integer, parameter :: n_summary_columns = size(columns)
    !> Names and units of the real summary columns, in file order.
    character(len=*), parameter :: summary_columns(2, n_summary_columns) = reshape( &
@@ -116,6 +124,7 @@ contains
       s%fz_total = contact%track%fz
       s%patch_result_type = contact%main
       s%wheel = wheel_contact_of(contact%wheel)
+      s%climbing = contact%climbing
    end function case_summary
 
    !> True when real summary column `k` belongs to a run (kinematic or not).
@@ -131,7 +140,7 @@ contains
    pure logical function summary_column_counts(k)
       !> Column number.
       integer, intent(in) :: k
-      summary_column_counts = columns(k)%summary == 'wheel_patches'
+      summary_column_counts = columns(k)%summary == 'wheel_patches' .or. k > first_flag_column
    end function summary_column_counts
 
    !> The value of real summary column `k` (numbering of [[summary_columns]]).
@@ -145,7 +154,9 @@ contains
       case (2); summary_value = s%fx_total
       case (3); summary_value = s%fy_total
       case (4); summary_value = s%fz_total
-      case (first_wheel_column + 1:)
+      case (first_flag_column + 1:)
+         summary_value = merge(1.0_wp, 0.0_wp, s%climbing)
+      case (first_wheel_column + 1:first_flag_column)
          summary_value = wheel_value(s%wheel, k - first_wheel_column)
       case default; summary_value = patch_value(s%patch_result_type, column_patch_index(k))
       end select
@@ -164,7 +175,9 @@ contains
       case (2); s%fx_total = value
       case (3); s%fy_total = value
       case (4); s%fz_total = value
-      case (first_wheel_column + 1:)
+      case (first_flag_column + 1:)
+         s%climbing = value /= 0.0_wp
+      case (first_wheel_column + 1:first_flag_column)
          call set_wheel_value(s%wheel, k - first_wheel_column, value)
       case default; call set_patch_value(s%patch_result_type, column_patch_index(k), value)
       end select
