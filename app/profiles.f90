@@ -37,7 +37,7 @@ contains
          call make_directory(cli%write_dir, error)
          do k = 1, size(written_builtins)
             if (.not. allocated(error)) call check_output_file(join_path(cli%write_dir, &
-               trim(written_builtins(k))//'.txt'), '--write', cli%force, [''], error)
+               trim(written_builtins(k))//'.txt'), 'the file of --write', cli%force, [''], error)
          end do
          if (.not. allocated(error)) call write_builtin_profiles(cli%write_dir, error)
          if (allocated(error)) then

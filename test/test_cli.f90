@@ -1021,7 +1021,7 @@ contains
       call shell('mkdir -p '//dir//'/built-in && echo mine > '//dir//'/built-in/S1002.txt')
       call run_expect(error, dir, 'profiles --write built-in', 3, out, err)
       if (allocated(error)) return
-      call expect_in(error, err, 'built-in/S1002.txt: --write exists', 'the message')
+      call expect_in(error, err, 'built-in/S1002.txt: the file of --write exists', 'the message')
       if (allocated(error)) return
       call check(error, file_text(dir//'/built-in/S1002.txt') == 'mine'//new_line('a') .and. &
          .not. file_exists(dir//'/built-in/UIC60.txt'), message='--write: nothing replaced')

@@ -224,7 +224,7 @@ contains
       type(lib_error), allocatable :: err
       real(wp) :: worst, f, df
       integer :: i, k
-      if (.not. have_shared(error)) return
+      if (.not. have_shared(error, 'MBench_S1002_v3.prw')) return
       call builtin_profile('S1002', built, err)
       if (lib_failed(error, err)) return
       call read_profile(sample_file('MBench_S1002_v3.prw'), sample, err)
@@ -255,7 +255,7 @@ contains
       type(profile_type) :: built, sample
       type(lib_error), allocatable :: err
       real(wp) :: worst, top(2)
-      if (.not. have_shared(error)) return
+      if (.not. have_shared(error, 'MBench_UIC60_v3.prr')) return
       call builtin_profile('UIC60-canted', built, err)
       if (lib_failed(error, err)) return
       call read_profile(sample_file('MBench_UIC60_v3.prr'), sample, err)
@@ -336,12 +336,14 @@ contains
       write (*, '(4x,a,": ",es10.3)') label, value
    end subroutine report
 
-   !> Whether the external data's sample profiles are there (test_external_data); the test is
+   !> Whether the external data's sample profile `name` is there (test_external_data); the test is
    !> skipped when SHCONTACT_EXTERNAL_DATA is unset, failed when the folder lacks them.
-   logical function have_shared(error)
+   logical function have_shared(error, name)
       type(error_type), allocatable, intent(out) :: error
+      !> The sample profile the test reads.
+      character(len=*), intent(in) :: name
       character(len=:), allocatable :: path
-      path = external_file('profiles/MBench_UIC60_v3.prr', error)
+      path = external_file('profiles/'//name, error)
       have_shared = .not. allocated(error)
    end function have_shared
 
