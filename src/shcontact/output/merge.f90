@@ -18,6 +18,7 @@ module shcontact_output_merge
    use shcontact_core_strings, only: str_int
    use shcontact_core_text, only: string_type, string_list_type
    use shcontact_case_result, only: case_summary_type, summary_columns, n_summary_columns, &
+      summary_column_used, &
       set_summary_value
    implicit none
    private
@@ -354,6 +355,8 @@ contains
       real(wp), allocatable :: points(:), expected(:)
       integer :: n, k, i
       logical :: complete
+      type(case_config_type) :: config
+      type(h5_file_type) :: file
 
       same = .false.
       difference = ''
@@ -375,6 +378,21 @@ contains
             str_int(last - first + 1)//' cases'
          return
       end if
+      ! Every /summary column of this run there (an older version's file lacks the newer ones,
+      ! which would read as 0).
+      call read_config_text(namelist, 'this run', config, error)
+      if (allocated(error)) return
+      call h5_open(file, name, error)
+      if (allocated(error)) return
+      do k = 1, n_summary_columns
+         if (.not. summary_column_used(k, config%is_kinematic())) cycle
+         if (h5_exists(file, 'summary/'//trim(summary_columns(1, k)))) cycle
+         difference = 'it has no /summary/'//trim(summary_columns(1, k))//': written by an '// &
+            'older version'
+         exit
+      end do
+      call h5_close(file)
+      if (len(difference) > 0) return
       if (any(indices /= [(i, i=first, last)])) then
          difference = 'it holds other cases (another shard)'
          return
