@@ -111,3 +111,26 @@ def test_not_a_result_file(run_app, tmp_path):
     path, _ = run_app("plain", "--set", "position%t_y=4.733")
     with pytest.raises(KeyError, match="has no group 'nope'"):
         shcontact.ResultFile(path).units("nope")
+
+
+def test_older_files_are_not_read_as_zeros(app, tmp_path):
+    """A result file lacking a /summary column of this version (an older version's) is not
+    merged nor taken as a finished run by --resume: its missing column would read as 0."""
+    import subprocess
+    import h5py
+
+    def run(*args):
+        return subprocess.run([app, *args], capture_output=True, text=True, cwd=tmp_path)
+
+    sweep = ["run", "--set", "sweep%nu_x=0,0.001", "-q"]
+    for k in (1, 2):
+        assert run(*sweep, "-o", "s.h5", "--shard", f"{k}/2").returncode == 0
+    assert run(*sweep, "-o", "full.h5").returncode == 0
+    for name in ("s-shard1of2.h5", "full.h5"):
+        with h5py.File(tmp_path / name, "r+") as f:
+            del f["summary/climbing"]
+    merged = run("merge", "m.h5", "s-shard1of2.h5", "s-shard2of2.h5")
+    assert merged.returncode == 2 and "has no /summary/climbing" in merged.stderr
+    assert not (tmp_path / "m.h5").exists()
+    resumed = run(*sweep, "-o", "full.h5", "--resume")
+    assert resumed.returncode == 2 and "it has no /summary/climbing" in resumed.stderr

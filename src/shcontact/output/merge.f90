@@ -153,6 +153,7 @@ contains
       type(string_list_type) :: failure_messages
       integer, allocatable :: order(:)
       real(wp), allocatable :: first_profiles(:), profiles(:)
+      character(len=:), allocatable :: missing
       logical :: partial, src_has_cases, same
 
       partial = .false.
@@ -172,6 +173,16 @@ contains
          if (allocated(error)) return
          call run_key(text, inputs(f)%text, key, error)
          if (allocated(error)) return
+         call read_config_text(text, '"'//inputs(f)%text//'":/input/namelist', config, error)
+         if (allocated(error)) return
+         call missing_summary_column(inputs(f)%text, config%is_kinematic(), missing, error)
+         if (allocated(error)) return
+         if (len(missing) > 0) then
+            call fatal_error(error, 'merge: "'//inputs(f)%text//'" has no /summary/'// &
+               missing//' (written by an older version of shcontact); solve that shard '// &
+               'again with this version', stat_invalid_input)
+            return
+         end if
          if (f == 1) then
             first_text = text
             first_key = key
@@ -356,7 +367,7 @@ contains
       integer :: n, k, i
       logical :: complete
       type(case_config_type) :: config
-      type(h5_file_type) :: file
+      character(len=:), allocatable :: missing
 
       same = .false.
       difference = ''
@@ -382,17 +393,12 @@ contains
       ! which would read as 0).
       call read_config_text(namelist, 'this run', config, error)
       if (allocated(error)) return
-      call h5_open(file, name, error)
+      call missing_summary_column(name, config%is_kinematic(), missing, error)
       if (allocated(error)) return
-      do k = 1, n_summary_columns
-         if (.not. summary_column_used(k, config%is_kinematic())) cycle
-         if (h5_exists(file, 'summary/'//trim(summary_columns(1, k)))) cycle
-         difference = 'it has no /summary/'//trim(summary_columns(1, k))//': written by an '// &
-            'older version'
-         exit
-      end do
-      call h5_close(file)
-      if (len(difference) > 0) return
+      if (len(missing) > 0) then
+         difference = 'it has no /summary/'//missing//': written by an older version'
+         return
+      end if
       if (any(indices /= [(i, i=first, last)])) then
          difference = 'it holds other cases (another shard)'
          return
@@ -422,6 +428,27 @@ contains
       summaries(first:last) = held
       same = .true.
    end subroutine compare_finished_run
+
+   !> The first `/summary` column a run (kinematic or not) has that the result file `name`
+   !> lacks ('' when none): a file of an older version, whose missing columns would read as 0.
+   subroutine missing_summary_column(name, kinematic, missing, error)
+      character(len=*), intent(in) :: name
+      logical, intent(in) :: kinematic
+      character(len=:), allocatable, intent(out) :: missing
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file_type) :: file
+      integer :: k
+      missing = ''
+      call h5_open(file, name, error)
+      if (allocated(error)) return
+      do k = 1, n_summary_columns
+         if (.not. summary_column_used(k, kinematic)) cycle
+         if (h5_exists(file, 'summary/'//trim(summary_columns(1, k)))) cycle
+         missing = trim(summary_columns(1, k))
+         exit
+      end do
+      call h5_close(file)
+   end subroutine missing_summary_column
 
    !> The profiles a result file holds under /input/profiles (the points as the run read them):
    !> y, z of the wheel then of the rail, each preceded by its point count (−1 when the file
