@@ -134,3 +134,28 @@ def test_older_files_are_not_read_as_zeros(app, tmp_path):
     assert not (tmp_path / "m.h5").exists()
     resumed = run(*sweep, "-o", "full.h5", "--resume")
     assert resumed.returncode == 2 and "it has no /summary/climbing" in resumed.stderr
+
+
+def test_older_checkpoint_refused_at_the_start(app, tmp_path):
+    """A checkpoint whose blocks lack a /summary column of this version (made by an older
+    version) is refused when --resume starts, not at the final merge after solving the rest."""
+    import os
+    import subprocess
+    import h5py
+
+    (tmp_path / "s.nml").write_text("&sweep nu_x = 0.0, 1.0e-3, 2.0e-3, 3.0e-3 /\n"
+                                    "&output fields = 'all', checkpoint_cases = 1 /\n"
+                                    "&normal n_strips = 20 /\n&tangential n_elements = 10 /\n")
+    env = dict(os.environ, SHCONTACT_TEST_ABORT_AFTER_BLOCKS="2")
+    killed = subprocess.run([app, "run", "s.nml", "-q", "-o", "out.h5"], capture_output=True,
+                            text=True, cwd=tmp_path, env=env)
+    assert killed.returncode != 0
+    blocks = sorted((tmp_path / "out.h5.partial").glob("block_*.h5"))
+    assert blocks
+    with h5py.File(blocks[0], "r+") as f:
+        del f["summary/climbing"]
+    resumed = subprocess.run([app, "run", "s.nml", "-q", "-o", "out.h5", "--resume"],
+                             capture_output=True, text=True, cwd=tmp_path)
+    assert resumed.returncode == 2, resumed.stderr
+    assert "made by an older version" in resumed.stderr and "climbing" in resumed.stderr
+    assert not (tmp_path / "out.h5").exists()

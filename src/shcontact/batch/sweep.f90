@@ -45,7 +45,7 @@ module shcontact_batch_sweep
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
       end_summary_file, check_output_file, case_group_name
    use shcontact_output_merge, only: merge_result_files, read_result_summary, &
-      compare_finished_run
+      compare_finished_run, missing_summary_column
    use shcontact_core_files, only: file_exists, path_kind, open_work_folder, &
       peak_memory_kib, unlock_file, folder_made, folder_existing, folder_busy, folder_unlocked, &
       folder_not_writable, &
@@ -379,7 +379,8 @@ contains
       else if (options%resume) then
          ! The blocks of a resumed run carry the namelist of the run that started it (which may
          ! differ in the output name or the spelling of the profile paths).
-         call read_checkpoint(dir, checkpoint_key(config, setup), info%namelist, n, outcome, &
+         call read_checkpoint(dir, checkpoint_key(config, setup), config%is_kinematic(), &
+            info%namelist, n, outcome, &
             blocks, error)
          if (allocated(error)) return
       else
@@ -617,8 +618,10 @@ contains
    ! ------------------------------------------------------------------------------------------
 
    !> Take the finished cases from the checkpoint of an interrupted run of this configuration.
-   subroutine read_checkpoint(dir, key, namelist, n_cases, outcome, blocks, error)
+   subroutine read_checkpoint(dir, key, kinematic, namelist, n_cases, outcome, blocks, error)
       character(len=*), intent(in) :: dir, key
+      !> The run is kinematic (which /summary columns its blocks must hold).
+      logical, intent(in) :: kinematic
       !> This run's namelist; on return that of the checkpoint's blocks.
       character(len=:), allocatable, intent(inout) :: namelist
       integer, intent(in) :: n_cases
@@ -631,7 +634,7 @@ contains
       type(case_summary_type), allocatable :: summaries(:)
       integer :: b, i, n, j
       logical :: has_key
-      character(len=:), allocatable :: original
+      character(len=:), allocatable :: original, missing
 
       call read_manifest(dir, listed)
       blocks%n = 0
@@ -654,6 +657,16 @@ contains
          end if
          if ((.not. has_key .and. text /= namelist) .or. n /= n_cases) then
             call another_configuration(dir, error)
+            return
+         end if
+         ! A block of an older version lacks newer /summary columns (they would read as 0 in
+         ! the merged file): refused now, not after solving the rest.
+         call missing_summary_column(listed%items(b)%text, kinematic, missing, error)
+         if (allocated(error)) return
+         if (len(missing) > 0) then
+            call fatal_error(error, 'cannot resume: the checkpoint in "'//dir//'" was made '// &
+               'by an older version of shcontact (its blocks have no /summary/'//missing// &
+               '); start again with --force (or after removing it)', stat_invalid_input)
             return
          end if
          if (blocks%n == 0) then

@@ -23,7 +23,8 @@ module shcontact_output_merge
    implicit none
    private
 
-   public :: merge_result_files, read_result_summary, compare_finished_run
+   public :: merge_result_files, read_result_summary, compare_finished_run, &
+      missing_summary_column
 
 contains
 
