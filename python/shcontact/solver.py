@@ -66,6 +66,20 @@ def _c_double_array(values):
     return array, array.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
 
 
+def _check_errors(errors):
+    if errors not in ("raise", "nan"):
+        raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
+
+
+def _result_column(array, i, name):
+    """Column ``i`` of a result array as returned: counts and flags as integers (a failed
+    case's NaN as 0), a 0-d array as a scalar."""
+    column = array[..., i]
+    if name in layout.INTEGER:
+        column = np.where(np.isnan(column), 0, column).astype(np.int64)
+    return column[()] if column.ndim == 0 else column
+
+
 class Contact:
     """One wheel on its rail: a handle of the C API (``shcontact_create``).
 
@@ -325,8 +339,7 @@ class Contact:
 
     @_locked
     def _loop(self, call, inputs, names, errors):
-        if errors not in ("raise", "nan"):
-            raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
+        _check_errors(errors)
         shape = inputs[0].shape
         keyed = layout.WHEEL + layout.FLAGS
         out = np.full(shape + (len(names) + len(keyed),), np.nan)
@@ -354,12 +367,7 @@ class Contact:
                     raise ShcontactError(stat, self._message(), case)
         self._last_kinematic = len(names) == len(layout.KINEMATIC)
         self._main_patch = int(values[names.index("main_patch")]) if stat == 0 else 1
-        result = {}
-        for i, name in enumerate(names + keyed):
-            column = out[..., i]
-            if name in layout.INTEGER:
-                column = np.where(np.isnan(column), 0, column).astype(np.int64)
-            result[name] = column[()] if column.ndim == 0 else column
+        result = {name: _result_column(out, i, name) for i, name in enumerate(names + keyed)}
         result["status"] = status[()] if status.ndim == 0 else status
         return result
 
@@ -465,8 +473,7 @@ class Wheelset(Contact):
 
     @_locked
     def _wheelset_loop(self, mode, inputs, errors):
-        if errors not in ("raise", "nan"):
-            raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
+        _check_errors(errors)
         shape = inputs[0].shape
         names = layout.KINEMATIC + layout.FLAGS
         totals_names = ("fx", "fy", "fz", "mz")
@@ -502,14 +509,9 @@ class Wheelset(Contact):
                     case = np.unravel_index(k, shape) if shape else None
                     raise ShcontactError(stat, self._message(), case)
 
-        def column(array, i, name):
-            c = array[..., i]
-            if name in layout.INTEGER:
-                c = np.where(np.isnan(c), 0, c).astype(np.int64)
-            return c[()] if c.ndim == 0 else c
-
-        result = {name: column(totals, i, name) for i, name in enumerate(totals_names)}
+        result = {name: _result_column(totals, i, name) for i, name in enumerate(totals_names)}
         for side in layout.SIDES:
-            result[side] = {name: column(wheels[side], i, name) for i, name in enumerate(names)}
+            result[side] = {name: _result_column(wheels[side], i, name)
+                            for i, name in enumerate(names)}
         result["status"] = status[()] if status.ndim == 0 else status
         return result

@@ -43,7 +43,7 @@ module shcontact_batch_sweep
       stat_io, stat_usage
    use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
-      end_summary_file, check_output_file, case_group_name
+      end_summary_file, check_output_file, case_groups
    use shcontact_output_merge, only: merge_result_files, read_result_summary, &
       compare_finished_run, missing_summary_column
    use shcontact_core_files, only: file_exists, path_kind, open_work_folder, &
@@ -257,7 +257,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: difference, messages(:)
       integer, allocatable :: failed(:)
-      type(string_type), allocatable :: groups(:)
       logical :: same
       integer :: k
       call compare_finished_run(outcome%output, info%namelist, info%profiles, &
@@ -283,14 +282,9 @@ contains
       outcome%finished_before = .true.
       ! A sidecar removed since (by hand, or by a run killed between its two last steps) is
       ! written again; the results file itself is not touched.
-      if (.not. file_exists(xdmf_name(outcome%output))) then
-         allocate (groups(outcome%last - outcome%first + 1))
-         do k = outcome%first, outcome%last
-            groups(k - outcome%first + 1)%text = case_group_name(k, outcome%n_cases)
-         end do
-         call write_xdmf_sidecar(outcome%output, [(k, k=outcome%first, outcome%last)], groups, &
-            error)
-      end if
+      if (.not. file_exists(xdmf_name(outcome%output))) call write_xdmf_sidecar( &
+         outcome%output, [(k, k=outcome%first, outcome%last)], case_groups([(k, &
+         k=outcome%first, outcome%last)], outcome%n_cases), error)
    end subroutine take_finished_run
 
    !> The files a run reads: the options' inputs (the case file) and the profile files of the

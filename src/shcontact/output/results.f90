@@ -63,7 +63,7 @@ module shcontact_output_results
    public :: write_root_attributes, attach_profile_scales, write_summary, sort_failures, &
       write_failure_table, commit_output, finish_output, profile_names
    public :: check_output_file
-   public :: case_group_name, units_text, sign_convention_text
+   public :: case_group_name, case_groups, units_text, sign_convention_text
 
    !> The units system, stored as a root attribute (doc/theory.md decision 1).
    character(len=*), parameter :: units_text = 'mm, N, MPa (N/mm^2), rad; creepages '// &
@@ -614,17 +614,22 @@ contains
       character(len=*), intent(in) :: output
       integer, intent(in) :: order(:), n_cases
       type(error_type), allocatable, intent(out) :: error
-      type(string_type), allocatable :: groups(:)
-      integer :: i
-      allocate (groups(size(order)))
-      do i = 1, size(order)
-         groups(i)%text = case_group_name(order(i), n_cases)
-      end do
-      call write_xdmf_sidecar(output, order, groups, error)
+      call write_xdmf_sidecar(output, order, case_groups(order, n_cases), error)
       if (allocated(error)) then
          if (delete_file(output)) continue
       end if
    end subroutine finish_output
+
+   !> The per-case groups ([[case_group_name]]) of cases `cases` of a run of `n_cases`.
+   pure function case_groups(cases, n_cases) result(groups)
+      integer, intent(in) :: cases(:), n_cases
+      type(string_type), allocatable :: groups(:)
+      integer :: i
+      allocate (groups(size(cases)))
+      do i = 1, size(cases)
+         groups(i)%text = case_group_name(cases(i), n_cases)
+      end do
+   end function case_groups
 
    !> Sort the failure table by case number (insertion sort: it is short and nearly sorted).
    subroutine sort_failures(cases, messages)
