@@ -49,6 +49,7 @@ contains
          new_unittest('foreign_sidecar', test_foreign_sidecar), &
          new_unittest('sidecar_directory', test_sidecar_directory), &
          new_unittest('output_named_like_its_sidecar', test_output_xmf), &
+         new_unittest('sidecar_of_a_name_xml_escapes', test_sidecar_xml_name), &
          new_unittest('sidecar_of_another_output', test_sidecar_of_another_output), &
          new_unittest('merge_shards_of_other_output_names', test_merge_output_names), &
          new_unittest('control_characters', test_control_characters), &
@@ -364,6 +365,40 @@ contains
       call check(error, stat, 2, message='&output file .xmf: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_output_xmf
+
+   !> An output name with `--`, `&`, `<` and `>` gives a sidecar that is well-formed XML (the
+   !> name escaped in its DataItems; in its header comment, which holds no `--`, the `-` too),
+   !> and a second run recognises the sidecar as its own output's.
+   subroutine test_sidecar_xml_name(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: output = "'a--b&<c>-.h5'", sidecar = "'a--b&<c>-.xmf'"
+      character(len=:), allocatable :: dir, text
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('of_xmlname')
+      call write_lines(dir//'/sw.nml', small_sweep)
+      stat = run_program(dir, 'run sw.nml -q -o '//output)
+      call check(error, stat, 0, message='first run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      text = file_text(dir//'/a--b&<c>-.xmf')
+      call expect_in(error, text, 'Element fields of a&#45;&#45;b&amp;&lt;c&gt;&#45;.h5 '// &
+         '(shcontact)', 'the header comment')
+      if (allocated(error)) return
+      call expect_in(error, text, 'Format="HDF">a--b&amp;&lt;c&gt;-.h5:/cases/', 'a DataItem')
+      if (allocated(error)) return
+      call check(error, index(text, '&<') == 0 .and. index(text, '<!-- Element fields of a--') &
+         == 0, message='unescaped name in the sidecar')
+      if (allocated(error)) return
+      if (holds(dir, 'command -v python3 > /dev/null')) then
+         call check(error, holds(dir, 'python3 -c "import sys, xml.dom.minidom as m; '// &
+            'm.parse(sys.argv[1])" '//sidecar), message='the sidecar is not well-formed XML')
+         if (allocated(error)) return
+      end if
+      ! Its own output's sidecar: replaced by the same run again without --force.
+      stat = run_program(dir, 'run sw.nml -q -o '//output)
+      call check(error, stat, 0, message='second run: '//file_text(dir//'/err.txt'))
+      call shell('rm -rf '//dir)
+   end subroutine test_sidecar_xml_name
 
    !> `-o r.h5` then `-o r.hdf5`: both outputs have the sidecar r.xmf, and the second run
    !> replaced (or, without fields, deleted) the first one's. Refused unless --force.

@@ -5,7 +5,7 @@ module shcontact_core_strings
    implicit none
    private
 
-   public :: to_lower, str_int, str_real, visible, str_format, format_length, &
+   public :: to_lower, substituted, str_int, str_real, visible, str_format, format_length, &
       control_characters, replaced
 
    !> The ASCII control characters (0–31) and DEL (127): no text input holds them (a case
@@ -34,6 +34,23 @@ contains
          if (out(i:i) == from) out(i:i) = to
       end do
    end function replaced
+
+   !> The text with every occurrence of the substring `from` (not empty) turned into `to`, left
+   !> to right, without looking again at what was put in.
+   pure function substituted(text, from, to) result(out)
+      character(len=*), intent(in) :: text, from, to
+      character(len=:), allocatable :: out
+      integer :: i, k
+      out = ''
+      i = 1
+      do
+         k = index(text(i:), from)
+         if (k == 0 .or. len(from) == 0) exit
+         out = out//text(i:i + k - 2)//to
+         i = i + k - 1 + len(from)
+      end do
+      out = out//text(i:)
+   end function substituted
 
    !> ASCII lower case (option names, file extensions).
    pure function to_lower(text) result(low)

@@ -13,7 +13,7 @@
 !> file written by shcontact: [[is_xdmf_sidecar]]; anything else is left alone).
 module shcontact_output_xdmf
    use shcontact_core_error, only: error_type, fatal_error, stat_io
-   use shcontact_core_strings, only: str_int
+   use shcontact_core_strings, only: str_int, substituted
    use shcontact_core_files, only: rename_file, delete_file, process_id, path_kind
    use shcontact_output_hdf5, only: h5_file_type, h5_open, h5_close, h5_exists, h5_dataset_info
    use shcontact_core_text, only: string_type
@@ -76,7 +76,8 @@ contains
       end if
       write (unit, '(a)', iostat=stat) '<?xml version="1.0" ?>', &
          '<!DOCTYPE Xdmf SYSTEM "Xdmf.dtd" []>', &
-         '<!-- Element fields of '//ref//' (shcontact); open this file in ParaView. -->', &
+         '<!-- Element fields of '//xml_escaped(ref, comment=.true.)// &
+         ' (shcontact); open this file in ParaView. -->', &
          '<Xdmf Version="3.0">', '  <Domain>', &
          '    <Grid Name="cases" GridType="Collection" CollectionType="Temporal">'
       n_grids = 0
@@ -149,7 +150,7 @@ contains
       head = file_head(name)
       i = index(head, before)
       j = index(head, after)
-      if (i > 0 .and. j > i + len(before)) described = head(i + len(before):j - 1)
+      if (i > 0 .and. j > i + len(before)) described = xml_unescaped(head(i + len(before):j - 1))
    end function sidecar_target
 
    !> The first 400 bytes of a regular file (fewer when it is shorter; '' when it cannot be
@@ -204,7 +205,8 @@ contains
          '          <Topology TopologyType="2DSMesh" Dimensions="'//mesh_dims//'"/>', &
          '          <Geometry GeometryType="XY">', &
          '            <DataItem Dimensions="'//mesh_dims//' 2" NumberType="Float" '// &
-         'Precision="'//str_int(type_size)//'" Format="HDF">'//ref//':/'//path//'/xy</DataItem>'
+         'Precision="'//str_int(type_size)//'" Format="HDF">'//xml_escaped(ref)//':/'//path// &
+         '/xy</DataItem>'
       if (stat /= 0) return
       write (unit, '(a)', iostat=stat) '          </Geometry>'
       do i = 1, size(field_names)
@@ -255,7 +257,29 @@ contains
       end if
       write (unit, '(a)', iostat=stat) indent//'<DataItem Dimensions="'//mesh_dims// &
          '" NumberType="'//number_type//'" Precision="'//str_int(type_size)// &
-         '" Format="HDF">'//ref//':/'//path//'</DataItem>'
+         '" Format="HDF">'//xml_escaped(ref)//':/'//path//'</DataItem>'
    end subroutine write_item
+
+   !> A file name as XML text: `&`, `<`, `>` as entities; in a comment (`comment`), which may
+   !> hold no `--` and not end in `-`, also every `-` as `&#45;` when the name has either
+   !> (the sidecar's header comment names its result file; [[xml_unescaped]] reads it back).
+   pure function xml_escaped(text, comment) result(escaped)
+      character(len=*), intent(in) :: text
+      logical, intent(in), optional :: comment
+      character(len=:), allocatable :: escaped
+      escaped = substituted(substituted(substituted(text, '&', '&amp;'), '<', '&lt;'), '>', '&gt;')
+      if (.not. present(comment)) return
+      if (.not. comment .or. len(text) == 0) return
+      if (index(text, '--') > 0 .or. text(len(text):) == '-') &
+         escaped = substituted(escaped, '-', '&#45;')
+   end function xml_escaped
+
+   !> The text of [[xml_escaped]] back.
+   pure function xml_unescaped(text) result(plain)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: plain
+      plain = substituted(substituted(substituted(substituted(text, '&#45;', '-'), '&lt;', '<'), '&gt;', &
+         '>'), '&amp;', '&')
+   end function xml_unescaped
 
 end module shcontact_output_xdmf
