@@ -100,6 +100,9 @@ contains
             if (is_command(arg)) then
                cli%command = arg
                cli%help = .true.
+            else
+               call fatal_error(error, 'no help on "'//arg//'": expected one of the '// &
+                  'commands run, merge, profiles, geometry', stat_usage)
             end if
          end if
          return
@@ -514,13 +517,18 @@ contains
          cli%wheelset_range = values
          cli%wheelset_given = .true.
       else
-         if (ok) ok = size(values) >= 1 .and. all(values > 0.0_wp .and. values < 100.0_wp)
-         if (.not. ok) then
-            call fatal_error(error, '--conicity '//text//': expected amplitudes in mm '// &
-               '(0 < A < 100), separated by commas, e.g. --conicity 3 or --conicity 1,2,3,4,5', &
-               stat_usage)
-            return
-         end if
+         ! The amplitudes' shifts ±A within &position t_y's range, as --wheelset's.
+         associate (t_y => ranges(find_range('position%t_y')))
+            if (ok) ok = size(values) >= 1 .and. all(values > 0.0_wp .and. values <= &
+               min(-t_y%lo, t_y%hi))
+            if (.not. ok) then
+               call fatal_error(error, '--conicity '//text//': expected amplitudes in mm '// &
+                  '(0 < A <= '//str_real(min(-t_y%lo, t_y%hi))//', the range of &position '// &
+                  't_y), separated by commas, e.g. --conicity 3 or --conicity 1,2,3,4,5', &
+                  stat_usage)
+               return
+            end if
+         end associate
          cli%amplitudes = values
       end if
    end subroutine wheelset_option

@@ -162,9 +162,11 @@ contains
          '  --mirror-y yes|no        mirror y (y -> -y), replacing the file''s or format''s '// &
          'setting'//nl// &
          '  --mirror-z yes|no        mirror z (z -> -z), likewise'//nl// &
-         '  --force                  replace OUT, SCRIPT.gp or DIR/S1002.txt, DIR/UIC60.txt'// &
+         '  --force                  replace OUT, SCRIPT.gp or the three files of --write DIR'// &
          nl// &
-         '                           when they exist (never the profile read)'//nl// &
+         '                           (S1002.txt, UIC60.txt, UIC60-canted.txt) when they exist'// &
+         nl// &
+         '                           (never the profile read)'//nl// &
          '  -q, --quiet              no summary; errors only'
    end function profiles_help
 

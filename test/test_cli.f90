@@ -431,6 +431,10 @@ contains
       call expect_in(error, err, '-q (--quiet) and -v (--verbose) contradict each other', &
          'run -q -v')
       if (allocated(error)) return
+      call run_expect(error, dir, 'help foo', 1, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'no help on "foo": expected one of the commands', 'help foo')
+      if (allocated(error)) return
       call run_expect(error, dir, 'run --format yaml', 1, out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'expected text, csv, json or none', 'run --format yaml')
@@ -967,6 +971,23 @@ contains
       call check(error, .not. file_exists(dir//'/tiny_out.txt'), message='nothing written')
       if (allocated(error)) return
       call run_expect(error, dir, 'profiles missing.txt', 3, out, err)
+      if (allocated(error)) return
+      ! A file of unknown kind: the message names the command line's option.
+      call shell('grep -v "^#" '//dir//'/built-in/UIC60.txt > '//dir//'/raw.txt')
+      call run_expect(error, dir, 'profiles raw.txt', 2, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'pass --kind rail (or wheel), or add a comment line', &
+         'profiles of a file of unknown kind')
+      if (allocated(error)) return
+      ! A case file's missing profile: the message names the case file, its line and the
+      ! variable.
+      call write_lines(dir//'/nw.nml', [character(len=24) :: '&profiles', &
+         "  wheel = 'nowheel.txt'", '/'])
+      call run_expect(error, dir, 'run nw.nml -o nw.h5', 3, out, err)
+      if (allocated(error)) return
+      call expect_in(error, err, 'nw.nml:2: &profiles wheel: ', 'a missing profile file')
+      if (allocated(error)) return
+      call check(error, .not. file_exists(dir//'/nw.h5'), message='output of a failed run')
       if (allocated(error)) return
       call run_expect(error, dir, 'profiles', 1, out, err)
       if (allocated(error)) return

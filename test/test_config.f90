@@ -4,6 +4,7 @@
 module test_config
    use testdrive, only: new_unittest, unittest_type, error_type, check, test_failed
    use shcontact_core_kinds, only: wp
+   use, intrinsic :: iso_fortran_env, only: int64
    use shcontact_core_error, only: lib_error => error_type, stat_invalid_input, stat_io
    use shcontact_input_config, only: case_config_type, case_point_type, load_config, &
       read_config_text, config_namelist, axis_geometry, axis_load, n_sweep_axes, &
@@ -514,7 +515,59 @@ contains
       call check(error, format_real(0.58e-3_wp) == '0.00058', message=format_real(0.58e-3_wp))
       if (allocated(error)) return
       call check(error, format_real(2.74e-5_wp) == '2.74e-5', message=format_real(2.74e-5_wp))
+      if (allocated(error)) return
+      ! Numbers typed with 15 digits or fewer whose 16-digit form is noise come out as typed.
+      call check(error, format_real(8.2_wp) == '8.2' .and. format_real(6.0e-4_wp) == &
+         '0.0006' .and. format_real(9.36_wp) == '9.36' .and. format_real(0.088_wp) == '0.088' &
+         .and. format_real(-8.03_wp) == '-8.03' .and. format_real(0.3_wp) == '0.3', &
+         message='8.2, 6e-4, 9.36, 0.088, -8.03, 0.3: '//format_real(8.2_wp)//' '// &
+         format_real(6.0e-4_wp)//' '//format_real(9.36_wp)//' '//format_real(0.088_wp)//' '// &
+         format_real(-8.03_wp)//' '//format_real(0.3_wp))
+      if (allocated(error)) return
+      call check_random_round_trips(error)
    end subroutine test_format_real
+
+   !> Seeded random numbers of every magnitude read back exactly, and random decimals of 1 to
+   !> 15 significant digits come out with no more digits than they were typed with.
+   subroutine check_random_round_trips(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: seed(:)
+      integer :: i, n, digits, expo, k
+      real(wp) :: u, x, back
+      character(len=40) :: typed
+      character(len=:), allocatable :: text
+      call random_seed(size=n)
+      allocate (seed(n))
+      seed = 20261129
+      call random_seed(put=seed)
+      do i = 1, 20000
+         call random_number(u)
+         expo = int(40.0_wp*u) - 20
+         call random_number(u)
+         digits = 1 + int(15.0_wp*u)
+         call random_number(u)
+         ! A decimal of `digits` significant digits, as a user types it.
+         write (typed, '(i0,a,i0)') max(1_int64, int(u*10.0_wp**digits, int64)), 'e', expo
+         read (typed, *) x
+         text = format_real(x)
+         read (text, *) back
+         call check(error, back == x, message='round trip of '//trim(typed)//': '//text)
+         if (allocated(error)) return
+         ! Non-zero digits of the mantissa (a lower bound of its significant digits).
+         n = index(text, 'e') - 1
+         if (n < 0) n = len(text)
+         k = count([(scan(text(k:k), '123456789') > 0, k = 1, n)])
+         call check(error, k <= digits, message=trim(typed)//' printed with more digits: '//text)
+         if (allocated(error)) return
+         ! Any bit pattern (computed numbers).
+         call random_number(u)
+         x = (u - 0.5_wp)*10.0_wp**expo
+         text = format_real(x)
+         read (text, *) back
+         call check(error, back == x, message='round trip of a computed number: '//text)
+         if (allocated(error)) return
+      end do
+   end subroutine check_random_round_trips
 
    !> `&kinematics`: values, units, the pure-rolling pitch rate and the defaults that kinematic
    !> mode changes (vertical load, 'additive' spin model).

@@ -50,7 +50,8 @@ contains
          new_unittest('range_defaults_app_and_library', test_range_defaults), &
          new_unittest('long_sweep_list_linear', test_long_list), &
          new_unittest('number_beyond_double_range', test_overflow), &
-         new_unittest('library_option_fuzz', test_option_fuzz) &
+         new_unittest('library_option_fuzz', test_option_fuzz), &
+         new_unittest('doc_geometry_two_candidates', test_two_candidates) &
          ]
    end subroutine collect_input
 
@@ -213,6 +214,36 @@ contains
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_tiny_friction
+
+   !> doc/geometry.md's table of the default case's two candidate patches at t_y = 4.5 and
+   !> 5.0 mm under a vertical load of 64.7 kN, from the command it names (the CSV of the same
+   !> run): the tread patch's N and δ, the corner's N (the wheel's sum less the tread's), as
+   !> the table rounds them.
+   subroutine test_two_candidates(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out
+      real(wp), parameter :: t_y(2) = [4.5_wp, 5.0_wp], tread_n(2) = [65.15_wp, 45.93_wp], &
+         tread_delta(2) = [0.0821_wp, 0.0596_wp], corner_n(2) = [0.0_wp, 20.0_wp]
+      integer :: stat, i
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('in_candidates')
+      do i = 1, size(t_y)
+         stat = run_program(dir, 'run --set position%t_y='//format_real(t_y(i))// &
+            ' --set load%mode=vertical --set load%vertical_force=64700 --format csv -q '// &
+            '--no-output')
+         call check(error, stat, 0, message='t_y '//format_real(t_y(i))//': '// &
+            file_text(dir//'/err.txt'))
+         if (allocated(error)) return
+         out = file_text(dir//'/out.txt')
+         call check(error, abs(csv_value(out, 'fn')/1000.0_wp - tread_n(i)) <= 0.005_wp .and. &
+            abs(csv_value(out, 'delta') - tread_delta(i)) <= 0.00005_wp .and. &
+            abs((csv_value(out, 'wheel_fn') - csv_value(out, 'fn'))/1000.0_wp - corner_n(i)) &
+            <= 0.005_wp, message='t_y '//format_real(t_y(i))//': not doc/geometry.md''s '// &
+            'table: '//out)
+         if (allocated(error)) return
+      end do
+      call shell('rm -rf '//dir)
+   end subroutine test_two_candidates
 
    !> The value of column `name` of the first case of CSV output (header, then lines).
    real(wp) function csv_value(csv, name) result(x)

@@ -469,6 +469,13 @@ contains
       call expect_in(error, file_text(dir//'/err.txt'), 'the shifts must lie within -30', &
          '--wheelset past t_y''s range')
       if (allocated(error)) return
+      ! The amplitudes of --conicity likewise (their shifts ±A).
+      stat = run_program(dir, 'geometry --conicity 3,40')
+      call check(error, stat, 1, message='--conicity 3,40: exit status')
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '(0 < A <= 30, the range of &position '// &
+         't_y)', '--conicity past t_y''s range')
+      if (allocated(error)) return
       stat = run_program(dir, 'geometry --wheelset -1,1,1 --set kinematics%yaw=0.004')
       call check(error, stat, 2, message='--wheelset with yaw: exit status')
       if (allocated(error)) return

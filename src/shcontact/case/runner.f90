@@ -52,6 +52,7 @@ module shcontact_case_runner
    use shcontact_pipeline_stages, only: loaded_count, prepare_normal_stage, solve_normal_stage, &
       solve_patch_stage, summarise_stages, carry_creepage_stage
    use shcontact_input_config, only: case_config_type, case_point_type, load_mode_force
+   use shcontact_input_config_types, only: origin
    use shcontact_case_result, only: case_result_type, case_summary
    use shcontact_api_solver, only: contact_solver_type
    use shcontact_api_settings, only: library_setup_type, library_setup, point_load, &
@@ -157,11 +158,25 @@ contains
          config%profiles%wheel_format, config%profiles%wheel_mirror_y, &
          config%profiles%wheel_mirror_z, config%profiles%wheel_scale, '&profiles wheel_', &
          wheel, error, wheel_read)
-      if (allocated(error)) return
+      if (allocated(error)) then
+         call name_setting(error, 'wheel')
+         return
+      end if
       call load_case_profile(config%profiles%rail, profile_kind_rail, &
          config%profiles%rail_format, config%profiles%rail_mirror_y, &
          config%profiles%rail_mirror_z, config%profiles%rail_scale, '&profiles rail_', &
          rail, error, rail_read)
+      if (allocated(error)) call name_setting(error, 'rail')
+   contains
+      !> The message begins with where the profile was named ('case.nml:3: &profiles wheel'),
+      !> unless it is the default's.
+      subroutine name_setting(error, name)
+         type(error_type), allocatable, intent(inout) :: error
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: where
+         where = origin(config, 'profiles%'//name)
+         if (where /= 'default') call prefix_error(error, where//': &profiles '//name)
+      end subroutine name_setting
    end subroutine read_case_profiles
 
    !> Read the profiles and prepare everything the cases share.

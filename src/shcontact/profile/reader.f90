@@ -107,7 +107,7 @@ contains
             str_int(min_profile_points), stat_invalid_input)
          return
       end if
-      call resolve_kind(filename, file_format, kind, settings, profile_kind, error)
+      call resolve_kind(filename, file_format, kind, settings, profile_kind, error, option_prefix)
       if (allocated(error)) return
       call to_canonical(filename, profile_kind, settings, points, mirror_y, mirror_z, scale, &
          option_prefix, error)
@@ -202,14 +202,18 @@ contains
 
    !> Rail or wheel: the argument, else the file's own statement, else the extension; the file
    !> and the argument (or the extension) must not contradict each other.
-   subroutine resolve_kind(filename, file_format, kind, settings, profile_kind, error)
+   subroutine resolve_kind(filename, file_format, kind, settings, profile_kind, error, &
+         option_prefix)
       character(len=*), intent(in) :: filename
       integer, intent(in) :: file_format
       integer, intent(in), optional :: kind
       type(file_settings), intent(in) :: settings
       integer, intent(out) :: profile_kind
       type(error_type), allocatable, intent(out) :: error
+      !> How the caller's option names begin ('--' for the command line's --kind).
+      character(len=*), intent(in), optional :: option_prefix
       integer :: from_extension
+      character(len=:), allocatable :: option
 
       from_extension = kind_unknown
       select case (extension(filename))
@@ -251,8 +255,10 @@ contains
          profile_kind = from_extension
       end if
       if (profile_kind == kind_unknown) then
+         option = 'the kind'
+         if (present(option_prefix)) option = option_prefix//'kind rail (or wheel)'
          call fatal_error(error, filename//': cannot tell whether this is a rail or a wheel '// &
-            "profile: pass kind, or add a comment line '# kind = rail' (or wheel)", &
+            'profile: pass '//option//", or add a comment line '# kind = rail' (or wheel)", &
             stat_invalid_input)
       end if
    end subroutine resolve_kind
