@@ -66,6 +66,28 @@ def _c_double_array(values):
     return array, array.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
 
 
+def _number(what, value):
+    """``value`` as a float, or a TypeError naming ``what`` (ctypes' own message names neither
+    the keyword nor the expected type)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"shcontact: {what} = {value!r}: expected a number")
+    return float(value)
+
+
+def _index(what, value):
+    """``value`` as a 1-based index (an integer), or a TypeError naming ``what``."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"shcontact: {what} = {value!r}: expected an integer (1-based)")
+    return int(value)
+
+
+def _text(what, value):
+    """``value`` encoded for the C API, or a TypeError naming ``what``."""
+    if not isinstance(value, str):
+        raise TypeError(f"shcontact: {what} = {value!r}: expected a string")
+    return value.encode()
+
+
 def _check_errors(errors):
     if errors not in ("raise", "nan"):
         raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
@@ -178,6 +200,9 @@ class Contact:
             raise TypeError(f"shcontact: set_track: unknown keyword(s) {sorted(unknown)}; "
                             f"expected {sorted(DEFAULT_TRACK)}")
         t = dict(self._track_defaults, **track)
+        for name in t:
+            if name != "rail_canted":
+                t[name] = _number(f"set_track {name}", t[name])
         self._check(self._lib.shcontact_set_track(
             self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
             int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
@@ -186,7 +211,8 @@ class Contact:
     @_locked
     def set_option(self, key, value):
         """One option as in the app's case files (``"tangential%bound"``, ``"clipped"``)."""
-        self._check(self._lib.shcontact_set_option(self._ptr(), key.encode(), str(value).encode()))
+        self._check(self._lib.shcontact_set_option(self._ptr(), _text("set_option key", key),
+                                                   str(value).encode()))
         if key.strip().lower() == "output%fields":
             self._fields = str(value).strip().strip("'\"").strip().lower() in (
                 "all", "1", "true", ".true.")
@@ -198,7 +224,8 @@ class Contact:
         or a result value of the last solve by name (``"fx"``, ``"p_max"``, ...; ``patch`` 0 the
         main patch, else 1-based)."""
         x = ctypes.c_double()
-        self._check(self._lib.shcontact_get_value(self._ptr(), key.encode(), patch,
+        self._check(self._lib.shcontact_get_value(self._ptr(), _text("value key", key),
+                                                  _index("value patch", patch),
                                                   ctypes.byref(x)))
         return x.value
 
@@ -281,6 +308,7 @@ class Contact:
         """The values of patch ``patch`` (1-based) of the last solve, as a dict of floats
         (:data:`layout.PATCH`; after :meth:`solve_kinematic` with the creepages and x_track)."""
         values = (ctypes.c_double * len(layout.KINEMATIC))()
+        patch = _index("patch", patch)
         if self._last_kinematic:
             self._check(self._lib.shcontact_patch_kinematic(self._ptr(), patch, values))
             names = layout.PATCH + layout.KINEMATIC[len(layout.RESULT):]
@@ -305,6 +333,7 @@ class Contact:
                                  "with fields=True (option output%fields = all) before the solve")
         if patch is None:
             patch = self._main_patch
+        patch = _index("fields patch", patch)
         nx, ny = ctypes.c_int(), ctypes.c_int()
         self._check(self._lib.shcontact_field_size(self._ptr(), patch, ctypes.byref(nx),
                                                    ctypes.byref(ny)))

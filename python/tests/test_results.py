@@ -21,6 +21,12 @@ def test_summary_equals_csv(run_app):
     assert set(s["wheel_patches"]) <= {1, 2}
     assert f.attrs["software"] == "shcontact" and int(f.attrs["n_cases"]) == 34
     assert "&kinematics" in f.namelist
+    # Every text is declared UTF-8 (the namelist's comments hold a few non-ASCII characters,
+    # which an ASCII declaration made h5py's and xarray's string readers fail on).
+    import h5py
+    with h5py.File(path) as raw:
+        assert "§" in raw["input/namelist"].asstr()[()]
+        assert raw["input/namelist"].id.get_type().get_cset() == h5py.h5t.CSET_UTF8
     assert f.failures()["case"].size == 0
     assert f.cases() == list(range(1, 35))
     profiles = f.profiles()

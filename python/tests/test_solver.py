@@ -166,6 +166,18 @@ def test_errors(contact):
         shcontact.Contact().fields()
     with pytest.raises(shcontact.ShcontactError):
         contact.set_option("no%such", "option")
+    # Arguments of the wrong type name the keyword and the type expected (not ctypes'
+    # "argument 2: TypeError: wrong type").
+    with pytest.raises(TypeError, match=r"set_track gauge = '1435': expected a number"):
+        shcontact.Contact().set_track(gauge="1435")
+    with pytest.raises(TypeError, match=r"patch = 1.0: expected an integer"):
+        contact.patch(1.0)
+    with pytest.raises(TypeError, match=r"fields patch = 1.5: expected an integer"):
+        shcontact.Contact(fields=True).fields(1.5)
+    with pytest.raises(TypeError, match=r"set_option key = 3: expected a string"):
+        contact.set_option(3, "x")
+    with pytest.raises(TypeError, match=r"value key = None: expected a string"):
+        contact.value(None)
 
 
 def test_material_track_and_options():

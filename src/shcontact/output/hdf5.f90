@@ -19,6 +19,7 @@ module shcontact_output_hdf5
       h5pset_create_inter_group_f, h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
       h5dcreate_f, h5dopen_f, h5dclose_f, h5dwrite_f, h5dget_space_f, h5sget_simple_extent_ndims_f, &
       h5tcopy_f, h5tset_size_f, h5tset_strpad_f, h5tclose_f, H5T_C_S1, H5T_STR_NULLPAD_F, &
+      h5tset_cset_f, H5T_CSET_UTF8_F, &
       H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, H5T_STD_I8LE, H5T_STD_I32LE, H5T_IEEE_F64LE, &
       h5kind_to_type, H5_INTEGER_KIND, h5acreate_f, h5aclose_f, h5awrite_f, h5aexists_by_name_f, &
       h5oclose_f, H5T_IEEE_F32LE, h5adelete_f
@@ -369,7 +370,8 @@ contains
       call finish_dataset(file, path, dset, stat, '', error)
    end subroutine write_strings
 
-   !> A C string type of n bytes, null-padded.
+   !> A C string type of n bytes, null-padded, UTF-8 (the texts hold a few non-ASCII
+   !> characters: `§` in the namelist's comments, `×` in messages; ASCII is UTF-8).
    subroutine make_string_type(n, str, stat)
       integer, intent(in) :: n
       integer(hid_t), intent(out) :: str
@@ -378,6 +380,7 @@ contains
       call h5tcopy_f(H5T_C_S1, str, stat)
       call h5tset_size_f(str, int(n, size_t), s)
       call h5tset_strpad_f(str, H5T_STR_NULLPAD_F, s)
+      call h5tset_cset_f(str, H5T_CSET_UTF8_F, s)
    end subroutine make_string_type
 
    ! ------------------------------------------------------------------------------------------
