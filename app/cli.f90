@@ -351,11 +351,6 @@ contains
    subroutine check_combination(cli, error)
       type(cli_type), intent(inout) :: cli
       type(error_type), allocatable, intent(out) :: error
-      if (cli%quiet .and. cli%verbose) then
-         call fatal_error(error, '-q (--quiet) and -v (--verbose) contradict each other: '// &
-            'give one of them', stat_usage)
-         return
-      end if
       select case (cli%command)
       case ('merge')
          if (cli%inputs%n < 2) then

@@ -86,7 +86,7 @@ contains
          '  -q, --quiet              errors only on stderr (no progress, no notes); no '// &
          'summary on'//nl// &
          '                           stdout either, unless --format is given'//nl// &
-         '  -v, --verbose            more notes on stderr (not with -q)'//nl// &
+         '  -v, --verbose            more notes on stderr'//nl// &
          '  --threads N              OpenMP threads (default: OMP_NUM_THREADS or all cores)'// &
          nl// &
          '  --block-memory MB        results (element fields) held in memory at once, in MiB'// &

@@ -426,11 +426,6 @@ contains
       if (allocated(error)) return
       call expect_in(error, err, '--csv-units needs --format csv', 'run --csv-units')
       if (allocated(error)) return
-      call run_expect(error, dir, 'run -q -v', 1, out, err)
-      if (allocated(error)) return
-      call expect_in(error, err, '-q (--quiet) and -v (--verbose) contradict each other', &
-         'run -q -v')
-      if (allocated(error)) return
       call run_expect(error, dir, 'help foo', 1, out, err)
       if (allocated(error)) return
       call expect_in(error, err, 'no help on "foo": expected one of the commands', 'help foo')
