@@ -484,6 +484,22 @@ contains
       call check(error, stat, 2, message='resume with another configuration')
       if (allocated(error)) return
       call expect_in(error, file_text(dir//'/err.txt'), 'another configuration', 'message')
+      if (allocated(error)) return
+      ! A checkpoint of a version that wrote its numbers otherwise (0.5005 as
+      ! 0.5004999999999999 before stop 49) is this run's: resumed.
+      stat = run_program(dir, 'run sweep.nml -q -o third.h5 --set material%friction=0.5005', &
+         'SHCONTACT_TEST_ABORT_AFTER_BLOCKS=1')
+      call shell('cd '//dir//'/third.h5.partial && grep -c "0.5005" configuration.txt && '// &
+         'sed -i "s/0\.5005/0.5004999999999999/" configuration.txt && grep -q '// &
+         '0.5004999999999999 configuration.txt', stat)
+      call check(error, stat, 0, message='the key of the checkpoint holds 0.5005')
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sweep.nml -o third.h5 --resume --set material%friction=0.5005')
+      call check(error, stat, 0, message='resume of the older writing: '// &
+         file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      call expect_in(error, file_text(dir//'/err.txt'), '(3 from the checkpoint)', &
+         'the older writing''s cases are not solved again')
       call shell('rm -rf '//dir)
    end subroutine test_resume
 

@@ -738,6 +738,13 @@ contains
       call run_expect(error, dir, 'run -q --format text -o q.h5', 0, out, err)
       if (allocated(error)) return
       call expect_in(error, out, 'Fn = 64700', '-q --format text')
+      if (allocated(error)) return
+      ! -q -v: only -v's own lines (doc/app.md; the benchmark recipes of doc/performance.md).
+      call run_expect(error, dir, 'run -q -v -o q.h5', 0, out, err)
+      if (allocated(error)) return
+      call check(error, len(out) == 0 .and. count_lines(err) == 3 .and. &
+         index(err, 'largest checkpoint block') > 0 .and. index(err, 'peak memory') > 0 .and. &
+         index(err, 'progress') == 0, message='-q -v: the three lines of -v alone: '//out//err)
       call shell('rm -rf '//dir)
    end subroutine test_quiet
 

@@ -372,7 +372,7 @@ contains
    subroutine test_sidecar_xml_name(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: output = "'a--b&<c>-.h5'", sidecar = "'a--b&<c>-.xmf'"
-      character(len=:), allocatable :: dir, text
+      character(len=:), allocatable :: dir, text, long_name
       integer :: stat
       if (unavailable(error, .false.)) return
       dir = scratch_directory('of_xmlname')
@@ -394,9 +394,17 @@ contains
             'm.parse(sys.argv[1])" '//sidecar), message='the sidecar is not well-formed XML')
          if (allocated(error)) return
       end if
-      ! Its own output's sidecar: replaced by the same run again without --force.
+      ! Its own output's sidecar: replaced by the same run again without --force; also for a
+      ! long name whose escaped form is longer than the first 400 bytes of the file.
       stat = run_program(dir, 'run sw.nml -q -o '//output)
       call check(error, stat, 0, message='second run: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      long_name = 's--'//repeat('a-', 110)//'.h5'
+      stat = run_program(dir, 'run sw.nml -q -o '//long_name)
+      call check(error, stat, 0, message='long name: '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      stat = run_program(dir, 'run sw.nml -q -o '//long_name)
+      call check(error, stat, 0, message='long name again: '//file_text(dir//'/err.txt'))
       call shell('rm -rf '//dir)
    end subroutine test_sidecar_xml_name
 

@@ -18,6 +18,7 @@ of arrays of the broadcast shape, keyed by the names of :mod:`shcontact.layout`,
 """
 import ctypes
 import functools
+import operator
 import os
 import threading
 
@@ -67,18 +68,40 @@ def _c_double_array(values):
 
 
 def _number(what, value):
-    """``value`` as a float, or a TypeError naming ``what`` (ctypes' own message names neither
-    the keyword nor the expected type)."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
-        raise TypeError(f"shcontact: {what} = {value!r}: expected a number")
-    return float(value)
+    """``value`` as a float (anything ``float`` takes but text: numpy scalars and 0-d arrays,
+    Decimal, Fraction), or a TypeError naming ``what`` (ctypes' own message names neither the
+    keyword nor the expected type)."""
+    if not isinstance(value, (str, bytes)):
+        try:
+            return float(value)
+        except (TypeError, ValueError):
+            pass
+    raise TypeError(f"shcontact: {what} = {value!r}: expected a number")
 
 
-def _index(what, value):
-    """``value`` as a 1-based index (an integer), or a TypeError naming ``what``."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"shcontact: {what} = {value!r}: expected an integer (1-based)")
-    return int(value)
+def _index(what, value, main=False):
+    """``value`` as a patch number (an integer, numpy's and 0-d integer arrays too), or a
+    TypeError naming ``what``; ``main``: 0 names the main patch."""
+    try:
+        if not isinstance(value, (bool, np.bool_)):
+            return operator.index(value)
+    except TypeError:
+        pass
+    expected = "an integer (0 the main patch, else 1-based)" if main else "an integer (1-based)"
+    raise TypeError(f"shcontact: {what} = {value!r}: expected {expected}")
+
+
+def _flag(what, value):
+    """``value`` as 0 or 1 (True, False, numpy's bools, the integers 0 and 1), or a TypeError
+    naming ``what``."""
+    if isinstance(value, (bool, np.bool_)):
+        return int(value)
+    try:
+        if not isinstance(value, (str, bytes)) and operator.index(value) in (0, 1):
+            return operator.index(value)
+    except TypeError:
+        pass
+    raise TypeError(f"shcontact: {what} = {value!r}: expected True or False")
 
 
 def _text(what, value):
@@ -184,9 +207,9 @@ class Contact:
         now = {name: self.value("material%" + name) if given is None else given
                for name, given in (("shear_modulus", shear_modulus), ("poisson", poisson),
                                    ("friction", friction))}
-        self._check(self._lib.shcontact_set_material(self._ptr(), float(now["shear_modulus"]),
-                                                     float(now["poisson"]),
-                                                     float(now["friction"])))
+        now = {name: _number(f"set_material {name}", value) for name, value in now.items()}
+        self._check(self._lib.shcontact_set_material(self._ptr(), now["shear_modulus"],
+                                                     now["poisson"], now["friction"]))
 
     @_locked
     def set_track(self, **track):
@@ -205,8 +228,8 @@ class Contact:
                 t[name] = _number(f"set_track {name}", t[name])
         self._check(self._lib.shcontact_set_track(
             self._ptr(), t["gauge"], t["gauge_height"], t["inclination"],
-            int(bool(t["rail_canted"])), t["flange_back_distance"], t["flange_back_position"],
-            t["nominal_radius"]))
+            _flag("set_track rail_canted", t["rail_canted"]), t["flange_back_distance"],
+            t["flange_back_position"], t["nominal_radius"]))
 
     @_locked
     def set_option(self, key, value):
@@ -225,7 +248,7 @@ class Contact:
         main patch, else 1-based)."""
         x = ctypes.c_double()
         self._check(self._lib.shcontact_get_value(self._ptr(), _text("value key", key),
-                                                  _index("value patch", patch),
+                                                  _index("value patch", patch, main=True),
                                                   ctypes.byref(x)))
         return x.value
 

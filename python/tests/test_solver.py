@@ -178,6 +178,22 @@ def test_errors(contact):
         contact.set_option(3, "x")
     with pytest.raises(TypeError, match=r"value key = None: expected a string"):
         contact.value(None)
+    with pytest.raises(TypeError, match=r"value patch = 0.5: expected an integer \(0 the main"):
+        contact.value("fx", 0.5)
+    with pytest.raises(TypeError, match=r"rail_canted = 'no': expected True or False"):
+        shcontact.Contact().set_track(rail_canted="no")
+    with pytest.raises(TypeError, match=r"set_material friction = '0.3': expected a number"):
+        shcontact.Contact().set_material(friction="0.3")
+    # What ctypes took before still works: numpy scalars and 0-d arrays, Decimal, 0 the main
+    # patch, integers for floats, numpy's bools.
+    from decimal import Decimal
+    other = shcontact.Contact()
+    other.set_track(gauge=np.array(1435.0), gauge_height=Decimal("14"), rail_canted=np.bool_(False),
+                    nominal_radius=460)
+    assert other.value("track%gauge") == 1435.0 and other.value("track%nominal_radius") == 460.0
+    contact.solve(T_Y, nu_x=0.58e-3, normal_force=64.7e3)
+    assert contact.value("fx", np.array(0)) == contact.value("fx", np.int64(0)) \
+        == contact.value("fx") != 0.0
 
 
 def test_material_track_and_options():

@@ -41,7 +41,8 @@ module shcontact_batch_sweep
    use shcontact_core_kinds, only: wp
    use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
       stat_io, stat_usage
-   use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles
+   use shcontact_input_config, only: case_config_type, config_namelist, with_absolute_profiles, &
+      read_config_text
    use shcontact_output_results, only: run_info_type, begin_run_file, end_run_file, &
       end_summary_file, check_output_file, case_groups
    use shcontact_output_merge, only: merge_result_files, read_result_summary, &
@@ -636,7 +637,7 @@ contains
       ! directory; an older one only by the namelist of its blocks.
       has_key = file_exists(dir//'/'//key_name)
       if (has_key) then
-         if (read_text_file(dir//'/'//key_name) /= key) then
+         if (.not. same_key(read_text_file(dir//'/'//key_name), key)) then
             call another_configuration(dir, error)
             return
          end if
@@ -706,6 +707,25 @@ contains
          fingerprint([setup%wheel%y, setup%wheel%z])//', rail '// &
          fingerprint([setup%rail%y, setup%rail%z])//new_line('a')
    end function checkpoint_key
+
+   !> Whether the key a checkpoint stored names this run ([[checkpoint_key]]): the same text, or
+   !> the same configuration in another version's writing of its numbers (8.2 was written
+   !> 8.199999999999999 before stop 49), compared after reading its namelist again.
+   logical function same_key(stored, key)
+      character(len=*), intent(in) :: stored, key
+      character(len=*), parameter :: mark = '! profiles as read:'
+      type(case_config_type) :: c
+      type(error_type), allocatable :: error
+      integer :: k
+      same_key = stored == key
+      if (same_key) return
+      k = index(stored, mark, back=.true.)
+      if (k == 0) return
+      call read_config_text(stored(1:k - 1), 'the checkpoint''s configuration', c, error)
+      if (allocated(error)) return
+      c%output%file = '-'
+      same_key = config_namelist(c)//stored(k:) == key
+   end function same_key
 
    function trim_text(text) result(t)
       character(len=*), intent(in) :: text

@@ -28,7 +28,8 @@
 !> solver reuses the geometry and the normal solution of consecutive cases that share them.
 module shcontact_case_runner
    use shcontact_core_kinds, only: wp
-   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input
+   use shcontact_core_error, only: error_type, fatal_error, prefix_error, stat_invalid_input, &
+      stat_io
    use shcontact_core_strings, only: str_int
    use shcontact_core_material, only: material_type
    use shcontact_profile_points, only: profile_type, profile_kind_rail, profile_kind_wheel
@@ -168,12 +169,14 @@ contains
          rail, error, rail_read)
       if (allocated(error)) call name_setting(error, 'rail')
    contains
-      !> The message begins with where the profile was named ('case.nml:3: &profiles wheel'),
-      !> unless it is the default's.
+      !> A file that cannot be read: the message begins with where the profile was named
+      !> ('case.nml:3: &profiles wheel'), unless it is the default's. (Errors in a file's
+      !> contents name its line; those of the scale or the format name their option.)
       subroutine name_setting(error, name)
          type(error_type), allocatable, intent(inout) :: error
          character(len=*), intent(in) :: name
          character(len=:), allocatable :: where
+         if (error%stat /= stat_io) return
          where = origin(config, 'profiles%'//name)
          if (where /= 'default') call prefix_error(error, where//': &profiles '//name)
       end subroutine name_setting

@@ -153,12 +153,13 @@ contains
       if (i > 0 .and. j > i + len(before)) described = xml_unescaped(head(i + len(before):j - 1))
    end function sidecar_target
 
-   !> The first 400 bytes of a regular file (fewer when it is shorter; '' when it cannot be
+   !> The first 2048 bytes of a regular file (the header comment with a name of 255 bytes,
+   !> each escaped to at most 5) (fewer when it is shorter; '' when it cannot be
    !> read or is not a regular file).
    function file_head(name) result(head)
       character(len=*), intent(in) :: name
       character(len=:), allocatable :: head
-      character(len=400) :: buffer
+      character(len=2048) :: buffer
       integer :: unit, stat, size_
       head = ''
       if (path_kind(name) /= 'file') return

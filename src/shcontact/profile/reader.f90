@@ -210,7 +210,7 @@ contains
       type(file_settings), intent(in) :: settings
       integer, intent(out) :: profile_kind
       type(error_type), allocatable, intent(out) :: error
-      !> How the caller's option names begin ('--' for the command line's --kind).
+      !> How the caller's option names begin ('--': the command line's --kind is named).
       character(len=*), intent(in), optional :: option_prefix
       integer :: from_extension
       character(len=:), allocatable :: option
@@ -256,7 +256,9 @@ contains
       end if
       if (profile_kind == kind_unknown) then
          option = 'the kind'
-         if (present(option_prefix)) option = option_prefix//'kind rail (or wheel)'
+         if (present(option_prefix)) then
+            if (option_prefix == '--') option = '--kind rail (or wheel)'
+         end if
          call fatal_error(error, filename//': cannot tell whether this is a rail or a wheel '// &
             'profile: pass '//option//", or add a comment line '# kind = rail' (or wheel)", &
             stat_invalid_input)
