@@ -25,6 +25,9 @@ def summary(folder):
 
 
 def main():
+    if any(a in ('-h', '--help') for a in sys.argv[1:]):
+        print(__doc__)
+        return
     names = sys.argv[1:] or sorted(d for d in os.listdir(ROOT)
                                    if os.path.isfile(os.path.join(ROOT, d, 'summary.csv')))
     for name in names:

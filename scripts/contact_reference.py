@@ -14,7 +14,10 @@ Procedure (data/exact/README.md):
      exact solver (B=0, M=0); DOE over (xi, eta, phi); CSVs in the shared formats.
 
 usage: scripts/contact_reference.py YWS OUTDIR [--corner] [--n 6] [--workdir DIR]
+  YWS: the wheelset's lateral shift (mm); OUTDIR: the folder written (data/exact/<name>/)
   CONTACT_EXE: the CONTACT program (scripts/contact_build.sh); SHCONTACT_EXE: shcontact (else fpm run)
+  CONTACT_PROFILES: 'builtin' (default) or 'mbench' (the Manchester files, as the committed
+  data/exact folders were made; they are read from $SHCONTACT_EXTERNAL_DATA/profiles)
 """
 import argparse, csv, math, os, re, shutil, subprocess, sys, time
 import numpy as np
@@ -448,7 +451,8 @@ def doe_cases(n, cmax=2e-3, phimax=2e-3):
 
 
 def main():
-    ap = argparse.ArgumentParser()
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('yws', type=float)
     ap.add_argument('outdir')
     ap.add_argument('--n', type=int, default=6)
