@@ -527,6 +527,25 @@ contains
       if (allocated(error)) return
       call check(error, c_get_value(handle, 'fx', 0, x), stat_usage, message='before a solve')
       if (allocated(error)) return
+      ! A mistyped output key is unknown whether or not a solve has succeeded (it was "no result
+      ! yet" before one).
+      call check(error, c_get_value(handle, 'sum_fyy', 0, x), stat_invalid_input, &
+         message='unknown key before a solve')
+      if (allocated(error)) return
+      call check(error, index(c_message(handle), 'unknown; expected one of') > 0, &
+         message='unknown key before a solve: '//c_message(handle))
+      if (allocated(error)) return
+      ! The pitch rate not given reads back as the pure rolling the solve takes (−V/R₀), not 0.
+      call check(error, c_get_value(handle, 'kinematics%pitch_rate', 0, x), 0)
+      if (allocated(error)) return
+      call check(error, x, -30000.0_wp/460.0_wp, rel=.true., thr=1.0e-12_wp, &
+         message='kinematics%pitch_rate of a fresh handle')
+      if (allocated(error)) return
+      call check(error, c_set_value(handle, 'kinematics%pitch_rate', -60.0_wp), 0)
+      if (allocated(error)) return
+      call check(error, c_get_value(handle, 'kinematics%pitch_rate', 0, x) == 0 .and. &
+         x == -60.0_wp, message='kinematics%pitch_rate set to -60')
+      if (allocated(error)) return
       ! The app's range of t_y (±30 mm) at the keyed solve.
       call check(error, c_set_value(handle, 't_y', 40.0_wp), 0)
       if (allocated(error)) return

@@ -23,7 +23,7 @@ module shcontact_api_keyed
    use shcontact_core_ranges, only: has_range, range_text
    use shcontact_input_config, only: case_config_type, case_point_type, validate_config
    use shcontact_input_config_types, only: output_config_type, number_value, normal_options_of, &
-      tangential_options_of
+      tangential_options_of, origin
    use shcontact_normal_options, only: normal_options_type
    use shcontact_tangential_options, only: tangential_options_type
    use shcontact_input_config_variables, only: variables, k_int, k_real, k_real_list, &
@@ -33,6 +33,7 @@ module shcontact_api_keyed
       wheel_columns, wheel_value, find_wheel_column, wheel_contact_of
    use shcontact_api_wheelset, only: wheel_right, wheel_left
    use shcontact_api_settings, only: config_load, config_state, split_key
+   use shcontact_geometry_kinematics, only: pure_rolling_pitch_rate
    use shcontact_api_values, only: kinematic_value_count, result_value_count, kinematic_values, value_fx, value_fy, &
       value_mz, value_fn, value_fx_norm, value_fy_norm, value_fy_track, value_fz_track, &
       value_approach, value_area, value_p_max, value_gamma0, value_r0, value_y_track, &
@@ -317,12 +318,20 @@ contains
          case ('tangential%n_elements')
             tangential = tangential_options_of(ctx%config)
             x = tangential%n_elements
+         case ('kinematics%pitch_rate')
+            ! Not given: pure rolling at the handle's speed and nominal radius, as solved.
+            x = number_value(ctx%config, group, name)
+            if (origin(ctx%config, k) == 'default') x = pure_rolling_pitch_rate( &
+               ctx%config%kinematics%v_forward, ctx%config%track%nominal_radius)
          case default
             x = number_value(ctx%config, group, name)
          end select
       else if (i > 0) then
          call fatal_error(error, "value '"//visible(key)//"': not a number (read back only "// &
             'numeric inputs)', stat_invalid_input)
+      else if (.not. known_output(k, ctx%is_wheelset)) then
+         ! The same answer for a mistyped key whether or not a solve has succeeded.
+         call unknown_output(key, error)
       else if (.not. ctx%has_result) then
          call fatal_error(error, "value '"//visible(key)//"': no result yet (the last solve "// &
             'failed or none was made)', stat_usage)
@@ -354,6 +363,33 @@ contains
       end if
       stat = context_record(ctx, error)
    end function context_get_value
+
+   !> Whether `key` (lower case) names a result value: of a contact ([[result_value]]'s names
+   !> and aliases), or on a wheelset handle `wheelset%NAME` or `right%NAME`, `left%NAME`.
+   pure logical function known_output(key, is_wheelset) result(known)
+      character(len=*), intent(in) :: key
+      logical, intent(in) :: is_wheelset
+      if (.not. is_wheelset) then
+         known = contact_output(key)
+      else if (index(key, 'wheelset%') == 1) then
+         known = any(wheelset_keys%name == key)
+      else if (index(key, 'right%') == 1 .or. index(key, 'left%') == 1) then
+         known = contact_output(key(index(key, '%') + 1:))
+      else
+         known = .false.
+      end if
+   contains
+      pure logical function contact_output(name)
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: alias
+         integer :: i
+         alias = name
+         i = findloc(summary_aliases(1, :), alias, 1)
+         if (i > 0) alias = trim(summary_aliases(2, i))
+         contact_output = alias == climbing_key .or. any(output_keys%name == alias) .or. &
+            find_patch_column(alias, .false.) > 0 .or. find_wheel_column(alias) > 0
+      end function contact_output
+   end function known_output
 
    !> Value `key` of patch `patch` (0: the main one) of a result.
    subroutine result_value(result, name, patch, x, error)
