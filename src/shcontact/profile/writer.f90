@@ -97,7 +97,8 @@ contains
       if (text(len(text):) == '.') text = text(:len(text) - 1)
    end function mm_text
 
-   !> Write the built-in S1002 and upright UIC60 profiles as `S1002.txt` and `UIC60.txt`.
+   !> Write the built-in S1002, upright UIC60 and canted UIC60 profiles as `S1002.txt`,
+   !> `UIC60.txt` and `UIC60-canted.txt`.
    subroutine write_builtin_profiles(directory, error)
       !> An existing directory ('' or '.' for the working directory).
       character(len=*), intent(in) :: directory
