@@ -51,7 +51,8 @@ contains
          new_unittest('long_sweep_list_linear', test_long_list), &
          new_unittest('number_beyond_double_range', test_overflow), &
          new_unittest('library_option_fuzz', test_option_fuzz), &
-         new_unittest('doc_geometry_two_candidates', test_two_candidates) &
+         new_unittest('doc_geometry_two_candidates', test_two_candidates), &
+         new_unittest('doc_lobes_shared_force', test_shared_force_doc) &
          ]
    end subroutine collect_input
 
@@ -223,7 +224,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: dir, out
       real(wp), parameter :: t_y(2) = [4.5_wp, 5.0_wp], tread_n(2) = [65.15_wp, 45.93_wp], &
-         tread_delta(2) = [0.0821_wp, 0.0596_wp], corner_n(2) = [0.0_wp, 20.0_wp]
+         tread_delta(2) = [0.0821_wp, 0.0596_wp], corner_n(2) = [0.0_wp, 20.0_wp], &
+         force_delta(2) = [0.0817_wp, 0.0781_wp]
       integer :: stat, i
       if (unavailable(error, .false.)) return
       dir = scratch_directory('in_candidates')
@@ -241,9 +243,56 @@ contains
             <= 0.005_wp, message='t_y '//format_real(t_y(i))//': not doc/geometry.md''s '// &
             'table: '//out)
          if (allocated(error)) return
+         ! The force mode's column: the deepest patch's δ under 64.7 kN.
+         call expect_columns(error, dir, 'run --set position%t_y='//format_real(t_y(i))// &
+            ' --format csv -q --no-output', [character(len=5) :: 'delta'], [force_delta(i)], &
+            [1.0e-4_wp])
+         if (allocated(error)) return
       end do
       call shell('rm -rf '//dir)
    end subroutine test_two_candidates
+
+   !> doc/lobes.md's figures of the plain and the shared normal force at the default case
+   !> ("The plain normal force"), from the commands it names, each to its printed digit.
+   subroutine test_shared_force_doc(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('in_shared_doc')
+      ! shcontact run --format csv: F_x −5841.0 N, f_x −0.3009, f_y −0.3621.
+      call expect_columns(error, dir, 'run --format csv -q --no-output', &
+         [character(len=8) :: 'fx', 'fx_norm', 'fy_norm'], [-5841.0_wp, -0.3009_wp, -0.3621_wp], &
+         [0.1_wp, 1.0e-4_wp, 1.0e-4_wp])
+      if (allocated(error)) return
+      ! --set load%mode=shared-force: the main patch 62.27 kN (the second the rest of 64.7 kN,
+      ! 2.43), F_x −5612.3 N, f_x −0.3004, f_y −0.3632, fx_total −6337.4 N.
+      call expect_columns(error, dir, 'run --set load%mode=shared-force --format csv -q '// &
+         '--no-output', [character(len=8) :: 'fn', 'fx', 'fx_norm', 'fy_norm', 'fx_total'], &
+         [62270.0_wp, -5612.3_wp, -0.3004_wp, -0.3632_wp, -6337.4_wp], &
+         [10.0_wp, 0.1_wp, 1.0e-4_wp, 1.0e-4_wp, 0.1_wp])
+      call shell('rm -rf '//dir)
+   end subroutine test_shared_force_doc
+
+   !> Run the program in `dir` and require each CSV column `names(k)` of its first case to
+   !> equal `values(k)` within half of `units(k)` (the unit of the last printed digit).
+   subroutine expect_columns(error, dir, args, names, values, units)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), intent(in) :: dir, args
+      character(len=*), intent(in) :: names(:)
+      real(wp), intent(in) :: values(:), units(:)
+      character(len=:), allocatable :: out
+      integer :: stat, k
+      stat = run_program(dir, args)
+      call check(error, stat, 0, message=args//': '//file_text(dir//'/err.txt'))
+      if (allocated(error)) return
+      out = file_text(dir//'/out.txt')
+      do k = 1, size(names)
+         call check(error, abs(csv_value(out, trim(names(k))) - values(k)) <= &
+            0.5_wp*units(k)*(1.0_wp + 1.0e-9_wp), message=args//': '//trim(names(k))// &
+            ' is not the doc''s '//format_real(values(k))//': '//out)
+         if (allocated(error)) return
+      end do
+   end subroutine expect_columns
 
    !> The value of column `name` of the first case of CSV output (header, then lines).
    real(wp) function csv_value(csv, name) result(x)
