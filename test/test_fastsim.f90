@@ -8,7 +8,7 @@ module test_fastsim
    use shcontact_core_material, only: material_type
    use shcontact_tangential_kalker, only: kalker_coefficients
    use shcontact_tangential_options, only: tangential_options_type, bound_ellipsoidal, &
-      bound_parabolic
+      bound_parabolic, bound_clipped
    use shcontact_tangential_creepage, only: creepage_type
    use shcontact_tangential_patch, only: tangential_patch_type
    use shcontact_tangential_march, only: march_workspace_type
@@ -181,6 +181,9 @@ contains
       type(tangential_options_type) :: options
       type(lib_error), allocatable :: lerr
       real(wp), parameter :: expected(2) = [-0.597_wp, -0.648_wp]
+      !> doc/tangential.md, "Classical FASTSIM": ellipsoidal, parabolic, W1, W2, W3.
+      real(wp), parameter :: doc_fy(5) = [-0.5967_wp, -0.6480_wp, -0.5869_wp, -0.6181_wp, &
+         -0.6235_wp]
       integer :: bound
 
       do bound = bound_ellipsoidal, bound_parabolic
@@ -190,6 +193,15 @@ contains
          call check(error, res%fy_norm, expected(bound), thr=5e-3_wp, message='§3.5 f_y')
          if (allocated(error)) return
          call check(error, abs(res%fx_norm) < 1e-12_wp, message='§3.5 f_x = 0')
+         if (allocated(error)) return
+      end do
+      ! doc/tangential.md's f_y of every bound at 200 × 200, to the 4 decimals it prints.
+      do bound = bound_ellipsoidal, bound_clipped
+         call fastsim_case(ref_a, ref_b, creepage_type(nu_y=ref_eta, phi=ref_phi), bound, 200, &
+            res, error)
+         if (allocated(error)) return
+         call check(error, res%fy_norm, doc_fy(bound), thr=5.0e-5_wp*(1.0_wp + 1.0e-9_wp), &
+            message='doc/tangential.md §3 reference case f_y')
          if (allocated(error)) return
       end do
    end subroutine test_reference_case
