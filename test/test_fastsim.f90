@@ -201,7 +201,7 @@ contains
             res, error)
          if (allocated(error)) return
          call check(error, res%fy_norm, doc_fy(bound), thr=5.0e-5_wp*(1.0_wp + 1.0e-9_wp), &
-            message='doc/tangential.md §3 reference case f_y')
+            message='doc/tangential.md, "Classical FASTSIM": the reference case''s f_y')
          if (allocated(error)) return
       end do
    end subroutine test_reference_case
