@@ -54,6 +54,7 @@ contains
          new_unittest('csv_json_inputs_and_units', test_inputs_and_units), &
          new_unittest('kinematic_csv_inputs', test_kinematic_inputs), &
          new_unittest('kinematic_sample_output_in_app_md', test_kinematic_sample), &
+         new_unittest('profiles_sample_output_in_app_md', test_profiles_sample), &
          new_unittest('no_output', test_no_output), &
          new_unittest('patches_found_and_loaded', test_patch_counts), &
          new_unittest('profiles_file', test_profiles_file), &
@@ -804,6 +805,28 @@ contains
       if (allocated(error)) return
       call shell('rm -rf '//dir)
    end subroutine test_kinematic_sample
+
+   !> doc/app.md's sample of `shcontact profiles data/profiles/S1002.txt` is the program's
+   !> output line for line (but the `written` and `plot` lines of its -o and --plot).
+   subroutine test_profiles_sample(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: dir, out, err
+      integer :: stat
+      if (unavailable(error, .false.)) return
+      dir = scratch_directory('cli_prof_sample')
+      call shell('mkdir -p '//dir//'/data/profiles && cp data/profiles/S1002.txt '//dir// &
+         '/data/profiles/')
+      call run_expect(error, dir, 'profiles data/profiles/S1002.txt', 0, out, err)
+      if (allocated(error)) return
+      call shell("sed -n '/^  \$ shcontact profiles data\/profiles\/S1002.txt /,/^  ```$/p' "// &
+         "doc/app.md | sed '1d;$d' | sed 's/^  //' | grep -v -e '^written ' -e '^plot ' > "// &
+         dir//'/doc.txt && test $(wc -l < '//dir//'/doc.txt) -ge 10 && ! grep -vxFf '// &
+         dir//'/out.txt '//dir//'/doc.txt > '//dir//'/stale.txt', stat)
+      call check(error, stat, 0, message='doc/app.md''s profiles sample differs from the '// &
+         'program''s output: '//file_text(dir//'/stale.txt'))
+      if (allocated(error)) return
+      call shell('rm -rf '//dir)
+   end subroutine test_profiles_sample
 
    !> `run --no-output` solves a sweep and prints its lines but writes no file at all (no
    !> result, no checkpoint, no sidecar); with -o or --resume it is a usage error.
