@@ -111,6 +111,22 @@ def _text(what, value):
     return value.encode()
 
 
+def _numbers(**values):
+    """The named inputs as float64 arrays (broadcast by the caller), or a TypeError naming the
+    first that is not numbers: text, None or objects, which numpy would read as numbers
+    ("3") or NaN (None)."""
+    arrays = []
+    for name, value in values.items():
+        array = None
+        if value is not None and not isinstance(value, (str, bytes)):
+            array = np.asarray(value)
+        if array is None or array.dtype.kind not in "iuf":
+            raise TypeError(f"shcontact: {name} = {value!r}: expected a number or an array of "
+                            "numbers")
+        arrays.append(array.astype(np.float64))
+    return arrays
+
+
 def _check_errors(errors):
     if errors not in ("raise", "nan"):
         raise ValueError(f"shcontact: errors='{errors}': expected 'raise' or 'nan'")
@@ -290,8 +306,8 @@ class Contact:
         ``errors="nan"`` gives NaN values (0 counts) and the status in ``status``."""
         mode, load = self._load(normal_force, vertical_force, approach, vertical_position,
                                 shared_force)
-        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64)
-                                       for v in (t_y, roll, load, nu_x, nu_y, phi)])
+        inputs = np.broadcast_arrays(*_numbers(t_y=t_y, roll=roll, load=load, nu_x=nu_x,
+                                               nu_y=nu_y, phi=phi))
         function = self._lib.shcontact_solve
 
         def call(handle, values, t_y, roll, load, nu_x, nu_y, phi):
@@ -314,11 +330,12 @@ class Contact:
                                 shared_force)
         if pitch_rate is None:
             # The nominal radius the handle holds now (set by set_track or by option key).
-            pitch_rate = (-np.asarray(v_forward, dtype=np.float64)
+            pitch_rate = (-_numbers(v_forward=v_forward)[0]
                           / self.value("track%nominal_radius"))
-        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
-            y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate,
-            load)])
+        inputs = np.broadcast_arrays(*_numbers(
+            y_ws=y_ws, yaw=yaw, roll=roll, v_forward=v_forward, v_lateral=v_lateral,
+            v_vertical=v_vertical, roll_rate=roll_rate, yaw_rate=yaw_rate,
+            pitch_rate=pitch_rate, load=load))
         function = self._lib.shcontact_solve_kinematic
 
         def call(handle, values, *state):
@@ -504,11 +521,12 @@ class Wheelset(Contact):
                              f"{sorted(layout.LOAD_MODES)}")
         mode = layout.LOAD_MODES[load]
         if pitch_rate is None:
-            pitch_rate = (-np.asarray(v_forward, dtype=np.float64)
+            pitch_rate = (-_numbers(v_forward=v_forward)[0]
                           / self.value("track%nominal_radius"))
-        inputs = np.broadcast_arrays(*[np.asarray(v, dtype=np.float64) for v in (
-            y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate, yaw_rate, pitch_rate,
-            load_right, load_left)])
+        inputs = np.broadcast_arrays(*_numbers(
+            y_ws=y_ws, yaw=yaw, roll=roll, v_forward=v_forward, v_lateral=v_lateral,
+            v_vertical=v_vertical, roll_rate=roll_rate, yaw_rate=yaw_rate,
+            pitch_rate=pitch_rate, load_right=load_right, load_left=load_left))
         return self._wheelset_loop(mode, inputs, errors)
 
     def solve_kinematic(self, *args, **kwargs):

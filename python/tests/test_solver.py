@@ -174,6 +174,16 @@ def test_errors(contact):
         contact.patch(1.0)
     with pytest.raises(TypeError, match=r"fields patch = 1.5: expected an integer"):
         shcontact.Contact(fields=True).fields(1.5)
+    # The solve calls' inputs: text and None are not numbers (numpy read "3" as 3 and None as
+    # NaN, reported by the library without the keyword).
+    with pytest.raises(TypeError, match=r"t_y = '4.733': expected a number"):
+        contact.solve("4.733", normal_force=64.7e3)
+    with pytest.raises(TypeError, match=r"nu_x = None: expected a number"):
+        contact.solve(T_Y, nu_x=None, normal_force=64.7e3)
+    with pytest.raises(TypeError, match=r"yaw = 'abc': expected a number"):
+        contact.solve_kinematic(T_Y, yaw="abc", v_forward=30e3, vertical_force=64.7e3)
+    with pytest.raises(TypeError, match=r"v_forward = '40e3': expected a number"):
+        shcontact.Wheelset().solve(3.0, v_forward="40e3", load_right=64.7e3, load_left=64.7e3)
     with pytest.raises(TypeError, match=r"set_option key = 3: expected a string"):
         contact.set_option(3, "x")
     with pytest.raises(TypeError, match=r"value key = None: expected a string"):
