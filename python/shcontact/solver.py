@@ -315,6 +315,19 @@ class Contact:
 
         return self._loop(call, inputs, layout.RESULT, errors)
 
+    def _state_inputs(self, y_ws, yaw, roll, v_forward, v_lateral, v_vertical, roll_rate,
+                      yaw_rate, pitch_rate, **loads):
+        """The wheelset state and the loads as broadcast float64 arrays (TypeError naming a
+        keyword that is not numbers); pitch_rate None is pure rolling at the nominal radius the
+        handle holds now (set by set_track or by option key)."""
+        if pitch_rate is None:
+            pitch_rate = (-_numbers(v_forward=v_forward)[0]
+                          / self.value("track%nominal_radius"))
+        return np.broadcast_arrays(*_numbers(
+            y_ws=y_ws, yaw=yaw, roll=roll, v_forward=v_forward, v_lateral=v_lateral,
+            v_vertical=v_vertical, roll_rate=roll_rate, yaw_rate=yaw_rate,
+            pitch_rate=pitch_rate, **loads))
+
     def solve_kinematic(self, y_ws, *, v_forward, yaw=0.0, roll=0.0, v_lateral=0.0,
                         v_vertical=0.0, roll_rate=0.0, yaw_rate=0.0, pitch_rate=None,
                         vertical_force=None, normal_force=None, approach=None,
@@ -328,14 +341,8 @@ class Contact:
         ``x_track``. Arrays broadcast; ``errors`` as in :meth:`solve`."""
         mode, load = self._load(normal_force, vertical_force, approach, vertical_position,
                                 shared_force)
-        if pitch_rate is None:
-            # The nominal radius the handle holds now (set by set_track or by option key).
-            pitch_rate = (-_numbers(v_forward=v_forward)[0]
-                          / self.value("track%nominal_radius"))
-        inputs = np.broadcast_arrays(*_numbers(
-            y_ws=y_ws, yaw=yaw, roll=roll, v_forward=v_forward, v_lateral=v_lateral,
-            v_vertical=v_vertical, roll_rate=roll_rate, yaw_rate=yaw_rate,
-            pitch_rate=pitch_rate, load=load))
+        inputs = self._state_inputs(y_ws, yaw, roll, v_forward, v_lateral, v_vertical,
+                                    roll_rate, yaw_rate, pitch_rate, load=load)
         function = self._lib.shcontact_solve_kinematic
 
         def call(handle, values, *state):
@@ -520,13 +527,9 @@ class Wheelset(Contact):
             raise ValueError(f"shcontact: load '{load}': expected one of "
                              f"{sorted(layout.LOAD_MODES)}")
         mode = layout.LOAD_MODES[load]
-        if pitch_rate is None:
-            pitch_rate = (-_numbers(v_forward=v_forward)[0]
-                          / self.value("track%nominal_radius"))
-        inputs = np.broadcast_arrays(*_numbers(
-            y_ws=y_ws, yaw=yaw, roll=roll, v_forward=v_forward, v_lateral=v_lateral,
-            v_vertical=v_vertical, roll_rate=roll_rate, yaw_rate=yaw_rate,
-            pitch_rate=pitch_rate, load_right=load_right, load_left=load_left))
+        inputs = self._state_inputs(y_ws, yaw, roll, v_forward, v_lateral, v_vertical,
+                                    roll_rate, yaw_rate, pitch_rate, load_right=load_right,
+                                    load_left=load_left)
         return self._wheelset_loop(mode, inputs, errors)
 
     def solve_kinematic(self, *args, **kwargs):
