@@ -45,7 +45,8 @@ contains
          new_unittest('coupled_smooth_across_curvature_step', test_coupled_step), &
          new_unittest('options_parser', test_options), &
          new_unittest('element_pressure', test_element_pressure), &
-         new_unittest('reference_point_continuous_between_minima', test_reference_blend) &
+         new_unittest('reference_point_continuous_between_minima', test_reference_blend), &
+         new_unittest('reference_point_continuous_where_wiggles_tie', test_reference_ties) &
          ]
    end subroutine collect_semihertz
 
@@ -812,5 +813,51 @@ contains
       alone = reference_index(gap, slope, 0.5_wp, 1, n, 0.0_wp)
       call check(error, here == alone, 'one minimum: its vertex')
    end subroutine test_reference_blend
+
+   !> A double well with wiggles of three wavelengths (two seeds of the phases), tilted by a
+   !> over −0.1 … 0.1 in steps of 1e-5: minima are born, vanish and cross in depth. Where the
+   !> reference point moves most in one step, that step cut in 100 must spread the move (a
+   !> continuous point moves by about a hundredth in each; a jump keeps it in one sub-step).
+   !> The elder rule of persistence jumped by 1.9 table points at both seeds (two wiggles of
+   !> the same side crossing in depth: their bands swapped; doc/kinematics.md, "What is not
+   !> smooth yet").
+   subroutine test_reference_ties(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 401, steps = 20000, cuts = 100
+      real(wp), parameter :: band = 0.3_wp, step = 1.0e-5_wp
+      real(wp) :: x(n), gap(n), here, last, largest, a_at, sub_largest
+      integer :: i, k, seed
+      character(len=100) :: message
+
+      do seed = 0, 1
+         do i = 1, n
+            x(i) = -2.0_wp + 4.0_wp*(i - 1)/(n - 1)
+            gap(i) = 0.5_wp*(x(i)**2 - 1.0_wp)**2 + 0.02_wp*sin(7.3_wp*x(i) + seed) + &
+               0.015_wp*sin(13.1_wp*x(i) + 1.0_wp + 2*seed) + 0.004_wp*sin(41.0_wp*x(i) + 3*seed)
+         end do
+         largest = 0.0_wp
+         a_at = -0.1_wp
+         last = reference_index(gap, x, -0.1_wp, 1, n, band)
+         do k = 1, steps
+            here = reference_index(gap, x, -0.1_wp + k*step, 1, n, band)
+            if (abs(here - last) > largest) then
+               largest = abs(here - last)
+               a_at = -0.1_wp + (k - 1)*step
+            end if
+            last = here
+         end do
+         sub_largest = 0.0_wp
+         last = reference_index(gap, x, a_at, 1, n, band)
+         do k = 1, cuts
+            here = reference_index(gap, x, a_at + k*step/cuts, 1, n, band)
+            sub_largest = max(sub_largest, abs(here - last))
+            last = here
+         end do
+         write (message, '(a,i0,a,es10.3,a,es10.3,a)') 'seed ', seed, ': the largest step (', &
+            largest, ' table points) has a sub-step of ', sub_largest, ': a jump'
+         call check(error, sub_largest < 0.1_wp*largest, trim(message))
+         if (allocated(error)) return
+      end do
+   end subroutine test_reference_ties
 
 end module test_semihertz

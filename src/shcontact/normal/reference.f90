@@ -14,15 +14,26 @@
 !> creepages and the forces (flange state 789 of the benchmark: γ₀ −1.222 → −0.561 rad and
 !> the vertical force by 565 N between two approaches 1e-6 mm apart) although nothing physical
 !> changes there: both points are as much the centre of the contact. Each further minimum k
-!> therefore takes a weight w_k = φ((g_k − g_min)/min(s, P_k)) in a weighted mean of the
-!> minima's positions, the deepest with weight 1: φ falls smoothly from 1 at 0 to 0 at 1
-!> (1 − 3x² + 2x³), s = [[blend_depth]] times the patch's approach, and P_k is the minimum's
-!> persistence, the depth below the lowest ridge that separates it from a deeper point (∞ when
-!> none does). At a crossing both weights are 1 (the point lies midway, whichever was the
-!> deepest an instant before); a minimum deeper than the deepest by s or more, and one that
-!> vanishes into a flank (P_k → 0), has weight 0. The point therefore moves continuously with
-!> the approach and the position, and equals the deepest minimum wherever no other one comes
-!> within s of it.
+!> therefore takes a weight w_k = φ((g_k − g_min)/B_k) in a weighted mean of the minima's
+!> positions, the deepest with weight 1: φ falls smoothly from 1 at 0 to 0 at 1 (1 − 3x² + 2x³)
+!> and B_k is the minimum's band, at most s = [[blend_depth]] times the patch's approach. At a
+!> crossing of the deepest both weights are 1 (the point lies midway, whichever was the deepest
+!> an instant before); a minimum deeper than the deepest by s or more has weight 0.
+!>
+!> The band measures the basin of minimum k of its own: B_k is the smaller over the two
+!> sides of E[min(s, r − g_k)], r the highest loaded gap on the way from k to where a walk
+!> outwards stops. In the elder rule of persistence the walk stops at the first point deeper
+!> than g_k, so a shallow wiggle beside a deeper point has a small band and a minimum that
+!> vanishes into a flank has none. That rule is discontinuous where two other minima cross in
+!> depth: each walk stops at the other or runs past it, and their bands swap (the flange-root
+!> state of doc/kinematics.md, "What is not smooth yet", failed there: a wiggle's weight went
+!> from 0.78 to 0 between approaches 5e-6 mm apart). Here the walk stops at a point i deeper than
+!> g_k with the probability S((g_k − g_i)/τ), S rising smoothly from 0 at 0 to 1 at 1, where
+!> τ = min(η s, r − g_k) with η = [[tie_depth]]: every term is continuous in the loaded gap, so
+!> two minima whose depths cross share their bands for a moment instead of swapping them, and a
+!> minimum that vanishes into a flank (r − g_k → 0 on the flank's side) still stops at once and
+!> has no band. The point therefore moves continuously with the approach and the position, and
+!> equals the deepest minimum wherever no other one comes within s of it.
 module shcontact_normal_reference
    use shcontact_core_kinds, only: wp
    implicit none
@@ -34,6 +45,9 @@ module shcontact_normal_reference
    !> loaded gap less than this much above the deepest one takes part in the reference point
    !> (module text).
    real(wp), parameter, public :: blend_depth = 0.25_wp
+   !> The walk's stopping band η as a fraction of s (module text): two minima whose depths differ
+   !> by less than η s (or than the ridge between them) share their bands.
+   real(wp), parameter, public :: tie_depth = 0.01_wp
 
 contains
 
@@ -109,7 +123,7 @@ contains
          real(wp), intent(inout) :: x, total
          real(wp) :: band, t, weight
          if (j == jm .or. .not. (g_j - g_min < scale)) return
-         band = min(scale, persistence(j, g_j))
+         band = min(scale, side_band(j, g_j, -1), side_band(j, g_j, 1))
          if (.not. (band > 0.0_wp)) return
          t = min(1.0_wp, max(0.0_wp, (g_j - g_min)/band))
          weight = 1.0_wp - t*t*(3.0_wp - 2.0_wp*t)
@@ -137,35 +151,38 @@ contains
             0.5_wp*(g_lo - g_hi)/curvature))
       end function vertex
 
-      !> Depth of the minimum g_j at j below the lowest ridge towards a deeper point within
-      !> first … last (huge when there is none).
-      pure real(wp) function persistence(j, g_j)
-         integer, intent(in) :: j
-         real(wp), intent(in) :: g_j
-         persistence = min(ridge(j, g_j, -1), ridge(j, g_j, 1))
-         if (persistence < huge(1.0_wp)) persistence = persistence - g_j
-      end function persistence
-
-      !> The highest loaded gap on the way from j in direction `step` to the first point
-      !> deeper than g_j (huge when there is none).
-      pure real(wp) function ridge(j, g_j, step)
+      !> E[min(s, r − g_j)] of a walk from minimum j in direction `step` (module text): r the
+      !> highest loaded gap passed, the walk stopping at a point i below g_j with probability
+      !> S((g_j − g_i)/τ), τ = min(η s, r − g_j) (1 where r = g_j); s where it runs off the
+      !> searched points.
+      pure real(wp) function side_band(j, g_j, step) result(band)
          integer, intent(in) :: j, step
          real(wp), intent(in) :: g_j
          integer :: i
-         real(wp) :: top, g_i
+         real(wp) :: top, alive, below, stop_here, tie, g_i
+         band = 0.0_wp
+         alive = 1.0_wp
          top = g_j
          i = j + step
          do while (i >= first .and. i <= last)
             g_i = loaded(i)
-            if (g_i < g_j) then
-               ridge = top
-               return
-            end if
             top = max(top, g_i)
+            ! Every later stop adds s: the rest of the walk is s.
+            if (.not. (top - g_j < scale)) exit
+            below = g_j - g_i
+            if (below > 0.0_wp) then
+               tie = min(tie_depth*scale, top - g_j)
+               stop_here = 1.0_wp
+               if (below < tie) stop_here = (below/tie)**2*(3.0_wp - 2.0_wp*below/tie)
+               band = band + alive*stop_here*(top - g_j)
+               alive = alive*(1.0_wp - stop_here)
+               if (.not. (alive > 0.0_wp)) return
+            end if
             i = i + step
          end do
-         ridge = huge(1.0_wp)
-      end function ridge
+         band = band + alive*scale
+      end function side_band
+
    end function reference_index
 
 end module shcontact_normal_reference
