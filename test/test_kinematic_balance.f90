@@ -50,6 +50,7 @@ contains
          new_unittest('balance_within_tolerance', test_one_percent_case), &
          new_unittest('random_states', test_random), &
          new_unittest('random_states_measured_pair', test_random_measured), &
+         new_unittest('random_states_vehicle_velocities', test_random_wide), &
          new_unittest('climbing_wheel_has_no_equilibrium', test_climbing), &
          new_unittest('flange_states_other_table_steps', test_table_steps), &
          new_unittest('vertical_force_continuous_coarse_grid', test_coarse_continuity), &
@@ -251,7 +252,7 @@ contains
    !> six kinematic sets; `failures` calls failed, `worst` is the largest relative miss of the
    !> balance of the others, `misses` the calls beyond 1e-5. The states depend on `seed` alone.
    subroutine random_balance_loop(n, seed, failures, misses, worst, first_failure, wheel, rail, &
-         largest_f)
+         largest_f, wide)
       integer, intent(in) :: n, seed
       integer, intent(out) :: failures, misses
       real(wp), intent(out) :: worst
@@ -261,14 +262,18 @@ contains
       character(len=*), intent(in), optional :: wheel, rail
       !> The largest |f| = |F_t|/(μF_n) of any loaded patch of the calls that balanced.
       real(wp), intent(out), optional :: largest_f
+      !> A vehicle code's velocities instead of the kinematic sets: V 20–80 m/s, v_y ±600 mm/s,
+      !> yaw rate ±0.3 rad/s, pure rolling.
+      logical, intent(in), optional :: wide
       type(contact_solver_type) :: solver
       type(contact_result_type) :: result
       type(lib_error), allocatable :: err
       type(wheelset_state_type) :: state
       integer(kind=8) :: lcg
-      real(wp) :: u(4), load, miss
+      real(wp) :: u(7), load, miss, v
       character(len=120) :: where
-      integer :: i, j, s
+      integer :: i, j, s, draws
+      logical :: vehicle
 
       failures = 0
       misses = 0
@@ -285,18 +290,30 @@ contains
          first_failure = 'init: '//err%message
          return
       end if
+      vehicle = .false.
+      if (present(wide)) vehicle = wide
+      draws = 4
+      if (vehicle) draws = 7
       lcg = int(seed, kind=8)
       do i = 1, n
-         do j = 1, 4
+         do j = 1, draws
             ! Knuth's MMIX linear congruential generator, top 53 bits.
             lcg = lcg*6364136223846793005_8 + 1442695040888963407_8
             u(j) = real(ishft(lcg, -11), wp)*2.0_wp**(-53)
          end do
          s = 1 + min(5, int(6.0_wp*u(4)))
-         state = wheelset_state_type(y_ws=-10.0_wp + 20.0_wp*u(1), &
-            yaw=-0.01_wp + 0.02_wp*u(2), v_forward=speed, &
-            v_lateral=kinematic_sets(2, s)*speed, yaw_rate=kinematic_sets(3, s)*speed/750.0_wp, &
-            pitch_rate=-(speed/r_nom)*(1.0_wp + kinematic_sets(1, s)))
+         if (vehicle) then
+            v = 20000.0_wp + 60000.0_wp*u(5)
+            state = wheelset_state_type(y_ws=-10.0_wp + 20.0_wp*u(1), &
+               yaw=-0.01_wp + 0.02_wp*u(2), v_forward=v, v_lateral=-600.0_wp + 1200.0_wp*u(6), &
+               yaw_rate=-0.3_wp + 0.6_wp*u(7), pitch_rate=pure_rolling_pitch_rate(v, r_nom))
+         else
+            state = wheelset_state_type(y_ws=-10.0_wp + 20.0_wp*u(1), &
+               yaw=-0.01_wp + 0.02_wp*u(2), v_forward=speed, &
+               v_lateral=kinematic_sets(2, s)*speed, &
+               yaw_rate=kinematic_sets(3, s)*speed/750.0_wp, &
+               pitch_rate=-(speed/r_nom)*(1.0_wp + kinematic_sets(1, s)))
+         end if
          load = 32000.0_wp + 65000.0_wp*u(3)
          call solver%solve_kinematic(state, contact_load_type(load_vertical_force, load), &
             result, err)
@@ -333,6 +350,29 @@ contains
       if (allocated(error)) return
       call check(error, misses == 0, 'balance beyond 1e-5 in the random loop')
    end subroutine test_random
+
+   !> The seeded random loop with a vehicle code's velocities (V 20–80 m/s, v_y ±600 mm/s, yaw
+   !> rate ±0.3 rad/s, pure rolling; t_y ±10 mm, yaw ±10 mrad, F_z 32–97 kN): the flange-root
+   !> states of [[test_leaving_flange_root]] lie in that range. No failed call, every balance
+   !> within 1e-5 and no patch past Coulomb; suite_states states, or SHCONTACT_BALANCE_STATES.
+   subroutine test_random_wide(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer :: failures, misses, n
+      real(wp) :: worst, f_max
+      character(len=:), allocatable :: first
+
+      n = loop_states()
+      call random_balance_loop(n, 27, failures, misses, worst, first, largest_f=f_max, &
+         wide=.true.)
+      write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2,a,f10.7)') 'vehicle velocities, random states: ', &
+         n, ', failed calls ', failures, ', beyond 1e-5 ', misses, ', largest relative miss ', &
+         worst, ', largest |f| ', f_max
+      call check(error, failures == 0, 'failed calls with vehicle velocities; first: '//first)
+      if (allocated(error)) return
+      call check(error, misses == 0, 'balance beyond 1e-5 with vehicle velocities')
+      if (allocated(error)) return
+      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, 'a patch past Coulomb with vehicle velocities')
+   end subroutine test_random_wide
 
    !> The seeded random loop of [[random_balance_loop]] on the measured pair of the external
    !> data, a worn wheel (MiniProf Car7216_0001r.whl) on a measured rail (avg_HR.BAN), read with
