@@ -344,11 +344,7 @@ contains
 
       n = loop_states()
       call random_balance_loop(n, 25, failures, misses, worst, first)
-      write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2)') 'random states: ', n, ', failed calls ', &
-         failures, ', beyond 1e-5 ', misses, ', largest relative miss ', worst
-      call check(error, failures == 0, 'failed calls in the random loop; first: '//first)
-      if (allocated(error)) return
-      call check(error, misses == 0, 'balance beyond 1e-5 in the random loop')
+      call judge_loop(error, '', n, failures, misses, worst, first)
    end subroutine test_random
 
    !> The seeded random loop with a vehicle code's velocities (V 20–80 m/s, v_y ±600 mm/s, yaw
@@ -364,14 +360,7 @@ contains
       n = loop_states()
       call random_balance_loop(n, 27, failures, misses, worst, first, largest_f=f_max, &
          wide=.true.)
-      write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2,a,f10.7)') 'vehicle velocities, random states: ', &
-         n, ', failed calls ', failures, ', beyond 1e-5 ', misses, ', largest relative miss ', &
-         worst, ', largest |f| ', f_max
-      call check(error, failures == 0, 'failed calls with vehicle velocities; first: '//first)
-      if (allocated(error)) return
-      call check(error, misses == 0, 'balance beyond 1e-5 with vehicle velocities')
-      if (allocated(error)) return
-      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, 'a patch past Coulomb with vehicle velocities')
+      call judge_loop(error, 'vehicle velocities', n, failures, misses, worst, first, f_max)
    end subroutine test_random_wide
 
    !> The seeded random loop of [[random_balance_loop]] on the measured pair of the external
@@ -392,15 +381,43 @@ contains
       if (allocated(error)) return
       n = loop_states()
       call random_balance_loop(n, 26, failures, misses, worst, first, wheel, rail, f_max)
-      write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2,a,f10.7)') 'measured pair, random states: ', n, &
-         ', failed calls ', failures, ', beyond 1e-5 ', misses, ', largest relative miss ', &
-         worst, ', largest |f| ', f_max
-      call check(error, failures == 0, 'failed calls on the measured pair; first: '//first)
-      if (allocated(error)) return
-      call check(error, misses == 0, 'balance beyond 1e-5 on the measured pair')
-      if (allocated(error)) return
-      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, 'a patch past Coulomb on the measured pair')
+      call judge_loop(error, 'measured pair', n, failures, misses, worst, first, f_max)
    end subroutine test_random_measured
+
+   !> Print a random loop's line ("LABEL, random states: n, failed calls …", the line
+   !> doc/kinematics.md quotes) and check it: no failed call, no balance beyond 1e-5 and, when
+   !> `f_max` is given, no patch past Coulomb (|f| ≤ 1 + 1e-12).
+   subroutine judge_loop(error, label, n, failures, misses, worst, first, f_max)
+      type(error_type), allocatable, intent(out) :: error
+      !> The loop's name ('' for the plain loop).
+      character(len=*), intent(in) :: label
+      integer, intent(in) :: n, failures, misses
+      real(wp), intent(in) :: worst
+      !> The first failed call's state and message.
+      character(len=*), intent(in) :: first
+      real(wp), intent(in), optional :: f_max
+      character(len=:), allocatable :: head, which
+
+      head = 'random states: '
+      which = 'in the random loop'
+      if (len(label) > 0) then
+         head = label//', '//head
+         which = '('//label//')'
+      end if
+      if (present(f_max)) then
+         write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2,a,f10.7)') head, n, ', failed calls ', &
+            failures, ', beyond 1e-5 ', misses, ', largest relative miss ', worst, &
+            ', largest |f| ', f_max
+      else
+         write (*, '(4x,a,i0,a,i0,a,i0,a,es9.2)') head, n, ', failed calls ', failures, &
+            ', beyond 1e-5 ', misses, ', largest relative miss ', worst
+      end if
+      call check(error, failures == 0, 'failed calls '//which//'; first: '//first)
+      if (allocated(error)) return
+      call check(error, misses == 0, 'balance beyond 1e-5 '//which)
+      if (allocated(error) .or. .not. present(f_max)) return
+      call check(error, f_max <= 1.0_wp + 1.0e-12_wp, 'a patch past Coulomb '//which)
+   end subroutine judge_loop
 
    !> The random loops' state count: suite_states, or SHCONTACT_BALANCE_STATES when set.
    integer function loop_states() result(n)
