@@ -18,7 +18,7 @@
 !> positions, the deepest with weight 1: φ falls smoothly from 1 at 0 to 0 at 1 (1 − 3x² + 2x³)
 !> and B_k is the minimum's band, at most s = [[blend_depth]] times the patch's approach. At a
 !> crossing of the deepest both weights are 1 (the point lies midway, whichever was the deepest
-!> an instant before); a minimum deeper than the deepest by s or more has weight 0.
+!> an instant before); a minimum s or more above the deepest has weight 0.
 !>
 !> The band measures the basin of minimum k of its own: B_k is the smaller over the two
 !> sides of E[min(s, r − g_k)], r the highest loaded gap on the way from k to where a walk
@@ -33,7 +33,15 @@
 !> two minima whose depths cross share their bands for a moment instead of swapping them, and a
 !> minimum that vanishes into a flank (r − g_k → 0 on the flank's side) still stops at once and
 !> has no band. The point therefore moves continuously with the approach and the position, and
-!> equals the deepest minimum wherever no other one comes within s of it.
+!> equals the deepest minimum wherever no other one comes within s of it. Continuous, not
+!> smooth: where the ridge r − g_k beside a shallow minimum is small, τ is small and its band
+!> changes steeply with the depths (a steep, continuous swing of the point). Two conditions
+!> are the caller's: the searched window's end points lie more than s above its deepest point
+!> (the callers search the loaded strips and a point beyond each end, where the loaded gap is
+!> well above its minimum; a minimum is judged with its neighbours outside the window and a
+!> walk that runs off the window counts as finding no deeper point), and the loaded gap is
+!> not exactly straight over the minimum (then every point is the minimum at one approach and
+!> the point jumps along it, as any minimum would).
 module shcontact_normal_reference
    use shcontact_core_kinds, only: wp
    implicit none
@@ -48,6 +56,9 @@ module shcontact_normal_reference
    !> The walk's stopping band η as a fraction of s (module text): two minima whose depths differ
    !> by less than η s (or than the ridge between them) share their bands.
    real(wp), parameter, public :: tie_depth = 0.01_wp
+   !> A walk whose survival has fallen below this adds survival·s and stops (its remaining terms
+   !> lie between 0 and that): the band is then within 1e-12 s of the full walk's.
+   real(wp), parameter :: survival_floor = 1.0e-12_wp
 
 contains
 
@@ -153,8 +164,9 @@ contains
 
       !> E[min(s, r − g_j)] of a walk from minimum j in direction `step` (module text): r the
       !> highest loaded gap passed, the walk stopping at a point i below g_j with probability
-      !> S((g_j − g_i)/τ), τ = min(η s, r − g_j) (1 where r = g_j); s where it runs off the
-      !> searched points.
+      !> S((g_j − g_i)/τ), τ = min(η s, r − g_j) (probability 1 when τ = 0); s where it runs
+      !> off the searched points or where the walk's survival falls below [[survival_floor]]
+      !> (a flat, noisy stretch would otherwise be walked to its end from every minimum).
       pure real(wp) function side_band(j, g_j, step) result(band)
          integer, intent(in) :: j, step
          real(wp), intent(in) :: g_j
@@ -176,7 +188,7 @@ contains
                if (below < tie) stop_here = (below/tie)**2*(3.0_wp - 2.0_wp*below/tie)
                band = band + alive*stop_here*(top - g_j)
                alive = alive*(1.0_wp - stop_here)
-               if (.not. (alive > 0.0_wp)) return
+               if (.not. (alive > survival_floor)) exit
             end if
             i = i + step
          end do
