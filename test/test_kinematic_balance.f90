@@ -58,6 +58,7 @@ contains
          new_unittest('first_try_tables_give_full_tables_forces', test_first_try_tables), &
          new_unittest('flange_root_steps_as_documented', test_flange_root_steps), &
          new_unittest('flange_face_steps_as_documented', test_flange_face_steps), &
+         new_unittest('lateral_scan_places_as_documented', test_lateral_scan_places), &
          new_unittest('flange_steps_come_from_the_coupling', test_steps_of_the_coupling), &
          new_unittest('coupled_loads_steep_in_the_strips', test_steep_coupling)]
    end subroutine collect_kinematic_balance
@@ -746,6 +747,79 @@ contains
       write (*, '(4x,a,3f9.4,l2)') 'gamma0 first, last, largest step ', gamma(1), gamma_last, &
          step_largest, growing
    end subroutine test_reference_789
+
+   !> doc/kinematics.md, "Not continuous at the flange root", the scan of t_y = 5 … 9 mm in steps
+   !> of 0.5 µm (yaw 0, pure rolling at 30 m/s, 64.7 kN; `shcontact-kinematic-count -- ty-scan 5
+   !> 9 8000`): no failed call, and the places where F_y,track leaves its neighbours' trend by
+   !> more than 300 N (|ΔF_i − (ΔF_{i−1} + ΔF_{i+1})/2|, ΔF_i = F_{i+1} − F_i) are as documented:
+   !> 36, 6 of them at 6.613–6.616 mm, 26 at 6.7–7.0 mm up to 1.5 kN, one of 0.53 kN at
+   !> 5.4475 mm, three of 0.35–0.37 kN at 7.11–7.12 mm, none elsewhere. A fix of any step makes
+   !> it fail: then the document says what changed.
+   subroutine test_lateral_scan_places(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: m = 8000
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: fy(0:m), t(0:m), second, face_largest
+      integer :: i, failed, places, root, face, tread, face_end
+      character(len=200) :: message
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      failed = 0
+      do i = 0, m
+         t(i) = 5.0_wp + 4.0_wp*real(i, wp)/real(m, wp)
+         call solver%solve_kinematic(wheelset_state_type(y_ws=t(i), v_forward=speed, &
+            pitch_rate=pure_rolling_pitch_rate(speed, r_nom)), &
+            contact_load_type(load_vertical_force, f_z), result, err)
+         if (allocated(err)) then
+            failed = failed + 1
+            deallocate (err)
+            fy(i) = 0.0_wp
+         else
+            fy(i) = result%track%fy
+         end if
+      end do
+      call check(error, failed == 0, 'failed calls in the scan: '//str_int(failed))
+      if (allocated(error)) return
+      places = 0
+      root = 0
+      face = 0
+      tread = 0
+      face_end = 0
+      face_largest = 0.0_wp
+      message = ''
+      do i = 1, m - 2
+         second = (fy(i + 1) - fy(i)) - 0.5_wp*((fy(i) - fy(i - 1)) + (fy(i + 2) - fy(i + 1)))
+         if (abs(second) <= 300.0_wp) cycle
+         places = places + 1
+         if (t(i) > 6.6125_wp .and. t(i) < 6.6165_wp) then
+            root = root + 1
+         else if (t(i) >= 6.7_wp .and. t(i) < 7.0_wp) then
+            face = face + 1
+            face_largest = max(face_largest, abs(second))
+         else if (abs(t(i) - 5.4475_wp) < 1.0e-6_wp .and. abs(abs(second) - 530.0_wp) < 10.0_wp) &
+               then
+            tread = tread + 1
+         else if (t(i) >= 7.11_wp .and. t(i) < 7.125_wp .and. abs(second) >= 345.0_wp .and. &
+               abs(second) < 375.0_wp) then
+            face_end = face_end + 1
+         else
+            write (message, '(a,f9.5,a,f8.1,a)') 'an undocumented place at t_y = ', t(i), &
+               ' mm (', second, ' N)'
+         end if
+      end do
+      call check(error, len_trim(message) == 0, trim(message))
+      if (allocated(error)) return
+      write (message, '(5(a,i0),a,f7.1,a)') 'places ', places, ' (36), at the root ', root, &
+         ' (6), on the face ', face, ' (26), at 5.4475 mm ', tread, ' (1), at 7.11-7.12 mm ', &
+         face_end, ' (3); the face''s largest ', face_largest, ' N (up to 1.5 kN)'
+      call check(error, places == 36 .and. root == 6 .and. face == 26 .and. tread == 1 .and. &
+         face_end == 3 .and. face_largest > 1450.0_wp .and. face_largest < 1550.0_wp, &
+         trim(message))
+   end subroutine test_lateral_scan_places
 
    !> doc/kinematics.md, "Not continuous at the flange root": the kinematic call's steps at
    !> t_y = 6.614850 → 6.614855 mm (the coupled reduction changes branch) and 6.61510 → 6.61515 mm
