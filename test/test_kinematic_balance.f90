@@ -759,30 +759,15 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: m = 8000
       type(contact_solver_type) :: solver
-      type(contact_result_type) :: result
       type(lib_error), allocatable :: err
-      real(wp) :: fy(0:m), t(0:m), second, face_largest
-      integer :: i, failed, places, root, face, tread, face_end
+      real(wp) :: second(m - 2), t, face_largest
+      integer :: k, places, root, face, tread, face_end
       character(len=200) :: message
 
       call solver%init('builtin:S1002', 'builtin:UIC60', err)
       call check(error, .not. allocated(err), 'init failed')
       if (allocated(error)) return
-      failed = 0
-      do i = 0, m
-         t(i) = 5.0_wp + 4.0_wp*real(i, wp)/real(m, wp)
-         call solver%solve_kinematic(wheelset_state_type(y_ws=t(i), v_forward=speed, &
-            pitch_rate=pure_rolling_pitch_rate(speed, r_nom)), &
-            contact_load_type(load_vertical_force, f_z), result, err)
-         if (allocated(err)) then
-            failed = failed + 1
-            deallocate (err)
-            fy(i) = 0.0_wp
-         else
-            fy(i) = result%track%fy
-         end if
-      end do
-      call check(error, failed == 0, 'failed calls in the scan: '//str_int(failed))
+      call lateral_second_differences(solver, 5.0_wp, second, error)
       if (allocated(error)) return
       places = 0
       root = 0
@@ -791,24 +776,23 @@ contains
       face_end = 0
       face_largest = 0.0_wp
       message = ''
-      do i = 1, m - 2
-         second = (fy(i + 1) - fy(i)) - 0.5_wp*((fy(i) - fy(i - 1)) + (fy(i + 2) - fy(i + 1)))
-         if (abs(second) <= 300.0_wp) cycle
+      do k = 1, m - 2
+         if (second(k) <= 300.0_wp) cycle
+         t = 5.0_wp + 0.0005_wp*k
          places = places + 1
-         if (t(i) > 6.6125_wp .and. t(i) < 6.6165_wp) then
+         if (t > 6.6125_wp .and. t < 6.6165_wp) then
             root = root + 1
-         else if (t(i) >= 6.7_wp .and. t(i) < 7.0_wp) then
+         else if (t >= 6.7_wp .and. t < 7.0_wp) then
             face = face + 1
-            face_largest = max(face_largest, abs(second))
-         else if (abs(t(i) - 5.4475_wp) < 1.0e-6_wp .and. abs(abs(second) - 530.0_wp) < 10.0_wp) &
-               then
+            face_largest = max(face_largest, second(k))
+         else if (abs(t - 5.4475_wp) < 1.0e-6_wp .and. abs(second(k) - 530.0_wp) < 10.0_wp) then
             tread = tread + 1
-         else if (t(i) >= 7.11_wp .and. t(i) < 7.125_wp .and. abs(second) >= 345.0_wp .and. &
-               abs(second) < 375.0_wp) then
+         else if (t >= 7.11_wp .and. t < 7.125_wp .and. second(k) >= 345.0_wp .and. &
+               second(k) < 375.0_wp) then
             face_end = face_end + 1
          else
-            write (message, '(a,f9.5,a,f8.1,a)') 'an undocumented place at t_y = ', t(i), &
-               ' mm (', second, ' N)'
+            write (message, '(a,f9.5,a,f8.1,a)') 'an undocumented place at t_y = ', t, &
+               ' mm (', second(k), ' N)'
          end if
       end do
       call check(error, len_trim(message) == 0, trim(message))
@@ -900,7 +884,7 @@ contains
       integer :: i, steps
 
       call solver%init('builtin:S1002', 'builtin:UIC60', lib)
-      call face_second_differences(solver, second, error)
+      call lateral_second_differences(solver, 6.75_wp, second, error)
       if (allocated(error)) return
       steps = count(second > 400.0_wp)
       call check(error, abs(steps - 9) <= 2 .and. abs(maxval(second) - 1490.0_wp) <= 100.0_wp, &
@@ -923,31 +907,34 @@ contains
          str_real(fy(2))//' N (doc/kinematics.md: 159.0, 158.6 kN)')
    end subroutine test_flange_face_steps
 
-   !> |ΔF_i − (ΔF_{i−1} + ΔF_{i+1})/2| of F_y,track (N) over the 121 states t_y = 6.75 … 6.81 mm
-   !> (0.5 µm apart, yaw 0, pure rolling at 30 m/s, 64.7 kN) with the solver's options.
-   subroutine face_second_differences(solver, second, error)
+   !> |ΔF_i − (ΔF_{i−1} + ΔF_{i+1})/2| of F_y,track (N) over the size(second) + 3 states t_y =
+   !> t0, t0 + 0.5 µm, … (yaw 0, pure rolling at 30 m/s, 64.7 kN) with the solver's options;
+   !> second(k) is the step from t0 + k·0.5 µm to the next. A failed call fails the test.
+   subroutine lateral_second_differences(solver, t0, second, error)
       type(contact_solver_type), intent(inout) :: solver
+      real(wp), intent(in) :: t0
       real(wp), intent(out) :: second(:)
       type(error_type), allocatable, intent(out) :: error
-      integer, parameter :: n = 121
       type(contact_result_type) :: r
       type(lib_error), allocatable :: lib
-      real(wp) :: fy(n), d(n - 1)
-      integer :: i
+      real(wp) :: fy(size(second) + 3), d(size(second) + 2)
+      integer :: i, n
 
+      n = size(fy)
       do i = 1, n
-         call solver%solve_kinematic(wheelset_state_type(y_ws=6.75_wp + 0.0005_wp*(i - 1), &
+         call solver%solve_kinematic(wheelset_state_type(y_ws=t0 + 0.0005_wp*(i - 1), &
             v_forward=30000.0_wp, pitch_rate=-30000.0_wp/460.0_wp), &
             contact_load_type(load_vertical_force, 64700.0_wp), r, lib)
          if (allocated(lib)) then
-            call test_failed(error, lib%message)
+            call test_failed(error, 't_y = '//str_real(t0 + 0.0005_wp*(i - 1))//' mm: '// &
+               lib%message)
             return
          end if
          fy(i) = r%track%fy
       end do
       d = fy(2:n) - fy(1:n - 1)
       second = abs(d(2:n - 2) - 0.5_wp*(d(1:n - 3) + d(3:n - 1)))
-   end subroutine face_second_differences
+   end subroutine lateral_second_differences
 
    !> doc/kinematics.md, "Where the steps come from": the same states with the `local-hertz`
    !> reduction. Between 6.75 and 6.81 mm no second difference of F_y,track exceeds 400 N (9
@@ -977,7 +964,7 @@ contains
          call test_failed(error, lib%message)
          return
       end if
-      call face_second_differences(solver, second, error)
+      call lateral_second_differences(solver, 6.75_wp, second, error)
       if (allocated(error)) return
       call check(error, count(second > 400.0_wp) == 0, message='local-hertz: '// &
          'second differences of F_y,track beyond 400 N between 6.75 and 6.81 mm, the '// &
