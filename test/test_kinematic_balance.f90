@@ -45,6 +45,7 @@ contains
       testsuite = [ &
          new_unittest('app_sweep_at_the_flange', test_sweep), &
          new_unittest('vertical_force_monotone_in_approach', test_monotone), &
+         new_unittest('vertical_force_dip_at_6_78_mm', test_dip_6_78), &
          new_unittest('hunting_state_937', test_state_937), &
          new_unittest('leaving_the_flange_root_at_60_m_s', test_leaving_flange_root), &
          new_unittest('balance_within_tolerance', test_one_percent_case), &
@@ -178,6 +179,41 @@ contains
          end do
       end do
    end subroutine test_monotone
+
+   !> doc/kinematics.md, "What is not smooth yet": at t_y = 6.78 mm, yaw −8 mrad (30 m/s, pure
+   !> rolling) C(Δz) over Δz = 0.5360 … 0.5366 mm in steps of 1 nm peaks at 86 251 N at
+   !> 0.53636 mm and falls to 85 914 N at 0.536488 mm (±5 N, ±2 nm) before it rises again.
+   subroutine test_dip_6_78(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: m = 600
+      type(contact_solver_type) :: solver
+      type(contact_result_type) :: result
+      type(lib_error), allocatable :: err
+      real(wp) :: c(0:m), dz(0:m)
+      integer :: i, j, k
+
+      call solver%init('builtin:S1002', 'builtin:UIC60', err)
+      call check(error, .not. allocated(err), 'init failed')
+      if (allocated(error)) return
+      do k = 0, m
+         dz(k) = 0.5360_wp + 1.0e-6_wp*k
+         call solver%solve_kinematic(wheelset_state_type(y_ws=6.78_wp, yaw=-0.008_wp, &
+            v_forward=speed, pitch_rate=pure_rolling_pitch_rate(speed, r_nom)), &
+            contact_load_type(load_vertical_position, dz(k)), result, err)
+         if (allocated(err)) then
+            call test_failed(error, 'dz = '//str_real(dz(k))//' mm: '//err%message)
+            return
+         end if
+         c(k) = carried(result)
+      end do
+      i = maxloc(c(0:599), 1) - 1
+      j = i + minloc(c(i:m), 1) - 1
+      call check(error, abs(c(i) - 86251.0_wp) <= 5.0_wp .and. abs(dz(i) - 0.53636_wp) <= &
+         2.0e-6_wp .and. abs(c(j) - 85914.0_wp) <= 5.0_wp .and. abs(dz(j) - 0.536488_wp) <= &
+         2.0e-6_wp, 'C peaks at '//str_real(c(i))//' N at dz '//str_real(dz(i))// &
+         ' mm and falls to '//str_real(c(j))//' N at '//str_real(dz(j))// &
+         ' mm (doc/kinematics.md: 86251 at 0.53636, 85914 at 0.536488)')
+   end subroutine test_dip_6_78
 
    !> State 937 of the benchmark's hunting trajectory (failed before, also on a fresh solver).
    subroutine test_state_937(error)
